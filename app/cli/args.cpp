@@ -1,0 +1,58 @@
+#include "app/cli/args.hpp"
+
+#include <charconv>
+
+namespace sprout::cli {
+
+Args::Args(int argc, char** argv, int first, std::set<std::string> flags, std::set<std::string> options) {
+    for (int i = first; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a.size() < 2 || a[0] != '-' || a == "-") {
+            m_positionals.push_back(a);
+            continue;
+        }
+        std::string value;
+        bool inlineValue = false;
+        if (auto eq = a.find('='); eq != std::string::npos) {
+            value = a.substr(eq + 1);
+            a = a.substr(0, eq);
+            inlineValue = true;
+        }
+        if (flags.count(a) && !inlineValue) {
+            m_flags.insert(a);
+        } else if (options.count(a)) {
+            if (!inlineValue) {
+                if (i + 1 >= argc) {
+                    m_error = a + " needs a value";
+                    return;
+                }
+                value = argv[++i];
+            }
+            m_values[a] = value;
+        } else {
+            m_error = "unknown option " + a;
+            return;
+        }
+    }
+}
+
+std::optional<std::string> Args::value(const std::string& name) const {
+    auto it = m_values.find(name);
+    if (it == m_values.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<std::int64_t> Args::integer(const std::string& name, std::int64_t min, std::int64_t max) {
+    auto v = value(name);
+    if (!v) return std::nullopt;
+    std::int64_t out = 0;
+    auto r = std::from_chars(v->data(), v->data() + v->size(), out);
+    if (r.ec != std::errc() || r.ptr != v->data() + v->size() || out < min || out > max) {
+        m_error = name + " expects a whole number from " + std::to_string(min) + " to " + std::to_string(max) +
+                  ", not '" + *v + "'";
+        return std::nullopt;
+    }
+    return out;
+}
+
+}  // namespace sprout::cli

@@ -1,0 +1,9 @@
+#pragma once
+// The subcommands of `sprout`. Each returns the process exit code.
+
+namespace sprout::cli {
+
+int runExpand(int argc, char** argv);  // argv[0] is "expand"
+int printUsage(bool toStderr);
+
+}  // namespace sprout::cli

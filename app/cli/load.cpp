@@ -1,0 +1,64 @@
+#include "app/cli/load.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "app/presets.hpp"
+
+namespace sprout::cli {
+namespace {
+
+std::optional<std::string> readFile(const std::string& path, std::string& error) {
+    struct stat st{};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
+        error = "is a directory, not a grammar file";
+        return std::nullopt;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot be opened";
+        return std::nullopt;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
+    std::string text, error;
+    LoadedGrammar out;
+    out.displayName = source;
+    struct stat st{};
+    if (source == "-") {
+        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        out.displayName = "<stdin>";
+    } else if (::stat(source.c_str(), &st) == 0) {
+        auto t = readFile(source, error);
+        if (!t) {
+            std::cerr << source << ": " << error << "\n";
+            return std::nullopt;
+        }
+        text = std::move(*t);
+    } else if (auto preset = presetText(source)) {
+        text = std::string(*preset);
+        out.displayName = std::string(source) + (source.ends_with(".lsys") ? "" : ".lsys");
+    } else {
+        std::cerr << source << ": no such file or preset; presets are:";
+        for (const auto& n : presetNames()) std::cerr << " " << n;
+        std::cerr << "\n";
+        return std::nullopt;
+    }
+    ParseResult r = parse(text);
+    for (const auto& d : r.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
+    if (!r.ok()) return std::nullopt;
+    out.grammar = r.grammar;
+    return out;
+}
+
+}  // namespace sprout::cli

@@ -1,0 +1,48 @@
+// sprout: with no subcommand, the viewer; `sprout expand | render | export ...` need no display.
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
+#include "app/cli/commands.hpp"
+#include "app/presets.hpp"
+
+namespace sprout::cli {
+
+int printUsage(bool toStderr) {
+    std::FILE* out = toStderr ? stderr : stdout;
+    std::fprintf(out,
+                 "Sprout %s, a workbench for L-systems\n\n"
+                 "usage:\n"
+                 "  sprout [FILE|PRESET]            open the viewer (coming with the renderer)\n"
+                 "  sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]\n"
+                 "                                  print the derived string of step N\n"
+                 "  sprout presets                  list the built-in presets\n"
+                 "  sprout --help | --version\n",
+                 SPROUT_VERSION);
+    return toStderr ? 2 : 0;
+}
+
+}  // namespace sprout::cli
+
+int main(int argc, char** argv) {
+    using namespace sprout;
+    if (argc >= 2) {
+        const char* cmd = argv[1];
+        if (!std::strcmp(cmd, "expand")) return cli::runExpand(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "presets")) {
+            for (const auto& name : presetNames()) std::printf("%s\n", name.c_str());
+            return 0;
+        }
+        if (!std::strcmp(cmd, "--help") || !std::strcmp(cmd, "-h")) return cli::printUsage(false);
+        if (!std::strcmp(cmd, "--version")) {
+            std::printf("sprout %s\n", SPROUT_VERSION);
+            return 0;
+        }
+        if (cmd[0] == '-') return cli::printUsage(true);
+    }
+    std::fprintf(stderr,
+                 "sprout: the viewer is not part of this build yet; the command-line tools work:\n"
+                 "  sprout expand %s --stats\n",
+                 argc >= 2 ? argv[1] : std::string(kDefaultPreset).c_str());
+    return 2;
+}

@@ -1,0 +1,18 @@
+#pragma once
+// The preset plants in presets/, embedded in the binary so Sprout works from any directory.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/embedded_file.hpp"
+
+namespace sprout {
+
+std::span<const EmbeddedFile> embeddedPresets();  // generated
+std::optional<std::string_view> presetText(std::string_view name);
+std::vector<std::string> presetNames();
+// The plant the viewer opens on.
+constexpr std::string_view kDefaultPreset = "fractal_plant";
+
+}  // namespace sprout

@@ -1,0 +1,150 @@
+#include "core/d0l.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sprout {
+namespace {
+constexpr std::uint32_t kNoBlock = UINT32_MAX;
+constexpr std::uint64_t kSaturate = 1ull << 62;
+constexpr size_t kMaxPool = 16u << 20;  // modules: bounds the cache for pathological grammars
+
+std::uint64_t satAdd(std::uint64_t a, std::uint64_t b) { return std::min(kSaturate, a + b); }
+}  // namespace
+
+bool D0LExpander::applicable(const Grammar& g) {
+    if (g.parametric() || g.stochastic() || g.hasContext() || g.usesCut()) return false;
+    for (const auto& list : g.rules.bySymbol) {
+        if (list.size() > 1) return false;  // later rules are dead, but keep one code path for lint
+        for (auto idx : list)
+            if (g.rules.productions[idx].condition) return false;
+    }
+    return true;
+}
+
+D0LExpander::D0LExpander(const Grammar& g) : m_alphabet(g.alphabet.size()) {
+    m_succStart.resize(m_alphabet + 1);
+    m_identity.assign(m_alphabet, 1);
+    for (size_t s = 0; s < m_alphabet; ++s) {
+        m_succStart[s] = std::uint32_t(m_succ.size());
+        const auto& list = g.rules.bySymbol[s];
+        if (list.empty()) {
+            m_succ.push_back(SymbolId(s));
+        } else {
+            const auto& succ = g.rules.productions[list.front()].successor.symbols;
+            m_succ.insert(m_succ.end(), succ.begin(), succ.end());
+            m_identity[s] = succ.size() == 1 && succ[0] == s;
+        }
+    }
+    m_succStart[m_alphabet] = std::uint32_t(m_succ.size());
+
+    const size_t depths = kBlockDepth + 1;
+    m_len.assign(depths * m_alphabet, 1);
+    m_blockStart.assign(depths * m_alphabet, kNoBlock);
+    for (int d = 1; d < int(depths); ++d) {
+        for (size_t s = 0; s < m_alphabet; ++s) {
+            std::uint64_t total = 0;
+            for (auto i = m_succStart[s]; i < m_succStart[s + 1]; ++i) total = satAdd(total, len(m_succ[i], d - 1));
+            m_len[size_t(d) * m_alphabet + s] = total;
+        }
+    }
+    // Blocks, shallow depths first, so every block is a concatenation of existing ones.
+    for (int d = 1; d < int(depths); ++d) {
+        for (size_t s = 0; s < m_alphabet; ++s) {
+            std::uint64_t L = len(SymbolId(s), d);
+            if (m_identity[s] || L > kBlock || m_pool.size() + L > kMaxPool) continue;
+            std::uint32_t start = std::uint32_t(m_pool.size());
+            bool complete = true;
+            for (auto i = m_succStart[s]; i < m_succStart[s + 1] && complete; ++i) {
+                SymbolId t = m_succ[i];
+                if (d - 1 == 0 || m_identity[t]) {
+                    m_pool.push_back(t);
+                    continue;
+                }
+                std::uint32_t b = m_blockStart[size_t(d - 1) * m_alphabet + t];
+                if (b == kNoBlock) {
+                    complete = false;
+                    break;
+                }
+                std::uint64_t n = len(t, d - 1);
+                m_pool.insert(m_pool.end(), m_pool.begin() + b, m_pool.begin() + b + std::ptrdiff_t(n));
+            }
+            if (complete) m_blockStart[size_t(d) * m_alphabet + s] = start;
+            else m_pool.resize(start);
+        }
+    }
+}
+
+std::uint64_t D0LExpander::countAt(const ModuleString& axiom, int n) const {
+    std::vector<std::uint64_t> counts(m_alphabet, 0), next(m_alphabet);
+    for (SymbolId s : axiom.symbols) counts[s] = satAdd(counts[s], 1);
+    for (int step = 0; step < n; ++step) {
+        std::fill(next.begin(), next.end(), 0);
+        bool changed = false;
+        for (size_t s = 0; s < m_alphabet; ++s) {
+            if (!counts[s]) continue;
+            if (m_identity[s]) {
+                next[s] = satAdd(next[s], counts[s]);
+                continue;
+            }
+            changed = true;
+            for (auto i = m_succStart[s]; i < m_succStart[s + 1]; ++i)
+                next[m_succ[i]] = satAdd(next[m_succ[i]], counts[s]);
+        }
+        counts.swap(next);
+        if (!changed) break;  // only identity symbols left: the string is final
+    }
+    std::uint64_t total = 0;
+    for (auto c : counts) total = satAdd(total, c);
+    return total;
+}
+
+bool D0LExpander::expand(const ModuleString& axiom, int n, ModuleString& out,
+                         const std::atomic<bool>* cancel,
+                         const std::function<void(double)>& progress) const {
+    const std::uint64_t total = countAt(axiom, n);
+    out.symbols.resizeUninitialized(total);
+    out.params.clear();
+    SymbolId* dst = out.symbols.data();
+    SymbolId* const begin = dst;
+    std::uint64_t nextCheck = 1u << 20;
+
+    struct Frame {
+        const SymbolId* cur;
+        const SymbolId* end;
+        int depth;
+    };
+    std::vector<Frame> stack;
+    stack.push_back({axiom.symbols.begin(), axiom.symbols.end(), n});
+    while (!stack.empty()) {
+        Frame& f = stack.back();
+        if (f.cur == f.end) {
+            stack.pop_back();
+            continue;
+        }
+        const SymbolId s = *f.cur++;
+        const int d = f.depth;
+        if (d == 0 || m_identity[s]) {
+            *dst++ = s;
+            continue;
+        }
+        if (d <= kBlockDepth) {
+            std::uint32_t b = m_blockStart[size_t(d) * m_alphabet + s];
+            if (b != kNoBlock) {
+                std::uint64_t L = len(s, d);
+                if (L) std::memcpy(dst, m_pool.data() + b, L * sizeof(SymbolId));
+                dst += L;
+                if (std::uint64_t(dst - begin) >= nextCheck) {
+                    nextCheck += 1u << 20;
+                    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+                    if (progress && total) progress(double(dst - begin) / double(total));
+                }
+                continue;
+            }
+        }
+        stack.push_back({m_succ.data() + m_succStart[s], m_succ.data() + m_succStart[s + 1], d - 1});
+    }
+    return true;
+}
+
+}  // namespace sprout

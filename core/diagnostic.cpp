@@ -1,0 +1,50 @@
+#include "core/diagnostic.hpp"
+
+#include <algorithm>
+
+namespace sprout {
+
+std::string formatDiagnostic(const Diagnostic& d, const std::string& file) {
+    std::string out = file;
+    if (d.line > 0) out += ":" + std::to_string(d.line) + ":" + std::to_string(d.col);
+    out += d.severity == Severity::Warning ? ": warning: " : ": ";
+    out += d.message;
+    return out;
+}
+
+bool hasErrors(const std::vector<Diagnostic>& diags) {
+    return std::any_of(diags.begin(), diags.end(),
+                       [](const Diagnostic& d) { return d.severity == Severity::Error; });
+}
+
+static size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t bestDist = std::string::npos;
+    for (const auto& c : candidates) {
+        size_t d = editDistance(word, c);
+        if (d < bestDist) {
+            bestDist = d;
+            best = c;
+        }
+    }
+    // A suggestion must be closer than a rewrite: at most a third of the word may change.
+    size_t limit = std::max<size_t>(1, word.size() / 3);
+    return bestDist <= limit && bestDist > 0 ? best : std::string();
+}
+
+}  // namespace sprout

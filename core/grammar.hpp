@@ -1,0 +1,90 @@
+#pragma once
+// A parsed grammar: the alphabet, the axiom, productions indexed by predecessor symbol and
+// the directives' values. Produced by parse(), read by derive() and the turtle.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "core/alphabet.hpp"
+#include "core/diagnostic.hpp"
+#include "core/expr.hpp"
+#include "core/module_string.hpp"
+
+namespace sprout {
+
+// A value with optional seeded jitter: `angle: 22 ~ 4` is mean 22, sigma 4.
+struct Jittered {
+    double mean = 0;
+    double sigma = 0;
+};
+
+struct Settings {
+    int iterations = 0;
+    Jittered angle{90, 0};  // degrees
+    Jittered step{1, 0};
+    double width = 1;
+    std::uint64_t seed = 1;
+};
+
+// One module of a predecessor or context: a name, and either named formal parameters or
+// (in contexts, when written without parentheses) any parameter count.
+struct PatternModule {
+    SymbolId symbol = 0;  // exact symbol when arity is fixed
+    NameId name = 0;
+    int arity = 0;        // -1: matches the name with any parameters
+    bool wildcard = false;  // `*`: any module
+    std::uint16_t firstSlot = 0;  // where this module's parameters are bound
+};
+
+struct Successor {
+    std::vector<SymbolId> symbols;
+    std::vector<Expr> args;  // one per parameter, in string order
+    size_t paramCount() const { return args.size(); }
+};
+
+struct Production {
+    int line = 0;
+    std::vector<PatternModule> left;   // in text order; matched right to left
+    PatternModule pred;
+    std::vector<PatternModule> right;  // in text order
+    std::optional<Expr> condition;
+    Successor successor;
+    double probability = -1;  // < 0: deterministic
+    int slotCount = 0;        // formal parameters across left, pred and right
+    bool hasContext() const { return !left.empty() || !right.empty(); }
+    bool stochastic() const { return probability >= 0; }
+};
+
+struct RuleSet {
+    std::vector<Production> productions;         // in file order
+    std::vector<std::vector<std::uint32_t>> bySymbol;  // symbol -> indices into productions
+    void index(size_t alphabetSize);
+};
+
+struct Grammar {
+    Alphabet alphabet;
+    ModuleString axiom;
+    RuleSet rules;           // derivation productions
+    RuleSet interpretation;  // cpfg homomorphism: applied when drawing, never stored
+    Settings settings;
+    std::vector<bool> ignored;  // by NameId: skipped when matching contexts
+    std::unordered_map<std::string, double> defines;
+    std::vector<std::string> defineOrder;  // for sliders, in file order
+
+    bool parametric() const;        // any module with parameters in axiom or successors
+    bool hasContext() const;
+    bool stochastic() const;
+    bool usesCut() const;
+};
+
+struct ParseResult {
+    std::shared_ptr<const Grammar> grammar;  // null when there are errors
+    std::vector<Diagnostic> diagnostics;     // errors and warnings, in line order
+    bool ok() const { return grammar != nullptr; }
+};
+
+ParseResult parse(std::string_view text);
+
+}  // namespace sprout

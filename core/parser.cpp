@@ -1,0 +1,647 @@
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+
+#include "core/parser_impl.hpp"
+
+namespace sprout {
+namespace detail {
+namespace {
+
+size_t utf8Length(unsigned char c) {
+    if (c < 0x80) return 1;
+    if ((c & 0xE0) == 0xC0) return 2;
+    if ((c & 0xF0) == 0xE0) return 3;
+    if ((c & 0xF8) == 0xF0) return 4;
+    return 1;
+}
+
+// Position of the first `token` outside parentheses, or npos.
+size_t findTopLevel(std::string_view s, std::string_view token, size_t from = 0) {
+    int depth = 0;
+    for (size_t i = from; i < s.size(); ++i) {
+        char c = s[i];
+        if (c == '(') ++depth;
+        else if (c == ')') depth = std::max(0, depth - 1);
+        else if (depth == 0 && s.substr(i, token.size()) == token) return i;
+    }
+    return std::string_view::npos;
+}
+
+size_t findLastTopLevel(std::string_view s, char token) {
+    int depth = 0;
+    size_t found = std::string_view::npos;
+    for (size_t i = 0; i < s.size(); ++i) {
+        char c = s[i];
+        if (c == '(') ++depth;
+        else if (c == ')') depth = std::max(0, depth - 1);
+        else if (depth == 0 && c == token) found = i;
+    }
+    return found;
+}
+
+bool isIdentifier(std::string_view s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    return std::all_of(s.begin(), s.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+}
+
+// Text copied from PDFs and word processors: same byte length, so positions stay valid.
+void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& replaced) {
+    struct Sub { const char* from; const char* to; const char* what; };
+    static const Sub subs[] = {
+        {"\xE2\x86\x92", "-> ", nullptr},  // → is an accepted arrow, no warning
+        {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'"},
+        {"\xC2\xA0", "  ", nullptr},       // no-break space
+    };
+    for (const Sub& s : subs) {
+        size_t len = std::strlen(s.from);
+        for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
+            text.replace(at, len, s.to);
+            if (s.what) replaced.emplace_back(at, s.what);
+        }
+    }
+}
+
+}  // namespace
+
+Parser::Parser(std::string_view text) : m_text(text) {
+    if (m_text.starts_with("\xEF\xBB\xBF")) m_text.replace(0, 3, "   ");  // UTF-8 byte order mark
+    m_original = std::string(text);
+    if (m_original.starts_with("\xEF\xBB\xBF")) m_original.replace(0, 3, " ");
+}
+
+size_t Parser::nameLength(std::string_view s, size_t pos) const {
+    for (const auto& name : m_moduleNames)
+        if (s.substr(pos, name.size()) == name) return name.size();
+    return std::min(s.size() - pos, utf8Length(static_cast<unsigned char>(s[pos])));
+}
+
+bool Parser::tokenize(const SourceLine& line, std::string_view text, std::vector<RawModule>& out) {
+    size_t i = 0;
+    while (i < text.size()) {
+        if (isSpace(text[i])) {
+            ++i;
+            continue;
+        }
+        char c = text[i];
+        if (c == '(' || c == ')') {
+            m_sink.error(line, text.substr(i),
+                         c == '(' ? "'(' must follow a module name, as in F(1)"
+                                  : "')' has no matching '('");
+            return false;
+        }
+        RawModule m;
+        size_t len = nameLength(text, i);
+        m.name = text.substr(i, len);
+        i += len;
+        size_t j = i;
+        while (j < text.size() && isSpace(text[j])) ++j;
+        if (j < text.size() && text[j] == '(') {
+            m.hasParens = true;
+            int depth = 0;
+            size_t argStart = j + 1, k = j;
+            for (; k < text.size(); ++k) {
+                if (text[k] == '(') ++depth;
+                else if (text[k] == ')' && --depth == 0) break;
+                else if (text[k] == ',' && depth == 1) {
+                    m.args.push_back(text.substr(argStart, k - argStart));
+                    argStart = k + 1;
+                }
+            }
+            if (k >= text.size()) {
+                m_sink.error(line, text.substr(j), "this '(' is never closed");
+                return false;
+            }
+            std::string_view last = text.substr(argStart, k - argStart);
+            if (!m.args.empty() || !trim(last).empty()) m.args.push_back(last);
+            i = k + 1;
+        }
+        if (int(m.args.size()) > Alphabet::kMaxArity) {
+            m_sink.error(line, m.name, "a module can have at most 32 parameters");
+            return false;
+        }
+        out.push_back(m);
+    }
+    return true;
+}
+
+std::optional<SymbolId> Parser::symbolFor(const SourceLine& line, std::string_view name, int arity) {
+    if (arity > 0 && (name == "[" || name == "]" || name == "%")) {
+        m_sink.error(line, name, "'" + std::string(name) + "' takes no parameters");
+        return std::nullopt;
+    }
+    auto id = m_g.alphabet.intern(name, arity);
+    if (!id) m_sink.error(line, name, "too many different modules (the limit is 65535)");
+    return id;
+}
+
+bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
+                           const std::vector<RawModule>& mods, int net) {
+    // A rule that rewrites '[' or ']' (an interpretation such as '[ -> [+') must keep the
+    // bracket it replaces; every other string must be balanced.
+    std::vector<std::string_view> open;
+    int closedOuter = 0;
+    for (const auto& m : mods) {
+        if (m.name == "[") open.push_back(m.name);
+        else if (m.name == "]") {
+            if (!open.empty()) open.pop_back();
+            else if (net < 0 && closedOuter == 0) closedOuter = 1;
+            else {
+                m_sink.error(line, m.name, "']' closes a branch that was never opened with '['");
+                return false;
+            }
+        }
+    }
+    int extra = net > 0 ? 1 : 0;
+    if (int(open.size()) > extra) {
+        m_sink.error(line, open.back(), "this '[' is never closed with ']'");
+        return false;
+    }
+    if (int(open.size()) != extra || closedOuter != (net < 0 ? 1 : 0)) {
+        m_sink.error(line, text, std::string("a rule for '") + (net > 0 ? "[" : "]") +
+                                     "' must keep one unmatched '" + (net > 0 ? "[" : "]") + "'");
+        return false;
+    }
+    return true;
+}
+
+std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
+    ExprScope scope{nullptr, &m_g.defines};
+    auto e = compileExpr(text, line, scope, m_sink);
+    if (!e) return std::nullopt;
+    if (e->isConstant()) return e->constantValue();
+    Rng rng = Rng::forStream(m_g.settings.seed, 0x5eed);
+    return e->eval(nullptr, rng);
+}
+
+std::optional<Jittered> Parser::jittered(const SourceLine& line, std::string_view text) {
+    size_t tilde = findTopLevel(text, "~");
+    auto mean = constant(line, tilde == std::string_view::npos ? text : text.substr(0, tilde));
+    if (!mean) return std::nullopt;
+    Jittered j{*mean, 0};
+    if (tilde != std::string_view::npos) {
+        auto sigma = constant(line, text.substr(tilde + 1));
+        if (!sigma) return std::nullopt;
+        if (*sigma < 0) {
+            m_sink.error(line, text.substr(tilde + 1), "the spread after '~' cannot be negative");
+            return std::nullopt;
+        }
+        j.sigma = *sigma;
+    }
+    return j;
+}
+
+void Parser::declareModules(const SourceLine& line, std::string_view names) {
+    size_t i = 0;
+    while (i < names.size()) {
+        while (i < names.size() && (isSpace(names[i]) || names[i] == ',')) ++i;
+        size_t start = i;
+        while (i < names.size() && !isSpace(names[i]) && names[i] != ',') ++i;
+        std::string_view name = names.substr(start, i - start);
+        if (name.empty()) continue;
+        if (name.find_first_of("()[]") != std::string_view::npos) {
+            m_sink.error(line, name, "a module name cannot contain brackets or parentheses");
+            continue;
+        }
+        if (std::find(m_moduleNames.begin(), m_moduleNames.end(), name) == m_moduleNames.end())
+            m_moduleNames.emplace_back(name);
+    }
+    std::stable_sort(m_moduleNames.begin(), m_moduleNames.end(),
+                     [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
+}
+
+void Parser::define(const SourceLine& line, std::string_view text) {
+    text = trim(text);
+    size_t nameEnd = 0;
+    while (nameEnd < text.size() && !isSpace(text[nameEnd]) && text[nameEnd] != '=') ++nameEnd;
+    std::string_view name = text.substr(0, nameEnd);
+    std::string_view rest = trim(text.substr(nameEnd));
+    if (rest.starts_with("=") && !rest.starts_with("==")) rest = trim(rest.substr(1));
+    if (!isIdentifier(name)) {
+        m_sink.error(line, name.empty() ? text : name,
+                     "expected 'define: name = value', with a name made of letters, digits and _");
+        return;
+    }
+    if (rest.empty()) {
+        m_sink.error(line, text.substr(nameEnd), "'" + std::string(name) + "' needs a value: define: " +
+                                                     std::string(name) + " = 1.5");
+        return;
+    }
+    if (m_g.defines.count(std::string(name))) {
+        m_sink.error(line, name, "'" + std::string(name) + "' is defined twice");
+        return;
+    }
+    if (auto v = constant(line, rest)) {
+        m_g.defines.emplace(std::string(name), *v);
+        m_g.defineOrder.emplace_back(name);
+    }
+}
+
+void Parser::setAxiom(const SourceLine& line, std::string_view text) {
+    if (m_axiomSet) {
+        m_sink.error(line, text, "a second axiom (the first is on line " + std::to_string(m_axiomLine) + ")");
+        return;
+    }
+    m_axiomSet = true;
+    m_axiomLine = line.number;
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, 0)) return;
+    ModuleString axiom;
+    for (const auto& m : mods) {
+        auto id = symbolFor(line, m.name, int(m.args.size()));
+        if (!id) return;
+        axiom.symbols.push_back(*id);
+        for (auto arg : m.args) {
+            auto v = constant(line, arg);
+            if (!v) return;
+            axiom.params.push_back(*v);
+        }
+    }
+    if (axiom.size() == 0) {
+        m_sink.error(line, text, "the axiom is empty: write the starting string, e.g. 'axiom: F'");
+        return;
+    }
+    m_g.axiom = std::move(axiom);
+}
+
+void Parser::setIgnore(const SourceLine& line, std::string_view text) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods)) return;
+    for (const auto& m : mods) {
+        if (m.hasParens) {
+            m_sink.error(line, m.name, "list only module names after 'ignore:', without parameters");
+            return;
+        }
+        if (m.name == "[" || m.name == "]") {
+            m_sink.error(line, m.name, "brackets cannot be ignored: they define the branches contexts follow");
+            return;
+        }
+        auto id = symbolFor(line, m.name, 0);
+        if (!id) return;
+        NameId n = m_g.alphabet[*id].nameId;
+        if (m_g.ignored.size() <= n) m_g.ignored.resize(n + 1, false);
+        m_g.ignored[n] = true;
+    }
+}
+
+bool Parser::parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
+                          bool allowWildcard, std::vector<std::string>& params,
+                          std::vector<PatternModule>& out) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods)) return false;
+    for (const auto& m : mods) {
+        PatternModule p;
+        if (m.name == "*" && !m.hasParens) {
+            if (!allowWildcard) {
+                m_sink.error(line, m.name, "'*' (any module) can only be used in a context");
+                return false;
+            }
+            p.wildcard = true;
+            out.push_back(p);
+            continue;
+        }
+        if ((m.name == "[" || m.name == "]") && !allowBrackets) {
+            m_sink.error(line, m.name, "brackets are not allowed here: a left context is followed "
+                                       "back through parent branches automatically");
+            return false;
+        }
+        p.arity = m.hasParens ? int(m.args.size()) : -1;
+        p.firstSlot = std::uint16_t(params.size());
+        for (auto arg : m.args) {
+            std::string_view name = trim(arg);
+            if (!isIdentifier(name)) {
+                m_sink.error(line, name.empty() ? arg : name,
+                             "a rule's left side names its parameters, e.g. A(x, y); "
+                             "compute values on the right side or in the condition");
+                return false;
+            }
+            if (std::find(params.begin(), params.end(), name) != params.end()) {
+                m_sink.error(line, name, "parameter '" + std::string(name) + "' is named twice in this rule");
+                return false;
+            }
+            params.emplace_back(name);
+        }
+        auto id = symbolFor(line, m.name, std::max(p.arity, 0));
+        if (!id) return false;
+        p.symbol = *id;
+        p.name = m_g.alphabet[*id].nameId;
+        out.push_back(p);
+    }
+    return true;
+}
+
+bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
+                            const std::vector<std::string>& params, Successor& out, int net) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
+    ExprScope scope{&params, &m_g.defines};
+    bool ok = true;
+    for (const auto& m : mods) {
+        auto id = symbolFor(line, m.name, int(m.args.size()));
+        if (!id) return false;
+        out.symbols.push_back(*id);
+        for (auto arg : m.args) {
+            auto e = compileExpr(arg, line, scope, m_sink);
+            if (e) out.args.push_back(std::move(*e));
+            else ok = false;
+        }
+    }
+    return ok;
+}
+
+void Parser::parseRule(const SourceLine& line, bool interpretation) {
+    std::string_view text = line.text;
+    size_t arrow = findTopLevel(text, "->");
+    std::string_view head = text.substr(0, arrow);
+    std::string_view tail = text.substr(arrow + 2);
+    if (tail.starts_with(">")) tail.remove_prefix(1);  // L-Py's -->
+
+    // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF".
+    size_t colon = findTopLevel(head, ":");
+    if (colon != std::string_view::npos) {
+        std::string_view label = trim(head.substr(0, colon));
+        if (label.size() >= 2 && label[0] == 'p' &&
+            std::all_of(label.begin() + 1, label.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            head = head.substr(colon + 1);
+            colon = findTopLevel(head, ":");
+        }
+    }
+    std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
+    std::string_view condition = colon == std::string_view::npos ? std::string_view() : head.substr(colon + 1);
+
+    Production prod;
+    prod.line = line.number;
+    std::vector<std::string> params;
+    size_t lt = findTopLevel(patterns, "<");
+    size_t gt = findTopLevel(patterns, ">", lt == std::string_view::npos ? 0 : lt + 1);
+    std::string_view leftText, rightText, predText = patterns;
+    if (lt != std::string_view::npos) {
+        leftText = patterns.substr(0, lt);
+        predText = patterns.substr(lt + 1);
+        gt = findTopLevel(predText, ">");
+    }
+    if (gt != std::string_view::npos) {
+        rightText = predText.substr(gt + 1);
+        predText = predText.substr(0, gt);
+    }
+    if (findTopLevel(predText, "<") != std::string_view::npos) {
+        m_sink.error(line, predText.substr(findTopLevel(predText, "<")),
+                     "a second '<': write contexts as 'left < module > right'");
+        return;
+    }
+    std::vector<PatternModule> pred;
+    if (lt != std::string_view::npos && trim(leftText).empty()) {
+        m_sink.error(line, patterns.substr(lt), "'<' needs a left context before it (or '*' for any)");
+        return;
+    }
+    if (!parsePattern(line, leftText, false, true, params, prod.left)) return;
+    if (!parsePattern(line, predText, true, false, params, pred)) return;
+    if (gt != std::string_view::npos && trim(rightText).empty()) {
+        m_sink.error(line, predText.substr(gt), "'>' needs a right context after it (or '*' for any)");
+        return;
+    }
+    if (!parsePattern(line, rightText, true, true, params, prod.right)) return;
+    if (pred.size() != 1) {
+        std::string_view p = trim(predText);
+        if (pred.empty()) {
+            m_sink.error(line, p.empty() ? line.text : p, "the rule has no module to rewrite before '->'");
+        } else {
+            std::string msg = "a rule rewrites one module, but '" + std::string(p) + "' is " +
+                              std::to_string(pred.size()) + " modules";
+            if (isIdentifier(p)) msg += "; declare it first with 'module: " + std::string(p) + "'";
+            else msg += "; use contexts for neighbours, as in 'A < B > C -> ...'";
+            m_sink.error(line, p, msg);
+        }
+        return;
+    }
+    prod.pred = pred[0];
+    if (prod.pred.arity < 0) {  // a predecessor without parentheses has no parameters
+        prod.pred.arity = 0;
+    }
+    // Contexts of only '*' mean "any": ABOP's `* < + > * -> -`.
+    auto onlyWildcards = [](const std::vector<PatternModule>& v) {
+        return std::all_of(v.begin(), v.end(), [](const PatternModule& p) { return p.wildcard; });
+    };
+    if (onlyWildcards(prod.left)) prod.left.clear();
+    if (onlyWildcards(prod.right)) prod.right.clear();
+    prod.slotCount = int(params.size());
+
+    ExprScope scope{&params, &m_g.defines};
+    bool ok = true;
+    if (colon != std::string_view::npos) {
+        if (trim(condition).empty()) {
+            m_sink.error(line, condition, "expected a condition after ':' (e.g. 'A(t) : t > 1 -> F')");
+            return;
+        }
+        prod.condition = compileExpr(condition, line, scope, m_sink);
+        ok = prod.condition.has_value();
+    }
+    size_t probColon = findLastTopLevel(tail, ':');
+    std::string_view succText = tail;
+    if (probColon != std::string_view::npos) {
+        succText = tail.substr(0, probColon);
+        auto p = constant(line, tail.substr(probColon + 1));
+        if (!p) return;
+        if (!(*p >= 0)) {
+            m_sink.error(line, tail.substr(probColon + 1), "a probability cannot be negative");
+            return;
+        }
+        prod.probability = *p;
+    }
+    int net = prod.pred.symbol == Alphabet::kPush ? 1 : prod.pred.symbol == Alphabet::kPop ? -1 : 0;
+    if (!parseSuccessor(line, succText, params, prod.successor, net) || !ok) return;
+    (interpretation ? m_g.interpretation : m_g.rules).productions.push_back(std::move(prod));
+}
+
+void Parser::classify(Line& l, bool& inInterpretation) {
+    std::string_view t = trim(l.src.text);
+    if (t.empty()) return;
+    // cpfg's preprocessor-style directives, before '#' comments.
+    for (const char* word : {"#define", "#ignore"}) {
+        std::string_view w(word);
+        if (t.starts_with(w) && (t.size() == w.size() || isSpace(t[w.size()]))) {
+            for (const auto& d : directives())
+                if (w.substr(1) == d.name) l.directive = &d;
+            l.kind = Line::DirectiveLine;
+            l.value = trim(t.substr(w.size()));
+            return;
+        }
+    }
+    if (t.starts_with("#") || t.starts_with("//")) return;
+    l.interpretation = inInterpretation;
+    if (findTopLevel(t, "->") != std::string_view::npos) {
+        l.kind = Line::Rule;
+        return;
+    }
+    size_t colon = t.find(':');
+    std::string_view key = trim(t.substr(0, colon));
+    if (colon == std::string_view::npos || key.empty() ||
+        !(isIdentifier(key) || key == "\xCF\x89" /* ω */)) {
+        m_sink.error(l.src, t, "expected a rule such as 'F -> F+F' or a setting such as 'angle: 90'");
+        return;
+    }
+    std::string_view value = trim(t.substr(colon + 1));
+    std::string k(key);
+    std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (k == "interpretation" || k == "homomorphism" || k == "productions" || k == "rules" ||
+        k == "derivation") {
+        if (!value.empty()) m_sink.error(l.src, value, "'" + k + ":' starts a section; put its rules on the next lines");
+        inInterpretation = k == "interpretation" || k == "homomorphism";
+        return;
+    }
+    if (key == "\xCF\x89") k = "axiom";
+    for (const auto& d : directives())
+        if (k == d.name) l.directive = &d;
+    if (!l.directive) {
+        std::vector<std::string> names;
+        for (const auto& d : directives()) names.emplace_back(d.name);
+        std::string msg = "unknown setting '" + std::string(key) + "'";
+        std::string guess = closestMatch(k, names);
+        if (!guess.empty()) msg += " — did you mean '" + guess + "'?";
+        else msg += " (a rule needs '->')";
+        m_sink.error(l.src, key, msg);
+        return;
+    }
+    l.kind = Line::DirectiveLine;
+    l.value = value;
+}
+
+void Parser::lint() {
+    // A deterministic context-free rule without a condition always applies, so later rules
+    // for the same module are dead: say so rather than leave the user wondering.
+    for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation}) {
+        for (const auto& list : rs->bySymbol) {
+            const Production* total = nullptr;
+            double probSum = 0;
+            int probCount = 0;
+            for (auto idx : list) {
+                const Production& p = rs->productions[idx];
+                if (total) {
+                    Diagnostic d{p.line, 1,
+                                 "this rule never applies: the rule on line " + std::to_string(total->line) +
+                                     " always rewrites '" + m_g.alphabet[p.pred.symbol].name +
+                                     "' first (put rules with conditions or contexts before it)",
+                                 Severity::Warning};
+                    m_sink.add(d);
+                    continue;
+                }
+                bool unconditional = !p.condition && !p.hasContext();
+                if (unconditional && p.stochastic()) {
+                    probSum += p.probability;
+                    ++probCount;
+                } else if (unconditional) {
+                    total = &p;
+                }
+            }
+            if (probCount > 0 && std::abs(probSum - 1.0) > 1e-6) {
+                const Production& p = rs->productions[list.front()];
+                std::string sum, rest;
+                appendNumber(sum, probSum);
+                appendNumber(rest, std::round((1 - probSum) * 1e6) / 1e4);
+                m_sink.add({p.line, 1,
+                            "the probabilities of the rules for '" + m_g.alphabet[p.pred.symbol].name +
+                                "' add up to " + sum +
+                                (probSum > 1 ? ", not 1: they are used as weights"
+                                             : ": the module stays unchanged the other " + rest + "% of the time"),
+                            Severity::Warning});
+            }
+        }
+    }
+}
+
+ParseResult Parser::run() {
+    std::vector<std::pair<size_t, const char*>> replaced;
+    normalize(m_text, replaced);
+    // Split into lines; `original` keeps the typed text for column numbers.
+    size_t start = 0;
+    int number = 1;
+    while (start <= m_text.size()) {
+        size_t end = m_text.find('\n', start);
+        if (end == std::string::npos) end = m_text.size();
+        Line l;
+        l.src.number = number++;
+        l.src.text = std::string_view(m_text).substr(start, end - start);
+        l.src.original = std::string_view(m_original).substr(start, end - start);
+        if (l.src.text.ends_with('\r')) l.src.text.remove_suffix(1);
+        m_lines.push_back(l);
+        start = end + 1;
+    }
+    for (auto [offset, what] : replaced) {
+        for (const auto& l : m_lines) {
+            size_t ls = size_t(l.src.text.data() - m_text.data());
+            if (offset >= ls && offset <= ls + l.src.text.size()) {
+                m_sink.warning(l.src, l.src.text.substr(offset - ls), what);
+                break;
+            }
+        }
+    }
+    bool inInterpretation = false;
+    for (auto& l : m_lines) classify(l, inInterpretation);
+    for (int phase = 0; phase <= 2; ++phase) {
+        for (auto& l : m_lines) {
+            if (l.kind == Line::DirectiveLine && l.directive->phase == phase)
+                l.directive->handler(*this, l.src, l.value);
+            else if (l.kind == Line::Rule && phase == 2)
+                parseRule(l.src, l.interpretation);
+        }
+    }
+    if (!m_axiomSet && m_sink.errorCount() == 0)
+        m_sink.add({1, 1, "the grammar has no axiom: add a line such as 'axiom: F'", Severity::Error});
+
+    m_g.rules.index(m_g.alphabet.size());
+    m_g.interpretation.index(m_g.alphabet.size());
+    m_g.ignored.resize(m_g.alphabet.nameCount(), false);
+    lint();
+
+    ParseResult result;
+    result.diagnostics = std::move(m_sink.all());
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                         return a.line != b.line ? a.line < b.line : a.col < b.col;
+                     });
+    if (!hasErrors(result.diagnostics)) result.grammar = std::make_shared<const Grammar>(std::move(m_g));
+    return result;
+}
+
+}  // namespace detail
+
+ParseResult parse(std::string_view text) { return detail::Parser(text).run(); }
+
+void RuleSet::index(size_t alphabetSize) {
+    bySymbol.assign(alphabetSize, {});
+    for (size_t i = 0; i < productions.size(); ++i)
+        bySymbol[productions[i].pred.symbol].push_back(std::uint32_t(i));
+}
+
+
+bool Grammar::parametric() const {
+    if (!axiom.params.empty()) return true;
+    for (const RuleSet* rs : {&rules, &interpretation})
+        for (const auto& p : rs->productions)
+            if (p.slotCount > 0 || !p.successor.args.empty()) return true;
+    return false;
+}
+
+bool Grammar::hasContext() const {
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.hasContext(); });
+}
+
+bool Grammar::stochastic() const {
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.stochastic(); });
+}
+
+bool Grammar::usesCut() const {
+    auto hasCut = [](const auto& symbols) {
+        return std::find(symbols.begin(), symbols.end(), Alphabet::kCut) != symbols.end();
+    };
+    if (hasCut(axiom.symbols)) return true;
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [&](const Production& p) { return hasCut(p.successor.symbols); });
+}
+
+}  // namespace sprout

@@ -1,0 +1,59 @@
+#pragma once
+// One parallel rewriting step for any grammar: stochastic, context-sensitive (ABOP bracket
+// semantics), parametric with conditions, cut. Used for derivation steps and, with the
+// interpretation rules, for the cpfg homomorphism.
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "core/grammar.hpp"
+
+namespace sprout {
+
+class StepRewriter {
+public:
+    StepRewriter(const Grammar& g, const RuleSet& rules);
+
+    // An upper bound on the size of the rewritten string, computed without rewriting:
+    // `tight` counts per symbol (one pass over the string), otherwise the longest
+    // successor times the length (no pass).
+    void bound(const ModuleString& in, std::uint64_t& modules, std::uint64_t& params, bool tight) const;
+    // Rewrites `in` into `out` (sized by bound()). Returns false when cancelled.
+    bool rewrite(const ModuleString& in, ModuleString& out, Rng& rng, const std::atomic<bool>* cancel,
+                 const std::function<void(double)>& progress);
+
+private:
+    const Production* select(size_t i, Rng& rng);
+    bool matches(const PatternModule& pm, SymbolId s) const;
+    bool matchLeft(const Production& p, size_t i);
+    bool matchRight(const Production& p, size_t i);
+    void bind(const PatternModule& pm, size_t j);
+    bool applicable(const Production& p, size_t i, Rng& rng);
+    void prepare(const ModuleString& in);
+
+    const Grammar& m_g;
+    const RuleSet& m_rules;
+    std::vector<std::uint8_t> m_arity;
+    std::vector<std::uint8_t> m_hasRules;
+    std::vector<std::uint32_t> m_maxLen;     // per symbol: most modules one rewrite can emit
+    std::vector<std::uint32_t> m_maxParams;
+    std::uint32_t m_maxLenAll = 1, m_maxParamsAll = 0;
+    bool m_needBrackets = false;  // contexts: bracket matching and parameter offsets
+    bool m_parametric = false;
+    bool m_cut = false;
+
+    // Scratch for the current step.
+    const ModuleString* m_in = nullptr;
+    std::vector<std::uint32_t> m_match;    // index of the matching bracket
+    std::vector<std::uint64_t> m_offset;   // parameter offset of each module (contexts only)
+    size_t m_paramPos = 0;                 // parameter offset of the module being rewritten
+    std::vector<double> m_slots;
+    std::vector<std::uint32_t> m_candidates;
+};
+
+// Removes each cut symbol '%' together with the rest of its branch (ABOP section 1.10.3,
+// used for shedding): everything up to, not including, the ']' that closes the branch.
+void applyCut(ModuleString& s, const Alphabet& alphabet);
+
+}  // namespace sprout

@@ -1,0 +1,108 @@
+// The size cap, cancellation and progress of the derivation engine.
+#include <gtest/gtest.h>
+
+#include <thread>
+
+#include "test_util.hpp"
+
+namespace sprout::test {
+namespace {
+
+TEST(Limits, ExplosiveD0LIsRefusedBeforeAllocating) {
+    auto g = grammarOf("axiom: F\nF -> FFFFFFFFFF\n");
+    DeriveOptions opts;
+    opts.limits.maxModules = 1'000'000;
+    Derivation d(g, opts);
+    DeriveOutcome o = d.deriveTo(40);
+    EXPECT_EQ(o.status, DeriveStatus::TooBig);
+    EXPECT_EQ(o.step, 7);  // the first step over the cap: 10^7 modules
+    EXPECT_EQ(o.predictedModules, 10'000'000u);
+    EXPECT_EQ(o.message,
+              "step 7 would produce 10,000,000 modules (19.1 MB), over the limit of 1,000,000 modules; "
+              "lower n or raise the limit (--max-modules)");
+    EXPECT_TRUE(d.deriveTo(6).ok());  // below the cap still works
+}
+
+TEST(Limits, DefaultCapRefusesAHugeDerivationInstantly) {
+    // 2^10000 modules would exhaust any machine; the prediction saturates and refuses.
+    auto g = grammarOf("axiom: F\nF -> FF\n");
+    DeriveResult r = derive(g, 10000);
+    EXPECT_EQ(r.outcome.status, DeriveStatus::TooBig);
+    EXPECT_EQ(r.outcome.step, 29);  // 2^29 = 536,870,912 > 500 M
+}
+
+TEST(Limits, GeneralPathPredictsAnUpperBound) {
+    auto g = grammarOf("seed: 1\naxiom: F\nF -> FFFF : 0.5\nF -> F : 0.5\n");
+    DeriveOptions opts;
+    opts.limits.maxModules = 5000;
+    DeriveResult r = derive(g, 30, opts);
+    EXPECT_EQ(r.outcome.status, DeriveStatus::TooBig);
+    EXPECT_NE(r.outcome.message.find("up to"), std::string::npos);
+    EXPECT_LE(r.outcome.predictedModules, 4 * 5000u);
+}
+
+TEST(Limits, ParametersCountTowardsMemory) {
+    auto g = grammarOf("axiom: A(1)\nA(x) -> A(x)A(x)\n");
+    DeriveOptions opts;
+    opts.limits.maxBytes = 1 << 20;  // 1 MB: ~100 k modules of 10 bytes
+    DeriveResult r = derive(g, 20, opts);
+    EXPECT_EQ(r.outcome.status, DeriveStatus::TooBig);
+    EXPECT_NE(r.outcome.message.find("over the memory limit"), std::string::npos);
+    EXPECT_LE(r.outcome.step, 17);
+}
+
+TEST(Limits, CancellationStopsAStep) {
+    auto g = grammarOf("axiom: A(1)\nA(x) -> F(x)[+A(x*0.7)][-A(x*0.7)]\n");
+    std::atomic<bool> cancel{true};
+    DeriveOptions opts;
+    opts.cancel = &cancel;
+    Derivation d(g, opts);
+    DeriveOutcome o = d.deriveTo(22);
+    EXPECT_EQ(o.status, DeriveStatus::Cancelled);
+    EXPECT_LT(d.stepsDerived(), 22);
+}
+
+TEST(Limits, CancellationFromAnotherThread) {
+    auto g = grammarOf("axiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\nQ < Z -> Z\n");  // general path
+    std::atomic<bool> cancel{false};
+    std::atomic<int> calls{0};
+    DeriveOptions opts;
+    opts.cancel = &cancel;
+    opts.progress = [&](int, int, double) {
+        if (++calls == 3) cancel = true;
+    };
+    Derivation d(g, opts);
+    DeriveOutcome o = d.deriveTo(14);
+    EXPECT_EQ(o.status, DeriveStatus::Cancelled);
+    EXPECT_GE(calls.load(), 3);
+}
+
+TEST(Limits, ProgressReportsEveryStep) {
+    auto g = grammarOf("axiom: A(1)\nA(x) -> A(x)B\n");
+    std::vector<int> steps;
+    DeriveOptions opts;
+    opts.progress = [&](int step, int total, double fraction) {
+        EXPECT_EQ(total, 5);
+        if (fraction == 1.0) steps.push_back(step);
+    };
+    ASSERT_TRUE(derive(g, 5, opts).outcome.ok());
+    EXPECT_EQ(steps, (std::vector<int>{1, 2, 3, 4, 5}));
+}
+
+TEST(Limits, NonParametricStringsUseTwoBytesPerModule) {
+    auto g = grammarOf("axiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+    DeriveResult r = derive(g, 8);
+    ASSERT_TRUE(r.outcome.ok());
+    EXPECT_EQ(r.string->bytes(), r.string->size() * 2);
+    EXPECT_LE(r.string->symbols.capacity(), r.string->size() + 16);
+}
+
+TEST(Limits, ParametricStringsUseEightBytesPerParameter) {
+    auto g = grammarOf("axiom: A(1)\nA(x) -> F(x)[+A(x*0.7)][-A(x*0.7)]\n");
+    DeriveResult r = derive(g, 12);
+    ASSERT_TRUE(r.outcome.ok());
+    EXPECT_EQ(r.string->bytes(), r.string->size() * 2 + r.string->params.size() * 8);
+}
+
+}  // namespace
+}  // namespace sprout::test
