@@ -17,19 +17,20 @@ bool hasErrors(const std::vector<Diagnostic>& diags) {
                        [](const Diagnostic& d) { return d.severity == Severity::Error; });
 }
 
+// Optimal string alignment distance: Levenshtein plus adjacent transpositions, the most
+// common typing slip ("anlge").
 static size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diag = row[0];
-        row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
-            size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
-            diag = up;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
         }
     }
-    return row[b.size()];
+    return d[a.size()][b.size()];
 }
 
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates) {
@@ -44,7 +45,7 @@ std::string closestMatch(const std::string& word, const std::vector<std::string>
     }
     // A suggestion must be closer than a rewrite: at most a third of the word may change.
     size_t limit = std::max<size_t>(1, word.size() / 3);
-    return bestDist <= limit && bestDist > 0 ? best : std::string();
+    return bestDist <= limit && bestDist > 0 && bestDist < word.size() ? best : std::string();
 }
 
 }  // namespace sprout

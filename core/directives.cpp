@@ -42,7 +42,7 @@ void seed(Parser& p, const SourceLine& line, std::string_view value) {
     std::uint64_t v = 0;
     bool ok = !value.empty();
     for (char c : value) {
-        if (c < '0' || c > '9' || v > (UINT64_MAX - 9) / 10) {
+        if (c < '0' || c > '9' || v > (UINT64_MAX - std::uint64_t(c - '0')) / 10) {
             ok = false;
             break;
         }

@@ -164,7 +164,7 @@ private:
 
     NodePtr parseTernary(int depth) {
         if (auto g = guard(depth)) return g;
-        NodePtr cond = parseOr(depth + 1);
+        NodePtr cond = parseOr(depth);
         if (m_failed || !accept("?")) return cond;
         NodePtr yes = parseTernary(depth + 1);
         if (m_failed) return cond;

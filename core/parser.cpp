@@ -67,10 +67,10 @@ void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& r
 
 }  // namespace
 
-Parser::Parser(std::string_view text) : m_text(text) {
-    if (m_text.starts_with("\xEF\xBB\xBF")) m_text.replace(0, 3, "   ");  // UTF-8 byte order mark
-    m_original = std::string(text);
-    if (m_original.starts_with("\xEF\xBB\xBF")) m_original.replace(0, 3, " ");
+Parser::Parser(std::string_view text) {
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
+    m_text = std::string(text);
+    m_original = m_text;
 }
 
 size_t Parser::nameLength(std::string_view s, size_t pos) const {
@@ -161,7 +161,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
         return false;
     }
     if (int(open.size()) != extra || closedOuter != (net < 0 ? 1 : 0)) {
-        m_sink.error(line, text, std::string("a rule for '") + (net > 0 ? "[" : "]") +
+        m_sink.error(line, trim(text), std::string("a rule for '") + (net > 0 ? "[" : "]") +
                                      "' must keep one unmatched '" + (net > 0 ? "[" : "]") + "'");
         return false;
     }
@@ -355,9 +355,10 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
 void Parser::parseRule(const SourceLine& line, bool interpretation) {
     std::string_view text = line.text;
     size_t arrow = findTopLevel(text, "->");
+    size_t arrowEnd = arrow + 2;
+    if (arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's -->
     std::string_view head = text.substr(0, arrow);
-    std::string_view tail = text.substr(arrow + 2);
-    if (tail.starts_with(">")) tail.remove_prefix(1);  // L-Py's -->
+    std::string_view tail = text.substr(arrowEnd);
 
     // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF".
     size_t colon = findTopLevel(head, ":");
@@ -443,10 +444,11 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
     std::string_view succText = tail;
     if (probColon != std::string_view::npos) {
         succText = tail.substr(0, probColon);
-        auto p = constant(line, tail.substr(probColon + 1));
+        std::string_view probText = trim(tail.substr(probColon + 1));
+        auto p = constant(line, probText);
         if (!p) return;
         if (!(*p >= 0)) {
-            m_sink.error(line, tail.substr(probColon + 1), "a probability cannot be negative");
+            m_sink.error(line, probText, "a probability cannot be negative");
             return;
         }
         prod.probability = *p;

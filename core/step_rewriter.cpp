@@ -20,8 +20,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         m_maxParams[s] = m_arity[s];
         m_hasRules[s] = s < rules.bySymbol.size() && !rules.bySymbol[s].empty();
         if (m_arity[s]) m_parametric = true;
-        if (!m_hasRules[s]) continue;
-        for (auto idx : rules.bySymbol[s]) {
+        for (auto idx : m_hasRules[s] ? rules.bySymbol[s] : std::vector<std::uint32_t>{}) {
             const Production& p = rules.productions[idx];
             m_maxLen[s] = std::max<std::uint32_t>(m_maxLen[s], std::uint32_t(p.successor.symbols.size()));
             m_maxParams[s] = std::max<std::uint32_t>(m_maxParams[s], std::uint32_t(p.successor.paramCount()));

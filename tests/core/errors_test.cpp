@@ -50,22 +50,25 @@ TEST(Errors, EachMistakeHasAPositionAndAMessage) {
         {"seed: abc\naxiom: F\n", "1:7: the seed must be a whole number such as 'seed: 42'"},
         {"axiom: F\n< F -> G\n", "2:1: '<' needs a left context before it (or '*' for any)"},
         {"axiom: F\nF > -> G\n", "2:3: '>' needs a right context after it (or '*' for any)"},
-        {"axiom: F\nF -> F : -0.5\n", "2:8: a probability cannot be negative"},
+        {"axiom: F\nF -> F : -0.5\n", "2:10: a probability cannot be negative"},
         {"axiom: F\ninterpretation: F\n", "2:17: 'interpretation:' starts a section; put its rules on the next lines"},
         {"axiom: F\n* -> F\n", "2:1: '*' (any module) can only be used in a context"},
         {"axiom: F\n[A < B -> C\n", "2:1: brackets are not allowed here: a left context is followed back through parent branches automatically"},
         {"angle: 20 ~ -1\naxiom: F\n", "1:12: the spread after '~' cannot be negative"},
         {"axiom:\n", "1:7: the axiom is empty: write the starting string, e.g. 'axiom: F'"},
-        {"axiom: F\nF(x) : x > 1 -> F(x = 1)\n", "2:22: '=' is not a comparison: write '==' to test equality"},
+        {"axiom: F\nF(x) : x > 1 -> F(x = 1)\n", "2:21: '=' is not a comparison: write '==' to test equality"},
         {"axiom: F\nignore: F(1)\n", "2:9: list only module names after 'ignore:', without parameters"},
         {"axiom: F\ninterpretation:\n[ -> +F\n", "3:6: a rule for '[' must keep one unmatched '['"},
         {"axiom: A(1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,24,25,26,27,28,29,30,31,32,33)\n",
          "1:8: a module can have at most 32 parameters"},
-        {"axiom: F\nA(x) -> F(" "((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((x"
-         "))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))\n",
-         "2:110: expression is nested too deeply (more than 100 levels)"},
+        {"axiom: F\nF -> F\n\nG(x) -> G(max(x, 1)\n", "4:10: this '(' is never closed"},
     };
     for (const Case& c : cases) EXPECT_EQ(firstError(c.text), c.expected) << c.text;
+}
+
+TEST(Errors, DeepNestingIsAnErrorNotAStackOverflow) {
+    std::string deep = "axiom: F\nA(x) -> F(" + std::string(100000, '(') + "x" + std::string(100000, ')') + ")\n";
+    EXPECT_EQ(firstError(deep), "2:112: expression is nested too deeply (more than 100 levels)");
 }
 
 TEST(Errors, AllErrorsOfAFileAreReported) {

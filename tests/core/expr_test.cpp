@@ -133,7 +133,7 @@ TEST(Expr, ErrorsHavePositionsAndSuggestions) {
     EXPECT_EQ(msg("min(1)"), "1: 'min' takes 2 arguments, not 1");
     EXPECT_EQ(msg("1 $ 2"), "3: unexpected '$' in expression");
     EXPECT_EQ(msg(std::string(150, '(') + "1" + std::string(150, ')')).substr(0, 40),
-              "101: expression is nested too deeply (mo");
+              "102: expression is nested too deeply (mo");
 }
 
 }  // namespace
