@@ -116,6 +116,17 @@ public:
             e.m_slot = root->slot;
             return e;
         }
+        if (root->op == Op::Add || root->op == Op::Sub || root->op == Op::Mul || root->op == Op::Div) {
+            const Node& a = *root->a;
+            const Node& b = *root->b;
+            if ((a.op == Op::Slot && b.op == Op::Const) || (a.op == Op::Const && b.op == Op::Slot)) {
+                e.m_kind = a.op == Op::Slot ? Expr::Kind::SlotOpConst : Expr::Kind::ConstOpSlot;
+                e.m_op = root->op;
+                e.m_slot = a.op == Op::Slot ? a.slot : b.slot;
+                e.m_value = a.op == Op::Const ? a.value : b.value;
+                return e;
+            }
+        }
         e.m_kind = Expr::Kind::Program;
         int depth = 0, maxDepth = 0;
         emit(*root, e, depth, maxDepth);

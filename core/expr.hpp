@@ -30,7 +30,9 @@ struct Instr {
 
 class Expr {
 public:
-    enum class Kind : std::uint8_t { Const, Slot, Program };
+    // SlotOpConst / ConstOpSlot: `x*0.7`, `t+1`, `2/x`... the shapes most successor
+    // parameters take, evaluated without the interpreter loop (same operation, same rounding).
+    enum class Kind : std::uint8_t { Const, Slot, SlotOpConst, ConstOpSlot, Program };
 
     static Expr constant(double v) {
         Expr e;
@@ -44,6 +46,8 @@ public:
         switch (m_kind) {
             case Kind::Const: return m_value;
             case Kind::Slot: return slots[m_slot];
+            case Kind::SlotOpConst: return binary(m_op, slots[m_slot], m_value);
+            case Kind::ConstOpSlot: return binary(m_op, m_value, slots[m_slot]);
             default: return run(slots, rng);
         }
     }
@@ -55,8 +59,17 @@ public:
 private:
     friend class ExprCompiler;
     double run(const double* slots, Rng& rng) const;
+    static double binary(Op op, double a, double b) {
+        switch (op) {
+            case Op::Add: return a + b;
+            case Op::Sub: return a - b;
+            case Op::Mul: return a * b;
+            default: return a / b;
+        }
+    }
 
     Kind m_kind = Kind::Const;
+    Op m_op = Op::Add;
     std::uint16_t m_slot = 0;
     bool m_usesRandom = false;
     double m_value = 0;

@@ -2,9 +2,17 @@
 // A growable array of trivially copyable values that does not zero what it allocates.
 // std::vector::resize writes every element once before the derivation writes it again;
 // on a 6 M-module string that first pass costs as much as the derivation step itself.
+//
+// Big buffers are mapped with transparent huge pages: a 33 M-module parametric step writes
+// 130 MB of fresh memory, and with 4 KB pages the kernel's page faults took more time than
+// the derivation (measured: 184 ms of system time in a 330 ms run).
+#include <sys/mman.h>
+
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
+#include <cstdint>
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -22,17 +30,19 @@ public:
     PodBuffer(PodBuffer&& o) noexcept
         : m_data(std::exchange(o.m_data, nullptr)),
           m_size(std::exchange(o.m_size, 0)),
-          m_capacity(std::exchange(o.m_capacity, 0)) {}
+          m_capacity(std::exchange(o.m_capacity, 0)),
+          m_mapped(std::exchange(o.m_mapped, false)) {}
     PodBuffer& operator=(PodBuffer o) noexcept {
         swap(o);
         return *this;
     }
-    ~PodBuffer() { std::free(m_data); }
+    ~PodBuffer() { release(); }
 
     void swap(PodBuffer& o) noexcept {
         std::swap(m_data, o.m_data);
         std::swap(m_size, o.m_size);
         std::swap(m_capacity, o.m_capacity);
+        std::swap(m_mapped, o.m_mapped);
     }
 
     T* data() { return m_data; }
@@ -48,10 +58,20 @@ public:
     // Capacity for at least n elements; the new tail is left uninitialised.
     void reserve(size_t n) {
         if (n <= m_capacity) return;
-        void* p = std::realloc(m_data, n * sizeof(T));
-        if (!p) throw std::bad_alloc();
-        m_data = static_cast<T*>(p);
-        m_capacity = n;
+        const size_t bytes = n * sizeof(T);
+        if (bytes < kHugeThreshold && !m_mapped) {
+            void* p = std::realloc(m_data, bytes);
+            if (!p) throw std::bad_alloc();
+            m_data = static_cast<T*>(p);
+            m_capacity = n;
+            return;
+        }
+        T* p = mapHuge(bytes);
+        if (m_size) std::memcpy(p, m_data, m_size * sizeof(T));
+        release();
+        m_data = p;
+        m_mapped = true;
+        m_capacity = roundUp(bytes) / sizeof(T);
     }
     // Size n; elements past the old size are uninitialised.
     void resizeUninitialized(size_t n) {
@@ -72,10 +92,15 @@ public:
     // Gives back unused capacity (after a derivation step sized by an upper bound).
     void shrinkToFit() {
         if (m_capacity == m_size) return;
+        if (m_mapped) {
+            size_t keep = roundUp(std::max<size_t>(m_size * sizeof(T), 1));
+            size_t have = roundUp(m_capacity * sizeof(T));
+            if (keep < have) munmap(reinterpret_cast<char*>(m_data) + keep, have - keep);
+            m_capacity = keep / sizeof(T);
+            return;
+        }
         if (m_size == 0) {
-            std::free(m_data);
-            m_data = nullptr;
-            m_capacity = 0;
+            release();
             return;
         }
         if (void* p = std::realloc(m_data, m_size * sizeof(T))) {
@@ -88,9 +113,36 @@ public:
     }
 
 private:
+    static constexpr size_t kHugeThreshold = 8u << 20;
+    static constexpr size_t kHugePage = 2u << 20;
+    static size_t roundUp(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+
+    // A 2 MB-aligned private mapping advised for huge pages (the slack around it unmapped).
+    static T* mapHuge(size_t bytes) {
+        const size_t size = roundUp(bytes);
+        void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (raw == MAP_FAILED) throw std::bad_alloc();
+        char* base = static_cast<char*>(raw);
+        char* aligned = reinterpret_cast<char*>((reinterpret_cast<uintptr_t>(base) + kHugePage - 1) & ~(kHugePage - 1));
+        if (aligned > base) munmap(base, size_t(aligned - base));
+        char* end = aligned + size;
+        char* rawEnd = base + size + kHugePage;
+        if (rawEnd > end) munmap(end, size_t(rawEnd - end));
+        madvise(aligned, size, MADV_HUGEPAGE);
+        return reinterpret_cast<T*>(aligned);
+    }
+    void release() {
+        if (m_mapped) munmap(m_data, roundUp(m_capacity * sizeof(T)));
+        else std::free(m_data);
+        m_data = nullptr;
+        m_capacity = m_size = 0;
+        m_mapped = false;
+    }
+
     T* m_data = nullptr;
     size_t m_size = 0;
     size_t m_capacity = 0;
+    bool m_mapped = false;
 };
 
 }  // namespace sprout

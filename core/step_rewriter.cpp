@@ -32,6 +32,12 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         m_maxParamsAll = std::max(m_maxParamsAll, m_maxParams[s]);
     }
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
+    m_always.assign(A, nullptr);
+    for (size_t s = 0; s < A; ++s) {
+        if (!m_hasRules[s]) continue;
+        const Production& first = rules.productions[rules.bySymbol[s].front()];
+        if (!first.hasContext() && !first.condition && !first.stochastic()) m_always[s] = &first;
+    }
 }
 
 void StepRewriter::bound(const ModuleString& in, std::uint64_t& modules, std::uint64_t& params,
@@ -239,7 +245,13 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
         }
         m_paramPos = pp;
         const unsigned a = arity[sym[i]];
-        if (const Production* p = select(i, rng)) {
+        const Production* p = m_always[sym[i]];
+        if (p) {
+            for (unsigned k = 0; k < a; ++k) m_slots[k] = par[pp + k];
+        } else {
+            p = select(i, rng);
+        }
+        if (p) {
             const auto& succ = p->successor;
             const size_t n = succ.symbols.size();
             if (n) std::memcpy(ds, succ.symbols.data(), n * sizeof(SymbolId));

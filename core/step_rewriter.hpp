@@ -36,6 +36,9 @@ private:
     const RuleSet& m_rules;
     std::vector<std::uint8_t> m_arity;
     std::vector<std::uint8_t> m_hasRules;
+    // The rule that always applies to a symbol (first in file order, without context,
+    // condition or probability), so the common case skips matching altogether.
+    std::vector<const Production*> m_always;
     std::vector<std::uint32_t> m_maxLen;     // per symbol: most modules one rewrite can emit
     std::vector<std::uint32_t> m_maxParams;
     std::uint32_t m_maxLenAll = 1, m_maxParamsAll = 0;
