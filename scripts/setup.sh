@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Sprout's set-up on a fresh Debian 12 machine: installs the Debian packages that are missing,
+# builds, then either opens Sprout (default) or runs the whole test suite.
+#
+#   scripts/setup.sh         install, build, open the viewer on the default plant
+#   scripts/setup.sh test    install, build, run every test (what CI runs)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode="${1:-run}"
+
+packages=(
+  build-essential cmake pkg-config python3 python3-glad
+  libglm-dev libglfw3-dev libimgui-dev libgl1-mesa-dev libosmesa6-dev libpng-dev
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "Installing: ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+jobs="$(nproc 2>/dev/null || echo 2)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$jobs"
+
+case "$mode" in
+  test)
+    ctest --test-dir build --output-on-failure -j"$jobs"
+    ;;
+  run)
+    exec ./build/sprout "${@:2}"
+    ;;
+  *)
+    echo "usage: scripts/setup.sh [run|test]" >&2
+    exit 2
+    ;;
+esac
