@@ -5,6 +5,7 @@
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -14,8 +15,11 @@ struct Result {
 };
 
 Result sprout(const std::string& args, const std::string& stdinText = "") {
-    std::string errFile = testing::TempDir() + "sprout_stderr.txt";
-    std::string inFile = testing::TempDir() + "sprout_stdin.txt";
+    // ctest runs tests in parallel processes: every call gets its own files.
+    static int calls = 0;
+    std::string tag = std::to_string(getpid()) + "_" + std::to_string(++calls);
+    std::string errFile = testing::TempDir() + "sprout_stderr_" + tag + ".txt";
+    std::string inFile = testing::TempDir() + "sprout_stdin_" + tag + ".txt";
     std::ofstream(inFile) << stdinText;
     std::string cmd = std::string(SPROUT_BINARY) + " " + args + " <" + inFile + " 2>" + errFile;
     Result r;
@@ -27,11 +31,13 @@ Result sprout(const std::string& args, const std::string& stdinText = "") {
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     std::ifstream e(errFile);
     r.err.assign(std::istreambuf_iterator<char>(e), {});
+    std::remove(errFile.c_str());
+    std::remove(inFile.c_str());
     return r;
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-    std::string path = testing::TempDir() + name;
+    std::string path = testing::TempDir() + std::to_string(getpid()) + "_" + name;
     std::ofstream(path) << text;
     return path;
 }
