@@ -1,3 +1,4 @@
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -55,6 +56,90 @@ void seed(Parser& p, const SourceLine& line, std::string_view value) {
     p.grammar().settings.seed = v;
 }
 
+std::optional<std::uint32_t> colour(std::string_view word) {
+    if (word.starts_with("#")) word.remove_prefix(1);
+    if (word.size() != 6 && word.size() != 8) return std::nullopt;
+    std::uint32_t v = 0;
+    for (char c : word) {
+        int d = std::isdigit(static_cast<unsigned char>(c)) ? c - '0'
+                : (c >= 'a' && c <= 'f') ? c - 'a' + 10 : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : -1;
+        if (d < 0) return std::nullopt;
+        v = v << 4 | std::uint32_t(d);
+    }
+    return word.size() == 6 ? (v << 8 | 0xFF) : v;
+}
+
+std::vector<std::string_view> words(std::string_view text) {
+    std::vector<std::string_view> out;
+    size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && (isSpace(text[i]) || text[i] == ',')) ++i;
+        size_t start = i;
+        while (i < text.size() && !isSpace(text[i]) && text[i] != ',') ++i;
+        if (i > start) out.push_back(text.substr(start, i - start));
+    }
+    return out;
+}
+
+bool colours(Parser& p, const SourceLine& line, std::string_view text, std::vector<std::uint32_t>& out) {
+    for (auto w : words(text)) {
+        auto c = colour(w);
+        if (!c) {
+            p.sink().error(line, w, "'" + std::string(w) + "' is not a colour: write it as #rrggbb, e.g. #6b4a2e");
+            return false;
+        }
+        out.push_back(*c);
+    }
+    return true;
+}
+
+void branchScale(Parser& p, const SourceLine& line, std::string_view value) {
+    auto v = p.numbers(line, value, 1, 2, "branch_scale: 0.8 0.7");
+    if (!v) return;
+    for (double x : *v)
+        if (!(x > 0 && x <= 10)) return p.sink().error(line, value, "branch_scale factors must be between 0 and 10");
+    p.grammar().settings.branchLength = (*v)[0];
+    p.grammar().settings.branchWidth = v->size() > 1 ? (*v)[1] : (*v)[0];
+}
+
+void tropism(Parser& p, const SourceLine& line, std::string_view value) {
+    auto v = p.numbers(line, value, 4, 4, "tropism: 0 -1 0 0.2");
+    if (!v) return;
+    auto& s = p.grammar().settings;
+    s.tropism = {(*v)[0], (*v)[1], (*v)[2]};
+    s.tropismStrength = (*v)[3];
+    if ((*v)[0] == 0 && (*v)[1] == 0 && (*v)[2] == 0)
+        p.sink().error(line, value, "the tropism direction cannot be 0 0 0");
+}
+
+void palette(Parser& p, const SourceLine& line, std::string_view value) {
+    std::vector<std::uint32_t> c;
+    if (colours(p, line, value, c)) {
+        if (c.empty()) return p.sink().error(line, value, "list colours, as in 'palette: #6b4a2e #7db344'");
+        p.grammar().settings.palette = std::move(c);
+    }
+}
+
+void gradient(Parser& p, const SourceLine& line, std::string_view value) {
+    auto& s = p.grammar().settings;
+    if (value == "off" || value == "no") return void(s.gradient = Toggle::Off);
+    if (value == "on" || value == "yes") return void(s.gradient = Toggle::On);
+    std::vector<std::uint32_t> c;
+    if (!colours(p, line, value, c)) return;
+    if (c.size() != 2) return p.sink().error(line, value, "expected 'gradient: on', 'off' or two colours, bark then tip");
+    s.gradient = Toggle::On;
+    s.barkColour = c[0];
+    s.tipColour = c[1];
+}
+
+void view(Parser& p, const SourceLine& line, std::string_view value) {
+    auto& s = p.grammar().settings;
+    if (value == "2d") s.view = ViewHint::Flat;
+    else if (value == "3d") s.view = ViewHint::Solid;
+    else if (value == "auto") s.view = ViewHint::Auto;
+    else p.sink().error(line, value, "expected 'view: 2d', '3d' or 'auto'");
+}
+
 }  // namespace
 
 const std::vector<Directive>& directives() {
@@ -66,6 +151,13 @@ const std::vector<Directive>& directives() {
         {"angle", jittered(&Settings::angle)},
         {"step", jittered(&Settings::step)},
         {"width", number(&Settings::width, 0, 1e6, "width")},
+        {"width_factor", number(&Settings::widthFactor, 0.001, 1000, "width_factor")},
+        {"branch_scale", branchScale},
+        {"step_scale", number(&Settings::stepScale, 1e-6, 1e6, "step_scale")},
+        {"tropism", tropism},
+        {"palette", palette},
+        {"gradient", gradient},
+        {"view", view},
         {"seed", seed},
         {"axiom", [](Parser& p, const SourceLine& l, std::string_view v) { p.setAxiom(l, v); }},
         {"ignore", [](Parser& p, const SourceLine& l, std::string_view v) { p.setIgnore(l, v); }},

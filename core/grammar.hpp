@@ -1,6 +1,7 @@
 #pragma once
 // A parsed grammar: the alphabet, the axiom, productions indexed by predecessor symbol and
 // the directives' values. Produced by parse(), read by derive() and the turtle.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -20,11 +21,24 @@ struct Jittered {
     double sigma = 0;
 };
 
+enum class Toggle { Auto, On, Off };
+enum class ViewHint { Auto, Flat, Solid };  // `view: 2d` / `view: 3d`
+
 struct Settings {
     int iterations = 0;
     Jittered angle{90, 0};  // degrees
     Jittered step{1, 0};
-    double width = 1;
+    double width = 0;         // stem diameter in step units; 0: automatic, from the plant's size
+    double widthFactor = 0.7; // `!` multiplies the width by it, `#` divides
+    double branchLength = 1;  // branch_scale: factors applied at each `[`
+    double branchWidth = 1;
+    double stepScale = 1;     // step_scale: length factor per derivation step
+    std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
+    double tropismStrength = 0;
+    std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
+    Toggle gradient = Toggle::Auto;      // colour by branch order (Auto: when no colour modules)
+    std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
+    ViewHint view = ViewHint::Auto;
     std::uint64_t seed = 1;
 };
 

@@ -71,6 +71,10 @@ Parser::Parser(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
     m_text = std::string(text);
     m_original = m_text;
+    // The turtle's multi-letter modules (cpfg's predefined surfaces and ABOP's sphere).
+    m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P"};
+    std::stable_sort(m_moduleNames.begin(), m_moduleNames.end(),
+                     [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
 }
 
 size_t Parser::nameLength(std::string_view s, size_t pos) const {
@@ -192,6 +196,40 @@ std::optional<Jittered> Parser::jittered(const SourceLine& line, std::string_vie
         j.sigma = *sigma;
     }
     return j;
+}
+
+std::optional<std::vector<double>> Parser::numbers(const SourceLine& line, std::string_view text,
+                                                   size_t minCount, size_t maxCount, const char* example) {
+    std::vector<std::string_view> parts;
+    bool commas = findTopLevel(text, ",") != std::string_view::npos;
+    size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && (commas ? text[i] == ',' : isSpace(text[i]))) ++i;
+        size_t start = i;
+        int depth = 0;
+        while (i < text.size()) {
+            char c = text[i];
+            if (c == '(') ++depth;
+            else if (c == ')') --depth;
+            else if (depth == 0 && (commas ? c == ',' : isSpace(c))) break;
+            ++i;
+        }
+        if (i > start) parts.push_back(trim(text.substr(start, i - start)));
+    }
+    if (parts.size() < minCount || parts.size() > maxCount) {
+        m_sink.error(line, text.empty() ? line.text.substr(line.text.size()) : text,
+                     std::string("expected ") + (minCount == maxCount ? std::to_string(minCount)
+                                                   : std::to_string(minCount) + " to " + std::to_string(maxCount)) +
+                         " values, as in '" + example + "'");
+        return std::nullopt;
+    }
+    std::vector<double> out;
+    for (auto part : parts) {
+        auto v = constant(line, part);
+        if (!v) return std::nullopt;
+        out.push_back(*v);
+    }
+    return out;
 }
 
 void Parser::declareModules(const SourceLine& line, std::string_view names) {

@@ -43,6 +43,9 @@ public:
     bool tokenize(const SourceLine& line, std::string_view text, std::vector<RawModule>& out);
     std::optional<double> constant(const SourceLine& line, std::string_view text);
     std::optional<Jittered> jittered(const SourceLine& line, std::string_view text);
+    // Values separated by commas, or by spaces when there is no comma ("0 -1 0 0.2").
+    std::optional<std::vector<double>> numbers(const SourceLine& line, std::string_view text,
+                                               size_t minCount, size_t maxCount, const char* example);
     void declareModules(const SourceLine& line, std::string_view names);
     void define(const SourceLine& line, std::string_view text);
     void setAxiom(const SourceLine& line, std::string_view text);

@@ -1,0 +1,36 @@
+#pragma once
+// The 3D turtle (ABOP chapter 1.5 and cpfg conventions): interprets a module string into a
+// Geometry. Starts at the origin heading +Y (the renderer is Y-up), left -X, up +Z, so
+// `+` turns counter-clockwise as seen from the front.
+//
+// F(l) G(l) draw forward (G adds no polygon vertex); f(l) g(l) move; + - turn about U;
+// & ^ pitch about L; \ / roll about H; | turn around; $ roll L horizontal; [ ] push/pop;
+// { . } polygon; ! # width; ; , ' colour; ~leaf ~petal (~l ~p) surfaces; @O(r) sphere.
+#include <cstdint>
+#include <glm/vec3.hpp>
+
+#include "core/geometry.hpp"
+#include "core/grammar.hpp"
+
+namespace sprout {
+
+struct TurtleOptions {
+    int derivationSteps = 0;            // n of the drawn string, for step_scale
+    std::uint64_t seed = 1;             // jitter
+    const std::uint16_t* ages = nullptr;  // per module: the step that created it (optional)
+};
+
+// Interprets `s` (after the grammar's interpretation rules, if any) into `out`, reusing its
+// buffers. Never fails: unknown modules are ignored, unbalanced ']' is harmless, non-finite
+// parameters are skipped.
+void interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out);
+
+// Default palette (16 colours, index 0 bark brown, 1 leaf green, ...).
+std::uint32_t defaultPaletteColour(int index);
+
+// Triangulates a simple polygon (concave allowed) by ear clipping in its best-fit plane;
+// appends triangle indices (relative to `base`) to `indices`.
+void triangulatePolygon(const std::vector<glm::vec3>& points, std::uint32_t base,
+                        std::vector<std::uint32_t>& indices);
+
+}  // namespace sprout

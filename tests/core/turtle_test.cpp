@@ -1,0 +1,205 @@
+// The 3D turtle: exact geometry for small strings, stacks, polygons, tropism, jitter.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "core/turtle.hpp"
+#include "test_util.hpp"
+
+namespace sprout::test {
+namespace {
+
+Geometry draw(const std::string& text, int n = -1) {
+    auto g = grammarOf(text);
+    Geometry geo;
+    if (!g) return geo;
+    int steps = n < 0 ? g->settings.iterations : n;
+    DeriveResult r = derive(g, steps);
+    EXPECT_TRUE(r.outcome.ok());
+    interpret(*r.string, *g, {steps, g->settings.seed, nullptr}, geo);
+    return geo;
+}
+
+void expectNear(const glm::vec3& a, const glm::vec3& b, const char* what) {
+    EXPECT_NEAR(a.x, b.x, 1e-5) << what;
+    EXPECT_NEAR(a.y, b.y, 1e-5) << what;
+    EXPECT_NEAR(a.z, b.z, 1e-5) << what;
+}
+
+TEST(Turtle, ForwardTurnForward) {
+    Geometry g = draw("angle: 90\nwidth: 0.1\naxiom: F+F-F\n");
+    ASSERT_EQ(g.cylinders.size(), 3u);
+    expectNear(g.cylinders[0].start, {0, 0, 0}, "start at the origin");
+    expectNear(g.cylinders[0].end, {0, 1, 0}, "heading +Y");
+    expectNear(g.cylinders[1].end, {-1, 1, 0}, "+ turns left (counter-clockwise from the front)");
+    expectNear(g.cylinders[2].end, {-1, 2, 0}, "- turns back");
+    EXPECT_FLOAT_EQ(g.cylinders[0].startRadius, 0.05f);
+    expectNear(g.bounds.min, {-1, 0, 0}, "bounds min");
+    expectNear(g.bounds.max, {0, 2, 0}, "bounds max");
+}
+
+TEST(Turtle, PitchAndBranches) {
+    Geometry g = draw("angle: 90\nwidth: 0.1\naxiom: F[&F]^F\n");
+    ASSERT_EQ(g.cylinders.size(), 3u);
+    expectNear(g.cylinders[1].start, {0, 1, 0}, "branch starts at the tip");
+    expectNear(g.cylinders[1].end, {0, 1, -1}, "& pitches down, away from the viewer");
+    expectNear(g.cylinders[2].end, {0, 1, 1}, "after ], ^ pitches up from the restored frame");
+    EXPECT_EQ(g.cylinders[1].order, 1);
+    EXPECT_EQ(g.cylinders[2].order, 0);
+}
+
+TEST(Turtle, TurnAroundAndRoll) {
+    Geometry g = draw("angle: 90\nwidth: 0.1\naxiom: F|F\n");
+    expectNear(g.cylinders[1].end, {0, 0, 0}, "| reverses the heading");
+    // Roll 90 about H moves L onto U, so a later turn about U becomes a pitch.
+    Geometry r = draw("angle: 90\nwidth: 0.1\naxiom: F/+F\n");
+    EXPECT_NEAR(std::fabs(r.cylinders[1].end.z), 1, 1e-5);
+    EXPECT_NEAR(r.cylinders[1].end.x, 0, 1e-5);
+}
+
+TEST(Turtle, DollarRollsLeftHorizontal) {
+    // After any roll, $ brings L back to horizontal: what follows no longer depends on the roll.
+    Geometry rolled = draw("angle: 30\nwidth: 0.1\naxiom: &/(50)$+F\n");
+    Geometry plain = draw("angle: 30\nwidth: 0.1\naxiom: &$+F\n");
+    Geometry noDollar = draw("angle: 30\nwidth: 0.1\naxiom: &/(50)+F\n");
+    expectNear(rolled.cylinders[0].end, plain.cylinders[0].end, "$ undoes the roll");
+    EXPECT_GT(glm::length(noDollar.cylinders[0].end - plain.cylinders[0].end), 0.1);
+    // With L horizontal a turn keeps the height of the pitched heading times cos(angle).
+    EXPECT_NEAR(plain.cylinders[0].end.y, std::cos(glm::radians(30.0f)) * std::cos(glm::radians(30.0f)), 1e-5);
+}
+
+TEST(Turtle, ParametersOverrideDefaults) {
+    Geometry g = draw("angle: 90\nwidth: 0.1\naxiom: F(2)+(45)F(1)!(0.4)F\n");
+    expectNear(g.cylinders[0].end, {0, 2, 0}, "F(2)");
+    float s = std::sqrt(0.5f);
+    expectNear(g.cylinders[1].end, {-s, 2 + s, 0}, "+(45)");
+    EXPECT_FLOAT_EQ(g.cylinders[2].startRadius, 0.2f);
+}
+
+TEST(Turtle, WidthStackAndTaper) {
+    Geometry g = draw("width: 1\nwidth_factor: 0.5\naxiom: F!F[!F]F\n");
+    ASSERT_EQ(g.cylinders.size(), 4u);
+    EXPECT_FLOAT_EQ(g.cylinders[0].startRadius, 0.5f);
+    EXPECT_FLOAT_EQ(g.cylinders[0].endRadius, 0.25f);  // tapers into the next segment
+    EXPECT_FLOAT_EQ(g.cylinders[1].startRadius, 0.25f);
+    EXPECT_FLOAT_EQ(g.cylinders[2].startRadius, 0.125f);  // inside the branch
+    EXPECT_FLOAT_EQ(g.cylinders[1].endRadius, 0.25f);     // the branch does not taper its parent
+    EXPECT_FLOAT_EQ(g.cylinders[3].startRadius, 0.25f);   // restored after ]
+}
+
+TEST(Turtle, ColourStack) {
+    Geometry g = draw("width: 0.1\npalette: #ff0000 #00ff00 #0000ff\naxiom: F;F[;F],F\n");
+    ASSERT_EQ(g.cylinders.size(), 4u);
+    EXPECT_EQ(g.cylinders[0].colour, 0xFF0000FFu);
+    EXPECT_EQ(g.cylinders[1].colour, 0x00FF00FFu);
+    EXPECT_EQ(g.cylinders[2].colour, 0x0000FFFFu);
+    EXPECT_EQ(g.cylinders[3].colour, 0xFF0000FFu);
+}
+
+TEST(Turtle, GradientFromBarkToTips) {
+    Geometry g = draw("width: 0.1\ngradient: #000000 #ffffff\naxiom: F[F[F]]\n");
+    ASSERT_EQ(g.cylinders.size(), 3u);
+    EXPECT_EQ(g.cylinders[0].colour, 0x000000FFu);
+    EXPECT_EQ(g.cylinders[1].colour, 0x808080FFu);
+    EXPECT_EQ(g.cylinders[2].colour, 0xFFFFFFFFu);
+}
+
+TEST(Turtle, BranchScale) {
+    Geometry g = draw("width: 1\nbranch_scale: 0.5 0.25\naxiom: F[F[F]]\n");
+    EXPECT_FLOAT_EQ(glm::length(g.cylinders[1].end - g.cylinders[1].start), 0.5f);
+    EXPECT_FLOAT_EQ(glm::length(g.cylinders[2].end - g.cylinders[2].start), 0.25f);
+    EXPECT_FLOAT_EQ(g.cylinders[2].startRadius, 0.5f * 0.25f * 0.25f);
+}
+
+TEST(Turtle, StepScaleKeepsAKochCurveTheSameSize) {
+    const std::string koch = "angle: 90\nwidth: 0.01\nstep_scale: 1/3\naxiom: F\nF -> F+F-F-F+F\n";
+    for (int n = 1; n <= 4; ++n) {
+        Geometry g = draw(koch, n);
+        EXPECT_NEAR(g.bounds.max.y - g.bounds.min.y, 1.0, 1e-4) << "n=" << n;
+    }
+}
+
+TEST(Turtle, TropismBendsAStemDownward) {
+    Geometry straight = draw("angle: 90\nwidth: 0.1\naxiom: +(60)FFFFFFFFFF\n");
+    Geometry bent = draw("angle: 90\nwidth: 0.1\ntropism: 0 -1 0 0.2\naxiom: +(60)FFFFFFFFFF\n");
+    EXPECT_LT(bent.cylinders.back().end.y, straight.cylinders.back().end.y - 1);
+    // Each segment points lower than the one before.
+    for (size_t i = 1; i < bent.cylinders.size(); ++i) {
+        glm::vec3 a = glm::normalize(bent.cylinders[i - 1].end - bent.cylinders[i - 1].start);
+        glm::vec3 b = glm::normalize(bent.cylinders[i].end - bent.cylinders[i].start);
+        EXPECT_LT(b.y, a.y + 1e-6f);
+    }
+}
+
+TEST(Turtle, JitterIsReproducibleBySeed) {
+    const std::string g = "angle: 22 ~ 4\nstep: 1 ~ 0.2\nwidth: 0.1\naxiom: F+F+F-F+F\n";
+    Geometry a = draw("seed: 5\n" + g), b = draw("seed: 5\n" + g), c = draw("seed: 6\n" + g);
+    expectNear(a.cylinders.back().end, b.cylinders.back().end, "same seed");
+    EXPECT_GT(glm::length(a.cylinders.back().end - c.cylinders.back().end), 1e-3);
+}
+
+TEST(Turtle, PolygonIsTriangulated) {
+    // A concave arrow-head outline: 5 vertices, 3 triangles, all inside the outline.
+    Geometry g = draw("angle: 90\naxiom: {.F.+F.+F.+(45)f.}\n");
+    EXPECT_TRUE(g.cylinders.empty());  // inside { }, F outlines instead of drawing stems
+    EXPECT_EQ(g.polygons.positions.size(), 5u);
+    EXPECT_EQ(g.polygons.indices.size(), 9u);
+    // Concave L-shape: area of the triangles equals the polygon's area.
+    Geometry l = draw("angle: 90\naxiom: {.F(2).+F(1).+F(1).-F(1).-F(1).+F(1).}\n");
+    const auto& P = l.polygons.positions;
+    double area = 0;
+    for (size_t t = 0; t + 2 < l.polygons.indices.size(); t += 3) {
+        glm::vec3 a = P[l.polygons.indices[t]], b = P[l.polygons.indices[t + 1]], c = P[l.polygons.indices[t + 2]];
+        area += glm::length(glm::cross(b - a, c - a)) / 2;
+    }
+    EXPECT_NEAR(area, 3.0, 1e-5);  // 2x1 + 1x1
+}
+
+TEST(Turtle, SurfacesAndSpheres) {
+    Geometry g = draw("width: 0.1\naxiom: F~leaf(2)[~l]@O(0.5)~petal\n");
+    ASSERT_EQ(g.surfaces.size(), 4u);
+    EXPECT_EQ(g.surfaces[0].kind, SurfaceKind::Leaf);
+    EXPECT_FLOAT_EQ(g.surfaces[0].size, 2);
+    EXPECT_EQ(g.surfaces[1].kind, SurfaceKind::Leaf);
+    EXPECT_EQ(g.surfaces[2].kind, SurfaceKind::Sphere);
+    EXPECT_FLOAT_EQ(g.surfaces[2].size, 0.5f);
+    EXPECT_EQ(g.surfaces[3].kind, SurfaceKind::Petal);
+    expectNear(g.surfaces[0].position, {0, 1, 0}, "at the turtle");
+}
+
+TEST(Turtle, PlanarCurvesAreRecognised) {
+    EXPECT_TRUE(draw("angle: 60\naxiom: F--F--F\nF -> F+F--F+F\n", 3).planarCurve);
+    EXPECT_FALSE(draw("angle: 25\naxiom: F\nF -> F[+F]F[-F]F\n", 3).planarCurve);  // branches: a plant
+    EXPECT_FALSE(draw("angle: 25\naxiom: F&F\n").planarCurve);
+    EXPECT_FALSE(draw("view: 3d\nangle: 60\naxiom: F--F--F\n").planarCurve);
+}
+
+TEST(Turtle, BadValuesAreSkippedNotDrawn) {
+    Geometry g = draw("width: 0.1\naxiom: F(0/0)F(1/0)FF\n");
+    ASSERT_EQ(g.cylinders.size(), 2u);  // NaN and infinity skipped
+    for (const auto& c : g.cylinders) EXPECT_TRUE(std::isfinite(c.end.y));
+    // An unbalanced ']' (possible from imported files) is harmless when drawing.
+    auto gr = grammarOf("width: 0.1\naxiom: F\n");
+    ModuleString s;
+    for (SymbolId id : {SymbolId(Alphabet::kPop), SymbolId(Alphabet::kPop), gr->axiom.symbols[0]}) s.symbols.push_back(id);
+    Geometry h;
+    interpret(s, *gr, {}, h);
+    EXPECT_EQ(h.cylinders.size(), 1u);
+}
+
+TEST(Turtle, AutomaticWidthFollowsThePlantsSize) {
+    Geometry g = draw("angle: 25\naxiom: F\nF -> F[+F]F[-F]F\n", 3);
+    float height = g.bounds.max.y - g.bounds.min.y;
+    EXPECT_NEAR(g.cylinders[0].startRadius, height / 80 / 2, 1e-4);
+    for (const auto& c : g.cylinders)
+        if (c.order > 0) EXPECT_LT(c.startRadius, g.cylinders[0].startRadius);  // thinner branches
+}
+
+TEST(Turtle, InterpretationRulesAreApplied) {
+    Geometry g = draw("angle: 45\nwidth: 0.1\naxiom: A\nA -> A[B]A\ninterpretation:\nA -> F\nB -> +F\n", 1);
+    EXPECT_EQ(g.cylinders.size(), 3u);
+}
+
+}  // namespace
+}  // namespace sprout::test
