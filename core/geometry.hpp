@@ -5,6 +5,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "core/pod_buffer.hpp"
+
 namespace sprout {
 
 // A tapered stem segment. Its ends carry round caps in the renderer, so consecutive
@@ -57,8 +59,8 @@ struct Bounds {
 };
 
 struct Geometry {
-    std::vector<CylinderInstance> cylinders;
-    std::vector<SurfaceInstance> surfaces;
+    PodBuffer<CylinderInstance> cylinders;  // written in place, never zeroed first
+    PodBuffer<SurfaceInstance> surfaces;
     Mesh polygons;
     Bounds bounds;
     // A curve in one plane without branches (Koch, Sierpinski, dragon): the renderer draws

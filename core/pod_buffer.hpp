@@ -54,6 +54,8 @@ public:
     const T& operator[](size_t i) const { return m_data[i]; }
     const T* begin() const { return m_data; }
     const T* end() const { return m_data + m_size; }
+    T* begin() { return m_data; }
+    T* end() { return m_data + m_size; }
 
     // Capacity for at least n elements; the new tail is left uninitialised.
     void reserve(size_t n) {
@@ -67,8 +69,10 @@ public:
             return;
         }
         T* p = mapHuge(bytes);
-        if (m_size) std::memcpy(p, m_data, m_size * sizeof(T));
+        const size_t size = m_size;
+        if (size) std::memcpy(p, m_data, size * sizeof(T));
         release();
+        m_size = size;
         m_data = p;
         m_mapped = true;
         m_capacity = roundUp(bytes) / sizeof(T);
@@ -79,6 +83,14 @@ public:
         m_size = n;
     }
     void clear() { m_size = 0; }
+    T& back() { return m_data[m_size - 1]; }
+    const T& back() const { return m_data[m_size - 1]; }
+    const T& front() const { return m_data[0]; }
+    // Appends one uninitialised element to be written in place (no temporary copy).
+    T& emplaceUninitialized() {
+        if (m_size == m_capacity) reserve(m_capacity ? m_capacity * 2 : 16);
+        return m_data[m_size++];
+    }
     void push_back(const T& v) {
         if (m_size == m_capacity) reserve(m_capacity ? m_capacity * 2 : 16);
         m_data[m_size++] = v;

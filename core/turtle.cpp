@@ -46,6 +46,7 @@ struct State {
     float length = 1;
     float width = 1;  // diameter
     std::int32_t colour = 0;
+    std::uint32_t stemColour = 0;   // resolved once when the colour or branch order changes
     std::int32_t lastSegment = -1;  // the segment this branch's next segment continues
     std::uint16_t order = 0;
     bool explicitColour = false;
@@ -79,7 +80,9 @@ public:
         : m_g(g), m_opt(o), m_out(out), m_rng(Rng::forStream(o.seed, 0x7077e)) {
         const auto& st = g.settings;
         m_actions.resize(g.alphabet.size());
+        m_arity.resize(g.alphabet.size());
         for (size_t s = 0; s < g.alphabet.size(); ++s) {
+            m_arity[s] = g.alphabet[SymbolId(s)].arity;
             m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
             m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
         }
@@ -100,8 +103,10 @@ public:
         m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : float(st.branchWidth);
         m_palette = st.palette;
         if (m_palette.empty()) m_palette.assign(std::begin(kDefaultPalette), std::end(kDefaultPalette));
+        m_state.stemColour = m_palette[0];
         m_state.length = float(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
         m_state.width = m_autoWidth ? 1.0f : float(st.width);
+        m_maxWidth = m_state.width;
     }
 
     void run(const ModuleString& s) {
@@ -109,9 +114,22 @@ public:
         const double* par = s.params.data();
         const size_t N = s.size();
         m_usedBrackets = false;
+        m_out.bounds.add(m_state.pos);
+        if (m_gradient) {
+            // Colour by branch order needs the deepest order first: one cheap pass.
+            int depth = 0;
+            for (size_t i = 0; i < N; ++i) {
+                depth += (sym[i] == Alphabet::kPush) - (sym[i] == Alphabet::kPop && depth > 0);
+                m_maxOrder = std::max(m_maxOrder, depth);
+            }
+            const auto& st = m_g.settings;
+            for (int o = 0; o <= std::min(m_maxOrder, 65535); ++o)
+                m_byOrder.push_back(lerpColour(st.barkColour, st.tipColour, float(o) / float(std::max(1, m_maxOrder))));
+            m_state.stemColour = m_byOrder[0];
+        }
         for (size_t i = 0; i < N; ++i) {
             const SymbolId id = sym[i];
-            const int arity = m_g.alphabet[id].arity;
+            const int arity = m_arity[id];
             const double* p = par;
             par += arity;
             const Act act = m_actions[id];
@@ -162,6 +180,7 @@ private:
                 float len = p ? float(*p) : t.length;
                 t.pos += t.H * len;
                 t.lastSegment = -1;
+                m_out.bounds.add(t.pos);
                 if (act == Act::Move && !m_polygons.empty()) vertex();
                 break;
             }
@@ -188,6 +207,7 @@ private:
                 m_usedBrackets = true;
                 m_stack.push_back(t);
                 t.order = std::uint16_t(std::min<int>(t.order + 1, 65535));
+                if (m_gradient && !t.explicitColour) t.stemColour = m_byOrder[std::min<size_t>(t.order, m_byOrder.size() - 1)];
                 t.length *= m_branchLength;
                 t.width *= m_branchWidth;
                 t.lastSegment = -1;  // a branch does not continue its parent's taper
@@ -212,18 +232,17 @@ private:
                 }
                 break;
             case Act::WidthDec:
-                t.width = p ? float(*p) : t.width * m_widthFactor;
-                break;
             case Act::WidthInc:
-                t.width = p ? float(*p) : t.width / m_widthFactor;
+                t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
+                m_maxWidth = std::max(m_maxWidth, t.width);
+                // Taper: the segment before ends as thick as the next one starts.
+                if (t.lastSegment >= 0) m_out.cylinders[size_t(t.lastSegment)].endRadius = t.width * 0.5f;
                 break;
             case Act::ColourNext:
-                t.colour = p ? int(*p) : t.colour + 1;
-                t.explicitColour = true;
-                break;
             case Act::ColourPrev:
-                t.colour = p ? int(*p) : t.colour - 1;
+                t.colour = p ? int(*p) : act == Act::ColourNext ? t.colour + 1 : t.colour - 1;
                 t.explicitColour = true;
+                t.stemColour = colour(t.colour);
                 break;
             case Act::Leaf:
             case Act::Petal:
@@ -239,22 +258,16 @@ private:
 
     void segment(float len) {
         State& t = m_state;
-        CylinderInstance c;
+        t.lastSegment = std::int32_t(m_out.cylinders.size());
+        CylinderInstance& c = m_out.cylinders.emplaceUninitialized();
         c.start = t.pos;
         t.pos += t.H * len;
         c.end = t.pos;
         c.startRadius = c.endRadius = t.width * 0.5f;
-        c.colour = colour(t.colour);
+        c.colour = t.stemColour;
         c.order = t.order;
         c.step = m_step;
-        auto& cyl = m_out.cylinders;
-        // Taper: the previous segment of the same branch ends as thick as this one starts.
-        if (t.lastSegment >= 0) cyl[size_t(t.lastSegment)].endRadius = c.startRadius;
-        t.lastSegment = std::int32_t(cyl.size());
-        if (m_gradient && m_colourModules) m_explicit.push_back(t.explicitColour);
-        cyl.push_back(c);
-        m_maxOrder = std::max<int>(m_maxOrder, t.order);
-        m_out.bounds.add(c.end);
+        m_out.bounds.add(t.pos);
         if (m_tropismE != 0) {  // ABOP 2.2: bend H towards T by e |H x T|
             glm::vec3 axis = glm::cross(t.H, m_tropism);
             float mag = glm::length(axis);
@@ -326,32 +339,27 @@ private:
 
     void finish() {
         Geometry& out = m_out;
-        for (const auto& c : out.cylinders) out.bounds.add(c.start);
-        // Automatic width: stems in proportion to the plant (1/80 of its size at the base).
+        // One pass over the segments: automatic width (stems in proportion to the plant,
+        // 1/80 of its size at the base), colour by branch order, the thickest radius.
+        float k = 1.0f;
         if (m_autoWidth && !out.bounds.empty) {
             glm::vec3 size = out.bounds.size();
             float extent = std::max({size.x, size.y, size.z});
-            float k = extent > 0 ? extent / 80.0f : 1.0f;
+            if (extent > 0) k = extent / 80.0f;
+            for (auto& s : out.surfaces)
+                if (s.kind == SurfaceKind::Sphere) s.size *= k;
+        }
+        if (k != 1.0f) {
             for (auto& c : out.cylinders) {
                 c.startRadius *= k;
                 c.endRadius *= k;
             }
-            for (auto& s : out.surfaces)
-                if (s.kind == SurfaceKind::Sphere && s.size > 0) s.size *= k;
         }
-        if (m_gradient) {
-            float denom = float(std::max(1, m_maxOrder));
-            const auto& st = m_g.settings;
-            for (size_t i = 0; i < out.cylinders.size(); ++i)
-                if (!m_colourModules || !m_explicit[i])
-                    out.cylinders[i].colour = lerpColour(st.barkColour, st.tipColour, std::min(1.0f, out.cylinders[i].order / denom));
-        }
-        float maxR = 0;
-        for (const auto& c : out.cylinders) maxR = std::max(maxR, c.startRadius);
+        float maxR = out.cylinders.empty() ? 0.0f : m_maxWidth * 0.5f * k;
         out.maxRadius = maxR;
         // A planar curve: every point in the z = 0 plane and no branches or surfaces.
-        bool flat = !out.bounds.empty && std::fabs(out.bounds.min.z) < 1e-4f * (1 + glm::length(out.bounds.size())) &&
-                    std::fabs(out.bounds.max.z) < 1e-4f * (1 + glm::length(out.bounds.size()));
+        const float tol = 1e-4f * (1 + glm::length(out.bounds.size()));
+        bool flat = !out.bounds.empty && std::fabs(out.bounds.min.z) < tol && std::fabs(out.bounds.max.z) < tol;
         auto view = m_g.settings.view;
         out.planarCurve = flat && view != ViewHint::Solid &&
                           (view == ViewHint::Flat || (!m_usedBrackets && out.surfaces.empty()));
@@ -362,16 +370,18 @@ private:
     Geometry& m_out;
     Rng m_rng;
     std::vector<Act> m_actions;
+    std::vector<std::uint8_t> m_arity;
     std::vector<State> m_stack;
     std::vector<std::vector<glm::vec3>> m_polygons;
     std::vector<std::uint32_t> m_palette;
-    std::vector<std::uint8_t> m_explicit;  // per cylinder, only when colours and gradient mix
+    std::vector<std::uint32_t> m_byOrder;  // gradient colour of each branch order
     State m_state;
     float m_angle, m_cos, m_sin, m_angleSigma, m_stepSigma;
     glm::vec3 m_tropism;
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false;
     int m_maxOrder = 0;
+    float m_maxWidth = 0;
     std::uint16_t m_step = 0;
 };
 

@@ -106,3 +106,25 @@ TEST(Limits, ParametricStringsUseEightBytesPerParameter) {
 
 }  // namespace
 }  // namespace sprout::test
+
+namespace sprout::test {
+namespace {
+
+TEST(PodBuffer, GrowingPastTheHugePageThresholdKeepsTheContents) {
+    PodBuffer<std::uint32_t> b;
+    for (std::uint32_t i = 0; i < 5'000'000; ++i) b.push_back(i);  // 20 MB: crosses 8 MB mid-way
+    ASSERT_EQ(b.size(), 5'000'000u);
+    for (std::uint32_t i = 0; i < 5'000'000; i += 99991) EXPECT_EQ(b[i], i);
+    EXPECT_EQ(b.back(), 4'999'999u);
+    PodBuffer<std::uint32_t> copy(b);
+    EXPECT_TRUE(copy == b);
+    copy.resizeUninitialized(10);
+    copy.shrinkToFit();
+    EXPECT_EQ(copy.size(), 10u);
+    EXPECT_EQ(copy[9], 9u);
+    copy.push_back(7);
+    EXPECT_EQ(copy.back(), 7u);
+}
+
+}  // namespace
+}  // namespace sprout::test
