@@ -83,6 +83,7 @@ public:
         m_size = n;
     }
     void clear() { m_size = 0; }
+    void pop_back() { --m_size; }
     T& back() { return m_data[m_size - 1]; }
     const T& back() const { return m_data[m_size - 1]; }
     const T& front() const { return m_data[0]; }
