@@ -101,8 +101,9 @@ TEST(Turtle, GradientFromBarkToTips) {
     Geometry g = draw("width: 0.1\ngradient: #000000 #ffffff\naxiom: F[F[F]]\n");
     ASSERT_EQ(g.cylinders.size(), 3u);
     EXPECT_EQ(g.cylinders[0].colour, 0x000000FFu);
-    EXPECT_EQ(g.cylinders[1].colour, 0x808080FFu);
-    EXPECT_EQ(g.cylinders[2].colour, 0xFFFFFFFFu);
+    // Each order moves 45% of the remaining way to the tip colour: 0, 0.45, 0.6975.
+    EXPECT_EQ(g.cylinders[1].colour, 0x737373FFu);
+    EXPECT_EQ(g.cylinders[2].colour, 0xB2B2B2FFu);
 }
 
 TEST(Turtle, BranchScale) {
