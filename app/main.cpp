@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 #include "app/cli/commands.hpp"
 #include "app/presets.hpp"
@@ -24,7 +25,19 @@ int printUsage(bool toStderr) {
 
 }  // namespace sprout::cli
 
+static int run(int argc, char** argv);
+
 int main(int argc, char** argv) {
+    // Limits raised past what the machine has end in a message, not an abort.
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "sprout: out of memory; lower n or the limits (--max-modules, --max-memory)\n");
+        return 1;
+    }
+}
+
+static int run(int argc, char** argv) {
     using namespace sprout;
     if (argc >= 2) {
         const char* cmd = argv[1];

@@ -76,8 +76,18 @@ D0LExpander::D0LExpander(const Grammar& g) : m_alphabet(g.alphabet.size()) {
 }
 
 std::uint64_t D0LExpander::countAt(const ModuleString& axiom, int n) const {
-    std::vector<std::uint64_t> counts(m_alphabet, 0), next(m_alphabet);
+    return countsUpTo(axiom, n).back();
+}
+
+std::vector<std::uint64_t> D0LExpander::countsUpTo(const ModuleString& axiom, int n) const {
+    std::vector<std::uint64_t> counts(m_alphabet, 0), next(m_alphabet), totals;
     for (SymbolId s : axiom.symbols) counts[s] = satAdd(counts[s], 1);
+    auto total = [&] {
+        std::uint64_t t = 0;
+        for (auto c : counts) t = satAdd(t, c);
+        return t;
+    };
+    totals.push_back(total());
     for (int step = 0; step < n; ++step) {
         std::fill(next.begin(), next.end(), 0);
         bool changed = false;
@@ -92,11 +102,13 @@ std::uint64_t D0LExpander::countAt(const ModuleString& axiom, int n) const {
                 next[m_succ[i]] = satAdd(next[m_succ[i]], counts[s]);
         }
         counts.swap(next);
-        if (!changed) break;  // only identity symbols left: the string is final
+        totals.push_back(total());
+        if (!changed) {  // only identity symbols left: the string is final
+            totals.resize(size_t(n) + 1, totals.back());
+            break;
+        }
     }
-    std::uint64_t total = 0;
-    for (auto c : counts) total = satAdd(total, c);
-    return total;
+    return totals;
 }
 
 bool D0LExpander::expand(const ModuleString& axiom, int n, ModuleString& out,

@@ -22,6 +22,8 @@ public:
 
     // Exact module count of step n of `axiom` (saturates at 2^62).
     std::uint64_t countAt(const ModuleString& axiom, int n) const;
+    // The counts of steps 0..n in one pass.
+    std::vector<std::uint64_t> countsUpTo(const ModuleString& axiom, int n) const;
     // Writes step n into `out`. Returns false when cancelled.
     bool expand(const ModuleString& axiom, int n, ModuleString& out,
                 const std::atomic<bool>* cancel, const std::function<void(double)>& progress) const;

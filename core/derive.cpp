@@ -76,12 +76,12 @@ void Derivation::record(int step, const ModuleString& s, double millis) {
 DeriveOutcome Derivation::deriveTo(int n) {
     if (n <= m_reached) return {};
     if (!m_d0l) return deriveGeneral(n);
-    std::uint64_t modules = m_d0l->countAt(m_grammar->axiom, n);
-    DeriveOutcome o = checkSize(n, modules, 0);
+    std::vector<std::uint64_t> counts = m_d0l->countsUpTo(m_grammar->axiom, n);
+    DeriveOutcome o = checkSize(n, counts[size_t(n)], 0);
     if (!o.ok()) {
         // Name the first step over the limit, so the user knows which n still works.
         for (int k = m_reached + 1; k <= n; ++k) {
-            DeriveOutcome first = checkSize(k, m_d0l->countAt(m_grammar->axiom, k), 0);
+            DeriveOutcome first = checkSize(k, counts[size_t(k)], 0);
             if (!first.ok()) return first;
         }
         return o;

@@ -158,7 +158,7 @@ const std::vector<Directive>& directives() {
         {"palette", palette},
         {"gradient", gradient},
         {"view", view},
-        {"seed", seed},
+        {"seed", seed, 0},  // before anything that may call rand()
         {"axiom", [](Parser& p, const SourceLine& l, std::string_view v) { p.setAxiom(l, v); }},
         {"ignore", [](Parser& p, const SourceLine& l, std::string_view v) { p.setIgnore(l, v); }},
     };

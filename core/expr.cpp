@@ -1,5 +1,6 @@
 #include "core/expr.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -10,6 +11,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
 constexpr int kMaxStack = 256;     // evaluation stack of one program
+constexpr int kMaxNodes = 2000;    // operations in one expression
 
 using Fn1 = double (*)(double);
 using Fn2 = double (*)(double, double);
@@ -105,7 +107,7 @@ public:
                 if (c == '=')
                     fail(m_pos, "'=' is not a comparison: write '==' to test equality");
                 else
-                    fail(m_pos, std::string("unexpected '") + c + "' in expression");
+                    fail(m_pos, "unexpected '" + codePointAt(m_pos) + "' in expression");
             }
         }
         if (m_failed) return std::nullopt;
@@ -143,6 +145,12 @@ private:
         m_failed = true;
         m_sink.error(m_line, m_text.substr(std::min(at, m_text.size())), std::move(msg));
     }
+    // The whole UTF-8 character at `at`, for messages.
+    std::string codePointAt(size_t at) const {
+        unsigned char c = static_cast<unsigned char>(m_text[at]);
+        size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 1;
+        return std::string(m_text.substr(at, n));
+    }
     void skipSpace() {
         while (m_pos < m_text.size() && isSpace(m_text[m_pos])) ++m_pos;
     }
@@ -158,6 +166,11 @@ private:
 
     NodePtr binary(Op op, NodePtr a, NodePtr b) {
         if (a->op == Op::Const && b->op == Op::Const) return makeConst(apply(op, a->value, b->value));
+        // Code generation recurses over the tree: bound its size so no input overflows the stack.
+        if (++m_nodes > kMaxNodes) {
+            fail(m_pos, "expression is too long (more than 2000 operations): split it with define:");
+            return makeConst(0);
+        }
         auto n = std::make_unique<Node>();
         n->op = op;
         n->a = std::move(a);
@@ -286,24 +299,25 @@ private:
         }
         if ((c >= '0' && c <= '9') || c == '.') return parseNumber();
         if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') return parseName(depth);
-        fail(m_pos, std::string("expected a number, a name or '(' but found '") + c + "'");
+        fail(m_pos, "expected a number, a name or '(' but found '" + codePointAt(m_pos) + "'");
         return makeConst(0);
     }
 
     NodePtr parseNumber() {
         size_t start = m_pos;
-        const char* b = m_text.data() + m_pos;
-        char* end = nullptr;
-        std::string tmp(m_text.substr(m_pos, 64));
-        double v = std::strtod(tmp.c_str(), &end);
-        size_t used = size_t(end - tmp.c_str());
-        if (used == 0) {
+        // from_chars: the whole number however long, and independent of the C locale.
+        double v = 0;
+        const char* first = m_text.data() + m_pos;
+        auto r = std::from_chars(first, m_text.data() + m_text.size(), v);
+        if (r.ec == std::errc::result_out_of_range) {
+            fail(start, "number is too large");
+            return makeConst(0);
+        }
+        if (r.ec != std::errc() || r.ptr == first) {
             fail(start, "malformed number");
             return makeConst(0);
         }
-        (void)b;
-        m_pos += used;
-        if (!std::isfinite(v)) fail(start, "number is too large");
+        m_pos += size_t(r.ptr - first);
         return makeConst(v);
     }
 
@@ -432,6 +446,7 @@ private:
     DiagnosticSink& m_sink;
     size_t m_pos = 0;
     bool m_failed = false;
+    int m_nodes = 0;
 };
 
 double Expr::run(const double* slots, Rng& rng) const {

@@ -56,6 +56,9 @@ void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& r
         {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'"},
         {"\xC2\xA0", "  ", nullptr},       // no-break space
     };
+    // Old Mac line ends (a lone CR) end a line too.
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
     for (const Sub& s : subs) {
         size_t len = std::strlen(s.from);
         for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
@@ -177,8 +180,10 @@ std::optional<double> Parser::constant(const SourceLine& line, std::string_view 
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     if (e->isConstant()) return e->constantValue();
-    Rng rng = Rng::forStream(m_g.settings.seed, 0x5eed);
-    return e->eval(nullptr, rng);
+    // rand() in the axiom, defines or settings: one stream for the whole file, seeded by
+    // `seed:` (read before everything else), so each call gives a new value.
+    if (!m_rng) m_rng = Rng::forStream(m_g.settings.seed, 0x5eed);
+    return e->eval(nullptr, *m_rng);
 }
 
 std::optional<Jittered> Parser::jittered(const SourceLine& line, std::string_view text) {
@@ -426,6 +431,11 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
         rightText = predText.substr(gt + 1);
         predText = predText.substr(0, gt);
     }
+    if (gt != std::string_view::npos && findTopLevel(rightText, ">") != std::string_view::npos) {
+        m_sink.error(line, rightText.substr(findTopLevel(rightText, ">")),
+                     "a second '>': write contexts as 'left < module > right'");
+        return;
+    }
     if (findTopLevel(predText, "<") != std::string_view::npos) {
         m_sink.error(line, predText.substr(findTopLevel(predText, "<")),
                      "a second '<': write contexts as 'left < module > right'");
@@ -478,6 +488,10 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
         prod.condition = compileExpr(condition, line, scope, m_sink);
         ok = prod.condition.has_value();
     }
+    if (size_t second = findTopLevel(tail, "->"); second != std::string_view::npos) {
+        m_sink.error(line, tail.substr(second), "a second '->': a rule has one arrow, one rule per line");
+        return;
+    }
     size_t probColon = findLastTopLevel(tail, ':');
     std::string_view succText = tail;
     if (probColon != std::string_view::npos) {
@@ -491,6 +505,10 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
         }
         prod.probability = *p;
     }
+    if (size_t extra = findTopLevel(succText, ":"); extra != std::string_view::npos) {
+        m_sink.error(line, succText.substr(extra), "a second ':' after '->': a rule has at most one probability");
+        return;
+    }
     int net = prod.pred.symbol == Alphabet::kPush ? 1 : prod.pred.symbol == Alphabet::kPop ? -1 : 0;
     if (!parseSuccessor(line, succText, params, prod.successor, net) || !ok) return;
     (interpretation ? m_g.interpretation : m_g.rules).productions.push_back(std::move(prod));
@@ -502,11 +520,13 @@ void Parser::classify(Line& l, bool& inInterpretation) {
     // cpfg's preprocessor-style directives, before '#' comments.
     for (const char* word : {"#define", "#ignore"}) {
         std::string_view w(word);
-        if (t.starts_with(w) && (t.size() == w.size() || isSpace(t[w.size()]))) {
+        if (t.starts_with(w) && (t.size() == w.size() || isSpace(t[w.size()]) || t[w.size()] == ':')) {
             for (const auto& d : directives())
                 if (w.substr(1) == d.name) l.directive = &d;
             l.kind = Line::DirectiveLine;
-            l.value = trim(t.substr(w.size()));
+            l.value = t.substr(w.size());
+            if (l.value.starts_with(":")) l.value.remove_prefix(1);  // "#ignore: + -" as well
+            l.value = trim(l.value);
             return;
         }
     }
@@ -557,6 +577,7 @@ void Parser::lint() {
             const Production* total = nullptr;
             double probSum = 0;
             int probCount = 0;
+            bool guarded = false;
             for (auto idx : list) {
                 const Production& p = rs->productions[idx];
                 if (total) {
@@ -572,11 +593,13 @@ void Parser::lint() {
                 if (unconditional && p.stochastic()) {
                     probSum += p.probability;
                     ++probCount;
+                } else if (p.stochastic()) {
+                    guarded = true;  // the applicable set varies: the sum says nothing
                 } else if (unconditional) {
                     total = &p;
                 }
             }
-            if (probCount > 0 && std::abs(probSum - 1.0) > 1e-6) {
+            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6) {
                 const Production& p = rs->productions[list.front()];
                 std::string sum, rest;
                 appendNumber(sum, probSum);

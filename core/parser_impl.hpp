@@ -79,6 +79,7 @@ private:
     std::vector<std::string> m_moduleNames;  // declared multi-letter names, longest first
     DiagnosticSink m_sink;
     Grammar m_g;
+    std::optional<Rng> m_rng;  // rand() outside rules
     bool m_axiomSet = false;
     int m_axiomLine = 0;
 };

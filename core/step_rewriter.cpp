@@ -32,6 +32,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         m_maxParamsAll = std::max(m_maxParamsAll, m_maxParams[s]);
     }
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
+    if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     m_always.assign(A, nullptr);
     for (size_t s = 0; s < A; ++s) {
         if (!m_hasRules[s]) continue;
@@ -185,9 +186,12 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
         // rest; more than 1, they are weights.
         m_candidates.assign(1, list[k]);
         double total = p.probability;
+        std::uint32_t lastTested = list[k];  // whose parameters the slots hold now
         for (size_t k2 = k + 1; k2 < list.size(); ++k2) {
             const Production& q = prods[list[k2]];
-            if (q.stochastic() && applicable(q, i, rng)) {
+            if (!q.stochastic()) continue;
+            lastTested = list[k2];
+            if (applicable(q, i, rng)) {
                 m_candidates.push_back(list[k2]);
                 total += q.probability;
             }
@@ -195,7 +199,7 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
         double r = rng.uniform() * std::max(total, 1.0);
         for (auto c : m_candidates) {
             if (r < prods[c].probability) {
-                if (c != m_candidates.back()) applicable(prods[c], i, rng);  // re-bind its slots
+                if (c != lastTested) applicable(prods[c], i, rng);  // re-bind its slots
                 return &prods[c];
             }
             r -= prods[c].probability;
@@ -211,7 +215,7 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     const size_t N = in.size();
     std::uint64_t maxModules, maxParams;
     bound(in, maxModules, maxParams, false);
-    if (maxModules > (64u << 20)) bound(in, maxModules, maxParams, true);  // reserve less when big
+    if (maxModules > (64u << 20) || maxParams > (16u << 20)) bound(in, maxModules, maxParams, true);  // reserve less when big
     out.symbols.resizeUninitialized(maxModules);
     out.params.resizeUninitialized(maxParams);
     SymbolId* ds = out.symbols.data();
