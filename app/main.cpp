@@ -17,6 +17,9 @@ int printUsage(bool toStderr) {
                  "  sprout [FILE|PRESET]            open the viewer (coming with the renderer)\n"
                  "  sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]\n"
                  "                                  print the derived string of step N\n"
+                 "  sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]\n"
+                 "                [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats]\n"
+                 "                                  render a picture with no display (OSMesa)\n"
                  "  sprout presets                  list the built-in presets\n"
                  "  sprout --help | --version\n",
                  SPROUT_VERSION);
@@ -42,6 +45,7 @@ static int run(int argc, char** argv) {
     if (argc >= 2) {
         const char* cmd = argv[1];
         if (!std::strcmp(cmd, "expand")) return cli::runExpand(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "render")) return cli::runRender(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "presets")) {
             for (const auto& name : presetNames()) std::printf("%s\n", name.c_str());
             return 0;

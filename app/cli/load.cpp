@@ -58,6 +58,7 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
     for (const auto& d : r.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
     if (!r.ok()) return std::nullopt;
     out.grammar = r.grammar;
+    out.text = std::move(text);
     return out;
 }
 

@@ -9,6 +9,7 @@ namespace sprout::cli {
 
 struct LoadedGrammar {
     std::string displayName;  // used in FILE:line:col messages
+    std::string text;         // the grammar as written
     std::shared_ptr<const Grammar> grammar;
 };
 

@@ -1,0 +1,31 @@
+#pragma once
+// An orbit camera around a target: yaw and pitch in degrees, distance, perspective or
+// orthographic. Frames a plant's bounds on load.
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/geometry.hpp"
+
+namespace sprout::render {
+
+struct Camera {
+    glm::vec3 target{0, 0, 0};
+    float yaw = 0;     // degrees about +Y; 0 looks at the front (from +Z)
+    float pitch = 0;   // degrees; positive looks down on the plant
+    float distance = 10;
+    float fovY = 35;   // degrees (perspective)
+    bool orthographic = false;
+    float orthoHeight = 10;  // visible height (orthographic)
+
+    glm::vec3 eye() const;
+    glm::mat4 view() const;
+    glm::mat4 projection(float aspect, float near, float far) const;
+};
+
+enum class ViewPreset { Auto, Front, Side, Top, Iso };
+
+// A camera that shows the whole of `bounds` with a margin, from the given direction.
+// Planar curves get an orthographic front view; flat plants (z = 0) a front view.
+Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool planarCurve);
+
+}  // namespace sprout::render

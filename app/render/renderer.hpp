@@ -1,0 +1,68 @@
+#pragma once
+// The OpenGL 3.3 core renderer, one code path for the window and for headless rendering:
+// it takes a context that is already current and a proc loader, keeps the plant's
+// instance data on the GPU, and draws into whatever framebuffer it is given (multisampled
+// internally, resolved into the target). No GL types leak out of this header.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/render/camera.hpp"
+#include "core/geometry.hpp"
+
+namespace sprout::render {
+
+using ProcAddress = void (*)();
+using ProcLoader = ProcAddress (*)(const char* name);
+
+enum class Quality {
+    Still,        // screenshots and renders: full mesh detail
+    Interactive,  // the window while it moves: coarser meshes for big plants
+};
+
+struct RenderOptions {
+    Quality quality = Quality::Still;
+    glm::vec3 sunDirection{-0.45f, 0.85f, 0.35f};  // towards the sun
+    float sunIntensity = 1.0f;
+    bool shadows = true;
+    bool ground = true;
+    glm::vec3 backgroundTop{0.62f, 0.76f, 0.90f};
+    glm::vec3 backgroundBottom{0.95f, 0.95f, 0.92f};
+    glm::vec3 groundColour{0.58f, 0.55f, 0.45f};
+    glm::vec3 curveInk{0.13f, 0.27f, 0.16f};
+};
+
+struct RenderStats {
+    std::size_t cylinders = 0, surfaces = 0, triangles = 0;
+    const char* detail = "";
+};
+
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Loads GL through `loader`, compiles the shaders and creates the meshes. Needs a
+    // current OpenGL 3.3 core context; false with a message when it cannot.
+    bool init(ProcLoader loader, std::string& error);
+    // Copies the plant to the GPU (buffers are reused when they are big enough).
+    void upload(const Geometry& geometry);
+    // Draws into framebuffer `target` (0: the window's or OSMesa's default framebuffer).
+    void draw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0);
+    // RGBA pixels of framebuffer `source`, top row first.
+    std::vector<std::uint8_t> readPixels(int width, int height, unsigned source = 0) const;
+
+    const RenderStats& stats() const { return m_stats; }
+    int samples() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m;
+    RenderStats m_stats;
+};
+
+}  // namespace sprout::render

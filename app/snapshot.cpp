@@ -1,0 +1,58 @@
+#include "app/snapshot.hpp"
+
+#include <chrono>
+
+#include "app/headless.hpp"
+
+namespace sprout {
+namespace {
+double millisSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOptions& o, Snapshot& out,
+                    std::string& error) {
+    auto t0 = std::chrono::steady_clock::now();
+    const int n = o.iterations.value_or(grammar->settings.iterations);
+    DeriveOptions dopts;
+    dopts.seed = o.seed;
+    dopts.limits = o.limits;
+    Derivation derivation(grammar, dopts);
+    DeriveOutcome outcome = derivation.deriveTo(n);
+    if (!outcome.ok()) {
+        error = outcome.message;
+        return false;
+    }
+    out.deriveMs = millisSince(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    interpret(*derivation.step(n), *grammar, {n, derivation.seed(), nullptr}, out.geometry);
+    out.interpretMs = millisSince(t0);
+
+    t0 = std::chrono::steady_clock::now();
+    auto context = HeadlessContext::create(o.width, o.height, error);
+    if (!context) return false;
+    render::Renderer renderer;
+    if (!renderer.init(context->loader(), error)) return false;
+    renderer.upload(out.geometry);
+    const float aspect = float(o.width) / float(o.height);
+    render::Camera camera = render::frameBounds(out.geometry.bounds, aspect, o.view, out.geometry.planarCurve);
+    if (o.yaw || o.pitch) {
+        // An explicit direction: keep the framing distance of a 3D view.
+        render::Camera c3 = render::frameBounds(out.geometry.bounds, aspect, render::ViewPreset::Iso, false);
+        camera.orthographic = out.geometry.planarCurve && camera.orthographic;
+        if (!camera.orthographic) camera.distance = c3.distance;
+        camera.yaw = o.yaw.value_or(camera.yaw);
+        camera.pitch = o.pitch.value_or(camera.pitch);
+    }
+    renderer.draw(camera, o.width, o.height, o.render, 0);
+    out.image.width = o.width;
+    out.image.height = o.height;
+    out.image.rgba = renderer.readPixels(o.width, o.height, 0);
+    out.stats = renderer.stats();
+    out.renderMs = millisSince(t0);
+    return true;
+}
+
+}  // namespace sprout

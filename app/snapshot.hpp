@@ -1,0 +1,37 @@
+#pragma once
+// Grammar -> PNG-ready image with no display: derive, interpret, render through OSMesa.
+// Used by `sprout render`, the screenshot tests and the no-display fallback of the viewer.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/image.hpp"
+#include "app/render/renderer.hpp"
+#include "core/derive.hpp"
+#include "core/turtle.hpp"
+
+namespace sprout {
+
+struct SnapshotOptions {
+    int width = 1280, height = 720;
+    std::optional<int> iterations;       // default: the grammar's n
+    std::optional<std::uint64_t> seed;   // default: the grammar's seed
+    render::ViewPreset view = render::ViewPreset::Auto;
+    std::optional<float> yaw, pitch;     // degrees, override the view preset
+    render::RenderOptions render;
+    DeriveLimits limits;
+};
+
+struct Snapshot {
+    Image image;
+    Geometry geometry;
+    render::RenderStats stats;
+    double deriveMs = 0, interpretMs = 0, renderMs = 0;
+};
+
+// False with a message (derivation refused, no OpenGL, ...) on failure.
+bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOptions& options, Snapshot& out,
+                    std::string& error);
+
+}  // namespace sprout

@@ -1,0 +1,40 @@
+// Lighting shared by every lit surface: a sun with soft shadows (3x3 PCF), sky/ground
+// hemisphere ambient, a little specular. Colours arrive as sRGB and are lit in linear space.
+uniform vec3 uSunDir;       // towards the sun, normalised
+uniform vec3 uSunColour;
+uniform vec3 uSkyAmbient;
+uniform vec3 uGroundAmbient;
+uniform vec3 uEye;
+uniform mat4 uLightViewProj;
+uniform sampler2DShadow uShadowMap;
+uniform int uShadows;
+uniform float uShadowTexel;  // world size of one shadow texel, for the normal offset
+
+float sunVisibility(vec3 world, vec3 normal) {
+    if (uShadows == 0) return 1.0;
+    vec4 lc = uLightViewProj * vec4(world + normal * uShadowTexel * 1.5, 1.0);
+    vec3 c = lc.xyz / lc.w * 0.5 + 0.5;
+    if (c.x < 0.0 || c.x > 1.0 || c.y < 0.0 || c.y > 1.0 || c.z > 1.0) return 1.0;
+    vec2 texel = 1.0 / vec2(textureSize(uShadowMap, 0));
+    float s = 0.0;
+    for (int x = -1; x <= 1; ++x)
+        for (int y = -1; y <= 1; ++y) s += texture(uShadowMap, vec3(c.xy + vec2(x, y) * texel, c.z - 0.0015));
+    return s / 9.0;
+}
+
+vec3 toLinear(vec3 c) { return pow(c, vec3(2.2)); }
+vec3 toDisplay(vec3 c) { return pow(c, vec3(1.0 / 2.2)); }
+
+vec3 shade(vec3 baseSrgb, vec3 world, vec3 normal, float specular) {
+    vec3 n = normalize(normal);
+    vec3 v = normalize(uEye - world);
+    if (dot(n, v) < 0.0) n = -n;  // double-sided: leaves, petals and polygons
+    vec3 base = toLinear(baseSrgb);
+    float vis = sunVisibility(world, n);
+    float diffuse = max(dot(n, uSunDir), 0.0);
+    vec3 ambient = mix(uGroundAmbient, uSkyAmbient, n.y * 0.5 + 0.5);
+    vec3 h = normalize(uSunDir + v);
+    float spec = pow(max(dot(n, h), 0.0), 40.0) * specular;
+    vec3 lit = base * (ambient + uSunColour * diffuse * vis) + uSunColour * spec * vis;
+    return toDisplay(lit);
+}
