@@ -37,7 +37,7 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     if (!renderer.init(context->loader(), error)) return false;
     renderer.upload(out.geometry);
     const float aspect = float(o.width) / float(o.height);
-    render::Camera camera = render::frameBounds(out.geometry.bounds, aspect, o.view, out.geometry.planarCurve);
+    render::Camera camera = render::frameGeometry(out.geometry, aspect, o.view);
     if (o.yaw || o.pitch) {
         // An explicit direction: keep the framing distance of a 3D view.
         render::Camera c3 = render::frameBounds(out.geometry.bounds, aspect, render::ViewPreset::Iso, false);

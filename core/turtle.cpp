@@ -32,10 +32,13 @@ Act actionOf(const std::string& name) {
     return Act::None;
 }
 
+// ABOP's `'` steps through a colour map: index 0 is bark, 1..8 a ramp of greens from dark
+// to light, then flower colours.
 constexpr std::uint32_t kDefaultPalette[16] = {
-    0x6B4A2EFF, 0x4E8F2EFF, 0x7DB344FF, 0xF2D43DFF, 0xD9442EFF, 0xF5F1E6FF, 0xE58FB6FF, 0x9C6ADEFF,
-    0x3D7DD8FF, 0x2E5E2EFF, 0xA0522DFF, 0xC8A165FF, 0xFF9F1CFF, 0x8A8A8AFF, 0x2B2B2BFF, 0xFFFFFFFF,
+    0x6B4A2EFF, 0x3F6B25FF, 0x4A7A2AFF, 0x558A30FF, 0x629936FF, 0x70A73DFF, 0x80B448FF, 0x92C056FF,
+    0xA6CB66FF, 0xF2D43DFF, 0xF7F4EAFF, 0xE58FB6FF, 0xD9442EFF, 0x9C6ADEFF, 0xFF9F1CFF, 0x3D7DD8FF,
 };
+constexpr int kLeafColour = 5, kPetalColour = 10, kSphereColour = 12;
 
 constexpr float kPi = 3.14159265358979f;
 
@@ -334,7 +337,7 @@ private:
         if (len < 1e-12f) return;
         n /= len;
         std::uint32_t base = std::uint32_t(m.positions.size());
-        std::uint32_t col = t.explicitColour ? colour(t.colour) : colour(1);
+        std::uint32_t col = t.explicitColour ? colour(t.colour) : colour(kLeafColour);
         for (const auto& p : pts) {
             m.positions.push_back(p);
             m.normals.push_back(n);
@@ -352,11 +355,11 @@ private:
         if (act == Act::Sphere) {
             s.kind = SurfaceKind::Sphere;
             s.size = p ? float(*p) : t.width;  // radius
-            s.colour = t.explicitColour ? colour(t.colour) : colour(3);
+            s.colour = t.explicitColour ? colour(t.colour) : colour(kSphereColour);
         } else {
             s.kind = act == Act::Leaf ? SurfaceKind::Leaf : SurfaceKind::Petal;
             s.size = p ? float(*p) : t.length;
-            s.colour = t.explicitColour ? colour(t.colour) : act == Act::Leaf ? colour(1) : colour(5);
+            s.colour = t.explicitColour ? colour(t.colour) : act == Act::Leaf ? colour(kLeafColour) : colour(kPetalColour);
         }
         if (!(s.size > 0)) return;
         m_out.surfaces.push_back(s);

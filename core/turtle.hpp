@@ -25,7 +25,7 @@ struct TurtleOptions {
 // parameters are skipped.
 void interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out);
 
-// Default palette (16 colours, index 0 bark brown, 1 leaf green, ...).
+// Default palette (16 colours: 0 bark, 1..8 greens dark to light, 9.. flower colours).
 std::uint32_t defaultPaletteColour(int index);
 
 // Triangulates a simple polygon (concave allowed) by ear clipping in its best-fit plane;

@@ -1,15 +1,20 @@
 #version 330 core
 // Planar curves (Koch, Sierpinski, dragon) as screen-space ribbons of constant pixel width,
 // extended by half a width at both ends so corners close.
-layout(location = 0) in vec2 aCorner;     // x: 0 start / 1 end, y: -1 / +1 side
-layout(location = 1) in vec4 iStart;
-layout(location = 2) in vec4 iEnd;
+#include "instances"
+layout(location = 0) in vec2 aCorner;  // x: 0 start / 1 end, y: -1 / +1 side
 uniform mat4 uViewProj;
 uniform vec2 uViewport;
 uniform float uWidth;  // pixels
 void main() {
-    vec4 a = uViewProj * vec4(iStart.xyz, 1.0);
-    vec4 b = uViewProj * vec4(iEnd.xyz, 1.0);
+    int id = instanceIndex();
+    if (id >= uCount) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    int base = (uFirst + id) * 10;
+    vec4 a = uViewProj * vec4(fetchVec3(base), 1.0);
+    vec4 b = uViewProj * vec4(fetchVec3(base + 4), 1.0);
     vec2 sa = a.xy / a.w * uViewport * 0.5;
     vec2 sb = b.xy / b.w * uViewport * 0.5;
     vec2 dir = sb - sa;

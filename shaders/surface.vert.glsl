@@ -1,22 +1,26 @@
 #version 330 core
-// Instanced leaves, petals and spheres placed in the turtle frame.
-layout(location = 0) in vec3 aPosition;   // x along L, y along H, z along U
+// Leaves, petals and spheres in the turtle frame (SurfaceInstance: position, size,
+// heading, colour, up, kind: 12 words).
+#include "instances"
+layout(location = 0) in vec3 aPosition;  // x along L, y along H, z along U
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec4 iPositionSize;
-layout(location = 3) in vec3 iHeading;
-layout(location = 4) in vec4 iColour;
-layout(location = 5) in vec3 iUp;
 uniform mat4 uViewProj;
 out vec3 vWorld;
 out vec3 vNormal;
 out vec4 vColour;
 void main() {
-    vec3 H = normalize(iHeading);
-    vec3 U = normalize(iUp);
+    int id = instanceIndex();
+    if (id >= uCount) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    int base = (uFirst + id) * 12;
+    vec3 H = normalize(fetchVec3(base + 4));
+    vec3 U = normalize(fetchVec3(base + 8));
     vec3 L = cross(U, H);
     mat3 frame = mat3(L, H, U);
-    vWorld = iPositionSize.xyz + iPositionSize.w * (frame * aPosition);
+    vWorld = fetchVec3(base) + fetchFloat(base + 3) * (frame * aPosition);
     vNormal = frame * aNormal;
-    vColour = iColour.wzyx;
+    vColour = fetchColour(base + 7);
     gl_Position = uViewProj * vec4(vWorld, 1.0);
 }

@@ -83,10 +83,14 @@ int runRender(int argc, char** argv) {
         return 1;
     }
     if (args.flag("--stats"))
-        std::printf("%s: %zu segments, %zu surfaces, %zu triangles (%s detail); derive %.1f ms, interpret %.1f ms, "
+        std::printf("%s: %zu segments (%s), %zu surfaces, %zu triangles; derive %.1f ms, interpret %.1f ms, "
                     "render %.1f ms\n",
-                    out.c_str(), shot.stats.cylinders, shot.stats.surfaces, shot.stats.triangles, shot.stats.detail,
-                    shot.deriveMs, shot.interpretMs, shot.renderMs);
+                    out.c_str(), shot.stats.cylinders,
+                    shot.stats.curve ? "2D curve"
+                                     : ("fine " + std::to_string(shot.stats.levels[0]) + ", medium " +
+                                        std::to_string(shot.stats.levels[1]) + ", coarse " + std::to_string(shot.stats.levels[2]))
+                                           .c_str(),
+                    shot.stats.surfaces, shot.stats.triangles, shot.deriveMs, shot.interpretMs, shot.renderMs);
     return 0;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace sprout::render {
@@ -39,34 +41,84 @@ Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool pla
             if (!flat) {  // a 3D plant: a little from the side and above
                 c.yaw = 30;
                 c.pitch = 12;
+            } else if (!planarCurve) {
+                c.pitch = 6;  // a flat plant: face-on, just enough to see its ground
             }
             break;
     }
-    const float margin = 1.12f;
-    if (planarCurve || (flat && view == ViewPreset::Auto)) {
+    const float margin = 1.08f;
+    if (planarCurve) {
         // Face-on and orthographic: the drawing fills the frame like the book's figures.
         c.orthographic = true;
         float h = std::max(size.y, size.x / aspect);
         c.orthoHeight = std::max(h, 1e-4f) * margin;
         c.distance = std::max({size.x, size.y, size.z, 1e-3f}) * 2 + 1;
-        if (!planarCurve) {  // a flat plant: keep perspective, it is still drawn in 3D
-            c.orthographic = false;
-        }
     }
     if (!c.orthographic) {
-        // Distance at which the bounding box, seen from this direction, fits the view.
-        float radius = 0.5f * glm::length(size);
-        float fov = glm::radians(c.fovY);
-        float fovX = 2 * std::atan(std::tan(fov / 2) * aspect);
-        float fit = std::min(fov, fovX);
-        if (flat && view == ViewPreset::Auto) {
-            // Face-on: fit the rectangle, not the sphere, so flat plants fill the frame.
-            float dh = 0.5f * size.y / std::tan(fov / 2), dw = 0.5f * size.x / std::tan(fovX / 2);
-            c.distance = std::max(dh, dw) * margin + 1e-3f;
-        } else {
-            c.distance = radius / std::sin(fit / 2) * 1.02f + 1e-3f;
+        // The nearest distance at which all eight corners of the box are inside the view
+        // (exact for this direction, tighter than a bounding sphere).
+        const float tanY = std::tan(glm::radians(c.fovY) / 2), tanX = tanY * aspect;
+        c.distance = 1.0f;
+        glm::vec3 dir = glm::normalize(c.eye() - c.target);  // towards the camera
+        glm::vec3 up = std::fabs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+        glm::vec3 right = glm::normalize(glm::cross(up, dir));
+        glm::vec3 camUp = glm::cross(dir, right);
+        float need = 1e-3f;
+        for (int i = 0; i < 8; ++i) {
+            glm::vec3 corner = (bounds.empty ? glm::vec3(0) : bounds.min) +
+                               glm::vec3(i & 1 ? size.x : 0, i & 2 ? size.y : 0, i & 4 ? size.z : 0) - c.target;
+            float depth = glm::dot(corner, dir);  // towards the camera
+            need = std::max({need, depth + std::fabs(glm::dot(corner, right)) * margin / tanX,
+                             depth + std::fabs(glm::dot(corner, camUp)) * margin / tanY});
         }
+        c.distance = need;
     }
+    return c;
+}
+
+Camera frameGeometry(const Geometry& g, float aspect, ViewPreset view) {
+    Camera c = frameBounds(g.bounds, aspect, view, g.planarCurve);
+    if (c.orthographic || g.bounds.empty) return c;
+    // Sample the plant's points (at most ~40 k).
+    std::vector<glm::vec3> pts;
+    const std::size_t n = g.cylinders.size() + g.surfaces.size() + g.polygons.positions.size();
+    const std::size_t stride = std::max<std::size_t>(1, n / 40000);
+    for (std::size_t i = 0; i < g.cylinders.size(); i += stride) {
+        pts.push_back(g.cylinders[i].start);
+        pts.push_back(g.cylinders[i].end);
+    }
+    for (std::size_t i = 0; i < g.surfaces.size(); i += stride) {
+        const auto& s = g.surfaces[i];
+        pts.push_back(s.position);
+        pts.push_back(s.position + s.heading * s.size);
+    }
+    for (std::size_t i = 0; i < g.polygons.positions.size(); i += stride) pts.push_back(g.polygons.positions[i]);
+    if (pts.empty()) return c;
+    const glm::vec3 dir = glm::normalize(c.eye() - c.target);
+    const glm::vec3 up = std::fabs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    const glm::vec3 right = glm::normalize(glm::cross(up, dir));
+    const glm::vec3 camUp = glm::cross(dir, right);
+    // Centre the target on the points' extent across the view, then find the nearest
+    // distance at which every point is inside the frustum.
+    float minR = 1e30f, maxR = -1e30f, minU = 1e30f, maxU = -1e30f;
+    for (const auto& p : pts) {
+        glm::vec3 q = p - c.target;
+        minR = std::min(minR, glm::dot(q, right));
+        maxR = std::max(maxR, glm::dot(q, right));
+        minU = std::min(minU, glm::dot(q, camUp));
+        maxU = std::max(maxU, glm::dot(q, camUp));
+    }
+    c.target += right * ((minR + maxR) / 2) + camUp * ((minU + maxU) / 2);
+    const float margin = 1.08f;
+    const float tanY = std::tan(glm::radians(c.fovY) / 2), tanX = tanY * aspect;
+    float need = 1e-3f;
+    for (const auto& p : pts) {
+        glm::vec3 q = p - c.target;
+        float depth = glm::dot(q, dir);
+        need = std::max({need, depth + std::fabs(glm::dot(q, right)) * margin / tanX,
+                         depth + std::fabs(glm::dot(q, camUp)) * margin / tanY});
+    }
+    c.distance = need;
     return c;
 }
 

@@ -28,4 +28,8 @@ enum class ViewPreset { Auto, Front, Side, Top, Iso };
 // Planar curves get an orthographic front view; flat plants (z = 0) a front view.
 Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool planarCurve);
 
+// The same direction, fitted to the plant's own points rather than its bounding box: a
+// round crown fills the frame instead of its box's projection.
+Camera frameGeometry(const Geometry& geometry, float aspect, ViewPreset view);
+
 }  // namespace sprout::render

@@ -16,19 +16,79 @@ namespace {
 
 constexpr int kShadowSize = 2048;
 
-struct MeshBuffers {
-    GLuint vao = 0, vbo = 0, ebo = 0, nbo = 0;
-    GLsizei indexCount = 0;
+// A unit mesh replicated uBatch times in one vertex buffer, each copy tagged with its index
+// (attribute 7), so one draw instance renders a whole batch of segments or surfaces.
+struct BatchedMesh {
+    GLuint vao = 0, vbo = 0, ebo = 0;
+    GLsizei indexCount = 0;  // for all copies
+    int batch = 1;
+    std::size_t trianglesPerCopy = 0;
 };
 
+struct Attribute {
+    GLuint location;
+    GLint size;  // floats
+};
+
+BatchedMesh makeBatched(const std::vector<float>& vertices, int floatsPerVertex, const std::vector<Attribute>& layout,
+                        const std::vector<std::uint32_t>& indices) {
+    BatchedMesh m;
+    const std::size_t count = vertices.size() / std::size_t(floatsPerVertex);
+    m.batch = int(std::clamp<std::size_t>(16384 / std::max<std::size_t>(count, 1), 1, 256));
+    m.trianglesPerCopy = indices.size() / 3;
+    std::vector<float> data;
+    std::vector<std::uint32_t> idx;
+    data.reserve(std::size_t(m.batch) * count * std::size_t(floatsPerVertex + 1));
+    for (int copy = 0; copy < m.batch; ++copy) {
+        for (std::size_t v = 0; v < count; ++v) {
+            data.insert(data.end(), vertices.begin() + std::ptrdiff_t(v * std::size_t(floatsPerVertex)),
+                        vertices.begin() + std::ptrdiff_t((v + 1) * std::size_t(floatsPerVertex)));
+            data.push_back(float(copy));
+        }
+        for (auto i : indices) idx.push_back(i + std::uint32_t(std::size_t(copy) * count));
+    }
+    glGenVertexArrays(1, &m.vao);
+    glBindVertexArray(m.vao);
+    glGenBuffers(1, &m.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+    const GLsizei stride = GLsizei((floatsPerVertex + 1) * sizeof(float));
+    std::size_t offset = 0;
+    for (const Attribute& a : layout) {
+        glEnableVertexAttribArray(a.location);
+        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
+        offset += std::size_t(a.size) * sizeof(float);
+    }
+    glEnableVertexAttribArray(7);
+    glVertexAttribPointer(7, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(std::size_t(floatsPerVertex) * sizeof(float)));
+    glGenBuffers(1, &m.ebo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ebo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
+    m.indexCount = GLsizei(idx.size());
+    glBindVertexArray(0);
+    return m;
+}
+
+// Instances [first, first + count) of a buffer texture, drawn in batches.
+void drawBatched(GLuint program, const BatchedMesh& m, std::size_t first, std::size_t count) {
+    if (!count) return;
+    glUniform1i(glGetUniformLocation(program, "uFirst"), GLint(first));
+    glUniform1i(glGetUniformLocation(program, "uCount"), GLint(count));
+    glUniform1i(glGetUniformLocation(program, "uBatch"), m.batch);
+    glBindVertexArray(m.vao);
+    const GLsizei instances = GLsizei((count + std::size_t(m.batch) - 1) / std::size_t(m.batch));
+    glDrawElementsInstanced(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr, instances);
+}
+
 // Levels of detail for the cylinders: sides around, rings per cap. Software rendering
-// (llvmpipe) draws about 10 k instanced cylinders per 86 ms at 1280x720, so big plants
-// get coarser meshes; still frames keep more detail.
+// (llvmpipe) draws about 10 k instanced cylinders per 86 ms at 1280x720, so each segment
+// gets the coarsest mesh that still looks round at its size: the plant is framed whole, so
+// a segment's radius relative to the plant's size says how many pixels it covers.
 struct Lod {
     int sides, capRings;
-    const char* name;
+    float minRelativeRadius;  // radius / plant size from which this level is used
 };
-constexpr Lod kLods[3] = {{12, 3, "high"}, {8, 2, "medium"}, {5, 1, "low"}};
+constexpr Lod kLods[3] = {{12, 2, 1.0f / 100}, {6, 0, 1.0f / 300}, {0, 0, 0.0f}};  // 0 sides: a strip
 
 void setUniform(GLuint p, const char* name, const glm::mat4& m) {
     glUniformMatrix4fv(glGetUniformLocation(p, name), 1, GL_FALSE, glm::value_ptr(m));
@@ -43,13 +103,21 @@ void setUniform(GLuint p, const char* name, int v) { glUniform1i(glGetUniformLoc
 struct Renderer::Impl {
     GLuint cylinderProgram = 0, cylinderDepth = 0, surfaceProgram = 0, surfaceDepth = 0;
     GLuint polygonProgram = 0, polygonDepth = 0, curveProgram = 0, backgroundProgram = 0, groundProgram = 0;
-    MeshBuffers cylinders[3], leaf, petal, sphere, polygon, curveQuad, groundQuad;
-    GLuint cylinderInstances = 0, surfaceInstances = 0, emptyVao = 0;
+    BatchedMesh cylinders[3], leaf, petal, sphere, smallSphere, curveQuad;
+    struct {
+        GLuint vao = 0, vbo = 0, ebo = 0;
+        GLsizei indexCount = 0;
+    } polygon, groundQuad;
+    // Instance arrays as buffer textures (words of CylinderInstance / SurfaceInstance).
+    GLuint cylinderInstances = 0, surfaceInstances = 0, cylinderTexture = 0, surfaceTexture = 0, emptyVao = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
     GLuint msaaFbo = 0, msaaColour = 0, msaaDepth = 0;
     int msaaWidth = 0, msaaHeight = 0, samples = 1;
     // What was uploaded.
     std::size_t cylinderCount = 0, surfaceCount[3] = {0, 0, 0}, surfaceStart[3] = {0, 0, 0};
+    std::size_t lodCount[3] = {0, 0, 0}, lodStart[3] = {0, 0, 0};  // cylinders sorted by level
+    bool smallSpheres = false;
+    std::size_t maxInstanceWords = 0;
     Bounds bounds;
     bool planarCurve = false;
     float maxRadius = 0;
@@ -68,20 +136,44 @@ struct Renderer::Impl {
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
 
-        glGenBuffers(1, &cylinderInstances);
-        glGenBuffers(1, &surfaceInstances);
-        for (int i = 0; i < 3; ++i) makeCylinderMesh(cylinders[i], makeCylinder(kLods[i].sides, kLods[i].capRings));
-        makeSurfaceMesh(leaf, makeLeaf());
-        makeSurfaceMesh(petal, makePetal());
-        makeSurfaceMesh(sphere, makeSphere(16, 10));
+        for (auto [buffer, texture] : {std::pair{&cylinderInstances, &cylinderTexture}, std::pair{&surfaceInstances, &surfaceTexture}}) {
+            glGenBuffers(1, buffer);
+            glBindBuffer(GL_TEXTURE_BUFFER, *buffer);
+            glBufferData(GL_TEXTURE_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+            glGenTextures(1, texture);
+            glBindTexture(GL_TEXTURE_BUFFER, *texture);
+            glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, *buffer);
+        }
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+        for (int i = 0; i < 2; ++i) {
+            CylinderMesh c = makeCylinder(kLods[i].sides, kLods[i].capRings);
+            std::vector<float> v;
+            for (const auto& p : c.vertices) v.insert(v.end(), {p.x, p.y, p.z, p.w});
+            cylinders[i] = makeBatched(v, 4, {{0, 4}}, c.indices);
+        }
+        // The strip: x across (-1, 1), y past the ends by one radius, w start / end.
+        cylinders[2] = makeBatched({-1, -1, 0, 0, 1, -1, 0, 0, -1, 1, 0, 1, 1, 1, 0, 1}, 4, {{0, 4}}, {0, 1, 3, 0, 3, 2});
+        auto surface = [](const SurfaceMesh& m) {
+            std::vector<float> v;
+            for (std::size_t i = 0; i < m.positions.size(); ++i)
+                v.insert(v.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z, m.normals[i].x, m.normals[i].y, m.normals[i].z});
+            return makeBatched(v, 6, {{0, 3}, {1, 3}}, m.indices);
+        };
+        leaf = surface(makeLeaf());
+        petal = surface(makePetal());
+        sphere = surface(makeSphere(16, 10));
+        smallSphere = surface(makeSphere(6, 3));
+        curveQuad = makeBatched({0, -1, 0, 1, 1, -1, 1, 1}, 2, {{0, 2}}, {0, 2, 1, 1, 2, 3});
         makePolygonBuffers();
-        makeCurveQuad();
         makeGroundQuad();
+        GLint maxTexels = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+        maxInstanceWords = std::size_t(maxTexels);
         glGenVertexArrays(1, &emptyVao);
 
         GLint maxSamples = 1;
         glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-        samples = std::clamp(maxSamples, 1, 4);
+        samples = std::clamp(maxSamples, 1, getenv("SPROUT_SAMPLES") ? atoi(getenv("SPROUT_SAMPLES")) : 4);
 
         glGenTextures(1, &shadowTexture);
         glBindTexture(GL_TEXTURE_2D, shadowTexture);
@@ -103,96 +195,12 @@ struct Renderer::Impl {
         return ok;
     }
 
-    void makeCylinderMesh(MeshBuffers& m, const CylinderMesh& mesh) {
-        glGenVertexArrays(1, &m.vao);
-        glBindVertexArray(m.vao);
-        glGenBuffers(1, &m.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec4)), mesh.vertices.data(), GL_STATIC_DRAW);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(glm::vec4), nullptr);
-        glGenBuffers(1, &m.ebo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ebo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(), GL_STATIC_DRAW);
-        m.indexCount = GLsizei(mesh.indices.size());
-        bindCylinderInstances(1, 2, 3);
-        glBindVertexArray(0);
-    }
-
-    // Per-instance attributes straight from the CylinderInstance array (40-byte stride).
-    void bindCylinderInstances(GLuint start, GLuint end, GLuint colour) {
-        glBindBuffer(GL_ARRAY_BUFFER, cylinderInstances);
-        const GLsizei stride = sizeof(CylinderInstance);
-        glEnableVertexAttribArray(start);
-        glVertexAttribPointer(start, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(CylinderInstance, start)));
-        glVertexAttribDivisor(start, 1);
-        glEnableVertexAttribArray(end);
-        glVertexAttribPointer(end, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(CylinderInstance, end)));
-        glVertexAttribDivisor(end, 1);
-        if (colour != GLuint(-1)) {
-            glEnableVertexAttribArray(colour);
-            glVertexAttribPointer(colour, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(CylinderInstance, colour)));
-            glVertexAttribDivisor(colour, 1);
-        }
-    }
-
-    void makeSurfaceMesh(MeshBuffers& m, const SurfaceMesh& mesh) {
-        glGenVertexArrays(1, &m.vao);
-        glBindVertexArray(m.vao);
-        glGenBuffers(1, &m.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.positions.size() * sizeof(glm::vec3)), mesh.positions.data(), GL_STATIC_DRAW);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-        glGenBuffers(1, &m.nbo);
-        glBindBuffer(GL_ARRAY_BUFFER, m.nbo);
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.normals.size() * sizeof(glm::vec3)), mesh.normals.data(), GL_STATIC_DRAW);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-        glGenBuffers(1, &m.ebo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ebo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * 4), mesh.indices.data(), GL_STATIC_DRAW);
-        m.indexCount = GLsizei(mesh.indices.size());
-        glBindVertexArray(0);
-    }
-
-    // Surface instances of one kind start at `first` in the (kind-sorted) instance buffer;
-    // GL 3.3 has no base instance, so the attribute pointers carry the offset.
-    void bindSurfaceInstances(std::size_t first) {
-        glBindBuffer(GL_ARRAY_BUFFER, surfaceInstances);
-        const GLsizei stride = sizeof(SurfaceInstance);
-        const std::size_t base = first * sizeof(SurfaceInstance);
-        auto attrib = [&](GLuint loc, GLint n, GLenum type, GLboolean norm, std::size_t offset) {
-            glEnableVertexAttribArray(loc);
-            glVertexAttribPointer(loc, n, type, norm, stride, reinterpret_cast<void*>(base + offset));
-            glVertexAttribDivisor(loc, 1);
-        };
-        attrib(2, 4, GL_FLOAT, GL_FALSE, offsetof(SurfaceInstance, position));  // + size
-        attrib(3, 3, GL_FLOAT, GL_FALSE, offsetof(SurfaceInstance, heading));
-        attrib(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(SurfaceInstance, colour));
-        attrib(5, 3, GL_FLOAT, GL_FALSE, offsetof(SurfaceInstance, up));
-    }
-
     void makePolygonBuffers() {
         glGenVertexArrays(1, &polygon.vao);
         glBindVertexArray(polygon.vao);
         glGenBuffers(1, &polygon.vbo);
-        glGenBuffers(1, &polygon.nbo);
         glGenBuffers(1, &polygon.ebo);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, polygon.ebo);
-        glBindVertexArray(0);
-    }
-
-    void makeCurveQuad() {
-        const float corners[] = {0, -1, 0, 1, 1, -1, 1, 1};
-        glGenVertexArrays(1, &curveQuad.vao);
-        glBindVertexArray(curveQuad.vao);
-        glGenBuffers(1, &curveQuad.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, curveQuad.vbo);
-        glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-        bindCylinderInstances(1, 2, GLuint(-1));
         glBindVertexArray(0);
     }
 
@@ -226,38 +234,45 @@ struct Renderer::Impl {
         msaaHeight = h;
     }
 
-    int lodFor(Quality q) const {
-        const std::size_t n = cylinderCount;
-        if (q == Quality::Still) return n <= 30000 ? 0 : n <= 300000 ? 1 : 2;
-        return n <= 5000 ? 0 : n <= 40000 ? 1 : 2;
-    }
+    // Interactive frames of big plants drop one more level of detail.
+    int lodShift(Quality q) const { return q == Quality::Interactive && cylinderCount > 20000 ? 1 : 0; }
 
     // Everything that casts or receives light, with one view-projection.
-    void drawScene(const glm::mat4& viewProj, bool depthOnly, const RenderOptions& o, float minRadius, RenderStats& stats) {
-        const int lod = lodFor(o.quality);
+    void drawScene(const glm::mat4& viewProj, const glm::vec3& eye, bool depthOnly, const RenderOptions& o, float minRadius,
+                   RenderStats& stats) {
         if (cylinderCount) {
             GLuint p = depthOnly ? cylinderDepth : cylinderProgram;
             glUseProgram(p);
             setUniform(p, "uViewProj", viewProj);
             setUniform(p, "uMinRadius", minRadius);
             setUniform(p, "uSpecular", 0.12f);
-            glBindVertexArray(cylinders[lod].vao);
-            glDrawElementsInstanced(GL_TRIANGLES, cylinders[lod].indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(cylinderCount));
-            stats.triangles += std::size_t(cylinders[lod].indexCount / 3) * cylinderCount;
-            stats.detail = kLods[lod].name;
+            setUniform(p, "uInstances", 1);
+            setUniform(p, "uEye", eye);
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_BUFFER, cylinderTexture);
+            for (int level = 0; level < 3; ++level) {
+                // Shadows need only the silhouette: the coarsest mesh casts them.
+                int mesh = depthOnly ? 2 : std::min(2, level + lodShift(o.quality));
+                setUniform(p, "uBillboard", mesh == 2 ? 1 : 0);
+                drawBatched(p, cylinders[mesh], lodStart[level], lodCount[level]);
+                stats.triangles += cylinders[mesh].trianglesPerCopy * lodCount[level];
+                stats.levels[mesh] += lodCount[level];
+            }
         }
-        MeshBuffers* meshes[3] = {&leaf, &petal, &sphere};
+        BatchedMesh* meshes[3] = {&leaf, &petal, smallSpheres || depthOnly ? &smallSphere : &sphere};
         GLuint sp = depthOnly ? surfaceDepth : surfaceProgram;
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_BUFFER, surfaceTexture);
         for (int k = 0; k < 3; ++k) {
             if (!surfaceCount[k]) continue;
             glUseProgram(sp);
             setUniform(sp, "uViewProj", viewProj);
             setUniform(sp, "uSpecular", k == 2 ? 0.3f : 0.08f);
-            glBindVertexArray(meshes[k]->vao);
-            bindSurfaceInstances(surfaceStart[k]);
-            glDrawElementsInstanced(GL_TRIANGLES, meshes[k]->indexCount, GL_UNSIGNED_INT, nullptr, GLsizei(surfaceCount[k]));
-            stats.triangles += std::size_t(meshes[k]->indexCount / 3) * surfaceCount[k];
+            setUniform(sp, "uInstances", 1);
+            drawBatched(sp, *meshes[k], surfaceStart[k], surfaceCount[k]);
+            stats.triangles += meshes[k]->trianglesPerCopy * surfaceCount[k];
         }
+        glActiveTexture(GL_TEXTURE0);
         if (polygon.indexCount) {
             GLuint p = depthOnly ? polygonDepth : polygonProgram;
             glUseProgram(p);
@@ -305,8 +320,40 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
 void Renderer::upload(const Geometry& g) {
     Impl& s = *m;
     s.cylinderCount = g.cylinders.size();
-    glBindBuffer(GL_ARRAY_BUFFER, s.cylinderInstances);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.cylinders.size() * sizeof(CylinderInstance)), g.cylinders.data(), GL_STATIC_DRAW);
+    // Cylinders grouped by level of detail (one counting pass, one scatter pass).
+    const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
+    const float extent = std::max({size.x, size.y, size.z, 1e-6f});
+    auto levelOf = [&](const CylinderInstance& c) {
+        float rel = std::max(c.startRadius, c.endRadius) / extent;
+        return rel >= kLods[0].minRelativeRadius ? 0 : rel >= kLods[1].minRelativeRadius ? 1 : 2;
+    };
+    for (auto& n : s.lodCount) n = 0;
+    for (const auto& c : g.cylinders) ++s.lodCount[levelOf(c)];
+    s.lodStart[0] = 0;
+    s.lodStart[1] = s.lodCount[0];
+    s.lodStart[2] = s.lodCount[0] + s.lodCount[1];
+    glBindBuffer(GL_TEXTURE_BUFFER, s.cylinderInstances);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(g.cylinders.size(), 1) * sizeof(CylinderInstance)), nullptr,
+                 GL_STATIC_DRAW);
+    if (s.lodCount[0] == s.cylinderCount || s.lodCount[1] == s.cylinderCount || s.lodCount[2] == s.cylinderCount) {
+        glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(g.cylinders.size() * sizeof(CylinderInstance)), g.cylinders.data());
+    } else if (auto* dst = static_cast<CylinderInstance*>(glMapBuffer(GL_TEXTURE_BUFFER, GL_WRITE_ONLY))) {
+        std::size_t next[3] = {s.lodStart[0], s.lodStart[1], s.lodStart[2]};
+        for (const auto& c : g.cylinders) dst[next[levelOf(c)]++] = c;
+        glUnmapBuffer(GL_TEXTURE_BUFFER);
+    }
+    // A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE words (128 M on llvmpipe):
+    // beyond that the plant is drawn in part rather than not at all.
+    const std::size_t maxCylinders = s.maxInstanceWords / 10;
+    if (s.cylinderCount > maxCylinders) {
+        s.cylinderCount = maxCylinders;
+        for (int l = 0; l < 3; ++l)
+            s.lodCount[l] = std::min(s.lodCount[l], maxCylinders > s.lodStart[l] ? maxCylinders - s.lodStart[l] : 0);
+    }
+    float maxSphere = 0;
+    for (const auto& x : g.surfaces)
+        if (x.kind == SurfaceKind::Sphere) maxSphere = std::max(maxSphere, x.size);
+    s.smallSpheres = maxSphere < extent / 60;
 
     // Surfaces grouped by kind so each kind is one instanced draw.
     std::vector<SurfaceInstance> sorted(g.surfaces.begin(), g.surfaces.end());
@@ -317,8 +364,10 @@ void Renderer::upload(const Geometry& g) {
     s.surfaceStart[0] = 0;
     s.surfaceStart[1] = s.surfaceCount[0];
     s.surfaceStart[2] = s.surfaceCount[0] + s.surfaceCount[1];
-    glBindBuffer(GL_ARRAY_BUFFER, s.surfaceInstances);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(sorted.size() * sizeof(SurfaceInstance)), sorted.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_TEXTURE_BUFFER, s.surfaceInstances);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(sorted.size(), 1) * sizeof(SurfaceInstance)), nullptr,
+                 GL_STATIC_DRAW);
+    glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(sorted.size() * sizeof(SurfaceInstance)), sorted.data());
 
     const Mesh& p = g.polygons;
     glBindVertexArray(s.polygon.vao);
@@ -388,7 +437,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.5f, 2.0f);
         RenderStats ignored;
-        s.drawScene(lightViewProj, true, o, pixel * 0.5f, ignored);
+        s.drawScene(lightViewProj, centre + glm::normalize(o.sunDirection) * radius * 1000.0f, true, o, pixel * 0.5f, ignored);
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
     const float texel = shadows ? 2.1f * std::max(radius, groundRadius) / kShadowSize : 0.0f;
@@ -432,20 +481,23 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         setUniform(s.curveProgram, "uViewport", glm::vec2(width, height));
         setUniform(s.curveProgram, "uWidth", std::max(1.5f, float(height) / 400.0f));
         setUniform(s.curveProgram, "uInk", o.curveInk);
-        glBindVertexArray(s.curveQuad.vao);
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(s.cylinderCount));
+        setUniform(s.curveProgram, "uInstances", 1);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_BUFFER, s.cylinderTexture);
+        drawBatched(s.curveProgram, s.curveQuad, 0, s.cylinderCount);
+        glActiveTexture(GL_TEXTURE0);
         stats.triangles += 2 * s.cylinderCount;
-        stats.detail = "curve";
+        stats.curve = true;
         // Polygons of a planar system still fill.
         std::size_t saved = s.cylinderCount;
-        s.cylinderCount = 0;
+        s.cylinderCount = 0;  // drawn as the curve above
         for (GLuint p : {s.surfaceProgram, s.polygonProgram}) s.setLighting(p, o, eye, lightViewProj, false, 0);
-        s.drawScene(viewProj, false, o, 0, stats);
+        s.drawScene(viewProj, eye, false, o, 0, stats);
         s.cylinderCount = saved;
     } else {
         for (GLuint p : {s.cylinderProgram, s.surfaceProgram, s.polygonProgram})
             s.setLighting(p, o, eye, lightViewProj, shadows, texel);
-        s.drawScene(viewProj, false, o, pixel * 0.5f, stats);
+        s.drawScene(viewProj, eye, false, o, pixel * 0.5f, stats);
     }
 
     // Resolve the multisampled image into the target.

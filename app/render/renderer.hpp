@@ -36,7 +36,8 @@ struct RenderOptions {
 
 struct RenderStats {
     std::size_t cylinders = 0, surfaces = 0, triangles = 0;
-    const char* detail = "";
+    std::size_t levels[3] = {0, 0, 0};  // cylinders drawn with the fine, medium and coarse mesh
+    bool curve = false;                 // drawn as a 2D curve
 };
 
 class Renderer {

@@ -1,0 +1,201 @@
+// Screenshot tests: real headless renders through OSMesa (no display), checked pixel by pixel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "app/image.hpp"
+#include "app/presets.hpp"
+#include "app/snapshot.hpp"
+
+namespace sprout {
+namespace {
+
+constexpr int kW = 320, kH = 180;
+
+std::shared_ptr<const Grammar> grammarOf(std::string_view text) {
+    ParseResult r = parse(text);
+    for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, "<test>");
+    return r.grammar;
+}
+
+Image render(std::shared_ptr<const Grammar> g, SnapshotOptions o = {}) {
+    o.width = o.width == 1280 ? kW : o.width;
+    o.height = o.height == 720 ? kH : o.height;
+    Snapshot shot;
+    std::string error;
+    EXPECT_TRUE(renderSnapshot(g, o, shot, error)) << error;
+    return shot.image;
+}
+
+// Plain background and no ground, so every pixel that differs from an empty scene is plant.
+SnapshotOptions plain() {
+    SnapshotOptions o;
+    o.render.ground = false;
+    o.render.shadows = false;
+    return o;
+}
+
+struct Mask {
+    int w = 0, h = 0;
+    std::vector<std::uint8_t> on;
+    int count = 0;
+    bool at(int x, int y) const { return on[std::size_t(y * w + x)]; }
+};
+
+Mask plantMask(const Image& plant, const Image& empty) {
+    Mask m;
+    m.w = plant.width;
+    m.h = plant.height;
+    m.on.resize(std::size_t(m.w * m.h));
+    for (std::size_t i = 0; i < m.on.size(); ++i) {
+        int d = 0;
+        for (int c = 0; c < 3; ++c) d += std::abs(int(plant.rgba[i * 4 + c]) - int(empty.rgba[i * 4 + c]));
+        m.on[i] = d > 24;
+        m.count += m.on[i];
+    }
+    return m;
+}
+
+Image emptyScene(const SnapshotOptions& o) { return render(grammarOf("axiom: X\n"), o); }
+
+TEST(Render, EveryPresetIsFramedAndNotClipped) {
+    SnapshotOptions o = plain();
+    Image empty = emptyScene(o);
+    for (const auto& name : presetNames()) {
+        Image img = render(grammarOf(*presetText(name)), o);
+        Mask m = plantMask(img, empty);
+        double cover = double(m.count) / (kW * kH);
+        EXPECT_GT(cover, 0.004) << name << " covers too little of the frame";
+        EXPECT_LT(cover, 0.9) << name;
+        // Framed: the plant reaches near at least two opposite borders of the frame...
+        int minX = kW, maxX = -1, minY = kH, maxY = -1, border = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x)
+                if (m.at(x, y)) {
+                    minX = std::min(minX, x);
+                    maxX = std::max(maxX, x);
+                    minY = std::min(minY, y);
+                    maxY = std::max(maxY, y);
+                    border += x == 0 || y == 0 || x == kW - 1 || y == kH - 1;
+                }
+        EXPECT_TRUE(maxY - minY > kH * 0.7 || maxX - minX > kW * 0.7) << name << " is not framed";
+        // ...and touches none of them.
+        EXPECT_EQ(border, 0) << name << " is clipped at the border";
+    }
+}
+
+TEST(Render, LeavesAreGreen) {
+    auto g = grammarOf("angle: 40\nwidth: 0.05\naxiom: F[+~leaf(3)][-~leaf(3)]F[+~leaf(3)][-~leaf(3)]F\n");
+    SnapshotOptions o = plain();
+    Image img = render(g, o);
+    Mask m = plantMask(img, emptyScene(o));
+    int green = 0;
+    for (std::size_t i = 0; i < m.on.size(); ++i)
+        if (m.on[i]) green += img.rgba[i * 4 + 1] > img.rgba[i * 4] + 10 && img.rgba[i * 4 + 1] > img.rgba[i * 4 + 2] + 10;
+    EXPECT_GT(m.count, kW * kH / 20);
+    EXPECT_GT(double(green) / m.count, 0.8);
+}
+
+TEST(Render, KochCurveIsLeftRightSymmetric) {
+    SnapshotOptions o = plain();
+    o.width = 321;  // odd: the axis of symmetry is a pixel column
+    Image img = render(grammarOf(*presetText("koch")), o);
+    Image empty = render(grammarOf("axiom: X\n"), o);
+    Mask m = plantMask(img, empty);
+    int agree = 0, total = 0;
+    for (int y = 0; y < m.h; ++y)
+        for (int x = 0; x < m.w; ++x)
+            if (m.at(x, y)) {
+                ++total;
+                // Allow one pixel of rasterisation difference.
+                bool mirrored = false;
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int mx = m.w - 1 - x + dx;
+                    if (mx >= 0 && mx < m.w && m.at(mx, y)) mirrored = true;
+                }
+                agree += mirrored;
+            }
+    ASSERT_GT(total, 500);
+    EXPECT_GT(double(agree) / total, 0.97);
+}
+
+TEST(Render, ShadowDarkensTheGroundUnderATree) {
+    // ABOP fig. 1.25: a bush with leaves.
+    auto g = grammarOf(
+        "n: 5\nangle: 22.5\nwidth: 0.4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\n"
+        "F -> S/////F\nS -> FL\nL -> [^^{-f+f+f-|-f+f+f}]\n");
+    SnapshotOptions lit;
+    lit.render.shadows = true;
+    SnapshotOptions unlit = lit;
+    unlit.render.shadows = false;
+    Image a = render(g, lit), b = render(g, unlit);
+    // Pixels of the ground that the shadow makes clearly darker.
+    int darker = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
+        int la = a.rgba[i] + a.rgba[i + 1] + a.rgba[i + 2], lb = b.rgba[i] + b.rgba[i + 1] + b.rgba[i + 2];
+        darker += la + 60 < lb;
+    }
+    EXPECT_GT(darker, kW * kH / 200);
+}
+
+TEST(Render, TwoDimensionalCurvesAreCrispInk) {
+    Image img = render(grammarOf(*presetText("koch")), plain());
+    int ink = 0;
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) ink += img.rgba[i + 1] < 100 && img.rgba[i] < 100;
+    EXPECT_GT(ink, 300);  // dark line pixels, not shaded tubes
+}
+
+// Golden images: the presets at 320x180 against tests/golden/<name>.png. A render may differ
+// by rasterisation details between CPUs, so the comparison allows a small mean difference.
+// Regenerate with: SPROUT_UPDATE_GOLDENS=1 build/tests/render_tests --gtest_filter='Render.Golden*'
+TEST(Render, GoldenImages) {
+    const std::filesystem::path dir = SPROUT_GOLDEN_DIR;
+    const bool update = std::getenv("SPROUT_UPDATE_GOLDENS") != nullptr;
+    for (const char* name : {"fractal_plant", "koch", "bush", "dandelion", "fern"}) {
+        Image img = render(grammarOf(*presetText(name)));
+        const std::string path = (dir / (std::string(name) + ".png")).string();
+        std::string error;
+        if (update) {
+            ASSERT_TRUE(writePng(path, img, error)) << error;
+            continue;
+        }
+        Image golden;
+        ASSERT_TRUE(readPng(path, golden, error)) << path << ": " << error;
+        ASSERT_EQ(golden.width, img.width);
+        ASSERT_EQ(golden.height, img.height);
+        double diff = 0;
+        int bad = 0;
+        for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c) d += std::abs(int(img.rgba[i + c]) - int(golden.rgba[i + c]));
+            diff += d;
+            bad += d > 60;
+        }
+        diff /= double(img.width * img.height * 3);
+        EXPECT_LT(diff, 2.0) << name << ": mean difference per channel";
+        EXPECT_LT(bad, img.width * img.height / 50) << name << ": pixels that differ a lot";
+    }
+}
+
+TEST(Render, PngRoundTripKeepsPixelsAndText) {
+    Image img = render(grammarOf(*presetText("koch")), plain());
+    img.text = {{"lsys", "axiom: F\nF -> F+F\n"}};
+    const std::string path = testing::TempDir() + "sprout_roundtrip.png";
+    std::string error;
+    ASSERT_TRUE(writePng(path, img, error)) << error;
+    Image back;
+    ASSERT_TRUE(readPng(path, back, error)) << error;
+    EXPECT_EQ(back.rgba, img.rgba);
+    ASSERT_EQ(back.text.size(), 1u);
+    EXPECT_EQ(back.text[0].second, "axiom: F\nF -> F+F\n");
+    EXPECT_FALSE(readPng("/nonexistent.png", back, error));
+    std::ofstream(path) << "not a png";
+    EXPECT_FALSE(readPng(path, back, error));
+    EXPECT_EQ(error, "not a PNG file");
+}
+
+}  // namespace
+}  // namespace sprout
