@@ -1,6 +1,8 @@
 // sprout: with no subcommand, the viewer; `sprout expand | render | export ...` need no display.
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <iostream>
 #include <new>
 
@@ -57,9 +59,15 @@ static int run(int argc, char** argv) {
         }
         if (cmd[0] == '-') return cli::printUsage(true);
     }
-    std::fprintf(stderr,
-                 "sprout: the viewer is not part of this build yet; the command-line tools work:\n"
-                 "  sprout expand %s --stats\n",
-                 argc >= 2 ? argv[1] : std::string(kDefaultPreset).c_str());
-    return 2;
+    // No subcommand: the viewer. Without a display, say so and leave a picture instead.
+    std::string source = argc >= 2 ? argv[1] : std::string(kDefaultPreset);
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
+        std::string out = "sprout.png";
+        std::fprintf(stderr, "sprout: no display found; writing a headless render of %s to %s instead\n",
+                     source.c_str(), out.c_str());
+        std::string o = "-o", outArg = out;
+        char* renderArgv[] = {const_cast<char*>("render"), source.data(), o.data(), outArg.data()};
+        return cli::runRender(4, renderArgv);
+    }
+    return cli::runViewer(source);
 }

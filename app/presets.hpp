@@ -13,6 +13,6 @@ std::span<const EmbeddedFile> embeddedPresets();  // generated
 std::optional<std::string_view> presetText(std::string_view name);
 std::vector<std::string> presetNames();
 // The plant the viewer opens on.
-constexpr std::string_view kDefaultPreset = "fractal_plant";
+constexpr std::string_view kDefaultPreset = "bush_3d";
 
 }  // namespace sprout

@@ -1,10 +1,12 @@
 #pragma once
+#include <string>
 // The subcommands of `sprout`. Each returns the process exit code.
 
 namespace sprout::cli {
 
 int runExpand(int argc, char** argv);  // argv[0] is "expand"
 int runRender(int argc, char** argv);  // argv[0] is "render"
+int runViewer(const std::string& source);  // the GLFW window
 int printUsage(bool toStderr);
 
 }  // namespace sprout::cli

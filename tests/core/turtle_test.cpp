@@ -194,7 +194,9 @@ TEST(Turtle, AutomaticWidthFollowsThePlantsSize) {
     float height = g.bounds.max.y - g.bounds.min.y;
     EXPECT_NEAR(g.cylinders[0].startRadius, height / 80 / 2, 1e-4);
     for (const auto& c : g.cylinders) {
-        if (c.order > 0) EXPECT_LT(c.startRadius, g.cylinders[0].startRadius);  // thinner branches
+        if (c.order > 0) {
+            EXPECT_LT(c.startRadius, g.cylinders[0].startRadius);  // thinner branches
+        }
     }
 }
 
