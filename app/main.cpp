@@ -16,7 +16,8 @@ int printUsage(bool toStderr) {
     std::fprintf(out,
                  "Sprout %s, a workbench for L-systems\n\n"
                  "usage:\n"
-                 "  sprout [FILE|PRESET]            open the viewer (coming with the renderer)\n"
+                 "  sprout [FILE|PRESET] [--size WxH] [--screenshot OUT.png] [--script FILE]\n"
+                 "                                  open the viewer (without a display: writes sprout.png)\n"
                  "  sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]\n"
                  "                                  print the derived string of step N\n"
                  "  sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]\n"
@@ -57,17 +58,21 @@ static int run(int argc, char** argv) {
             std::printf("sprout %s\n", SPROUT_VERSION);
             return 0;
         }
-        if (cmd[0] == '-') return cli::printUsage(true);
     }
     // No subcommand: the viewer. Without a display, say so and leave a picture instead.
-    std::string source = argc >= 2 ? argv[1] : std::string(kDefaultPreset);
     if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) {
+        std::string source(kDefaultPreset);
+        for (int i = 1; i < argc; ++i)
+            if (argv[i][0] != '-') {
+                source = argv[i];
+                break;
+            }
         std::string out = "sprout.png";
         std::fprintf(stderr, "sprout: no display found; writing a headless render of %s to %s instead\n",
                      source.c_str(), out.c_str());
-        std::string o = "-o", outArg = out;
-        char* renderArgv[] = {const_cast<char*>("render"), source.data(), o.data(), outArg.data()};
+        std::string o = "-o";
+        char* renderArgv[] = {const_cast<char*>("render"), source.data(), o.data(), out.data()};
         return cli::runRender(4, renderArgv);
     }
-    return cli::runViewer(source);
+    return cli::runViewer(argc, argv);
 }

@@ -397,7 +397,8 @@ void Renderer::upload(const Geometry& g) {
     m_stats.surfaces = g.surfaces.size();
 }
 
-void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target) {
+void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
+                    int y) {
     Impl& s = *m;
     RenderStats stats;
     stats.cylinders = s.cylinderCount;
@@ -503,9 +504,25 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     // Resolve the multisampled image into the target.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     m_stats = stats;
+}
+
+std::vector<std::uint8_t> Renderer::renderImage(const Camera& camera, int width, int height, const RenderOptions& o) {
+    GLuint fbo = 0, colour = 0;
+    glGenFramebuffers(1, &fbo);
+    glGenRenderbuffers(1, &colour);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    draw(camera, width, height, o, fbo);
+    std::vector<std::uint8_t> pixels = readPixels(width, height, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteRenderbuffers(1, &colour);
+    glDeleteFramebuffers(1, &fbo);
+    return pixels;
 }
 
 std::vector<std::uint8_t> Renderer::readPixels(int width, int height, unsigned source) const {

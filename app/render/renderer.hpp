@@ -52,8 +52,12 @@ public:
     bool init(ProcLoader loader, std::string& error);
     // Copies the plant to the GPU (buffers are reused when they are big enough).
     void upload(const Geometry& geometry);
-    // Draws into framebuffer `target` (0: the window's or OSMesa's default framebuffer).
-    void draw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0);
+    // Draws a width x height image into framebuffer `target` (0: the window's or OSMesa's
+    // default framebuffer), its lower-left corner at (x, y) there.
+    void draw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0,
+              int x = 0, int y = 0);
+    // Draws into an offscreen image of any size (screenshots larger than the window).
+    std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // RGBA pixels of framebuffer `source`, top row first.
     std::vector<std::uint8_t> readPixels(int width, int height, unsigned source = 0) const;
 

@@ -1,0 +1,81 @@
+#pragma once
+// The viewer window's state that lives next to the GL context: renderer, camera, view
+// settings, the cached 3D image, status messages. Split by feature: window.cpp (loop,
+// input, screenshots), panel.cpp (the ImGui panel), script.cpp (scripted actions).
+#include <deque>
+#include <memory>
+#include <string>
+
+#include "app/render/renderer.hpp"
+#include "app/viewer/thumbnails.hpp"
+#include "app/viewer/viewer_state.hpp"
+
+struct GLFWwindow;
+
+namespace sprout::viewer {
+
+struct ViewSettings {
+    render::RenderOptions render;
+    float sunAzimuth = -40;   // degrees around +Y
+    float sunElevation = 55;  // degrees above the horizon
+    bool turntable = false;
+    float turntableSpeed = 20;  // degrees per second
+    int screenshotSize = 0;     // index into kScreenshotSizes
+};
+
+struct ScreenshotSize {
+    const char* label;
+    int width, height;  // 0: the window's view
+};
+inline constexpr ScreenshotSize kScreenshotSizes[] = {
+    {"view size", 0, 0}, {"1920 x 1080", 1920, 1080}, {"3840 x 2160", 3840, 2160}, {"1080 x 1080", 1080, 1080}};
+
+struct App {
+    explicit App(std::string executable);
+
+    ViewerState state;
+    render::Renderer renderer;
+    render::Camera camera;
+    ViewSettings view;
+    Thumbnails thumbnails;
+    GLFWwindow* window = nullptr;
+
+    int panelWidth = 430;
+    bool needsRedraw = true;
+    bool frameOnNextPlant = true;
+    bool showHelp = false;
+    bool interacting = false;  // dragging: coarser meshes for big plants
+    std::string status;        // last action's message
+    double statusTime = 0;
+    double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;
+
+    // Pending file dialogs (a path typed in a popup).
+    bool openPopup = false, saveAsPopup = false, quitPopup = false;
+    std::string pathInput;
+    bool quitRequested = false;
+    bool quitConfirmed = false;
+
+    void say(std::string message);
+    void frame();  // camera on the current plant
+    void resetView();
+    void applySun();
+    bool takeScreenshot(const std::string& path, int width, int height);
+    std::string nextScreenshotPath() const;
+};
+
+void drawPanel(App& app);
+
+// --script FILE: one action per line, run as the window goes (tests, demos).
+class Script {
+public:
+    bool load(const std::string& path, std::string& error);
+    // Runs the actions that can run now; false once `quit` ran or the script ended.
+    bool step(App& app);
+    bool empty() const { return m_lines.empty(); }
+
+private:
+    std::deque<std::string> m_lines;
+    bool m_waiting = false;
+};
+
+}  // namespace sprout::viewer

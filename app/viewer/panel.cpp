@@ -1,0 +1,321 @@
+// The ImGui panel: grammar editor with errors, sliders, growth, view and light, presets,
+// files and the statistics line.
+#include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "app/presets.hpp"
+#include "app/viewer/app.hpp"
+#include "app/viewer/text_edit.hpp"
+
+namespace sprout::viewer {
+namespace {
+
+const ImVec4 kError(1.0f, 0.45f, 0.4f, 1), kWarning(1.0f, 0.8f, 0.35f, 1), kDim(0.65f, 0.65f, 0.65f, 1);
+
+// A slider over a value written in the text; returns true when moved.
+bool valueSlider(App& app, const char* label, const char* key, double current, float lo, float hi, const char* fmt = "%.3g") {
+    float v = float(current);
+    if (ImGui::SliderFloat(label, &v, lo, hi, fmt)) {
+        app.state.setDirectiveValue(key, v);
+        return true;
+    }
+    return false;
+}
+
+void grammarSection(App& app) {
+    std::string text = app.state.text();
+    const float h = std::max(160.0f, ImGui::GetTextLineHeight() * 16);
+    if (ImGui::InputTextMultiline("##grammar", &text, ImVec2(-1, h), ImGuiInputTextFlags_AllowTabInput))
+        app.state.setText(std::move(text));
+    auto latest = app.state.latest();
+    if (latest) {
+        for (const auto& d : latest->diagnostics) {
+            ImGui::PushStyleColor(ImGuiCol_Text, d.severity == Severity::Error ? kError : kWarning);
+            ImGui::TextWrapped("line %d, col %d: %s%s", d.line, d.col, d.severity == Severity::Warning ? "warning: " : "",
+                               d.message.c_str());
+            ImGui::PopStyleColor();
+        }
+        if (!latest->grammar && app.state.plant())
+            ImGui::TextColored(kDim, "(the last good plant stays on screen until the text is fixed)");
+        if (!latest->message.empty() && !latest->cancelled) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kError);
+            ImGui::TextWrapped("%s", latest->message.c_str());
+            ImGui::PopStyleColor();
+        }
+    }
+    const Worker& w = app.state.worker();
+    if (w.busy()) {
+        char label[64];
+        std::snprintf(label, sizeof label, "deriving step %d", w.progressStep());
+        ImGui::ProgressBar(w.progress(), ImVec2(-90, 0), label);
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) app.state.worker().cancel();
+    }
+}
+
+void parameterSection(App& app) {
+    auto plant = app.state.plant();
+    if (!plant || !plant->grammar) return;
+    const Settings& s = plant->grammar->settings;
+    int n = plant->iterations;
+    if (ImGui::SliderInt("n (iterations)", &n, 0, std::max(12, plant->iterations + 2))) app.state.setIterations(n);
+    valueSlider(app, "angle", "angle", s.angle.mean, 0, 180, "%.1f deg");
+    valueSlider(app, "step", "step", s.step.mean, 0.01f, std::max(10.0f, float(s.step.mean) * 2));
+    valueSlider(app, "width", "width", s.width, 0, std::max(2.0f, float(s.width) * 2), s.width <= 0 ? "auto" : "%.3g");
+    valueSlider(app, "branch scale", "branch_scale", s.branchLength, 0.1f, 1.5f);
+    if (s.tropismStrength != 0 || ImGui::TreeNode("tropism")) {
+        float e = float(s.tropismStrength);
+        if (ImGui::SliderFloat("tropism e", &e, -1, 1, "%.3f")) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "%s %s %s %s", formatValue(s.tropism[0]).c_str(), formatValue(s.tropism[1]).c_str(),
+                          formatValue(s.tropism[2]).c_str(), formatValue(e).c_str());
+            app.state.setText(setDirective(app.state.text(), "tropism", s.tropism == std::array<double, 3>{0, 0, 0} ? "0 -1 0 " + formatValue(e) : buf));
+        }
+        if (s.tropismStrength == 0) ImGui::TreePop();
+    }
+    int seed = int(plant->seed % 1000000000ull);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
+    if (ImGui::InputInt("seed", &seed)) app.state.setSeed(std::uint64_t(std::max(0, seed)));
+    ImGui::SameLine();
+    if (ImGui::Button("New specimen (N)")) app.state.newSpecimen();
+    // One slider per `define`, generated from the file (L-Py's scalar parameters panel).
+    for (const auto& name : plant->grammar->defineOrder) {
+        double v = plant->grammar->defines.at(name);
+        float f = float(v);
+        float span = std::max(1.0f, std::fabs(f) * 2);
+        if (ImGui::SliderFloat(name.c_str(), &f, v < 0 ? -span : 0.0f, span, "%.3g")) app.state.setDefineValue(name, f);
+    }
+}
+
+void growthSection(App& app) {
+    auto plant = app.state.plant();
+    if (!plant) return;
+    int step = plant->displayStep;
+    if (ImGui::SliderInt("step", &step, 0, plant->iterations)) app.state.setDisplayStep(step);
+    if (ImGui::Button("|<")) app.state.setDisplayStep(0);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) app.state.stepBy(-1);
+    ImGui::SameLine();
+    if (ImGui::Button(app.state.playing() ? "Pause" : "Play")) app.state.setPlaying(!app.state.playing());
+    ImGui::SameLine();
+    if (ImGui::Button(">")) app.state.stepBy(1);
+    ImGui::SameLine();
+    if (ImGui::Button(">|")) app.state.setDisplayStep(plant->iterations);
+    ImGui::SameLine();
+    ImGui::Checkbox("loop", &app.state.loop);
+    ImGui::SliderFloat("steps / s", &app.state.stepsPerSecond, 0.25f, 10, "%.2f");
+}
+
+void viewSection(App& app) {
+    ViewSettings& v = app.view;
+    if (ImGui::Button("Frame (F)")) app.frame();
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)")) app.resetView();
+    ImGui::SameLine();
+    ImGui::Checkbox("turntable (T)", &v.turntable);
+    bool changed = false;
+    changed |= ImGui::SliderFloat("sun azimuth", &v.sunAzimuth, -180, 180, "%.0f deg");
+    changed |= ImGui::SliderFloat("sun elevation", &v.sunElevation, 5, 90, "%.0f deg");
+    if (changed) app.applySun();
+    if (ImGui::SliderFloat("sun intensity", &v.render.sunIntensity, 0, 2, "%.2f")) app.needsRedraw = true;
+    if (ImGui::Checkbox("shadows", &v.render.shadows)) app.needsRedraw = true;
+    ImGui::SameLine();
+    if (ImGui::Checkbox("ground", &v.render.ground)) app.needsRedraw = true;
+    if (ImGui::ColorEdit3("sky", &v.render.backgroundTop.x, ImGuiColorEditFlags_NoInputs)) app.needsRedraw = true;
+    ImGui::SameLine();
+    if (ImGui::ColorEdit3("horizon", &v.render.backgroundBottom.x, ImGuiColorEditFlags_NoInputs)) app.needsRedraw = true;
+    ImGui::SetNextItemWidth(140);
+    if (ImGui::BeginCombo("##shotsize", kScreenshotSizes[v.screenshotSize].label)) {
+        for (int i = 0; i < int(std::size(kScreenshotSizes)); ++i)
+            if (ImGui::Selectable(kScreenshotSizes[i].label, i == v.screenshotSize)) v.screenshotSize = i;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (P)")) {
+        const auto& s = kScreenshotSizes[v.screenshotSize];
+        app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);
+    }
+}
+
+void presetSection(App& app) {
+    const auto names = presetNames();
+    const float cell = 96;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float itemWidth = cell + 2 * style.FramePadding.x + style.ItemSpacing.x;
+    int columns = std::max(1, int((ImGui::GetContentRegionAvail().x + style.ItemSpacing.x) / itemWidth));
+    int i = 0;
+    for (const auto& name : names) {
+        ImGui::PushID(name.c_str());
+        ImGui::BeginGroup();
+        const Image* img = app.thumbnails.get(name);
+        bool clicked = false;
+        if (img) {
+            unsigned& tex = app.thumbnails.textures[name];
+            if (!tex) {
+                glGenTextures(1, &tex);
+                glBindTexture(GL_TEXTURE_2D, tex);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img->width, img->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba.data());
+            }
+            clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(tex)), ImVec2(cell, cell * 0.75f));
+        } else {
+            clicked = ImGui::Button("...", ImVec2(cell + 6, cell * 0.75f + 6));
+        }
+        ImGui::TextColored(kDim, "%.14s", name.c_str());
+        ImGui::EndGroup();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", name.c_str());
+        if (clicked) {
+            if (app.state.dirty()) app.state.autosave(true);  // never lose the edits
+            app.state.openText(std::string(*presetText(name)));
+            app.frameOnNextPlant = true;
+            app.say("opened preset " + name);
+        }
+        ImGui::PopID();
+        if (++i % columns != 0) ImGui::SameLine();
+    }
+    if (i % columns != 0) ImGui::NewLine();
+}
+
+void fileMenu(App& app) {
+    if (ImGui::BeginMenuBar()) {
+        if (ImGui::BeginMenu("File")) {
+            if (ImGui::MenuItem("Open...", "Ctrl+O")) app.openPopup = true;
+            if (ImGui::MenuItem("Save", "Ctrl+S")) {
+                if (app.state.path().empty()) app.saveAsPopup = true;
+                else if (std::string e; !app.state.save(e)) app.say(e);
+                else app.say("saved " + app.state.path().string());
+            }
+            if (ImGui::MenuItem("Save as...")) app.saveAsPopup = true;
+            if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.quitRequested = true;
+            ImGui::EndMenu();
+        }
+        if (ImGui::BeginMenu("Help")) {
+            if (ImGui::MenuItem("Keyboard shortcuts", "F1")) app.showHelp = true;
+            ImGui::EndMenu();
+        }
+        ImGui::EndMenuBar();
+    }
+    auto pathPopup = [&](bool& flag, const char* title, const char* action, auto&& run) {
+        if (flag) {
+            ImGui::OpenPopup(title);
+            app.pathInput = app.state.path().empty() ? "plant.lsys" : app.state.path().string();
+            flag = false;
+        }
+        if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::SetNextItemWidth(360);
+            bool enter = ImGui::InputText("path", &app.pathInput, ImGuiInputTextFlags_EnterReturnsTrue);
+            if (ImGui::Button(action) || enter) {
+                run(app.pathInput);
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::SameLine();
+            if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+            ImGui::EndPopup();
+        }
+    };
+    pathPopup(app.openPopup, "Open grammar", "Open", [&](const std::string& p) {
+        if (app.state.dirty()) app.state.autosave(true);
+        std::string e;
+        if (app.state.open(p, e)) {
+            app.frameOnNextPlant = true;
+            app.say("opened " + p);
+        } else {
+            app.say(e);
+        }
+    });
+    pathPopup(app.saveAsPopup, "Save grammar as", "Save", [&](const std::string& p) {
+        std::string e;
+        app.say(app.state.saveAs(p, e) ? "saved " + p : e);
+    });
+    if (app.quitPopup) {
+        ImGui::OpenPopup("Unsaved changes");
+        app.quitPopup = false;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted("The grammar has unsaved changes.");
+        if (ImGui::Button("Save and quit")) {
+            std::string e;
+            if (app.state.path().empty()) app.saveAsPopup = true;
+            else if (app.state.save(e)) app.quitConfirmed = true;
+            else app.say(e);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Quit without saving")) {
+            app.quitConfirmed = true;  // the text stays in the autosave file
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+}
+
+void helpWindow(App& app) {
+    if (!app.showHelp) return;
+    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Keyboard shortcuts", &app.showHelp)) {
+        const char* rows[][2] = {
+            {"F1", "this help"},           {"F", "frame the plant"},        {"R", "reset the view"},
+            {"T", "turntable on / off"},   {"Space", "play / pause growth"}, {"Left / Right", "previous / next step"},
+            {"Up / Down", "one more / one fewer iteration"}, {"N", "new specimen (another seed)"},
+            {"P", "screenshot"},           {"Ctrl+S", "save"},              {"Ctrl+O", "open"},
+            {"Ctrl+Q", "quit"},            {"left drag", "orbit"},          {"right / middle drag", "pan"},
+            {"wheel", "zoom"},
+        };
+        if (ImGui::BeginTable("keys", 2)) {
+            for (auto& r : rows) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(r[0]);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(r[1]);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace
+
+void drawPanel(App& app) {
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(app.window, &fw, &fh);
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(float(app.panelWidth), float(fh)));
+    ImGui::Begin("Sprout", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_MenuBar |
+                     ImGuiWindowFlags_NoTitleBar);
+    fileMenu(app);
+    std::string title = app.state.path().empty() ? "untitled" : app.state.path().filename().string();
+    ImGui::Text("%s%s", title.c_str(), app.state.dirty() ? " *" : "");
+    if (ImGui::CollapsingHeader("Grammar", ImGuiTreeNodeFlags_DefaultOpen)) grammarSection(app);
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
+    if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);
+    if (ImGui::CollapsingHeader("View and light")) viewSection(app);
+    if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) presetSection(app);
+    // Statistics line.
+    ImGui::Separator();
+    if (auto p = app.state.plant()) {
+        std::size_t leaves = 0;
+        for (const auto& s : p->geometry->surfaces) leaves += s.kind == SurfaceKind::Leaf;
+        ImGui::TextColored(kDim, "%s modules, %zu segments, %zu leaves, %zu polygons", withThousands(p->modules).c_str(),
+                           p->geometry->cylinders.size(), leaves, p->geometry->polygons.indices.size() / 3);
+        ImGui::TextColored(kDim, "derive %.1f ms, interpret %.1f ms, upload %.1f ms, draw %.1f ms, frame %.1f ms",
+                           p->deriveMs, p->interpretMs, app.uploadMs, app.drawMs, app.frameMs);
+    }
+    if (!app.status.empty() && glfwGetTime() - app.statusTime < 6) ImGui::TextWrapped("%s", app.status.c_str());
+    ImGui::End();
+    helpWindow(app);
+}
+
+}  // namespace sprout::viewer

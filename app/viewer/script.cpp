@@ -1,0 +1,97 @@
+// --script FILE: viewer actions, one per line, for tests and demos.
+//   wait                  until the newest edit is on screen
+//   text <grammar>        replace the text ("\n" for line breaks)
+//   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
+//   define <name> <value> a define, as its slider would
+//   step <k> | play | pause | frame | yaw <deg> | pitch <deg>
+//   screenshot <path> [WxH]
+//   quit
+#include <fstream>
+#include <sstream>
+
+#include "app/viewer/app.hpp"
+
+namespace sprout::viewer {
+
+bool Script::load(const std::string& path, std::string& error) {
+    std::ifstream in(path);
+    if (!in) {
+        error = "cannot open the script";
+        return false;
+    }
+    std::string line;
+    while (std::getline(in, line))
+        if (!line.empty() && line[0] != '#') m_lines.push_back(line);
+    if (m_lines.empty()) m_lines.push_back("quit");
+    return true;
+}
+
+bool Script::step(App& app) {
+    while (!m_lines.empty()) {
+        std::istringstream in(m_lines.front());
+        std::string cmd;
+        in >> cmd;
+        // Everything waits for the plant on screen to be the newest one.
+        if (app.state.worker().busy() || (app.state.latest() && app.state.latest()->generation < app.state.generation()) ||
+            (!app.state.latest() && app.state.generation() > 0))
+            return true;
+        m_lines.pop_front();
+        if (cmd == "wait") return true;  // one frame drawn after the result
+        if (cmd == "quit") return false;
+        if (cmd == "text") {
+            std::string rest;
+            std::getline(in, rest);
+            std::string text;
+            for (size_t i = rest.find_first_not_of(' '); i < rest.size(); ++i) {
+                if (rest[i] == '\\' && i + 1 < rest.size() && rest[i + 1] == 'n') {
+                    text += '\n';
+                    ++i;
+                } else {
+                    text += rest[i];
+                }
+            }
+            app.state.setText(text);
+            return true;
+        }
+        if (cmd == "set") {
+            std::string key;
+            double v = 0;
+            in >> key >> v;
+            if (key == "n") app.state.setIterations(int(v));
+            else app.state.setDirectiveValue(key, v);
+            return true;
+        }
+        if (cmd == "define") {
+            std::string name;
+            double v = 0;
+            in >> name >> v;
+            app.state.setDefineValue(name, v);
+            return true;
+        }
+        if (cmd == "step") {
+            int k = 0;
+            in >> k;
+            app.state.setDisplayStep(k);
+            return true;
+        }
+        if (cmd == "play") app.state.setPlaying(true);
+        else if (cmd == "pause") app.state.setPlaying(false);
+        else if (cmd == "frame") app.frame();
+        else if (cmd == "yaw" || cmd == "pitch") {
+            float v = 0;
+            in >> v;
+            (cmd == "yaw" ? app.camera.yaw : app.camera.pitch) = v;
+            app.needsRedraw = true;
+        } else if (cmd == "screenshot") {
+            std::string path, size;
+            in >> path >> size;
+            int w = 0, h = 0;
+            if (!size.empty()) std::sscanf(size.c_str(), "%dx%d", &w, &h);
+            app.takeScreenshot(path, w, h);
+        }
+        return true;
+    }
+    return false;
+}
+
+}  // namespace sprout::viewer

@@ -1,0 +1,36 @@
+#pragma once
+// Preset thumbnails, rendered by the same renderer in a child process (`sprout render`),
+// one at a time in the background and cached on disk, so the window never waits for them
+// and no second GL context shares this process.
+#include <map>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+#include "app/image.hpp"
+
+namespace sprout::viewer {
+
+class Thumbnails {
+public:
+    Thumbnails(std::string executable, std::string cacheDir);
+    ~Thumbnails();
+    // Starts the next missing thumbnail when none is being made; collects finished ones.
+    void poll(const std::vector<std::string>& names);
+    // The image, once made (nullptr until then).
+    const Image* get(const std::string& name) const;
+    // Set when the window uploaded the image to a texture.
+    std::map<std::string, unsigned> textures;
+
+    static constexpr int kWidth = 160, kHeight = 120;
+
+private:
+    std::string pathFor(const std::string& name) const;
+    std::string m_exe, m_dir;
+    std::map<std::string, Image> m_images;
+    std::map<std::string, bool> m_failed;
+    pid_t m_child = -1;
+    std::string m_childName;
+};
+
+}  // namespace sprout::viewer

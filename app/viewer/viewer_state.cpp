@@ -1,0 +1,249 @@
+#include "app/viewer/viewer_state.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "app/viewer/text_edit.hpp"
+
+namespace sprout::viewer {
+namespace fs = std::filesystem;
+
+bool saveTextAtomically(const fs::path& path, const std::string& text, std::string& error) {
+    const fs::path tmp = path.string() + ".saving";
+    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) {
+        error = std::strerror(errno);
+        return false;
+    }
+    size_t done = 0;
+    while (done < text.size()) {
+        ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            error = std::strerror(errno);
+            ::close(fd);
+            ::unlink(tmp.c_str());
+            return false;
+        }
+        done += size_t(n);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) {
+        error = std::strerror(errno);
+        ::unlink(tmp.c_str());
+        return false;
+    }
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        error = std::strerror(errno);
+        ::unlink(tmp.c_str());
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+fs::path defaultAutosaveDir() {
+    if (const char* s = std::getenv("XDG_STATE_HOME"); s && *s) return fs::path(s) / "sprout";
+    if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".local" / "state" / "sprout";
+    return fs::temp_directory_path() / "sprout";
+}
+
+std::optional<std::string> readText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+ViewerState::ViewerState(fs::path autosaveDir)
+    : m_autosaveDir(autosaveDir.empty() ? defaultAutosaveDir() : std::move(autosaveDir)) {
+    std::error_code ec;
+    fs::create_directories(m_autosaveDir, ec);
+    // A session marker: present at start means the last session did not end cleanly.
+    const fs::path marker = m_autosaveDir / "session";
+    m_crashedBefore = fs::exists(marker, ec);
+    std::ofstream(marker) << ::getpid() << "\n";
+}
+
+ViewerState::~ViewerState() = default;
+
+void ViewerState::post() {
+    Request r;
+    r.text = m_text;
+    r.seed = m_seedOverride;
+    r.displayStep = m_displayStep;
+    r.generation = ++m_generation;
+    m_worker.post(std::move(r));
+}
+
+void ViewerState::setText(std::string text) {
+    if (text == m_text) return;
+    m_text = std::move(text);
+    m_dirty = true;
+    post();
+}
+
+void ViewerState::setDirectiveValue(const std::string& key, double value) {
+    setText(setDirective(m_text, key, formatValue(value)));
+}
+
+void ViewerState::setDefineValue(const std::string& name, double value) {
+    setText(viewer::setDefine(m_text, name, formatValue(value)));
+}
+
+void ViewerState::setIterations(int n) {
+    m_displayStep = -1;
+    setText(setDirective(m_text, "n", std::to_string(std::max(0, n))));
+}
+
+void ViewerState::setSeed(std::uint64_t seed) { setText(setDirective(m_text, "seed", std::to_string(seed))); }
+
+void ViewerState::newSpecimen() {
+    std::uint64_t current = m_plant && m_plant->grammar ? m_plant->seed : 1;
+    // A different seed each time, reproducible from the text.
+    setSeed((current * 6364136223846793005ull + 1442695040888963407ull) % 1000000007ull);
+}
+
+void ViewerState::setDisplayStep(int step) {
+    int n = m_plant ? m_plant->iterations : 0;
+    step = std::clamp(step, 0, std::max(n, 0));
+    int current = m_displayStep < 0 ? n : m_displayStep;
+    if (step == current) return;
+    m_displayStep = step == n ? -1 : step;
+    post();
+}
+
+void ViewerState::stepBy(int delta) {
+    int n = m_plant ? m_plant->iterations : 0;
+    setDisplayStep((m_displayStep < 0 ? n : m_displayStep) + delta);
+}
+
+void ViewerState::setPlaying(bool on) {
+    m_playing = on;
+    m_animClock = 0;
+    if (on && m_plant && (m_displayStep < 0 || m_displayStep >= m_plant->iterations)) setDisplayStep(0);
+}
+
+void ViewerState::tick(double seconds) {
+    if (!m_playing || !m_plant) return;
+    if (m_worker.busy()) return;  // wait for the step on screen before moving on
+    m_animClock += seconds;
+    const double period = 1.0 / std::max(0.05f, stepsPerSecond);
+    if (m_animClock < period) return;
+    m_animClock = 0;
+    int n = m_plant->iterations;
+    int current = m_displayStep < 0 ? n : m_displayStep;
+    if (current >= n) {
+        if (loop) setDisplayStep(0);
+        else m_playing = false;
+    } else {
+        setDisplayStep(current + 1);
+    }
+}
+
+bool ViewerState::update() {
+    auto r = m_worker.take();
+    if (!r) return false;
+    m_latest = r;
+    if (r->ok()) {
+        m_plant = r;
+        return true;
+    }
+    return false;
+}
+
+void ViewerState::waitForPlant() {
+    auto r = m_worker.waitForResult(m_generation);
+    if (!r) return;
+    m_latest = r;
+    if (r->ok()) m_plant = r;
+}
+
+bool ViewerState::open(const fs::path& path, std::string& error) {
+    auto text = readText(path);
+    if (!text) {
+        error = "cannot open " + path.string() + ": " + std::strerror(errno);
+        return false;
+    }
+    openText(std::move(*text), path);
+    return true;
+}
+
+void ViewerState::openText(std::string text, fs::path path) {
+    m_path = std::move(path);
+    std::error_code ec;
+    m_fileTime = m_path.empty() ? fs::file_time_type{} : fs::last_write_time(m_path, ec);
+    m_displayStep = -1;
+    m_seedOverride.reset();
+    m_text = std::move(text);
+    m_dirty = false;
+    post();
+}
+
+bool ViewerState::save(std::string& error) {
+    if (m_path.empty()) {
+        error = "no file name yet: use Save as";
+        return false;
+    }
+    return saveAs(m_path, error);
+}
+
+bool ViewerState::saveAs(const fs::path& path, std::string& error) {
+    if (!saveTextAtomically(path, m_text, error)) {
+        error = "could not save " + path.string() + ": " + error + " (the old file is unchanged)";
+        return false;
+    }
+    m_path = path;
+    std::error_code ec;
+    m_fileTime = fs::last_write_time(m_path, ec);
+    m_dirty = false;
+    return true;
+}
+
+bool ViewerState::reloadIfChangedOnDisk() {
+    if (m_path.empty() || m_dirty) return false;
+    std::error_code ec;
+    auto t = fs::last_write_time(m_path, ec);
+    if (ec || t == m_fileTime) return false;
+    auto text = readText(m_path);
+    if (!text) return false;
+    m_fileTime = t;
+    if (*text == m_text) return false;
+    m_text = std::move(*text);
+    post();
+    return true;
+}
+
+void ViewerState::autosave(bool force) {
+    auto now = std::chrono::steady_clock::now();
+    if (!force && now - m_lastAutosave < std::chrono::seconds(2)) return;
+    m_lastAutosave = now;
+    if (m_text == m_autosaved) return;
+    std::string error;
+    if (saveTextAtomically(m_autosaveDir / "autosave.lsys", m_text, error)) m_autosaved = m_text;
+}
+
+std::optional<std::string> ViewerState::recoverable() const {
+    if (!m_crashedBefore) return std::nullopt;
+    auto text = readText(m_autosaveDir / "autosave.lsys");
+    if (!text || text->empty() || *text == m_text) return std::nullopt;
+    return text;
+}
+
+void ViewerState::discardRecovery() { m_crashedBefore = false; }
+
+void ViewerState::markCleanExit() {
+    std::error_code ec;
+    fs::remove(m_autosaveDir / "session", ec);
+}
+
+}  // namespace sprout::viewer

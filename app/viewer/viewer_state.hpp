@@ -1,0 +1,94 @@
+#pragma once
+// Everything the viewer knows, without a window: the grammar text (the single source of
+// truth), the requests it posts to the worker, the last good plant, the iteration being
+// shown and its animation, the file it came from and its autosave. The ImGui panel edits
+// this; tests drive it directly.
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/viewer/worker.hpp"
+
+namespace sprout::viewer {
+
+// Writes `text` to `path` atomically (temporary file, fsync, rename): a failed save keeps
+// the old file. False with the reason in `error`.
+bool saveTextAtomically(const std::filesystem::path& path, const std::string& text, std::string& error);
+
+class ViewerState {
+public:
+    explicit ViewerState(std::filesystem::path autosaveDir = {});
+    ~ViewerState();
+
+    // --- the grammar text
+    const std::string& text() const { return m_text; }
+    void setText(std::string text);  // an edit: re-derive
+    bool dirty() const { return m_dirty; }
+
+    // --- sliders write into the text
+    void setDirectiveValue(const std::string& key, double value);
+    void setDefineValue(const std::string& name, double value);
+    void setIterations(int n);
+    void setSeed(std::uint64_t seed);
+    void newSpecimen();  // another seed: another plant of the same species
+
+    // --- iteration stepping and growth animation
+    int displayStep() const { return m_displayStep; }
+    void setDisplayStep(int step);  // clamped to 0..n
+    void stepBy(int delta);
+    bool playing() const { return m_playing; }
+    void setPlaying(bool on);
+    float stepsPerSecond = 2.0f;
+    bool loop = true;
+    void tick(double seconds);  // advances the animation
+
+    // --- results: call once per frame; true when a new plant arrived
+    bool update();
+    std::shared_ptr<const Result> plant() const { return m_plant; }        // last good one
+    std::shared_ptr<const Result> latest() const { return m_latest; }      // errors of the text
+    const Worker& worker() const { return m_worker; }
+    Worker& worker() { return m_worker; }
+    std::uint64_t generation() const { return m_generation; }
+    // Blocks until the newest request is done (tests and screenshots only).
+    void waitForPlant();
+
+    // --- files
+    const std::filesystem::path& path() const { return m_path; }
+    bool open(const std::filesystem::path& path, std::string& error);
+    void openText(std::string text, std::filesystem::path path = {});  // a preset or a restore
+    bool save(std::string& error);
+    bool saveAs(const std::filesystem::path& path, std::string& error);
+    // Reloads the file when another program changed it (and the text here has no unsaved
+    // edits); true when it did.
+    bool reloadIfChangedOnDisk();
+    // Autosave of the working text, every few seconds while it has unsaved edits.
+    void autosave(bool force = false);
+    // Text left by a session that did not end cleanly, if any.
+    std::optional<std::string> recoverable() const;
+    void discardRecovery();
+    void markCleanExit();
+
+private:
+    void post();
+
+    Worker m_worker;
+    std::string m_text;
+    bool m_dirty = false;
+    std::uint64_t m_generation = 0;
+    std::optional<std::uint64_t> m_seedOverride;
+    int m_displayStep = -1;  // -1: follow n
+    bool m_playing = false;
+    double m_animClock = 0;
+    std::shared_ptr<const Result> m_plant, m_latest;
+    std::filesystem::path m_path;
+    std::filesystem::file_time_type m_fileTime{};
+    std::filesystem::path m_autosaveDir;
+    std::chrono::steady_clock::time_point m_lastAutosave{};
+    std::string m_autosaved;
+    bool m_crashedBefore = false;
+};
+
+}  // namespace sprout::viewer

@@ -1,0 +1,372 @@
+// The viewer: a GLFW window with the plant in 3D and the ImGui panel. The same renderer as
+// `sprout render`, with a GLFW context instead of OSMesa.
+#include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <iostream>
+
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "app/image.hpp"
+#include "app/presets.hpp"
+#include "app/viewer/app.hpp"
+
+namespace sprout::viewer {
+namespace {
+
+std::string cacheDir() {
+    if (const char* c = std::getenv("XDG_CACHE_HOME"); c && *c) return std::string(c) + "/sprout/thumbnails";
+    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/sprout/thumbnails";
+    return "/tmp/sprout-thumbnails";
+}
+
+render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
+
+struct Mouse {
+    bool rotating = false, panning = false;
+    double x = 0, y = 0;
+};
+
+}  // namespace
+
+App::App(std::string executable) : thumbnails(std::move(executable), cacheDir()) { applySun(); }
+
+void App::say(std::string message) {
+    status = std::move(message);
+    statusTime = glfwGetTime();
+}
+
+void App::applySun() {
+    float az = glm::radians(view.sunAzimuth), el = glm::radians(view.sunElevation);
+    view.render.sunDirection = {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+    needsRedraw = true;
+}
+
+void App::frame() {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    const float aspect = float(std::max(1, w - panelWidth)) / float(std::max(1, h));
+    auto plant = state.plant();
+    if (plant && plant->geometry) {
+        float yaw = camera.yaw, pitch = camera.pitch;
+        bool keep = !frameOnNextPlant;
+        camera = render::frameGeometry(*plant->geometry, aspect, render::ViewPreset::Auto);
+        if (keep && !camera.orthographic) {  // re-frame, keep the direction the user chose
+            camera.yaw = yaw;
+            camera.pitch = pitch;
+            camera = render::frameGeometry(*plant->geometry, aspect, render::ViewPreset::Auto);
+            camera.yaw = yaw;
+            camera.pitch = pitch;
+        }
+    }
+    needsRedraw = true;
+}
+
+void App::resetView() {
+    frameOnNextPlant = true;
+    frame();
+    frameOnNextPlant = false;
+}
+
+std::string App::nextScreenshotPath() const {
+    for (int i = 1;; ++i) {
+        std::string p = "sprout-screenshot-" + std::to_string(i) + ".png";
+        if (!std::filesystem::exists(p)) return p;
+    }
+}
+
+bool App::takeScreenshot(const std::string& path, int width, int height) {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (width <= 0 || height <= 0) {
+        width = std::max(16, w - panelWidth);
+        height = std::max(16, h);
+    }
+    Image img;
+    img.width = width;
+    img.height = height;
+    render::Camera cam = camera;
+    img.rgba = renderer.renderImage(cam, width, height, view.render);
+    img.text.emplace_back("lsys", state.text());
+    img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
+    std::string error;
+    bool ok = writePng(path, img, error);
+    say(ok ? "saved " + path + " (" + std::to_string(width) + "x" + std::to_string(height) + ")" : path + ": " + error);
+    needsRedraw = true;
+    return ok;
+}
+
+}  // namespace sprout::viewer
+
+namespace sprout::cli {
+
+using namespace sprout::viewer;
+
+int runViewer(int argc, char** argv) {
+    Args args(argc, argv, 1, {}, {"--screenshot", "--window-screenshot", "--script", "--size"});
+    if (!args.error().empty() || args.positionals().size() > 1) {
+        std::cerr << "sprout: " << (args.error().empty() ? "expects at most one FILE or PRESET" : args.error())
+                  << "\nusage: sprout [FILE|PRESET] [--size WxH] [--screenshot OUT.png] [--script FILE]\n";
+        return 2;
+    }
+    const std::string source = args.positionals().empty() ? std::string(kDefaultPreset) : args.positionals()[0];
+    int width = 1440, height = 860;
+    if (auto s = args.value("--size"); s && std::sscanf(s->c_str(), "%dx%d", &width, &height) != 2) {
+        std::cerr << "sprout: --size expects WIDTHxHEIGHT\n";
+        return 2;
+    }
+    Script script;
+    if (auto s = args.value("--script")) {
+        std::string error;
+        if (!script.load(*s, error)) {
+            std::cerr << *s << ": " << error << "\n";
+            return 1;
+        }
+    }
+    // --screenshot: the whole window (panel and plant) once the plant is on screen, then exit.
+    const std::optional<std::string> screenshot = args.value("--screenshot");
+
+    if (!glfwInit()) {
+        std::cerr << "sprout: cannot open a window (no display?); try: sprout render " << source << " -o plant.png\n";
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(width, height, "Sprout", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "sprout: cannot create an OpenGL 3.3 window; try: sprout render " << source << " -o plant.png\n";
+        glfwTerminate();
+        return 1;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+
+    App app(std::filesystem::read_symlink("/proc/self/exe").string());
+    app.window = window;
+    std::string error;
+    if (!app.renderer.init(glfwProc, error)) {
+        std::cerr << "sprout: " << error << "\n";
+        return 1;
+    }
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed: no imgui.ini files left around
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330");
+
+    // Open the file or preset.
+    if (std::filesystem::exists(source)) {
+        if (!app.state.open(source, error)) {
+            std::cerr << "sprout: " << error << "\n";
+            return 1;
+        }
+    } else if (auto text = presetText(source)) {
+        app.state.openText(std::string(*text));
+    } else {
+        std::cerr << source << ": no such file or preset\n";
+        return 1;
+    }
+    // A previous session ended without saving: offer its text back.
+    bool offerRecovery = app.state.recoverable().has_value() && !screenshot && script.empty();
+
+    Mouse mouse;
+    double last = glfwGetTime(), lastDiskCheck = last;
+    bool screenshotDone = false;
+    int framesWithPlant = 0;
+    while (!glfwWindowShouldClose(window) || (app.state.dirty() && !app.quitConfirmed && script.empty() && !screenshot)) {
+        if (glfwWindowShouldClose(window)) {  // unsaved edits: ask first
+            glfwSetWindowShouldClose(window, GLFW_FALSE);
+            app.quitPopup = true;
+        }
+        const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot;
+        if (animating || app.needsRedraw) glfwPollEvents();
+        else glfwWaitEventsTimeout(0.25);  // idle: no frames, no CPU
+        const double now = glfwGetTime(), dt = now - last;
+        last = now;
+        auto frameStart = std::chrono::steady_clock::now();
+
+        if (app.state.update()) {
+            auto t0 = std::chrono::steady_clock::now();
+            app.renderer.upload(*app.state.plant()->geometry);
+            app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (app.frameOnNextPlant) {
+                app.frame();
+                app.frameOnNextPlant = false;
+            }
+            app.needsRedraw = true;
+        }
+        app.state.tick(dt);
+        app.state.autosave();
+        if (now - lastDiskCheck > 1.0) {
+            lastDiskCheck = now;
+            if (app.state.reloadIfChangedOnDisk()) app.say("reloaded: the file changed on disk");
+        }
+        if (app.view.turntable) {
+            app.camera.yaw += app.view.turntableSpeed * float(dt);
+            app.needsRedraw = true;
+        }
+        app.thumbnails.poll(presetNames());
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        if (offerRecovery) {
+            ImGui::OpenPopup("Recover unsaved grammar?");
+            offerRecovery = false;
+        }
+        if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
+            if (ImGui::Button("Restore it")) {
+                if (auto text = app.state.recoverable()) app.state.setText(*text);
+                app.state.discardRecovery();
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::SameLine();
+            if (ImGui::Button("Discard")) {
+                app.state.discardRecovery();
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::EndPopup();
+        }
+        drawPanel(app);
+
+        // Camera: drag to orbit (left) or pan (right / middle), wheel to zoom.
+        ImGuiIO& io = ImGui::GetIO();
+        double mx = 0, my = 0;
+        glfwGetCursorPos(window, &mx, &my);
+        const bool overView = !io.WantCaptureMouse;
+        if (overView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) mouse.rotating = true;
+        if (overView && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
+            mouse.panning = true;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) mouse.rotating = false;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle)) mouse.panning = false;
+        const float ddx = float(mx - mouse.x), ddy = float(my - mouse.y);
+        mouse.x = mx;
+        mouse.y = my;
+        app.interacting = mouse.rotating || mouse.panning;
+        if (mouse.rotating && (ddx || ddy)) {
+            app.camera.yaw -= ddx * 0.4f;
+            app.camera.pitch = std::clamp(app.camera.pitch + ddy * 0.4f, -89.0f, 89.0f);
+            app.needsRedraw = true;
+        }
+        if (mouse.panning && (ddx || ddy)) {
+            int fw = 0, fh = 0;
+            glfwGetFramebufferSize(window, &fw, &fh);
+            float scale = (app.camera.orthographic ? app.camera.orthoHeight
+                                                   : 2 * app.camera.distance * std::tan(glm::radians(app.camera.fovY) / 2)) /
+                          float(std::max(fh, 1));
+            glm::vec3 dir = glm::normalize(app.camera.eye() - app.camera.target);
+            glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), dir));
+            glm::vec3 up = glm::cross(dir, right);
+            app.camera.target += (-right * ddx + up * ddy) * scale;
+            app.needsRedraw = true;
+        }
+        if (overView && io.MouseWheel != 0) {
+            float k = std::pow(0.9f, io.MouseWheel);
+            app.camera.distance *= k;
+            app.camera.orthoHeight *= k;
+            app.needsRedraw = true;
+        }
+        // Keyboard shortcuts (listed in the help window, F1).
+        if (!io.WantTextInput) {
+            if (ImGui::IsKeyPressed(GLFW_KEY_F)) app.frame();
+            if (ImGui::IsKeyPressed(GLFW_KEY_R)) app.resetView();
+            if (ImGui::IsKeyPressed(GLFW_KEY_T)) app.view.turntable = !app.view.turntable;
+            if (ImGui::IsKeyPressed(GLFW_KEY_SPACE)) app.state.setPlaying(!app.state.playing());
+            if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) app.state.stepBy(-1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) app.state.stepBy(1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_UP)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 0) + 1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 1) - 1);
+            if (ImGui::IsKeyPressed(GLFW_KEY_N)) app.state.newSpecimen();
+            if (ImGui::IsKeyPressed(GLFW_KEY_P)) {
+                const auto& s = kScreenshotSizes[app.view.screenshotSize];
+                app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);
+            }
+        }
+        if (ImGui::IsKeyPressed(GLFW_KEY_F1)) app.showHelp = !app.showHelp;
+        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
+            if (app.state.path().empty()) app.saveAsPopup = true;
+            else if (std::string e; !app.state.save(e)) app.say(e);
+            else app.say("saved " + app.state.path().string());
+        }
+        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) app.openPopup = true;
+        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) app.quitRequested = true;
+        if (app.quitRequested) {
+            app.quitRequested = false;
+            if (app.state.dirty()) app.quitPopup = true;
+            else app.quitConfirmed = true;
+        }
+        if (app.quitConfirmed) glfwSetWindowShouldClose(window, GLFW_TRUE);
+
+        // The 3D view, redrawn only when something changed (a software rasteriser may take
+        // longer than a frame on a big plant; the panel stays responsive either way).
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window, &fw, &fh);
+        ImGui::Render();
+        const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
+        if (app.state.plant() && fw > 0 && fh > 0) {
+            auto t0 = std::chrono::steady_clock::now();
+            render::RenderOptions o = app.view.render;
+            o.quality = app.interacting || app.state.playing() || app.view.turntable ? render::Quality::Interactive
+                                                                                     : render::Quality::Still;
+            // The panel covers the left part; the view is drawn beside it.
+            app.renderer.draw(app.camera, vw, vh, o, 0, app.panelWidth, 0);
+            app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            app.needsRedraw = false;
+            ++framesWithPlant;
+        } else {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, fw, fh);
+            glClearColor(0.9f, 0.9f, 0.88f, 1);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fw, fh);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty()) {
+            // The whole window as the user sees it: panel and plant.
+            glFinish();
+            Image img;
+            img.width = fw;
+            img.height = fh;
+            img.rgba = app.renderer.readPixels(fw, fh, 0);
+            std::string e;
+            if (!writePng(*screenshot, img, e)) std::cerr << *screenshot << ": " << e << "\n";
+            screenshotDone = true;
+            app.quitConfirmed = true;
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+        }
+        glfwSwapBuffers(window);
+        if (!script.empty() && framesWithPlant > 0 && !script.step(app)) {
+            app.quitConfirmed = true;
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+        }
+        app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+        app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
+    }
+    app.state.autosave(true);
+    app.state.markCleanExit();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return 0;
+}
+
+}  // namespace sprout::cli

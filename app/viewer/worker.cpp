@@ -1,0 +1,126 @@
+#include "app/viewer/worker.hpp"
+
+#include <chrono>
+
+namespace sprout::viewer {
+namespace {
+double millisSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+Worker::Worker() : m_thread([this] { run(); }) {}
+
+Worker::~Worker() {
+    m_quit = true;
+    m_cancel = true;
+    m_wake.notify_all();
+    m_thread.join();
+}
+
+void Worker::post(Request request) {
+    std::lock_guard lock(m_mutex);
+    m_latestPosted = request.generation;
+    m_pending = std::move(request);
+    m_cancel = true;  // whatever runs now is stale
+    m_wake.notify_all();
+}
+
+void Worker::cancel() {
+    std::lock_guard lock(m_mutex);
+    m_pending.reset();
+    m_cancel = true;
+}
+
+std::shared_ptr<const Result> Worker::take() {
+    std::lock_guard lock(m_mutex);
+    return std::exchange(m_result, nullptr);
+}
+
+std::shared_ptr<const Result> Worker::waitForResult(std::uint64_t generation) {
+    std::unique_lock lock(m_mutex);
+    m_done.wait(lock, [&] { return m_result && m_result->generation >= generation; });
+    return std::exchange(m_result, nullptr);
+}
+
+void Worker::run() {
+    for (;;) {
+        Request r;
+        {
+            std::unique_lock lock(m_mutex);
+            m_wake.wait(lock, [&] { return m_quit || m_pending; });
+            if (m_quit) return;
+            r = std::move(*m_pending);
+            m_pending.reset();
+            m_cancel = false;
+            m_busy = true;
+        }
+        std::shared_ptr<Result> result = process(r);
+        {
+            std::lock_guard lock(m_mutex);
+            m_busy = false;
+            // A cancelled result is still reported when nothing newer is waiting, so the
+            // window can say the work was dropped.
+            if (!m_pending || !result->cancelled) m_result = result;
+        }
+        m_done.notify_all();
+    }
+}
+
+std::shared_ptr<Result> Worker::process(const Request& r) {
+    auto out = std::make_shared<Result>();
+    out->generation = r.generation;
+    auto t0 = std::chrono::steady_clock::now();
+    if (r.text != m_cachedText || !m_cachedGrammar) {
+        ParseResult parsed = parse(r.text);
+        m_cachedText = r.text;
+        m_cachedGrammar = parsed.grammar;
+        m_cachedDiagnostics = std::move(parsed.diagnostics);
+        m_derivation.reset();
+    }
+    out->parseMs = millisSince(t0);
+    out->diagnostics = m_cachedDiagnostics;
+    out->grammar = m_cachedGrammar;
+    if (!out->grammar) return out;
+
+    const Grammar& g = *out->grammar;
+    out->seed = r.seed.value_or(g.settings.seed);
+    out->iterations = r.iterations.value_or(g.settings.iterations);
+    out->displayStep = r.displayStep < 0 ? out->iterations : std::min(r.displayStep, out->iterations);
+    if (!m_derivation || m_cachedSeed != out->seed) {
+        DeriveOptions opts;
+        opts.seed = out->seed;
+        opts.limits = limits;
+        opts.cancel = &m_cancel;
+        opts.progress = [this](int step, int, double fraction) {
+            m_progressStep = step;
+            m_progress = float(fraction);
+        };
+        m_derivation = std::make_unique<Derivation>(out->grammar, opts);
+        m_cachedSeed = out->seed;
+    }
+    t0 = std::chrono::steady_clock::now();
+    m_progress = 0;
+    DeriveOutcome outcome = m_derivation->deriveTo(out->displayStep);
+    out->deriveMs = millisSince(t0);
+    if (!outcome.ok()) {
+        out->cancelled = outcome.status == DeriveStatus::Cancelled;
+        out->message = outcome.message;
+        if (out->cancelled) m_derivation.reset();  // half-made: start again next time
+        return out;
+    }
+    auto string = m_derivation->step(out->displayStep);
+    out->modules = string->size();
+    if (m_cancel) {
+        out->cancelled = true;
+        return out;
+    }
+    t0 = std::chrono::steady_clock::now();
+    auto geometry = std::make_shared<Geometry>();
+    interpret(*string, g, {out->displayStep, out->seed, nullptr}, *geometry);
+    out->interpretMs = millisSince(t0);
+    out->geometry = std::move(geometry);
+    return out;
+}
+
+}  // namespace sprout::viewer

@@ -1,0 +1,86 @@
+#pragma once
+// The viewer's background worker: parses, derives and interprets on its own thread, so the
+// window never waits. Every request carries a generation; a newer request cancels the work
+// in progress, and results come back as immutable shared values.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/derive.hpp"
+#include "core/turtle.hpp"
+
+namespace sprout::viewer {
+
+struct Request {
+    std::string text;
+    std::optional<int> iterations;        // default: the grammar's n
+    int displayStep = -1;                 // the step to draw; -1: the last one
+    std::optional<std::uint64_t> seed;    // default: the grammar's seed
+    std::uint64_t generation = 0;
+};
+
+struct Result {
+    std::uint64_t generation = 0;
+    std::shared_ptr<const Grammar> grammar;  // null when the text has errors
+    std::vector<Diagnostic> diagnostics;     // errors and warnings
+    std::string message;                     // a refused or failed derivation
+    bool cancelled = false;
+    int iterations = 0, displayStep = 0;
+    std::uint64_t seed = 0;
+    std::shared_ptr<const Geometry> geometry;  // null unless the plant was made
+    std::uint64_t modules = 0;
+    double parseMs = 0, deriveMs = 0, interpretMs = 0;
+    bool ok() const { return geometry != nullptr; }
+};
+
+class Worker {
+public:
+    Worker();
+    ~Worker();
+    Worker(const Worker&) = delete;
+    Worker& operator=(const Worker&) = delete;
+
+    // Replaces any pending request and cancels the one in progress. Never blocks.
+    void post(Request request);
+    // The newest finished result not yet taken, if any. Never blocks.
+    std::shared_ptr<const Result> take();
+    // For a progress bar: busy, and the fraction of the current step.
+    bool busy() const { return m_busy.load(); }
+    float progress() const { return m_progress.load(); }
+    int progressStep() const { return m_progressStep.load(); }
+    void cancel();
+    // Blocks until the worker is idle and the result is available (tests, screenshots).
+    std::shared_ptr<const Result> waitForResult(std::uint64_t generation);
+
+    DeriveLimits limits;  // set before posting
+
+private:
+    void run();
+    std::shared_ptr<Result> process(const Request& r);
+
+    std::thread m_thread;
+    std::mutex m_mutex;
+    std::condition_variable m_wake, m_done;
+    std::optional<Request> m_pending;
+    std::shared_ptr<const Result> m_result;
+    std::atomic<bool> m_cancel{false}, m_busy{false}, m_quit{false};
+    std::atomic<float> m_progress{0};
+    std::atomic<int> m_progressStep{0};
+    std::uint64_t m_latestPosted = 0;
+
+    // Derivation cache: re-deriving the same text and seed with another n or display step
+    // reuses the steps already made (stepping through iterations costs nothing extra).
+    std::string m_cachedText;
+    std::uint64_t m_cachedSeed = 0;
+    std::shared_ptr<const Grammar> m_cachedGrammar;
+    std::vector<Diagnostic> m_cachedDiagnostics;
+    std::unique_ptr<Derivation> m_derivation;
+};
+
+}  // namespace sprout::viewer
