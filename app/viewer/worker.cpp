@@ -9,7 +9,7 @@ double millisSince(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-Worker::Worker() : m_thread([this] { run(); }) {}
+Worker::Worker() { m_thread = std::thread([this] { run(); }); }
 
 Worker::~Worker() {
     m_quit = true;

@@ -64,7 +64,6 @@ private:
     void run();
     std::shared_ptr<Result> process(const Request& r);
 
-    std::thread m_thread;
     std::mutex m_mutex;
     std::condition_variable m_wake, m_done;
     std::optional<Request> m_pending;
@@ -81,6 +80,8 @@ private:
     std::shared_ptr<const Grammar> m_cachedGrammar;
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;
+    // Last: the thread starts once every member it uses exists.
+    std::thread m_thread;
 };
 
 }  // namespace sprout::viewer

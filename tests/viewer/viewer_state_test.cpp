@@ -1,0 +1,195 @@
+// The viewer's logic without a window: edits become requests, results come back from the
+// worker, stale work is cancelled, sliders write into the text, files and autosave.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include <unistd.h>
+
+#include "app/viewer/text_edit.hpp"
+#include "app/viewer/viewer_state.hpp"
+
+namespace sprout::viewer {
+namespace {
+namespace fs = std::filesystem;
+
+const char* kPlant = "n: 3\nangle: 25\naxiom: F\nF -> F[+F]F[-F]F\n";
+
+fs::path tempDir(const std::string& name) {
+    fs::path p = fs::path(testing::TempDir()) / ("sprout_viewer_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+}
+
+TEST(TextEdit, SliderValuesGoBackIntoTheText) {
+    EXPECT_EQ(setDirective(kPlant, "angle", "30"), "n: 3\nangle: 30\naxiom: F\nF -> F[+F]F[-F]F\n");
+    EXPECT_EQ(setDirective("angle: 22 ~ 4\naxiom: F\n", "angle", "30"), "angle: 30 ~ 4\naxiom: F\n");  // jitter kept
+    EXPECT_EQ(setDirective("axiom: F\n", "step", "2"), "step: 2\naxiom: F\n");  // inserted before the axiom
+    EXPECT_EQ(setDirective("n: 3\r\naxiom: F\r\n", "n", "4"), "n: 4\r\naxiom: F\r\n");
+    EXPECT_EQ(setDirective("F -> F\naxiom: F\n", "F", "2"), "F -> F\nF: 2\naxiom: F\n");  // a rule is not a setting
+    EXPECT_EQ(setDefine("define: r = 0.5\n#define k 2\naxiom: A(r)\n", "r", "0.75"), "define: r = 0.75\n#define k 2\naxiom: A(r)\n");
+    EXPECT_EQ(setDefine("define: r = 0.5\n#define k 2\naxiom: A(r)\n", "k", "3"), "define: r = 0.5\n#define k 3\naxiom: A(r)\n");
+    EXPECT_EQ(setDefine("define: rr = 1\n", "r", "3"), "define: rr = 1\n");
+    EXPECT_EQ(formatValue(30), "30");
+    EXPECT_EQ(formatValue(22.5), "22.5");
+    EXPECT_EQ(formatValue(0.123456), "0.123");
+    EXPECT_EQ(directiveValue(kPlant, "angle"), "25");
+}
+
+TEST(ViewerState, EditBecomesAPlant) {
+    ViewerState s(tempDir("edit"));
+    s.openText(kPlant);
+    s.waitForPlant();
+    ASSERT_TRUE(s.plant());
+    EXPECT_EQ(s.plant()->iterations, 3);
+    EXPECT_EQ(s.plant()->geometry->cylinders.size(), 125u);
+    s.setText(std::string(kPlant) + "F -> FF\n");  // a warning, still a plant
+    s.waitForPlant();
+    EXPECT_FALSE(s.latest()->diagnostics.empty());
+    EXPECT_TRUE(s.dirty());
+}
+
+TEST(ViewerState, ErrorsKeepTheLastGoodPlant) {
+    ViewerState s(tempDir("errors"));
+    s.openText(kPlant);
+    s.waitForPlant();
+    auto good = s.plant();
+    s.setText("n: 3\naxiom: F\nF -> F(sine(1))\n");
+    s.waitForPlant();
+    EXPECT_EQ(s.plant(), good);  // still on screen
+    ASSERT_FALSE(s.latest()->grammar);
+    ASSERT_EQ(s.latest()->diagnostics.size(), 1u);
+    EXPECT_EQ(s.latest()->diagnostics[0].line, 3);
+    EXPECT_EQ(s.latest()->diagnostics[0].col, 8);
+}
+
+TEST(ViewerState, SlidersRoundTripThroughTheText) {
+    ViewerState s(tempDir("sliders"));
+    s.openText("define: r = 0.5\nn: 2\nangle: 25\naxiom: A(1)\nA(x) -> F(x)[+A(x*r)][-A(x*r)]\n");
+    s.waitForPlant();
+    s.setDirectiveValue("angle", 40);
+    s.setDefineValue("r", 0.7);
+    s.setIterations(4);
+    s.waitForPlant();
+    EXPECT_EQ(s.text(), "define: r = 0.7\nn: 4\nangle: 40\naxiom: A(1)\nA(x) -> F(x)[+A(x*r)][-A(x*r)]\n");
+    ASSERT_TRUE(s.plant());
+    EXPECT_DOUBLE_EQ(s.plant()->grammar->settings.angle.mean, 40);
+    EXPECT_DOUBLE_EQ(s.plant()->grammar->defines.at("r"), 0.7);
+    EXPECT_EQ(s.plant()->iterations, 4);
+}
+
+TEST(ViewerState, NewSpecimenChangesTheSeedInTheText) {
+    ViewerState s(tempDir("seed"));
+    s.openText("seed: 1\nn: 3\naxiom: F\nF -> F[+F] : 0.5\nF -> F[-F] : 0.5\n");
+    s.waitForPlant();
+    auto first = s.plant();
+    s.newSpecimen();
+    s.waitForPlant();
+    EXPECT_NE(s.plant()->seed, first->seed);
+    EXPECT_NE(directiveValue(s.text(), "seed"), "1");
+}
+
+TEST(ViewerState, SteppingThroughIterations) {
+    ViewerState s(tempDir("steps"));
+    s.openText(kPlant);
+    s.waitForPlant();
+    s.setDisplayStep(1);
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->displayStep, 1);
+    EXPECT_EQ(s.plant()->geometry->cylinders.size(), 5u);
+    s.stepBy(1);
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->geometry->cylinders.size(), 25u);
+    s.setDisplayStep(99);  // clamped to n
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->displayStep, 3);
+    // Playing from the end restarts at step 0 and advances one step per period.
+    s.stepsPerSecond = 100;
+    s.setPlaying(true);
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->displayStep, 0);
+    s.tick(0.02);
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->displayStep, 1);
+}
+
+TEST(ViewerState, StaleWorkIsCancelled) {
+    ViewerState s(tempDir("cancel"));
+    // A 33 M-module derivation, then an edit: the new plant arrives long before the big one
+    // could have finished, and the big one is dropped.
+    s.openText("n: 22\naxiom: A(1)\nA(x) -> F(x)[+A(x*0.7)][-A(x*0.7)]\n");
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    auto t0 = std::chrono::steady_clock::now();
+    s.setText(kPlant);
+    s.waitForPlant();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_TRUE(s.plant());
+    EXPECT_EQ(s.plant()->iterations, 3);
+    EXPECT_LT(ms, 2000);  // generous: only says the big derivation did not run to its end
+}
+
+TEST(ViewerState, SizeCapIsAMessageNotACrash) {
+    ViewerState s(tempDir("cap"));
+    s.openText("n: 40\naxiom: F\nF -> FFFFFFFFFF\n");
+    s.waitForPlant();
+    EXPECT_FALSE(s.plant());
+    EXPECT_NE(s.latest()->message.find("would produce"), std::string::npos) << s.latest()->message;
+}
+
+TEST(ViewerState, SaveOpenAndReloadWhenChangedOnDisk) {
+    fs::path dir = tempDir("files");
+    ViewerState s(dir / "state");
+    s.openText(kPlant);
+    std::string error;
+    ASSERT_TRUE(s.saveAs(dir / "plant.lsys", error)) << error;
+    EXPECT_FALSE(s.dirty());
+    // Another editor changes the file: the viewer follows.
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    { std::ofstream(dir / "plant.lsys") << "n: 2\naxiom: F\nF -> FF\n"; }
+    fs::last_write_time(dir / "plant.lsys", fs::file_time_type::clock::now() + std::chrono::seconds(2));
+    EXPECT_TRUE(s.reloadIfChangedOnDisk());
+    EXPECT_EQ(s.text(), "n: 2\naxiom: F\nF -> FF\n");
+    // A failed save keeps the old file and says why.
+    EXPECT_FALSE(s.saveAs(dir / "no" / "such" / "dir.lsys", error));
+    EXPECT_NE(error.find("could not save"), std::string::npos);
+    ViewerState t(dir / "state2");
+    ASSERT_TRUE(t.open(dir / "plant.lsys", error));
+    EXPECT_EQ(t.text(), "n: 2\naxiom: F\nF -> FF\n");
+    EXPECT_FALSE(t.open(dir / "missing.lsys", error));
+}
+
+TEST(ViewerState, AutosaveIsOfferedBackAfterACrash) {
+    fs::path dir = tempDir("autosave");
+    {
+        ViewerState s(dir);
+        s.openText(kPlant);
+        s.setText("n: 4\naxiom: F\nF -> F+F\n");  // an edit, never saved
+        s.autosave(true);
+        // No markCleanExit(): the process "crashed".
+    }
+    ViewerState again(dir);
+    again.openText(kPlant);
+    auto text = again.recoverable();
+    ASSERT_TRUE(text);
+    EXPECT_EQ(*text, "n: 4\naxiom: F\nF -> F+F\n");
+    again.markCleanExit();
+    ViewerState clean(dir);
+    clean.openText(kPlant);
+    EXPECT_FALSE(clean.recoverable());  // a clean exit leaves nothing to recover
+}
+
+TEST(ViewerState, AtomicSaveReplacesWholeFiles) {
+    fs::path dir = tempDir("atomic");
+    std::string error;
+    ASSERT_TRUE(saveTextAtomically(dir / "a.lsys", "first", error));
+    ASSERT_TRUE(saveTextAtomically(dir / "a.lsys", "second", error));
+    std::ifstream in(dir / "a.lsys");
+    std::string got((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_EQ(got, "second");
+    EXPECT_FALSE(fs::exists(dir / "a.lsys.saving"));
+}
+
+}  // namespace
+}  // namespace sprout::viewer

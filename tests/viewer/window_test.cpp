@@ -1,0 +1,88 @@
+// The real window under Xvfb: `sprout PRESET --screenshot` must show the panel and the
+// plant; a scripted edit must change the plant. Skipped where xvfb-run is missing.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+#include <array>
+
+#include "app/image.hpp"
+
+namespace sprout {
+namespace {
+namespace fs = std::filesystem;
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+int runUnderXvfb(const std::string& args) {
+    fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
+    fs::create_directories(home);
+    std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" +
+                      home.string() + "/cache timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
+                      args + " >/dev/null 2>&1";
+    return std::system(cmd.c_str());
+}
+
+Image load(const std::string& path) {
+    Image img;
+    std::string error;
+    EXPECT_TRUE(readPng(path, img, error)) << path << ": " << error;
+    return img;
+}
+
+// Mean colour of a rectangle.
+std::array<double, 3> mean(const Image& img, int x0, int y0, int x1, int y1) {
+    std::array<double, 3> m{0, 0, 0};
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            for (int c = 0; c < 3; ++c) m[size_t(c)] += img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
+    for (auto& v : m) v /= std::max(n, 1);
+    return m;
+}
+
+TEST(Window, ScreenshotShowsThePanelAndThePlant) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string out = testing::TempDir() + "sprout_window.png";
+    std::remove(out.c_str());
+    ASSERT_EQ(runUnderXvfb("bush_3d --size 1200x800 --screenshot " + out), 0);
+    Image img = load(out);
+    ASSERT_EQ(img.width, 1200);
+    ASSERT_EQ(img.height, 800);
+    // The panel: ImGui's dark theme on the left.
+    auto panel = mean(img, 20, 300, 400, 600);
+    EXPECT_LT(panel[0] + panel[1] + panel[2], 3 * 90.0);
+    // The plant: green pixels in the view on the right (leaves), over a light sky.
+    int green = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 440; x < img.width; ++x) {
+            const auto* p = &img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4];
+            green += p[1] > p[0] + 15 && p[1] > p[2] + 15;
+        }
+    EXPECT_GT(green, 20000);
+}
+
+TEST(Window, ScriptedEditChangesThePlant) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string dir = testing::TempDir();
+    const std::string before = dir + "sprout_before.png", after = dir + "sprout_after.png", script = dir + "sprout_script.txt";
+    std::ofstream(script) << "wait\nscreenshot " << before << " 400x300\n"
+                          << "text n: 4\\nangle: 90\\naxiom: F\\nF -> F+F-F-F+F\\n\nwait\n"
+                          << "set angle 60\nwait\nscreenshot " << after << " 400x300\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --script " + script), 0);
+    Image a = load(before), b = load(after);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+        differ += std::abs(int(a.rgba[i]) - int(b.rgba[i])) + std::abs(int(a.rgba[i + 1]) - int(b.rgba[i + 1])) > 40;
+    EXPECT_GT(differ, 400u * 300u / 20);
+    // The edit is a Koch curve now: drawn as dark ink, not green stems.
+    int ink = 0;
+    for (std::size_t i = 0; i < b.rgba.size(); i += 4) ink += b.rgba[i] < 90 && b.rgba[i + 1] < 110 && b.rgba[i + 2] < 90;
+    EXPECT_GT(ink, 200);
+}
+
+}  // namespace
+}  // namespace sprout
