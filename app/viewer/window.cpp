@@ -199,9 +199,19 @@ int runViewer(int argc, char** argv) {
         last = now;
         auto frameStart = std::chrono::steady_clock::now();
 
+        auto previous = app.state.plant();
         if (app.state.update()) {
             auto t0 = std::chrono::steady_clock::now();
-            app.renderer.upload(*app.state.plant()->geometry);
+            const Geometry& g = *app.state.plant()->geometry;
+            // Small edits keep the view; a plant of another kind or size is framed anew.
+            if (previous && previous->geometry) {
+                const Geometry& p = *previous->geometry;
+                float a = glm::length(p.bounds.size()), b = glm::length(g.bounds.size());
+                float moved = glm::length(p.bounds.centre() - g.bounds.centre());
+                if (p.planarCurve != g.planarCurve || b > 2 * a || a > 2 * b || moved > 0.5f * std::max(a, b))
+                    app.frameOnNextPlant = true;
+            }
+            app.renderer.upload(g);
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (app.frameOnNextPlant) {
                 app.frame();
