@@ -36,7 +36,13 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
       m_seed(m_options.seed.value_or(m_grammar->settings.seed)) {
     m_steps.push_back(std::make_shared<const ModuleString>(m_grammar->axiom));
     m_stats.push_back({0, m_grammar->axiom.size(), m_grammar->axiom.params.size(), 0.0});
-    if (D0LExpander::applicable(*m_grammar)) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
+    if (m_options.trackAges) {
+        auto a = std::make_shared<PodBuffer<std::uint16_t>>();
+        a->resizeUninitialized(m_grammar->axiom.size());
+        std::fill(a->data(), a->data() + a->size(), std::uint16_t(0));
+        m_ages.push_back(std::move(a));
+    }
+    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
 }
 
@@ -48,6 +54,9 @@ DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64
     std::uint64_t kept = 0;
     for (const auto& s : m_steps)
         if (s) kept += s->bytes();
+    for (const auto& a : m_ages)
+        if (a) kept += a->size() * sizeof(std::uint16_t);
+    if (m_options.trackAges) bytes += modules * sizeof(std::uint16_t);
     o.step = step;
     o.predictedModules = modules;
     o.predictedBytes = bytes;
@@ -116,8 +125,15 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
         Rng rng = Rng::forStream(m_seed, std::uint64_t(k));
         std::function<void(double)> progress;
         if (m_options.progress) progress = [&](double f) { m_options.progress(k, n, f); };
-        if (!m_rewriter->rewrite(in, *out, rng, m_options.cancel, progress))
+        std::shared_ptr<PodBuffer<std::uint16_t>> ages;
+        StepRewriter::Ages ageArgs{};
+        if (m_options.trackAges) {
+            ages = std::make_shared<PodBuffer<std::uint16_t>>();
+            ageArgs = {m_ages[size_t(k - 1)]->data(), ages.get(), std::uint16_t(std::min(k, 65535))};
+        }
+        if (!m_rewriter->rewrite(in, *out, rng, m_options.cancel, progress, ages ? &ageArgs : nullptr))
             return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
+        if (ages) m_ages.push_back(std::move(ages));
         record(k, *out, millisSince(t0));
         m_steps.push_back(std::move(out));
         m_reached = k;
@@ -137,6 +153,11 @@ std::shared_ptr<const ModuleString> Derivation::step(int k) {
         m_steps[size_t(k)] = std::move(out);
     }
     return m_steps[size_t(k)];
+}
+
+std::shared_ptr<const PodBuffer<std::uint16_t>> Derivation::ages(int k) const {
+    if (k < 0 || size_t(k) >= m_ages.size()) return nullptr;
+    return m_ages[size_t(k)];
 }
 
 DeriveResult derive(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options) {

@@ -32,6 +32,9 @@ struct DeriveOptions {
     // step being derived (1-based), total steps, fraction of that step done
     std::function<void(int step, int total, double fraction)> progress;
     std::optional<std::uint64_t> seed;  // overrides the grammar's `seed:`
+    // Also record the step that created each module (2 more bytes per module), for growth
+    // animation; uses the step-by-step engine for every grammar.
+    bool trackAges = false;
 };
 
 struct StepStats {
@@ -63,6 +66,8 @@ public:
     DeriveOutcome deriveTo(int n);
     // Step k (0 = axiom), for k <= the last step reached; D0L steps are made on demand.
     std::shared_ptr<const ModuleString> step(int k);
+    // The creation step of each module of step k (with DeriveOptions::trackAges), else null.
+    std::shared_ptr<const PodBuffer<std::uint16_t>> ages(int k) const;
     int stepsDerived() const { return m_reached; }
     // Statistics for the steps produced so far (D0L: the ones made).
     const std::vector<StepStats>& stats() const { return m_stats; }
@@ -80,6 +85,7 @@ private:
     DeriveOptions m_options;
     std::uint64_t m_seed;
     std::vector<std::shared_ptr<const ModuleString>> m_steps;  // null where not made (D0L)
+    std::vector<std::shared_ptr<const PodBuffer<std::uint16_t>>> m_ages;  // trackAges only
     std::vector<StepStats> m_stats;
     int m_reached = 0;
     std::unique_ptr<class D0LExpander> m_d0l;

@@ -33,6 +33,12 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     }
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
+    for (const Production& p : rules.productions) {
+        int keep = -1;
+        for (size_t j = 0; j < p.successor.symbols.size() && keep < 0; ++j)
+            if (p.successor.symbols[j] == p.pred.symbol) keep = int(j);
+        m_inherit.push_back(keep);
+    }
     m_always.assign(A, nullptr);
     for (size_t s = 0; s < A; ++s) {
         if (!m_hasRules[s]) continue;
@@ -210,7 +216,8 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
 }
 
 bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
-                           const std::atomic<bool>* cancel, const std::function<void(double)>& progress) {
+                           const std::atomic<bool>* cancel, const std::function<void(double)>& progress,
+                           const Ages* ages) {
     prepare(in);
     const size_t N = in.size();
     std::uint64_t maxModules, maxParams;
@@ -218,6 +225,11 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     if (maxModules > (64u << 20) || maxParams > (16u << 20)) bound(in, maxModules, maxParams, true);  // reserve less when big
     out.symbols.resizeUninitialized(maxModules);
     out.params.resizeUninitialized(maxParams);
+    std::uint16_t* da = nullptr;
+    if (ages) {
+        ages->out->resizeUninitialized(maxModules);
+        da = ages->out->data();
+    }
     SymbolId* ds = out.symbols.data();
     double* dp = out.params.data();
     const SymbolId* sym = in.symbols.data();
@@ -241,6 +253,10 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
             }
             std::memcpy(ds, sym + i, (j - i) * sizeof(SymbolId));
             ds += j - i;
+            if (da) {
+                std::memcpy(da, ages->in + i, (j - i) * sizeof(std::uint16_t));
+                da += j - i;
+            }
             if (pc) std::memcpy(dp, par + pp, pc * sizeof(double));
             dp += pc;
             pp += pc;
@@ -260,25 +276,33 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
             const size_t n = succ.symbols.size();
             if (n) std::memcpy(ds, succ.symbols.data(), n * sizeof(SymbolId));
             ds += n;
+            if (da) {
+                const int keep = m_inherit[size_t(p - m_rules.productions.data())];
+                for (size_t j = 0; j < n; ++j) da[j] = int(j) == keep ? ages->in[i] : ages->step;
+                da += n;
+            }
             for (const Expr& e : succ.args) *dp++ = e.eval(m_slots.data(), rng);
         } else {
             *ds++ = sym[i];
             for (unsigned k = 0; k < a; ++k) *dp++ = par[pp + k];
+            if (da) *da++ = ages->in[i];
         }
         pp += a;
         ++i;
     }
     out.symbols.resizeUninitialized(size_t(ds - out.symbols.data()));
     out.params.resizeUninitialized(size_t(dp - out.params.data()));
-    if (m_cut) applyCut(out, m_g.alphabet);
+    if (da) ages->out->resizeUninitialized(size_t(da - ages->out->data()));
+    if (m_cut) applyCut(out, m_g.alphabet, ages ? ages->out : nullptr);
     if (out.symbols.capacity() > out.symbols.size() + out.symbols.size() / 4 + 1024) out.symbols.shrinkToFit();
     if (out.params.capacity() > out.params.size() + out.params.size() / 4 + 1024) out.params.shrinkToFit();
     return true;
 }
 
-void applyCut(ModuleString& s, const Alphabet& alphabet) {
+void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages) {
     SymbolId* sym = s.symbols.data();
     double* par = s.params.data();
+    std::uint16_t* age = ages ? ages->data() : nullptr;
     const size_t N = s.size();
     size_t w = 0, pr = 0, pw = 0;
     for (size_t i = 0; i < N;) {
@@ -294,12 +318,14 @@ void applyCut(ModuleString& s, const Alphabet& alphabet) {
             continue;
         }
         unsigned a = alphabet[id].arity;
+        if (age) age[w] = age[i];
         sym[w++] = id;
         for (unsigned k = 0; k < a; ++k) par[pw++] = par[pr++];
         ++i;
     }
     s.symbols.resizeUninitialized(w);
     s.params.resizeUninitialized(pw);
+    if (ages) ages->resizeUninitialized(w);
 }
 
 }  // namespace sprout

@@ -20,8 +20,16 @@ public:
     // successor times the length (no pass).
     void bound(const ModuleString& in, std::uint64_t& modules, std::uint64_t& params, bool tight) const;
     // Rewrites `in` into `out` (sized by bound()). Returns false when cancelled.
+    // With `ages`, also writes the step that created each output module: a module no rule
+    // rewrote keeps its age, and so does the first module of a successor that repeats the
+    // predecessor (F -> FF: the old F stays, the new one grows); all others are `step`.
+    struct Ages {
+        const std::uint16_t* in;
+        PodBuffer<std::uint16_t>* out;
+        std::uint16_t step;
+    };
     bool rewrite(const ModuleString& in, ModuleString& out, Rng& rng, const std::atomic<bool>* cancel,
-                 const std::function<void(double)>& progress);
+                 const std::function<void(double)>& progress, const Ages* ages = nullptr);
 
 private:
     const Production* select(size_t i, Rng& rng);
@@ -39,6 +47,7 @@ private:
     // The rule that always applies to a symbol (first in file order, without context,
     // condition or probability), so the common case skips matching altogether.
     std::vector<const Production*> m_always;
+    std::vector<int> m_inherit;  // per production: the successor index that keeps the age, or -1
     std::vector<std::uint32_t> m_maxLen;     // per symbol: most modules one rewrite can emit
     std::vector<std::uint32_t> m_maxParams;
     std::uint32_t m_maxLenAll = 1, m_maxParamsAll = 0;
@@ -57,6 +66,6 @@ private:
 
 // Removes each cut symbol '%' together with the rest of its branch (ABOP section 1.10.3,
 // used for shedding): everything up to, not including, the ']' that closes the branch.
-void applyCut(ModuleString& s, const Alphabet& alphabet);
+void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages = nullptr);
 
 }  // namespace sprout

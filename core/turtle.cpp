@@ -167,6 +167,10 @@ private:
             rotate(a, b, m_cos, m_sin * sign);
         }
     }
+    // The length factor of module i while its creation step is growing.
+    float growth(size_t i) const {
+        return m_opt.ages && m_opt.growStep >= 0 && m_opt.ages[i] == m_opt.growStep ? m_opt.growFraction : 1.0f;
+    }
     // Seeded normal jitter truncated at 3 sigma.
     float jitter(float sigma) {
         for (;;) {
@@ -184,6 +188,7 @@ private:
             case Act::Draw:
             case Act::DrawNoVertex: {
                 float len = p ? float(*p) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
+                len *= growth(i);
                 if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
                     t.pos += t.H * len;
                     if (act == Act::Draw) vertex(t);
@@ -194,7 +199,7 @@ private:
             }
             case Act::Move:
             case Act::MoveNoVertex: {
-                float len = p ? float(*p) : t.length;
+                float len = (p ? float(*p) : t.length) * growth(i);
                 t.pos += t.H * len;
                 t.lastSegment = -1;
                 addBound(t.pos);
@@ -271,7 +276,7 @@ private:
                 break;
             case Act::Leaf:
             case Act::Petal:
-            case Act::Sphere: surface(t, act, p); break;
+            case Act::Sphere: surface(t, act, p, growth(i)); break;
             default: break;
         }
     }
@@ -347,7 +352,7 @@ private:
         triangulatePolygon(pts, base, m.indices);
     }
 
-    void surface(const State& t, Act act, const double* p) {
+    void surface(const State& t, Act act, const double* p, float grow) {
         SurfaceInstance s;
         s.position = toGlm(t.pos);
         s.heading = toGlm(t.H);
@@ -361,6 +366,7 @@ private:
             s.size = p ? float(*p) : t.length;
             s.colour = t.explicitColour ? colour(t.colour) : act == Act::Leaf ? colour(kLeafColour) : colour(kPetalColour);
         }
+        s.size *= grow;
         if (!(s.size > 0)) return;
         m_out.surfaces.push_back(s);
         addBound(t.pos);

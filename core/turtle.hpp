@@ -18,6 +18,11 @@ struct TurtleOptions {
     int derivationSteps = 0;            // n of the drawn string, for step_scale
     std::uint64_t seed = 1;             // jitter
     const std::uint16_t* ages = nullptr;  // per module: the step that created it (optional)
+    // Smooth growth (ABOP's developmental animation): modules created at `growStep` are drawn
+    // at `growFraction` of their length and size, so they grow from nothing while that step
+    // plays instead of popping in.
+    int growStep = -1;
+    float growFraction = 1.0f;
 };
 
 // Interprets `s` (after the grammar's interpretation rules, if any) into `out`, reusing its

@@ -2,6 +2,7 @@
 // The viewer window's state that lives next to the GL context: renderer, camera, view
 // settings, the cached 3D image, status messages. Split by feature: window.cpp (loop,
 // input, screenshots), panel.cpp (the ImGui panel), script.cpp (scripted actions).
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <string>
@@ -75,7 +76,8 @@ public:
 
 private:
     std::deque<std::string> m_lines;
-    bool m_waiting = false;
+    std::uint64_t m_waitFor = 0;  // the generation the last action posted
+    double m_sleepUntil = 0;
 };
 
 }  // namespace sprout::viewer

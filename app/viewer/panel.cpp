@@ -110,6 +110,7 @@ void growthSection(App& app) {
     ImGui::SameLine();
     ImGui::Checkbox("loop", &app.state.loop);
     ImGui::SliderFloat("steps / s", &app.state.stepsPerSecond, 0.25f, 10, "%.2f");
+    ImGui::Checkbox("smooth growth (new segments grow in)", &app.state.smoothGrowth);
 }
 
 void viewSection(App& app) {

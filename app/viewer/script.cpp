@@ -3,9 +3,13 @@
 //   text <grammar>        replace the text ("\n" for line breaks)
 //   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
 //   define <name> <value> a define, as its slider would
-//   step <k> | play | pause | frame | yaw <deg> | pitch <deg>
+//   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   quit
+#include "app/render/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -31,12 +35,23 @@ bool Script::step(App& app) {
         std::istringstream in(m_lines.front());
         std::string cmd;
         in >> cmd;
-        // Everything waits for the plant on screen to be the newest one.
-        if (app.state.worker().busy() || (app.state.latest() && app.state.latest()->generation < app.state.generation()) ||
-            (!app.state.latest() && app.state.generation() > 0))
-            return true;
+        // Every action waits until the result of the script's last edit is on screen (an
+        // animation may post newer requests meanwhile; those are not waited for).
+        if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
+        if (glfwGetTime() < m_sleepUntil) return true;
         m_lines.pop_front();
+        struct After {
+            Script& s;
+            App& a;
+            ~After() { s.m_waitFor = a.state.generation(); }
+        } after{*this, app};
         if (cmd == "wait") return true;  // one frame drawn after the result
+        if (cmd == "sleep") {  // wall-clock time, for animations
+            double seconds = 0;
+            in >> seconds;
+            m_sleepUntil = glfwGetTime() + seconds;
+            return true;
+        }
         if (cmd == "quit") return false;
         if (cmd == "text") {
             std::string rest;

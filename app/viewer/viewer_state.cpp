@@ -81,6 +81,8 @@ void ViewerState::post() {
     r.text = m_text;
     r.seed = m_seedOverride;
     r.displayStep = m_displayStep;
+    r.trackAges = m_playing && smoothGrowth;
+    r.growFraction = r.trackAges ? m_growFraction : 1.0f;
     r.generation = ++m_generation;
     m_worker.post(std::move(r));
 }
@@ -130,21 +132,39 @@ void ViewerState::stepBy(int delta) {
 void ViewerState::setPlaying(bool on) {
     m_playing = on;
     m_animClock = 0;
-    if (on && m_plant && (m_displayStep < 0 || m_displayStep >= m_plant->iterations)) setDisplayStep(0);
+    m_growFraction = on && smoothGrowth ? 0.0f : 1.0f;
+    if (on && m_plant && (m_displayStep < 0 || m_displayStep >= m_plant->iterations)) {
+        m_displayStep = -1;
+        setDisplayStep(0);
+    } else {
+        post();
+    }
 }
 
 void ViewerState::tick(double seconds) {
     if (!m_playing || !m_plant) return;
-    if (m_worker.busy()) return;  // wait for the step on screen before moving on
+    if (m_worker.busy()) return;  // wait for the frame on screen before moving on
     m_animClock += seconds;
     const double period = 1.0 / std::max(0.05f, stepsPerSecond);
-    if (m_animClock < period) return;
+    const int n = m_plant->iterations;
+    const int current = m_displayStep < 0 ? n : m_displayStep;
+    if (m_animClock < period) {
+        if (smoothGrowth) {  // the step's new segments grow in
+            m_growFraction = float(m_animClock / period);
+            post();
+        }
+        return;
+    }
     m_animClock = 0;
-    int n = m_plant->iterations;
-    int current = m_displayStep < 0 ? n : m_displayStep;
+    m_growFraction = smoothGrowth ? 0.0f : 1.0f;
     if (current >= n) {
-        if (loop) setDisplayStep(0);
-        else m_playing = false;
+        if (loop) {
+            setDisplayStep(0);
+        } else {
+            m_playing = false;
+            m_growFraction = 1.0f;
+            post();
+        }
     } else {
         setDisplayStep(current + 1);
     }

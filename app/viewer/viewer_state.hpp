@@ -43,6 +43,7 @@ public:
     void setPlaying(bool on);
     float stepsPerSecond = 2.0f;
     bool loop = true;
+    bool smoothGrowth = true;  // new segments grow from nothing while their step plays
     void tick(double seconds);  // advances the animation
 
     // --- results: call once per frame; true when a new plant arrived
@@ -82,6 +83,7 @@ private:
     int m_displayStep = -1;  // -1: follow n
     bool m_playing = false;
     double m_animClock = 0;
+    float m_growFraction = 1.0f;
     std::shared_ptr<const Result> m_plant, m_latest;
     std::filesystem::path m_path;
     std::filesystem::file_time_type m_fileTime{};

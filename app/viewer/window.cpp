@@ -204,7 +204,7 @@ int runViewer(int argc, char** argv) {
             auto t0 = std::chrono::steady_clock::now();
             const Geometry& g = *app.state.plant()->geometry;
             // Small edits keep the view; a plant of another kind or size is framed anew.
-            if (previous && previous->geometry) {
+            if (previous && previous->geometry && !app.state.playing()) {  // growth keeps the view
                 const Geometry& p = *previous->geometry;
                 float a = glm::length(p.bounds.size()), b = glm::length(g.bounds.size());
                 float moved = glm::length(p.bounds.centre() - g.bounds.centre());

@@ -87,9 +87,11 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     out->seed = r.seed.value_or(g.settings.seed);
     out->iterations = r.iterations.value_or(g.settings.iterations);
     out->displayStep = r.displayStep < 0 ? out->iterations : std::min(r.displayStep, out->iterations);
-    if (!m_derivation || m_cachedSeed != out->seed) {
+    if (!m_derivation || m_cachedSeed != out->seed || m_cachedAges != r.trackAges) {
         DeriveOptions opts;
         opts.seed = out->seed;
+        opts.trackAges = r.trackAges;
+        m_cachedAges = r.trackAges;
         opts.limits = limits;
         opts.cancel = &m_cancel;
         opts.progress = [this](int step, int, double fraction) {
@@ -117,7 +119,14 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     }
     t0 = std::chrono::steady_clock::now();
     auto geometry = std::make_shared<Geometry>();
-    interpret(*string, g, {out->displayStep, out->seed, nullptr}, *geometry);
+    auto ages = m_derivation->ages(out->displayStep);
+    TurtleOptions t{out->displayStep, out->seed, ages ? ages->data() : nullptr};
+    if (ages && r.growFraction < 1.0f) {
+        t.growStep = out->displayStep;
+        t.growFraction = std::max(0.0f, r.growFraction);
+        out->growFraction = t.growFraction;
+    }
+    interpret(*string, g, t, *geometry);
     out->interpretMs = millisSince(t0);
     out->geometry = std::move(geometry);
     return out;

@@ -22,6 +22,10 @@ struct Request {
     std::optional<int> iterations;        // default: the grammar's n
     int displayStep = -1;                 // the step to draw; -1: the last one
     std::optional<std::uint64_t> seed;    // default: the grammar's seed
+    // Growth animation: modules created at the displayed step are drawn at this fraction of
+    // their size (needs the derivation to record ages).
+    float growFraction = 1.0f;
+    bool trackAges = false;
     std::uint64_t generation = 0;
 };
 
@@ -32,6 +36,7 @@ struct Result {
     std::string message;                     // a refused or failed derivation
     bool cancelled = false;
     int iterations = 0, displayStep = 0;
+    float growFraction = 1.0f;
     std::uint64_t seed = 0;
     std::shared_ptr<const Geometry> geometry;  // null unless the plant was made
     std::uint64_t modules = 0;
@@ -77,6 +82,7 @@ private:
     // reuses the steps already made (stepping through iterations costs nothing extra).
     std::string m_cachedText;
     std::uint64_t m_cachedSeed = 0;
+    bool m_cachedAges = false;
     std::shared_ptr<const Grammar> m_cachedGrammar;
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;

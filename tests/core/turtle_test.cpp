@@ -207,3 +207,60 @@ TEST(Turtle, InterpretationRulesAreApplied) {
 
 }  // namespace
 }  // namespace sprout::test
+
+namespace sprout::test {
+namespace {
+
+std::vector<int> agesOf(const std::string& text, int n) {
+    DeriveOptions o;
+    o.trackAges = true;
+    Derivation d(grammarOf(text), o);
+    EXPECT_TRUE(d.deriveTo(n).ok());
+    auto a = d.ages(n);
+    EXPECT_TRUE(a);
+    EXPECT_EQ(a->size(), d.step(n)->size());
+    return {a->begin(), a->end()};
+}
+
+TEST(Ages, EachModuleKnowsTheStepThatCreatedIt) {
+    // F -> FF: the first F of the successor is the old F (it keeps its age), the second is new.
+    EXPECT_EQ(agesOf("axiom: F\nF -> FF\n", 1), (std::vector<int>{0, 1}));
+    EXPECT_EQ(agesOf("axiom: F\nF -> FF\n", 2), (std::vector<int>{0, 2, 1, 2}));
+    // Modules no rule rewrites keep their age; new structure is young.
+    // +A -> +F[-A] -> +F[-F[-A]]: the apex A stays the same module throughout.
+    EXPECT_EQ(agesOf("axiom: +A\nA -> F[-A]\n", 2), (std::vector<int>{0, 1, 1, 1, 2, 2, 2, 0, 2, 1}));
+    // The cut removes ages with their modules.
+    // F[A]B -> F[%]FB -> F[]FB
+    EXPECT_EQ(agesOf("axiom: F[A]B\nA -> %\nB -> FB\n", 1), (std::vector<int>{0, 0, 0, 1, 0}));
+}
+
+TEST(Ages, AgesDoNotChangeTheDerivedString) {
+    const std::string g = "axiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n";
+    DeriveOptions o;
+    o.trackAges = true;
+    Derivation tracked(grammarOf(g), o);
+    ASSERT_TRUE(tracked.deriveTo(5).ok());
+    EXPECT_EQ(toString(*tracked.step(5), grammarOf(g)->alphabet), expand(g, 5));
+}
+
+TEST(Ages, GrowingSegmentsStartShortAndTheStepIsRecorded) {
+    auto g = grammarOf("width: 0.1\naxiom: F\nF -> FF\n");
+    DeriveOptions o;
+    o.trackAges = true;
+    Derivation d(g, o);
+    ASSERT_TRUE(d.deriveTo(1).ok());
+    Geometry half, full;
+    TurtleOptions t{1, 1, d.ages(1)->data(), 1, 0.5f};
+    interpret(*d.step(1), *g, t, half);
+    ASSERT_EQ(half.cylinders.size(), 2u);
+    EXPECT_EQ(half.cylinders[0].step, 0);
+    EXPECT_EQ(half.cylinders[1].step, 1);
+    EXPECT_FLOAT_EQ(half.cylinders[1].end.y - half.cylinders[1].start.y, 0.5f);  // growing
+    EXPECT_FLOAT_EQ(half.bounds.max.y, 1.5f);
+    t.growFraction = 1;
+    interpret(*d.step(1), *g, t, full);
+    EXPECT_FLOAT_EQ(full.bounds.max.y, 2.0f);
+}
+
+}  // namespace
+}  // namespace sprout::test

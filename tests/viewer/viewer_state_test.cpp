@@ -193,3 +193,36 @@ TEST(ViewerState, AtomicSaveReplacesWholeFiles) {
 
 }  // namespace
 }  // namespace sprout::viewer
+
+namespace sprout::viewer {
+namespace {
+
+TEST(ViewerState, SmoothGrowthDrawsTheNewStepPartlyGrown) {
+    ViewerState s(tempDir("grow"));
+    s.openText("n: 3\nangle: 25\nwidth: 0.1\naxiom: F\nF -> F[+F]F[-F]F\n");
+    s.waitForPlant();
+    const float fullHeight = s.plant()->geometry->bounds.max.y;
+    s.stepsPerSecond = 1;
+    s.setPlaying(true);  // from the end: back to step 0, growing
+    s.waitForPlant();
+    s.tick(0.1);
+    s.waitForPlant();
+    s.tick(1.0);  // past the period: step 1, its new segments at length 0
+    s.waitForPlant();
+    EXPECT_EQ(s.plant()->displayStep, 1);
+    s.tick(0.5);  // half way through step 1
+    s.waitForPlant();
+    ASSERT_EQ(s.plant()->displayStep, 1);
+    EXPECT_NEAR(s.plant()->growFraction, 0.5f, 0.01f);
+    const auto& g = *s.plant()->geometry;
+    // F -> F[+F]F[-F]F: the old F keeps its length 1 (it is the first F of the successor),
+    // the two other trunk segments are new and half grown: 1 + 0.5 + 0.5.
+    EXPECT_NEAR(g.bounds.max.y, 2.0f, 1e-4);
+    EXPECT_LT(g.bounds.max.y, fullHeight);
+    int growing = 0;
+    for (const auto& c : g.cylinders) growing += c.step == 1;
+    EXPECT_EQ(growing, 4);
+}
+
+}  // namespace
+}  // namespace sprout::viewer
