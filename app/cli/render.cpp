@@ -87,8 +87,9 @@ int runRender(int argc, char** argv) {
                     "render %.1f ms\n",
                     out.c_str(), shot.stats.cylinders,
                     shot.stats.curve ? "2D curve"
-                                     : ("fine " + std::to_string(shot.stats.levels[0]) + ", medium " +
-                                        std::to_string(shot.stats.levels[1]) + ", coarse " + std::to_string(shot.stats.levels[2]))
+                                     : ("fine " + std::to_string(shot.stats.levels[0]) + ", coarse " +
+                                        std::to_string(shot.stats.levels[1]) + ", prisms " + std::to_string(shot.stats.levels[2]) +
+                                        ", lines " + std::to_string(shot.stats.levels[3]))
                                            .c_str(),
                     shot.stats.surfaces, shot.stats.triangles, shot.deriveMs, shot.interpretMs, shot.renderMs);
     return 0;

@@ -113,3 +113,22 @@ SurfaceMesh makeSphere(int slices, int stacks) {
 }
 
 }  // namespace sprout::render
+
+namespace sprout::render {
+
+CylinderMesh makePrism(int sides) {
+    CylinderMesh m;
+    for (float end : {0.0f, 1.0f})
+        for (int s = 0; s < sides; ++s) {
+            float a = 2 * 3.14159265358979f * float(s) / float(sides);
+            m.vertices.push_back({std::cos(a), 0, std::sin(a), end});
+        }
+    const std::uint32_t n = std::uint32_t(sides);
+    for (std::uint32_t s = 0; s < n; ++s) {
+        std::uint32_t a = s, b = (s + 1) % n;
+        m.indices.insert(m.indices.end(), {a, b, n + b, a, n + b, n + a});
+    }
+    return m;
+}
+
+}  // namespace sprout::render

@@ -27,3 +27,10 @@ SurfaceMesh makePetal();
 SurfaceMesh makeSphere(int slices, int stacks);
 
 }  // namespace sprout::render
+
+namespace sprout::render {
+
+// An open tube (no caps) for stems a pixel or two wide: 2 rings of `sides` vertices.
+CylinderMesh makePrism(int sides);
+
+}  // namespace sprout::render

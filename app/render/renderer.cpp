@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/render/bake.hpp"
 #include "app/render/gl.hpp"
 #include "app/render/meshes.hpp"
 #include "app/render/shader.hpp"
@@ -16,79 +17,20 @@ namespace {
 
 constexpr int kShadowSize = 2048;
 
-// A unit mesh replicated uBatch times in one vertex buffer, each copy tagged with its index
-// (attribute 7), so one draw instance renders a whole batch of segments or surfaces.
-struct BatchedMesh {
-    GLuint vao = 0, vbo = 0, ebo = 0;
-    GLsizei indexCount = 0;  // for all copies
-    int batch = 1;
-    std::size_t trianglesPerCopy = 0;
-};
-
-struct Attribute {
-    GLuint location;
-    GLint size;  // floats
-};
-
-BatchedMesh makeBatched(const std::vector<float>& vertices, int floatsPerVertex, const std::vector<Attribute>& layout,
-                        const std::vector<std::uint32_t>& indices) {
-    BatchedMesh m;
-    const std::size_t count = vertices.size() / std::size_t(floatsPerVertex);
-    m.batch = int(std::clamp<std::size_t>(16384 / std::max<std::size_t>(count, 1), 1, 256));
-    m.trianglesPerCopy = indices.size() / 3;
-    std::vector<float> data;
-    std::vector<std::uint32_t> idx;
-    data.reserve(std::size_t(m.batch) * count * std::size_t(floatsPerVertex + 1));
-    for (int copy = 0; copy < m.batch; ++copy) {
-        for (std::size_t v = 0; v < count; ++v) {
-            data.insert(data.end(), vertices.begin() + std::ptrdiff_t(v * std::size_t(floatsPerVertex)),
-                        vertices.begin() + std::ptrdiff_t((v + 1) * std::size_t(floatsPerVertex)));
-            data.push_back(float(copy));
-        }
-        for (auto i : indices) idx.push_back(i + std::uint32_t(std::size_t(copy) * count));
-    }
-    glGenVertexArrays(1, &m.vao);
-    glBindVertexArray(m.vao);
-    glGenBuffers(1, &m.vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, m.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-    const GLsizei stride = GLsizei((floatsPerVertex + 1) * sizeof(float));
-    std::size_t offset = 0;
-    for (const Attribute& a : layout) {
-        glEnableVertexAttribArray(a.location);
-        glVertexAttribPointer(a.location, a.size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offset));
-        offset += std::size_t(a.size) * sizeof(float);
-    }
-    glEnableVertexAttribArray(7);
-    glVertexAttribPointer(7, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(std::size_t(floatsPerVertex) * sizeof(float)));
-    glGenBuffers(1, &m.ebo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.ebo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
-    m.indexCount = GLsizei(idx.size());
-    glBindVertexArray(0);
-    return m;
-}
-
-// Instances [first, first + count) of a buffer texture, drawn in batches.
-void drawBatched(GLuint program, const BatchedMesh& m, std::size_t first, std::size_t count) {
-    if (!count) return;
-    glUniform1i(glGetUniformLocation(program, "uFirst"), GLint(first));
-    glUniform1i(glGetUniformLocation(program, "uCount"), GLint(count));
-    glUniform1i(glGetUniformLocation(program, "uBatch"), m.batch);
-    glBindVertexArray(m.vao);
-    const GLsizei instances = GLsizei((count + std::size_t(m.batch) - 1) / std::size_t(m.batch));
-    glDrawElementsInstanced(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr, instances);
-}
-
-// Levels of detail for the cylinders: sides around, rings per cap. Software rendering
-// (llvmpipe) draws about 10 k instanced cylinders per 86 ms at 1280x720, so each segment
-// gets the coarsest mesh that still looks round at its size: the plant is framed whole, so
-// a segment's radius relative to the plant's size says how many pixels it covers.
+// Levels of detail for stems, chosen by the stem's radius relative to the plant's size (the
+// plant is framed whole, so that says how many pixels it covers at 720p): a round mesh with
+// caps that close the joints, a coarser one, an open three-sided prism, and plain lines for
+// stems under about a pixel. Measured on llvmpipe (2 cores): 98 k segments drawn as lines
+// take 6 ms, as prisms baked on the CPU ~40 ms, as instanced cylinders read from a buffer
+// texture 1 s; so everything is baked into one mesh and drawn with the simplest shader.
 struct Lod {
-    int sides, capRings;
-    float minRelativeRadius;  // radius / plant size from which this level is used
+    float minRelativeRadius;
 };
-constexpr Lod kLods[3] = {{12, 2, 1.0f / 100}, {6, 0, 1.0f / 300}, {0, 0, 0.0f}};  // 0 sides: a strip
+constexpr float kLevelThreshold[3] = {1.0f / 100, 1.0f / 300, 1.0f / 900};  // fine, medium, prism; below: line
+// Interactive detail (the window while editing a big plant) trades roundness for speed:
+// every triangle costs llvmpipe ~0.2 us of single-threaded setup.
+constexpr float kInteractiveScale = 3.0f;
+constexpr std::size_t kVertexBudget = 6'000'000;  // ~170 MB baked; past it, thresholds rise
 
 void setUniform(GLuint p, const char* name, const glm::mat4& m) {
     glUniformMatrix4fv(glGetUniformLocation(p, name), 1, GL_FALSE, glm::value_ptr(m));
@@ -98,82 +40,127 @@ void setUniform(GLuint p, const char* name, const glm::vec2& v) { glUniform2fv(g
 void setUniform(GLuint p, const char* name, float v) { glUniform1f(glGetUniformLocation(p, name), v); }
 void setUniform(GLuint p, const char* name, int v) { glUniform1i(glGetUniformLocation(p, name), v); }
 
+struct Buffers {
+    GLuint vao = 0, vbo = 0, ebo = 0;
+};
+
 }  // namespace
 
 struct Renderer::Impl {
-    GLuint cylinderProgram = 0, cylinderDepth = 0, surfaceProgram = 0, surfaceDepth = 0;
-    GLuint polygonProgram = 0, polygonDepth = 0, curveProgram = 0, backgroundProgram = 0, groundProgram = 0;
-    BatchedMesh cylinders[3], leaf, petal, sphere, smallSphere, curveQuad;
-    struct {
-        GLuint vao = 0, vbo = 0, ebo = 0;
-        GLsizei indexCount = 0;
-    } polygon, groundQuad;
-    // Instance arrays as buffer textures (words of CylinderInstance / SurfaceInstance).
-    GLuint cylinderInstances = 0, surfaceInstances = 0, cylinderTexture = 0, surfaceTexture = 0, emptyVao = 0;
+    GLuint bakedProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
+           groundProgram = 0;
+    Buffers baked, lines, curveQuad, groundQuad;
+    GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
     GLuint msaaFbo = 0, msaaColour = 0, msaaDepth = 0;
-    int msaaWidth = 0, msaaHeight = 0, samples = 1;
+    int msaaWidth = 0, msaaHeight = 0, msaaSamples = 0, samples = 1;
+    int curveBatch = 1;
+    CylinderMesh stemMeshes[3];
+    SurfaceMesh leaf, petal, sphere, smallSphere;
+    BakedMesh scratch;  // reused between uploads
+
     // What was uploaded.
-    std::size_t cylinderCount = 0, surfaceCount[3] = {0, 0, 0}, surfaceStart[3] = {0, 0, 0};
-    std::size_t lodCount[3] = {0, 0, 0}, lodStart[3] = {0, 0, 0};  // cylinders sorted by level
-    bool smallSpheres = false;
-    std::size_t maxInstanceWords = 0;
+    std::size_t bakedIndices = 0, lineCount = 0, curveCount = 0, levels[4] = {0, 0, 0, 0};
     Bounds bounds;
     bool planarCurve = false;
-    float maxRadius = 0;
+    Quality detail = Quality::Still;
 
     bool build(std::string& error) {
         struct P {
             GLuint* out;
             const char *vs, *fs;
         } programs[] = {
-            {&cylinderProgram, "cylinder.vert", "lit.frag"}, {&cylinderDepth, "cylinder.vert", "depth.frag"},
-            {&surfaceProgram, "surface.vert", "lit.frag"},   {&surfaceDepth, "surface.vert", "depth.frag"},
-            {&polygonProgram, "polygon.vert", "lit.frag"},   {&polygonDepth, "polygon.vert", "depth.frag"},
-            {&curveProgram, "curve.vert", "curve.frag"},     {&backgroundProgram, "background.vert", "background.frag"},
-            {&groundProgram, "ground.vert", "ground.frag"},
+            {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
+            {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
+            {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
         };
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
 
-        for (auto [buffer, texture] : {std::pair{&cylinderInstances, &cylinderTexture}, std::pair{&surfaceInstances, &surfaceTexture}}) {
-            glGenBuffers(1, buffer);
-            glBindBuffer(GL_TEXTURE_BUFFER, *buffer);
-            glBufferData(GL_TEXTURE_BUFFER, 64, nullptr, GL_STATIC_DRAW);
-            glGenTextures(1, texture);
-            glBindTexture(GL_TEXTURE_BUFFER, *texture);
-            glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, *buffer);
-        }
+        stemMeshes[0] = makeCylinder(10, 2);
+        stemMeshes[1] = makeCylinder(6, 0);
+        stemMeshes[2] = makePrism(3);
+        leaf = makeLeaf();
+        petal = makePetal();
+        sphere = makeSphere(16, 10);
+        smallSphere = makeSphere(6, 3);
+
+        // Baked triangles: position, normal, colour (polygon.vert's layout).
+        glGenVertexArrays(1, &baked.vao);
+        glBindVertexArray(baked.vao);
+        glGenBuffers(1, &baked.vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, baked.vbo);
+        const GLsizei bs = sizeof(BakedVertex);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, position)));
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, normal)));
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, colour)));
+        glGenBuffers(1, &baked.ebo);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, baked.ebo);
+        glBindVertexArray(0);
+
+        // Lines: position, colour.
+        glGenVertexArrays(1, &lines.vao);
+        glBindVertexArray(lines.vao);
+        glGenBuffers(1, &lines.vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, lines.vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 16, reinterpret_cast<void*>(12));
+        glBindVertexArray(0);
+
+        // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
+        // of quads (their width is in pixels, so they cannot be baked).
+        glGenBuffers(1, &curveInstances);
+        glBindBuffer(GL_TEXTURE_BUFFER, curveInstances);
+        glBufferData(GL_TEXTURE_BUFFER, 64, nullptr, GL_STATIC_DRAW);
+        glGenTextures(1, &curveTexture);
+        glBindTexture(GL_TEXTURE_BUFFER, curveTexture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, curveInstances);
         glBindTexture(GL_TEXTURE_BUFFER, 0);
-        for (int i = 0; i < 2; ++i) {
-            CylinderMesh c = makeCylinder(kLods[i].sides, kLods[i].capRings);
+        {
+            curveBatch = 1024;
             std::vector<float> v;
-            for (const auto& p : c.vertices) v.insert(v.end(), {p.x, p.y, p.z, p.w});
-            cylinders[i] = makeBatched(v, 4, {{0, 4}}, c.indices);
+            std::vector<std::uint32_t> idx;
+            const float corners[4][2] = {{0, -1}, {0, 1}, {1, -1}, {1, 1}};
+            for (int copy = 0; copy < curveBatch; ++copy) {
+                for (auto& c : corners) v.insert(v.end(), {c[0], c[1], float(copy)});
+                std::uint32_t b = std::uint32_t(copy * 4);
+                idx.insert(idx.end(), {b, b + 2, b + 1, b + 1, b + 2, b + 3});
+            }
+            glGenVertexArrays(1, &curveQuad.vao);
+            glBindVertexArray(curveQuad.vao);
+            glGenBuffers(1, &curveQuad.vbo);
+            glBindBuffer(GL_ARRAY_BUFFER, curveQuad.vbo);
+            glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * 4), v.data(), GL_STATIC_DRAW);
+            glEnableVertexAttribArray(0);
+            glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 12, nullptr);
+            glEnableVertexAttribArray(7);
+            glVertexAttribPointer(7, 1, GL_FLOAT, GL_FALSE, 12, reinterpret_cast<void*>(8));
+            glGenBuffers(1, &curveQuad.ebo);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, curveQuad.ebo);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(idx.size() * 4), idx.data(), GL_STATIC_DRAW);
+            glBindVertexArray(0);
         }
-        // The strip: x across (-1, 1), y past the ends by one radius, w start / end.
-        cylinders[2] = makeBatched({-1, -1, 0, 0, 1, -1, 0, 0, -1, 1, 0, 1, 1, 1, 0, 1}, 4, {{0, 4}}, {0, 1, 3, 0, 3, 2});
-        auto surface = [](const SurfaceMesh& m) {
-            std::vector<float> v;
-            for (std::size_t i = 0; i < m.positions.size(); ++i)
-                v.insert(v.end(), {m.positions[i].x, m.positions[i].y, m.positions[i].z, m.normals[i].x, m.normals[i].y, m.normals[i].z});
-            return makeBatched(v, 6, {{0, 3}, {1, 3}}, m.indices);
-        };
-        leaf = surface(makeLeaf());
-        petal = surface(makePetal());
-        sphere = surface(makeSphere(16, 10));
-        smallSphere = surface(makeSphere(6, 3));
-        curveQuad = makeBatched({0, -1, 0, 1, 1, -1, 1, 1}, 2, {{0, 2}}, {0, 2, 1, 1, 2, 3});
-        makePolygonBuffers();
-        makeGroundQuad();
-        GLint maxTexels = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-        maxInstanceWords = std::size_t(maxTexels);
+        {
+            const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+            glGenVertexArrays(1, &groundQuad.vao);
+            glBindVertexArray(groundQuad.vao);
+            glGenBuffers(1, &groundQuad.vbo);
+            glBindBuffer(GL_ARRAY_BUFFER, groundQuad.vbo);
+            glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+            glEnableVertexAttribArray(0);
+            glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
+            glBindVertexArray(0);
+        }
         glGenVertexArrays(1, &emptyVao);
 
         GLint maxSamples = 1;
         glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-        samples = std::clamp(maxSamples, 1, getenv("SPROUT_SAMPLES") ? atoi(getenv("SPROUT_SAMPLES")) : 4);
+        samples = std::clamp(maxSamples, 1, 4);
 
         glGenTextures(1, &shadowTexture);
         glBindTexture(GL_TEXTURE_2D, shadowTexture);
@@ -195,38 +182,19 @@ struct Renderer::Impl {
         return ok;
     }
 
-    void makePolygonBuffers() {
-        glGenVertexArrays(1, &polygon.vao);
-        glBindVertexArray(polygon.vao);
-        glGenBuffers(1, &polygon.vbo);
-        glGenBuffers(1, &polygon.ebo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, polygon.ebo);
-        glBindVertexArray(0);
-    }
-
-    void makeGroundQuad() {
-        const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
-        glGenVertexArrays(1, &groundQuad.vao);
-        glBindVertexArray(groundQuad.vao);
-        glGenBuffers(1, &groundQuad.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, groundQuad.vbo);
-        glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
-        glBindVertexArray(0);
-    }
-
-    void ensureMsaa(int w, int h) {
-        if (msaaFbo && w == msaaWidth && h == msaaHeight) return;
+    void ensureMsaa(int w, int h, int wantSamples) {
+        wantSamples = std::min(wantSamples, samples);
+        if (msaaFbo && w == msaaWidth && h == msaaHeight && wantSamples == msaaSamples) return;
+        msaaSamples = wantSamples;
         if (!msaaFbo) {
             glGenFramebuffers(1, &msaaFbo);
             glGenRenderbuffers(1, &msaaColour);
             glGenRenderbuffers(1, &msaaDepth);
         }
         glBindRenderbuffer(GL_RENDERBUFFER, msaaColour);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, w, h);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, msaaSamples, GL_RGBA8, w, h);
         glBindRenderbuffer(GL_RENDERBUFFER, msaaDepth);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, w, h);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, msaaSamples, GL_DEPTH_COMPONENT24, w, h);
         glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColour);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaaDepth);
@@ -234,61 +202,30 @@ struct Renderer::Impl {
         msaaHeight = h;
     }
 
-    // Interactive frames of big plants drop one more level of detail.
-    int lodShift(Quality q) const { return q == Quality::Interactive && cylinderCount > 20000 ? 1 : 0; }
-
     // Everything that casts or receives light, with one view-projection.
-    void drawScene(const glm::mat4& viewProj, const glm::vec3& eye, bool depthOnly, const RenderOptions& o, float minRadius,
-                   RenderStats& stats) {
-        if (cylinderCount) {
-            GLuint p = depthOnly ? cylinderDepth : cylinderProgram;
+    void drawScene(const glm::mat4& viewProj, bool depthOnly, RenderStats& stats) {
+        if (bakedIndices) {
+            GLuint p = depthOnly ? bakedDepth : bakedProgram;
             glUseProgram(p);
             setUniform(p, "uViewProj", viewProj);
-            setUniform(p, "uMinRadius", minRadius);
-            setUniform(p, "uSpecular", 0.12f);
-            setUniform(p, "uInstances", 1);
-            setUniform(p, "uEye", eye);
-            glActiveTexture(GL_TEXTURE1);
-            glBindTexture(GL_TEXTURE_BUFFER, cylinderTexture);
-            for (int level = 0; level < 3; ++level) {
-                // Shadows need only the silhouette: the coarsest mesh casts them.
-                int mesh = depthOnly ? 2 : std::min(2, level + lodShift(o.quality));
-                setUniform(p, "uBillboard", mesh == 2 ? 1 : 0);
-                drawBatched(p, cylinders[mesh], lodStart[level], lodCount[level]);
-                stats.triangles += cylinders[mesh].trianglesPerCopy * lodCount[level];
-                stats.levels[mesh] += lodCount[level];
-            }
+            setUniform(p, "uSpecular", 0.1f);
+            glBindVertexArray(baked.vao);
+            glDrawElements(GL_TRIANGLES, GLsizei(bakedIndices), GL_UNSIGNED_INT, nullptr);
+            stats.triangles += bakedIndices / 3;
         }
-        BatchedMesh* meshes[3] = {&leaf, &petal, smallSpheres || depthOnly ? &smallSphere : &sphere};
-        GLuint sp = depthOnly ? surfaceDepth : surfaceProgram;
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_BUFFER, surfaceTexture);
-        for (int k = 0; k < 3; ++k) {
-            if (!surfaceCount[k]) continue;
-            glUseProgram(sp);
-            setUniform(sp, "uViewProj", viewProj);
-            setUniform(sp, "uSpecular", k == 2 ? 0.3f : 0.08f);
-            setUniform(sp, "uInstances", 1);
-            drawBatched(sp, *meshes[k], surfaceStart[k], surfaceCount[k]);
-            stats.triangles += meshes[k]->trianglesPerCopy * surfaceCount[k];
-        }
-        glActiveTexture(GL_TEXTURE0);
-        if (polygon.indexCount) {
-            GLuint p = depthOnly ? polygonDepth : polygonProgram;
-            glUseProgram(p);
-            setUniform(p, "uViewProj", viewProj);
-            setUniform(p, "uSpecular", 0.05f);
-            glBindVertexArray(polygon.vao);
-            glDrawElements(GL_TRIANGLES, polygon.indexCount, GL_UNSIGNED_INT, nullptr);
-            stats.triangles += std::size_t(polygon.indexCount / 3);
+        if (lineCount) {  // depth pass and colour pass alike: a line has no surface to shade
+            glUseProgram(lineProgram);
+            setUniform(lineProgram, "uViewProj", viewProj);
+            glBindVertexArray(lines.vao);
+            glDrawArrays(GL_LINES, 0, GLsizei(2 * lineCount));
         }
         glBindVertexArray(0);
     }
 
-    void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows, float texel) {
+    void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
+                     float texel) {
         glUseProgram(p);
-        glm::vec3 sun = glm::normalize(o.sunDirection);
-        setUniform(p, "uSunDir", sun);
+        setUniform(p, "uSunDir", glm::normalize(o.sunDirection));
         setUniform(p, "uSunColour", glm::vec3(1.0f, 0.96f, 0.88f) * o.sunIntensity);
         setUniform(p, "uSkyAmbient", glm::vec3(0.36f, 0.42f, 0.50f));
         setUniform(p, "uGroundAmbient", glm::vec3(0.20f, 0.18f, 0.14f));
@@ -305,6 +242,8 @@ Renderer::~Renderer() = default;
 
 int Renderer::samples() const { return m->samples; }
 
+void Renderer::setDetail(Quality detail) { m->detail = detail; }
+
 bool Renderer::init(ProcLoader loader, std::string& error) {
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(loader))) {
         error = "could not load OpenGL functions";
@@ -319,90 +258,91 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
 
 void Renderer::upload(const Geometry& g) {
     Impl& s = *m;
-    s.cylinderCount = g.cylinders.size();
-    // Cylinders grouped by level of detail (one counting pass, one scatter pass).
-    const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
-    const float extent = std::max({size.x, size.y, size.z, 1e-6f});
-    auto levelOf = [&](const CylinderInstance& c) {
-        float rel = std::max(c.startRadius, c.endRadius) / extent;
-        return rel >= kLods[0].minRelativeRadius ? 0 : rel >= kLods[1].minRelativeRadius ? 1 : 2;
-    };
-    for (auto& n : s.lodCount) n = 0;
-    for (const auto& c : g.cylinders) ++s.lodCount[levelOf(c)];
-    s.lodStart[0] = 0;
-    s.lodStart[1] = s.lodCount[0];
-    s.lodStart[2] = s.lodCount[0] + s.lodCount[1];
-    glBindBuffer(GL_TEXTURE_BUFFER, s.cylinderInstances);
-    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(g.cylinders.size(), 1) * sizeof(CylinderInstance)), nullptr,
-                 GL_STATIC_DRAW);
-    if (s.lodCount[0] == s.cylinderCount || s.lodCount[1] == s.cylinderCount || s.lodCount[2] == s.cylinderCount) {
-        glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(g.cylinders.size() * sizeof(CylinderInstance)), g.cylinders.data());
-    } else if (auto* dst = static_cast<CylinderInstance*>(glMapBuffer(GL_TEXTURE_BUFFER, GL_WRITE_ONLY))) {
-        std::size_t next[3] = {s.lodStart[0], s.lodStart[1], s.lodStart[2]};
-        for (const auto& c : g.cylinders) dst[next[levelOf(c)]++] = c;
-        glUnmapBuffer(GL_TEXTURE_BUFFER);
-    }
-    // A buffer texture holds at most GL_MAX_TEXTURE_BUFFER_SIZE words (128 M on llvmpipe):
-    // beyond that the plant is drawn in part rather than not at all.
-    const std::size_t maxCylinders = s.maxInstanceWords / 10;
-    if (s.cylinderCount > maxCylinders) {
-        s.cylinderCount = maxCylinders;
-        for (int l = 0; l < 3; ++l)
-            s.lodCount[l] = std::min(s.lodCount[l], maxCylinders > s.lodStart[l] ? maxCylinders - s.lodStart[l] : 0);
-    }
-    float maxSphere = 0;
-    for (const auto& x : g.surfaces)
-        if (x.kind == SurfaceKind::Sphere) maxSphere = std::max(maxSphere, x.size);
-    s.smallSpheres = maxSphere < extent / 60;
-
-    // Surfaces grouped by kind so each kind is one instanced draw.
-    std::vector<SurfaceInstance> sorted(g.surfaces.begin(), g.surfaces.end());
-    std::stable_sort(sorted.begin(), sorted.end(),
-                     [](const SurfaceInstance& a, const SurfaceInstance& b) { return a.kind < b.kind; });
-    for (int k = 0; k < 3; ++k) s.surfaceCount[k] = 0;
-    for (const auto& x : sorted) ++s.surfaceCount[std::min<std::uint32_t>(std::uint32_t(x.kind), 2)];
-    s.surfaceStart[0] = 0;
-    s.surfaceStart[1] = s.surfaceCount[0];
-    s.surfaceStart[2] = s.surfaceCount[0] + s.surfaceCount[1];
-    glBindBuffer(GL_TEXTURE_BUFFER, s.surfaceInstances);
-    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(sorted.size(), 1) * sizeof(SurfaceInstance)), nullptr,
-                 GL_STATIC_DRAW);
-    glBufferSubData(GL_TEXTURE_BUFFER, 0, GLsizeiptr(sorted.size() * sizeof(SurfaceInstance)), sorted.data());
-
-    const Mesh& p = g.polygons;
-    glBindVertexArray(s.polygon.vao);
-    glBindBuffer(GL_ARRAY_BUFFER, s.polygon.vbo);
-    // Interleaving is not worth a copy here: positions, normals and colours in one buffer.
-    const std::size_t n = p.positions.size();
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(n * (24 + 4)), nullptr, GL_STATIC_DRAW);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(n * 12), p.positions.data());
-    glBufferSubData(GL_ARRAY_BUFFER, GLintptr(n * 12), GLsizeiptr(n * 12), p.normals.data());
-    glBufferSubData(GL_ARRAY_BUFFER, GLintptr(n * 24), GLsizeiptr(n * 4), p.colours.data());
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<void*>(n * 12));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, 0, reinterpret_cast<void*>(n * 24));
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.polygon.ebo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(p.indices.size() * 4), p.indices.data(), GL_STATIC_DRAW);
-    s.polygon.indexCount = GLsizei(p.indices.size());
-    glBindVertexArray(0);
-
     s.bounds = g.bounds;
     s.planarCurve = g.planarCurve;
-    s.maxRadius = g.maxRadius;
+    for (auto& l : s.levels) l = 0;
+    s.curveCount = s.lineCount = 0;
+    BakedMesh& b = s.scratch;
+    b.clear();
+
+    const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
+    const float extent = std::max({size.x, size.y, size.z, 1e-6f});
+    std::vector<float> lineData;
+    if (g.planarCurve) {
+        // A curve: every segment a screen-space ribbon.
+        s.curveCount = g.cylinders.size();
+        glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
+        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(s.curveCount, 1) * sizeof(CylinderInstance)),
+                     g.cylinders.data(), GL_STATIC_DRAW);
+    } else {
+        // Pick the levels: the finest the vertex budget allows.
+        float scale = s.detail == Quality::Interactive ? kInteractiveScale : 1.0f;
+        auto levelOf = [&](const CylinderInstance& c) {
+            float rel = std::max(c.startRadius, c.endRadius) / extent;
+            for (int l = 0; l < 3; ++l)
+                if (rel >= kLevelThreshold[l] * scale) return l;
+            return 3;
+        };
+        for (;; scale *= 2) {
+            std::size_t verts = 0;
+            for (const auto& c : g.cylinders) {
+                int l = levelOf(c);
+                verts += l < 3 ? s.stemMeshes[l].vertices.size() : 0;
+            }
+            if (verts <= kVertexBudget || scale > 1e6f) break;
+        }
+        std::size_t reserve = 0;
+        for (const auto& c : g.cylinders) {
+            int l = levelOf(c);
+            ++s.levels[l];
+            reserve += l < 3 ? s.stemMeshes[l].vertices.size() : 0;
+        }
+        b.vertices.reserve(reserve);
+        lineData.reserve(s.levels[3] * 8);
+        for (const auto& c : g.cylinders) {
+            int l = levelOf(c);
+            if (l < 3) {
+                bakeCylinder(c, s.stemMeshes[l], b);
+            } else {
+                std::uint32_t col = c.colour;
+                float cf;
+                std::memcpy(&cf, &col, 4);
+                lineData.insert(lineData.end(), {c.start.x, c.start.y, c.start.z, cf, c.end.x, c.end.y, c.end.z, cf});
+            }
+        }
+        s.lineCount = s.levels[3];
+    }
+    // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
+    for (const auto& x : g.surfaces) {
+        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? s.leaf
+                                  : x.kind == SurfaceKind::Petal ? s.petal
+                                  : x.size < extent / 60         ? s.smallSphere
+                                                                 : s.sphere;
+        bakeSurface(x, mesh, b);
+    }
+    bakePolygons(g.polygons, b);
+    glBindVertexArray(s.baked.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(b.vertices.size() * sizeof(BakedVertex)), b.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(b.indices.size() * 4), b.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    s.bakedIndices = b.indices.size();
+    glBindBuffer(GL_ARRAY_BUFFER, s.lines.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lineData.size() * 4), lineData.data(), GL_STATIC_DRAW);
+    // Keep the scratch buffers' memory only while they are modest.
+    if (b.vertices.capacity() > (1u << 20)) b = BakedMesh();
+
     m_stats = {};
-    m_stats.cylinders = s.cylinderCount;
+    m_stats.cylinders = g.cylinders.size();
     m_stats.surfaces = g.surfaces.size();
+    for (int l = 0; l < 4; ++l) m_stats.levels[l] = s.levels[l];
 }
 
 void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
                     int y) {
     Impl& s = *m;
-    RenderStats stats;
-    stats.cylinders = s.cylinderCount;
-    stats.surfaces = s.surfaceCount[0] + s.surfaceCount[1] + s.surfaceCount[2];
+    RenderStats stats = m_stats;
+    stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
     const float radius = std::max(0.5f * glm::length(size), 1e-4f);
@@ -410,18 +350,17 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     const float dist = glm::length(camera.eye() - centre);
     const float near = std::max(1e-4f, (dist - radius * 3) * 0.9f), far = dist + radius * 4;
     const glm::mat4 viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
-    // World size of a pixel at the plant, so thin twigs stay visible.
-    const float pixel = camera.orthographic ? camera.orthoHeight / float(height)
-                                            : 2 * dist * std::tan(glm::radians(camera.fovY) / 2) / float(height);
     const bool curve = s.planarCurve;
-    const bool shadows = o.shadows && !curve;
+    // Interactive frames of big plants skip the shadow pass, which costs a second draw.
+    const bool bigInteractive = o.quality == Quality::Interactive && s.bakedIndices / 3 + s.lineCount > 30000;
+    const bool shadows = o.shadows && !curve && !bigInteractive;
     const bool ground = o.ground && !curve && !s.bounds.empty;
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // leaves and petals are double-sided
 
-    // Shadow map from the sun, an orthographic box around the plant and its ground.
+    // Shadow map from the sun: an orthographic box around the plant and its ground.
     glm::mat4 lightViewProj(1.0f);
     const float groundRadius = std::max({size.x, size.z, size.y}) * 1.2f;
     if (shadows) {
@@ -438,12 +377,13 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.5f, 2.0f);
         RenderStats ignored;
-        s.drawScene(lightViewProj, centre + glm::normalize(o.sunDirection) * radius * 1000.0f, true, o, pixel * 0.5f, ignored);
+        s.drawScene(lightViewProj, true, ignored);
         glDisable(GL_POLYGON_OFFSET_FILL);
     }
     const float texel = shadows ? 2.1f * std::max(radius, groundRadius) / kShadowSize : 0.0f;
 
-    s.ensureMsaa(width, height);
+    // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
+    s.ensureMsaa(width, height, bigInteractive ? 2 : 4);
     glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
     glViewport(0, 0, width, height);
     glClearColor(o.backgroundBottom.r, o.backgroundBottom.g, o.backgroundBottom.b, 1);
@@ -476,30 +416,28 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glDisable(GL_BLEND);
     }
 
-    if (curve) {
-        glUseProgram(s.curveProgram);
-        setUniform(s.curveProgram, "uViewProj", viewProj);
-        setUniform(s.curveProgram, "uViewport", glm::vec2(width, height));
-        setUniform(s.curveProgram, "uWidth", std::max(1.5f, float(height) / 400.0f));
-        setUniform(s.curveProgram, "uInk", o.curveInk);
-        setUniform(s.curveProgram, "uInstances", 1);
+    if (curve && s.curveCount) {
+        const GLuint p = s.curveProgram;
+        glUseProgram(p);
+        setUniform(p, "uViewProj", viewProj);
+        setUniform(p, "uViewport", glm::vec2(width, height));
+        setUniform(p, "uWidth", std::max(1.5f, float(height) / 400.0f));
+        setUniform(p, "uInk", o.curveInk);
+        setUniform(p, "uInstances", 1);
+        setUniform(p, "uFirst", 0);
+        setUniform(p, "uCount", int(s.curveCount));
+        setUniform(p, "uBatch", s.curveBatch);
         glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_BUFFER, s.cylinderTexture);
-        drawBatched(s.curveProgram, s.curveQuad, 0, s.cylinderCount);
+        glBindTexture(GL_TEXTURE_BUFFER, s.curveTexture);
+        glBindVertexArray(s.curveQuad.vao);
+        const GLsizei instances = GLsizei((s.curveCount + std::size_t(s.curveBatch) - 1) / std::size_t(s.curveBatch));
+        glDrawElementsInstanced(GL_TRIANGLES, GLsizei(6 * s.curveBatch), GL_UNSIGNED_INT, nullptr, instances);
         glActiveTexture(GL_TEXTURE0);
-        stats.triangles += 2 * s.cylinderCount;
+        stats.triangles += 2 * s.curveCount;
         stats.curve = true;
-        // Polygons of a planar system still fill.
-        std::size_t saved = s.cylinderCount;
-        s.cylinderCount = 0;  // drawn as the curve above
-        for (GLuint p : {s.surfaceProgram, s.polygonProgram}) s.setLighting(p, o, eye, lightViewProj, false, 0);
-        s.drawScene(viewProj, eye, false, o, 0, stats);
-        s.cylinderCount = saved;
-    } else {
-        for (GLuint p : {s.cylinderProgram, s.surfaceProgram, s.polygonProgram})
-            s.setLighting(p, o, eye, lightViewProj, shadows, texel);
-        s.drawScene(viewProj, eye, false, o, pixel * 0.5f, stats);
     }
+    for (GLuint p : {s.bakedProgram, s.lineProgram}) s.setLighting(p, o, eye, lightViewProj, shadows, texel);
+    s.drawScene(viewProj, false, stats);
 
     // Resolve the multisampled image into the target.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);

@@ -36,7 +36,7 @@ struct RenderOptions {
 
 struct RenderStats {
     std::size_t cylinders = 0, surfaces = 0, triangles = 0;
-    std::size_t levels[3] = {0, 0, 0};  // cylinders drawn with the fine, medium and coarse mesh
+    std::size_t levels[4] = {0, 0, 0, 0};  // stems drawn as fine mesh, coarse mesh, prism, line
     bool curve = false;                 // drawn as a 2D curve
 };
 
@@ -50,8 +50,11 @@ public:
     // Loads GL through `loader`, compiles the shaders and creates the meshes. Needs a
     // current OpenGL 3.3 core context; false with a message when it cannot.
     bool init(ProcLoader loader, std::string& error);
-    // Copies the plant to the GPU (buffers are reused when they are big enough).
+    // Copies the plant to the GPU, baked into triangles and lines at the current detail.
     void upload(const Geometry& geometry);
+    // Detail of the next upload: Interactive draws more thin stems as lines (the window on a
+    // big plant); Still (the default) is for pictures.
+    void setDetail(Quality detail);
     // Draws a width x height image into framebuffer `target` (0: the window's or OSMesa's
     // default framebuffer), its lower-left corner at (x, y) there.
     void draw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0,

@@ -45,7 +45,8 @@ struct App {
     bool needsRedraw = true;
     bool frameOnNextPlant = true;
     bool showHelp = false;
-    bool interacting = false;  // dragging: coarser meshes for big plants
+    bool interacting = false;  // dragging: no shadows for big plants
+    bool bigPlant = false;     // uploaded at interactive detail
     std::string status;        // last action's message
     double statusTime = 0;
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;

@@ -96,7 +96,16 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
     img.width = width;
     img.height = height;
     render::Camera cam = camera;
+    auto plant = state.plant();
+    if (bigPlant && plant) {  // a picture gets full detail
+        renderer.setDetail(render::Quality::Still);
+        renderer.upload(*plant->geometry);
+    }
     img.rgba = renderer.renderImage(cam, width, height, view.render);
+    if (bigPlant && plant) {
+        renderer.setDetail(render::Quality::Interactive);
+        renderer.upload(*plant->geometry);
+    }
     img.text.emplace_back("lsys", state.text());
     img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
     std::string error;
@@ -211,6 +220,10 @@ int runViewer(int argc, char** argv) {
                 if (p.planarCurve != g.planarCurve || b > 2 * a || a > 2 * b || moved > 0.5f * std::max(a, b))
                     app.frameOnNextPlant = true;
             }
+            // Big plants are edited at interactive detail (more thin stems as lines);
+            // screenshots re-upload at full detail.
+            app.bigPlant = g.cylinders.size() > 20000;
+            app.renderer.setDetail(app.bigPlant ? render::Quality::Interactive : render::Quality::Still);
             app.renderer.upload(g);
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (app.frameOnNextPlant) {

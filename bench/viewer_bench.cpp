@@ -1,0 +1,106 @@
+// The viewer's responsiveness, measured with the real ViewerState, worker and renderer
+// (OSMesa, software GL), in one run:
+//
+//   build/bench/viewer_bench
+//
+// 1. Worst UI-thread frame while a 6.5 M-module derivation runs in the background: the
+//    frame's own work (post the edit, poll the worker, animation, autosave), against the
+//    16 ms budget of a 60 Hz frame.
+// 2. Keystroke to new plant on screen for a plant of about 100 k segments: edit, derive and
+//    interpret on the worker, upload, draw the view (1010x860, interactive quality), finish.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "app/headless.hpp"
+#include "app/render/renderer.hpp"
+#include "app/viewer/viewer_state.hpp"
+
+using namespace sprout;
+using Clock = std::chrono::steady_clock;
+
+static double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+int main() {
+    const auto dir = std::filesystem::temp_directory_path() / "sprout_viewer_bench";
+    // 1. Frames during a big derivation.
+    {
+        viewer::ViewerState state(dir);
+        state.openText("n: 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+        state.waitForPlant();
+        double worst = 0, editMs = 0;
+        int frames = 0;
+        auto t0 = Clock::now();
+        auto e0 = Clock::now();
+        state.setText("n: 10\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");  // 6.46 M modules
+        editMs = ms(Clock::now() - e0);
+        worst = editMs;
+        while (true) {
+            auto f0 = Clock::now();
+            bool arrived = state.update();
+            state.tick(1.0 / 60);
+            state.autosave();
+            double f = ms(Clock::now() - f0);
+            worst = std::max(worst, f);
+            ++frames;
+            if (arrived) break;
+            std::this_thread::sleep_until(f0 + std::chrono::microseconds(16667));
+        }
+        double total = ms(Clock::now() - t0);
+        std::printf("UI frames while deriving %s modules (%.0f ms in the background): %d frames, worst %.3f ms "
+                    "(the edit itself %.3f ms); budget 16 ms, worst/budget %.4f\n",
+                    withThousands(state.plant()->modules).c_str(), total, frames, worst, editMs, worst / 16.0);
+    }
+    // 2. Keystroke to plant on screen.
+    {
+        const int w = 1010, h = 860;
+        std::string error;
+        auto ctx = HeadlessContext::create(w, h, error);
+        render::Renderer renderer;
+        if (!ctx || !renderer.init(ctx->loader(), error)) {
+            std::printf("no OpenGL: %s\n", error.c_str());
+            return 1;
+        }
+        renderer.setDetail(render::Quality::Interactive);  // as the window does for big plants
+        viewer::ViewerState state(dir);
+        // Fractal plant n=8: about 100 k segments.
+        state.openText("n: 8\nangle: 22.5\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+        state.waitForPlant();
+        renderer.upload(*state.plant()->geometry);
+        auto cam = render::frameGeometry(*state.plant()->geometry, float(w) / h, render::ViewPreset::Auto);
+        render::RenderOptions o;
+        o.quality = render::Quality::Interactive;
+        renderer.draw(cam, w, h, o);  // warm up the shader compiler
+        renderer.readPixels(1, 1);
+        double best = 1e9, worst = 0, sum = 0, deriveSum = 0, uploadSum = 0, drawSum = 0;
+        const int runs = 8;
+        for (int i = 0; i < runs; ++i) {
+            auto t0 = Clock::now();
+            state.setDirectiveValue("angle", 20 + i);  // the keystroke
+            state.waitForPlant();
+            auto t1 = Clock::now();
+            renderer.upload(*state.plant()->geometry);
+            auto t2 = Clock::now();
+            renderer.draw(cam, w, h, o);
+            renderer.readPixels(1, 1);  // waits for the frame to be finished
+            auto t3 = Clock::now();
+            double total = ms(t3 - t0);
+            best = std::min(best, total);
+            worst = std::max(worst, total);
+            sum += total;
+            deriveSum += ms(t1 - t0);
+            uploadSum += ms(t2 - t1);
+            drawSum += ms(t3 - t2);
+        }
+        const auto& st = renderer.stats();
+        std::printf("keystroke to plant on screen, %zu segments (%zu fine, %zu coarse, %zu prisms, %zu lines; %zu triangles), "
+                    "%dx%d software GL: mean %.1f ms (best %.1f, worst %.1f); worker %.1f, upload %.1f, draw %.1f; "
+                    "bar 50 ms, mean/bar %.2f\n",
+                    state.plant()->geometry->cylinders.size(), st.levels[0], st.levels[1], st.levels[2], st.levels[3],
+                    st.triangles, w, h, sum / runs, best, worst, deriveSum / runs, uploadSum / runs, drawSum / runs,
+                    sum / runs / 50.0);
+    }
+    std::filesystem::remove_all(dir);
+    return 0;
+}
