@@ -299,18 +299,42 @@ void Renderer::upload(const Geometry& g) {
         }
         b.vertices.reserve(reserve);
         lineData.reserve(s.levels[3] * 8);
-        for (const auto& c : g.cylinders) {
-            int l = levelOf(c);
-            if (l < 3) {
-                bakeCylinder(c, s.stemMeshes[l], b);
+        // Stems that continue straight on with the same radius and colour (F -> FF makes long
+        // runs) are drawn as one tube or line: the same picture from a fraction of the primitives.
+        auto continues = [](const CylinderInstance& a, const CylinderInstance& c) {
+            if (a.colour != c.colour || a.endRadius != c.startRadius || glm::length(c.start - a.end) > 1e-5f * (1 + glm::length(a.end)))
+                return false;
+            glm::vec3 da = a.end - a.start, dc = c.end - c.start;
+            float la = glm::length(da), lc = glm::length(dc);
+            return la > 0 && lc > 0 && glm::dot(da, dc) > 0.99999f * la * lc;
+        };
+        CylinderInstance run{};
+        int runLevel = -1;
+        auto emit = [&] {
+            if (runLevel < 0) return;
+            if (runLevel < 3) {
+                bakeCylinder(run, s.stemMeshes[runLevel], b);
             } else {
-                std::uint32_t col = c.colour;
+                std::uint32_t col = run.colour;
                 float cf;
                 std::memcpy(&cf, &col, 4);
-                lineData.insert(lineData.end(), {c.start.x, c.start.y, c.start.z, cf, c.end.x, c.end.y, c.end.z, cf});
+                lineData.insert(lineData.end(), {run.start.x, run.start.y, run.start.z, cf, run.end.x, run.end.y, run.end.z, cf});
             }
+            runLevel = -1;
+        };
+        for (const auto& c : g.cylinders) {
+            int l = levelOf(c);
+            if (runLevel == l && continues(run, c)) {
+                run.end = c.end;
+                run.endRadius = c.endRadius;
+                continue;
+            }
+            emit();
+            run = c;
+            runLevel = l;
         }
-        s.lineCount = s.levels[3];
+        emit();
+        s.lineCount = lineData.size() / 8;
     }
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
     for (const auto& x : g.surfaces) {
