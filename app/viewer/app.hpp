@@ -56,6 +56,7 @@ struct App {
     std::string pathInput;
     bool quitRequested = false;
     bool quitConfirmed = false;
+    int jumpTo = -1;  // byte offset the editor's cursor goes to (a clicked error)
 
     void say(std::string message);
     void frame();  // camera on the current plant

@@ -4,6 +4,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // ActivateItem: focus the editor on a clicked error
 #include <imgui_stdlib.h>
 
 #include <cmath>
@@ -28,21 +29,72 @@ bool valueSlider(App& app, const char* label, const char* key, double current, f
     return false;
 }
 
+// ImGui's built-in font has ASCII only: show the messages' dashes and quotes that way.
+std::string ascii(const std::string& s) {
+    std::string out;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s.compare(i, 3, "\xE2\x80\x94") == 0) {
+            out += "--";
+            i += 2;
+        } else {
+            out += s[i];
+        }
+    }
+    return out;
+}
+
+// Byte offset of (line, col) in `text`, columns counted in characters.
+int offsetOf(const std::string& text, int line, int col) {
+    size_t pos = 0;
+    for (int l = 1; l < line && pos < text.size(); ++l) {
+        size_t nl = text.find('\n', pos);
+        if (nl == std::string::npos) return int(text.size());
+        pos = nl + 1;
+    }
+    for (int c = 1; c < col && pos < text.size() && text[pos] != '\n'; ++c) {
+        ++pos;
+        while (pos < text.size() && (static_cast<unsigned char>(text[pos]) & 0xC0) == 0x80) ++pos;
+    }
+    return int(pos);
+}
+
+int jumpCallback(ImGuiInputTextCallbackData* data) {
+    auto* app = static_cast<App*>(data->UserData);
+    if (app->jumpTo >= 0) {  // put the cursor on the error that was clicked
+        data->CursorPos = data->SelectionStart = data->SelectionEnd = std::min(app->jumpTo, data->BufTextLen);
+        app->jumpTo = -1;
+    }
+    return 0;
+}
+
 void grammarSection(App& app) {
     std::string text = app.state.text();
     const float h = std::max(160.0f, ImGui::GetTextLineHeight() * 16);
-    if (ImGui::InputTextMultiline("##grammar", &text, ImVec2(-1, h), ImGuiInputTextFlags_AllowTabInput))
+    if (ImGui::InputTextMultiline("##grammar", &text, ImVec2(-1, h),
+                                  ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, jumpCallback, &app))
         app.state.setText(std::move(text));
     auto latest = app.state.latest();
     if (latest) {
+        // Each problem at its line:col; a click puts the editor's cursor there.
         for (const auto& d : latest->diagnostics) {
             ImGui::PushStyleColor(ImGuiCol_Text, d.severity == Severity::Error ? kError : kWarning);
-            ImGui::TextWrapped("line %d, col %d: %s%s", d.line, d.col, d.severity == Severity::Warning ? "warning: " : "",
-                               d.message.c_str());
+            char label[64];
+            std::snprintf(label, sizeof label, "line %d, col %d##%d_%d", d.line, d.col, d.line, d.col);
+            if (ImGui::SmallButton(label)) {
+                app.jumpTo = offsetOf(app.state.text(), d.line, d.col);
+                ImGui::SetKeyboardFocusHere(-1);
+                ImGui::ActivateItem(ImGui::GetID("##grammar"));
+            }
+            ImGui::SameLine();
+            ImGui::TextWrapped("%s%s", d.severity == Severity::Warning ? "warning: " : "", ascii(d.message).c_str());
             ImGui::PopStyleColor();
         }
         if (!latest->grammar && app.state.plant())
-            ImGui::TextColored(kDim, "(the last good plant stays on screen until the text is fixed)");
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+            ImGui::TextWrapped("(the last good plant stays on screen until the text is fixed)");
+            ImGui::PopStyleColor();
+        }
         if (!latest->message.empty() && !latest->cancelled) {
             ImGui::PushStyleColor(ImGuiCol_Text, kError);
             ImGui::TextWrapped("%s", latest->message.c_str());
