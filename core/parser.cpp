@@ -75,7 +75,7 @@ Parser::Parser(std::string_view text) {
     m_text = std::string(text);
     m_original = m_text;
     // The turtle's multi-letter modules (cpfg's predefined surfaces and ABOP's sphere).
-    m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P"};
+    m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T"};
     std::stable_sort(m_moduleNames.begin(), m_moduleNames.end(),
                      [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
 }

@@ -16,7 +16,7 @@ namespace {
 enum class Act : std::uint8_t {
     None, Draw, DrawNoVertex, Move, MoveNoVertex, Left, Right, Down, Up, RollLeft, RollRight,
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
-    ColourNext, ColourPrev, Leaf, Petal, Sphere,
+    ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
 };
 
 Act actionOf(const std::string& name) {
@@ -29,6 +29,9 @@ Act actionOf(const std::string& name) {
         {"'", Act::ColourNext}, {",", Act::ColourPrev}, {"~leaf", Act::Leaf}, {"~l", Act::Leaf},
         {"~L", Act::Leaf}, {"~petal", Act::Petal}, {"~p", Act::Petal}, {"~P", Act::Petal},
         {"@O", Act::Sphere}, {"@o", Act::Sphere},
+        // Extensions for imported grammars (Lparser): scale the step, the angle, the width
+        // by a factor; bend towards gravity now (Lparser's t).
+        {"@L", Act::ScaleLength}, {"@A", Act::ScaleAngle}, {"@W", Act::ScaleWidth}, {"@T", Act::Gravity},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;
@@ -63,6 +66,7 @@ struct State {
     std::int32_t lastSegment = -1;  // the segment this branch's next segment continues
     std::uint16_t order = 0;
     std::int8_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
+    float angleScale = 1;     // @A: factor on the default turning angle
     // Resolved when the colour or the branch order changes: measured faster than looking it
     // up at every segment, even though it makes the state 80 bytes instead of 64.
     std::uint32_t stemColour = 0;
@@ -235,12 +239,16 @@ private:
 
     static constexpr int kOrderColours = 32;
 
-    [[gnu::always_inline]] inline void turn(v4& a, v4& b, const double* p, float sign) {
+    [[gnu::always_inline]] inline void turn(const State& t, v4& a, v4& b, const double* p, float sign) {
         if (p) {
-            float r = float(*p) * kPi / 180.0f * sign;
+            // A negative angle scale (Fractint's '!') swaps the meaning of the turns.
+            float r = float(*p) * kPi / 180.0f * (t.angleScale < 0 ? -sign : sign);
             rotate(a, b, std::cos(r), std::sin(r));
         } else if (m_angleSigma > 0) {
             float r = (m_angle + jitter(m_angleSigma)) * sign;
+            rotate(a, b, std::cos(r), std::sin(r));
+        } else if (t.angleScale != 1.0f) {
+            float r = m_angle * t.angleScale * sign;
             rotate(a, b, std::cos(r), std::sin(r));
         } else {
             rotate(a, b, m_cos, m_sin * sign);
@@ -285,18 +293,18 @@ private:
                 if (act == Act::Move && !m_polygons.empty()) vertex(t);
                 break;
             }
-            case Act::Left: turn(t.H, t.L, p, 1.0f); break;
-            case Act::Right: turn(t.H, t.L, p, -1.0f); break;
+            case Act::Left: turn(t, t.H, t.L, p, 1.0f); break;
+            case Act::Right: turn(t, t.H, t.L, p, -1.0f); break;
             case Act::Down:
             case Act::Up: {
                 v4 u = up(t);
-                turn(t.H, u, p, act == Act::Up ? 1.0f : -1.0f);
+                turn(t, t.H, u, p, act == Act::Up ? 1.0f : -1.0f);
                 break;
             }
             case Act::RollLeft:
             case Act::RollRight: {
                 v4 u = up(t);
-                turn(t.L, u, p, act == Act::RollLeft ? 1.0f : -1.0f);
+                turn(t, t.L, u, p, act == Act::RollLeft ? 1.0f : -1.0f);
                 break;
             }
             case Act::Around:
@@ -356,6 +364,14 @@ private:
                 t.stemColour = stemColour(t);
             }
                 break;
+            case Act::ScaleLength: t.length *= p ? float(*p) : 1.0f; break;
+            case Act::ScaleAngle: t.angleScale *= p ? float(*p) : 1.0f; break;
+            case Act::ScaleWidth:
+                t.width *= p ? float(*p) : 1.0f;
+                m_maxWidth = std::max(m_maxWidth, t.width);
+                if (t.lastSegment >= 0) m_segments.at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
+                break;
+            case Act::Gravity: bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f); break;
             case Act::Leaf:
             case Act::Petal:
             case Act::Sphere: surface(t, act, p, growth(i)); break;
@@ -417,13 +433,14 @@ private:
     }
 
     // ABOP 2.2: after each segment, bend H towards T by e |H x T|.
-    void bend(State& t) {
+    void bend(State& t) { bendTowards(t, m_tropism, m_tropismE); }
+    void bendTowards(State& t, const glm::vec3& towards, float e) {
         glm::vec3 h = toGlm(t.H);
-        glm::vec3 axis = glm::cross(h, m_tropism);
+        glm::vec3 axis = glm::cross(h, towards);
         float mag = glm::length(axis);
         if (mag < 1e-6f) return;
         axis /= mag;
-        float a = m_tropismE * mag;
+        float a = e * mag;
         t.H = fromGlm(rodrigues(h, axis, a));
         t.L = fromGlm(rodrigues(toGlm(t.L), axis, a));
     }

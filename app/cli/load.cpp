@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "app/presets.hpp"
+#include "core/import/import.hpp"
 
 namespace sprout::cli {
 namespace {
@@ -35,16 +36,32 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
     LoadedGrammar out;
     out.displayName = source;
     struct stat st{};
+    // FILE.l:System picks one system of a Fractint file.
+    std::string path = source, system;
+    if (::stat(source.c_str(), &st) != 0) {
+        if (size_t colon = source.rfind(':'); colon != std::string::npos && colon > 0) {
+            struct stat st2{};
+            if (::stat(source.substr(0, colon).c_str(), &st2) == 0) {
+                path = source.substr(0, colon);
+                system = source.substr(colon + 1);
+            }
+        }
+    }
     if (source == "-") {
         text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
         out.displayName = "<stdin>";
-    } else if (::stat(source.c_str(), &st) == 0) {
-        auto t = readFile(source, error);
+    } else if (::stat(path.c_str(), &st) == 0) {
+        auto t = readFile(path, error);
         if (!t) {
-            std::cerr << source << ": " << error << "\n";
+            std::cerr << path << ": " << error << "\n";
             return std::nullopt;
         }
-        text = std::move(*t);
+        // Lparser .ls and Fractint .l files are translated to .lsys first.
+        ImportResult imported = importByExtension(path, *t, system);
+        for (const auto& d : imported.diagnostics) std::cerr << formatDiagnostic(d, path) << "\n";
+        if (!imported.ok()) return std::nullopt;
+        if (imported.text != *t) out.displayName = path + " (as .lsys)";
+        text = std::move(imported.text);
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
         out.displayName = std::string(source) + (source.ends_with(".lsys") ? "" : ".lsys");

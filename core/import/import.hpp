@@ -1,0 +1,35 @@
+#pragma once
+// Importers: grammar files of other tools translated into Sprout's .lsys text, so that the
+// result can be read, edited and saved like any grammar.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+
+namespace sprout {
+
+struct ImportResult {
+    std::string text;                      // .lsys
+    std::vector<Diagnostic> diagnostics;   // problems in the source, with its line numbers
+    bool ok() const { return !hasErrors(diagnostics); }
+};
+
+// Lparser 5 (Laurens Lapré): the keyword format (`recursion`, `angle`, `thickness`,
+// `min_thickness`, `shape`, `switch_yz`, `color i r g b`, `axiom`, `rule X = ...`) and the
+// older positional one (recursion, angle, thickness, axiom, then `X=...` rules, `@`).
+ImportResult importLparser(std::string_view source, std::string_view name);
+
+// One system of a Fractint .l file (`Name { Angle n  Axiom ...  X=... }`).
+struct FractintSystem {
+    std::string name;
+    int line = 0;
+};
+std::vector<FractintSystem> listFractint(std::string_view source);
+ImportResult importFractint(std::string_view source, std::string_view system);
+
+// By file extension: .ls (Lparser), .l (Fractint: `system` picks one, default the first),
+// anything else is returned as it is.
+ImportResult importByExtension(std::string_view path, std::string_view source, std::string_view system = {});
+
+}  // namespace sprout
