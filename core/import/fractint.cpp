@@ -105,12 +105,9 @@ std::string translate(const std::string& s, int line, std::vector<Diagnostic>& d
                 break;
             }
             default:
-                if (std::isalpha(static_cast<unsigned char>(c))) out += c;  // a plain symbol
-                else if (std::isdigit(static_cast<unsigned char>(c))) continue;
-                else {
-                    diags.push_back({line, int(i), std::string("unexpected '") + c + "' in a Fractint string", Severity::Error});
-                    return out;
-                }
+                // A letter is a plain symbol; Fractint ignores anything else (stray quotes,
+                // commas and numbers are common in the collection).
+                if (std::isalpha(static_cast<unsigned char>(c))) out += c;
         }
     }
     return out;
@@ -143,7 +140,16 @@ ImportResult importFractint(std::string_view source, std::string_view system) {
     std::string axiom;
     std::map<char, std::string> rules;
     std::vector<char> order;
-    for (const auto& [line, text] : b->lines) {
+    for (const auto& [line, raw] : b->lines) {
+        // `Angle 6`, `angle=6;` and `axiom=FX` are all written in the collection.
+        std::string text = raw;
+        {
+            std::string l = lower(text);
+            size_t at = l.find_first_not_of(" \t");
+            for (const char* word : {"angle", "axiom"})
+                if (at != std::string::npos && l.compare(at, 5, word) == 0 && at + 5 < l.size() && l[at + 5] == '=')
+                    text[at + 5] = ' ';
+        }
         std::istringstream words(text);
         std::string key;
         words >> key;
