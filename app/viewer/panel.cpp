@@ -351,6 +351,28 @@ void drawPanel(App& app) {
     fileMenu(app);
     std::string title = app.state.path().empty() ? "untitled" : app.state.path().filename().string();
     ImGui::Text("%s%s", title.c_str(), app.state.dirty() ? " *" : "");
+    if (!app.state.importedFrom().empty()) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "(imported from %s; Save as writes .lsys)", app.state.importedFrom().filename().string().c_str());
+        // A Fractint file holds many systems: choose one.
+        const auto& systems = app.state.importSystems();
+        if (!systems.empty()) {
+            static int current = 0;
+            current = std::clamp(current, 0, int(systems.size()) - 1);
+            if (ImGui::BeginCombo("system", systems[size_t(current)].c_str())) {
+                for (int i = 0; i < int(systems.size()); ++i) {
+                    if (ImGui::Selectable(systems[size_t(i)].c_str(), i == current)) {
+                        current = i;
+                        std::string e;
+                        auto from = app.state.importedFrom();
+                        if (app.state.open(from, e, systems[size_t(i)])) app.frameOnNextPlant = true;
+                        else app.say(e);
+                    }
+                }
+                ImGui::EndCombo();
+            }
+        }
+    }
     if (ImGui::CollapsingHeader("Grammar", ImGuiTreeNodeFlags_DefaultOpen)) grammarSection(app);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/viewer/text_edit.hpp"
+#include "core/import/import.hpp"
 
 namespace sprout::viewer {
 namespace fs = std::filesystem;
@@ -188,18 +189,36 @@ void ViewerState::waitForPlant() {
     if (r->ok()) m_plant = r;
 }
 
-bool ViewerState::open(const fs::path& path, std::string& error) {
+bool ViewerState::open(const fs::path& path, std::string& error, const std::string& system) {
     auto text = readText(path);
     if (!text) {
         error = "cannot open " + path.string() + ": " + std::strerror(errno);
         return false;
     }
-    openText(std::move(*text), path);
+    ImportResult imported = importByExtension(path.string(), *text, system);
+    if (!imported.ok()) {
+        const Diagnostic& d = imported.diagnostics.front();
+        error = path.string() + ":" + std::to_string(d.line) + ":" + std::to_string(d.col) + ": " + d.message;
+        return false;
+    }
+    if (imported.text == *text) {
+        openText(std::move(*text), path);
+        m_importedFrom.clear();
+        m_importSystems.clear();
+        return true;
+    }
+    openText(std::move(imported.text));  // no path: saving asks for a .lsys name
+    m_importedFrom = path;
+    m_importSystems.clear();
+    if (path.extension() == ".l" || path.extension() == ".L")
+        for (const auto& s : listFractint(*text)) m_importSystems.push_back(s.name);
     return true;
 }
 
 void ViewerState::openText(std::string text, fs::path path) {
     m_path = std::move(path);
+    m_importedFrom.clear();
+    m_importSystems.clear();
     std::error_code ec;
     m_fileTime = m_path.empty() ? fs::file_time_type{} : fs::last_write_time(m_path, ec);
     m_displayStep = -1;

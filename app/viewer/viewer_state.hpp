@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/viewer/worker.hpp"
 
@@ -58,7 +59,12 @@ public:
 
     // --- files
     const std::filesystem::path& path() const { return m_path; }
-    bool open(const std::filesystem::path& path, std::string& error);
+    // Opens a .lsys file, or imports an Lparser .ls / Fractint .l one (`system` picks one
+    // of a Fractint file's systems); an import has no path until it is saved as .lsys.
+    bool open(const std::filesystem::path& path, std::string& error, const std::string& system = {});
+    // The file an import came from, and a Fractint file's systems to choose from.
+    const std::filesystem::path& importedFrom() const { return m_importedFrom; }
+    const std::vector<std::string>& importSystems() const { return m_importSystems; }
     void openText(std::string text, std::filesystem::path path = {});  // a preset or a restore
     bool save(std::string& error);
     bool saveAs(const std::filesystem::path& path, std::string& error);
@@ -86,6 +92,8 @@ private:
     float m_growFraction = 1.0f;
     std::shared_ptr<const Result> m_plant, m_latest;
     std::filesystem::path m_path;
+    std::filesystem::path m_importedFrom;
+    std::vector<std::string> m_importSystems;
     std::filesystem::file_time_type m_fileTime{};
     std::filesystem::path m_autosaveDir;
     std::chrono::steady_clock::time_point m_lastAutosave{};

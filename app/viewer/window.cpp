@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <iostream>
+#include <vector>
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
@@ -31,6 +32,12 @@ std::string cacheDir() {
 }
 
 render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
+
+// Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
+std::vector<std::string> g_dropped;
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
 
 struct Mouse {
     bool rotating = false, panning = false;
@@ -175,6 +182,7 @@ int runViewer(int argc, char** argv) {
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetDropCallback(window, onDrop);
     ImGui_ImplOpenGL3_Init("#version 330");
 
     // Open the file or preset.
@@ -243,6 +251,18 @@ int runViewer(int argc, char** argv) {
             app.needsRedraw = true;
         }
         app.thumbnails.poll(presetNames());
+        if (!g_dropped.empty()) {
+            std::string path = g_dropped.front();
+            g_dropped.clear();
+            if (app.state.dirty()) app.state.autosave(true);  // never lose the edits
+            std::string e;
+            if (app.state.open(path, e)) {
+                app.frameOnNextPlant = true;
+                app.say("opened " + path);
+            } else {
+                app.say(e);
+            }
+        }
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
