@@ -350,6 +350,8 @@ private:
                 break;
             case Act::WidthDec:
             case Act::WidthInc:
+                // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
+                if (p) m_absoluteWidths = true;
                 t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
                 m_maxWidth = std::max(m_maxWidth, t.width);
                 // Taper: the segment before ends as thick as the next one starts.
@@ -509,7 +511,7 @@ private:
         out.bounds.max = toGlm(m_max);
         // Automatic width: stems in proportion to the plant, 1/80 of its size at the base.
         float k = 1.0f;
-        if (m_autoWidth) {
+        if (m_autoWidth && !m_absoluteWidths) {
             glm::vec3 size = out.bounds.size();
             float extent = std::max({size.x, size.y, size.z});
             if (extent > 0) k = extent / 80.0f;
@@ -548,6 +550,7 @@ private:
     glm::vec3 m_tropism;
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
+    bool m_absoluteWidths = false;
     float m_maxWidth = 0;
 };
 

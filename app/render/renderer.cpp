@@ -372,7 +372,10 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     const float radius = std::max(0.5f * glm::length(size), 1e-4f);
     const glm::vec3 centre = s.bounds.empty ? glm::vec3(0) : s.bounds.centre();
     const float dist = glm::length(camera.eye() - centre);
-    const float near = std::max(1e-4f, (dist - radius * 3) * 0.9f), far = dist + radius * 4;
+    // The ground reaches further than the plant: keep all of it between the clip planes
+    // (llvmpipe left whole tiles unpainted where the ground crossed the near plane).
+    const float reach = std::max(radius, 1.3f * std::max({size.x, size.z, size.y}));
+    const float near = std::max(1e-3f * dist, (dist - reach * 1.5f) * 0.9f), far = dist + reach * 3;
     const glm::mat4 viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
     const bool curve = s.planarCurve;
     // Interactive frames of big plants skip the shadow pass, which costs a second draw.
@@ -421,7 +424,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     setUniform(s.backgroundProgram, "uTop", o.backgroundTop);
     setUniform(s.backgroundProgram, "uBottom", o.backgroundBottom);
     glBindVertexArray(s.emptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     glEnable(GL_DEPTH_TEST);
 
     const glm::vec3 eye = camera.eye();
