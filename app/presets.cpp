@@ -4,6 +4,7 @@ namespace sprout {
 
 std::optional<std::string_view> presetText(std::string_view name) {
     if (name.ends_with(".lsys")) name.remove_suffix(5);
+    else if (name.ends_with(".ifs")) name.remove_suffix(4);
     for (const auto& f : embeddedPresets())
         if (f.stem == name) return f.data;
     return std::nullopt;
@@ -11,8 +12,23 @@ std::optional<std::string_view> presetText(std::string_view name) {
 
 std::vector<std::string> presetNames() {
     std::vector<std::string> names;
-    for (const auto& f : embeddedPresets()) names.emplace_back(f.stem);
+    for (const auto& f : embeddedPresets())
+        if (f.fileName.ends_with(".lsys")) names.emplace_back(f.stem);
     return names;
+}
+
+std::vector<std::string> ifsPresetNames() {
+    std::vector<std::string> names;
+    for (const auto& f : embeddedPresets())
+        if (f.fileName.ends_with(".ifs")) names.emplace_back(f.stem);
+    return names;
+}
+
+bool isIfsPreset(std::string_view name) {
+    if (name.ends_with(".ifs")) name.remove_suffix(4);
+    for (const auto& f : embeddedPresets())
+        if (f.stem == name) return f.fileName.ends_with(".ifs");
+    return false;
 }
 
 }  // namespace sprout

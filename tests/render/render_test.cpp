@@ -9,6 +9,7 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
+#include "core/ifs.hpp"
 
 namespace sprout {
 namespace {
@@ -178,6 +179,29 @@ TEST(Render, GoldenImages) {
         EXPECT_LT(diff, 2.0) << name << ": mean difference per channel";
         EXPECT_LT(bad, img.width * img.height / 50) << name << ": pixels that differ a lot";
     }
+}
+
+// The Barnsley fern preset (an IFS) against its golden image, with 2 M points.
+TEST(Render, GoldenBarnsleyFern) {
+    auto parsed = parseIfs(*presetText("barnsley_fern"));
+    ASSERT_TRUE(parsed.ifs);
+    Ifs ifs = *parsed.ifs;
+    ifs.points = 2'000'000;
+    Density d;
+    ASSERT_TRUE(chaosGame(ifs, kW, kH, d, 2));
+    Image img{kW, kH, toneMap(d, ifs.colour, 0xF4F2EAFF), {}};
+    const std::string path = (std::filesystem::path(SPROUT_GOLDEN_DIR) / "barnsley_fern.png").string();
+    std::string error;
+    if (std::getenv("SPROUT_UPDATE_GOLDENS")) {
+        ASSERT_TRUE(writePng(path, img, error)) << error;
+        return;
+    }
+    Image golden;
+    ASSERT_TRUE(readPng(path, golden, error)) << error;
+    ASSERT_EQ(golden.rgba.size(), img.rgba.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) differ += std::abs(int(img.rgba[i + 1]) - int(golden.rgba[i + 1])) > 40;
+    EXPECT_LT(differ, kW * kH / 100);
 }
 
 TEST(Render, PngRoundTripKeepsPixelsAndText) {
