@@ -59,6 +59,10 @@ struct App {
     int jumpTo = -1;  // byte offset the editor's cursor goes to (a clicked error)
 
     void say(std::string message);
+    // Opens a file (edits in progress go to the autosave first) and frames it.
+    void openFile(const std::string& path);
+    // Saves to the current file, or asks for a name.
+    void save();
     void frame();  // camera on the current plant
     void resetView();
     void applySun();

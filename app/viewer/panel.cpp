@@ -241,11 +241,7 @@ void fileMenu(App& app) {
     if (ImGui::BeginMenuBar()) {
         if (ImGui::BeginMenu("File")) {
             if (ImGui::MenuItem("Open...", "Ctrl+O")) app.openPopup = true;
-            if (ImGui::MenuItem("Save", "Ctrl+S")) {
-                if (app.state.path().empty()) app.saveAsPopup = true;
-                else if (std::string e; !app.state.save(e)) app.say(e);
-                else app.say("saved " + app.state.path().string());
-            }
+            if (ImGui::MenuItem("Save", "Ctrl+S")) app.save();
             if (ImGui::MenuItem("Save as...")) app.saveAsPopup = true;
             if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.quitRequested = true;
             ImGui::EndMenu();
@@ -274,16 +270,7 @@ void fileMenu(App& app) {
             ImGui::EndPopup();
         }
     };
-    pathPopup(app.openPopup, "Open grammar", "Open", [&](const std::string& p) {
-        if (app.state.dirty()) app.state.autosave(true);
-        std::string e;
-        if (app.state.open(p, e)) {
-            app.frameOnNextPlant = true;
-            app.say("opened " + p);
-        } else {
-            app.say(e);
-        }
-    });
+    pathPopup(app.openPopup, "Open grammar", "Open", [&](const std::string& p) { app.openFile(p); });
     pathPopup(app.saveAsPopup, "Save grammar as", "Save", [&](const std::string& p) {
         std::string e;
         app.say(app.state.saveAs(p, e) ? "saved " + p : e);

@@ -53,6 +53,24 @@ void App::say(std::string message) {
     statusTime = glfwGetTime();
 }
 
+void App::openFile(const std::string& path) {
+    if (state.dirty()) state.autosave(true);  // never lose the edits
+    std::string e;
+    if (state.open(path, e)) {
+        frameOnNextPlant = true;
+        say("opened " + path);
+    } else {
+        say(e);
+    }
+}
+
+void App::save() {
+    std::string e;
+    if (state.path().empty()) saveAsPopup = true;
+    else if (!state.save(e)) say(e);
+    else say("saved " + state.path().string());
+}
+
 void App::applySun() {
     float az = glm::radians(view.sunAzimuth), el = glm::radians(view.sunElevation);
     view.render.sunDirection = {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
@@ -254,14 +272,7 @@ int runViewer(int argc, char** argv) {
         if (!g_dropped.empty()) {
             std::string path = g_dropped.front();
             g_dropped.clear();
-            if (app.state.dirty()) app.state.autosave(true);  // never lose the edits
-            std::string e;
-            if (app.state.open(path, e)) {
-                app.frameOnNextPlant = true;
-                app.say("opened " + path);
-            } else {
-                app.say(e);
-            }
+            app.openFile(path);
         }
 
         ImGui_ImplOpenGL3_NewFrame();
@@ -341,11 +352,7 @@ int runViewer(int argc, char** argv) {
             }
         }
         if (ImGui::IsKeyPressed(GLFW_KEY_F1)) app.showHelp = !app.showHelp;
-        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) {
-            if (app.state.path().empty()) app.saveAsPopup = true;
-            else if (std::string e; !app.state.save(e)) app.say(e);
-            else app.say("saved " + app.state.path().string());
-        }
+        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) app.save();
         if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) app.openPopup = true;
         if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) app.quitRequested = true;
         if (app.quitRequested) {
