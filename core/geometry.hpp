@@ -66,8 +66,6 @@ struct Geometry {
     // A curve in one plane without branches (Koch, Sierpinski, dragon): the renderer draws
     // it as a crisp 2D line, seen face-on with an orthographic camera.
     bool planarCurve = false;
-    glm::vec3 planeNormal{0, 0, 1};
-    float maxRadius = 0;  // the thickest stem, for levels of detail
 
     void clear();  // keeps capacity: re-interpretation reuses the buffers
 };

@@ -87,11 +87,6 @@ public:
     T& back() { return m_data[m_size - 1]; }
     const T& back() const { return m_data[m_size - 1]; }
     const T& front() const { return m_data[0]; }
-    // Appends one uninitialised element to be written in place (no temporary copy).
-    T& emplaceUninitialized() {
-        if (m_size == m_capacity) reserve(m_capacity ? m_capacity * 2 : 16);
-        return m_data[m_size++];
-    }
     void push_back(const T& v) {
         if (m_size == m_capacity) reserve(m_capacity ? m_capacity * 2 : 16);
         m_data[m_size++] = v;

@@ -183,7 +183,6 @@ public:
             m_byOrder[o] = lerpColour(st.barkColour, st.tipColour, t);
         m_state.length = float(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
         m_state.width = m_autoWidth ? 1.0f : float(st.width);
-        m_maxWidth = m_state.width;
         m_min = m_max = m_state.pos;
         m_state.stemColour = stemColour(m_state);
         // Runs of F can be batched when nothing changes from one segment to the next.
@@ -353,7 +352,6 @@ private:
                 // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
                 if (p) m_absoluteWidths = true;
                 t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
-                m_maxWidth = std::max(m_maxWidth, t.width);
                 // Taper: the segment before ends as thick as the next one starts.
                 if (t.lastSegment >= 0) m_segments.at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
                 break;
@@ -370,7 +368,6 @@ private:
             case Act::ScaleAngle: t.angleScale *= p ? float(*p) : 1.0f; break;
             case Act::ScaleWidth:
                 t.width *= p ? float(*p) : 1.0f;
-                m_maxWidth = std::max(m_maxWidth, t.width);
                 if (t.lastSegment >= 0) m_segments.at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
                 break;
             case Act::Gravity: bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f); break;
@@ -524,7 +521,6 @@ private:
                 c.endRadius *= k;
             }
         }
-        out.maxRadius = out.cylinders.empty() ? 0.0f : m_maxWidth * 0.5f * k;
         // A planar curve: every point in the z = 0 plane and no branches or surfaces.
         const float tol = 1e-4f * (1 + glm::length(out.bounds.size()));
         bool flat = std::fabs(out.bounds.min.z) < tol && std::fabs(out.bounds.max.z) < tol;
@@ -551,7 +547,6 @@ private:
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
     bool m_absoluteWidths = false;
-    float m_maxWidth = 0;
 };
 
 }  // namespace
@@ -578,7 +573,6 @@ void Geometry::clear() {
     polygons.clear();
     bounds = {};
     planarCurve = false;
-    maxRadius = 0;
 }
 
 std::uint32_t defaultPaletteColour(int index) { return kDefaultPalette[((index % 16) + 16) % 16]; }

@@ -23,9 +23,6 @@ constexpr int kShadowSize = 2048;
 // stems under about a pixel. Measured on llvmpipe (2 cores): 98 k segments drawn as lines
 // take 6 ms, as prisms baked on the CPU ~40 ms, as instanced cylinders read from a buffer
 // texture 1 s; so everything is baked into one mesh and drawn with the simplest shader.
-struct Lod {
-    float minRelativeRadius;
-};
 constexpr float kLevelThreshold[3] = {1.0f / 100, 1.0f / 300, 1.0f / 900};  // fine, medium, prism; below: line
 // Interactive detail (the window while editing a big plant) trades roundness for speed:
 // every triangle costs llvmpipe ~0.2 us of single-threaded setup.
@@ -239,8 +236,6 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : m(std::make_unique<Impl>()) {}
 Renderer::~Renderer() = default;
-
-int Renderer::samples() const { return m->samples; }
 
 void Renderer::setDetail(Quality detail) { m->detail = detail; }
 

@@ -65,7 +65,6 @@ public:
     std::vector<std::uint8_t> readPixels(int width, int height, unsigned source = 0) const;
 
     const RenderStats& stats() const { return m_stats; }
-    int samples() const;
 
 private:
     struct Impl;
