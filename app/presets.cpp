@@ -5,6 +5,7 @@ namespace sprout {
 std::optional<std::string_view> presetText(std::string_view name) {
     if (name.ends_with(".lsys")) name.remove_suffix(5);
     else if (name.ends_with(".ifs")) name.remove_suffix(4);
+    else if (name.ends_with(".forest")) name.remove_suffix(7);
     for (const auto& f : embeddedPresets())
         if (f.stem == name) return f.data;
     return std::nullopt;
@@ -21,6 +22,13 @@ std::vector<std::string> ifsPresetNames() {
     std::vector<std::string> names;
     for (const auto& f : embeddedPresets())
         if (f.fileName.ends_with(".ifs")) names.emplace_back(f.stem);
+    return names;
+}
+
+std::vector<std::string> scenePresetNames() {
+    std::vector<std::string> names;
+    for (const auto& f : embeddedPresets())
+        if (f.fileName.ends_with(".forest")) names.emplace_back(f.stem);
     return names;
 }
 

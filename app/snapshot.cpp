@@ -29,8 +29,11 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     t0 = std::chrono::steady_clock::now();
     interpret(*derivation.step(n), *grammar, {n, derivation.seed(), nullptr}, out.geometry);
     out.interpretMs = millisSince(t0);
+    return renderGeometry(o, out, error);
+}
 
-    t0 = std::chrono::steady_clock::now();
+bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error) {
+    auto t0 = std::chrono::steady_clock::now();
     auto context = HeadlessContext::create(o.width, o.height, error);
     if (!context) return false;
     render::Renderer renderer;

@@ -33,5 +33,7 @@ struct Snapshot {
 // False with a message (derivation refused, no OpenGL, ...) on failure.
 bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOptions& options, Snapshot& out,
                     std::string& error);
+// Renders `out.geometry` as it is (a forest scene, an imported model).
+bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error);
 
 }  // namespace sprout

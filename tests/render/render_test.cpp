@@ -9,6 +9,7 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
+#include "core/forest.hpp"
 #include "core/ifs.hpp"
 
 namespace sprout {
@@ -179,6 +180,36 @@ TEST(Render, GoldenImages) {
         EXPECT_LT(diff, 2.0) << name << ": mean difference per channel";
         EXPECT_LT(bad, img.width * img.height / 50) << name << ": pixels that differ a lot";
     }
+}
+
+// A small forest (3x3, no grass) against its golden image.
+TEST(Render, GoldenSmallForest) {
+    Forest f = *parseForest("scene: forest\ngrid: 3 3\nspacing: 30\nseed: 7\nspecies: tree_4_3 0.5\n"
+                            "species: bushy_tree_4_4 0.5\n").forest;
+    Snapshot shot;
+    ForestStats stats;
+    std::string error;
+    auto presets = [](const std::string& name) -> std::optional<std::string> {
+        auto t = presetText(name);
+        return t ? std::optional<std::string>(std::string(*t)) : std::nullopt;
+    };
+    ASSERT_TRUE(buildForest(f, presets, shot.geometry, stats, error)) << error;
+    EXPECT_EQ(stats.plants, 9);
+    SnapshotOptions o;
+    o.width = kW;
+    o.height = kH;
+    ASSERT_TRUE(renderGeometry(o, shot, error)) << error;
+    const std::string path = (std::filesystem::path(SPROUT_GOLDEN_DIR) / "forest.png").string();
+    if (std::getenv("SPROUT_UPDATE_GOLDENS")) {
+        ASSERT_TRUE(writePng(path, shot.image, error)) << error;
+        return;
+    }
+    Image golden;
+    ASSERT_TRUE(readPng(path, golden, error)) << error;
+    ASSERT_EQ(golden.rgba.size(), shot.image.rgba.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < golden.rgba.size(); i += 4) differ += std::abs(int(golden.rgba[i + 1]) - int(shot.image.rgba[i + 1])) > 60;
+    EXPECT_LT(differ, kW * kH / 50);
 }
 
 // The Barnsley fern preset (an IFS) against its golden image, with 2 M points.
