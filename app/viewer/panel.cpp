@@ -308,6 +308,7 @@ void helpWindow(App& app) {
             {"T", "turntable on / off"},   {"Space", "play / pause growth"}, {"Left / Right", "previous / next step"},
             {"Up / Down", "one more / one fewer iteration"}, {"N", "new specimen (another seed)"},
             {"P", "screenshot"},           {"Ctrl+S", "save"},              {"Ctrl+O", "open"},
+            {"A / D", "orbit left / right"}, {"W / S", "tilt up / down"},   {"Q / E", "zoom out / in"},
             {"Ctrl+Q", "quit"},            {"left drag", "orbit"},          {"right / middle drag", "pan"},
             {"wheel", "zoom"},
         };

@@ -346,6 +346,15 @@ int runViewer(int argc, char** argv) {
             if (ImGui::IsKeyPressed(GLFW_KEY_UP)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 0) + 1);
             if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 1) - 1);
             if (ImGui::IsKeyPressed(GLFW_KEY_N)) app.state.newSpecimen();
+            // Keyboard orbit and zoom: A / D turn around the plant, W / S tilt, Q / E zoom.
+            const float orbit = 60.0f * float(dt), zoom = std::pow(0.4f, float(dt));
+            if (ImGui::IsKeyDown(GLFW_KEY_A)) app.camera.yaw += orbit, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_D)) app.camera.yaw -= orbit, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_W)) app.camera.pitch = std::min(89.0f, app.camera.pitch + orbit), app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_S) && !io.KeyCtrl)
+                app.camera.pitch = std::max(-89.0f, app.camera.pitch - orbit), app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_Q)) app.camera.distance *= 1 / zoom, app.camera.orthoHeight *= 1 / zoom, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_E)) app.camera.distance *= zoom, app.camera.orthoHeight *= zoom, app.needsRedraw = true;
             if (ImGui::IsKeyPressed(GLFW_KEY_P)) {
                 const auto& s = kScreenshotSizes[app.view.screenshotSize];
                 app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);
