@@ -157,7 +157,8 @@ int runRender(int argc, char** argv) {
     }
     const std::string source = args.positionals()[0];
     if (source.ends_with(".ifs") || isIfsPreset(source)) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
-    if (source.ends_with(".forest") || std::find(scenePresetNames().begin(), scenePresetNames().end(), source) != scenePresetNames().end())
+    const auto scenes = scenePresetNames();
+    if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end())
         return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
     auto loaded = loadGrammar(source);
     if (!loaded) return 1;

@@ -47,6 +47,7 @@ struct App {
     bool showHelp = false;
     bool interacting = false;  // dragging: no shadows for big plants
     bool bigPlant = false;     // uploaded at interactive detail
+    unsigned imageTexture = 0; // an iterated function system's density image
     std::string status;        // last action's message
     double statusTime = 0;
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;

@@ -89,7 +89,7 @@ void grammarSection(App& app) {
             ImGui::TextWrapped("%s%s", d.severity == Severity::Warning ? "warning: " : "", ascii(d.message).c_str());
             ImGui::PopStyleColor();
         }
-        if (!latest->grammar && app.state.plant())
+        if (hasErrors(latest->diagnostics) && app.state.plant())
         {
             ImGui::PushStyleColor(ImGuiCol_Text, kDim);
             ImGui::TextWrapped("(the last good plant stays on screen until the text is fixed)");
@@ -197,7 +197,9 @@ void viewSection(App& app) {
 }
 
 void presetSection(App& app) {
-    const auto names = presetNames();
+    auto names = presetNames();
+    for (const auto& n : ifsPresetNames()) names.push_back(n);
+    for (const auto& n : scenePresetNames()) names.push_back(n);
     const float cell = 96;
     const ImGuiStyle& style = ImGui::GetStyle();
     const float itemWidth = cell + 2 * style.FramePadding.x + style.ItemSpacing.x;
@@ -368,7 +370,10 @@ void drawPanel(App& app) {
     if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) presetSection(app);
     // Statistics line.
     ImGui::Separator();
-    if (auto p = app.state.plant()) {
+    auto p = app.state.plant();
+    if (p && p->image) {
+        ImGui::TextColored(kDim, "%s points of the chaos game in %.0f ms", withThousands(p->modules).c_str(), p->deriveMs);
+    } else if (p && p->geometry) {
         std::size_t leaves = 0;
         for (const auto& s : p->geometry->surfaces) leaves += s.kind == SurfaceKind::Leaf;
         ImGui::TextColored(kDim, "%s modules, %zu segments, %zu leaves, %zu polygons", withThousands(p->modules).c_str(),

@@ -13,7 +13,9 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <vector>
 
 #include "app/cli/args.hpp"
@@ -122,6 +124,16 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
     img.height = height;
     render::Camera cam = camera;
     auto plant = state.plant();
+    if (plant && plant->image) {  // an iterated function system: its own image
+        img.width = plant->imageWidth;
+        img.height = plant->imageHeight;
+        img.rgba = *plant->image;
+        img.text.emplace_back("ifs", state.text());
+        std::string error;
+        bool ok = writePng(path, img, error);
+        say(ok ? "saved " + path : path + ": " + error);
+        return ok;
+    }
     if (bigPlant && plant) {  // a picture gets full detail
         renderer.setDetail(render::Quality::Still);
         renderer.upload(*plant->geometry);
@@ -203,6 +215,16 @@ int runViewer(int argc, char** argv) {
     glfwSetDropCallback(window, onDrop);
     ImGui_ImplOpenGL3_Init("#version 330");
 
+    // Forest scenes find their species among the presets and beside the scene's file.
+    app.state.worker().speciesSource = [&app](const std::string& name) -> std::optional<std::string> {
+        for (const auto& base : {app.state.path(), app.state.importedFrom()}) {
+            if (base.empty()) continue;
+            std::ifstream in(base.parent_path() / name, std::ios::binary);
+            if (in) return std::string(std::istreambuf_iterator<char>(in), {});
+        }
+        if (auto t = presetText(name)) return std::string(*t);
+        return std::nullopt;
+    };
     // Open the file or preset.
     if (std::filesystem::exists(source)) {
         if (!app.state.open(source, error)) {
@@ -235,7 +257,17 @@ int runViewer(int argc, char** argv) {
         auto frameStart = std::chrono::steady_clock::now();
 
         auto previous = app.state.plant();
-        if (app.state.update()) {
+        if (app.state.update() && app.state.plant()->image) {
+            // An iterated function system: its density image goes to a texture.
+            auto p = app.state.plant();
+            if (!app.imageTexture) glGenTextures(1, &app.imageTexture);
+            glBindTexture(GL_TEXTURE_2D, app.imageTexture);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, p->imageWidth, p->imageHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE, p->image->data());
+            app.needsRedraw = true;
+        } else if (app.state.plant() && app.state.plant() != previous && app.state.plant()->geometry) {
             auto t0 = std::chrono::steady_clock::now();
             const Geometry& g = *app.state.plant()->geometry;
             // Small edits keep the view; a plant of another kind or size is framed anew.
@@ -268,7 +300,15 @@ int runViewer(int argc, char** argv) {
             app.camera.yaw += app.view.turntableSpeed * float(dt);
             app.needsRedraw = true;
         }
-        app.thumbnails.poll(presetNames());
+        {
+            static const std::vector<std::string> all = [] {
+                auto n = presetNames();
+                for (const auto& x : ifsPresetNames()) n.push_back(x);
+                for (const auto& x : scenePresetNames()) n.push_back(x);
+                return n;
+            }();
+            app.thumbnails.poll(all);
+        }
         if (!g_dropped.empty()) {
             std::string path = g_dropped.front();
             g_dropped.clear();
@@ -375,9 +415,25 @@ int runViewer(int argc, char** argv) {
         // longer than a frame on a big plant; the panel stays responsive either way).
         int fw = 0, fh = 0;
         glfwGetFramebufferSize(window, &fw, &fh);
-        ImGui::Render();
         const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
-        if (app.state.plant() && fw > 0 && fh > 0) {
+        const bool showImage = app.state.plant() && app.state.plant()->image && app.imageTexture;
+        if (showImage) {  // the density image, fitted to the view
+            auto p = app.state.plant();
+            float scale = std::min(float(vw) / float(p->imageWidth), float(vh) / float(p->imageHeight));
+            ImVec2 size(float(p->imageWidth) * scale, float(p->imageHeight) * scale);
+            ImGui::SetNextWindowPos(ImVec2(float(app.panelWidth) + (float(vw) - size.x) / 2, (float(vh) - size.y) / 2));
+            ImGui::SetNextWindowSize(size);
+            ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+            ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0);
+            ImGui::Begin("##ifs", nullptr,
+                         ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                             ImGuiWindowFlags_NoBackground);
+            ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(app.imageTexture)), size);
+            ImGui::End();
+            ImGui::PopStyleVar(2);
+        }
+        ImGui::Render();
+        if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
             auto t0 = std::chrono::steady_clock::now();
             render::RenderOptions o = app.view.render;
             o.quality = app.interacting || app.state.playing() || app.view.turntable ? render::Quality::Interactive
@@ -390,8 +446,9 @@ int runViewer(int argc, char** argv) {
         } else {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fw, fh);
-            glClearColor(0.9f, 0.9f, 0.88f, 1);
+            glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
             glClear(GL_COLOR_BUFFER_BIT);
+            if (app.state.plant()) ++framesWithPlant;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);

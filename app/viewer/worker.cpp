@@ -1,6 +1,10 @@
 #include "app/viewer/worker.hpp"
 
 #include <chrono>
+#include <sstream>
+
+#include "core/forest.hpp"
+#include "core/ifs.hpp"
 
 namespace sprout::viewer {
 namespace {
@@ -67,9 +71,76 @@ void Worker::run() {
     }
 }
 
+namespace {
+
+// An .ifs text: its first line that is not a comment is seven numbers (no '->').
+bool looksLikeIfs(const std::string& text) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        if (line.find("->") != std::string::npos) return false;
+        std::istringstream words(line);
+        double v;
+        int n = 0;
+        while (words >> v) ++n;
+        return n == 7;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<Result> out) {
+    ForestParseResult parsed = parseForest(r.text);
+    out->diagnostics = parsed.diagnostics;
+    if (!parsed.forest) return out;
+    if (r.seed) parsed.forest->seed = *r.seed;
+    auto geometry = std::make_shared<Geometry>();
+    ForestStats stats;
+    auto t0 = std::chrono::steady_clock::now();
+    std::string error;
+    auto source = speciesSource ? speciesSource : [](const std::string&) { return std::optional<std::string>(); };
+    if (!buildForest(*parsed.forest, source, *geometry, stats, error, limits)) {
+        out->message = error;
+        return out;
+    }
+    out->deriveMs = millisSince(t0);
+    out->modules = stats.segments;
+    out->seed = parsed.forest->seed;
+    out->geometry = std::move(geometry);
+    return out;
+}
+
+std::shared_ptr<Result> Worker::processIfs(const Request& r, std::shared_ptr<Result> out) {
+    IfsParseResult parsed = parseIfs(r.text);
+    out->diagnostics = parsed.diagnostics;
+    if (!parsed.ifs) return out;
+    Ifs ifs = *parsed.ifs;
+    if (r.seed) ifs.seed = *r.seed;
+    auto t0 = std::chrono::steady_clock::now();
+    Density d;
+    // One thread: the other core keeps the window responsive.
+    if (!chaosGame(ifs, 1024, 768, d, 1, &m_cancel)) {
+        out->cancelled = true;
+        return out;
+    }
+    out->deriveMs = millisSince(t0);
+    out->modules = ifs.points;
+    out->seed = ifs.seed;
+    out->image = std::make_shared<const std::vector<std::uint8_t>>(toneMap(d, ifs.colour, 0xF4F2EAFF));
+    out->imageWidth = d.width;
+    out->imageHeight = d.height;
+    return out;
+}
+
 std::shared_ptr<Result> Worker::process(const Request& r) {
     auto out = std::make_shared<Result>();
     out->generation = r.generation;
+    // Forest scenes and iterated function systems are opened in the same editor.
+    if (isForestScene(r.text)) return processScene(r, out);
+    if (looksLikeIfs(r.text)) return processIfs(r, out);
     auto t0 = std::chrono::steady_clock::now();
     if (r.text != m_cachedText || !m_cachedGrammar) {
         ParseResult parsed = parse(r.text);

@@ -4,6 +4,7 @@
 // in progress, and results come back as immutable shared values.
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -39,9 +40,12 @@ struct Result {
     float growFraction = 1.0f;
     std::uint64_t seed = 0;
     std::shared_ptr<const Geometry> geometry;  // null unless the plant was made
+    // An iterated function system is drawn as an image instead (RGBA, top row first).
+    std::shared_ptr<const std::vector<std::uint8_t>> image;
+    int imageWidth = 0, imageHeight = 0;
     std::uint64_t modules = 0;
     double parseMs = 0, deriveMs = 0, interpretMs = 0;
-    bool ok() const { return geometry != nullptr; }
+    bool ok() const { return geometry != nullptr || image != nullptr; }
 };
 
 class Worker {
@@ -64,10 +68,14 @@ public:
     std::shared_ptr<const Result> waitForResult(std::uint64_t generation);
 
     DeriveLimits limits;  // set before posting
+    // Where a forest scene's species come from (presets, files); set before posting.
+    std::function<std::optional<std::string>(const std::string&)> speciesSource;
 
 private:
     void run();
     std::shared_ptr<Result> process(const Request& r);
+    std::shared_ptr<Result> processScene(const Request& r, std::shared_ptr<Result> out);
+    std::shared_ptr<Result> processIfs(const Request& r, std::shared_ptr<Result> out);
 
     std::mutex m_mutex;
     std::condition_variable m_wake, m_done;
