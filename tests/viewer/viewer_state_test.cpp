@@ -226,3 +226,30 @@ TEST(ViewerState, SmoothGrowthDrawsTheNewStepPartlyGrown) {
 
 }  // namespace
 }  // namespace sprout::viewer
+
+namespace sprout::viewer {
+namespace {
+
+TEST(ViewerState, IteratedFunctionSystemsAndForestsOpenInTheSameEditor) {
+    ViewerState s(tempDir("ifs"));
+    s.openText("0 0 0 0.16 0 0 0.01\n0.85 0.04 -0.04 0.85 0 1.6 0.85\n0.2 -0.26 0.23 0.22 0 1.6 0.07\n"
+               "-0.15 0.28 0.26 0.24 0 0.44 0.07\npoints: 100000\n");
+    s.waitForPlant();
+    ASSERT_TRUE(s.plant());
+    ASSERT_TRUE(s.plant()->image);
+    EXPECT_EQ(s.plant()->image->size(), std::size_t(s.plant()->imageWidth) * std::size_t(s.plant()->imageHeight) * 4);
+    s.worker().speciesSource = [](const std::string& name) -> std::optional<std::string> {
+        if (name == "t") return std::string("n: 2\naxiom: F\nF -> F[+F]F\n");
+        return std::nullopt;
+    };
+    s.setText("scene: forest\ngrid: 2 2\nspecies: t 1\n");
+    s.waitForPlant();
+    ASSERT_TRUE(s.plant()->geometry);
+    EXPECT_EQ(s.plant()->geometry->cylinders.size(), 4u * 9u);
+    s.setText("scene: forest\ngrid: 2 2\nspecies: oak 1\n");
+    s.waitForPlant();
+    EXPECT_EQ(s.latest()->message, "no preset or file named 'oak'");
+}
+
+}  // namespace
+}  // namespace sprout::viewer
