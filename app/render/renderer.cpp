@@ -52,12 +52,9 @@ struct Renderer::Impl {
     GLuint msaaFbo = 0, msaaColour = 0, msaaDepth = 0;
     int msaaWidth = 0, msaaHeight = 0, msaaSamples = 0, samples = 1;
     int curveBatch = 1;
-    CylinderMesh stemMeshes[3];
-    SurfaceMesh leaf, petal, sphere, smallSphere;
-    BakedMesh scratch;  // reused between uploads
 
     // What was uploaded.
-    std::size_t bakedIndices = 0, lineCount = 0, curveCount = 0, levels[4] = {0, 0, 0, 0};
+    std::size_t bakedIndices = 0, lineCount = 0, curveCount = 0;
     Bounds bounds;
     bool planarCurve = false;
     Quality detail = Quality::Still;
@@ -73,14 +70,6 @@ struct Renderer::Impl {
         };
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
-
-        stemMeshes[0] = makeCylinder(10, 2);
-        stemMeshes[1] = makeCylinder(6, 0);
-        stemMeshes[2] = makePrism(3);
-        leaf = makeLeaf();
-        petal = makePetal();
-        sphere = makeSphere(16, 10);
-        smallSphere = makeSphere(6, 3);
 
         // Baked triangles: position, normal, colour (polygon.vert's layout).
         glGenVertexArrays(1, &baked.vao);
@@ -251,27 +240,36 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
     return m->build(error);
 }
 
-void Renderer::upload(const Geometry& g) {
-    Impl& s = *m;
-    s.bounds = g.bounds;
-    s.planarCurve = g.planarCurve;
-    for (auto& l : s.levels) l = 0;
-    s.curveCount = s.lineCount = 0;
-    BakedMesh& b = s.scratch;
-    b.clear();
+namespace {
 
+// The unit meshes baking uses, made once (thread-safe: prepare() runs on worker threads).
+struct UnitMeshes {
+    CylinderMesh stems[3] = {makeCylinder(10, 2), makeCylinder(6, 0), makePrism(3)};
+    SurfaceMesh leaf = makeLeaf(), petal = makePetal(), sphere = makeSphere(16, 10), smallSphere = makeSphere(6, 3);
+};
+const UnitMeshes& unitMeshes() {
+    static const UnitMeshes m;
+    return m;
+}
+
+}  // namespace
+
+void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out) {
+    const UnitMeshes& meshes = unitMeshes();
+    out = PreparedScene();
+    out.bounds = g.bounds;
+    out.planarCurve = g.planarCurve;
+    out.cylinders = g.cylinders.size();
+    out.surfaces = g.surfaces.size();
+    BakedMesh& b = out.baked;
     const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
     const float extent = std::max({size.x, size.y, size.z, 1e-6f});
-    std::vector<float> lineData;
     if (g.planarCurve) {
         // A curve: every segment a screen-space ribbon.
-        s.curveCount = g.cylinders.size();
-        glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
-        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(std::max<std::size_t>(s.curveCount, 1) * sizeof(CylinderInstance)),
-                     g.cylinders.data(), GL_STATIC_DRAW);
+        out.curve.assign(g.cylinders.begin(), g.cylinders.end());
     } else {
         // Pick the levels: the finest the vertex budget allows.
-        float scale = s.detail == Quality::Interactive ? kInteractiveScale : 1.0f;
+        float scale = detail == Quality::Interactive ? kInteractiveScale : 1.0f;
         auto levelOf = [&](const CylinderInstance& c) {
             float rel = std::max(c.startRadius, c.endRadius) / extent;
             for (int l = 0; l < 3; ++l)
@@ -282,18 +280,18 @@ void Renderer::upload(const Geometry& g) {
             std::size_t verts = 0;
             for (const auto& c : g.cylinders) {
                 int l = levelOf(c);
-                verts += l < 3 ? s.stemMeshes[l].vertices.size() : 0;
+                verts += l < 3 ? meshes.stems[l].vertices.size() : 0;
             }
             if (verts <= kVertexBudget || scale > 1e6f) break;
         }
         std::size_t reserve = 0;
         for (const auto& c : g.cylinders) {
             int l = levelOf(c);
-            ++s.levels[l];
-            reserve += l < 3 ? s.stemMeshes[l].vertices.size() : 0;
+            ++out.levels[l];
+            reserve += l < 3 ? meshes.stems[l].vertices.size() : 0;
         }
         b.vertices.reserve(reserve);
-        lineData.reserve(s.levels[3] * 8);
+        out.lines.reserve(out.levels[3] * 8);
         // Stems that continue straight on with the same radius and colour (F -> FF makes long
         // runs) are drawn as one tube or line: the same picture from a fraction of the primitives.
         auto continues = [](const CylinderInstance& a, const CylinderInstance& c) {
@@ -308,12 +306,12 @@ void Renderer::upload(const Geometry& g) {
         auto emit = [&] {
             if (runLevel < 0) return;
             if (runLevel < 3) {
-                bakeCylinder(run, s.stemMeshes[runLevel], b);
+                bakeCylinder(run, meshes.stems[runLevel], b);
             } else {
                 std::uint32_t col = run.colour;
                 float cf;
                 std::memcpy(&cf, &col, 4);
-                lineData.insert(lineData.end(), {run.start.x, run.start.y, run.start.z, cf, run.end.x, run.end.y, run.end.z, cf});
+                out.lines.insert(out.lines.end(), {run.start.x, run.start.y, run.start.z, cf, run.end.x, run.end.y, run.end.z, cf});
             }
             runLevel = -1;
         };
@@ -329,32 +327,46 @@ void Renderer::upload(const Geometry& g) {
             runLevel = l;
         }
         emit();
-        s.lineCount = lineData.size() / 8;
     }
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
     for (const auto& x : g.surfaces) {
-        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? s.leaf
-                                  : x.kind == SurfaceKind::Petal ? s.petal
-                                  : x.size < extent / 60         ? s.smallSphere
-                                                                 : s.sphere;
+        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? meshes.leaf
+                                  : x.kind == SurfaceKind::Petal ? meshes.petal
+                                  : x.size < extent / 60         ? meshes.smallSphere
+                                                                 : meshes.sphere;
         bakeSurface(x, mesh, b);
     }
     bakePolygons(g.polygons, b);
+}
+
+void Renderer::upload(const Geometry& g) {
+    PreparedScene p;
+    prepare(g, m->detail, p);
+    upload(p);
+}
+
+void Renderer::upload(const PreparedScene& p) {
+    Impl& s = *m;
+    s.bounds = p.bounds;
+    s.planarCurve = p.planarCurve;
+    s.curveCount = p.curve.size();
+    if (s.curveCount) {
+        glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
+        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(s.curveCount * sizeof(CylinderInstance)), p.curve.data(), GL_STATIC_DRAW);
+    }
     glBindVertexArray(s.baked.vao);
     glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(b.vertices.size() * sizeof(BakedVertex)), b.vertices.data(), GL_STATIC_DRAW);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(b.indices.size() * 4), b.indices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(p.baked.indices.size() * 4), p.baked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
-    s.bakedIndices = b.indices.size();
+    s.bakedIndices = p.baked.indices.size();
+    s.lineCount = p.lines.size() / 8;
     glBindBuffer(GL_ARRAY_BUFFER, s.lines.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lineData.size() * 4), lineData.data(), GL_STATIC_DRAW);
-    // Keep the scratch buffers' memory only while they are modest.
-    if (b.vertices.capacity() > (1u << 20)) b = BakedMesh();
-
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.lines.size() * 4), p.lines.data(), GL_STATIC_DRAW);
     m_stats = {};
-    m_stats.cylinders = g.cylinders.size();
-    m_stats.surfaces = g.surfaces.size();
-    for (int l = 0; l < 4; ++l) m_stats.levels[l] = s.levels[l];
+    m_stats.cylinders = p.cylinders;
+    m_stats.surfaces = p.surfaces;
+    for (int l = 0; l < 4; ++l) m_stats.levels[l] = p.levels[l];
 }
 
 void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,

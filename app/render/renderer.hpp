@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/render/bake.hpp"
 #include "app/render/camera.hpp"
 #include "core/geometry.hpp"
 
@@ -40,6 +41,19 @@ struct RenderStats {
     bool curve = false;                 // drawn as a 2D curve
 };
 
+// A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread
+// that owns the context. The viewer prepares on its worker so that a big plant's arrival
+// costs the window only buffer copies.
+struct PreparedScene {
+    BakedMesh baked;                     // stems, leaves, petals, spheres, polygons
+    std::vector<float> lines;            // the thinnest stems: x y z colour, two per line
+    std::vector<CylinderInstance> curve; // planar curves: ribbons drawn from these
+    std::size_t levels[4] = {0, 0, 0, 0};
+    std::size_t cylinders = 0, surfaces = 0;
+    Bounds bounds;
+    bool planarCurve = false;
+};
+
 class Renderer {
 public:
     Renderer();
@@ -52,6 +66,9 @@ public:
     bool init(ProcLoader loader, std::string& error);
     // Copies the plant to the GPU, baked into triangles and lines at the current detail.
     void upload(const Geometry& geometry);
+    void upload(const PreparedScene& scene);
+    // Bakes a plant at the given detail; thread-safe, no GL.
+    static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out);
     // Detail of the next upload: Interactive draws more thin stems as lines (the window on a
     // big plant); Still (the default) is for pictures.
     void setDetail(Quality detail);

@@ -35,6 +35,9 @@ std::string cacheDir() {
 
 render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
 
+// Plants with more segments are shown at interactive detail in the window.
+constexpr std::size_t kBigPlant = 20000;
+
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
 void onDrop(GLFWwindow*, int count, const char** paths) {
@@ -140,8 +143,8 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
     }
     img.rgba = renderer.renderImage(cam, width, height, view.render);
     if (bigPlant && plant) {
-        renderer.setDetail(render::Quality::Interactive);
-        renderer.upload(*plant->geometry);
+        if (plant->prepared) renderer.upload(*static_cast<const render::PreparedScene*>(plant->prepared.get()));
+        else renderer.upload(*plant->geometry);
     }
     img.text.emplace_back("lsys", state.text());
     img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
@@ -215,6 +218,11 @@ int runViewer(int argc, char** argv) {
     glfwSetDropCallback(window, onDrop);
     ImGui_ImplOpenGL3_Init("#version 330");
 
+    app.state.worker().prepare = [](const Geometry& g) -> std::shared_ptr<const void> {
+        auto p = std::make_shared<render::PreparedScene>();
+        render::Renderer::prepare(g, g.cylinders.size() > kBigPlant ? render::Quality::Interactive : render::Quality::Still, *p);
+        return p;
+    };
     // Forest scenes find their species among the presets and beside the scene's file.
     app.state.worker().speciesSource = [&app](const std::string& name) -> std::optional<std::string> {
         for (const auto& base : {app.state.path(), app.state.importedFrom()}) {
@@ -278,11 +286,11 @@ int runViewer(int argc, char** argv) {
                 if (p.planarCurve != g.planarCurve || b > 2 * a || a > 2 * b || moved > 0.5f * std::max(a, b))
                     app.frameOnNextPlant = true;
             }
-            // Big plants are edited at interactive detail (more thin stems as lines);
-            // screenshots re-upload at full detail.
-            app.bigPlant = g.cylinders.size() > 20000;
-            app.renderer.setDetail(app.bigPlant ? render::Quality::Interactive : render::Quality::Still);
-            app.renderer.upload(g);
+            // Big plants are edited at interactive detail (more thin stems as lines), baked on
+            // the worker; screenshots re-upload at full detail.
+            app.bigPlant = g.cylinders.size() > kBigPlant;
+            if (auto prepared = app.state.plant()->prepared) app.renderer.upload(*static_cast<const render::PreparedScene*>(prepared.get()));
+            else app.renderer.upload(g);
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (app.frameOnNextPlant) {
                 app.frame();

@@ -40,6 +40,7 @@ struct Result {
     float growFraction = 1.0f;
     std::uint64_t seed = 0;
     std::shared_ptr<const Geometry> geometry;  // null unless the plant was made
+    std::shared_ptr<const void> prepared;      // what Worker::prepare made of the geometry
     // An iterated function system is drawn as an image instead (RGBA, top row first).
     std::shared_ptr<const std::vector<std::uint8_t>> image;
     int imageWidth = 0, imageHeight = 0;
@@ -68,6 +69,9 @@ public:
     std::shared_ptr<const Result> waitForResult(std::uint64_t generation);
 
     DeriveLimits limits;  // set before posting
+    // Work for the worker after interpretation (the window bakes the plant for drawing here,
+    // so a big plant's arrival costs the window only buffer copies); set before posting.
+    std::function<std::shared_ptr<const void>(const Geometry&)> prepare;
     // Where a forest scene's species come from (presets, files); set before posting.
     std::function<std::optional<std::string>(const std::string&)> speciesSource;
 
