@@ -2,6 +2,7 @@
 // Sprout's turtle does the same way (see the table in translate()).
 #include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <set>
 #include <sstream>
 
@@ -10,11 +11,12 @@
 namespace sprout {
 namespace {
 
-// Lparser's 16-colour table is not documented; this one keeps the roles its example files
-// give the indices: 8 is leaf green and 12 trunk brown (c(8) leaves, c(12) trunks).
+// Lparser's 16-colour table is not documented; this one keeps the roles its examples give
+// the indices: c(12) "close to that of the stem" (seed document 001), c(4) and c(8) leaves,
+// the indices around them greens (colour steps with c walk through them), 13-15 flowers.
 const char* kLparserPalette =
-    "#5a3d22 #3f6b25 #4e8f2e #2f7f7f #b23a2a #9c4f9c #8a5a2b #b0b0a8 "
-    "#5d9a3a #4a78c8 #8fd16a #7fd0d0 #7a5230 #e08fd0 #f0d040 #f5f5f0";
+    "#5a3d22 #3f6b25 #4e8f2e #5e9e34 #4f8a2c #6aa83a #7a5a30 #8fbf4a "
+    "#5d9a3a #79b544 #8fd16a #a6cb66 #7a5230 #e08fd0 #f0d040 #f5f5f0";
 
 std::string trimmed(std::string_view s) {
     size_t a = 0, b = s.size();
@@ -46,7 +48,17 @@ struct Translator {
             char c = s[i];
             if (std::isspace(static_cast<unsigned char>(c))) continue;
             std::string param;
-            if (i + 1 < s.size() && s[i + 1] == '(') {
+            // Text copied from documents sometimes lost the '(' of a parameter: `".7)` for
+            // `"(.7)`. A number closed by ')' right after a command is read as its parameter.
+            if (i + 1 < s.size() && s[i + 1] != '(' && std::strchr("\"';:?!~t+-&^<>c", c)) {
+                size_t j = i + 1;
+                while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.' || s[j] == '-')) ++j;
+                if (j > i + 1 && j < s.size() && s[j] == ')') {
+                    param = std::string(s.substr(i + 1, j - i - 1));
+                    i = j;
+                }
+            }
+            if (param.empty() && i + 1 < s.size() && s[i + 1] == '(') {
                 size_t close = s.find(')', i + 2);
                 if (close == std::string_view::npos) {
                     diags->push_back({line, int(i + 1), "this '(' is never closed", Severity::Error});
@@ -65,8 +77,11 @@ struct Translator {
                     break;
                 case 'Z': out += param.empty() ? "@L(0.5)F@L(2)" : "F((" + param + ")/2)"; break;  // half step
                 case 'z': out += param.empty() ? "@L(0.5)f@L(2)" : "f((" + param + ")/2)"; break;
-                case '<': out += plain("\\"); break;  // roll left
-                case '>': out += plain("/"); break;   // roll right
+                // Lparser's roll turns the other way round from cpfg's: with '>' as cpfg's '\'
+                // the seed documents' "&(-90)>(90)-(90)" leaves the turtle facing up, as they
+                // say it does, and files without it grow upwards too.
+                case '<': out += plain("/"); break;
+                case '>': out += plain("\\"); break;
                 case '%': out += "/(180)"; break;
                 case '|': out += "|"; break;
                 case '$': out += "$"; break;
@@ -119,6 +134,7 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
     std::string raw;
     int number = 0;
     int positional = 0;  // the older format: values by position
+    bool lastWasString = false, lastWasAxiom = false;
     while (std::getline(in, raw)) {
         ++number;
         tr.line = number;
@@ -157,6 +173,19 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             continue;
         }
         double v = 0;
+        // A line that starts indented and is not a keyword continues the previous axiom or
+        // rule (listings in documents wrap long rules).
+        const bool indented = !raw.empty() && (raw[0] == ' ' || raw[0] == '\t');
+        static const std::set<std::string> keywords = {"recursion", "angle", "thickness", "min_thickness", "shape",
+                                                       "switch_yz", "switch_zy", "no_wait", "bounding_box", "seed",
+                                                       "color", "axiom", "rule"};
+        if (indented && !keywords.count(key) && lastWasString) {
+            if (rules.empty() || lastWasAxiom) axiom += line;
+            else rules.back().succ += line;
+            continue;
+        }
+        lastWasString = key == "axiom" || key == "rule";
+        lastWasAxiom = key == "axiom";
         if (key == "recursion") {
             number_(v);
             recursion = int(v);
@@ -164,8 +193,8 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             number_(tr.angle);
         } else if (key == "thickness") {
             number_(thickness);
-        } else if (key == "min_thickness" || key == "shape" || key == "switch_yz" || key == "no_wait" ||
-                   key == "bounding_box" || key == "seed") {
+        } else if (key == "min_thickness" || key == "shape" || key == "switch_yz" || key == "switch_zy" ||
+                   key == "no_wait" || key == "bounding_box" || key == "seed") {
             // Output and viewer settings of Lparser: nothing to translate.
         } else if (key == "color") {
             int i = 0, red = 0, green = 0, blue = 0;
@@ -193,7 +222,7 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             }
             rules.push_back({pred[0], trimmed(std::string_view(rest).substr(eq + 1)), number});
         } else {
-            r.diagnostics.push_back({number, 1, "unknown Lparser keyword '" + key + "'", Severity::Error});
+            r.diagnostics.push_back({number, 1, "unknown Lparser keyword '" + key + "' (ignored)", Severity::Warning});
         }
     }
     if (axiom.empty()) r.diagnostics.push_back({std::max(number, 1), 1, "the file has no axiom", Severity::Error});
@@ -208,8 +237,27 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
         for (const auto& c : palette) p += (p.empty() ? "" : " ") + c;
         return p;
     }()) << "\nseed: 1\n";
+    // Lparser closes what a string leaves open; listings copied from documents drop a ']'
+    // now and then. Balance each string, with a warning.
+    auto balance = [&](std::string text, int line) {
+        int depth = 0;
+        std::string out;
+        for (char c : text) {
+            if (c == ']' && depth == 0) {
+                r.diagnostics.push_back({line, 1, "a ']' closes no branch (dropped)", Severity::Warning});
+                continue;
+            }
+            depth += (c == '[') - (c == ']');
+            out += c;
+        }
+        if (depth > 0) {
+            r.diagnostics.push_back({line, 1, std::to_string(depth) + " unclosed '[' (closed at the end)", Severity::Warning});
+            out.append(size_t(depth), ']');
+        }
+        return out;
+    };
     tr.line = axiomLine;
-    std::string ax = tr.translate(axiom);
+    std::string ax = balance(tr.translate(axiom), axiomLine);
     std::vector<std::string> lines;
     for (const Rule& rule : rules) {
         tr.line = rule.line;
@@ -218,7 +266,7 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             r.diagnostics.push_back({rule.line, 6, "a rule cannot rewrite a bracket", Severity::Error});
             continue;
         }
-        lines.push_back(pred + " -> " + tr.translate(rule.succ));
+        lines.push_back(pred + " -> " + balance(tr.translate(rule.succ), rule.line));
     }
     if (!tr.renamed.empty()) {
         out << "module:";

@@ -29,7 +29,7 @@ TEST(Lparser, CommandsAreMappedToSproutsTurtle) {
     EXPECT_EQ(lineOf(r.text, "angle:"), "angle: 30");
     EXPECT_EQ(lineOf(r.text, "width:"), "width: 0.2");
     EXPECT_EQ(lineOf(r.text, "axiom:"),
-              "axiom: ;(12)F/(20)\\/(180)|$@L(0.5)F@L(2)@L(0.5)f@L(2)@L(1.1)@L(.8)@A(1.1)@A(0.9)@W(1.4)@W(.75)@T(.3)"
+              "axiom: ;(12)F\\(20)//(180)|$@L(0.5)F@L(2)@L(0.5)f@L(2)@L(1.1)@L(.8)@A(1.1)@A(0.9)@W(1.4)@W(.75)@T(.3)"
               "+(rand(-(30.000000),(30.000000)))&(rand(-(30.000000),(30.000000)))/(rand(-(30.000000),(30.000000)))LpG");
     EXPECT_EQ(lineOf(r.text, "F ->"), "F -> F[+F]g.{}");
     EXPECT_EQ(lineOf(r.text, "module:"), "module: LpG");  // G would draw in Sprout: renamed
@@ -52,7 +52,8 @@ TEST(Lparser, ColoursAndErrors) {
     ImportResult bad = importLparser("recursion x\nfrobnicate 3\nrule AB = F\n", "bad.ls");
     ASSERT_EQ(bad.diagnostics.size(), 4u);
     EXPECT_EQ(bad.diagnostics[0].line, 1);
-    EXPECT_EQ(bad.diagnostics[1].message, "unknown Lparser keyword 'frobnicate'");
+    EXPECT_EQ(bad.diagnostics[1].message, "unknown Lparser keyword 'frobnicate' (ignored)");
+    EXPECT_EQ(bad.diagnostics[1].severity, Severity::Warning);
     EXPECT_EQ(bad.diagnostics[2].message, "expected 'rule X = successor' with a one-character X");
     EXPECT_EQ(bad.diagnostics[3].message, "the file has no axiom");
 }
@@ -131,6 +132,23 @@ TEST(Corpus, EveryFractintSystemLoadsAndDraws) {
         for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, "fractint.l (" + s.name + ")");
         expectDraws(r.text, s.name);
     }
+}
+
+
+// The six Lparser listings of seed document 001, as printed (with the typos and lost
+// characters of the text: `switch_ yz`, `".7)`, a missing ']', wrapped lines).
+TEST(Lparser, TheSeedDocumentsListingsLoadAsPrinted) {
+    const std::filesystem::path dir = std::filesystem::path(SPROUT_TEST_DATA) / "seed001";
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        ++files;
+        ImportResult r = importLparser(readAll(e.path()), e.path().filename().string());
+        EXPECT_TRUE(r.ok()) << e.path();
+        for (const auto& d : r.diagnostics)
+            EXPECT_EQ(d.severity, Severity::Warning) << formatDiagnostic(d, e.path().string());
+        expectDraws(r.text, e.path().filename().string());
+    }
+    EXPECT_EQ(files, 6);
 }
 
 }  // namespace
