@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
+#include <vector>
 
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
@@ -111,8 +113,52 @@ void grammarSection(App& app) {
     }
 }
 
+// An iterated function system: one row of seven numbers per map (a b c d e f p), dragged
+// like sliders and written back into the text.
+void ifsMaps(App& app) {
+    const std::string& text = app.state.text();
+    std::vector<std::string> lines;
+    {
+        size_t pos = 0;
+        while (pos <= text.size()) {
+            size_t end = text.find('\n', pos);
+            if (end == std::string::npos) end = text.size();
+            lines.push_back(text.substr(pos, end - pos));
+            pos = end + 1;
+        }
+    }
+    ImGui::TextColored(kDim, "maps: a b c d e f p  (x' = a x + b y + e, y' = c x + d y + f)");
+    int index = 0;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        std::string body = lines[i].substr(0, lines[i].find('#'));
+        std::istringstream in(body);
+        double v[7];
+        int n = 0;
+        while (n < 7 && (in >> v[n])) ++n;
+        std::string extra;
+        if (n != 7 || (in >> extra)) continue;
+        ImGui::PushID(int(i));
+        ImGui::SetNextItemWidth(-40);
+        if (ImGui::DragScalarN("##map", ImGuiDataType_Double, v, 7, 0.002f, nullptr, nullptr, "%.3f")) {
+            std::string line;
+            for (int k = 0; k < 7; ++k) line += (k ? "  " : "  ") + formatValue(v[k]);
+            lines[i] = line;
+            std::string out;
+            for (size_t j = 0; j < lines.size(); ++j) out += lines[j] + (j + 1 < lines.size() ? "\n" : "");
+            app.state.setText(out);
+        }
+        ImGui::SameLine();
+        ImGui::Text("w%d", ++index);
+        ImGui::PopID();
+    }
+}
+
 void parameterSection(App& app) {
     auto plant = app.state.plant();
+    if (plant && plant->image) {
+        ifsMaps(app);
+        return;
+    }
     if (!plant || !plant->grammar) return;
     const Settings& s = plant->grammar->settings;
     int n = plant->iterations;
