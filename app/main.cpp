@@ -23,6 +23,8 @@ int printUsage(bool toStderr) {
                  "  sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]\n"
                  "                [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats]\n"
                  "                                  render a picture with no display (OSMesa)\n"
+                 "  sprout export FILE|PRESET -o OUT.glb|.obj|.ply|.svg [-n N] [--seed S] [--sides K]\n"
+                 "                                  write a model (glTF binary, OBJ + MTL, PLY) or an SVG drawing\n"
                  "  sprout presets                  list the built-in presets\n"
                  "  sprout --help | --version\n",
                  SPROUT_VERSION);
@@ -49,6 +51,7 @@ static int run(int argc, char** argv) {
         const char* cmd = argv[1];
         if (!std::strcmp(cmd, "expand")) return cli::runExpand(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "render")) return cli::runRender(argc - 1, argv + 1);
+        if (!std::strcmp(cmd, "export")) return cli::runExport(argc - 1, argv + 1);
         if (!std::strcmp(cmd, "presets")) {
             for (const auto& name : presetNames()) std::printf("%s\n", name.c_str());
             return 0;

@@ -12,7 +12,10 @@ packages=(
   build-essential cmake pkg-config python3 python3-glad
   libglm-dev libglfw3-dev libimgui-dev libgl1-mesa-dev libosmesa6-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+  libtinyobjloader-dev libxml2-utils
 )
+# The test suite checks exports with the Khronos glTF validator, from the npm registry.
+if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -31,6 +34,7 @@ cmake --build build -j"$jobs"
 
 case "$mode" in
   test)
+    npm ci --prefix tests/tools --no-audit --no-fund --loglevel=error
     ctest --test-dir build --output-on-failure -j"$jobs"
     ;;
   run)

@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "core/derive.hpp"
+#include "core/forest.hpp"
 #include "core/grammar.hpp"
 
 namespace sprout::cli {
@@ -16,5 +18,10 @@ struct LoadedGrammar {
 // Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors
 // or cannot be read.
 std::optional<LoadedGrammar> loadGrammar(const std::string& source);
+
+// A forest scene (.forest file or scene preset) built into one geometry; `text` is the
+// scene as written. Prints diagnostics; false when it cannot be built.
+bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
+                      Geometry& geometry, ForestStats& stats, std::string& text);
 
 }  // namespace sprout::cli

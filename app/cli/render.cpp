@@ -78,9 +78,11 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
     return 0;
 }
 
+}  // namespace
+
 // A forest scene: its species are presets or files beside the scene file.
-int renderForest(const std::string& source, SnapshotOptions o, const std::string& out, bool stats) {
-    std::string text;
+bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
+                      Geometry& geometry, ForestStats& fs, std::string& text) {
     std::filesystem::path dir;
     if (std::filesystem::exists(source)) {
         std::ifstream in(source, std::ios::binary);
@@ -91,8 +93,8 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
     }
     ForestParseResult parsed = parseForest(text);
     for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
-    if (!parsed.forest) return 1;
-    if (o.seed) parsed.forest->seed = *o.seed;
+    if (!parsed.forest) return false;
+    if (seed) parsed.forest->seed = *seed;
     auto species = [&](const std::string& name) -> std::optional<std::string> {
         std::filesystem::path p = dir / name;
         if (std::filesystem::exists(p)) {
@@ -102,14 +104,22 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
         if (auto t = presetText(name)) return std::string(*t);
         return std::nullopt;
     };
+    std::string error;
+    if (!buildForest(*parsed.forest, species, geometry, fs, error, limits)) {
+        std::cerr << source << ": " << error << "\n";
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+int renderForest(const std::string& source, SnapshotOptions o, const std::string& out, bool stats) {
+    std::string text, error;
     Snapshot shot;
     ForestStats fs;
-    std::string error;
     auto t0 = std::chrono::steady_clock::now();
-    if (!buildForest(*parsed.forest, species, shot.geometry, fs, error, o.limits)) {
-        std::cerr << source << ": " << error << "\n";
-        return 1;
-    }
+    if (!buildForestScene(source, o.seed, o.limits, shot.geometry, fs, text)) return 1;
     double buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!renderGeometry(o, shot, error)) {
         std::cerr << source << ": " << error << "\n";

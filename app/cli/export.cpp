@@ -1,0 +1,99 @@
+// sprout export FILE|PRESET -o OUT.glb|.obj|.ply|.svg [-n N] [--seed S] [--sides K]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "app/cli/args.hpp"
+#include "app/cli/commands.hpp"
+#include "app/cli/load.hpp"
+#include "app/export/export.hpp"
+#include "app/presets.hpp"
+#include "core/derive.hpp"
+#include "core/turtle.hpp"
+
+namespace sprout::cli {
+
+int runExport(int argc, char** argv) {
+    Args args(argc, argv, 1, {"--quiet"}, {"-o", "-n", "--seed", "--sides", "--max-modules"});
+    auto n = args.integer("-n", 0, 10000);
+    auto seed = args.integer("--seed", 0, INT64_MAX);
+    auto sides = args.integer("--sides", 3, 64);
+    auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
+    std::string problem = args.error();
+    if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
+        problem = "expects one FILE or PRESET and -o OUT";
+    std::optional<exporter::Format> format;
+    if (problem.empty() && !(format = exporter::formatFromPath(*args.value("-o"))))
+        problem = "cannot tell the format of " + *args.value("-o") + ": use .glb, .obj, .ply or .svg";
+    if (!problem.empty()) {
+        std::cerr << "sprout export: " << problem
+                  << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg [-n N] [--seed S] [--sides K]"
+                     " [--quiet]\n";
+        return 2;
+    }
+    const std::string source = args.positionals()[0], out = *args.value("-o");
+    auto t0 = std::chrono::steady_clock::now();
+    Geometry geometry;
+    DeriveLimits limits;
+    if (maxModules) limits.maxModules = std::uint64_t(*maxModules);
+    const auto scenes = scenePresetNames();
+    if (source.ends_with(".ifs") || isIfsPreset(source)) {
+        std::cerr << source << ": an iterated function system is a point density, not a model; "
+                     "`sprout render` draws it as a picture\n";
+        return 1;
+    } else if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end()) {
+        ForestStats fs;
+        std::string text;
+        if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text))
+            return 1;
+    } else {
+        auto loaded = loadGrammar(source);
+        if (!loaded) return 1;
+        const Grammar& g = *loaded->grammar;
+        const int steps = n ? int(*n) : g.settings.iterations;
+        DeriveOptions dopts;
+        if (seed) dopts.seed = std::uint64_t(*seed);
+        dopts.limits = limits;
+        Derivation derivation(loaded->grammar, dopts);
+        DeriveOutcome outcome = derivation.deriveTo(steps);
+        if (!outcome.ok()) {
+            std::cerr << loaded->displayName << ": " << outcome.message << "\n";
+            return 1;
+        }
+        interpret(*derivation.step(steps), g, {steps, derivation.seed(), nullptr}, geometry);
+    }
+    // A progress line on a terminal for big plants.
+    const bool tty = isatty(2) && !args.flag("--quiet");
+    exporter::ExportOptions o;
+    o.sides = sides ? int(*sides) : 0;
+    o.generator = "Sprout " SPROUT_VERSION;
+    int lastPercent = -1;
+    if (tty && geometry.cylinders.size() > 100000)
+        o.progress = [&](double f) {
+            int p = int(f * 100);
+            if (p != lastPercent) std::fprintf(stderr, "\rexporting %s: %3d%%", out.c_str(), lastPercent = p);
+        };
+    exporter::ExportStats st;
+    std::string error;
+    bool ok = exporter::exportGeometry(geometry, out, *format, o, st, error);
+    if (lastPercent >= 0) std::fprintf(stderr, "\n");
+    if (!ok) {
+        std::cerr << out << ": " << error << "\n";
+        return 1;
+    }
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!args.flag("--quiet")) {
+        if (*format == exporter::Format::Svg)
+            std::printf("%s: %zu segments, %zu filled triangles, %.1f KB in %.2f s\n", out.c_str(), geometry.cylinders.size(),
+                        st.triangles, double(st.bytes) / 1024, secs);
+        else
+            std::printf("%s: %zu segments as %zu tubes, %zu surfaces; %zu triangles, %zu vertices, %zu materials; %.1f MB in %.2f s\n",
+                        out.c_str(), geometry.cylinders.size(), st.stems, geometry.surfaces.size(), st.triangles, st.vertices,
+                        st.materials, double(st.bytes) / (1 << 20), secs);
+    }
+    return 0;
+}
+
+}  // namespace sprout::cli

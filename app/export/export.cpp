@@ -1,0 +1,404 @@
+#include "app/export/export.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "app/export/scene.hpp"
+#include "app/export/svg.hpp"
+
+namespace sprout::exporter {
+namespace {
+
+// Buffered output that remembers the first failure.
+class Out {
+public:
+    explicit Out(const std::string& path) : m_path(path), m_file(std::fopen(path.c_str(), "wb")) {
+        if (!m_file) m_error = std::strerror(errno);
+        m_buffer.reserve(kBuffer);
+    }
+    ~Out() {
+        if (m_file) std::fclose(m_file);
+    }
+    bool ok() const { return m_error.empty(); }
+    const std::string& error() const { return m_error; }
+    std::uint64_t bytes() const { return m_bytes + m_buffer.size(); }
+
+    void write(const void* data, std::size_t n) {
+        const char* p = static_cast<const char*>(data);
+        if (m_buffer.size() + n > kBuffer) flush();
+        if (n > kBuffer) {
+            put(p, n);
+            return;
+        }
+        m_buffer.insert(m_buffer.end(), p, p + n);
+    }
+    void text(std::string_view s) { write(s.data(), s.size()); }
+    // Shortest float text that reads back to the same value.
+    void number(float v) {
+        char tmp[32];
+        auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
+        write(tmp, std::size_t(r.ptr - tmp));
+    }
+    void number(std::uint64_t v) {
+        char tmp[24];
+        auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
+        write(tmp, std::size_t(r.ptr - tmp));
+    }
+    bool close() {
+        flush();
+        if (m_file && std::fclose(m_file) != 0 && m_error.empty()) m_error = std::strerror(errno);
+        m_file = nullptr;
+        return ok();
+    }
+
+private:
+    static constexpr std::size_t kBuffer = 1 << 20;
+    void flush() {
+        put(m_buffer.data(), m_buffer.size());
+        m_buffer.clear();
+    }
+    void put(const char* p, std::size_t n) {
+        if (!m_file || !n) return;
+        if (std::fwrite(p, 1, n, m_file) != n && m_error.empty()) m_error = std::strerror(errno);
+        m_bytes += n;
+    }
+    std::string m_path;
+    std::FILE* m_file;
+    std::string m_error;
+    std::vector<char> m_buffer;
+    std::uint64_t m_bytes = 0;
+};
+
+// Reports progress by items written, at most a few hundred times.
+class Progress {
+public:
+    Progress(const ExportOptions& o, const std::vector<Primitive>& prims, int passes) : m_o(o) {
+        for (const auto& p : prims) m_total += double(p.items.size()) * passes;
+    }
+    void advance(std::size_t items) {
+        m_done += double(items);
+        if (!m_o.progress || m_total <= 0) return;
+        double f = m_done / m_total;
+        if (f - m_last >= 0.005 || f >= 1.0) {
+            m_last = f;
+            m_o.progress(std::min(f, 1.0));
+        }
+    }
+
+private:
+    const ExportOptions& m_o;
+    double m_total = 0, m_done = 0, m_last = -1;
+};
+
+std::string hexColour(std::uint32_t rgba) {
+    char b[16];
+    std::snprintf(b, sizeof b, "%06x", unsigned(rgba >> 8));
+    return b;
+}
+
+std::array<float, 4> linearColour(std::uint32_t rgba) {
+    return {srgbToLinear(std::uint8_t(rgba >> 24)), srgbToLinear(std::uint8_t(rgba >> 16)),
+            srgbToLinear(std::uint8_t(rgba >> 8)), float(rgba & 0xffu) / 255.0f};
+}
+
+std::string fmt(float v) {
+    char tmp[32];
+    auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
+    return std::string(tmp, r.ptr);
+}
+
+std::string jsonString(std::string_view s) {
+    std::string o = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') o += '\\';
+        if (std::uint8_t(c) < 0x20) continue;
+        o += c;
+    }
+    return o + "\"";
+}
+
+const char* kParts[] = {"stems", "leaves", "petals", "spheres", "polygons"};
+
+// ---------------------------------------------------------------------------------- glTF
+bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
+              std::string& error) {
+    const auto& prims = scene.primitives;
+    // Materials: one per colour and sidedness.
+    std::map<std::pair<std::uint32_t, bool>, std::size_t> materialOf;
+    std::string materials;
+    for (const auto& p : prims) {
+        auto key = std::make_pair(p.colour, p.doubleSided);
+        if (materialOf.count(key)) continue;
+        materialOf[key] = materialOf.size();
+        auto c = linearColour(p.colour);
+        if (!materials.empty()) materials += ",";
+        materials += "{\"name\":" + jsonString((p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour)) +
+                     ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[" + fmt(c[0]) + "," + fmt(c[1]) + "," + fmt(c[2]) + "," +
+                     fmt(c[3]) + "],\"metallicFactor\":0,\"roughnessFactor\":0.8}" +
+                     (c[3] < 1 ? ",\"alphaMode\":\"BLEND\"" : "") + (p.doubleSided ? ",\"doubleSided\":true" : "") + "}";
+    }
+    // Per primitive: an interleaved position+normal view and an index view.
+    std::string views, accessors, meshes, nodes, sceneNodes;
+    std::uint64_t offset = 0;
+    std::size_t view = 0, accessor = 0, mesh = 0;
+    for (const char* part : kParts) {
+        std::string primsJson;
+        for (const auto& p : prims) {
+            if (p.part != part) continue;
+            const std::uint64_t vbytes = std::uint64_t(p.vertices) * 24, ibytes = std::uint64_t(p.indices) * 4;
+            if (!views.empty()) views += ",";
+            views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) + ",\"byteLength\":" + std::to_string(vbytes) +
+                     ",\"byteStride\":24,\"target\":34962},";
+            views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset + vbytes) +
+                     ",\"byteLength\":" + std::to_string(ibytes) + ",\"target\":34963}";
+            offset += vbytes + ibytes;
+            if (!accessors.empty()) accessors += ",";
+            accessors += "{\"bufferView\":" + std::to_string(view) + ",\"componentType\":5126,\"count\":" +
+                         std::to_string(p.vertices) + ",\"type\":\"VEC3\",\"min\":[" + fmt(p.min.x) + "," + fmt(p.min.y) + "," +
+                         fmt(p.min.z) + "],\"max\":[" + fmt(p.max.x) + "," + fmt(p.max.y) + "," + fmt(p.max.z) + "]},";
+            accessors += "{\"bufferView\":" + std::to_string(view) + ",\"byteOffset\":12,\"componentType\":5126,\"count\":" +
+                         std::to_string(p.vertices) + ",\"type\":\"VEC3\"},";
+            accessors += "{\"bufferView\":" + std::to_string(view + 1) + ",\"componentType\":5125,\"count\":" +
+                         std::to_string(p.indices) + ",\"type\":\"SCALAR\"}";
+            if (!primsJson.empty()) primsJson += ",";
+            primsJson += "{\"attributes\":{\"POSITION\":" + std::to_string(accessor) + ",\"NORMAL\":" +
+                         std::to_string(accessor + 1) + "},\"indices\":" + std::to_string(accessor + 2) +
+                         ",\"material\":" + std::to_string(materialOf[{p.colour, p.doubleSided}]) + ",\"mode\":4}";
+            view += 2;
+            accessor += 3;
+            st.vertices += p.vertices;
+            st.triangles += p.indices / 3;
+            ++st.primitives;
+        }
+        if (primsJson.empty()) continue;
+        if (!meshes.empty()) meshes += ",", nodes += ",", sceneNodes += ",";
+        meshes += "{\"name\":" + jsonString(part) + ",\"primitives\":[" + primsJson + "]}";
+        nodes += "{\"name\":" + jsonString(part) + ",\"mesh\":" + std::to_string(mesh) + "}";
+        sceneNodes += std::to_string(mesh);
+        ++mesh;
+    }
+    st.materials = materialOf.size();
+    std::string json = "{\"asset\":{\"version\":\"2.0\",\"generator\":" + jsonString(o.generator) +
+                       "},\"scene\":0,\"scenes\":[{\"name\":\"plant\",\"nodes\":[" + sceneNodes + "]}]";
+    if (mesh) {
+        json += ",\"nodes\":[" + nodes + "],\"meshes\":[" + meshes + "],\"materials\":[" + materials +
+                "],\"accessors\":[" + accessors + "],\"bufferViews\":[" + views + "],\"buffers\":[{\"byteLength\":" +
+                std::to_string(offset) + "}]";
+    }
+    json += "}";
+    while (json.size() % 4) json += ' ';
+    const std::uint64_t total = 12 + 8 + json.size() + (offset ? 8 + offset : 0);
+    if (total > 0xffffffffull) {
+        error = "too big for a .glb file (" + std::to_string(total >> 20) + " MB, the format's limit is 4 GB); try --sides 3";
+        return false;
+    }
+
+    Out out(path);
+    auto u32 = [&](std::uint32_t v) { out.write(&v, 4); };
+    u32(0x46546C67);  // "glTF"
+    u32(2);
+    u32(std::uint32_t(total));
+    u32(std::uint32_t(json.size()));
+    u32(0x4E4F534A);  // "JSON"
+    out.text(json);
+    if (offset) {
+        u32(std::uint32_t(offset));
+        u32(0x004E4942);  // "BIN\0"
+        Progress progress(o, prims, 2);
+        std::vector<float> verts;
+        std::vector<std::uint32_t> idx;
+        for (const char* part : kParts)
+            for (const auto& p : prims) {
+                if (p.part != part) continue;
+                scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                    verts.resize(chunk.vertices.size() * 6);
+                    float* w = verts.data();
+                    for (const auto& v : chunk.vertices) {
+                        std::memcpy(w, &v.position, 12);
+                        std::memcpy(w + 3, &v.normal, 12);
+                        w += 6;
+                    }
+                    out.write(verts.data(), verts.size() * 4);
+                    progress.advance(4096);
+                });
+                std::uint32_t base = 0;
+                scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                    idx.resize(chunk.indices.size());
+                    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = base + chunk.indices[i];
+                    base += std::uint32_t(chunk.vertices.size());
+                    out.write(idx.data(), idx.size() * 4);
+                    progress.advance(4096);
+                });
+            }
+    }
+    st.bytes = out.bytes();
+    if (!out.close()) {
+        error = out.error();
+        return false;
+    }
+    return true;
+}
+
+// ----------------------------------------------------------------------------- OBJ + MTL
+bool writeObj(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
+              std::string& error) {
+    std::string mtlPath = path.substr(0, path.size() - 4) + ".mtl";
+    std::string mtlName = mtlPath.substr(mtlPath.find_last_of('/') + 1);
+    {
+        Out mtl(mtlPath);
+        std::map<std::pair<std::uint32_t, bool>, bool> seen;
+        mtl.text("# " + o.generator + "\n");
+        for (const auto& p : scene.primitives) {
+            if (seen[{p.colour, p.doubleSided}]) continue;
+            seen[{p.colour, p.doubleSided}] = true;
+            auto c = linearColour(p.colour);
+            mtl.text(std::string("\nnewmtl ") + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\nKd " +
+                     fmt(c[0]) + " " + fmt(c[1]) + " " + fmt(c[2]) + "\nKa 0 0 0\nKs 0.05 0.05 0.05\nNs 10\nd " + fmt(c[3]) +
+                     "\nillum 2\n");
+        }
+        st.materials = seen.size();
+        if (!mtl.close()) {
+            error = mtlPath + ": " + mtl.error();
+            return false;
+        }
+    }
+    Out out(path);
+    out.text("# " + o.generator + "\nmtllib " + mtlName + "\n");
+    Progress progress(o, scene.primitives, 2);
+    std::uint64_t base = 1;  // OBJ counts from 1
+    for (const char* part : kParts) {
+        bool first = true;
+        for (const auto& p : scene.primitives) {
+            if (p.part != part) continue;
+            if (first) out.text(std::string("o ") + part + "\n");
+            first = false;
+            out.text(std::string("g ") + part + "\nusemtl " + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\n");
+            scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                for (const auto& v : chunk.vertices) {
+                    out.text("v ");
+                    out.number(v.position.x), out.text(" "), out.number(v.position.y), out.text(" "), out.number(v.position.z);
+                    out.text("\nvn ");
+                    out.number(v.normal.x), out.text(" "), out.number(v.normal.y), out.text(" "), out.number(v.normal.z);
+                    out.text("\n");
+                }
+                progress.advance(4096);
+            });
+            std::uint64_t local = base;
+            scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                for (std::size_t i = 0; i < chunk.indices.size(); i += 3) {
+                    out.text("f");
+                    for (int k = 0; k < 3; ++k) {
+                        std::uint64_t n = local + chunk.indices[i + k];
+                        out.text(" "), out.number(n), out.text("//"), out.number(n);
+                    }
+                    out.text("\n");
+                }
+                local += chunk.vertices.size();
+                progress.advance(4096);
+            });
+            base += p.vertices;
+            st.vertices += p.vertices;
+            st.triangles += p.indices / 3;
+            ++st.primitives;
+        }
+    }
+    st.bytes = out.bytes();
+    if (!out.close()) {
+        error = out.error();
+        return false;
+    }
+    return true;
+}
+
+// ---------------------------------------------------------------------------------- PLY
+bool writePly(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
+              std::string& error) {
+    for (const auto& p : scene.primitives) {
+        st.vertices += p.vertices;
+        st.triangles += p.indices / 3;
+        ++st.primitives;
+    }
+    Out out(path);
+    out.text("ply\nformat binary_little_endian 1.0\ncomment " + o.generator + "\nelement vertex " + std::to_string(st.vertices) +
+             "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+             "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\nelement face " +
+             std::to_string(st.triangles) + "\nproperty list uchar uint vertex_indices\nend_header\n");
+    Progress progress(o, scene.primitives, 2);
+    std::vector<char> buf;
+    for (const auto& p : scene.primitives)
+        scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+            buf.resize(chunk.vertices.size() * 28);
+            char* w = buf.data();
+            for (const auto& v : chunk.vertices) {
+                std::memcpy(w, &v.position, 12);
+                std::memcpy(w + 12, &v.normal, 12);
+                const std::uint8_t rgba[4] = {std::uint8_t(v.colour >> 24), std::uint8_t(v.colour >> 16),
+                                              std::uint8_t(v.colour >> 8), std::uint8_t(v.colour)};
+                std::memcpy(w + 24, rgba, 4);
+                w += 28;
+            }
+            out.write(buf.data(), buf.size());
+            progress.advance(4096);
+        });
+    std::uint32_t base = 0;
+    for (const auto& p : scene.primitives)
+        scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+            buf.resize(chunk.indices.size() / 3 * 13);
+            char* w = buf.data();
+            for (std::size_t i = 0; i < chunk.indices.size(); i += 3) {
+                *w++ = 3;
+                for (int k = 0; k < 3; ++k) {
+                    std::uint32_t n = base + chunk.indices[i + k];
+                    std::memcpy(w, &n, 4);
+                    w += 4;
+                }
+            }
+            base += std::uint32_t(chunk.vertices.size());
+            out.write(buf.data(), buf.size());
+            progress.advance(4096);
+        });
+    st.bytes = out.bytes();
+    if (!out.close()) {
+        error = out.error();
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::optional<Format> formatFromPath(const std::string& path) {
+    auto dot = path.find_last_of('.');
+    if (dot == std::string::npos) return std::nullopt;
+    std::string ext = path.substr(dot + 1);
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "glb") return Format::Glb;
+    if (ext == "obj") return Format::Obj;
+    if (ext == "ply") return Format::Ply;
+    if (ext == "svg") return Format::Svg;
+    return std::nullopt;
+}
+
+bool exportGeometry(const Geometry& g, const std::string& path, Format format, const ExportOptions& o, ExportStats& st,
+                    std::string& error) {
+    st = {};
+    if (format == Format::Svg) return writeSvg(g, path, o, st, error);
+    ExportScene scene(g, o.sides);
+    st.stems = scene.stems();
+    switch (format) {
+        case Format::Glb: return writeGlb(scene, path, o, st, error);
+        case Format::Obj: return writeObj(scene, path, o, st, error);
+        case Format::Ply: return writePly(scene, path, o, st, error);
+        case Format::Svg: break;
+    }
+    return false;
+}
+
+}  // namespace sprout::exporter

@@ -1,0 +1,201 @@
+// `sprout export`: every format written and read back by an independent reader (the Khronos
+// glTF validator through node, tinyobjloader, xmllint), counts checked against the geometry.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <tiny_obj_loader.h>
+
+#include "tests/app/run_sprout.hpp"
+
+namespace {
+using namespace sprout_test;
+
+std::string temp(const std::string& name) { return testing::TempDir() + std::to_string(getpid()) + "_" + name; }
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// "N triangles, M vertices" from the export summary.
+std::pair<long, long> counts(const std::string& out) {
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(out, m, std::regex("(\\d+) triangles, (\\d+) vertices"))) << out;
+    return m.size() == 3 ? std::pair{std::stol(m[1]), std::stol(m[2])} : std::pair{-1L, -1L};
+}
+
+int shell(const std::string& cmd, std::string* out = nullptr) {
+    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    std::string text;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, n);
+    int status = pclose(p);
+    if (out) *out = text;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(Export, OneStemIsAnExactTube) {
+    // One segment with 6 sides: 2 rings of 6 plus 2 cap apexes, 6 triangles per cap and 12 on the side.
+    std::string grammar = writeTemp("one.lsys", "n: 0\naxiom: F\n");
+    std::string out = temp("one.ply");
+    Result r = sprout("export " + grammar + " -o " + out + " --sides 6");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(counts(r.out), std::pair(24L, 14L));
+    std::string ply = slurp(out);
+    const std::string end = "end_header\n";
+    size_t header = ply.find(end);
+    ASSERT_NE(header, std::string::npos);
+    EXPECT_NE(ply.find("element vertex 14\n"), std::string::npos);
+    EXPECT_NE(ply.find("element face 24\n"), std::string::npos);
+    EXPECT_EQ(ply.size(), header + end.size() + 14 * 28 + 24 * 13);
+    // The tube spans the segment: y from 0 to the step, apexes one radius beyond.
+    float ymin = 1e9f, ymax = -1e9f;
+    for (int v = 0; v < 14; ++v) {
+        float p[3];
+        std::memcpy(p, ply.data() + header + end.size() + v * 28, 12);
+        ymin = std::min(ymin, p[1]);
+        ymax = std::max(ymax, p[1]);
+    }
+    EXPECT_LT(ymin, 0.0f);
+    EXPECT_GT(ymax, 1.0f);
+    EXPECT_LT(ymax, 1.5f);
+}
+
+TEST(Export, GlbIsValidForTheKhronosValidator) {
+    const std::string validator = std::string(SPROUT_TOOLS_DIR) + "/validate_gltf.js";
+    ASSERT_TRUE(std::filesystem::exists(std::string(SPROUT_TOOLS_DIR) + "/node_modules/gltf-validator"))
+        << "run `npm ci --prefix tests/tools` (scripts/setup.sh test does)";
+    for (std::string preset : {"bush_3d", "abop_1_26_flower_plant", "lparser_phyllotactic_tree_ovate_leaves", "koch"}) {
+        SCOPED_TRACE(preset);
+        std::string out = temp(preset + ".glb");
+        Result r = sprout("export " + preset + " -o " + out);
+        ASSERT_EQ(r.code, 0) << r.err;
+        auto [triangles, vertices] = counts(r.out);
+        std::string glb = slurp(out);
+        ASSERT_GE(glb.size(), 20u);
+        std::uint32_t head[3];
+        std::memcpy(head, glb.data(), 12);
+        EXPECT_EQ(head[0], 0x46546C67u);
+        EXPECT_EQ(head[1], 2u);
+        EXPECT_EQ(head[2], glb.size());
+        std::string report;
+        EXPECT_EQ(shell("node " + validator + " " + out, &report), 0) << report;
+        EXPECT_NE(report.find("\"errors\": 0"), std::string::npos) << report;
+        EXPECT_NE(report.find("\"warnings\": 0"), std::string::npos) << report;
+        EXPECT_NE(report.find("\"totalTriangleCount\": " + std::to_string(triangles)), std::string::npos) << report;
+        EXPECT_NE(report.find("\"totalVertexCount\": " + std::to_string(vertices)), std::string::npos) << report;
+        std::remove(out.c_str());
+    }
+}
+
+TEST(Export, ObjLoadsBackWithTinyObjLoader) {
+    for (std::string preset : {"bush_3d", "abop_1_26_flower_plant", "koch_islands_lakes"}) {
+        SCOPED_TRACE(preset);
+        std::string out = temp(preset + ".obj");
+        Result r = sprout("export " + preset + " -o " + out);
+        ASSERT_EQ(r.code, 0) << r.err;
+        auto [triangles, vertices] = counts(r.out);
+        tinyobj::ObjReader reader;
+        tinyobj::ObjReaderConfig config;
+        config.triangulate = false;
+        ASSERT_TRUE(reader.ParseFromFile(out, config)) << reader.Error();
+        EXPECT_EQ(reader.GetAttrib().vertices.size(), size_t(vertices) * 3);
+        EXPECT_EQ(reader.GetAttrib().normals.size(), size_t(vertices) * 3);
+        long faces = 0;
+        std::set<std::string> groups;
+        for (const auto& shape : reader.GetShapes()) {
+            faces += long(shape.mesh.num_face_vertices.size());
+            groups.insert(shape.name);
+            for (int m : shape.mesh.material_ids) ASSERT_GE(m, 0) << "a face without a material";
+        }
+        EXPECT_EQ(faces, triangles);
+        EXPECT_TRUE(groups.count("stems")) << "stems group";
+        if (preset == "abop_1_26_flower_plant") EXPECT_TRUE(groups.count("petals") || groups.count("polygons"));
+        // The materials carry the colours (the lakes are drawn in one colour).
+        std::set<std::array<float, 3>> colours;
+        for (const auto& m : reader.GetMaterials()) colours.insert({m.diffuse[0], m.diffuse[1], m.diffuse[2]});
+        EXPECT_GE(colours.size(), preset == "koch_islands_lakes" ? 1u : 2u);
+        std::remove(out.c_str());
+    }
+}
+
+TEST(Export, PlyCarriesVertexColours) {
+    std::string out = temp("bush.ply");
+    Result r = sprout("export bush_3d -o " + out);
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto [triangles, vertices] = counts(r.out);
+    std::string ply = slurp(out);
+    size_t header = ply.find("end_header\n") + 11;
+    EXPECT_EQ(ply.size(), header + size_t(vertices) * 28 + size_t(triangles) * 13);
+    std::set<std::uint32_t> colours;
+    for (long v = 0; v < vertices; v += 97) {
+        std::uint32_t c;
+        std::memcpy(&c, ply.data() + header + v * 28 + 24, 4);
+        colours.insert(c);
+    }
+    EXPECT_GE(colours.size(), 3u) << "the bark-to-green gradient";
+    // Every face is a triangle of valid vertex indices.
+    for (long f = 0; f < triangles; f += 101) {
+        const char* face = ply.data() + header + vertices * 28 + f * 13;
+        ASSERT_EQ(face[0], 3);
+        for (int k = 0; k < 3; ++k) {
+            std::uint32_t i;
+            std::memcpy(&i, face + 1 + 4 * k, 4);
+            ASSERT_LT(i, std::uint32_t(vertices));
+        }
+    }
+}
+
+TEST(Export, SvgIsValidXmlAndFramesTheCurve) {
+    std::string out = temp("koch.svg");
+    Result r = sprout("export koch_curve_1_9b -o " + out);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::string report;
+    EXPECT_EQ(shell("xmllint --noout " + out, &report), 0) << report;
+    std::string svg = slurp(out);
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(svg, m, std::regex("viewBox=\"0 0 ([0-9.]+) ([0-9.]+)\"")));
+    const float W = std::stof(m[1]), H = std::stof(m[2]);
+    EXPECT_NEAR(W, H, 1.0f) << "the square Koch island is square";
+    // Every point lies inside the viewBox; the curve touches the margins on all sides.
+    std::regex point("(-?[0-9.]+),(-?[0-9.]+)");
+    float xmin = 1e9f, xmax = -1e9f, ymin = 1e9f, ymax = -1e9f;
+    size_t points = 0, polylines = 0;
+    for (size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1)) {
+        ++polylines;
+        size_t p0 = svg.find("points=\"", at) + 8, p1 = svg.find('"', p0);
+        std::string pts = svg.substr(p0, p1 - p0);
+        for (auto it = std::sregex_iterator(pts.begin(), pts.end(), point); it != std::sregex_iterator(); ++it, ++points) {
+            float x = std::stof((*it)[1]), y = std::stof((*it)[2]);
+            xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+        }
+    }
+    EXPECT_EQ(polylines, 1u) << "a closed curve without branches is one polyline";
+    EXPECT_GT(points, 1000u);
+    EXPECT_NEAR(xmin, 20.0f, 0.5f);
+    EXPECT_NEAR(ymin, 20.0f, 0.5f);
+    EXPECT_NEAR(xmax, W - 20.0f, 0.5f);
+    EXPECT_NEAR(ymax, H - 20.0f, 0.5f);
+}
+
+TEST(Export, ErrorsAreMessagesNotCrashes) {
+    Result r = sprout("export koch -o out.xyz");
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("use .glb, .obj, .ply or .svg"), std::string::npos) << r.err;
+    r = sprout("export koch -o /nonexistent-dir/x.glb");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("/nonexistent-dir/x.glb: No such file or directory"), std::string::npos) << r.err;
+    r = sprout("export barnsley_fern -o " + temp("f.glb"));
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("not a model"), std::string::npos) << r.err;
+    std::string bad = writeTemp("bad.lsys", "axiom: F\nF -> F[+F\n");
+    r = sprout("export " + bad + " -o " + temp("bad.glb"));
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("bad.lsys:2:"), std::string::npos) << r.err;
+}
+
+}  // namespace
