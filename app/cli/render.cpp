@@ -9,6 +9,8 @@
 #include "app/cli/load.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
+#include "app/viewer/text_edit.hpp"
+#include "core/import/import.hpp"
 #include "core/forest.hpp"
 #include "core/ifs.hpp"
 
@@ -18,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <thread>
 
 namespace sprout::cli {
@@ -166,6 +169,26 @@ int runRender(int argc, char** argv) {
         return 2;
     }
     const std::string source = args.positionals()[0];
+    // The view a picture was rendered with comes back with it, unless one is given now.
+    std::string view;
+    for (const char* k : {"--view", "--yaw", "--pitch"})
+        if (auto v = args.value(k)) view += std::string(view.empty() ? "" : " ") + k + " " + *v;
+    if (view.empty() && source.size() > 4 && source.substr(source.size() - 4) == ".png") {
+        std::ifstream in(source, std::ios::binary);
+        std::string png(std::istreambuf_iterator<char>(in), {}), ignored;
+        if (auto v = pngTextChunk(png, "sprout-view", ignored)) {
+            std::istringstream words(*v);
+            std::string k, value;
+            while (words >> k >> value) {
+                if (k == "--view") o.view = value == "front" ? render::ViewPreset::Front : value == "side" ? render::ViewPreset::Side
+                                          : value == "top"   ? render::ViewPreset::Top   : value == "iso" ? render::ViewPreset::Iso
+                                                             : o.view;
+                std::optional<float> f;
+                if ((k == "--yaw" || k == "--pitch") && parseFloat(value, f) && f) (k == "--yaw" ? o.yaw : o.pitch) = f;
+            }
+            view = *v;
+        }
+    }
     if (source.ends_with(".ifs") || isIfsPreset(source)) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
     const auto scenes = scenePresetNames();
     if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end())
@@ -184,8 +207,13 @@ int runRender(int argc, char** argv) {
         std::cerr << loaded->displayName << ": " << error << "\n";
         return 1;
     }
-    // The grammar travels inside the PNG, so the picture can be opened again.
-    shot.image.text.emplace_back("lsys", loaded->text);
+    // The grammar travels inside the PNG, so the picture can be opened again: with -n and
+    // --seed written into it, it gives this very plant back.
+    std::string recipe = loaded->text;
+    if (n) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
+    if (seed) recipe = viewer::setDirective(recipe, "seed", std::to_string(*seed));
+    shot.image.text.emplace_back("lsys", recipe);
+    if (!view.empty()) shot.image.text.emplace_back("sprout-view", view);
     shot.image.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
     const std::string out = *args.value("-o");
     if (!writePng(out, shot.image, error)) {

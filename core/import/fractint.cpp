@@ -197,6 +197,7 @@ ImportResult importByExtension(std::string_view path, std::string_view source, s
     std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
     if (ends(".ls")) return importLparser(source, name);
     if (ends(".l")) return importFractint(source, system);
+    if (ends(".png")) return importPng(source);
     return {std::string(source), {}};
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Importers: grammar files of other tools translated into Sprout's .lsys text, so that the
 // result can be read, edited and saved like any grammar.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,8 +29,15 @@ struct FractintSystem {
 std::vector<FractintSystem> listFractint(std::string_view source);
 ImportResult importFractint(std::string_view source, std::string_view system);
 
+// The grammar a PNG written by Sprout carries (`sprout render`, viewer screenshots): the text
+// of its "lsys", "ifs" or "forest" chunk. An error when the PNG holds none.
+ImportResult importPng(std::string_view png);
+// One uncompressed tEXt / iTXt chunk by keyword; nullopt with `error` set when the file is not
+// a PNG or is damaged, nullopt with an empty `error` when the chunk is absent.
+std::optional<std::string> pngTextChunk(std::string_view png, std::string_view keyword, std::string& error);
+
 // By file extension: .ls (Lparser), .l (Fractint: `system` picks one, default the first),
-// anything else is returned as it is.
+// .png (the grammar inside a Sprout picture), anything else is returned as it is.
 ImportResult importByExtension(std::string_view path, std::string_view source, std::string_view system = {});
 
 }  // namespace sprout

@@ -199,3 +199,54 @@ TEST(Export, ErrorsAreMessagesNotCrashes) {
 }
 
 }  // namespace
+
+namespace {
+using namespace sprout_test;
+
+// A picture is also the recipe: the grammar (with -n and --seed) rides in an iTXt chunk.
+TEST(PngRecipe, RenderThenExpandGivesTheSameString) {
+    struct Case {
+        std::string preset, flags;
+    };
+    for (const Case& c : {Case{"fractal_plant", "-n 3"}, Case{"stochastic_weed", "-n 4 --seed 5"}, Case{"abop_1_31a", ""}}) {
+        SCOPED_TRACE(c.preset);
+        std::string png = temp(c.preset + ".png");
+        Result r = sprout("render " + c.preset + " " + c.flags + " --size 64x64 -o " + png);
+        ASSERT_EQ(r.code, 0) << r.err;
+        Result fromPng = sprout("expand " + png), original = sprout("expand " + c.preset + " " + c.flags);
+        ASSERT_EQ(fromPng.code, 0) << fromPng.err;
+        EXPECT_EQ(fromPng.out, original.out);
+        EXPECT_GT(original.out.size(), 20u);
+        std::remove(png.c_str());
+    }
+    // A different seed is a different specimen, so the seed really travels.
+    std::string a = temp("weed_a.png");
+    ASSERT_EQ(sprout("render stochastic_weed -n 4 --seed 6 --size 64x64 -o " + a).code, 0);
+    EXPECT_NE(sprout("expand " + a).out, sprout("expand stochastic_weed -n 4 --seed 5").out);
+    EXPECT_EQ(sprout("expand " + a).out, sprout("expand stochastic_weed -n 4 --seed 6").out);
+}
+
+TEST(PngRecipe, ARenderedPictureRendersAgainTheSame) {
+    std::string a = temp("again_a.png"), b = temp("again_b.png");
+    ASSERT_EQ(sprout("render bush_3d -n 2 --view side --size 96x96 -o " + a).code, 0);
+    Result r = sprout("render " + a + " --size 96x96 -o " + b);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(a), slurp(b)) << "same grammar, n and view: the same file";
+}
+
+TEST(PngRecipe, PicturesWithoutAGrammarSaySo) {
+    std::string notPng = writeTemp("fake.png", "hello");
+    Result r = sprout("expand " + notPng);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("fake.png: is not a PNG file"), std::string::npos) << r.err;
+    // A real PNG cut short.
+    std::string whole = temp("whole.png");
+    ASSERT_EQ(sprout("render koch --size 64x64 -o " + whole).code, 0);
+    std::string bytes = slurp(whole);
+    std::string cut = writeTemp("cut.png", bytes.substr(0, 60));
+    r = sprout("expand " + cut);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("damaged PNG"), std::string::npos) << r.err;
+}
+
+}  // namespace
