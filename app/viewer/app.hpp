@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/render/renderer.hpp"
+#include "app/viewer/export_job.hpp"
 #include "app/viewer/thumbnails.hpp"
 #include "app/viewer/viewer_state.hpp"
 
@@ -53,7 +54,8 @@ struct App {
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;
 
     // Pending file dialogs (a path typed in a popup).
-    bool openPopup = false, saveAsPopup = false, quitPopup = false;
+    bool openPopup = false, saveAsPopup = false, quitPopup = false, exportPopup = false;
+    ExportJob exportJob;
     std::string pathInput;
     bool quitRequested = false;
     bool quitConfirmed = false;
@@ -68,6 +70,8 @@ struct App {
     void resetView();
     void applySun();
     bool takeScreenshot(const std::string& path, int width, int height);
+    // Writes the plant on screen as .glb, .obj, .ply or .svg on a background thread.
+    void exportModel(const std::string& path);
     std::string nextScreenshotPath() const;
 };
 

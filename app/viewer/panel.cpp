@@ -1,5 +1,6 @@
 // The ImGui panel: grammar editor with errors, sliders, growth, view and light, presets,
 // files and the statistics line.
+#include <filesystem>
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -291,6 +292,7 @@ void fileMenu(App& app) {
             if (ImGui::MenuItem("Open...", "Ctrl+O")) app.openPopup = true;
             if (ImGui::MenuItem("Save", "Ctrl+S")) app.save();
             if (ImGui::MenuItem("Save as...")) app.saveAsPopup = true;
+            if (ImGui::MenuItem("Export model...", "Ctrl+E", false, !app.exportJob.running())) app.exportPopup = true;
             if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.quitRequested = true;
             ImGui::EndMenu();
         }
@@ -300,13 +302,16 @@ void fileMenu(App& app) {
         }
         ImGui::EndMenuBar();
     }
-    auto pathPopup = [&](bool& flag, const char* title, const char* action, auto&& run) {
+    auto pathPopup = [&](bool& flag, const char* title, const char* action, auto&& run, const char* extension = ".lsys",
+                         const char* help = nullptr) {
         if (flag) {
             ImGui::OpenPopup(title);
-            app.pathInput = app.state.path().empty() ? "plant.lsys" : app.state.path().string();
+            std::filesystem::path p = app.state.path().empty() ? std::filesystem::path("plant.lsys") : app.state.path();
+            app.pathInput = p.replace_extension(extension).string();
             flag = false;
         }
         if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            if (help) ImGui::TextUnformatted(help);
             ImGui::SetNextItemWidth(360);
             bool enter = ImGui::InputText("path", &app.pathInput, ImGuiInputTextFlags_EnterReturnsTrue);
             if (ImGui::Button(action) || enter) {
@@ -323,6 +328,17 @@ void fileMenu(App& app) {
         std::string e;
         app.say(app.state.saveAs(p, e) ? "saved " + p : e);
     });
+    pathPopup(
+        app.exportPopup, "Export model", "Export", [&](const std::string& p) { app.exportModel(p); }, ".glb",
+        "The format follows the extension: .glb (glTF: Blender, game engines), .obj (+ .mtl),\n"
+        ".ply (vertex colours) or .svg (a 2D drawing, for planar systems and papers).");
+    // A running export: its progress, and its result when it ends.
+    if (app.exportJob.running()) {
+        ImGui::ProgressBar(float(app.exportJob.progress()), ImVec2(-1, 0), ("exporting " + app.exportJob.path()).c_str());
+        app.needsRedraw = true;
+    } else if (std::string m = app.exportJob.takeMessage(); !m.empty()) {
+        app.say(m);
+    }
     if (app.quitPopup) {
         ImGui::OpenPopup("Unsaved changes");
         app.quitPopup = false;
@@ -355,7 +371,7 @@ void helpWindow(App& app) {
             {"F1", "this help"},           {"F", "frame the plant"},        {"R", "reset the view"},
             {"T", "turntable on / off"},   {"Space", "play / pause growth"}, {"Left / Right", "previous / next step"},
             {"Up / Down", "one more / one fewer iteration"}, {"N", "new specimen (another seed)"},
-            {"P", "screenshot"},           {"Ctrl+S", "save"},              {"Ctrl+O", "open"},
+            {"P", "screenshot"},           {"Ctrl+S", "save"},              {"Ctrl+O", "open"}, {"Ctrl+E", "export model"},
             {"A / D", "orbit left / right"}, {"W / S", "tilt up / down"},   {"Q / E", "zoom out / in"},
             {"Ctrl+Q", "quit"},            {"left drag", "orbit"},          {"right / middle drag", "pan"},
             {"wheel", "zoom"},

@@ -5,6 +5,7 @@
 //   define <name> <value> a define, as its slider would
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | sleep <seconds>
 //   screenshot <path> [WxH]
+//   export <path>         as File > Export model (waits until the file is written)
 //   quit
 #include "app/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
@@ -39,6 +40,7 @@ bool Script::step(App& app) {
         // animation may post newer requests meanwhile; those are not waited for).
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
+        if (app.exportJob.running()) return true;
         m_lines.pop_front();
         struct After {
             Script& s;
@@ -103,6 +105,10 @@ bool Script::step(App& app) {
             int w = 0, h = 0;
             if (!size.empty()) std::sscanf(size.c_str(), "%dx%d", &w, &h);
             app.takeScreenshot(path, w, h);
+        } else if (cmd == "export") {
+            std::string path;
+            in >> path;
+            app.exportModel(path);
         }
         return true;
     }

@@ -53,6 +53,14 @@ struct Mouse {
 
 App::App(std::string executable) : thumbnails(std::move(executable), cacheDir()) { applySun(); }
 
+void App::exportModel(const std::string& path) {
+    std::string error;
+    auto plant = state.plant();
+    if (plant && !plant->geometry) error = "this is an iterated function system: a picture, not a model (use a screenshot)";
+    else if (exportJob.start(plant ? plant->geometry : nullptr, path, error)) say("exporting " + path + " ...");
+    if (!error.empty()) say(error);
+}
+
 void App::say(std::string message) {
     status = std::move(message);
     statusTime = glfwGetTime();
@@ -401,8 +409,8 @@ int runViewer(int argc, char** argv) {
             if (ImGui::IsKeyDown(GLFW_KEY_W)) app.camera.pitch = std::min(89.0f, app.camera.pitch + orbit), app.needsRedraw = true;
             if (ImGui::IsKeyDown(GLFW_KEY_S) && !io.KeyCtrl)
                 app.camera.pitch = std::max(-89.0f, app.camera.pitch - orbit), app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_Q)) app.camera.distance *= 1 / zoom, app.camera.orthoHeight *= 1 / zoom, app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_E)) app.camera.distance *= zoom, app.camera.orthoHeight *= zoom, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_Q) && !io.KeyCtrl) app.camera.distance *= 1 / zoom, app.camera.orthoHeight *= 1 / zoom, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_E) && !io.KeyCtrl) app.camera.distance *= zoom, app.camera.orthoHeight *= zoom, app.needsRedraw = true;
             if (ImGui::IsKeyPressed(GLFW_KEY_P)) {
                 const auto& s = kScreenshotSizes[app.view.screenshotSize];
                 app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);
@@ -411,6 +419,7 @@ int runViewer(int argc, char** argv) {
         if (ImGui::IsKeyPressed(GLFW_KEY_F1)) app.showHelp = !app.showHelp;
         if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) app.save();
         if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) app.openPopup = true;
+        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_E) && !app.exportJob.running()) app.exportPopup = true;
         if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) app.quitRequested = true;
         if (app.quitRequested) {
             app.quitRequested = false;

@@ -84,5 +84,26 @@ TEST(Window, ScriptedEditChangesThePlant) {
     EXPECT_GT(ink, 200);
 }
 
+TEST(Window, ExportModelWritesWhatIsOnScreen) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string dir = testing::TempDir();
+    const std::string glb = dir + "sprout_viewer_export.glb", svg = dir + "sprout_viewer_export.svg", script = dir + "sprout_export.txt";
+    std::remove(glb.c_str());
+    std::remove(svg.c_str());
+    // The plant as edited in the window (n 4 from the slider), not the preset as stored.
+    std::ofstream(script) << "set n 4\nwait\nexport " << glb << "\nexport " << svg << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --script " + script), 0);
+    std::ifstream in(glb, std::ios::binary);
+    std::string bytes(std::istreambuf_iterator<char>(in), {});
+    ASSERT_GT(bytes.size(), 1000u);
+    EXPECT_EQ(bytes.substr(0, 4), "glTF");
+    // The same plant exported by the CLI gives the same file.
+    const std::string cli = dir + "sprout_cli_export.glb";
+    ASSERT_EQ(std::system((std::string(SPROUT_BINARY) + " export fractal_plant -n 4 --quiet -o " + cli).c_str()), 0);
+    std::ifstream in2(cli, std::ios::binary);
+    EXPECT_EQ(bytes, std::string(std::istreambuf_iterator<char>(in2), {}));
+    EXPECT_TRUE(std::ifstream(svg).good());
+}
+
 }  // namespace
 }  // namespace sprout
