@@ -32,6 +32,20 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     return renderGeometry(o, out, error);
 }
 
+render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
+    const float aspect = float(o.width) / float(o.height);
+    render::Camera camera = render::frameGeometry(g, aspect, o.view);
+    if (o.yaw || o.pitch) {
+        // An explicit direction: keep the framing distance of a 3D view.
+        render::Camera c3 = render::frameBounds(g.bounds, aspect, render::ViewPreset::Iso, false);
+        camera.orthographic = g.planarCurve && camera.orthographic;
+        if (!camera.orthographic) camera.distance = c3.distance;
+        camera.yaw = o.yaw.value_or(camera.yaw);
+        camera.pitch = o.pitch.value_or(camera.pitch);
+    }
+    return camera;
+}
+
 bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error) {
     auto t0 = std::chrono::steady_clock::now();
     auto context = HeadlessContext::create(o.width, o.height, error);
@@ -39,16 +53,7 @@ bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error)
     render::Renderer renderer;
     if (!renderer.init(context->loader(), error)) return false;
     renderer.upload(out.geometry);
-    const float aspect = float(o.width) / float(o.height);
-    render::Camera camera = render::frameGeometry(out.geometry, aspect, o.view);
-    if (o.yaw || o.pitch) {
-        // An explicit direction: keep the framing distance of a 3D view.
-        render::Camera c3 = render::frameBounds(out.geometry.bounds, aspect, render::ViewPreset::Iso, false);
-        camera.orthographic = out.geometry.planarCurve && camera.orthographic;
-        if (!camera.orthographic) camera.distance = c3.distance;
-        camera.yaw = o.yaw.value_or(camera.yaw);
-        camera.pitch = o.pitch.value_or(camera.pitch);
-    }
+    render::Camera camera = snapshotCamera(out.geometry, o);
     renderer.draw(camera, o.width, o.height, o.render, 0);
     out.image.width = o.width;
     out.image.height = o.height;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/image.hpp"
+#include "app/render/camera.hpp"
 #include "app/render/renderer.hpp"
 #include "core/derive.hpp"
 #include "core/turtle.hpp"
@@ -33,6 +34,8 @@ struct Snapshot {
 // False with a message (derivation refused, no OpenGL, ...) on failure.
 bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOptions& options, Snapshot& out,
                     std::string& error);
+// The camera a snapshot of `g` uses: framed on the plant, the options' view and angles.
+render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& options);
 // Renders `out.geometry` as it is (a forest scene, an imported model).
 bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error);
 

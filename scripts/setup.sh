@@ -16,6 +16,9 @@ packages=(
 )
 # The test suite checks exports with the Khronos glTF validator, from the npm registry.
 if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
+# Growth and turntable videos are encoded by ffmpeg (without it Sprout writes PNG frames);
+# the tests check the videos with ffprobe.
+if [ "$mode" = test ]; then packages+=(ffmpeg); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

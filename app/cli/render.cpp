@@ -6,6 +6,7 @@
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
+#include "app/animation.hpp"
 #include "app/cli/load.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
@@ -22,6 +23,7 @@
 #include <iterator>
 #include <sstream>
 #include <thread>
+#include <unistd.h>
 
 namespace sprout::cli {
 namespace {
@@ -143,12 +145,21 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 
 int runRender(int argc, char** argv) {
     Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats"},
-              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--max-modules"});
+              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--max-modules", "--animate", "--frames", "--fps"});
     SnapshotOptions o;
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
+    auto frames = args.integer("--frames", 1, 100000);
+    auto fps = args.integer("--fps", 1, 240);
     std::string problem = args.error();
+    std::optional<AnimationKind> animate;
+    if (auto a = args.value("--animate"); problem.empty() && a) {
+        if (*a == "growth") animate = AnimationKind::Growth;
+        else if (*a == "turntable") animate = AnimationKind::Turntable;
+        else problem = "--animate expects growth or turntable";
+    }
+    if (problem.empty() && (frames || fps) && !animate) problem = "--frames and --fps go with --animate growth|turntable";
     if (problem.empty() && args.value("--size") && !parseSize(*args.value("--size"), o.width, o.height))
         problem = "--size expects WIDTHxHEIGHT between 16x16 and 8192x8192, e.g. 1280x720";
     if (problem.empty() && (!parseFloat(args.value("--yaw"), o.yaw) || !parseFloat(args.value("--pitch"), o.pitch)))
@@ -165,7 +176,8 @@ int runRender(int argc, char** argv) {
     if (!problem.empty()) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
-                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--no-shadows] [--no-ground]\n";
+                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--no-shadows] [--no-ground]\n"
+                     "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
     }
     const std::string source = args.positionals()[0];
@@ -201,17 +213,43 @@ int runRender(int argc, char** argv) {
     o.render.shadows = !args.flag("--no-shadows");
     o.render.ground = !args.flag("--no-ground");
 
+    // The grammar travels inside the PNG, so the picture can be opened again: with -n and
+    // --seed written into it, it gives this very plant back.
+    std::string recipe = loaded->text;
+    if (n) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
+    if (seed) recipe = viewer::setDirective(recipe, "seed", std::to_string(*seed));
+    if (animate) {
+        AnimationOptions ao;
+        ao.kind = *animate;
+        if (frames) ao.frames = int(*frames);
+        if (fps) ao.fps = int(*fps);
+        ao.recipe = recipe;
+        const bool tty = isatty(2);
+        if (tty)
+            ao.progress = [&](int k, int total) {
+                std::fprintf(stderr, "\rrendering frame %d of %d", k, total);
+                if (k == total) std::fprintf(stderr, "\n");
+            };
+        AnimationResult ar;
+        std::string error;
+        const std::string out = *args.value("-o");
+        auto t0 = std::chrono::steady_clock::now();
+        if (!renderAnimation(loaded->grammar, o, ao, out, ar, error)) {
+            std::cerr << out << ": " << error << "\n";
+            return 1;
+        }
+        if (!ar.note.empty()) std::cerr << out << ": " << ar.note << "\n";
+        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("%s: %d frames%s in %.1f s\n", ar.video ? out.c_str() : ar.firstFrame.c_str(), ar.frames,
+                    ar.video ? "" : " (numbered PNG files)", secs);
+        return 0;
+    }
     Snapshot shot;
     std::string error;
     if (!renderSnapshot(loaded->grammar, o, shot, error)) {
         std::cerr << loaded->displayName << ": " << error << "\n";
         return 1;
     }
-    // The grammar travels inside the PNG, so the picture can be opened again: with -n and
-    // --seed written into it, it gives this very plant back.
-    std::string recipe = loaded->text;
-    if (n) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
-    if (seed) recipe = viewer::setDirective(recipe, "seed", std::to_string(*seed));
     shot.image.text.emplace_back("lsys", recipe);
     if (!view.empty()) shot.image.text.emplace_back("sprout-view", view);
     shot.image.text.emplace_back("Software", "Sprout " SPROUT_VERSION);

@@ -13,34 +13,34 @@ namespace {
 using namespace sprout_test;
 
 TEST(Cli, ExpandsAPreset) {
-    Result r = sprout("expand algae");
+    Result r = runSprout("expand algae");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.out, "ABAABABAABAABABAABABAABAABABAABAAB\n");  // n: 7 in the preset
-    EXPECT_EQ(sprout("expand algae -n 3").out, "ABAAB\n");
-    EXPECT_EQ(sprout("expand algae.lsys -n 2").out, "ABA\n");
+    EXPECT_EQ(runSprout("expand algae -n 3").out, "ABAAB\n");
+    EXPECT_EQ(runSprout("expand algae.lsys -n 2").out, "ABA\n");
 }
 
 TEST(Cli, ExpandsAFileAndStdin) {
     std::string path = writeTemp("apex.lsys", "axiom: FA\nA -> +FA\nF -> FF\n");
-    EXPECT_EQ(sprout("expand " + path + " -n 4").out, "FFFFFFFFFFFFFFFF+FFFFFFFF+FFFF+FF+FA\n");
-    EXPECT_EQ(sprout("expand - -n 1", "axiom: F\nF -> F+F\n").out, "F+F\n");
+    EXPECT_EQ(runSprout("expand " + path + " -n 4").out, "FFFFFFFFFFFFFFFF+FFFFFFFF+FFFF+FF+FA\n");
+    EXPECT_EQ(runSprout("expand - -n 1", "axiom: F\nF -> F+F\n").out, "F+F\n");
 }
 
 TEST(Cli, ParametersInShortestRoundTripForm) {
-    Result r = sprout("expand apex_growth -n 3");
+    Result r = runSprout("expand apex_growth -n 3");
     EXPECT_EQ(r.out, "A(0.03)\n");
-    EXPECT_EQ(sprout("expand apex_growth").out, "F\n");  // n: 101
+    EXPECT_EQ(runSprout("expand apex_growth").out, "F\n");  // n: 101
 }
 
 TEST(Cli, SeedOptionChangesTheSpecimen) {
-    std::string a = sprout("expand stochastic_weed -n 3 --seed 1").out;
-    EXPECT_EQ(a, sprout("expand stochastic_weed -n 3 --seed 1").out);
-    EXPECT_NE(a, sprout("expand stochastic_weed -n 3 --seed 2").out);
+    std::string a = runSprout("expand stochastic_weed -n 3 --seed 1").out;
+    EXPECT_EQ(a, runSprout("expand stochastic_weed -n 3 --seed 1").out);
+    EXPECT_NE(a, runSprout("expand stochastic_weed -n 3 --seed 2").out);
 }
 
 TEST(Cli, GrammarErrorsAreFileLineCol) {
     std::string path = writeTemp("bad.lsys", "n: 3\naxiom: F\nF -> F(sine(1))\nanlge: 3\n");
-    Result r = sprout("expand " + path);
+    Result r = runSprout("expand " + path);
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, path + ":3:8: unknown function 'sine' — did you mean 'sin'?\n" + path +
@@ -48,39 +48,39 @@ TEST(Cli, GrammarErrorsAreFileLineCol) {
 }
 
 TEST(Cli, SizeCapRefusalNamesStepAndCount) {
-    Result r = sprout("expand - -n 40", "axiom: F\nF -> FFFFFFFFFF\n");
+    Result r = runSprout("expand - -n 40", "axiom: F\nF -> FFFFFFFFFF\n");
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.err,
               "<stdin>: step 9 would produce 1,000,000,000 modules (1.9 GB), over the limit of "
               "500,000,000 modules; lower n or raise the limit (--max-modules)\n");
-    Result small = sprout("expand - -n 40 --max-modules 1000", "axiom: F\nF -> FFFFFFFFFF\n");
+    Result small = runSprout("expand - -n 40 --max-modules 1000", "axiom: F\nF -> FFFFFFFFFF\n");
     EXPECT_NE(small.err.find("step 4 would produce 10,000 modules"), std::string::npos) << small.err;
 }
 
 TEST(Cli, StatsPrintsEveryStep) {
-    Result r = sprout("expand fractal_plant --stats");
+    Result r = runSprout("expand fractal_plant --stats");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("non-parametric"), std::string::npos) << r.out;
     // Step rows: 0..5 with the module counts of ABOP fig. 1.24f.
     for (const char* row : {"    0               1", "    1              18", "    5           6,263"})
         EXPECT_NE(r.out.find(row), std::string::npos) << row << "\n" << r.out;
-    Result p = sprout("expand apex_growth -n 2 --stats");
+    Result p = runSprout("expand apex_growth -n 2 --stats");
     EXPECT_NE(p.out.find("parametric"), std::string::npos);
 }
 
 TEST(Cli, MissingInputsAndBadOptions) {
-    Result r = sprout("expand no_such_plant");
+    Result r = runSprout("expand no_such_plant");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("no_such_plant: no such file or preset; presets are: "), std::string::npos) << r.err;
-    EXPECT_EQ(sprout("expand algae -n many").code, 2);
-    EXPECT_NE(sprout("expand algae -n many").err.find("-n expects a whole number"), std::string::npos);
-    EXPECT_EQ(sprout("expand algae --frobnicate").code, 2);
-    EXPECT_EQ(sprout("expand /").code, 1);
-    EXPECT_EQ(sprout("expand /").err, "/: is a directory, not a grammar file\n");
+    EXPECT_EQ(runSprout("expand algae -n many").code, 2);
+    EXPECT_NE(runSprout("expand algae -n many").err.find("-n expects a whole number"), std::string::npos);
+    EXPECT_EQ(runSprout("expand algae --frobnicate").code, 2);
+    EXPECT_EQ(runSprout("expand /").code, 1);
+    EXPECT_EQ(runSprout("expand /").err, "/: is a directory, not a grammar file\n");
 }
 
 TEST(Cli, WarningsGoToStderrAndDoNotFail) {
-    Result r = sprout("expand - -n 1", "axiom: F\nF -> FF\nF -> F\n");
+    Result r = runSprout("expand - -n 1", "axiom: F\nF -> FF\nF -> F\n");
     EXPECT_EQ(r.code, 0);
     EXPECT_EQ(r.out, "FF\n");
     EXPECT_NE(r.err.find("<stdin>:3:1: warning: this rule never applies"), std::string::npos) << r.err;

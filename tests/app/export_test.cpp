@@ -8,6 +8,7 @@
 #include <regex>
 #include <tiny_obj_loader.h>
 
+#include "app/image.hpp"
 #include "tests/app/run_sprout.hpp"
 
 namespace {
@@ -42,7 +43,7 @@ TEST(Export, OneStemIsAnExactTube) {
     // One segment with 6 sides: 2 rings of 6 plus 2 cap apexes, 6 triangles per cap and 12 on the side.
     std::string grammar = writeTemp("one.lsys", "n: 0\naxiom: F\n");
     std::string out = temp("one.ply");
-    Result r = sprout("export " + grammar + " -o " + out + " --sides 6");
+    Result r = runSprout("export " + grammar + " -o " + out + " --sides 6");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(counts(r.out), std::pair(24L, 14L));
     std::string ply = slurp(out);
@@ -72,7 +73,7 @@ TEST(Export, GlbIsValidForTheKhronosValidator) {
     for (std::string preset : {"bush_3d", "abop_1_26_flower_plant", "lparser_phyllotactic_tree_ovate_leaves", "koch"}) {
         SCOPED_TRACE(preset);
         std::string out = temp(preset + ".glb");
-        Result r = sprout("export " + preset + " -o " + out);
+        Result r = runSprout("export " + preset + " -o " + out);
         ASSERT_EQ(r.code, 0) << r.err;
         auto [triangles, vertices] = counts(r.out);
         std::string glb = slurp(out);
@@ -96,7 +97,7 @@ TEST(Export, ObjLoadsBackWithTinyObjLoader) {
     for (std::string preset : {"bush_3d", "abop_1_26_flower_plant", "koch_islands_lakes"}) {
         SCOPED_TRACE(preset);
         std::string out = temp(preset + ".obj");
-        Result r = sprout("export " + preset + " -o " + out);
+        Result r = runSprout("export " + preset + " -o " + out);
         ASSERT_EQ(r.code, 0) << r.err;
         auto [triangles, vertices] = counts(r.out);
         tinyobj::ObjReader reader;
@@ -125,7 +126,7 @@ TEST(Export, ObjLoadsBackWithTinyObjLoader) {
 
 TEST(Export, PlyCarriesVertexColours) {
     std::string out = temp("bush.ply");
-    Result r = sprout("export bush_3d -o " + out);
+    Result r = runSprout("export bush_3d -o " + out);
     ASSERT_EQ(r.code, 0) << r.err;
     auto [triangles, vertices] = counts(r.out);
     std::string ply = slurp(out);
@@ -152,7 +153,7 @@ TEST(Export, PlyCarriesVertexColours) {
 
 TEST(Export, SvgIsValidXmlAndFramesTheCurve) {
     std::string out = temp("koch.svg");
-    Result r = sprout("export koch_curve_1_9b -o " + out);
+    Result r = runSprout("export koch_curve_1_9b -o " + out);
     ASSERT_EQ(r.code, 0) << r.err;
     std::string report;
     EXPECT_EQ(shell("xmllint --noout " + out, &report), 0) << report;
@@ -183,17 +184,17 @@ TEST(Export, SvgIsValidXmlAndFramesTheCurve) {
 }
 
 TEST(Export, ErrorsAreMessagesNotCrashes) {
-    Result r = sprout("export koch -o out.xyz");
+    Result r = runSprout("export koch -o out.xyz");
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("use .glb, .obj, .ply or .svg"), std::string::npos) << r.err;
-    r = sprout("export koch -o /nonexistent-dir/x.glb");
+    r = runSprout("export koch -o /nonexistent-dir/x.glb");
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("/nonexistent-dir/x.glb: No such file or directory"), std::string::npos) << r.err;
-    r = sprout("export barnsley_fern -o " + temp("f.glb"));
+    r = runSprout("export barnsley_fern -o " + temp("f.glb"));
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("not a model"), std::string::npos) << r.err;
     std::string bad = writeTemp("bad.lsys", "axiom: F\nF -> F[+F\n");
-    r = sprout("export " + bad + " -o " + temp("bad.glb"));
+    r = runSprout("export " + bad + " -o " + temp("bad.glb"));
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("bad.lsys:2:"), std::string::npos) << r.err;
 }
@@ -211,9 +212,9 @@ TEST(PngRecipe, RenderThenExpandGivesTheSameString) {
     for (const Case& c : {Case{"fractal_plant", "-n 3"}, Case{"stochastic_weed", "-n 4 --seed 5"}, Case{"abop_1_31a", ""}}) {
         SCOPED_TRACE(c.preset);
         std::string png = temp(c.preset + ".png");
-        Result r = sprout("render " + c.preset + " " + c.flags + " --size 64x64 -o " + png);
+        Result r = runSprout("render " + c.preset + " " + c.flags + " --size 64x64 -o " + png);
         ASSERT_EQ(r.code, 0) << r.err;
-        Result fromPng = sprout("expand " + png), original = sprout("expand " + c.preset + " " + c.flags);
+        Result fromPng = runSprout("expand " + png), original = runSprout("expand " + c.preset + " " + c.flags);
         ASSERT_EQ(fromPng.code, 0) << fromPng.err;
         EXPECT_EQ(fromPng.out, original.out);
         EXPECT_GT(original.out.size(), 20u);
@@ -221,32 +222,88 @@ TEST(PngRecipe, RenderThenExpandGivesTheSameString) {
     }
     // A different seed is a different specimen, so the seed really travels.
     std::string a = temp("weed_a.png");
-    ASSERT_EQ(sprout("render stochastic_weed -n 4 --seed 6 --size 64x64 -o " + a).code, 0);
-    EXPECT_NE(sprout("expand " + a).out, sprout("expand stochastic_weed -n 4 --seed 5").out);
-    EXPECT_EQ(sprout("expand " + a).out, sprout("expand stochastic_weed -n 4 --seed 6").out);
+    ASSERT_EQ(runSprout("render stochastic_weed -n 4 --seed 6 --size 64x64 -o " + a).code, 0);
+    EXPECT_NE(runSprout("expand " + a).out, runSprout("expand stochastic_weed -n 4 --seed 5").out);
+    EXPECT_EQ(runSprout("expand " + a).out, runSprout("expand stochastic_weed -n 4 --seed 6").out);
 }
 
 TEST(PngRecipe, ARenderedPictureRendersAgainTheSame) {
     std::string a = temp("again_a.png"), b = temp("again_b.png");
-    ASSERT_EQ(sprout("render bush_3d -n 2 --view side --size 96x96 -o " + a).code, 0);
-    Result r = sprout("render " + a + " --size 96x96 -o " + b);
+    ASSERT_EQ(runSprout("render bush_3d -n 2 --view side --size 96x96 -o " + a).code, 0);
+    Result r = runSprout("render " + a + " --size 96x96 -o " + b);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(slurp(a), slurp(b)) << "same grammar, n and view: the same file";
 }
 
 TEST(PngRecipe, PicturesWithoutAGrammarSaySo) {
     std::string notPng = writeTemp("fake.png", "hello");
-    Result r = sprout("expand " + notPng);
+    Result r = runSprout("expand " + notPng);
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("fake.png: is not a PNG file"), std::string::npos) << r.err;
     // A real PNG cut short.
     std::string whole = temp("whole.png");
-    ASSERT_EQ(sprout("render koch --size 64x64 -o " + whole).code, 0);
+    ASSERT_EQ(runSprout("render koch --size 64x64 -o " + whole).code, 0);
     std::string bytes = slurp(whole);
     std::string cut = writeTemp("cut.png", bytes.substr(0, 60));
-    r = sprout("expand " + cut);
+    r = runSprout("expand " + cut);
     EXPECT_EQ(r.code, 1);
     EXPECT_NE(r.err.find("damaged PNG"), std::string::npos) << r.err;
+}
+
+}  // namespace
+
+namespace {
+using namespace sprout_test;
+
+std::string probe(const std::string& file) {
+    std::string out;
+    shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=codec_name,width,height,nb_read_frames "
+          "-of csv=p=0 " + file, &out);
+    return out;
+}
+
+TEST(Animation, GrowthAndTurntableVideosHaveTheirFrames) {
+    ASSERT_EQ(shell("command -v ffmpeg && command -v ffprobe"), 0) << "scripts/setup.sh test installs ffmpeg";
+    std::string grow = temp("grow.mp4"), turn = temp("turn.mp4");
+    Result r = runSprout("render fractal_plant -n 4 --animate growth --fps 10 --size 320x240 -o " + grow);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("21 frames"), std::string::npos) << r.out;  // half a second per step, axiom to step 4
+    EXPECT_EQ(probe(grow), "h264,320,240,21\n");
+    // Odd sizes are made even for H.264.
+    r = runSprout("render bush_3d -n 2 --animate turntable --frames 12 --size 201x151 -o " + turn);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(probe(turn), "h264,200,150,12\n");
+    std::remove(grow.c_str());
+    std::remove(turn.c_str());
+}
+
+TEST(Animation, PngFramesWithoutFfmpegShowThePlantGrowing) {
+    // No ffmpeg on the PATH: the frames are written as numbered PNGs, each carrying the grammar.
+    std::string base = temp("growth");
+    std::string cmd = "env PATH=/nonexistent " + std::string(SPROUT_BINARY) +
+                      " render fractal_plant -n 4 --animate growth --frames 5 --size 160x120 -o " + base + ".mp4";
+    std::string out;
+    ASSERT_EQ(shell(cmd, &out), 0) << out;
+    EXPECT_NE(out.find("ffmpeg is not installed"), std::string::npos) << out;
+    std::vector<::sprout::Image> frames(5);
+    for (int k = 0; k < 5; ++k) {
+        std::string frame = base + "_000" + std::to_string(k + 1) + ".png", error;
+        ASSERT_TRUE(::sprout::readPng(frame, frames[k], error)) << frame << ": " << error;
+        EXPECT_EQ(runSprout("expand " + frame).out, runSprout("expand fractal_plant -n 4").out) << "frames carry the recipe";
+        std::filesystem::remove(frame);
+    }
+    // Frame 1 is the axiom (nothing drawn); each later frame covers more of the picture, the
+    // camera does not move, so the plant grows in place.
+    std::vector<long> plant;
+    for (const auto& f : frames) {
+        long differ = 0;
+        for (size_t i = 0; i < f.rgba.size(); i += 4)
+            differ += std::abs(int(f.rgba[i]) - int(frames[0].rgba[i])) + std::abs(int(f.rgba[i + 1]) - int(frames[0].rgba[i + 1])) > 30;
+        plant.push_back(differ);
+    }
+    EXPECT_EQ(plant[0], 0);
+    for (int k = 1; k < 5; ++k) EXPECT_GT(plant[k], plant[k - 1]) << "frame " << k + 1;
+    EXPECT_GT(plant[4], 300);
 }
 
 }  // namespace

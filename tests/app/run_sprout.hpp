@@ -15,7 +15,7 @@ struct Result {
     std::string out, err;
 };
 
-inline Result sprout(const std::string& args, const std::string& stdinText = "") {
+inline Result runSprout(const std::string& args, const std::string& stdinText = "") {
     // ctest runs tests in parallel processes: every call gets its own files.
     static int calls = 0;
     std::string tag = std::to_string(getpid()) + "_" + std::to_string(++calls);
