@@ -56,6 +56,9 @@ struct App {
     // Pending file dialogs (a path typed in a popup).
     bool openPopup = false, saveAsPopup = false, quitPopup = false, exportPopup = false;
     ExportJob exportJob;
+    VideoJob videoJob;
+    bool videoPopup = false;
+    int videoKind = 0;  // 0 growth, 1 turntable
     std::string pathInput;
     bool quitRequested = false;
     bool quitConfirmed = false;
@@ -72,6 +75,8 @@ struct App {
     bool takeScreenshot(const std::string& path, int width, int height);
     // Writes the plant on screen as .glb, .obj, .ply or .svg on a background thread.
     void exportModel(const std::string& path);
+    // Records the plant on screen as a growth or turntable video (a child process renders it).
+    void recordVideo(const std::string& kind, const std::string& path);
     std::string nextScreenshotPath() const;
 };
 

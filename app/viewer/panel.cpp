@@ -1,5 +1,6 @@
 // The ImGui panel: grammar editor with errors, sliders, growth, view and light, presets,
 // files and the statistics line.
+#include <cstring>
 #include <filesystem>
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
 #define GLFW_INCLUDE_NONE
@@ -210,6 +211,8 @@ void growthSection(App& app) {
     ImGui::Checkbox("loop", &app.state.loop);
     ImGui::SliderFloat("steps / s", &app.state.stepsPerSecond, 0.25f, 10, "%.2f");
     ImGui::Checkbox("smooth growth (new segments grow in)", &app.state.smoothGrowth);
+    if (ImGui::Button(app.videoJob.running() ? "Recording..." : "Record video...") && !app.videoJob.running()) app.videoPopup = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the growth from the axiom to step n, or a 360-degree turntable, as MP4");
 }
 
 void viewSection(App& app) {
@@ -293,6 +296,7 @@ void fileMenu(App& app) {
             if (ImGui::MenuItem("Save", "Ctrl+S")) app.save();
             if (ImGui::MenuItem("Save as...")) app.saveAsPopup = true;
             if (ImGui::MenuItem("Export model...", "Ctrl+E", false, !app.exportJob.running())) app.exportPopup = true;
+            if (ImGui::MenuItem("Record video...", nullptr, false, !app.videoJob.running())) app.videoPopup = true;
             if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.quitRequested = true;
             ImGui::EndMenu();
         }
@@ -332,6 +336,38 @@ void fileMenu(App& app) {
         app.exportPopup, "Export model", "Export", [&](const std::string& p) { app.exportModel(p); }, ".glb",
         "The format follows the extension: .glb (glTF: Blender, game engines), .obj (+ .mtl),\n"
         ".ply (vertex colours) or .svg (a 2D drawing, for planar systems and papers).");
+    if (app.videoPopup) {
+        ImGui::OpenPopup("Record video");
+        std::filesystem::path p = app.state.path().empty() ? std::filesystem::path("plant") : app.state.path();
+        app.pathInput = p.replace_extension().string() + (app.videoKind == 0 ? "-growth.mp4" : "-turntable.mp4");
+        app.videoPopup = false;
+    }
+    if (ImGui::BeginPopupModal("Record video", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        const int before = app.videoKind;
+        ImGui::RadioButton("growth: axiom to step n, half a second per step", &app.videoKind, 0);
+        ImGui::RadioButton("turntable: 360 degrees in 5 seconds", &app.videoKind, 1);
+        if (before != app.videoKind) {  // follow the kind in the suggested name
+            const char* from = before == 0 ? "-growth.mp4" : "-turntable.mp4";
+            const char* to = app.videoKind == 0 ? "-growth.mp4" : "-turntable.mp4";
+            if (app.pathInput.ends_with(from)) app.pathInput = app.pathInput.substr(0, app.pathInput.size() - std::strlen(from)) + to;
+        }
+        ImGui::TextUnformatted("1280 x 720, 24 frames/s; .mp4 needs ffmpeg, otherwise or with .png: numbered PNG frames");
+        ImGui::SetNextItemWidth(360);
+        bool enter = ImGui::InputText("path", &app.pathInput, ImGuiInputTextFlags_EnterReturnsTrue);
+        if (ImGui::Button("Record") || enter) {
+            app.recordVideo(app.videoKind == 0 ? "growth" : "turntable", app.pathInput);
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (app.videoJob.running()) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " (%.0f s)", app.videoJob.seconds());
+        ImGui::TextUnformatted(("recording " + app.videoJob.path() + buf).c_str());
+    }
+    if (std::string m = app.videoJob.poll(); !m.empty()) app.say(m);
     // A running export: its progress, and its result when it ends.
     if (app.exportJob.running()) {
         ImGui::ProgressBar(float(app.exportJob.progress()), ImVec2(-1, 0), ("exporting " + app.exportJob.path()).c_str());

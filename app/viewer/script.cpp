@@ -6,6 +6,7 @@
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
+//   record growth|turntable <path>   as Record video (waits until it is written)
 //   quit
 #include "app/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
@@ -41,6 +42,10 @@ bool Script::step(App& app) {
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
         if (app.exportJob.running()) return true;
+        if (app.videoJob.running()) {
+            if (std::string m = app.videoJob.poll(); !m.empty()) app.say(m);
+            return true;
+        }
         m_lines.pop_front();
         struct After {
             Script& s;
@@ -105,6 +110,10 @@ bool Script::step(App& app) {
             int w = 0, h = 0;
             if (!size.empty()) std::sscanf(size.c_str(), "%dx%d", &w, &h);
             app.takeScreenshot(path, w, h);
+        } else if (cmd == "record") {
+            std::string kind, path;
+            in >> kind >> path;
+            app.recordVideo(kind, path);
         } else if (cmd == "export") {
             std::string path;
             in >> path;

@@ -51,7 +51,17 @@ struct Mouse {
 
 }  // namespace
 
-App::App(std::string executable) : thumbnails(std::move(executable), cacheDir()) { applySun(); }
+App::App(std::string executable) : thumbnails(executable, cacheDir()), videoJob(executable) { applySun(); }
+
+void App::recordVideo(const std::string& kind, const std::string& path) {
+    auto plant = state.plant();
+    std::string error;
+    if (!plant || !plant->grammar || !plant->geometry)
+        error = "videos are made of L-system plants (not of an IFS or a forest scene)";
+    else if (videoJob.start(state.text(), kind, path, plant->iterations, plant->seed, 1280, 720, error))
+        say("recording " + path + " ...");
+    if (!error.empty()) say(error);
+}
 
 void App::exportModel(const std::string& path) {
     std::string error;

@@ -105,5 +105,21 @@ TEST(Window, ExportModelWritesWhatIsOnScreen) {
     EXPECT_TRUE(std::ifstream(svg).good());
 }
 
+TEST(Window, RecordVideoWritesTheGrowthOfThePlantOnScreen) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string dir = testing::TempDir();
+    const std::string mp4 = dir + "sprout_viewer_growth.mp4", script = dir + "sprout_record.txt";
+    std::remove(mp4.c_str());
+    std::ofstream(script) << "set n 2\nwait\nrecord growth " << mp4 << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --script " + script), 0);
+    // n 2 from the slider: half a second per step at 24 frames/s, 1280x720.
+    FILE* p = popen(("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=width,height,nb_read_frames "
+                     "-of csv=p=0 " + mp4).c_str(), "r");
+    char buf[128] = {0};
+    size_t n = fread(buf, 1, sizeof buf - 1, p);
+    pclose(p);
+    EXPECT_EQ(std::string(buf, n), "1280,720,25\n");
+}
+
 }  // namespace
 }  // namespace sprout
