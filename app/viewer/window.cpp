@@ -165,6 +165,11 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
         else renderer.upload(*plant->geometry);
     }
     img.text.emplace_back("lsys", state.text());
+    if (!cam.orthographic) {  // `sprout render FILE.png` looks from the same direction
+        char view[64];
+        std::snprintf(view, sizeof view, "--yaw %.1f --pitch %.1f", double(cam.yaw), double(cam.pitch));
+        img.text.emplace_back("sprout-view", view);
+    }
     img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
     std::string error;
     bool ok = writePng(path, img, error);
