@@ -47,18 +47,30 @@ bool parseFloat(const std::optional<std::string>& s, std::optional<float>& out) 
     return true;
 }
 
+bool isPng(const std::string& path) { return path.size() > 4 && path.substr(path.size() - 4) == ".png"; }
+
+// The text of a file, or of the chunk `key` when it is a PNG written by Sprout.
+std::optional<std::string> readSource(const std::string& path, const char* key) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    if (!isPng(path)) return text;
+    std::string error;
+    return pngTextChunk(text, key, error);
+}
+
 // An iterated function system: the chaos game into a density image, log tone mapped.
 int renderIfs(const std::string& source, const SnapshotOptions& o, const std::string& out, bool stats) {
     std::string text;
     if (auto preset = presetText(source); preset && !std::filesystem::exists(source)) {
         text = std::string(*preset);
     } else {
-        std::ifstream in(source, std::ios::binary);
-        if (!in) {
+        auto t = readSource(source, "ifs");
+        if (!t) {
             std::cerr << source << ": cannot be opened\n";
             return 1;
         }
-        text.assign(std::istreambuf_iterator<char>(in), {});
+        text = std::move(*t);
     }
     IfsParseResult parsed = parseIfs(text);
     for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
@@ -90,8 +102,7 @@ bool buildForestScene(const std::string& source, std::optional<std::uint64_t> se
                       Geometry& geometry, ForestStats& fs, std::string& text) {
     std::filesystem::path dir;
     if (std::filesystem::exists(source)) {
-        std::ifstream in(source, std::ios::binary);
-        text.assign(std::istreambuf_iterator<char>(in), {});
+        text = readSource(source, "forest").value_or("");
         dir = std::filesystem::path(source).parent_path();
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
@@ -201,9 +212,11 @@ int runRender(int argc, char** argv) {
             view = *v;
         }
     }
-    if (source.ends_with(".ifs") || isIfsPreset(source)) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
+    // A PNG of an IFS or a forest scene is rendered as what it holds.
+    const bool ifsPng = isPng(source) && readSource(source, "ifs"), forestPng = isPng(source) && readSource(source, "forest");
+    if (source.ends_with(".ifs") || isIfsPreset(source) || ifsPng) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
     const auto scenes = scenePresetNames();
-    if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end())
+    if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end() || forestPng)
         return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
     auto loaded = loadGrammar(source);
     if (!loaded) return 1;

@@ -233,6 +233,13 @@ TEST(PngRecipe, ARenderedPictureRendersAgainTheSame) {
     Result r = runSprout("render " + a + " --size 96x96 -o " + b);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(slurp(a), slurp(b)) << "same grammar, n and view: the same file";
+    // Iterated function systems and forest scenes travel the same way.
+    for (std::string preset : {"barnsley_fern", "weed_field"}) {
+        ASSERT_EQ(runSprout("render " + preset + " --size 96x96 -o " + a).code, 0);
+        r = runSprout("render " + a + " --size 96x96 -o " + b);
+        ASSERT_EQ(r.code, 0) << r.err;
+        EXPECT_EQ(slurp(a), slurp(b)) << preset;
+    }
 }
 
 TEST(PngRecipe, PicturesWithoutAGrammarSaySo) {
