@@ -1,5 +1,6 @@
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "core/parser_impl.hpp"
@@ -25,8 +26,12 @@ DirectiveHandler number(double Settings::*field, double min, double max, const c
         auto v = p.constant(line, value);
         if (!v) return;
         if (!(*v >= min && *v <= max)) {
-            p.sink().error(line, value, std::string(what) + " must be between " + std::to_string(min) +
-                                            " and " + std::to_string(max));
+            auto text = [](double x) {
+                char b[32];
+                std::snprintf(b, sizeof b, "%g", x);
+                return std::string(b);
+            };
+            p.sink().error(line, value, std::string(what) + " must be between " + text(min) + " and " + text(max));
             return;
         }
         p.grammar().settings.*field = *v;
@@ -97,7 +102,7 @@ void branchScale(Parser& p, const SourceLine& line, std::string_view value) {
     auto v = p.numbers(line, value, 1, 2, "branch_scale: 0.8 0.7");
     if (!v) return;
     for (double x : *v)
-        if (!(x > 0 && x <= 10)) return p.sink().error(line, value, "branch_scale factors must be between 0 and 10");
+        if (!(x > 0 && x <= 10)) return p.sink().error(line, value, "branch_scale factors must be greater than 0 and at most 10");
     p.grammar().settings.branchLength = (*v)[0];
     p.grammar().settings.branchWidth = v->size() > 1 ? (*v)[1] : (*v)[0];
 }

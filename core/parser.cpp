@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -179,11 +180,21 @@ std::optional<double> Parser::constant(const SourceLine& line, std::string_view 
     ExprScope scope{nullptr, &m_g.defines};
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
-    if (e->isConstant()) return e->constantValue();
-    // rand() in the axiom, defines or settings: one stream for the whole file, seeded by
-    // `seed:` (read before everything else), so each call gives a new value.
-    if (!m_rng) m_rng = Rng::forStream(m_g.settings.seed, 0x5eed);
-    return e->eval(nullptr, *m_rng);
+    double v;
+    if (e->isConstant()) {
+        v = e->constantValue();
+    } else {
+        // rand() in the axiom, defines or settings: one stream for the whole file, seeded by
+        // `seed:` (read before everything else), so each call gives a new value.
+        if (!m_rng) m_rng = Rng::forStream(m_g.settings.seed, 0x5eed);
+        v = e->eval(nullptr, *m_rng);
+    }
+    if (!std::isfinite(v)) {
+        m_sink.error(line, text, std::string("this value is ") + (std::isnan(v) ? "not a number" : "infinite") +
+                                     " (a division by zero, or a number too large?)");
+        return std::nullopt;
+    }
+    return v;
 }
 
 std::optional<Jittered> Parser::jittered(const SourceLine& line, std::string_view text) {
@@ -532,7 +543,18 @@ void Parser::classify(Line& l, bool& inInterpretation) {
     }
     if (t.starts_with("#") || t.starts_with("//")) return;
     l.interpretation = inInterpretation;
-    if (findTopLevel(t, "->") != std::string_view::npos) {
+    if (size_t arrow = findTopLevel(t, "->"); arrow != std::string_view::npos) {
+        // "axiom: F -> FF": a setting and a rule run together on one line.
+        size_t colon = t.find(':');
+        if (colon != std::string_view::npos && colon < arrow) {
+            std::string k(trim(t.substr(0, colon)));
+            std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+            for (const auto& d : directives())
+                if (k == d.name || (k == "iterations" && std::string_view(d.name) == "n")) {
+                    m_sink.error(l.src, t.substr(arrow), "'" + k + ":' is a setting and '->' makes a rule: put the rule on a line of its own");
+                    return;
+                }
+        }
         l.kind = Line::Rule;
         return;
     }
@@ -637,6 +659,21 @@ ParseResult Parser::run() {
             size_t ls = size_t(l.src.text.data() - m_text.data());
             if (offset >= ls && offset <= ls + l.src.text.size()) {
                 m_sink.warning(l.src, l.src.text.substr(offset - ls), what);
+                break;
+            }
+        }
+    }
+    // Control characters (a binary file, or a paste gone wrong): one error per line, at the
+    // first one, and the line is not read further.
+    int binaryLines = 0;
+    for (auto& l : m_lines) {
+        for (size_t i = 0; i < l.src.text.size(); ++i) {
+            unsigned char c = static_cast<unsigned char>(l.src.text[i]);
+            if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+                char msg[96];
+                std::snprintf(msg, sizeof msg, "unexpected control character (byte 0x%02x): is this a text file?", c);
+                if (++binaryLines <= 5) m_sink.error(l.src, l.src.text.substr(i), msg);
+                l.src.text = l.src.text.substr(0, 0);
                 break;
             }
         }

@@ -93,9 +93,11 @@ std::uint32_t lerpColour(std::uint32_t a, std::uint32_t b, float t) {
     return out;
 }
 
+// Parameters the turtle can use: finite, and small enough that float positions summed over
+// millions of segments stay finite (beyond 1e30 is treated like infinity: not drawn).
 bool finite(const double* p, int n) {
     for (int k = 0; k < n; ++k)
-        if (!std::isfinite(p[k])) return false;
+        if (!(std::fabs(p[k]) <= 1e30)) return false;
     return true;
 }
 

@@ -1,0 +1,75 @@
+// libFuzzer targets, one per input Sprout reads. Built with clang by scripts/fuzz.sh (see
+// fuzz/CMakeLists.txt); each target is this file compiled with SPROUT_FUZZ_<NAME> defined.
+// A crash, a sanitizer report, a leak or a timeout is a failure; every input must end in a
+// value or in diagnostics.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "core/derive.hpp"
+#include "core/expr.hpp"
+#include "core/grammar.hpp"
+#include "core/import/import.hpp"
+#include "core/rng.hpp"
+#include "core/turtle.hpp"
+
+namespace {
+
+using namespace sprout;
+
+// Derives a few steps under a small size cap and draws the result: what the viewer does on
+// every keystroke, bounded so that the fuzzer stays fast.
+void deriveAndDraw(const std::string& text, int maxSteps) {
+    ParseResult r = parse(text);
+    if (!r.ok()) return;
+    DeriveOptions o;
+    o.limits.maxModules = 200'000;
+    o.limits.maxBytes = 64ull << 20;
+    Derivation d(r.grammar, o);
+    const int n = std::min(r.grammar->settings.iterations, maxSteps);
+    if (!d.deriveTo(n).ok()) return;
+    Geometry g;
+    interpret(*d.step(n), *r.grammar, {n, d.seed(), nullptr}, g);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string input(reinterpret_cast<const char*>(data), size);
+#if defined(SPROUT_FUZZ_PARSER)
+    (void)parse(input);
+#elif defined(SPROUT_FUZZ_EXPR)
+    // One expression, with two parameters and a define in scope, compiled and run.
+    std::string line = input.substr(0, input.find('\n'));
+    SourceLine src{1, line, {}};
+    std::vector<std::string> params{"x", "t"};
+    std::unordered_map<std::string, double> defines{{"r", 0.7}};
+    DiagnosticSink sink;
+    if (auto e = compileExpr(line, src, {&params, &defines}, sink)) {
+        const double slots[2] = {1.5, -2.0};
+        Rng rng(1);
+        (void)e->eval(slots, rng);
+    }
+#elif defined(SPROUT_FUZZ_DERIVE)
+    deriveAndDraw(input, 6);
+#elif defined(SPROUT_FUZZ_TURTLE)
+    // Any module string drawn: the input is the axiom of a system with no rules.
+    std::string axiom;
+    for (char c : input) axiom += c == '\n' || c == '\r' ? ' ' : c;
+    deriveAndDraw("n: 0\nangle: 30\naxiom: " + axiom + "\n", 0);
+#elif defined(SPROUT_FUZZ_LPARSER)
+    ImportResult r = importLparser(input, "fuzz.ls");
+    if (r.ok()) deriveAndDraw(r.text, 4);
+#elif defined(SPROUT_FUZZ_FRACTINT)
+    for (const auto& s : listFractint(input)) (void)s;
+    ImportResult r = importFractint(input, "");
+    if (r.ok()) deriveAndDraw(r.text, 4);
+#elif defined(SPROUT_FUZZ_PNG)
+    ImportResult r = importPng(input);
+    if (r.ok()) (void)parse(r.text);
+#else
+#error "define one SPROUT_FUZZ_<TARGET>"
+#endif
+    return 0;
+}

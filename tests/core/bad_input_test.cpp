@@ -1,0 +1,108 @@
+// tests/bad-input: malformed grammars, each with the first message Sprout must give and its
+// position; plus the extremes (a million brackets, NaN and infinity in parameters).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/derive.hpp"
+#include "core/grammar.hpp"
+#include "core/turtle.hpp"
+
+namespace sprout {
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(BadInput, EveryFileGetsItsMessageAtItsPosition) {
+    const std::filesystem::path dir = SPROUT_BAD_INPUT_DIR;
+    std::map<std::string, std::pair<std::string, std::string>> expected;
+    std::istringstream table(slurp(dir / "expected.tsv"));
+    for (std::string line; std::getline(table, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        size_t a = line.find('\t'), b = line.find('\t', a + 1);
+        ASSERT_NE(b, std::string::npos) << line;
+        expected[line.substr(0, a)] = {line.substr(a + 1, b - a - 1), line.substr(b + 1)};
+    }
+    int files = 0, malformed = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".lsys") continue;
+        const std::string name = entry.path().filename().string();
+        SCOPED_TRACE(name);
+        ++files;
+        auto it = expected.find(name);
+        ASSERT_NE(it, expected.end()) << "no line for it in expected.tsv";
+        const auto& [where, message] = it->second;
+        ParseResult r = parse(slurp(entry.path()));
+        if (where == "ok" || where == "derive") {
+            ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);
+            Derivation d(r.grammar);
+            const int n = r.grammar->settings.iterations;
+            DeriveOutcome o = d.deriveTo(n);
+            if (where == "derive") {
+                ++malformed;
+                EXPECT_FALSE(o.ok());
+                EXPECT_EQ(o.message, message);
+            } else {
+                ASSERT_TRUE(o.ok()) << o.message;
+                Geometry g;
+                interpret(*d.step(n), *r.grammar, {n, d.seed(), nullptr}, g);
+            }
+            continue;
+        }
+        ++malformed;
+        ASSERT_FALSE(r.diagnostics.empty()) << "accepted without a word";
+        const Diagnostic& first = r.diagnostics.front();
+        EXPECT_EQ(std::to_string(first.line) + ":" + std::to_string(first.col), where);
+        EXPECT_EQ((first.severity == Severity::Warning ? "warning: " : "") + first.message, message);
+    }
+    EXPECT_EQ(files, int(expected.size())) << "expected.tsv names files that are not there";
+    EXPECT_GE(malformed, 50);
+}
+
+TEST(BadInput, AMillionNestedBracketsDeriveAndDraw) {
+    const std::string deep(1000000, '[');
+    ParseResult r = parse("axiom: " + deep + "F" + std::string(1000000, ']') + "\n");
+    ASSERT_TRUE(r.ok());
+    Derivation d(r.grammar);
+    ASSERT_TRUE(d.deriveTo(0).ok());
+    Geometry g;
+    interpret(*d.step(0), *r.grammar, {0, 1, nullptr}, g);
+    EXPECT_EQ(g.cylinders.size(), 1u);
+    // Unclosed: an error at the first bracket that is never closed.
+    ParseResult open = parse("axiom: F" + deep + "\n");
+    ASSERT_FALSE(open.ok());
+    EXPECT_EQ(open.diagnostics[0].line, 1);
+    EXPECT_NE(open.diagnostics[0].message.find("never closed"), std::string::npos);
+}
+
+TEST(BadInput, NanAndInfinityInParametersAreNotDrawn) {
+    // Parameters that overflow while deriving: the turtle skips what is not finite.
+    ParseResult r = parse("n: 3\naxiom: A(1e300)\nA(x) -> F(x)+(x)A(x*x)F(1)\n");
+    ASSERT_TRUE(r.ok());
+    Derivation d(r.grammar);
+    ASSERT_TRUE(d.deriveTo(3).ok());
+    Geometry g;
+    interpret(*d.step(3), *r.grammar, {3, 1, nullptr}, g);
+    for (const auto& c : g.cylinders) {
+        ASSERT_TRUE(std::isfinite(c.start.x) && std::isfinite(c.start.y) && std::isfinite(c.start.z));
+        ASSERT_TRUE(std::isfinite(c.end.x) && std::isfinite(c.end.y) && std::isfinite(c.end.z));
+    }
+    EXPECT_TRUE(std::isfinite(g.bounds.min.x) && std::isfinite(g.bounds.max.y));
+    // 0/0 while deriving is NaN: also skipped.
+    ParseResult z = parse("n: 2\naxiom: A(0)\nA(x) -> F(x/x)A(x)F(1)\n");
+    ASSERT_TRUE(z.ok());
+    Derivation dz(z.grammar);
+    ASSERT_TRUE(dz.deriveTo(2).ok());
+    interpret(*dz.step(2), *z.grammar, {2, 1, nullptr}, g);
+    for (const auto& c : g.cylinders) ASSERT_TRUE(std::isfinite(c.end.y));
+}
+
+}  // namespace
+}  // namespace sprout
