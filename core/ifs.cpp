@@ -157,8 +157,10 @@ bool chaosGame(const Ifs& ifs, int width, int height, Density& out, int threads,
                     double nx = m.a * x + m.b * y + m.e;
                     y = m.c * x + m.d * y + m.f;
                     x = nx;
-                    unsigned px = unsigned(int((x - minX) * sx)), py = unsigned(int((maxY - y) * sy));
-                    if (px < w && py < h) ++counts[py * w + px];
+                    // Compared as doubles first: a map that is not contractive sends points to
+                    // infinity or NaN, which must be skipped, not converted.
+                    const double fx = (x - minX) * sx, fy = (maxY - y) * sy;
+                    if (fx >= 0 && fy >= 0 && fx < double(w) && fy < double(h)) ++counts[unsigned(fy) * w + unsigned(fx)];
                 }
             }
         }

@@ -95,7 +95,7 @@ std::string translate(const std::string& s, int line, std::vector<Diagnostic>& d
             }
             case '<': case '>': {
                 std::string n = numberAt(s, i);
-                int k = n.empty() ? 1 : std::max(0, std::min(64, std::atoi(n.c_str())));
+                int k = n.empty() ? 1 : n.size() > 3 ? 64 : std::max(0, std::min(64, std::atoi(n.c_str())));
                 for (int j = 0; j < k; ++j) out += c == '<' ? ';' : ',';
                 break;
             }

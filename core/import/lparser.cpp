@@ -1,5 +1,7 @@
 // Lparser 5 files -> .lsys. Lparser's commands differ from ABOP's; each is mapped to what
 // Sprout's turtle does the same way (see the table in translate()).
+#include <cmath>
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +12,11 @@
 
 namespace sprout {
 namespace {
+
+// A recursion depth from any number: out-of-range values stay out of range (the .lsys
+// parser then says what n may be) without undefined conversions.
+int countOf(double v) { return std::isnan(v) ? -1 : int(std::clamp(v, -1.0, 1e6)); }
+
 
 // Lparser's 16-colour table is not documented; this one keeps the roles its examples give
 // the indices: c(12) "close to that of the stem" (seed document 001), c(4) and c(8) leaves,
@@ -155,7 +162,7 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             if (key == "@") break;
             if (positional <= 3) {
                 double v = std::atof(key.c_str());
-                if (positional == 1) recursion = int(v);
+                if (positional == 1) recursion = countOf(v);
                 else if (positional == 2) tr.angle = v;
                 else thickness = v;
                 ++positional;
@@ -188,7 +195,7 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
         lastWasAxiom = key == "axiom";
         if (key == "recursion") {
             number_(v);
-            recursion = int(v);
+            recursion = countOf(v);
         } else if (key == "angle") {
             number_(tr.angle);
         } else if (key == "thickness") {

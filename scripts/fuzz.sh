@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Fuzzing: builds the libFuzzer targets with clang (core only, ASan + UBSan) and runs each for
+# a bounded time. Fails on any crash, sanitizer report, leak or timeout; the input that did it
+# is left in build-fuzz/artifacts/ (add it to fuzz/regressions/TARGET/, which ctest replays).
+#
+#   scripts/fuzz.sh [SECONDS_PER_TARGET]   (default 60)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ -n "${missing[*]:-}" ]; then
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPROUT_FUZZ=ON \
+  -DSPROUT_BUILD_TESTS=OFF -DSPROUT_BUILD_BENCH=OFF >/dev/null
+cmake --build build-fuzz -j"$jobs"
+
+shared=../shared/corpus
+seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursively)
+  case "$1" in
+    parser|derive|turtle) echo presets tests/bad-input fuzz/regressions/"$1" ;;
+    expr) echo fuzz/seeds/expr fuzz/regressions/expr ;;
+    lparser) echo tests/data/seed001 fuzz/regressions/lparser; [ -d "$shared/lparser" ] && echo "$shared/lparser" ;;
+    fractint) echo fuzz/seeds/fractint fuzz/regressions/fractint; [ -d "$shared" ] && echo "$shared" ;;
+    png) echo tests/golden fuzz/regressions/png ;;
+  esac
+}
+mkdir -p build-fuzz/artifacts
+status=0
+for t in parser expr derive turtle lparser fractint png; do
+  corpus=build-fuzz/corpus/$t
+  mkdir -p "$corpus" fuzz/regressions/"$t"
+  dirs=()
+  for d in $(seeds "$t"); do [ -d "$d" ] && dirs+=("$d"); done
+  echo "== fuzz_$t for ${seconds}s (seeds: ${dirs[*]})"
+  if ! ASAN_OPTIONS=detect_leaks=1 ./build-fuzz/fuzz/fuzz_$t -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -max_len=65536 -dict=fuzz/lsys.dict -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/$t- \
+      "$corpus" "${dirs[@]}" 2>build-fuzz/$t.log; then
+    echo "fuzz_$t FAILED:"; grep -E "ERROR|SUMMARY|runtime error|Test unit written" build-fuzz/$t.log | head -20
+    status=1
+  fi
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" build-fuzz/$t.log | tr '\n' ' '; echo
+done
+exit $status
