@@ -7,11 +7,15 @@
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
 //   record growth|turntable <path>   as Record video (waits until it is written)
+//   saveas <path>         save the text (as File > Save as)
+//   recover               take the autosaved text of a session that did not end normally
+//   crash                 the process is killed on the spot (tests of crash recovery)
 //   quit
 #include "app/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -60,6 +64,17 @@ bool Script::step(App& app) {
             return true;
         }
         if (cmd == "quit") return false;
+        if (cmd == "crash") std::raise(SIGKILL);
+        if (cmd == "recover") {
+            if (auto text = app.state.recoverable()) app.state.setText(*text);
+            return true;
+        }
+        if (cmd == "saveas") {
+            std::string path, error;
+            in >> path;
+            app.say(app.state.saveAs(path, error) ? "saved " + path : error);
+            return true;
+        }
         if (cmd == "text") {
             std::string rest;
             std::getline(in, rest);

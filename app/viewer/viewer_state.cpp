@@ -73,6 +73,13 @@ ViewerState::ViewerState(fs::path autosaveDir)
     const fs::path marker = m_autosaveDir / "session";
     m_crashedBefore = fs::exists(marker, ec);
     std::ofstream(marker) << ::getpid() << "\n";
+    if (m_crashedBefore) {
+        // Kept in memory (and in a copy on disk) before this session's first autosave
+        // overwrites the file: the offer to recover must find the old text.
+        m_recovered = readText(m_autosaveDir / "autosave.lsys").value_or("");
+        if (!m_recovered.empty()) fs::copy_file(m_autosaveDir / "autosave.lsys", m_autosaveDir / "previous-session.lsys",
+                                                fs::copy_options::overwrite_existing, ec);
+    }
 }
 
 ViewerState::~ViewerState() = default;
@@ -272,10 +279,8 @@ void ViewerState::autosave(bool force) {
 }
 
 std::optional<std::string> ViewerState::recoverable() const {
-    if (!m_crashedBefore) return std::nullopt;
-    auto text = readText(m_autosaveDir / "autosave.lsys");
-    if (!text || text->empty() || *text == m_text) return std::nullopt;
-    return text;
+    if (!m_crashedBefore || m_recovered.empty() || m_recovered == m_text) return std::nullopt;
+    return m_recovered;
 }
 
 void ViewerState::discardRecovery() { m_crashedBefore = false; }

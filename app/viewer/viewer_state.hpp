@@ -98,6 +98,7 @@ private:
     std::filesystem::path m_autosaveDir;
     std::chrono::steady_clock::time_point m_lastAutosave{};
     std::string m_autosaved;
+    std::string m_recovered;  // the text autosaved by a session that did not end cleanly
     bool m_crashedBefore = false;
 };
 

@@ -171,6 +171,7 @@ TEST(ViewerState, AutosaveIsOfferedBackAfterACrash) {
     }
     ViewerState again(dir);
     again.openText(kPlant);
+    again.autosave(true);  // the new session's first autosave must not lose the old text
     auto text = again.recoverable();
     ASSERT_TRUE(text);
     EXPECT_EQ(*text, "n: 4\naxiom: F\nF -> F+F\n");

@@ -121,5 +121,22 @@ TEST(Window, RecordVideoWritesTheGrowthOfThePlantOnScreen) {
     EXPECT_EQ(std::string(buf, n), "1280,720,25\n");
 }
 
+TEST(Window, TextComesBackAfterTheProcessIsKilledMidEdit) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
+    fs::remove_all(home / "state");
+    const std::string edited = "n: 2\nangle: 20\naxiom: F\nF -> F[+F]F[-F]  # typed, never saved\n";
+    const std::string dir = testing::TempDir(), first = dir + "sprout_crash.txt", second = dir + "sprout_recover.txt";
+    // An edit, a few seconds of work, then SIGKILL: no chance to save anything on the way out.
+    std::ofstream(first) << "text n: 2\\nangle: 20\\naxiom: F\\nF -> F[+F]F[-F]  # typed, never saved\\n\nwait\nsleep 3\ncrash\n";
+    EXPECT_NE(runUnderXvfb("fractal_plant --script " + first), 0) << "the viewer was killed";
+    // The next start offers the text back; taking it and saving gives exactly what was typed.
+    const std::string saved = (home / "recovered.lsys").string();
+    std::ofstream(second) << "recover\nwait\nsaveas " << saved << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --script " + second), 0);
+    std::ifstream in(saved, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), edited);
+}
+
 }  // namespace
 }  // namespace sprout
