@@ -115,7 +115,9 @@ TEST(Export, ObjLoadsBackWithTinyObjLoader) {
         }
         EXPECT_EQ(faces, triangles);
         EXPECT_TRUE(groups.count("stems")) << "stems group";
-        if (preset == "abop_1_26_flower_plant") EXPECT_TRUE(groups.count("petals") || groups.count("polygons"));
+        if (preset == "abop_1_26_flower_plant") {
+            EXPECT_TRUE(groups.count("petals") || groups.count("polygons"));
+        }
         // The materials carry the colours (the lakes are drawn in one colour).
         std::set<std::array<float, 3>> colours;
         for (const auto& m : reader.GetMaterials()) colours.insert({m.diffuse[0], m.diffuse[1], m.diffuse[2]});

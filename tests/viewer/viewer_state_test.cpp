@@ -190,6 +190,18 @@ TEST(ViewerState, AtomicSaveReplacesWholeFiles) {
     std::string got((std::istreambuf_iterator<char>(in)), {});
     EXPECT_EQ(got, "second");
     EXPECT_FALSE(fs::exists(dir / "a.lsys.saving"));
+    // A save that fails (here the temporary file cannot be made) keeps the old file whole
+    // and says why.
+    fs::create_directories(dir / "a.lsys.saving" / "blocker");
+    error.clear();
+    EXPECT_FALSE(saveTextAtomically(dir / "a.lsys", "third", error));
+    EXPECT_FALSE(error.empty());
+    std::ifstream again(dir / "a.lsys");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), "second");
+    // A path in a folder that does not exist: a message, nothing written.
+    error.clear();
+    EXPECT_FALSE(saveTextAtomically(dir / "missing" / "b.lsys", "x", error));
+    EXPECT_NE(error.find("No such file"), std::string::npos) << error;
 }
 
 }  // namespace
