@@ -360,7 +360,7 @@ private:
             case Act::ColourNext:
             case Act::ColourPrev:
             {
-                int index = p ? int(*p) : act == Act::ColourNext ? std::max<int>(t.colour, 0) + 1 : std::max<int>(t.colour, 0) - 1;
+                int index = p ? int(std::clamp(*p, -1e6, 1e6)) : act == Act::ColourNext ? std::max<int>(t.colour, 0) + 1 : std::max<int>(t.colour, 0) - 1;
                 const int n = int(m_palette.size());
                 t.colour = std::int8_t(((index % n) + n) % n);
                 t.stemColour = stemColour(t);
