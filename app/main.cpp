@@ -23,6 +23,8 @@ int printUsage(bool toStderr) {
                  "  sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]\n"
                  "                [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats]\n"
                  "                                  render a picture with no display (OSMesa)\n"
+                 "  sprout render FILE|PRESET --animate growth|turntable -o out.mp4 [--frames N] [--fps F]\n"
+                 "                                  a growth or turntable video (ffmpeg), or PNG frames\n"
                  "  sprout export FILE|PRESET -o OUT.glb|.obj|.ply|.svg [-n N] [--seed S] [--sides K]\n"
                  "                                  write a model (glTF binary, OBJ + MTL, PLY) or an SVG drawing\n"
                  "  sprout presets                  list the built-in presets\n"
