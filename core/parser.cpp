@@ -667,8 +667,25 @@ ParseResult Parser::run() {
     // first one, and the line is not read further.
     int binaryLines = 0;
     for (auto& l : m_lines) {
+        // A comment may hold anything but control characters (old files in Latin-1 included).
+        const std::string_view t = trim(l.src.text);
+        const bool comment = t.starts_with("//") || (t.starts_with("#") && !t.starts_with("#define") && !t.starts_with("#ignore"));
         for (size_t i = 0; i < l.src.text.size(); ++i) {
             unsigned char c = static_cast<unsigned char>(l.src.text[i]);
+            if (c >= 0x80 && !comment) {  // a UTF-8 sequence: lead byte and the right number of continuations
+                const int len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+                bool valid = len > 0 && i + size_t(len) <= l.src.text.size();
+                for (int k = 1; valid && k < len; ++k) valid = (static_cast<unsigned char>(l.src.text[i + size_t(k)]) & 0xC0) == 0x80;
+                if (!valid) {
+                    char msg[120];
+                    std::snprintf(msg, sizeof msg, "this text is not UTF-8 (byte 0x%02x): save the file as UTF-8", c);
+                    if (++binaryLines <= 5) m_sink.error(l.src, l.src.text.substr(i), msg);
+                    l.src.text = l.src.text.substr(0, 0);
+                    break;
+                }
+                i += size_t(len) - 1;
+                continue;
+            }
             if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
                 char msg[96];
                 std::snprintf(msg, sizeof msg, "unexpected control character (byte 0x%02x): is this a text file?", c);
