@@ -76,6 +76,14 @@ private:
     std::uint64_t m_bytes = 0;
 };
 
+// Closes the file; the byte count, or the first write error.
+bool finish(Out& out, ExportStats& st, std::string& error) {
+    st.bytes = out.bytes();
+    if (out.close()) return true;
+    error = out.error();
+    return false;
+}
+
 // Reports progress by items written, at most a few hundred times.
 class Progress {
 public:
@@ -173,9 +181,6 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                          ",\"material\":" + std::to_string(materialOf[{p.colour, p.doubleSided}]) + ",\"mode\":4}";
             view += 2;
             accessor += 3;
-            st.vertices += p.vertices;
-            st.triangles += p.indices / 3;
-            ++st.primitives;
         }
         if (primsJson.empty()) continue;
         if (!meshes.empty()) meshes += ",", nodes += ",", sceneNodes += ",";
@@ -238,12 +243,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                 });
             }
     }
-    st.bytes = out.bytes();
-    if (!out.close()) {
-        error = out.error();
-        return false;
-    }
-    return true;
+    return finish(out, st, error);
 }
 
 // ----------------------------------------------------------------------------- OBJ + MTL
@@ -304,27 +304,14 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
                 progress.advance(4096);
             });
             base += p.vertices;
-            st.vertices += p.vertices;
-            st.triangles += p.indices / 3;
-            ++st.primitives;
         }
     }
-    st.bytes = out.bytes();
-    if (!out.close()) {
-        error = out.error();
-        return false;
-    }
-    return true;
+    return finish(out, st, error);
 }
 
 // ---------------------------------------------------------------------------------- PLY
 bool writePly(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
-    for (const auto& p : scene.primitives) {
-        st.vertices += p.vertices;
-        st.triangles += p.indices / 3;
-        ++st.primitives;
-    }
     Out out(path);
     out.text("ply\nformat binary_little_endian 1.0\ncomment " + o.generator + "\nelement vertex " + std::to_string(st.vertices) +
              "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
@@ -364,12 +351,7 @@ bool writePly(const ExportScene& scene, const std::string& path, const ExportOpt
             out.write(buf.data(), buf.size());
             progress.advance(4096);
         });
-    st.bytes = out.bytes();
-    if (!out.close()) {
-        error = out.error();
-        return false;
-    }
-    return true;
+    return finish(out, st, error);
 }
 
 }  // namespace
@@ -392,6 +374,11 @@ bool exportGeometry(const Geometry& g, const std::string& path, Format format, c
     if (format == Format::Svg) return writeSvg(g, path, o, st, error);
     ExportScene scene(g, o.sides);
     st.stems = scene.stems();
+    for (const auto& p : scene.primitives) {  // every mesh format writes all of them
+        st.vertices += p.vertices;
+        st.triangles += p.indices / 3;
+        ++st.primitives;
+    }
     switch (format) {
         case Format::Glb: return writeGlb(scene, path, o, st, error);
         case Format::Obj: return writeObj(scene, path, o, st, error);
