@@ -111,16 +111,8 @@ std::vector<std::uint64_t> D0LExpander::countsUpTo(const ModuleString& axiom, in
     return totals;
 }
 
-bool D0LExpander::expand(const ModuleString& axiom, int n, ModuleString& out,
-                         const std::atomic<bool>* cancel,
-                         const std::function<void(double)>& progress) const {
-    const std::uint64_t total = countAt(axiom, n);
-    out.symbols.resizeUninitialized(total);
-    out.params.clear();
-    SymbolId* dst = out.symbols.data();
-    SymbolId* const begin = dst;
-    std::uint64_t nextCheck = 1u << 20;
-
+template <class Piece>
+bool D0LExpander::forEachPiece(const ModuleString& axiom, int n, Piece&& piece) const {
     struct Frame {
         const SymbolId* cur;
         const SymbolId* end;
@@ -134,29 +126,58 @@ bool D0LExpander::expand(const ModuleString& axiom, int n, ModuleString& out,
             stack.pop_back();
             continue;
         }
-        const SymbolId s = *f.cur++;
+        const SymbolId* at = f.cur++;
+        const SymbolId s = *at;
         const int d = f.depth;
         if (d == 0 || m_identity[s]) {
-            *dst++ = s;
+            if (!piece(at, 1)) return false;
             continue;
         }
         if (d <= kBlockDepth) {
             std::uint32_t b = m_blockStart[size_t(d) * m_alphabet + s];
             if (b != kNoBlock) {
-                std::uint64_t L = len(s, d);
-                if (L) std::memcpy(dst, m_pool.data() + b, L * sizeof(SymbolId));
-                dst += L;
-                if (std::uint64_t(dst - begin) >= nextCheck) {
-                    nextCheck += 1u << 20;
-                    if (cancel && cancel->load(std::memory_order_relaxed)) return false;
-                    if (progress && total) progress(double(dst - begin) / double(total));
-                }
+                if (!piece(m_pool.data() + b, len(s, d))) return false;
                 continue;
             }
         }
         stack.push_back({m_succ.data() + m_succStart[s], m_succ.data() + m_succStart[s + 1], d - 1});
     }
     return true;
+}
+
+bool D0LExpander::expand(const ModuleString& axiom, int n, ModuleString& out,
+                         const std::atomic<bool>* cancel,
+                         const std::function<void(double)>& progress) const {
+    const std::uint64_t total = countAt(axiom, n);
+    out.symbols.resizeUninitialized(total);
+    out.params.clear();
+    SymbolId* dst = out.symbols.data();
+    SymbolId* const begin = dst;
+    std::uint64_t nextCheck = 1u << 20;
+    return forEachPiece(axiom, n, [&](const SymbolId* src, std::uint64_t L) {
+        if (L == 1) {
+            *dst++ = *src;
+            return true;
+        }
+        if (L) std::memcpy(dst, src, L * sizeof(SymbolId));
+        dst += L;
+        if (std::uint64_t(dst - begin) >= nextCheck) {
+            nextCheck += 1u << 20;
+            if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+            if (progress && total) progress(double(dst - begin) / double(total));
+        }
+        return true;
+    });
+}
+
+bool D0LExpander::matches(const ModuleString& axiom, int n, const ModuleString& s) const {
+    if (!s.params.empty() || countAt(axiom, n) != s.size()) return false;
+    const SymbolId* at = s.symbols.data();
+    return forEachPiece(axiom, n, [&](const SymbolId* src, std::uint64_t L) {
+        if (L == 1 ? *at != *src : std::memcmp(at, src, L * sizeof(SymbolId)) != 0) return false;
+        at += L;
+        return true;
+    });
 }
 
 }  // namespace sprout

@@ -28,7 +28,19 @@ public:
     bool expand(const ModuleString& axiom, int n, ModuleString& out,
                 const std::atomic<bool>* cancel, const std::function<void(double)>& progress) const;
 
+    // Whether `s` is exactly step n of `axiom`: the same walk as expand, comparing.
+    bool matches(const ModuleString& axiom, int n, const ModuleString& s) const;
+
+    // The rule of s: its successor, s itself when it has no rule (identity(s)).
+    const SymbolId* successorBegin(SymbolId s) const { return m_succ.data() + m_succStart[s]; }
+    const SymbolId* successorEnd(SymbolId s) const { return m_succ.data() + m_succStart[s + 1]; }
+    bool identity(SymbolId s) const { return m_identity[s] != 0; }
+
 private:
+    // Calls piece(symbols, count) for consecutive runs of step n, in order, until it
+    // returns false; returns whether it got to the end.
+    template <class Piece>
+    bool forEachPiece(const ModuleString& axiom, int n, Piece&& piece) const;
     std::uint64_t len(SymbolId s, int d) const { return m_len[size_t(d) * m_alphabet + s]; }
 
     size_t m_alphabet;

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 #include <glm/geometric.hpp>
 
+#include "core/d0l.hpp"
 #include "core/derive.hpp"
 
 namespace sprout {
@@ -106,7 +108,8 @@ bool finite(const double* p, int n) {
 // first read every destination line (measured: 63 MB of instances for the fractal plant n=10).
 class SegmentWriter {
 public:
-    explicit SegmentWriter(PodBuffer<CylinderInstance>& out) : m_out(out) {}
+    // `stream`: non-temporal stores, for output that is not read again soon.
+    explicit SegmentWriter(PodBuffer<CylinderInstance>& out, bool stream = true) : m_out(out), m_stream(stream) {}
     ~SegmentWriter() { flush(); }
     CylinderInstance& next() {
         if (m_staged == kStage) flush();
@@ -123,7 +126,7 @@ public:
         const char* src = reinterpret_cast<const char*>(m_stage);
         const std::size_t bytes = m_staged * sizeof(CylinderInstance);
 #if defined(__SSE2__)
-        if ((reinterpret_cast<std::uintptr_t>(dst) & 15) == 0 && bytes % 16 == 0) {
+        if (m_stream && (reinterpret_cast<std::uintptr_t>(dst) & 15) == 0 && bytes % 16 == 0) {
             for (std::size_t o = 0; o < bytes; o += 16)
                 _mm_stream_si128(reinterpret_cast<__m128i*>(dst + o), _mm_load_si128(reinterpret_cast<const __m128i*>(src + o)));
         } else {
@@ -144,6 +147,7 @@ public:
 private:
     static constexpr std::size_t kStage = 128;  // 5 KB: 128 x 40 bytes, a multiple of 16
     PodBuffer<CylinderInstance>& m_out;
+    bool m_stream;
     alignas(16) CylinderInstance m_stage[kStage];
     std::size_t m_staged = 0;
 };
@@ -198,6 +202,25 @@ public:
         finish();
     }
 
+    // Draws step n of a D0L grammar from its derivation tree instead of its string (which
+    // must be that step: see interpret). A subtree that occurs more than once is drawn once
+    // in a frame of its own, as a block, and then placed wherever it occurs by transforming
+    // its segments: no dispatch per module, and the string is never read.
+    TurtleStats runTree(const D0LExpander& tree, const ModuleString& axiom, int n) {
+        m_tree = &tree;
+        m_alpha = m_actions.size();
+        planBlocks(axiom, n);
+        State t = m_state;
+        for (SymbolId s : axiom.symbols) walk(s, n, t);
+        m_state = t;
+        m_seg->finish();
+        finish();
+        return {true, m_blocks.size()};
+    }
+    // Whether runTree can draw this grammar: nothing that depends on the absolute position
+    // or on the module's index (jitter, tropism, growth).
+    bool treeApplicable() const { return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages; }
+
 private:
     template <bool Parametric>
     void runLoop(const ModuleString& s) {
@@ -235,10 +258,238 @@ private:
             apply(t, act, arity ? p : nullptr, i);
         }
         m_state = t;
-        m_segments.finish();
+        m_seg->finish();
     }
 
     static constexpr int kOrderColours = 32;
+
+    // ---- Drawing from the derivation tree (D0L) ----
+    //
+    // A block is the drawing of S(s, d) (symbol s after d steps) by a turtle that starts at
+    // the origin in the identity frame with length 1 and width 1. Placing it for a turtle t
+    // maps the identity frame's axes (-L, H, U) to t's, scales positions by t.length and
+    // radii by t.width, and adds t's branch order. This is exact because nothing a block may
+    // contain depends on where the turtle is: only F G f g, turns, pitches, rolls, |, [ ],
+    // ! # and @L @W (no $, colours, polygons, surfaces or gravity).
+
+    static constexpr std::int32_t kEntrySegment = -2;  // lastSegment: the one before the block
+    static constexpr std::uint64_t kMinBlockModules = 16;      // smaller: walking is as fast
+    static constexpr std::uint64_t kMaxBlockModules = 1 << 16;  // larger: occurs too rarely to pay
+    static constexpr std::size_t kMaxBlockSegments = 1 << 21;   // all blocks: 80 MB at most
+
+    struct Block {
+        std::uint32_t first, count;        // segments in m_blockSegs, in the identity frame
+        std::uint32_t firstPoint, points;  // places moved to (f g), for the bounds
+        v4 pos, H, L;                      // the turtle after the block, in the identity frame
+        float length, width;               // factors on the turtle's length and width
+        std::int32_t lastSegment;          // index in the block, kEntrySegment or -1
+        bool brackets;
+    };
+    enum class BlockState : std::uint8_t { No, Unbuilt, Built };
+
+    struct Scratch {
+        PodBuffer<CylinderInstance> segments;
+        std::vector<v4> points;
+    };
+
+    static bool blockAction(Act a) {
+        switch (a) {
+            case Act::None: case Act::Draw: case Act::DrawNoVertex: case Act::Move: case Act::MoveNoVertex:
+            case Act::Left: case Act::Right: case Act::Down: case Act::Up: case Act::RollLeft:
+            case Act::RollRight: case Act::Around: case Act::Push: case Act::Pop: case Act::WidthDec:
+            case Act::WidthInc: case Act::ScaleLength: case Act::ScaleWidth:
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    // Which (s, d) become blocks: those that occur at least twice in the tree, are of a
+    // useful size, contain only block actions and close every bracket they open.
+    void planBlocks(const ModuleString& axiom, int n) {
+        const size_t A = m_alpha, D = size_t(n) + 1;
+        static constexpr std::uint64_t kSat = 1ull << 62;
+        auto sat = [](std::uint64_t a) { return std::min(a, kSat); };
+        std::vector<std::uint64_t> modules(D * A), occurs(D * A, 0);
+        std::vector<std::uint8_t> ok(D * A);
+        std::vector<std::int64_t> net(D * A), low(D * A);  // bracket depth change, lowest prefix
+        for (size_t d = 0; d < D; ++d) {
+            for (size_t s = 0; s < A; ++s) {
+                const size_t k = d * A + s;
+                const SymbolId id = SymbolId(s);
+                if (d == 0 || m_tree->identity(id)) {
+                    const Act a = m_actions[s];
+                    modules[k] = 1;
+                    ok[k] = blockAction(a);
+                    net[k] = a == Act::Push ? 1 : a == Act::Pop ? -1 : 0;
+                    low[k] = std::min<std::int64_t>(0, net[k]);
+                    continue;
+                }
+                std::uint64_t m = 0;
+                bool good = true;
+                std::int64_t depth = 0, lowest = 0;
+                for (const SymbolId* c = m_tree->successorBegin(id); c != m_tree->successorEnd(id); ++c) {
+                    const size_t kc = (d - 1) * A + *c;
+                    m = sat(m + modules[kc]);
+                    good = good && ok[kc];
+                    lowest = std::min(lowest, depth + low[kc]);
+                    depth = std::clamp<std::int64_t>(depth + net[kc], -std::int64_t(kSat), std::int64_t(kSat));
+                }
+                modules[k] = m;
+                ok[k] = good;
+                net[k] = depth;
+                low[k] = lowest;
+            }
+        }
+        for (SymbolId s : axiom.symbols) occurs[size_t(n) * A + s] = sat(occurs[size_t(n) * A + s] + 1);
+        for (size_t d = D - 1; d > 0; --d) {
+            for (size_t s = 0; s < A; ++s) {
+                const std::uint64_t o = occurs[d * A + s];
+                if (!o || m_tree->identity(SymbolId(s))) continue;
+                for (const SymbolId* c = m_tree->successorBegin(SymbolId(s)); c != m_tree->successorEnd(SymbolId(s)); ++c)
+                    occurs[(d - 1) * A + *c] = sat(occurs[(d - 1) * A + *c] + o);
+            }
+        }
+        m_blockState.assign(D * A, BlockState::No);
+        m_blockIndex.assign(D * A, 0);
+        for (size_t d = 1; d < D; ++d) {
+            for (size_t s = 0; s < A; ++s) {
+                const size_t k = d * A + s;
+                if (occurs[k] >= 2 && ok[k] && net[k] == 0 && low[k] >= 0 && !m_tree->identity(SymbolId(s)) &&
+                    modules[k] >= kMinBlockModules && modules[k] <= kMaxBlockModules)
+                    m_blockState[k] = BlockState::Unbuilt;
+            }
+        }
+    }
+
+    void walk(SymbolId s, int d, State& t) {
+        if (d == 0 || m_tree->identity(s)) {
+            const Act act = m_actions[s];
+            if (act == Act::None) return;
+            if (m_level) {
+                // Inside a block being built: the segment before the block is not ours to taper.
+                if ((act == Act::WidthDec || act == Act::WidthInc || act == Act::ScaleWidth) && t.lastSegment == kEntrySegment) {
+                    m_abort = true;
+                    return;
+                }
+                apply(t, act, nullptr, 0);
+                if (act == Act::Move || act == Act::MoveNoVertex) m_scratch[m_level - 1].points.push_back(t.pos);
+                return;
+            }
+            apply(t, act, nullptr, 0);
+            return;
+        }
+        const size_t k = size_t(d) * m_alpha + s;
+        if (m_blockState[k] != BlockState::No && t.angleScale == 1.0f && m_polygons.empty()) {
+            if (m_blockState[k] == BlockState::Unbuilt) build(s, d);
+            if (m_blockState[k] == BlockState::Built) {
+                place(m_blocks[m_blockIndex[k]], t);
+                return;
+            }
+        }
+        for (const SymbolId* c = m_tree->successorBegin(s); c != m_tree->successorEnd(s) && !m_abort; ++c) walk(*c, d - 1, t);
+    }
+
+    void build(SymbolId s, int d) {
+        const size_t k = size_t(d) * m_alpha + s;
+        m_blockState[k] = BlockState::No;  // unless it completes
+        if (m_blockSegs.size() > kMaxBlockSegments) return;
+        if (m_scratch.size() <= size_t(m_level)) m_scratch.emplace_back();
+        Scratch& scratch = m_scratch[size_t(m_level)];
+        scratch.segments.clear();
+        scratch.points.clear();
+        SegmentWriter local(scratch.segments, false);
+        SegmentWriter* outer = m_seg;
+        const v4 outerMin = m_min, outerMax = m_max;
+        const size_t stackBase = m_stack.size();
+        const bool outerBrackets = m_usedBrackets;
+        m_seg = &local;
+        m_usedBrackets = false;
+        ++m_level;
+        State t;
+        t.lastSegment = kEntrySegment;
+        for (const SymbolId* c = m_tree->successorBegin(s); c != m_tree->successorEnd(s) && !m_abort; ++c) walk(*c, d - 1, t);
+        local.finish();
+        --m_level;
+        m_seg = outer;
+        m_min = outerMin;
+        m_max = outerMax;
+        const bool brackets = m_usedBrackets;
+        m_usedBrackets = outerBrackets;
+        if (m_abort || m_stack.size() != stackBase || t.order != 0) {
+            m_abort = false;
+            m_stack.resizeUninitialized(stackBase);
+            return;  // walked instead, in the caller's frame
+        }
+        Block b;
+        b.first = std::uint32_t(m_blockSegs.size());
+        b.count = std::uint32_t(scratch.segments.size());
+        b.firstPoint = std::uint32_t(m_blockPoints.size());
+        b.points = std::uint32_t(scratch.points.size());
+        b.pos = t.pos;
+        b.H = t.H;
+        b.L = t.L;
+        b.length = t.length;
+        b.width = t.width;
+        b.lastSegment = t.lastSegment;
+        b.brackets = brackets;
+        m_blockSegs.append(scratch.segments.data(), scratch.segments.size());
+        m_blockPoints.insert(m_blockPoints.end(), scratch.points.begin(), scratch.points.end());
+        m_blockIndex[k] = std::uint32_t(m_blocks.size());
+        m_blocks.push_back(b);
+        m_blockState[k] = BlockState::Built;
+    }
+
+    // Draws block b for turtle t and moves t to where the block leaves it.
+    void place(const Block& b, State& t) {
+        const v4 ax = -t.L, ay = t.H, az = up(t);  // the identity frame's x y z, turned
+        const v4 sx = ax * t.length, sy = ay * t.length, sz = az * t.length;
+        const v4 radius = v4{0, 0, 0, t.width};
+        v4 origin = t.pos;
+        origin[3] = 0;
+        auto at = [&](v4 p) { return origin + sx * p[0] + sy * p[1] + sz * p[2] + p * radius; };
+        const bool byOrder = t.colour < 0 && m_gradient;
+        const std::uint32_t fixed = t.stemColour;
+        const int order = t.order;
+        const std::size_t base = m_seg->count();
+        const CylinderInstance* src = m_blockSegs.data() + b.first;
+        v4 lo = m_min, hi = m_max;
+        for (std::uint32_t i = 0; i < b.count; ++i) {
+            v4 a, e;
+            std::memcpy(&a, &src[i].start, 16);
+            std::memcpy(&e, &src[i].end, 16);
+            const v4 wa = at(a), we = at(e);
+            CylinderInstance& c = m_seg->next();
+            std::memcpy(&c.start, &wa, 16);
+            std::memcpy(&c.end, &we, 16);
+            const int o = std::min(order + src[i].order, 65535);
+            c.order = std::uint16_t(o);
+            c.colour = byOrder ? m_byOrder[std::min(o, kOrderColours - 1)] : fixed;
+            c.step = 0;
+            lo = __builtin_ia32_minps(lo, we);
+            hi = __builtin_ia32_maxps(hi, we);
+        }
+        m_min = lo;
+        m_max = hi;
+        for (std::uint32_t i = 0; i < b.points; ++i) {
+            v4 p = at(m_blockPoints[b.firstPoint + i]);
+            p[3] = 0;
+            if (m_level) m_scratch[size_t(m_level) - 1].points.push_back(p);
+            else addBound(p);
+        }
+        t.pos = at(b.pos);
+        t.pos[3] = 0;
+        const v4 H = ax * b.H[0] + ay * b.H[1] + az * b.H[2];
+        const v4 L = ax * b.L[0] + ay * b.L[1] + az * b.L[2];
+        t.H = H;
+        t.L = L;
+        t.length *= b.length;
+        t.width *= b.width;
+        if (b.lastSegment >= 0) t.lastSegment = std::int32_t(base) + b.lastSegment;
+        else if (b.lastSegment == -1) t.lastSegment = -1;
+        m_usedBrackets |= b.brackets;
+    }
+
 
     [[gnu::always_inline]] inline void turn(const State& t, v4& a, v4& b, const double* p, float sign) {
         if (p) {
@@ -355,7 +606,7 @@ private:
                 if (p) m_absoluteWidths = true;
                 t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
                 // Taper: the segment before ends as thick as the next one starts.
-                if (t.lastSegment >= 0) m_segments.at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
+                if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
                 break;
             case Act::ColourNext:
             case Act::ColourPrev:
@@ -370,7 +621,7 @@ private:
             case Act::ScaleAngle: t.angleScale *= p ? float(*p) : 1.0f; break;
             case Act::ScaleWidth:
                 t.width *= p ? float(*p) : 1.0f;
-                if (t.lastSegment >= 0) m_segments.at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
+                if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
                 break;
             case Act::Gravity: bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f); break;
             case Act::Leaf:
@@ -392,8 +643,8 @@ private:
     }
 
     [[gnu::always_inline]] inline void segment(State& t, float len, size_t i) {
-        t.lastSegment = std::int32_t(m_segments.count());
-        CylinderInstance& c = m_segments.next();
+        t.lastSegment = std::int32_t(m_seg->count());
+        CylinderInstance& c = m_seg->next();
         const float r = t.width * 0.5f;
         v4 a = t.pos;
         a[3] = r;
@@ -416,7 +667,7 @@ private:
         const v4 step = t.H * t.length;
         v4 a = t.pos;
         for (size_t k = 0; k < count; ++k) {
-            CylinderInstance& c = m_segments.next();
+            CylinderInstance& c = m_seg->next();
             v4 b = a + step;
             v4 sa = a, sb = b;
             sa[3] = r;
@@ -429,7 +680,7 @@ private:
             a = b;
         }
         t.pos = a;
-        t.lastSegment = std::int32_t(m_segments.count() - 1);
+        t.lastSegment = std::int32_t(m_seg->count() - 1);
         addBound(t.pos);
     }
 
@@ -535,6 +786,7 @@ private:
     const TurtleOptions& m_opt;
     Geometry& m_out;
     SegmentWriter m_segments;
+    SegmentWriter* m_seg = &m_segments;  // where segments go: the output, or a block being built
     Rng m_rng;
     std::vector<Act> m_actions;
     std::vector<std::uint8_t> m_arity;
@@ -549,6 +801,17 @@ private:
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
     bool m_absoluteWidths = false;
+    // Drawing from the derivation tree
+    const D0LExpander* m_tree = nullptr;
+    size_t m_alpha = 0;
+    std::vector<BlockState> m_blockState;  // [d * alphabet + s]
+    std::vector<std::uint32_t> m_blockIndex;
+    std::vector<Block> m_blocks;
+    PodBuffer<CylinderInstance> m_blockSegs;
+    std::vector<v4> m_blockPoints;
+    std::deque<Scratch> m_scratch;  // one per block being built, nested (stable addresses)
+    int m_level = 0;                 // blocks being built
+    bool m_abort = false;            // the block being built cannot be one
 };
 
 }  // namespace
@@ -579,16 +842,30 @@ void Geometry::clear() {
 
 std::uint32_t defaultPaletteColour(int index) { return kDefaultPalette[((index % 16) + 16) % 16]; }
 
-void interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out) {
+constexpr size_t kTreeMinModules = 1 << 15;
+constexpr int kTreeMaxDepth = 1024;  // the tree walk recurses once per step
+constexpr size_t kTreeMaxTable = 1 << 22;
+
+TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out) {
     out.clear();
     if (!g.interpretation.productions.empty()) {
         ModuleString drawn = applyInterpretation(g, s, options.seed);
         TurtleOptions o = options;
         o.ages = nullptr;  // the interpretation changes positions: ages no longer line up
         Turtle(g, o, out).run(drawn);
-        return;
+        return {};
     }
-    Turtle(g, options, out).run(s);
+    Turtle turtle(g, options, out);
+    // A big D0L string is drawn from its derivation tree when it is exactly step n of the
+    // grammar (checked: comparing costs a small part of interpreting).
+    const int n = options.derivationSteps;
+    if (options.fromTree && s.size() >= kTreeMinModules && n > 0 && n <= kTreeMaxDepth && turtle.treeApplicable() &&
+        D0LExpander::applicable(g) && (size_t(n) + 1) * g.alphabet.size() <= kTreeMaxTable) {
+        D0LExpander tree(g);
+        if (tree.matches(g.axiom, n, s)) return turtle.runTree(tree, g.axiom, n);
+    }
+    turtle.run(s);
+    return {};
 }
 
 }  // namespace sprout

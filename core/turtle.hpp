@@ -23,12 +23,22 @@ struct TurtleOptions {
     // plays instead of popping in.
     int growStep = -1;
     float growFraction = 1.0f;
+    // A big D0L string that is exactly step `derivationSteps` of the grammar is drawn from
+    // its derivation tree: each repeated subtree is drawn once and then placed by a
+    // transform (the same geometry up to float rounding, several times faster). False
+    // always reads the string (tests compare the two).
+    bool fromTree = true;
+};
+
+struct TurtleStats {
+    bool fromTree = false;  // drawn from the derivation tree
+    size_t blocks = 0;      // repeated subtrees drawn once and placed
 };
 
 // Interprets `s` (after the grammar's interpretation rules, if any) into `out`, reusing its
 // buffers. Never fails: unknown modules are ignored, unbalanced ']' is harmless, non-finite
 // parameters are skipped.
-void interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out);
+TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out);
 
 // Default palette (16 colours: 0 bark, 1..8 greens dark to light, 9.. flower colours).
 std::uint32_t defaultPaletteColour(int index);

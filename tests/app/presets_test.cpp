@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "app/presets.hpp"
+#include "core/d0l.hpp"
 #include "core/derive.hpp"
+#include "core/turtle.hpp"
+#include "tests/core/same_drawing.hpp"
 
 namespace sprout {
 namespace {
@@ -20,6 +23,30 @@ TEST(Presets, EveryPresetParsesWithoutWarningsAndDerives) {
         EXPECT_TRUE(d.outcome.ok()) << name << ": " << d.outcome.message;
         EXPECT_GT(d.string->size(), 0u) << name;
     }
+}
+
+// Every D0L preset, at the first step with 40,000 modules or more, draws the same from its
+// derivation tree as from its string.
+TEST(Presets, D0LPresetsDrawTheSameFromTheirDerivationTree) {
+    int fromTree = 0;
+    for (const auto& name : presetNames()) {
+        ParseResult r = parse(*presetText(name));
+        if (!r.ok() || !D0LExpander::applicable(*r.grammar)) continue;
+        Derivation d(r.grammar);
+        int n = r.grammar->settings.iterations;
+        for (; n < 40; ++n) {
+            if (!d.deriveTo(n).ok() || d.step(n)->size() >= 40000) break;
+        }
+        if (!d.deriveTo(n).ok() || d.step(n)->size() < 40000 || d.step(n)->size() > 4'000'000) continue;
+        Geometry fromString, tree;
+        TurtleOptions o{n, d.seed(), nullptr};
+        o.fromTree = false;
+        interpret(*d.step(n), *r.grammar, o, fromString);
+        o.fromTree = true;
+        fromTree += interpret(*d.step(n), *r.grammar, o, tree).fromTree;
+        test::expectSameDrawing(tree, fromString, name + " n=" + std::to_string(n));
+    }
+    EXPECT_GE(fromTree, 10);
 }
 
 TEST(Presets, DefaultPlantExists) {

@@ -5,6 +5,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/turtle.hpp"
+#include "same_drawing.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {
@@ -261,6 +262,128 @@ TEST(Ages, GrowingSegmentsStartShortAndTheStepIsRecorded) {
     t.growFraction = 1;
     interpret(*d.step(1), *g, t, full);
     EXPECT_FLOAT_EQ(full.bounds.max.y, 2.0f);
+}
+
+
+// ---- Drawing from the derivation tree (D0L) ----
+
+// Draws the first step with at least 40,000 modules (the tree is for big strings) both
+// ways and expects the same geometry; returns the tree's stats.
+TurtleStats drawBothWays(const std::string& text) {
+    auto g = grammarOf(text);
+    if (!g) return {};
+    int n = 1;
+    DeriveResult r = derive(g, n);
+    while (r.outcome.ok() && r.string->size() < 40000 && n < 40) r = derive(g, ++n);
+    EXPECT_TRUE(r.outcome.ok());
+    EXPECT_GE(r.string->size(), 40000u);
+    Geometry fromString, fromTree;
+    TurtleOptions o{n, g->settings.seed, nullptr};
+    o.fromTree = false;
+    EXPECT_FALSE(interpret(*r.string, *g, o, fromString).fromTree);
+    o.fromTree = true;
+    TurtleStats stats = interpret(*r.string, *g, o, fromTree);
+    expectSameDrawing(fromTree, fromString, text);
+    return stats;
+}
+
+TEST(TreeTurtle, FractalPlantMatchesTheStringTurtle) {
+    TurtleStats s = drawBothWays("angle: 22.5\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+    EXPECT_TRUE(s.fromTree);
+    EXPECT_GT(s.blocks, 5u);
+}
+
+TEST(TreeTurtle, ThreeDimensionalBushWithTaperAndBranchScale) {
+    // Pitch, roll, turn around, taper (! after segments), branch_scale, gradient colours.
+    TurtleStats s = drawBothWays(
+        "angle: 22.5\nbranch_scale: 0.9\naxiom: A\n"
+        "A -> [&FL!A]/////[&FL!A]///////[&FL!A]\nF -> S/////F\nS -> F|L\nL -> [^^-F+F+F-|-F+F+F]\n");
+    EXPECT_TRUE(s.fromTree);
+    EXPECT_GT(s.blocks, 0u);
+}
+
+TEST(TreeTurtle, IsCloserToExactArithmeticThanTheStringTurtle) {
+    // A reference turtle in double precision for F + - & ^ \ / | [ ]: the tree's composed
+    // frames stay within 1e-5 of it where the float string turtle drifts by about 1e-2.
+    const std::string text =
+        "angle: 22.5\nbranch_scale: 0.9\naxiom: A\n"
+        "A -> [&FL!A]/////[&FL!A]///////[&FL!A]\nF -> S/////F\nS -> F|L\nL -> [^^-F+F+F-|-F+F+F]\n";
+    auto g = grammarOf(text);
+    const int n = 7;
+    DeriveResult r = derive(g, n);
+    ASSERT_GE(r.string->size(), 40000u);
+    Geometry tree;
+    ASSERT_TRUE(interpret(*r.string, *g, {n, 1, nullptr}, tree).fromTree);
+    struct State {
+        glm::dvec3 pos{0, 0, 0}, H{0, 1, 0}, L{-1, 0, 0};
+        double length = 1;
+    } t;
+    std::vector<State> stack;
+    std::vector<glm::dvec3> ends;
+    const double a = glm::radians(22.5);
+    auto rotate = [](glm::dvec3& x, glm::dvec3& y, double r) {
+        glm::dvec3 nx = x * std::cos(r) + y * std::sin(r);
+        y = y * std::cos(r) - x * std::sin(r);
+        x = nx;
+    };
+    for (char c : toString(*r.string, g->alphabet)) {
+        glm::dvec3 U = glm::cross(t.H, t.L);
+        switch (c) {
+            case 'F': t.pos += t.H * t.length; ends.push_back(t.pos); break;
+            case '+': rotate(t.H, t.L, a); break;
+            case '-': rotate(t.H, t.L, -a); break;
+            case '^': rotate(t.H, U, a); break;
+            case '&': rotate(t.H, U, -a); break;
+            case '\\': rotate(t.L, U, a); break;
+            case '/': rotate(t.L, U, -a); break;
+            case '|': t.H = -t.H; t.L = -t.L; break;
+            case '[': stack.push_back(t); t.length *= 0.9; break;
+            case ']': t = stack.back(); stack.pop_back(); break;
+            default: break;
+        }
+    }
+    ASSERT_EQ(ends.size(), tree.cylinders.size());
+    double worst = 0;
+    for (size_t i = 0; i < ends.size(); ++i) worst = std::max(worst, glm::length(glm::dvec3(tree.cylinders[i].end) - ends[i]));
+    EXPECT_LT(worst, 1e-4);
+}
+
+TEST(TreeTurtle, MovesAndWidthsAndLengthScales) {
+    // f moves (their places count in the bounds), # and ! change widths, @L scales steps.
+    TurtleStats s = drawBothWays(
+        "angle: 60\naxiom: A\nA -> F[+A]f[-A]#F@L!A\nF -> F\n");
+    EXPECT_TRUE(s.fromTree);
+}
+
+TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
+    // B starts with '!': it narrows the segment drawn before it, outside the block.
+    TurtleStats s = drawBothWays("angle: 30\naxiom: A\nA -> FB[+A][-A]\nB -> !F[+F][-F]F\n");
+    EXPECT_TRUE(s.fromTree);
+}
+
+TEST(TreeTurtle, ColoursPolygonsAndLeavesAreDrawnAsTheStringSays) {
+    // Modules that are not blocks ($, colours, polygons, leaves) are walked one by one.
+    TurtleStats s = drawBothWays(
+        "angle: 22.5\naxiom: A\nA -> F[&B$A]/[^'A]~l{.-F.+F.}F\nB -> FF\n");
+    EXPECT_TRUE(s.fromTree);
+}
+
+TEST(TreeTurtle, OnlyExactStepsOfD0LGrammarsAreDrawnFromTheTree) {
+    const std::string plant = "angle: 22.5\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n";
+    auto g = grammarOf(plant);
+    DeriveResult r = derive(g, 7);
+    Geometry geo;
+    // The wrong step number: the string is read.
+    EXPECT_FALSE(interpret(*r.string, *g, {6, 1, nullptr}, geo).fromTree);
+    ModuleString changed = *r.string;
+    changed.symbols[2000] = SymbolId((changed.symbols[2000] + 1) % g->alphabet.size());
+    EXPECT_FALSE(interpret(changed, *g, {7, 1, nullptr}, geo).fromTree);
+    // Jitter and tropism depend on where the turtle is: the string is read.
+    auto jitter = grammarOf("angle: 22.5 ~ 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+    EXPECT_FALSE(interpret(*derive(jitter, 7).string, *jitter, {7, 1, nullptr}, geo).fromTree);
+    auto bent = grammarOf("angle: 22.5\ntropism: 0 -1 0 0.2\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
+    EXPECT_FALSE(interpret(*derive(bent, 7).string, *bent, {7, 1, nullptr}, geo).fromTree);
+    EXPECT_TRUE(interpret(*r.string, *g, {7, 1, nullptr}, geo).fromTree);
 }
 
 }  // namespace

@@ -1,0 +1,47 @@
+#pragma once
+// Compares two drawings of the same string (from the derivation tree and from the string):
+// the same segments in the same order, equal up to float rounding. Reports the first
+// difference only, so a wrong plant does not print a million lines.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/geometry.hpp"
+
+namespace sprout::test {
+
+inline bool near(const glm::vec3& a, const glm::vec3& b, float tol) {
+    return std::fabs(a.x - b.x) <= tol && std::fabs(a.y - b.y) <= tol && std::fabs(a.z - b.z) <= tol;
+}
+
+inline void expectSameDrawing(const Geometry& a, const Geometry& b, const std::string& what) {
+    const glm::vec3 size = b.bounds.size();
+    const float extent = std::max({size.x, size.y, size.z});
+    // The string turtle's frame drifts by float rounding over thousands of turns (about 2e-3
+    // of the plant's size for a bush rolling at every node); the tree's composed frames
+    // drift far less. A misplaced subtree is off by whole segments.
+    const float tol = 2e-3f * (1 + extent);
+    EXPECT_TRUE(near(a.bounds.min, b.bounds.min, tol) && near(a.bounds.max, b.bounds.max, tol)) << what << ": bounds";
+    EXPECT_EQ(a.planarCurve, b.planarCurve) << what;
+    EXPECT_EQ(a.surfaces.size(), b.surfaces.size()) << what;
+    EXPECT_EQ(a.polygons.indices.size(), b.polygons.indices.size()) << what;
+    ASSERT_EQ(a.cylinders.size(), b.cylinders.size()) << what;
+    for (size_t i = 0; i < a.cylinders.size(); ++i) {
+        const CylinderInstance &x = a.cylinders[i], &y = b.cylinders[i];
+        const float rtol = 5e-3f * (1e-3f + std::max(y.startRadius, y.endRadius));  // automatic widths follow the size
+        if (!near(x.start, y.start, tol) || !near(x.end, y.end, tol) || std::fabs(x.startRadius - y.startRadius) > rtol ||
+            std::fabs(x.endRadius - y.endRadius) > rtol || x.colour != y.colour || x.order != y.order || x.step != y.step) {
+            ADD_FAILURE() << what << ": segment " << i << " of " << a.cylinders.size() << " differs: start (" << x.start.x
+                          << ", " << x.start.y << ", " << x.start.z << ") vs (" << y.start.x << ", " << y.start.y << ", "
+                          << y.start.z << "), end (" << x.end.x << ", " << x.end.y << ", " << x.end.z << ") vs (" << y.end.x
+                          << ", " << y.end.y << ", " << y.end.z << "), radii " << x.startRadius << "/" << x.endRadius
+                          << " vs " << y.startRadius << "/" << y.endRadius << ", colour " << std::hex << x.colour << " vs "
+                          << y.colour << std::dec << ", order " << x.order << " vs " << y.order;
+            return;
+        }
+    }
+}
+
+}  // namespace sprout::test
