@@ -3,7 +3,8 @@
 //   build/bench/turtle_bench
 //
 // Fractal plant n=10: 6.46 M modules, 1.57 M segments. Sprout reuses its output buffers
-// between interpretations, as the viewer does on every edit.
+// between interpretations. It draws this D0L string from its derivation tree (the default);
+// the string-reading turtle, which every other grammar takes, is measured too.
 #include <benchmark/benchmark.h>
 
 #include <glm/glm.hpp>
@@ -44,6 +45,19 @@ void sproutTurtle(benchmark::State& state) {
     }
     g_segments = geo.cylinders.size();
     state.counters["segments/s"] = benchmark::Counter(double(g_segments), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// The same turtle reading the string module by module (what every non-D0L grammar takes).
+void sproutStringTurtle(benchmark::State& state) {
+    Fixture& f = fixture();
+    Geometry geo;
+    TurtleOptions o{10, 1, nullptr};
+    o.fromTree = false;
+    for (auto _ : state) {
+        interpret(*f.string, *f.grammar, o, geo);
+        benchmark::DoNotOptimize(geo.cylinders.data());
+    }
+    state.counters["segments/s"] = benchmark::Counter(double(geo.cylinders.size()), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 // The textbook turtle: a glm::mat4 per state, rotations with glm::rotate, a std::vector
@@ -91,14 +105,17 @@ public:
 
 int main(int argc, char** argv) {
     benchmark::RegisterBenchmark("turtle/sprout_fractal_plant_n10", sproutTurtle)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("turtle/sprout_string_fractal_plant_n10", sproutStringTurtle)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("turtle/naive_glm_fractal_plant_n10", naiveTurtle)->Unit(benchmark::kMillisecond);
     benchmark::Initialize(&argc, argv);
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     double s = reporter.seconds["turtle/sprout_fractal_plant_n10"], n = reporter.seconds["turtle/naive_glm_fractal_plant_n10"];
-    if (s > 0 && n > 0)
-        std::printf("\nSummary: turtle fractal plant n=10: %zu segments, %.0f M segments/s (bar >= 100), "
-                    "naive glm turtle %.0f M segments/s, ratio %.1fx\n",
-                    g_segments, g_segments / s / 1e6, g_segments / n / 1e6, n / s);
+    double str = reporter.seconds["turtle/sprout_string_fractal_plant_n10"];
+    if (s > 0 && n > 0 && str > 0)
+        std::printf("\nSummary: turtle fractal plant n=10: %zu segments, %.0f M segments/s from the derivation tree "
+                    "(bar >= 100), %.0f M/s reading the string, naive glm turtle %.0f M segments/s; "
+                    "ratios to naive %.1fx (tree) and %.1fx (string)\n",
+                    g_segments, g_segments / s / 1e6, g_segments / str / 1e6, g_segments / n / 1e6, n / s, n / str);
     return 0;
 }
