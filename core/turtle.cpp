@@ -209,7 +209,8 @@ public:
     TurtleStats runTree(const D0LExpander& tree, const ModuleString& axiom, int n) {
         m_tree = &tree;
         m_alpha = m_actions.size();
-        planBlocks(axiom, n);
+        // Without a subtree to place, walking the tree module by module is slower than the string.
+        if (!planBlocks(axiom, n)) return {};
         State t = m_state;
         for (SymbolId s : axiom.symbols) walk(s, n, t);
         m_state = t;
@@ -306,7 +307,8 @@ private:
 
     // Which (s, d) become blocks: those that occur at least twice in the tree, are of a
     // useful size, contain only block actions and close every bracket they open.
-    void planBlocks(const ModuleString& axiom, int n) {
+    // Returns how many there are.
+    size_t planBlocks(const ModuleString& axiom, int n) {
         const size_t A = m_alpha, D = size_t(n) + 1;
         static constexpr std::uint64_t kSat = 1ull << 62;
         auto sat = [](std::uint64_t a) { return std::min(a, kSat); };
@@ -352,14 +354,16 @@ private:
         }
         m_blockState.assign(D * A, BlockState::No);
         m_blockIndex.assign(D * A, 0);
+        size_t candidates = 0;
         for (size_t d = 1; d < D; ++d) {
             for (size_t s = 0; s < A; ++s) {
                 const size_t k = d * A + s;
                 if (occurs[k] >= 2 && ok[k] && net[k] == 0 && low[k] >= 0 && !m_tree->identity(SymbolId(s)) &&
                     modules[k] >= kMinBlockModules && modules[k] <= kMaxBlockModules)
-                    m_blockState[k] = BlockState::Unbuilt;
+                    m_blockState[k] = BlockState::Unbuilt, ++candidates;
             }
         }
+        return candidates;
     }
 
     void walk(SymbolId s, int d, State& t) {
@@ -842,7 +846,6 @@ void Geometry::clear() {
 
 std::uint32_t defaultPaletteColour(int index) { return kDefaultPalette[((index % 16) + 16) % 16]; }
 
-constexpr size_t kTreeMinModules = 1 << 15;
 constexpr int kTreeMaxDepth = 1024;  // the tree walk recurses once per step
 constexpr size_t kTreeMaxTable = 1 << 22;
 
@@ -859,10 +862,11 @@ TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptio
     // A big D0L string is drawn from its derivation tree when it is exactly step n of the
     // grammar (checked: comparing costs a small part of interpreting).
     const int n = options.derivationSteps;
-    if (options.fromTree && s.size() >= kTreeMinModules && n > 0 && n <= kTreeMaxDepth && turtle.treeApplicable() &&
+    if (options.fromTree && s.size() >= options.treeMinModules && n > 0 && n <= kTreeMaxDepth && turtle.treeApplicable() &&
         D0LExpander::applicable(g) && (size_t(n) + 1) * g.alphabet.size() <= kTreeMaxTable) {
         D0LExpander tree(g);
-        if (tree.matches(g.axiom, n, s)) return turtle.runTree(tree, g.axiom, n);
+        if (tree.matches(g.axiom, n, s))
+            if (TurtleStats stats = turtle.runTree(tree, g.axiom, n); stats.fromTree) return stats;
     }
     turtle.run(s);
     return {};

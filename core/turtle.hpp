@@ -28,6 +28,7 @@ struct TurtleOptions {
     // transform (the same geometry up to float rounding, several times faster). False
     // always reads the string (tests compare the two).
     bool fromTree = true;
+    std::size_t treeMinModules = 1 << 15;  // shorter strings are read: blocks would not pay
 };
 
 struct TurtleStats {

@@ -2,6 +2,8 @@
 // fuzz/CMakeLists.txt); each target is this file compiled with SPROUT_FUZZ_<NAME> defined.
 // A crash, a sanitizer report, a leak or a timeout is a failure; every input must end in a
 // value or in diagnostics.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -29,8 +31,30 @@ void deriveAndDraw(const std::string& text, int maxSteps) {
     Derivation d(r.grammar, o);
     const int n = std::min(r.grammar->settings.iterations, maxSteps);
     if (!d.deriveTo(n).ok()) return;
+    TurtleOptions t{n, d.seed(), nullptr};
+    t.treeMinModules = 0;  // D0L strings of any size are drawn from the tree
     Geometry g;
-    interpret(*d.step(n), *r.grammar, {n, d.seed(), nullptr}, g);
+    if (!interpret(*d.step(n), *r.grammar, t, g).fromTree) return;
+    // Differential check: the string turtle must draw the same segments.
+    t.fromTree = false;
+    Geometry s;
+    interpret(*d.step(n), *r.grammar, t, s);
+    if (g.cylinders.size() != s.cylinders.size() || g.surfaces.size() != s.surfaces.size() ||
+        g.polygons.indices.size() != s.polygons.indices.size() || g.planarCurve != s.planarCurve)
+        __builtin_trap();
+    const glm::vec3 size = s.bounds.size();
+    const float extent = std::max({size.x, size.y, size.z});
+    if (!(extent < 1e6f)) return;  // rounding, not placement, decides there
+    // The string turtle's frame drifts by rounding over long chains of turns (the tree's
+    // far less); a misplaced subtree is off by whole segments.
+    const float tol = 1e-2f * (1 + extent);
+    auto far = [&](const glm::vec3& a, const glm::vec3& b) {
+        return std::fabs(a.x - b.x) > tol || std::fabs(a.y - b.y) > tol || std::fabs(a.z - b.z) > tol;
+    };
+    for (size_t i = 0; i < s.cylinders.size(); ++i) {
+        const CylinderInstance &x = g.cylinders[i], &y = s.cylinders[i];
+        if (x.order != y.order || x.colour != y.colour || far(x.start, y.start) || far(x.end, y.end)) __builtin_trap();
+    }
 }
 
 }  // namespace

@@ -362,10 +362,12 @@ TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
 }
 
 TEST(TreeTurtle, ColoursPolygonsAndLeavesAreDrawnAsTheStringSays) {
-    // Modules that are not blocks ($, colours, polygons, leaves) are walked one by one.
+    // Modules that are not blocks ($, colours, polygons, leaves) are walked one by one, and
+    // so are blocks (F after n steps) inside an open polygon, where F outlines it.
     TurtleStats s = drawBothWays(
-        "angle: 22.5\naxiom: A\nA -> F[&B$A]/[^'A]~l{.-F.+F.}F\nB -> FF\n");
+        "angle: 22.5\naxiom: A\nA -> F[&B$A]/[^'A]~l{.-F.+F.}F\nB -> F[+F]B\nF -> FF\n");
     EXPECT_TRUE(s.fromTree);
+    EXPECT_GT(s.blocks, 0u);
 }
 
 TEST(TreeTurtle, OnlyExactStepsOfD0LGrammarsAreDrawnFromTheTree) {
