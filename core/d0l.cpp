@@ -174,7 +174,7 @@ bool D0LExpander::matches(const ModuleString& axiom, int n, const ModuleString& 
     if (!s.params.empty() || countAt(axiom, n) != s.size()) return false;
     const SymbolId* at = s.symbols.data();
     return forEachPiece(axiom, n, [&](const SymbolId* src, std::uint64_t L) {
-        if (L == 1 ? *at != *src : std::memcmp(at, src, L * sizeof(SymbolId)) != 0) return false;
+        if (L == 1 ? *at != *src : L && std::memcmp(at, src, L * sizeof(SymbolId)) != 0) return false;
         at += L;
         return true;
     });

@@ -288,9 +288,11 @@ private:
     };
     enum class BlockState : std::uint8_t { No, Unbuilt, Built };
 
+    // On the heap: builds nest as deep as the derivation, and a writer holds 5 KB.
     struct Scratch {
         PodBuffer<CylinderInstance> segments;
         std::vector<v4> points;
+        SegmentWriter writer{segments, false};
     };
 
     static bool blockAction(Act a) {
@@ -402,7 +404,7 @@ private:
         Scratch& scratch = m_scratch[size_t(m_level)];
         scratch.segments.clear();
         scratch.points.clear();
-        SegmentWriter local(scratch.segments, false);
+        SegmentWriter& local = scratch.writer;
         SegmentWriter* outer = m_seg;
         const v4 outerMin = m_min, outerMax = m_max;
         const size_t stackBase = m_stack.size();

@@ -357,7 +357,7 @@ TEST(TreeTurtle, MovesAndWidthsAndLengthScales) {
 
 TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
     // B starts with '!': it narrows the segment drawn before it, outside the block.
-    TurtleStats s = drawBothWays("angle: 30\naxiom: A\nA -> FB[+A][-A]\nB -> !F[+F][-F]F\n");
+    TurtleStats s = drawBothWays("angle: 30\naxiom: A\nA -> FB[+A][-A]\nB -> !FC\nC -> F[+C][-C]\n");
     EXPECT_TRUE(s.fromTree);
 }
 
@@ -368,6 +368,23 @@ TEST(TreeTurtle, ColoursPolygonsAndLeavesAreDrawnAsTheStringSays) {
         "angle: 22.5\naxiom: A\nA -> F[&B$A]/[^'A]~l{.-F.+F.}F\nB -> F[+F]B\nF -> FF\n");
     EXPECT_TRUE(s.fromTree);
     EXPECT_GT(s.blocks, 0u);
+}
+
+TEST(TreeTurtle, BlocksNestAsDeepAsTheDerivation) {
+    // B after d steps is B F^d and holds B after d-1 steps: a thousand blocks built one
+    // inside the other (on the heap, not the stack).
+    auto g = grammarOf("angle: 1\naxiom: A\nA -> B+A\nB -> BF\n");
+    const int n = 1000;
+    DeriveResult r = derive(g, n);
+    ASSERT_TRUE(r.outcome.ok());
+    TurtleOptions o{n, 1, nullptr};
+    Geometry tree, fromString;
+    TurtleStats stats = interpret(*r.string, *g, o, tree);
+    EXPECT_TRUE(stats.fromTree);
+    EXPECT_GT(stats.blocks, 900u);
+    o.fromTree = false;
+    interpret(*r.string, *g, o, fromString);
+    expectSameDrawing(tree, fromString, "nested blocks");
 }
 
 TEST(TreeTurtle, OnlyExactStepsOfD0LGrammarsAreDrawnFromTheTree) {
