@@ -31,6 +31,15 @@ std::optional<std::string> readFile(const std::string& path, std::string& error)
 
 }  // namespace
 
+std::string pngKind(const std::string& path) {
+    if (!path.ends_with(".png")) return "";
+    std::string error;
+    auto bytes = readFile(path, error);
+    if (!bytes) return "";
+    ImportResult r = importPng(*bytes);
+    return r.ok() ? r.kind : "";
+}
+
 std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
     std::string text, error;
     LoadedGrammar out;
@@ -60,6 +69,11 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
         ImportResult imported = importByExtension(path, *t, system);
         for (const auto& d : imported.diagnostics) std::cerr << formatDiagnostic(d, path) << "\n";
         if (!imported.ok()) return std::nullopt;
+        if (imported.kind != "lsys") {
+            std::cerr << path << ": holds " << (imported.kind == "ifs" ? "an iterated function system" : "a forest scene")
+                      << ", not one grammar: `sprout render` draws it\n";
+            return std::nullopt;
+        }
         if (imported.text != *t) out.displayName = path + " (as .lsys)";
         text = std::move(imported.text);
     } else if (auto preset = presetText(source)) {

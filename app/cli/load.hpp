@@ -19,6 +19,9 @@ struct LoadedGrammar {
 // or cannot be read.
 std::optional<LoadedGrammar> loadGrammar(const std::string& source);
 
+// What a PNG written by Sprout holds: "lsys", "ifs" or "forest"; empty for any other file.
+std::string pngKind(const std::string& path);
+
 // A forest scene (.forest file or scene preset) built into one geometry; `text` is the
 // scene as written. Prints diagnostics; false when it cannot be built.
 bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,

@@ -213,7 +213,8 @@ int runRender(int argc, char** argv) {
         }
     }
     // A PNG of an IFS or a forest scene is rendered as what it holds.
-    const bool ifsPng = isPng(source) && readSource(source, "ifs"), forestPng = isPng(source) && readSource(source, "forest");
+    const std::string kind = pngKind(source);
+    const bool ifsPng = kind == "ifs", forestPng = kind == "forest";
     if (source.ends_with(".ifs") || isIfsPreset(source) || ifsPng) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
     const auto scenes = scenePresetNames();
     if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end() || forestPng)

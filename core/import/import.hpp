@@ -11,8 +11,9 @@
 namespace sprout {
 
 struct ImportResult {
-    std::string text;                      // .lsys
+    std::string text;                      // .lsys (or, from a PNG, the .ifs or .forest it holds)
     std::vector<Diagnostic> diagnostics;   // problems in the source, with its line numbers
+    std::string kind = "lsys";             // from a PNG: "lsys", "ifs" or "forest"
     bool ok() const { return !hasErrors(diagnostics); }
 };
 

@@ -54,6 +54,7 @@ ImportResult importPng(std::string_view png) {
     for (const char* key : {"lsys", "ifs", "forest"}) {
         if (auto text = pngTextChunk(png, key, error)) {
             r.text = std::move(*text);
+            r.kind = key;
             return r;
         }
         if (!error.empty()) break;
