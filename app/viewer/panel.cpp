@@ -279,7 +279,7 @@ void presetSection(App& app) {
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", name.c_str());
         if (clicked) {
             if (app.state.dirty()) app.state.autosave(true);  // never lose the edits
-            app.state.openText(std::string(*presetText(name)));
+            app.state.openText(std::string(*presetText(name)), {}, name);
             app.frameOnNextPlant = true;
             app.say("opened preset " + name);
         }
@@ -437,7 +437,7 @@ void drawPanel(App& app) {
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_MenuBar |
                      ImGuiWindowFlags_NoTitleBar);
     fileMenu(app);
-    std::string title = app.state.path().empty() ? "untitled" : app.state.path().filename().string();
+    const std::string title = app.state.title();
     ImGui::Text("%s%s", title.c_str(), app.state.dirty() ? " *" : "");
     if (!app.state.importedFrom().empty()) {
         ImGui::SameLine();

@@ -222,8 +222,9 @@ bool ViewerState::open(const fs::path& path, std::string& error, const std::stri
     return true;
 }
 
-void ViewerState::openText(std::string text, fs::path path) {
+void ViewerState::openText(std::string text, fs::path path, std::string preset) {
     m_path = std::move(path);
+    m_preset = std::move(preset);
     m_importedFrom.clear();
     m_importSystems.clear();
     std::error_code ec;
@@ -233,6 +234,12 @@ void ViewerState::openText(std::string text, fs::path path) {
     m_text = std::move(text);
     m_dirty = false;
     post();
+}
+
+std::string ViewerState::title() const {
+    if (!m_path.empty()) return m_path.filename().string();
+    if (!m_preset.empty()) return m_preset + " (preset)";
+    return "untitled";
 }
 
 bool ViewerState::save(std::string& error) {

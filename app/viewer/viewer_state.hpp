@@ -65,7 +65,10 @@ public:
     // The file an import came from, and a Fractint file's systems to choose from.
     const std::filesystem::path& importedFrom() const { return m_importedFrom; }
     const std::vector<std::string>& importSystems() const { return m_importSystems; }
-    void openText(std::string text, std::filesystem::path path = {});  // a preset or a restore
+    // A preset (named `preset`) or a restore; a path when the text is that file's.
+    void openText(std::string text, std::filesystem::path path = {}, std::string preset = {});
+    // The panel's title: the file name, the preset's name, or "untitled".
+    std::string title() const;
     bool save(std::string& error);
     bool saveAs(const std::filesystem::path& path, std::string& error);
     // Reloads the file when another program changed it (and the text here has no unsaved
@@ -92,6 +95,7 @@ private:
     float m_growFraction = 1.0f;
     std::shared_ptr<const Result> m_plant, m_latest;
     std::filesystem::path m_path;
+    std::string m_preset;  // the preset opened, until saved under a name
     std::filesystem::path m_importedFrom;
     std::vector<std::string> m_importSystems;
     std::filesystem::file_time_type m_fileTime{};

@@ -263,7 +263,7 @@ int runViewer(int argc, char** argv) {
             return 1;
         }
     } else if (auto text = presetText(source)) {
-        app.state.openText(std::string(*text));
+        app.state.openText(std::string(*text), {}, source);
     } else {
         std::cerr << source << ": no such file or preset\n";
         return 1;
@@ -275,10 +275,16 @@ int runViewer(int argc, char** argv) {
     double last = glfwGetTime(), lastDiskCheck = last;
     bool screenshotDone = false;
     int framesWithPlant = 0;
+    std::string windowTitle;
     while (!glfwWindowShouldClose(window) || (app.state.dirty() && !app.quitConfirmed && script.empty() && !screenshot)) {
         if (glfwWindowShouldClose(window)) {  // unsaved edits: ask first
             glfwSetWindowShouldClose(window, GLFW_FALSE);
             app.quitPopup = true;
+        }
+        // The window's title names what is being edited, as the panel does.
+        if (std::string title = "Sprout - " + app.state.title() + (app.state.dirty() ? " *" : ""); title != windowTitle) {
+            glfwSetWindowTitle(window, title.c_str());
+            windowTitle = std::move(title);
         }
         const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot;
         if (animating || app.needsRedraw) glfwPollEvents();

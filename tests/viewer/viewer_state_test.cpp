@@ -51,6 +51,17 @@ TEST(ViewerState, EditBecomesAPlant) {
     EXPECT_TRUE(s.dirty());
 }
 
+TEST(ViewerState, TheTitleNamesTheFileOrThePreset) {
+    ViewerState s(tempDir("title"));
+    EXPECT_EQ(s.title(), "untitled");
+    s.openText("axiom: F\n", {}, "fern");
+    EXPECT_EQ(s.title(), "fern (preset)");
+    s.openText("axiom: F\n", "/tmp/some/plant.lsys");
+    EXPECT_EQ(s.title(), "plant.lsys");
+    s.openText("axiom: F\n");  // a restored text
+    EXPECT_EQ(s.title(), "untitled");
+}
+
 TEST(ViewerState, ErrorsKeepTheLastGoodPlant) {
     ViewerState s(tempDir("errors"));
     s.openText(kPlant);
