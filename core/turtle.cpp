@@ -160,6 +160,33 @@ private:
     std::size_t m_staged = 0;
 };
 
+// What drawing from the derivation tree works in: blocks being built (on the heap: builds
+// nest as deep as the derivation, and a writer holds 5 KB) and the blocks made. Kept per
+// thread between interpretations: fresh buffers each time cost more in page faults (the
+// kernel zeroing new pages) than placing the blocks.
+struct TreeScratch {
+    PodBuffer<CylinderInstance> segments;
+    std::vector<v4> points;
+    SegmentWriter writer{segments, false};
+};
+struct TreeWorkspace {
+    PodBuffer<CylinderInstance> blockSegments;
+    std::vector<v4> blockPoints;
+    std::deque<TreeScratch> scratch;  // one per block being built, nested (stable addresses)
+    void clear() {
+        blockSegments.clear();
+        blockPoints.clear();
+    }
+    // A pathological grammar's 80 MB is not kept for the rest of the thread's life.
+    void trim() {
+        if (blockSegments.capacity() > (4u << 20) / sizeof(CylinderInstance)) *this = TreeWorkspace{};
+    }
+};
+TreeWorkspace& treeWorkspace() {
+    thread_local TreeWorkspace w;
+    return w;
+}
+
 class Turtle {
 public:
     Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
@@ -219,11 +246,13 @@ public:
         m_alpha = m_actions.size();
         // Without a subtree to place, walking the tree module by module is slower than the string.
         if (!planBlocks(axiom, n)) return {};
+        m_work.clear();
         State t = m_state;
         for (SymbolId s : axiom.symbols) walk(s, n, t);
         m_state = t;
         m_seg->finish();
         finish();
+        m_work.trim();
         return {true, m_blocks.size()};
     }
     // Whether runTree can draw this grammar: nothing that depends on the absolute position
@@ -296,12 +325,6 @@ private:
     };
     enum class BlockState : std::uint8_t { No, Unbuilt, Built };
 
-    // On the heap: builds nest as deep as the derivation, and a writer holds 5 KB.
-    struct Scratch {
-        PodBuffer<CylinderInstance> segments;
-        std::vector<v4> points;
-        SegmentWriter writer{segments, false};
-    };
 
     static bool blockAction(Act a) {
         switch (a) {
@@ -409,7 +432,7 @@ private:
         m_blockState[k] = BlockState::No;  // unless it completes
         if (m_blockSegs.size() > kMaxBlockSegments) return;
         if (m_scratch.size() <= size_t(m_level)) m_scratch.emplace_back();
-        Scratch& scratch = m_scratch[size_t(m_level)];
+        TreeScratch& scratch = m_scratch[size_t(m_level)];
         scratch.segments.clear();
         scratch.points.clear();
         SegmentWriter& local = scratch.writer;
@@ -821,9 +844,10 @@ private:
     std::vector<BlockState> m_blockState;  // [d * alphabet + s]
     std::vector<std::uint32_t> m_blockIndex;
     std::vector<Block> m_blocks;
-    PodBuffer<CylinderInstance> m_blockSegs;
-    std::vector<v4> m_blockPoints;
-    std::deque<Scratch> m_scratch;  // one per block being built, nested (stable addresses)
+    TreeWorkspace& m_work = treeWorkspace();
+    PodBuffer<CylinderInstance>& m_blockSegs = m_work.blockSegments;
+    std::vector<v4>& m_blockPoints = m_work.blockPoints;
+    std::deque<TreeScratch>& m_scratch = m_work.scratch;
     int m_level = 0;                 // blocks being built
     bool m_abort = false;            // the block being built cannot be one
 };
