@@ -244,6 +244,28 @@ TEST(PngRecipe, ARenderedPictureRendersAgainTheSame) {
     }
 }
 
+TEST(PngRecipe, PicturesOfForestsExportAndPicturesOfIfsSayWhatTheyHold) {
+    std::string forest = temp("forest_recipe.png"), ifs = temp("ifs_recipe.png"), glb = temp("forest_recipe.glb");
+    ASSERT_EQ(runSprout("render weed_field --size 64x64 -o " + forest).code, 0);
+    Result direct = runSprout("export weed_field -o " + glb);
+    ASSERT_EQ(direct.code, 0) << direct.err;
+    Result r = runSprout("export " + forest + " -o " + glb);
+    ASSERT_EQ(r.code, 0) << r.err;
+    // The same scene: the same counts in the summary line, after the file name.
+    EXPECT_EQ(r.out.substr(r.out.find(':'), r.out.find(" in ") - r.out.find(':')),
+              direct.out.substr(direct.out.find(':'), direct.out.find(" in ") - direct.out.find(':')));
+    ASSERT_EQ(runSprout("render barnsley_fern --size 64x64 -o " + ifs).code, 0);
+    r = runSprout("export " + ifs + " -o " + glb);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("is a point density, not a model"), std::string::npos) << r.err;
+    r = runSprout("expand " + ifs);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("holds an iterated function system"), std::string::npos) << r.err;
+    r = runSprout("expand " + forest);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("holds a forest scene"), std::string::npos) << r.err;
+}
+
 TEST(PngRecipe, PicturesWithoutAGrammarSaySo) {
     std::string notPng = writeTemp("fake.png", "hello");
     Result r = runSprout("expand " + notPng);
