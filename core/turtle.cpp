@@ -244,6 +244,7 @@ public:
     TurtleStats runTree(const D0LExpander& tree, const ModuleString& axiom, int n) {
         m_tree = &tree;
         m_alpha = m_actions.size();
+        setLeaves();
         // Without a subtree to place, walking the tree module by module is slower than the string.
         if (!planBlocks(axiom, n)) return {};
         m_work.clear();
@@ -256,8 +257,23 @@ public:
         return {true, m_blocks.size()};
     }
     // Whether runTree can draw this grammar: nothing that depends on the absolute position
-    // or on the module's index (jitter, tropism, growth).
-    bool treeApplicable() const { return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages; }
+    // or on the module's index (jitter, tropism, growth), and interpretation rules (if any)
+    // that map each symbol to one fixed string.
+    bool treeApplicable() const {
+        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && simpleInterpretation(m_g);
+    }
+    static bool simpleInterpretation(const Grammar& g) {
+        for (const auto& list : g.interpretation.bySymbol) {
+            if (list.size() > 1) return false;
+            for (auto idx : list) {
+                const Production& p = g.interpretation.productions[idx];
+                if (p.hasContext() || p.stochastic() || p.condition || p.slotCount || !p.successor.args.empty()) return false;
+                for (SymbolId c : p.successor.symbols)
+                    if (c == Alphabet::kCut) return false;
+            }
+        }
+        return true;
+    }
 
 private:
     template <bool Parametric>
@@ -353,11 +369,18 @@ private:
                 const size_t k = d * A + s;
                 const SymbolId id = SymbolId(s);
                 if (d == 0 || m_tree->identity(id)) {
-                    const Act a = m_actions[s];
+                    std::int64_t depth = 0, lowest = 0;
+                    bool good = true;
+                    for (std::uint32_t i = m_leafStart[s]; i < m_leafStart[s + 1]; ++i) {
+                        const Act a = m_leafActs[i];
+                        good = good && blockAction(a);
+                        depth += a == Act::Push ? 1 : a == Act::Pop ? -1 : 0;
+                        lowest = std::min(lowest, depth);
+                    }
                     modules[k] = 1;
-                    ok[k] = blockAction(a);
-                    net[k] = a == Act::Push ? 1 : a == Act::Pop ? -1 : 0;
-                    low[k] = std::min<std::int64_t>(0, net[k]);
+                    ok[k] = good;
+                    net[k] = depth;
+                    low[k] = lowest;
                     continue;
                 }
                 std::uint64_t m = 0;
@@ -399,21 +422,40 @@ private:
         return candidates;
     }
 
+    // What a symbol of the derived string draws: its own action, or the actions of its
+    // interpretation rule's successor (cpfg's homomorphism, applied once at the leaves).
+    void setLeaves() {
+        m_leafStart.assign(m_alpha + 1, 0);
+        m_leafActs.clear();
+        for (size_t s = 0; s < m_alpha; ++s) {
+            m_leafStart[s] = std::uint32_t(m_leafActs.size());
+            const auto* list = s < m_g.interpretation.bySymbol.size() ? &m_g.interpretation.bySymbol[s] : nullptr;
+            if (list && !list->empty()) {
+                for (SymbolId c : m_g.interpretation.productions[list->front()].successor.symbols)
+                    if (m_actions[c] != Act::None) m_leafActs.push_back(m_actions[c]);
+            } else if (m_actions[s] != Act::None) {
+                m_leafActs.push_back(m_actions[s]);
+            }
+        }
+        m_leafStart[m_alpha] = std::uint32_t(m_leafActs.size());
+    }
+
     void walk(SymbolId s, int d, State& t) {
         if (d == 0 || m_tree->identity(s)) {
-            const Act act = m_actions[s];
-            if (act == Act::None) return;
-            if (m_level) {
-                // Inside a block being built: the segment before the block is not ours to taper.
-                if ((act == Act::WidthDec || act == Act::WidthInc || act == Act::ScaleWidth) && t.lastSegment == kEntrySegment) {
-                    m_abort = true;
-                    return;
+            for (std::uint32_t i = m_leafStart[s]; i < m_leafStart[s + 1]; ++i) {
+                const Act act = m_leafActs[i];
+                if (m_level) {
+                    // Inside a block being built: the segment before the block is not ours to taper.
+                    if ((act == Act::WidthDec || act == Act::WidthInc || act == Act::ScaleWidth) && t.lastSegment == kEntrySegment) {
+                        m_abort = true;
+                        return;
+                    }
+                    apply(t, act, nullptr, 0);
+                    if (act == Act::Move || act == Act::MoveNoVertex) m_scratch[m_level - 1].points.push_back(t.pos);
+                    continue;
                 }
                 apply(t, act, nullptr, 0);
-                if (act == Act::Move || act == Act::MoveNoVertex) m_scratch[m_level - 1].points.push_back(t.pos);
-                return;
             }
-            apply(t, act, nullptr, 0);
             return;
         }
         const size_t k = size_t(d) * m_alpha + s;
@@ -841,6 +883,8 @@ private:
     // Drawing from the derivation tree
     const D0LExpander* m_tree = nullptr;
     size_t m_alpha = 0;
+    std::vector<std::uint32_t> m_leafStart;  // per symbol, into m_leafActs
+    std::vector<Act> m_leafActs;
     std::vector<BlockState> m_blockState;  // [d * alphabet + s]
     std::vector<std::uint32_t> m_blockIndex;
     std::vector<Block> m_blocks;
@@ -885,24 +929,27 @@ constexpr size_t kTreeMaxTable = 1 << 22;
 
 TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out) {
     out.clear();
-    if (!g.interpretation.productions.empty()) {
-        ModuleString drawn = applyInterpretation(g, s, options.seed);
-        TurtleOptions o = options;
-        o.ages = nullptr;  // the interpretation changes positions: ages no longer line up
-        Turtle(g, o, out).run(drawn);
-        return {};
+    {
+        Turtle turtle(g, options, out);
+        // A big D0L string is drawn from its derivation tree when it is exactly step n of the
+        // grammar (checked: comparing costs a small part of interpreting). Interpretation
+        // rules, if simple, are applied at the tree's leaves.
+        const int n = options.derivationSteps;
+        if (options.fromTree && s.size() >= options.treeMinModules && n > 0 && n <= kTreeMaxDepth &&
+            turtle.treeApplicable() && D0LExpander::applicable(g) && (size_t(n) + 1) * g.alphabet.size() <= kTreeMaxTable) {
+            D0LExpander tree(g);
+            if (tree.matches(g.axiom, n, s))
+                if (TurtleStats stats = turtle.runTree(tree, g.axiom, n); stats.fromTree) return stats;
+        }
+        if (g.interpretation.productions.empty()) {
+            turtle.run(s);
+            return {};
+        }
     }
-    Turtle turtle(g, options, out);
-    // A big D0L string is drawn from its derivation tree when it is exactly step n of the
-    // grammar (checked: comparing costs a small part of interpreting).
-    const int n = options.derivationSteps;
-    if (options.fromTree && s.size() >= options.treeMinModules && n > 0 && n <= kTreeMaxDepth && turtle.treeApplicable() &&
-        D0LExpander::applicable(g) && (size_t(n) + 1) * g.alphabet.size() <= kTreeMaxTable) {
-        D0LExpander tree(g);
-        if (tree.matches(g.axiom, n, s))
-            if (TurtleStats stats = turtle.runTree(tree, g.axiom, n); stats.fromTree) return stats;
-    }
-    turtle.run(s);
+    ModuleString drawn = applyInterpretation(g, s, options.seed);
+    TurtleOptions o = options;
+    o.ages = nullptr;  // the interpretation changes positions: ages no longer line up
+    Turtle(g, o, out).run(drawn);
     return {};
 }
 

@@ -377,6 +377,21 @@ TEST(TreeTurtle, MovesAndWidthsAndLengthScales) {
     EXPECT_TRUE(s.fromTree);
 }
 
+TEST(TreeTurtle, InterpretationRulesAreDrawnAtTheLeaves) {
+    // Edge rewriting with Fl and Fr drawn as F (ABOP 1.10): the homomorphism is applied where
+    // the tree reaches a module, and blocks are made of what it draws.
+    TurtleStats s = drawBothWays(
+        "angle: 90\nmodule: Fl Fr\naxiom: Fl\nFl -> Fl+Fr+\nFr -> -Fl-Fr\ninterpretation:\nFl -> F[&F]\nFr -> F\n");
+    EXPECT_TRUE(s.fromTree);
+    EXPECT_GT(s.blocks, 5u);
+    // Interpretation rules that are not one fixed string per symbol read the string.
+    auto g = grammarOf("angle: 90\nmodule: Fl Fr\naxiom: Fl\nFl -> Fl+Fr+\nFr -> -Fl-Fr\ninterpretation:\n"
+                       "Fl -> F : 0.5\nFl -> FF : 0.5\nFr -> F\n");
+    DeriveResult r = derive(g, 16);
+    Geometry geo;
+    EXPECT_FALSE(interpret(*r.string, *g, {16, 1, nullptr}, geo).fromTree);
+}
+
 TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
     // B starts with '!': it narrows the segment drawn before it, outside the block.
     TurtleStats s = drawBothWays("angle: 30\naxiom: A\nA -> FB[+A][-A]\nB -> !FC\nC -> F[+C][-C]\n");
