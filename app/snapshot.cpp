@@ -43,6 +43,10 @@ render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
         camera.yaw = o.yaw.value_or(camera.yaw);
         camera.pitch = o.pitch.value_or(camera.pitch);
     }
+    if (!camera.orthographic) {
+        if (o.distance) camera.distance = *o.distance;
+        if (o.target) camera.target = *o.target;
+    }
     return camera;
 }
 

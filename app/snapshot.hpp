@@ -20,6 +20,10 @@ struct SnapshotOptions {
     std::optional<std::uint64_t> seed;   // default: the grammar's seed
     render::ViewPreset view = render::ViewPreset::Auto;
     std::optional<float> yaw, pitch;     // degrees, override the view preset
+    // Where the camera looks and from how far (perspective views): a viewer screenshot's
+    // zoom and pan. Default: framed on the plant.
+    std::optional<float> distance;
+    std::optional<glm::vec3> target;
     render::RenderOptions render;
     DeriveLimits limits;
 };

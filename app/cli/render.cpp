@@ -18,6 +18,7 @@
 #include <algorithm>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -42,8 +43,23 @@ bool parseFloat(const std::optional<std::string>& s, std::optional<float>& out) 
     if (!s) return true;
     char* end = nullptr;
     float v = std::strtof(s->c_str(), &end);
-    if (end == s->c_str() || *end) return false;
+    if (end == s->c_str() || *end || !std::isfinite(v)) return false;
     out = v;
+    return true;
+}
+
+// "X,Y,Z"
+bool parsePoint(const std::optional<std::string>& s, std::optional<glm::vec3>& out) {
+    if (!s) return true;
+    glm::vec3 p;
+    const char* at = s->c_str();
+    for (int k = 0; k < 3; ++k) {
+        char* end = nullptr;
+        p[k] = std::strtof(at, &end);
+        if (end == at || !std::isfinite(p[k]) || *end != (k < 2 ? ',' : '\0')) return false;
+        at = end + 1;
+    }
+    out = p;
     return true;
 }
 
@@ -156,7 +172,8 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 
 int runRender(int argc, char** argv) {
     Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats"},
-              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--max-modules", "--animate", "--frames", "--fps"});
+              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
+               "--frames", "--fps"});
     SnapshotOptions o;
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
@@ -175,6 +192,10 @@ int runRender(int argc, char** argv) {
         problem = "--size expects WIDTHxHEIGHT between 16x16 and 8192x8192, e.g. 1280x720";
     if (problem.empty() && (!parseFloat(args.value("--yaw"), o.yaw) || !parseFloat(args.value("--pitch"), o.pitch)))
         problem = "--yaw and --pitch expect degrees";
+    if (problem.empty() && (!parseFloat(args.value("--distance"), o.distance) || (o.distance && !(*o.distance > 0))))
+        problem = "--distance expects a positive number (from the camera to its target)";
+    if (problem.empty() && !parsePoint(args.value("--target"), o.target))
+        problem = "--target expects X,Y,Z (the point the camera looks at)";
     if (auto v = args.value("--view"); problem.empty() && v) {
         if (*v == "front") o.view = render::ViewPreset::Front;
         else if (*v == "side") o.view = render::ViewPreset::Side;
@@ -187,14 +208,15 @@ int runRender(int argc, char** argv) {
     if (!problem.empty()) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
-                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--no-shadows] [--no-ground]\n"
+                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
+                     " [--no-shadows] [--no-ground]\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
     }
     const std::string source = args.positionals()[0];
     // The view a picture was rendered with comes back with it, unless one is given now.
     std::string view;
-    for (const char* k : {"--view", "--yaw", "--pitch"})
+    for (const char* k : {"--view", "--yaw", "--pitch", "--distance", "--target"})
         if (auto v = args.value(k)) view += std::string(view.empty() ? "" : " ") + k + " " + *v;
     if (view.empty() && source.size() > 4 && source.substr(source.size() - 4) == ".png") {
         std::ifstream in(source, std::ios::binary);
@@ -208,6 +230,8 @@ int runRender(int argc, char** argv) {
                                                              : o.view;
                 std::optional<float> f;
                 if ((k == "--yaw" || k == "--pitch") && parseFloat(value, f) && f) (k == "--yaw" ? o.yaw : o.pitch) = f;
+                if (k == "--distance" && parseFloat(value, f) && f && *f > 0) o.distance = f;
+                if (k == "--target") parsePoint(value, o.target);
             }
             view = *v;
         }

@@ -3,7 +3,7 @@
 //   text <grammar>        replace the text ("\n" for line breaks)
 //   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
 //   define <name> <value> a define, as its slider would
-//   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | sleep <seconds>
+//   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
 //   record growth|turntable <path>   as Record video (waits until it is written)
@@ -118,6 +118,14 @@ bool Script::step(App& app) {
             float v = 0;
             in >> v;
             (cmd == "yaw" ? app.camera.yaw : app.camera.pitch) = v;
+            app.needsRedraw = true;
+        } else if (cmd == "zoom") {  // as the mouse wheel: closer by this factor
+            float f = 1;
+            in >> f;
+            if (f > 0) {
+                app.camera.distance /= f;
+                app.camera.orthoHeight /= f;
+            }
             app.needsRedraw = true;
         } else if (cmd == "screenshot") {
             std::string path, size;

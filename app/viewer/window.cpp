@@ -166,8 +166,9 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
     }
     img.text.emplace_back("lsys", state.text());
     if (!cam.orthographic) {  // `sprout render FILE.png` looks from the same direction
-        char view[64];
-        std::snprintf(view, sizeof view, "--yaw %.1f --pitch %.1f", double(cam.yaw), double(cam.pitch));
+        char view[200];  // and from where: the zoom and pan come back too
+        std::snprintf(view, sizeof view, "--yaw %.2f --pitch %.2f --distance %.6g --target %.6g,%.6g,%.6g", double(cam.yaw),
+                      double(cam.pitch), double(cam.distance), double(cam.target.x), double(cam.target.y), double(cam.target.z));
         img.text.emplace_back("sprout-view", view);
     }
     img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);

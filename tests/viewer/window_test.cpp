@@ -84,6 +84,32 @@ TEST(Window, ScriptedEditChangesThePlant) {
     EXPECT_GT(ink, 200);
 }
 
+// A screenshot keeps the camera (direction, zoom, target): `sprout render SHOT.png` draws
+// the same view, not the plant framed anew.
+TEST(Window, ScreenshotRendersAgainFromTheSameCamera) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const std::string dir = testing::TempDir();
+    const std::string shot = dir + "sprout_zoomed.png", again = dir + "sprout_zoomed_again.png",
+                      framed = dir + "sprout_framed.png", script = dir + "sprout_zoom.txt";
+    std::ofstream(script) << "set n 3\nwait\nyaw 40\npitch 15\nzoom 3\nwait\nscreenshot " << shot << " 320x240\nquit\n";
+    ASSERT_EQ(runUnderXvfb("bush_3d --script " + script), 0);
+    const std::string render = std::string(SPROUT_BINARY) + " render ";
+    ASSERT_EQ(std::system((render + shot + " --size 320x240 -o " + again + " >/dev/null").c_str()), 0);
+    ASSERT_EQ(std::system((render + "bush_3d -n 3 --yaw 40 --pitch 15 --size 320x240 -o " + framed + " >/dev/null").c_str()), 0);
+    Image a = load(shot), b = load(again), c = load(framed);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    ASSERT_EQ(a.rgba.size(), c.rgba.size());
+    auto differ = [](const Image& x, const Image& y) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < x.rgba.size(); i += 4)
+            n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 60;
+        return n;
+    };
+    // The window and the headless renderer draw alike, but not bit for bit.
+    EXPECT_LT(differ(a, b), 320u * 240u / 20) << "the same camera";
+    EXPECT_GT(differ(a, c), 320u * 240u / 5) << "zoomed in three times: not the framed view";
+}
+
 TEST(Window, ExportModelWritesWhatIsOnScreen) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     const std::string dir = testing::TempDir();
