@@ -12,6 +12,17 @@ std::span<const EmbeddedFile> embeddedShaders();  // generated
 namespace sprout::render {
 namespace {
 
+// The info log of a shader or a program (glGetShaderiv + glGetShaderInfoLog, or the
+// program's pair).
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getiv, GetLog getLog) {
+    GLint n = 0;
+    getiv(object, GL_INFO_LOG_LENGTH, &n);
+    std::vector<char> log(size_t(std::max(n, 1)));
+    getLog(object, n, nullptr, log.data());
+    return log.data();
+}
+
 std::string_view source(std::string_view stem) {
     for (const auto& f : embeddedShaders())
         if (f.stem == stem) return f.data;
@@ -54,11 +65,7 @@ GLuint compile(GLenum type, std::string_view stem, std::string& error) {
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        GLint n = 0;
-        glGetShaderiv(s, GL_INFO_LOG_LENGTH, &n);
-        std::vector<char> log(size_t(std::max(n, 1)));
-        glGetShaderInfoLog(s, n, nullptr, log.data());
-        error = std::string(stem) + ": " + log.data();
+        error = std::string(stem) + ": " + infoLog(s, glGetShaderiv, glGetShaderInfoLog);
         glDeleteShader(s);
         return 0;
     }
@@ -84,11 +91,7 @@ unsigned buildProgram(std::string_view vertex, std::string_view fragment, std::s
     GLint ok = 0;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint n = 0;
-        glGetProgramiv(p, GL_INFO_LOG_LENGTH, &n);
-        std::vector<char> log(size_t(std::max(n, 1)));
-        glGetProgramInfoLog(p, n, nullptr, log.data());
-        error = std::string(vertex) + "+" + std::string(fragment) + ": " + log.data();
+        error = std::string(vertex) + "+" + std::string(fragment) + ": " + infoLog(p, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(p);
         return 0;
     }
