@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -166,15 +167,18 @@ private:
 // kernel zeroing new pages) than placing the blocks.
 struct TreeScratch {
     PodBuffer<CylinderInstance> segments;
+    PodBuffer<SurfaceInstance> surfaces;
     std::vector<v4> points;
     SegmentWriter writer{segments, false};
 };
 struct TreeWorkspace {
     PodBuffer<CylinderInstance> blockSegments;
+    PodBuffer<SurfaceInstance> blockSurfaces;
     std::vector<v4> blockPoints;
     std::deque<TreeScratch> scratch;  // one per block being built, nested (stable addresses)
     void clear() {
         blockSegments.clear();
+        blockSurfaces.clear();
         blockPoints.clear();
     }
     // A pathological grammar's 80 MB is not kept for the rest of the thread's life.
@@ -324,9 +328,11 @@ private:
     // maps the identity frame's axes (-L, H, U) to t's, scales positions by t.length and
     // radii by t.width, and adds t's branch order. This is exact because nothing a block may
     // contain depends on where the turtle is: only F G f g, turns, pitches, rolls, |, [ ],
-    // ! # and @L @W (no $, colours, polygons, surfaces or gravity).
+    // ! # @L @W, leaves, petals, spheres, and ; , ' as palette steps from the colour the
+    // turtle brings (no $, polygons or gravity).
 
     static constexpr std::int32_t kEntrySegment = -2;  // lastSegment: the one before the block
+    static constexpr std::uint32_t kInheritColour = 0xFFFFFFFF;  // in a block: the turtle's colour
     static constexpr std::uint64_t kMinBlockModules = 16;      // smaller: walking is as fast
     static constexpr std::uint64_t kMaxBlockModules = 1 << 16;  // larger: occurs too rarely to pay
     static constexpr std::size_t kMaxBlockSegments = 1 << 21;   // all blocks: 80 MB at most
@@ -336,8 +342,11 @@ private:
         std::uint32_t firstPoint, points;  // places moved to (f g), for the bounds
         v4 pos, H, L;                      // the turtle after the block, in the identity frame
         float length, width;               // factors on the turtle's length and width
+        std::uint32_t firstSurface, surfaces;  // in m_blockSurfs, in the identity frame
         std::int32_t lastSegment;          // index in the block, kEntrySegment or -1
+        std::int8_t colour;                // palette steps at the end, -1: none taken
         bool brackets;
+        bool colours;                      // some segment takes palette steps
     };
     enum class BlockState : std::uint8_t { No, Unbuilt, Built };
 
@@ -347,7 +356,8 @@ private:
             case Act::None: case Act::Draw: case Act::DrawNoVertex: case Act::Move: case Act::MoveNoVertex:
             case Act::Left: case Act::Right: case Act::Down: case Act::Up: case Act::RollLeft:
             case Act::RollRight: case Act::Around: case Act::Push: case Act::Pop: case Act::WidthDec:
-            case Act::WidthInc: case Act::ScaleLength: case Act::ScaleWidth:
+            case Act::WidthInc: case Act::ScaleLength: case Act::ScaleWidth: case Act::ColourNext:
+            case Act::ColourPrev: case Act::Leaf: case Act::Petal: case Act::Sphere:
                 return true;
             default:
                 return false;
@@ -462,8 +472,12 @@ private:
         if (m_blockState[k] != BlockState::No && t.angleScale == 1.0f && m_polygons.empty()) {
             if (m_blockState[k] == BlockState::Unbuilt) build(s, d);
             if (m_blockState[k] == BlockState::Built) {
-                place(m_blocks[m_blockIndex[k]], t);
-                return;
+                const Block& b = m_blocks[m_blockIndex[k]];
+                // A surface's size follows the turtle's length or width: not negative ones.
+                if (!b.surfaces || (t.length > 0 && t.width > 0)) {
+                    place(b, t);
+                    return;
+                }
             }
         }
         for (const SymbolId* c = m_tree->successorBegin(s); c != m_tree->successorEnd(s) && !m_abort; ++c) walk(*c, d - 1, t);
@@ -476,6 +490,7 @@ private:
         if (m_scratch.size() <= size_t(m_level)) m_scratch.emplace_back();
         TreeScratch& scratch = m_scratch[size_t(m_level)];
         scratch.segments.clear();
+        scratch.surfaces.clear();
         scratch.points.clear();
         SegmentWriter& local = scratch.writer;
         SegmentWriter* outer = m_seg;
@@ -487,6 +502,7 @@ private:
         ++m_level;
         State t;
         t.lastSegment = kEntrySegment;
+        t.stemColour = stemColour(t);
         for (const SymbolId* c = m_tree->successorBegin(s); c != m_tree->successorEnd(s) && !m_abort; ++c) walk(*c, d - 1, t);
         local.finish();
         --m_level;
@@ -511,7 +527,13 @@ private:
         b.length = t.length;
         b.width = t.width;
         b.lastSegment = t.lastSegment;
+        b.colour = t.colour;
         b.brackets = brackets;
+        b.colours = false;
+        for (const auto& c : scratch.segments) b.colours |= c.colour != kInheritColour;
+        b.firstSurface = std::uint32_t(m_blockSurfs.size());
+        b.surfaces = std::uint32_t(scratch.surfaces.size());
+        m_blockSurfs.append(scratch.surfaces.data(), scratch.surfaces.size());
         m_blockSegs.append(scratch.segments.data(), scratch.segments.size());
         m_blockPoints.insert(m_blockPoints.end(), scratch.points.begin(), scratch.points.end());
         m_blockIndex[k] = std::uint32_t(m_blocks.size());
@@ -527,29 +549,63 @@ private:
         v4 origin = t.pos;
         origin[3] = 0;
         auto at = [&](v4 p) { return origin + sx * p[0] + sy * p[1] + sz * p[2] + p * radius; };
-        const bool byOrder = t.colour < 0 && m_gradient;
+        // Colours: a segment that took no palette step has the turtle's colour (by branch order,
+        // or its palette entry; inside a block being built, its step code); one that did is
+        // that many steps from the turtle's palette entry.
+        const bool byOrder = !m_level && t.colour < 0 && m_gradient;
         const std::uint32_t fixed = t.stemColour;
         const int order = t.order;
+        const int palette = int(m_palette.size()), from = std::max<int>(t.colour, 0);
+        auto stepped = [&](std::uint32_t code) {
+            const int index = (from + int(code)) % palette;
+            return m_level ? std::uint32_t(index) : m_palette[size_t(index)];
+        };
         const std::size_t base = m_seg->count();
         const CylinderInstance* src = m_blockSegs.data() + b.first;
+        const std::uint32_t count = b.count;
         v4 lo = m_min, hi = m_max;
-        for (std::uint32_t i = 0; i < b.count; ++i) {
-            v4 a, e;
-            std::memcpy(&a, &src[i].start, 16);
-            std::memcpy(&e, &src[i].end, 16);
-            const v4 wa = at(a), we = at(e);
-            CylinderInstance& c = m_seg->next();
-            std::memcpy(&c.start, &wa, 16);
-            std::memcpy(&c.end, &we, 16);
-            const int o = std::min(order + src[i].order, 65535);
-            c.order = std::uint16_t(o);
-            c.colour = byOrder ? m_byOrder[std::min(o, kOrderColours - 1)] : fixed;
-            c.step = 0;
-            lo = __builtin_ia32_minps(lo, we);
-            hi = __builtin_ia32_maxps(hi, we);
-        }
+        // Two copies of the loop: most blocks take no palette step, and the check costs there.
+        auto segments = [&](auto colours) {
+            for (std::uint32_t i = 0; i < count; ++i) {
+                v4 a, e;
+                std::memcpy(&a, &src[i].start, 16);
+                std::memcpy(&e, &src[i].end, 16);
+                const v4 wa = at(a), we = at(e);
+                CylinderInstance& c = m_seg->next();
+                std::memcpy(&c.start, &wa, 16);
+                std::memcpy(&c.end, &we, 16);
+                const int o = std::min(order + src[i].order, 65535);
+                c.order = std::uint16_t(o);
+                c.colour = byOrder ? m_byOrder[std::min(o, kOrderColours - 1)] : fixed;
+                if constexpr (decltype(colours)::value)
+                    if (src[i].colour != kInheritColour) c.colour = stepped(src[i].colour);
+                c.step = 0;
+                lo = __builtin_ia32_minps(lo, we);
+                hi = __builtin_ia32_maxps(hi, we);
+            }
+        };
+        if (b.colours) segments(std::true_type{});
+        else segments(std::false_type{});
         m_min = lo;
         m_max = hi;
+        for (std::uint32_t i = 0; i < b.surfaces; ++i) {
+            SurfaceInstance s = m_blockSurfs[b.firstSurface + i];
+            const v4 p = at(fromGlm(s.position)), h = fromGlm(s.heading), u = fromGlm(s.up);
+            s.position = toGlm(p);
+            s.heading = toGlm(ax * h[0] + ay * h[1] + az * h[2]);
+            s.up = toGlm(ax * u[0] + ay * u[1] + az * u[2]);
+            s.size *= s.kind == SurfaceKind::Sphere ? t.width : t.length;
+            if (s.colour != kInheritColour) s.colour = stepped(s.colour);
+            else if (m_level) s.colour = t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
+            else s.colour = t.colour >= 0 ? colour(t.colour) : colour(s.kind == SurfaceKind::Sphere ? kSphereColour : s.kind == SurfaceKind::Leaf ? kLeafColour : kPetalColour);
+            if (m_level) {
+                m_scratch[size_t(m_level) - 1].surfaces.push_back(s);
+                continue;
+            }
+            m_out.surfaces.push_back(s);
+            addBound(p);
+            addBound(p + fromGlm(s.heading) * s.size);
+        }
         for (std::uint32_t i = 0; i < b.points; ++i) {
             v4 p = at(m_blockPoints[b.firstPoint + i]);
             p[3] = 0;
@@ -564,6 +620,10 @@ private:
         t.L = L;
         t.length *= b.length;
         t.width *= b.width;
+        if (b.colour >= 0) {
+            t.colour = std::int8_t((from + b.colour) % palette);
+            t.stemColour = stemColour(t);
+        }
         if (b.lastSegment >= 0) t.lastSegment = std::int32_t(base) + b.lastSegment;
         else if (b.lastSegment == -1) t.lastSegment = -1;
         m_usedBrackets |= b.brackets;
@@ -713,6 +773,8 @@ private:
     // The colour of a stem: the palette entry set by ; , ', else the branch order's gradient
     // colour (or the bark colour).
     std::uint32_t stemColour(const State& t) const {
+        // Inside a block being built, colours stay palette steps until the block is placed.
+        if (m_level) return t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
         return t.colour >= 0 ? m_palette[size_t(t.colour)]
                              : m_gradient ? m_byOrder[std::min<int>(t.order, kOrderColours - 1)] : m_palette[0];
     }
@@ -828,6 +890,11 @@ private:
         }
         s.size *= grow;
         if (!(s.size > 0)) return;
+        if (m_level) {  // a block being built: resolved when placed
+            s.colour = t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
+            m_scratch[size_t(m_level) - 1].surfaces.push_back(s);  // bounded when placed
+            return;
+        }
         m_out.surfaces.push_back(s);
         addBound(t.pos);
         addBound(t.pos + t.H * s.size);
@@ -890,6 +957,7 @@ private:
     std::vector<Block> m_blocks;
     TreeWorkspace& m_work = treeWorkspace();
     PodBuffer<CylinderInstance>& m_blockSegs = m_work.blockSegments;
+    PodBuffer<SurfaceInstance>& m_blockSurfs = m_work.blockSurfaces;
     std::vector<v4>& m_blockPoints = m_work.blockPoints;
     std::deque<TreeScratch>& m_scratch = m_work.scratch;
     int m_level = 0;                 // blocks being built

@@ -29,6 +29,15 @@ inline void expectSameDrawing(const Geometry& a, const Geometry& b, const std::s
     EXPECT_EQ(a.planarCurve, b.planarCurve) << what;
     EXPECT_EQ(a.surfaces.size(), b.surfaces.size()) << what;
     EXPECT_EQ(a.polygons.indices.size(), b.polygons.indices.size()) << what;
+    for (size_t i = 0; i < a.surfaces.size() && i < b.surfaces.size(); ++i) {
+        const SurfaceInstance &x = a.surfaces[i], &y = b.surfaces[i];
+        if (!near(x.position, y.position, tol) || !near(x.heading, y.heading, 1e-3f) || !near(x.up, y.up, 1e-3f) ||
+            std::fabs(x.size - y.size) > 1e-3f * (1e-3f + y.size) || x.colour != y.colour || x.kind != y.kind) {
+            ADD_FAILURE() << what << ": surface " << i << " of " << a.surfaces.size() << " differs: size " << x.size << " vs "
+                          << y.size << ", colour " << std::hex << x.colour << " vs " << y.colour << std::dec;
+            break;
+        }
+    }
     ASSERT_EQ(a.cylinders.size(), b.cylinders.size()) << what;
     for (size_t i = 0; i < a.cylinders.size(); ++i) {
         const CylinderInstance &x = a.cylinders[i], &y = b.cylinders[i];

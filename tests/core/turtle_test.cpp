@@ -407,6 +407,17 @@ TEST(TreeTurtle, ColoursPolygonsAndLeavesAreDrawnAsTheStringSays) {
     EXPECT_GT(s.blocks, 0u);
 }
 
+TEST(TreeTurtle, BlocksCarryPaletteStepsLeavesAndSpheres) {
+    // ' and , step through the palette from the colour the turtle brings (wrapping past its
+    // end); leaves, petals and spheres are placed with the segments.
+    for (const char* axiom : {"A", "'''A", ",B[A]"}) {
+        TurtleStats s = drawBothWays(std::string("angle: 30\naxiom: ") + axiom +
+                                     "\nA -> F[+A'~l]F[-A,@O]F''''''''''''''''''''B\nB -> F[&~p]'B\n");
+        EXPECT_TRUE(s.fromTree) << axiom;
+        EXPECT_GT(s.blocks, 3u) << axiom;
+    }
+}
+
 TEST(TreeTurtle, BlocksNestAsDeepAsTheDerivation) {
     // B after d steps is B F^d and holds B after d-1 steps: a thousand blocks built one
     // inside the other (on the heap, not the stack).
