@@ -566,6 +566,7 @@ private:
         v4 lo = m_min, hi = m_max;
         // Two copies of the loop: most blocks take no palette step, and the check costs there.
         auto segments = [&](auto colours) {
+            v4 low = lo, high = hi;  // locals: in registers, not stored at every segment
             for (std::uint32_t i = 0; i < count; ++i) {
                 v4 a, e;
                 std::memcpy(&a, &src[i].start, 16);
@@ -580,9 +581,11 @@ private:
                 if constexpr (decltype(colours)::value)
                     if (src[i].colour != kInheritColour) c.colour = stepped(src[i].colour);
                 c.step = 0;
-                lo = __builtin_ia32_minps(lo, we);
-                hi = __builtin_ia32_maxps(hi, we);
+                low = __builtin_ia32_minps(low, we);
+                high = __builtin_ia32_maxps(high, we);
             }
+            lo = low;
+            hi = high;
         };
         if (b.colours) segments(std::true_type{});
         else segments(std::false_type{});
