@@ -600,7 +600,7 @@ private:
             s.size *= s.kind == SurfaceKind::Sphere ? t.width : t.length;
             if (s.colour != kInheritColour) s.colour = stepped(s.colour);
             else if (m_level) s.colour = t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
-            else s.colour = t.colour >= 0 ? colour(t.colour) : colour(s.kind == SurfaceKind::Sphere ? kSphereColour : s.kind == SurfaceKind::Leaf ? kLeafColour : kPetalColour);
+            else s.colour = surfaceColour(t, s.kind);
             if (m_level) {
                 m_scratch[size_t(m_level) - 1].surfaces.push_back(s);
                 continue;
@@ -781,6 +781,13 @@ private:
         return t.colour >= 0 ? m_palette[size_t(t.colour)]
                              : m_gradient ? m_byOrder[std::min<int>(t.order, kOrderColours - 1)] : m_palette[0];
     }
+    // A surface's colour: the palette entry set by ; , ', else its kind's own.
+    std::uint32_t surfaceColour(const State& t, SurfaceKind kind) const {
+        return colour(t.colour >= 0 ? t.colour
+                      : kind == SurfaceKind::Sphere ? kSphereColour
+                      : kind == SurfaceKind::Leaf   ? kLeafColour
+                                                    : kPetalColour);
+    }
     std::uint32_t colour(int index) const {
         int n = int(m_palette.size());
         return m_palette[size_t(((index % n) + n) % n)];
@@ -885,12 +892,11 @@ private:
         if (act == Act::Sphere) {
             s.kind = SurfaceKind::Sphere;
             s.size = p ? float(*p) : t.width;  // radius
-            s.colour = t.colour >= 0 ? colour(t.colour) : colour(kSphereColour);
         } else {
             s.kind = act == Act::Leaf ? SurfaceKind::Leaf : SurfaceKind::Petal;
             s.size = p ? float(*p) : t.length;
-            s.colour = t.colour >= 0 ? colour(t.colour) : act == Act::Leaf ? colour(kLeafColour) : colour(kPetalColour);
         }
+        s.colour = surfaceColour(t, s.kind);
         s.size *= grow;
         if (!(s.size > 0)) return;
         if (m_level) {  // a block being built: resolved when placed

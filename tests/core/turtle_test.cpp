@@ -287,6 +287,15 @@ TurtleStats drawBothWays(const std::string& text) {
     return stats;
 }
 
+// Whether step n of the grammar is drawn from the derivation tree.
+bool drawnFromTree(const std::string& text, int n) {
+    auto g = grammarOf(text);
+    DeriveResult r = derive(g, n);
+    EXPECT_TRUE(r.outcome.ok());
+    Geometry geo;
+    return interpret(*r.string, *g, {n, 1, nullptr}, geo).fromTree;
+}
+
 TEST(TreeTurtle, FractalPlantMatchesTheStringTurtle) {
     TurtleStats s = drawBothWays("angle: 22.5\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
     EXPECT_TRUE(s.fromTree);
@@ -385,11 +394,9 @@ TEST(TreeTurtle, InterpretationRulesAreDrawnAtTheLeaves) {
     EXPECT_TRUE(s.fromTree);
     EXPECT_GT(s.blocks, 5u);
     // Interpretation rules that are not one fixed string per symbol read the string.
-    auto g = grammarOf("angle: 90\nmodule: Fl Fr\naxiom: Fl\nFl -> Fl+Fr+\nFr -> -Fl-Fr\ninterpretation:\n"
-                       "Fl -> F : 0.5\nFl -> FF : 0.5\nFr -> F\n");
-    DeriveResult r = derive(g, 16);
-    Geometry geo;
-    EXPECT_FALSE(interpret(*r.string, *g, {16, 1, nullptr}, geo).fromTree);
+    EXPECT_FALSE(drawnFromTree("angle: 90\nmodule: Fl Fr\naxiom: Fl\nFl -> Fl+Fr+\nFr -> -Fl-Fr\ninterpretation:\n"
+                               "Fl -> F : 0.5\nFl -> FF : 0.5\nFr -> F\n",
+                               16));
 }
 
 TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
@@ -398,9 +405,10 @@ TEST(TreeTurtle, ABlockThatTapersTheSegmentBeforeItIsWalkedInstead) {
     EXPECT_TRUE(s.fromTree);
 }
 
-TEST(TreeTurtle, ColoursPolygonsAndLeavesAreDrawnAsTheStringSays) {
-    // Modules that are not blocks ($, colours, polygons, leaves) are walked one by one, and
-    // so are blocks (F after n steps) inside an open polygon, where F outlines it.
+TEST(TreeTurtle, RollsToHorizontalAndPolygonsAreWalked) {
+    // Modules that cannot be in a block ($, polygons) are walked one by one, and so is all
+    // of A, which holds them; so are blocks (F after n steps) inside an open polygon, where
+    // F outlines it.
     TurtleStats s = drawBothWays(
         "angle: 22.5\naxiom: A\nA -> F[&B$A]/[^'A]~l{.-F.+F.}F\nB -> F[+F]B\nF -> FF\n");
     EXPECT_TRUE(s.fromTree);
@@ -446,11 +454,9 @@ TEST(TreeTurtle, OnlyExactStepsOfD0LGrammarsAreDrawnFromTheTree) {
     changed.symbols[2000] = SymbolId((changed.symbols[2000] + 1) % g->alphabet.size());
     EXPECT_FALSE(interpret(changed, *g, {7, 1, nullptr}, geo).fromTree);
     // Jitter and tropism depend on where the turtle is: the string is read.
-    auto jitter = grammarOf("angle: 22.5 ~ 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
-    EXPECT_FALSE(interpret(*derive(jitter, 7).string, *jitter, {7, 1, nullptr}, geo).fromTree);
-    auto bent = grammarOf("angle: 22.5\ntropism: 0 -1 0 0.2\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");
-    EXPECT_FALSE(interpret(*derive(bent, 7).string, *bent, {7, 1, nullptr}, geo).fromTree);
-    EXPECT_TRUE(interpret(*r.string, *g, {7, 1, nullptr}, geo).fromTree);
+    EXPECT_FALSE(drawnFromTree("angle: 22.5 ~ 3\n" + plant.substr(plant.find('\n') + 1), 7));
+    EXPECT_FALSE(drawnFromTree("tropism: 0 -1 0 0.2\n" + plant, 7));
+    EXPECT_TRUE(drawnFromTree(plant, 7));
 }
 
 }  // namespace
