@@ -13,7 +13,7 @@ std::uint64_t satAdd(std::uint64_t a, std::uint64_t b) { return std::min(kSatura
 }  // namespace
 
 bool D0LExpander::applicable(const Grammar& g) {
-    if (g.parametric() || g.stochastic() || g.hasContext() || g.usesCut()) return false;
+    if (g.parametric() || g.stochastic() || g.hasContext() || g.usesCut() || g.needsGeneralEngine()) return false;
     for (const auto& list : g.rules.bySymbol) {
         if (list.size() > 1) return false;  // later rules are dead, but keep one code path for lint
         for (auto idx : list)

@@ -1,9 +1,11 @@
 #include "core/derive.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/d0l.hpp"
 #include "core/step_rewriter.hpp"
+#include "core/turtle.hpp"
 
 namespace sprout {
 namespace {
@@ -44,6 +46,53 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     }
     if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
+    if (!m_grammar->decomposition.productions.empty())
+        m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
+    if (m_decomposer || m_grammar->hasQueries()) {  // the axiom is decomposed and queried too
+        auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
+        PodBuffer<std::uint16_t>* ages = m_ages.empty() ? nullptr : const_cast<PodBuffer<std::uint16_t>*>(m_ages[0].get());
+        m_axiomOutcome = finishStep(0, *axiom, ages);
+        m_stats[0] = {0, axiom->size(), axiom->params.size(), 0.0};
+        m_steps[0] = std::move(axiom);
+    }
+}
+
+DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages) {
+    if (m_decomposer) {
+        // Repeated passes of the (context-free) decomposition rules: pass d rewrites what
+        // pass d-1 produced, which is applying them depth-first to each module (cpfg / lpfg).
+        const int depth = m_grammar->decompositionDepth;
+        for (int pass = 0;; ++pass) {
+            std::uint64_t modules, params;
+            m_decomposer->bound(s, modules, params, true);
+            DeriveOutcome o = checkSize(step, modules, params);
+            if (!o.ok()) return o;
+            ModuleString out;
+            PodBuffer<std::uint16_t> outAges;
+            StepRewriter::Ages ageArgs{};
+            if (ages) ageArgs = {ages->data(), &outAges, std::uint16_t(std::min(step, 65535))};
+            Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
+            if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages ? &ageArgs : nullptr))
+                return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
+            const bool same = out.symbols.size() == s.symbols.size() && out.params.size() == s.params.size() &&
+                              std::equal(out.symbols.data(), out.symbols.data() + out.symbols.size(), s.symbols.data()) &&
+                              std::equal(out.params.data(), out.params.data() + out.params.size(), s.params.data());
+            if (same) break;
+            if (pass == depth) {
+                DeriveOutcome o;
+                o.status = DeriveStatus::Failed;
+                o.step = step;
+                o.message = "step " + std::to_string(step) + ": the decomposition rules still apply after " +
+                            std::to_string(depth) + " levels (maximum depth): they never end. A decomposition must end "
+                            "in modules no decomposition rule rewrites; raise 'maximum depth:' if it is this deep on purpose";
+                return o;
+            }
+            s = std::move(out);
+            if (ages) *ages = std::move(outAges);
+        }
+    }
+    if (m_grammar->hasQueries()) answerQueries(*m_grammar, s, step, m_seed);
+    return {};
 }
 
 Derivation::~Derivation() = default;
@@ -83,6 +132,7 @@ void Derivation::record(int step, const ModuleString& s, double millis) {
 }
 
 DeriveOutcome Derivation::deriveTo(int n) {
+    if (!m_axiomOutcome.ok()) return m_axiomOutcome;
     if (n <= m_reached) return {};
     if (!m_d0l) return deriveGeneral(n);
     std::vector<std::uint64_t> counts = m_d0l->countsUpTo(m_grammar->axiom, n);
@@ -131,8 +181,26 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
             ages = std::make_shared<PodBuffer<std::uint16_t>>();
             ageArgs = {m_ages[size_t(k - 1)]->data(), ages.get(), std::uint16_t(std::min(k, 65535))};
         }
-        if (!m_rewriter->rewrite(in, *out, rng, m_options.cancel, progress, ages ? &ageArgs : nullptr))
+        // cpfg: a '%' of the last step removes the rest of its branch as this step is derived.
+        const ModuleString* src = &in;
+        ModuleString cutCopy;
+        PodBuffer<std::uint16_t> cutAges;
+        if (m_grammar->cutInNextStep &&
+            std::find(in.symbols.data(), in.symbols.data() + in.size(), Alphabet::kCut) != in.symbols.data() + in.size()) {
+            cutCopy = in;
+            if (ages) {
+                cutAges = *m_ages[size_t(k - 1)];
+                ageArgs.in = cutAges.data();
+            }
+            applyCut(cutCopy, m_grammar->alphabet, ages ? &cutAges : nullptr);
+            src = &cutCopy;
+        }
+        if (!m_rewriter->rewrite(*src, *out, rng, m_options.cancel, progress, ages ? &ageArgs : nullptr))
             return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
+        if (m_decomposer || m_grammar->hasQueries()) {
+            DeriveOutcome f = finishStep(k, *out, ages.get());
+            if (!f.ok()) return f;
+        }
         if (ages) m_ages.push_back(std::move(ages));
         record(k, *out, millisSince(t0));
         m_steps.push_back(std::move(out));
@@ -174,7 +242,53 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
     ModuleString out;
     Rng rng = Rng::forStream(seed, 0x1e7e7);
     rewriter.rewrite(s, out, rng, nullptr, {});
+    // Recursion (cpfg `maximum depth:`): each level rewrites what the one before produced;
+    // it stops early when nothing changes, and at a size no screen could use.
+    for (int level = 1; level < grammar.interpretationDepth; ++level) {
+        std::uint64_t modules, params;
+        rewriter.bound(out, modules, params, true);
+        if (modules > 200'000'000) break;
+        ModuleString next;
+        Rng r = Rng::forStream(seed, 0x1e7e7 + std::uint64_t(level));
+        rewriter.rewrite(out, next, r, nullptr, {});
+        const bool same = next.symbols.size() == out.symbols.size() &&
+                          std::equal(next.symbols.data(), next.symbols.data() + next.symbols.size(), out.symbols.data()) &&
+                          std::equal(next.params.data(), next.params.data() + next.params.size(), out.params.data());
+        out = std::move(next);
+        if (same) break;
+    }
     return out;
+}
+
+void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed) {
+    std::vector<QueryFrame> frames;
+    Geometry scratch;
+    TurtleOptions t{step, seed, nullptr};
+    t.fromTree = false;
+    t.queries = &frames;
+    interpret(s, grammar, t, scratch);
+    // Frames come in drawing order; a homomorphism that drops or repeats query modules
+    // would break the correspondence, and then the parameters are left as they were.
+    std::vector<char> kind(grammar.alphabet.size(), 0);
+    size_t count = 0;
+    for (size_t k = 0; k < grammar.alphabet.size(); ++k) {
+        const std::string& n = grammar.alphabet[SymbolId(k)].name;
+        if (n.size() == 2 && n[0] == '?' && std::string_view("PHUL").find(n[1]) != std::string_view::npos) kind[k] = n[1];
+    }
+    for (SymbolId id : s.symbols) count += kind[id] != 0;
+    if (count != frames.size()) return;
+    size_t q = 0, pp = 0;
+    for (size_t i = 0; i < s.size(); ++i) {
+        const SymbolId id = s.symbols[i];
+        const unsigned a = grammar.alphabet[id].arity;
+        if (kind[id]) {
+            const QueryFrame& f = frames[q++];
+            const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
+            // Rounded to 1e-5: the float turtle's last bits would otherwise show as 2.9999998.
+            for (unsigned k = 0; k < a && k < 3; ++k) s.params[pp + k] = std::round(double(v[int(k)]) * 1e5) / 1e5 + 0.0;
+        }
+        pp += a;
+    }
 }
 
 }  // namespace sprout

@@ -44,7 +44,7 @@ struct StepStats {
     double millis = 0;  // time to produce this step
 };
 
-enum class DeriveStatus { Ok, Cancelled, TooBig };
+enum class DeriveStatus { Ok, Cancelled, TooBig, Failed };  // Failed: a decomposition that never ends
 
 struct DeriveOutcome {
     DeriveStatus status = DeriveStatus::Ok;
@@ -78,6 +78,8 @@ public:
 private:
     DeriveOutcome checkSize(int step, std::uint64_t modules, std::uint64_t params) const;
     DeriveOutcome deriveGeneral(int n);
+    // cpfg: the decomposition rules until none applies, then the query modules' frames.
+    DeriveOutcome finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages);
     bool cancelled() const { return m_options.cancel && m_options.cancel->load(std::memory_order_relaxed); }
     void record(int step, const ModuleString& s, double millis);
 
@@ -90,6 +92,8 @@ private:
     int m_reached = 0;
     std::unique_ptr<class D0LExpander> m_d0l;
     std::unique_ptr<class StepRewriter> m_rewriter;
+    std::unique_ptr<class StepRewriter> m_decomposer;
+    DeriveOutcome m_axiomOutcome;  // the axiom's decomposition, reported by deriveTo
 };
 
 // One-shot helper: step n of the grammar (or the refusal). For tests and the CLI.
@@ -99,9 +103,14 @@ struct DeriveResult {
 };
 DeriveResult derive(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options = {});
 
-// The cpfg homomorphism: applies the grammar's interpretation rules once to `s`. The
-// result is what the turtle draws; it is never fed back into the derivation.
+// The cpfg homomorphism: applies the grammar's interpretation rules to `s`, again to what
+// they produce up to `maximum depth:` levels (1 unless the grammar says). The result is what
+// the turtle draws; it is never fed back into the derivation.
 ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, std::uint64_t seed);
+
+// cpfg query modules: interprets `s` with the turtle and writes the frame at each ?P ?H ?U ?L
+// into its parameters (position, heading, up, left; as many as the module has).
+void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed);
 
 // "12,345,678"
 std::string withThousands(std::uint64_t v);

@@ -34,6 +34,8 @@ const Function1 kFunctions1[] = {
     {"ceil", [](double x) { return std::ceil(x); }},
     {"round", [](double x) { return std::round(x); }},
     {"sign", [](double x) { return double((x > 0) - (x < 0)); }},
+    {"trunc", [](double x) { return std::trunc(x); }},
+    {"fabs", [](double x) { return std::fabs(x); }},
 };
 const Function2 kFunctions2[] = {
     {"atan2", [](double y, double x) { return std::atan2(y, x) / kDeg; }},
@@ -57,6 +59,19 @@ struct Node {
     std::unique_ptr<Node> a, b, c;
 };
 using NodePtr = std::unique_ptr<Node>;
+
+NodePtr clone(const Node* n) {
+    if (!n) return nullptr;
+    auto c = std::make_unique<Node>();
+    c->op = n->op;
+    c->fn = n->fn;
+    c->slot = n->slot;
+    c->value = n->value;
+    c->a = clone(n->a.get());
+    c->b = clone(n->b.get());
+    c->c = clone(n->c.get());
+    return c;
+}
 
 NodePtr makeConst(double v) {
     auto n = std::make_unique<Node>();
@@ -92,6 +107,26 @@ public:
     ExprCompiler(std::string_view text, const SourceLine& line, const ExprScope& scope,
                  DiagnosticSink& sink)
         : m_text(text), m_line(line), m_scope(scope), m_sink(sink) {}
+
+    // The body of a function-like #define, compiled where it is used: its errors are
+    // reported at the use, naming the macro.
+    NodePtr expandMacro(const std::string& name, const ExprMacro& macro, std::vector<NodePtr>& args, int depth) {
+        ExprCompiler inner(macro.body, m_line, m_scope, m_sink);
+        inner.m_parent = this;
+        inner.m_macroName = name;
+        inner.m_reportAt = m_callStart;
+        inner.m_macroDepth = m_macroDepth + 1;
+        for (size_t i = 0; i < macro.params.size(); ++i) inner.m_args.emplace(macro.params[i], args[i].get());
+        inner.skipSpace();
+        NodePtr root = inner.parseTernary(depth + 1);
+        if (!inner.m_failed) {
+            inner.skipSpace();
+            if (inner.m_pos < inner.m_text.size()) inner.fail(inner.m_pos, "unexpected '" + inner.codePointAt(inner.m_pos) + "' in expression");
+        }
+        m_nodes += inner.m_nodes;
+        if (inner.m_failed) m_failed = true;
+        return root ? std::move(root) : makeConst(0);
+    }
 
     std::optional<Expr> compile() {
         skipSpace();
@@ -143,6 +178,10 @@ private:
     void fail(size_t at, std::string msg) {
         if (m_failed) return;  // the first error in an expression is the useful one
         m_failed = true;
+        if (m_parent) {  // inside a macro body: report at its use
+            m_parent->fail(m_reportAt, "in '#define " + m_macroName + "': " + msg);
+            return;
+        }
         m_sink.error(m_line, m_text.substr(std::min(at, m_text.size())), std::move(msg));
     }
     // The whole UTF-8 character at `at`, for messages.
@@ -328,6 +367,7 @@ private:
             ++m_pos;
         std::string name(m_text.substr(start, m_pos - start));
         if (peek("(")) return parseCall(name, start, depth);
+        if (auto arg = m_args.find(name); arg != m_args.end()) return clone(arg->second);
         if (m_scope.params) {
             for (size_t i = 0; i < m_scope.params->size(); ++i) {
                 if ((*m_scope.params)[i] == name) {
@@ -382,8 +422,21 @@ private:
                             (want == 1 ? "" : "s") + ", not " + std::to_string(args.size()));
             return false;
         };
-        if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss") {
-            bool isNormal = name == "normal" || name == "gauss";
+        if (m_scope.macros) {
+            if (auto it = m_scope.macros->find(name); it != m_scope.macros->end()) {
+                if (!arity(it->second.params.size())) return makeConst(0);
+                if (m_macroDepth >= 16) {
+                    fail(start, "'#define " + name + "' expands into itself too deeply (more than 16 levels)");
+                    return makeConst(0);
+                }
+                m_callStart = start;
+                return expandMacro(name, it->second, args, depth);
+            }
+        }
+        // cpfg's names: ran(x) is uniform in [0, x), nran(mean, sigma) normal, random(a, b) uniform.
+        if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss" || name == "ran" ||
+            name == "nran" || name == "random") {
+            bool isNormal = name == "normal" || name == "gauss" || name == "nran";
             if (!isNormal && args.empty()) {
                 args.push_back(makeConst(0));
                 args.push_back(makeConst(1));
@@ -444,6 +497,11 @@ private:
     const SourceLine& m_line;
     const ExprScope& m_scope;
     DiagnosticSink& m_sink;
+    ExprCompiler* m_parent = nullptr;  // set while compiling a macro body
+    std::string m_macroName;
+    size_t m_reportAt = 0, m_callStart = 0;
+    int m_macroDepth = 0;
+    std::unordered_map<std::string, const Node*> m_args;  // macro parameters -> argument trees
     size_t m_pos = 0;
     bool m_failed = false;
     int m_nodes = 0;
@@ -479,7 +537,7 @@ std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, c
 }
 
 std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss"};
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random"};
     for (auto& f : kFunctions1) names.push_back(f.name);
     for (auto& f : kFunctions2) names.push_back(f.name);
     return names;

@@ -76,9 +76,17 @@ private:
     std::vector<Instr> m_code;
 };
 
+// A function-like cpfg `#define in(x, y) (x > 0 && y > 0)`: its body is compiled at each
+// use with the arguments in place of its parameters (as the C preprocessor would).
+struct ExprMacro {
+    std::vector<std::string> params;
+    std::string body;
+};
+
 struct ExprScope {
     const std::vector<std::string>* params = nullptr;  // slot i is named params[i]
     const std::unordered_map<std::string, double>* defines = nullptr;
+    const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
 };
 
 // Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.

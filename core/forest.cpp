@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/file_kind.hpp"
 #include "core/turtle.hpp"
 
 namespace sprout {
@@ -111,7 +112,7 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             error = "no preset or file named '" + name + "'";
             return nullptr;
         }
-        ParseResult r = parse(*text);
+        ParseResult r = parseDetected(*text);  // a species may be a cpfg-family file
         if (!r.ok()) {
             error = name + ": " + formatDiagnostic(r.diagnostics.front(), name);
             return nullptr;

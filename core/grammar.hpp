@@ -3,6 +3,8 @@
 // the directives' values. Produced by parse(), read by derive() and the turtle.
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -52,6 +54,15 @@ struct PatternModule {
     std::uint16_t firstSlot = 0;  // where this module's parameters are bound
 };
 
+// A cpfg statement in a production's block: `x = expr;` or `if (c) ... else ...`. Locals
+// are slots after the formal parameters, so the condition and successor read them.
+struct Statement {
+    enum class Kind : std::uint8_t { Assign, If } kind = Kind::Assign;
+    std::uint16_t slot = 0;      // Assign: where the value goes
+    Expr expr;                   // Assign: the value; If: the test
+    std::vector<Statement> then, otherwise;
+};
+
 struct Successor {
     std::vector<SymbolId> symbols;
     std::vector<Expr> args;  // one per parameter, in string order
@@ -64,11 +75,14 @@ struct Production {
     PatternModule pred;
     std::vector<PatternModule> right;  // in text order
     std::optional<Expr> condition;
+    std::vector<Statement> pre, post;  // cpfg blocks: before the condition, after it holds
+    std::uint16_t firstLocal = 0;      // slots from here to slotCount are the blocks' locals
     Successor successor;
     double probability = -1;  // < 0: deterministic
     int slotCount = 0;        // formal parameters across left, pred and right
     bool hasContext() const { return !left.empty() || !right.empty(); }
     bool stochastic() const { return probability >= 0; }
+    bool hasBlocks() const { return !pre.empty() || !post.empty(); }
 };
 
 struct RuleSet {
@@ -82,6 +96,12 @@ struct Grammar {
     ModuleString axiom;
     RuleSet rules;           // derivation productions
     RuleSet interpretation;  // cpfg homomorphism: applied when drawing, never stored
+    RuleSet decomposition;   // cpfg decomposition: applied after each step until none applies
+    int interpretationDepth = 1;  // `maximum depth:` of the homomorphism (recursion levels)
+    int decompositionDepth = 32;  // `maximum depth:` of the decomposition
+    // cpfg's cut: a '%' stays in the string of the step that made it and removes the rest of
+    // its branch while the next step is derived. In .lsys it cuts at once (ABOP 1.10.3).
+    bool cutInNextStep = false;
     Settings settings;
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;
@@ -91,6 +111,9 @@ struct Grammar {
     bool hasContext() const;
     bool stochastic() const;
     bool usesCut() const;
+    bool hasQueries() const;        // ?P ?H ?U ?L modules: the string is interpreted after each step
+    // Anything the D0L fast path cannot do: decomposition, queries, statement blocks.
+    bool needsGeneralEngine() const;
 };
 
 struct ParseResult {
@@ -99,6 +122,20 @@ struct ParseResult {
     bool ok() const { return grammar != nullptr; }
 };
 
+// Reads the file named by an `#include` (cpfg family): its text, or nullopt with `error` set.
+using IncludeReader = std::function<std::optional<std::string>(const std::string& name, std::string& error)>;
+
+struct ParseOptions {
+    bool cpfg = false;       // the cpfg / lpfg / L-Py family instead of .lsys
+    IncludeReader include;   // null: `#include` is an error (text typed with no folder)
+    std::string fileName;    // the grammar's own name, so that it cannot include itself
+};
+
 ParseResult parse(std::string_view text);
+ParseResult parse(std::string_view text, const ParseOptions& options);
+
+// Reads files for `#include` from `folder` only: a name that leads outside it (`..`, an
+// absolute path, a symbolic link out) is refused with a message.
+IncludeReader includeFromFolder(std::string folder);
 
 }  // namespace sprout

@@ -18,13 +18,14 @@ size_t utf8Length(unsigned char c) {
     return 1;
 }
 
-// Position of the first `token` outside parentheses, or npos.
-size_t findTopLevel(std::string_view s, std::string_view token, size_t from = 0) {
+// Position of the first `token` outside parentheses (and, with `braces`, outside cpfg's
+// statement blocks `{ }`), or npos.
+size_t findTopLevel(std::string_view s, std::string_view token, size_t from = 0, bool braces = false) {
     int depth = 0;
     for (size_t i = from; i < s.size(); ++i) {
         char c = s[i];
-        if (c == '(') ++depth;
-        else if (c == ')') depth = std::max(0, depth - 1);
+        if (c == '(' || (braces && c == '{')) ++depth;
+        else if (c == ')' || (braces && c == '}')) depth = std::max(0, depth - 1);
         else if (depth == 0 && s.substr(i, token.size()) == token) return i;
     }
     return std::string_view::npos;
@@ -71,12 +72,14 @@ void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& r
 
 }  // namespace
 
-Parser::Parser(std::string_view text) {
+Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(options.cpfg), m_options(options) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
     m_text = std::string(text);
     m_original = m_text;
-    // The turtle's multi-letter modules (cpfg's predefined surfaces and ABOP's sphere).
-    m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T"};
+    // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
+    // generalized cylinders and query modules; the Lparser extensions).
+    m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T",
+                     "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L"};
     std::stable_sort(m_moduleNames.begin(), m_moduleNames.end(),
                      [](const std::string& a, const std::string& b) { return a.size() > b.size(); });
 }
@@ -177,7 +180,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
 }
 
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
-    ExprScope scope{nullptr, &m_g.defines};
+    ExprScope scope{nullptr, &m_g.defines, &m_macros};
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     double v;
@@ -391,7 +394,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
                             const std::vector<std::string>& params, Successor& out, int net) {
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
-    ExprScope scope{&params, &m_g.defines};
+    ExprScope scope{&params, &m_g.defines, &m_macros};
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -406,22 +409,22 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
     return ok;
 }
 
-void Parser::parseRule(const SourceLine& line, bool interpretation) {
+void Parser::parseRule(const SourceLine& line, Section section) {
     std::string_view text = line.text;
-    size_t arrow = findTopLevel(text, "->");
+    size_t arrow = findTopLevel(text, "->", 0, m_cpfg);
     size_t arrowEnd = arrow + 2;
     if (arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's -->
     std::string_view head = text.substr(0, arrow);
     std::string_view tail = text.substr(arrowEnd);
 
     // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF".
-    size_t colon = findTopLevel(head, ":");
+    size_t colon = findTopLevel(head, ":", 0, m_cpfg);
     if (colon != std::string_view::npos) {
         std::string_view label = trim(head.substr(0, colon));
         if (label.size() >= 2 && label[0] == 'p' &&
             std::all_of(label.begin() + 1, label.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
             head = head.substr(colon + 1);
-            colon = findTopLevel(head, ":");
+            colon = findTopLevel(head, ":", 0, m_cpfg);
         }
     }
     std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
@@ -487,10 +490,39 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
     };
     if (onlyWildcards(prod.left)) prod.left.clear();
     if (onlyWildcards(prod.right)) prod.right.clear();
+    // cpfg: `pred : {pre} condition {post} --> succ`, `*` for no condition. Names assigned
+    // in the blocks are the production's locals, in slots after its formal parameters.
+    std::string_view preBlock, postBlock;
+    if (m_cpfg && colon != std::string_view::npos) {
+        if (!splitCpfgCondition(line, condition, preBlock, condition, postBlock)) return;
+        if (trim(condition) == "*" || (trim(condition).empty() && (!preBlock.empty() || !postBlock.empty())))
+            condition = {};
+        if (condition.empty()) colon = std::string_view::npos;
+    }
+    prod.firstLocal = std::uint16_t(params.size());
+    if (!preBlock.empty() || !postBlock.empty()) {
+        std::vector<std::string> assigned;
+        collectAssigned(preBlock, assigned);
+        collectAssigned(postBlock, assigned);
+        for (const auto& name : assigned) {
+            if (m_g.defines.count(name)) {
+                m_sink.error(line, line.text.substr(size_t(preBlock.data() - line.text.data())),
+                             "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
+                return;
+            }
+            if (std::find(params.begin(), params.end(), name) == params.end()) params.push_back(name);
+        }
+        if (params.size() > 255) {
+            m_sink.error(line, preBlock, "too many parameters and local variables in one production (the limit is 255)");
+            return;
+        }
+    }
     prod.slotCount = int(params.size());
 
-    ExprScope scope{&params, &m_g.defines};
+    ExprScope scope{&params, &m_g.defines, &m_macros};
     bool ok = true;
+    if (!preBlock.empty() && !parseBlock(line, preBlock, params, prod.pre)) return;
+    if (!postBlock.empty() && !parseBlock(line, postBlock, params, prod.post)) return;
     if (colon != std::string_view::npos) {
         if (trim(condition).empty()) {
             m_sink.error(line, condition, "expected a condition after ':' (e.g. 'A(t) : t > 1 -> F')");
@@ -520,12 +552,20 @@ void Parser::parseRule(const SourceLine& line, bool interpretation) {
         m_sink.error(line, succText.substr(extra), "a second ':' after '->': a rule has at most one probability");
         return;
     }
+    if (m_cpfg && trim(succText) == "*") succText = {};  // cpfg's empty successor
+    if (section == Section::Decomposition && prod.hasContext()) {
+        m_sink.error(line, patterns, "decomposition rules are context-free: move the context to a production");
+        return;
+    }
     int net = prod.pred.symbol == Alphabet::kPush ? 1 : prod.pred.symbol == Alphabet::kPop ? -1 : 0;
     if (!parseSuccessor(line, succText, params, prod.successor, net) || !ok) return;
-    (interpretation ? m_g.interpretation : m_g.rules).productions.push_back(std::move(prod));
+    RuleSet& target = section == Section::Interpretation   ? m_g.interpretation
+                      : section == Section::Decomposition ? m_g.decomposition
+                                                          : m_g.rules;
+    target.productions.push_back(std::move(prod));
 }
 
-void Parser::classify(Line& l, bool& inInterpretation) {
+void Parser::classify(Line& l, Section& section) {
     std::string_view t = trim(l.src.text);
     if (t.empty()) return;
     // cpfg's preprocessor-style directives, before '#' comments.
@@ -542,7 +582,7 @@ void Parser::classify(Line& l, bool& inInterpretation) {
         }
     }
     if (t.starts_with("#") || t.starts_with("//")) return;
-    l.interpretation = inInterpretation;
+    l.section = section;
     if (size_t arrow = findTopLevel(t, "->"); arrow != std::string_view::npos) {
         // "axiom: F -> FF": a setting and a rule run together on one line.
         size_t colon = t.find(':');
@@ -571,7 +611,7 @@ void Parser::classify(Line& l, bool& inInterpretation) {
     if (k == "interpretation" || k == "homomorphism" || k == "productions" || k == "rules" ||
         k == "derivation") {
         if (!value.empty()) m_sink.error(l.src, value, "'" + k + ":' starts a section; put its rules on the next lines");
-        inInterpretation = k == "interpretation" || k == "homomorphism";
+        section = k == "interpretation" || k == "homomorphism" ? Section::Interpretation : Section::Productions;
         return;
     }
     if (key == "\xCF\x89") k = "axiom";
@@ -594,7 +634,7 @@ void Parser::classify(Line& l, bool& inInterpretation) {
 void Parser::lint() {
     // A deterministic context-free rule without a condition always applies, so later rules
     // for the same module are dead: say so rather than leave the user wondering.
-    for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation}) {
+    for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation, &m_g.decomposition}) {
         for (const auto& list : rs->bySymbol) {
             const Production* total = nullptr;
             double probSum = 0;
@@ -640,10 +680,15 @@ void Parser::lint() {
 ParseResult Parser::run() {
     std::vector<std::pair<size_t, const char*>> replaced;
     normalize(m_text, replaced);
+    if (m_cpfg) {
+        m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
+        m_g.cutInNextStep = true;
+        buildCpfgLines();
+    }
     // Split into lines; `original` keeps the typed text for column numbers.
     size_t start = 0;
     int number = 1;
-    while (start <= m_text.size()) {
+    while (!m_cpfg && start <= m_text.size()) {
         size_t end = m_text.find('\n', start);
         if (end == std::string::npos) end = m_text.size();
         Line l;
@@ -656,6 +701,7 @@ ParseResult Parser::run() {
     }
     for (auto [offset, what] : replaced) {
         for (const auto& l : m_lines) {
+            if (l.src.text.data() < m_text.data() || l.src.text.data() > m_text.data() + m_text.size()) continue;
             size_t ls = size_t(l.src.text.data() - m_text.data());
             if (offset >= ls && offset <= ls + l.src.text.size()) {
                 m_sink.warning(l.src, l.src.text.substr(offset - ls), what);
@@ -695,14 +741,20 @@ ParseResult Parser::run() {
             }
         }
     }
-    bool inInterpretation = false;
-    for (auto& l : m_lines) classify(l, inInterpretation);
+    Section section = Section::Productions;
+    bool ended = false;
+    for (auto& l : m_lines) {
+        if (m_cpfg) classifyCpfg(l, section, ended);
+        else classify(l, section);
+    }
     for (int phase = 0; phase <= 2; ++phase) {
         for (auto& l : m_lines) {
-            if (l.kind == Line::DirectiveLine && l.directive->phase == phase)
+            if (l.kind == Line::DirectiveLine && l.directive->phase == phase) {
+                if (m_cpfg) m_depthSection = l.section;
                 l.directive->handler(*this, l.src, l.value);
-            else if (l.kind == Line::Rule && phase == 2)
-                parseRule(l.src, l.interpretation);
+            } else if (l.kind == Line::Rule && phase == 2) {
+                parseRule(l.src, l.section);
+            }
         }
     }
     if (!m_axiomSet && m_sink.errorCount() == 0)
@@ -710,11 +762,21 @@ ParseResult Parser::run() {
 
     m_g.rules.index(m_g.alphabet.size());
     m_g.interpretation.index(m_g.alphabet.size());
+    m_g.decomposition.index(m_g.alphabet.size());
     m_g.ignored.resize(m_g.alphabet.nameCount(), false);
+    if (m_considerSet) {  // cpfg `consider:`: only the listed modules count for contexts
+        m_g.ignored.assign(m_g.alphabet.nameCount(), true);
+        for (NameId n : m_considered) m_g.ignored[n] = false;
+        for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+            const auto& sym = m_g.alphabet[SymbolId(s)];
+            if (sym.name == "[" || sym.name == "]") m_g.ignored[sym.nameId] = false;
+        }
+    }
     lint();
 
     ParseResult result;
     result.diagnostics = std::move(m_sink.all());
+    if (m_cpfg) finishCpfg(result.diagnostics);
     std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
                      [](const Diagnostic& a, const Diagnostic& b) {
                          return a.line != b.line ? a.line < b.line : a.col < b.col;
@@ -726,6 +788,7 @@ ParseResult Parser::run() {
 }  // namespace detail
 
 ParseResult parse(std::string_view text) { return detail::Parser(text).run(); }
+ParseResult parse(std::string_view text, const ParseOptions& options) { return detail::Parser(text, options).run(); }
 
 void RuleSet::index(size_t alphabetSize) {
     bySymbol.assign(alphabetSize, {});
@@ -750,6 +813,20 @@ bool Grammar::hasContext() const {
 bool Grammar::stochastic() const {
     return std::any_of(rules.productions.begin(), rules.productions.end(),
                        [](const Production& p) { return p.stochastic(); });
+}
+
+bool Grammar::hasQueries() const {
+    for (size_t s = 0; s < alphabet.size(); ++s) {
+        const std::string& n = alphabet[SymbolId(s)].name;
+        if (n.size() == 2 && n[0] == '?' && (n[1] == 'P' || n[1] == 'H' || n[1] == 'U' || n[1] == 'L')) return true;
+    }
+    return false;
+}
+
+bool Grammar::needsGeneralEngine() const {
+    if (!decomposition.productions.empty() || hasQueries()) return true;
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.hasBlocks(); });
 }
 
 bool Grammar::usesCut() const {

@@ -1,6 +1,7 @@
 #pragma once
 // Internals of parse(), shared by parser.cpp (lines, rules, module sequences) and
 // directives.cpp (the `key: value` table).
+#include <deque>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -34,7 +35,7 @@ struct RawModule {
 
 class Parser {
 public:
-    explicit Parser(std::string_view text);
+    explicit Parser(std::string_view text, const ParseOptions& options = {});
     ParseResult run();
 
     // Used by directive handlers.
@@ -50,6 +51,11 @@ public:
     void define(const SourceLine& line, std::string_view text);
     void setAxiom(const SourceLine& line, std::string_view text);
     void setIgnore(const SourceLine& line, std::string_view text);
+    void setConsider(const SourceLine& line, std::string_view text);
+    void setMaximumDepth(const SourceLine& line, std::string_view text);
+    bool cpfg() const { return m_cpfg; }
+
+    enum class Section { Productions, Interpretation, Decomposition };
 
 private:
     struct Line {
@@ -57,11 +63,32 @@ private:
         enum Kind { Skip, DirectiveLine, Rule } kind = Skip;
         const Directive* directive = nullptr;
         std::string_view value;
-        bool interpretation = false;  // rule in the interpretation: section
+        Section section = Section::Productions;
+    };
+    // Where the pieces of a cpfg logical line came from: a production joined from several
+    // lines, or a line of an #included file (reported at the #include, naming the file).
+    struct Origin {
+        int logical = 0;                  // the line number the parser used
+        std::vector<std::pair<size_t, int>> pieces;  // byte offset in the joined text -> physical line
+        std::vector<size_t> pieceStart;   // offset of each piece's first byte in its physical line
+        std::string includeName;          // non-empty: the line comes from this included file
+        int includeLine = 0;              // the #include's line in the grammar
     };
 
-    void classify(Line& line, bool& inInterpretation);
-    void parseRule(const SourceLine& line, bool interpretation);
+    void classify(Line& line, Section& section);
+    void parseRule(const SourceLine& line, Section section);
+    // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
+    void buildCpfgLines();
+    bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
+                      std::vector<std::string>& stack);
+    void classifyCpfg(Line& line, Section& section, bool& ended);
+    void finishCpfg(std::vector<Diagnostic>& diags);
+    // Statement blocks (core/cpfg/statements.cpp).
+    bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
+                    std::vector<Statement>& out);
+    void collectAssigned(std::string_view text, std::vector<std::string>& names);
+    bool splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
+                            std::string_view& condition, std::string_view& post);
     bool parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
                       bool allowWildcard, std::vector<std::string>& params,
                       std::vector<PatternModule>& out);
@@ -82,6 +109,16 @@ private:
     std::optional<Rng> m_rng;  // rand() outside rules
     bool m_axiomSet = false;
     int m_axiomLine = 0;
+
+    bool m_cpfg = false;
+    ParseOptions m_options;
+    std::deque<std::string> m_store;  // texts the cpfg lines view into (joined, included, expanded)
+    std::vector<Origin> m_origins;
+    std::unordered_map<std::string, ExprMacro> m_macros;          // function-like #define
+    std::vector<std::pair<std::string, std::string>> m_textMacros;  // #define NAME text (not a number)
+    Section m_depthSection = Section::Productions;  // where `maximum depth:` applies (cpfg)
+    bool m_considerSet = false;
+    std::vector<NameId> m_considered;
 };
 
 }  // namespace sprout::detail

@@ -33,6 +33,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     }
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
+    if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
     for (const Production& p : rules.productions) {
         int keep = -1;
         for (size_t j = 0; j < p.successor.symbols.size() && keep < 0; ++j)
@@ -43,7 +44,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     for (size_t s = 0; s < A; ++s) {
         if (!m_hasRules[s]) continue;
         const Production& first = rules.productions[rules.bySymbol[s].front()];
-        if (!first.hasContext() && !first.condition && !first.stochastic()) m_always[s] = &first;
+        if (!first.hasContext() && !first.condition && !first.stochastic() && !first.hasBlocks()) m_always[s] = &first;
     }
 }
 
@@ -176,8 +177,21 @@ bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
                     size_t(p.pred.arity) * sizeof(double));
     if (!p.left.empty() && !matchLeft(p, i)) return false;
     if (!p.right.empty() && !matchRight(p, i)) return false;
+    // cpfg blocks: locals start at 0 each time; the pre-condition block runs before the
+    // condition, the post-condition block only when it holds.
+    for (int k = p.firstLocal; k < p.slotCount; ++k) m_slots[size_t(k)] = 0;
+    if (!p.pre.empty()) runStatements(p.pre, m_slots.data(), rng);
     if (p.condition && p.condition->eval(m_slots.data(), rng) == 0) return false;
+    if (!p.post.empty()) runStatements(p.post, m_slots.data(), rng);
     return true;
+}
+
+void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng) {
+    for (const Statement& s : block) {
+        if (s.kind == Statement::Kind::Assign) slots[s.slot] = s.expr.eval(slots, rng);
+        else if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);
+        else runStatements(s.otherwise, slots, rng);
+    }
 }
 
 const Production* StepRewriter::select(size_t i, Rng& rng) {

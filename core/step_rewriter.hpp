@@ -64,6 +64,9 @@ private:
     std::vector<std::uint32_t> m_candidates;
 };
 
+// Runs a cpfg statement block over a production's slots (parameters and locals).
+void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng);
+
 // Removes each cut symbol '%' together with the rest of its branch (ABOP section 1.10.3,
 // used for shedding): everything up to, not including, the ']' that closes the branch.
 void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages = nullptr);

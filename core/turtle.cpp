@@ -20,6 +20,7 @@ enum class Act : std::uint8_t {
     None, Draw, DrawNoVertex, Move, MoveNoVertex, Left, Right, Down, Up, RollLeft, RollRight,
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
+    Query, MoveTo, SetHeading, Disc,
 };
 
 Act actionOf(const std::string& name) {
@@ -35,6 +36,10 @@ Act actionOf(const std::string& name) {
         // Extensions for imported grammars (Lparser): scale the step, the angle, the width
         // by a factor; bend towards gravity now (Lparser's t).
         {"@L", Act::ScaleLength}, {"@A", Act::ScaleAngle}, {"@W", Act::ScaleWidth}, {"@T", Act::Gravity},
+        // cpfg: query modules (the turtle's frame is written back into them after each
+        // step), move to a point, set the heading, roll L horizontal, a disc.
+        {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query},
+        {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;
@@ -313,7 +318,7 @@ private:
             if constexpr (Parametric) {
                 if (arity && !finite(p, arity)) continue;  // NaN or infinity: skip, never draw garbage
             }
-            apply(t, act, arity ? p : nullptr, i);
+            apply(t, act, arity ? p : nullptr, i, arity);
         }
         m_state = t;
         m_seg->finish();
@@ -664,7 +669,7 @@ private:
         m_max = __builtin_ia32_maxps(m_max, p);
     }
 
-    [[gnu::always_inline]] inline void apply(State& t, Act act, const double* p, size_t i) {
+    [[gnu::always_inline]] inline void apply(State& t, Act act, const double* p, size_t i, int arity = 1) {
         switch (act) {
             case Act::Draw:
             case Act::DrawNoVertex: {
@@ -769,8 +774,56 @@ private:
             case Act::Leaf:
             case Act::Petal:
             case Act::Sphere: surface(t, act, p, growth(i)); break;
+            case Act::Query:
+                if (m_opt.queries) m_opt.queries->push_back({toGlm(t.pos), toGlm(t.H), toGlm(up(t)), toGlm(t.L)});
+                break;
+            case Act::MoveTo:
+            case Act::SetHeading:
+            case Act::Disc: cpfgCommand(t, act, p, arity); break;
             default: break;
         }
+    }
+
+    // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
+    [[gnu::noinline]] void cpfgCommand(State& t, Act act, const double* p, int arity) {
+        if (act == Act::MoveTo) {
+            if (!p || arity < 3) return;
+            t.pos = v4{float(p[0]), float(p[1]), float(p[2]), 0};
+            t.lastSegment = -1;  // the next segment starts a new stem there
+            addBound(t.pos);
+            if (!m_polygons.empty()) vertex(t);
+            return;
+        }
+        if (act == Act::SetHeading) {
+            if (!p || arity < 3) return;
+            glm::vec3 h{float(p[0]), float(p[1]), float(p[2])};
+            if (!(glm::length(h) > 1e-12f)) return;
+            h = glm::normalize(h);
+            glm::vec3 l = toGlm(t.L);
+            if (arity >= 6) {  // with an up vector: L = U x H
+                glm::vec3 u{float(p[3]), float(p[4]), float(p[5])};
+                l = glm::cross(u, h);
+            } else {           // keep the left vector as near as it was
+                l -= glm::dot(l, h) * h;
+            }
+            if (!(glm::length(l) > 1e-6f)) {
+                l = glm::cross(std::fabs(h.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), h);
+            }
+            t.H = fromGlm(h);
+            t.L = fromGlm(glm::normalize(l));
+            return;
+        }
+        // @c(r): a disc of radius r across the heading, as a 24-sided polygon.
+        const float r = p ? float(p[0]) : t.width * 0.5f;
+        if (!(r > 0)) return;
+        const glm::vec3 c = toGlm(t.pos), l = toGlm(t.L), u = toGlm(up(t));
+        std::vector<glm::vec3> pts;
+        for (int k = 0; k < 24; ++k) {
+            const float a = 2 * kPi * float(k) / 24;
+            pts.push_back(c + r * (std::cos(a) * l + std::sin(a) * u));
+            addBound(fromGlm(pts.back()));
+        }
+        emitPolygon(t, pts);
     }
 
     // The colour of a stem: the palette entry set by ; , ', else the branch order's gradient

@@ -7,12 +7,18 @@
 // & ^ pitch about L; \ / roll about H; | turn around; $ roll L horizontal; [ ] push/pop;
 // { . } polygon; ! # width; ; , ' colour; ~leaf ~petal (~l ~p) surfaces; @O(r) sphere.
 #include <cstdint>
+#include <vector>
 #include <glm/vec3.hpp>
 
 #include "core/geometry.hpp"
 #include "core/grammar.hpp"
 
 namespace sprout {
+
+// The turtle's frame where it met a query module (?P ?H ?U ?L), in drawing order.
+struct QueryFrame {
+    glm::vec3 position, heading, up, left;
+};
 
 struct TurtleOptions {
     int derivationSteps = 0;            // n of the drawn string, for step_scale
@@ -29,6 +35,7 @@ struct TurtleOptions {
     // always reads the string (tests compare the two).
     bool fromTree = true;
     std::size_t treeMinModules = 1 << 15;  // shorter strings are read: blocks would not pay
+    std::vector<QueryFrame>* queries = nullptr;  // when set, receives the frame at each query module
 };
 
 struct TurtleStats {

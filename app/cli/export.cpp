@@ -38,13 +38,12 @@ int runExport(int argc, char** argv) {
     Geometry geometry;
     DeriveLimits limits;
     if (maxModules) limits.maxModules = std::uint64_t(*maxModules);
-    const auto scenes = scenePresetNames();
-    const std::string kind = pngKind(source);  // a picture written by Sprout holds what it shows
-    if (source.ends_with(".ifs") || isIfsPreset(source) || kind == "ifs") {
+    const FileKind kind = sourceKind(source);  // a picture written by Sprout holds what it shows
+    if (kind == FileKind::Ifs) {
         std::cerr << source << ": an iterated function system is a point density, not a model; "
                      "`sprout render` draws it as a picture\n";
         return 1;
-    } else if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end() || kind == "forest") {
+    } else if (kind == FileKind::Forest) {
         ForestStats fs;
         std::string text;
         if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text))

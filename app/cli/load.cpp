@@ -31,17 +31,21 @@ std::optional<std::string> readFile(const std::string& path, std::string& error)
 
 }  // namespace
 
-std::string pngKind(const std::string& path) {
-    if (!path.ends_with(".png")) return "";
-    std::string error;
-    auto bytes = readFile(path, error);
-    if (!bytes) return "";
-    ImportResult r = importPng(*bytes);
-    return r.ok() ? r.kind : "";
+FileKind sourceKind(const std::string& source) {
+    struct stat st{};
+    if (source != "-" && ::stat(source.c_str(), &st) == 0) {
+        std::string error;
+        auto bytes = readFile(source, error);
+        if (!bytes) return FileKind::Lsys;  // loadGrammar says why
+        ImportResult r = importFile(source, *bytes);
+        return r.ok() ? r.kind : FileKind::Lsys;
+    }
+    if (auto preset = presetText(source)) return detectFileKind("", *preset);
+    return FileKind::Lsys;
 }
 
 std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
-    std::string text, error;
+    std::string text, error, includePath;
     LoadedGrammar out;
     out.displayName = source;
     struct stat st{};
@@ -59,33 +63,38 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
     if (source == "-") {
         text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
         out.displayName = "<stdin>";
+        out.kind = detectFileKind("", text);
     } else if (::stat(path.c_str(), &st) == 0) {
         auto t = readFile(path, error);
         if (!t) {
             std::cerr << path << ": " << error << "\n";
             return std::nullopt;
         }
-        // Lparser .ls and Fractint .l files are translated to .lsys first.
-        ImportResult imported = importByExtension(path, *t, system);
+        // What the file is, from its content: Lparser .ls and Fractint .l files are
+        // translated to .lsys; cpfg-family files are read as they are written.
+        ImportResult imported = importFile(path, *t, system);
         for (const auto& d : imported.diagnostics) std::cerr << formatDiagnostic(d, path) << "\n";
         if (!imported.ok()) return std::nullopt;
-        if (imported.kind != "lsys") {
-            std::cerr << path << ": holds " << (imported.kind == "ifs" ? "an iterated function system" : "a forest scene")
+        if (imported.kind == FileKind::Ifs || imported.kind == FileKind::Forest) {
+            std::cerr << path << ": holds " << (imported.kind == FileKind::Ifs ? "an iterated function system" : "a forest scene")
                       << ", not one grammar: `sprout render` draws it\n";
             return std::nullopt;
         }
         if (imported.text != *t) out.displayName = path + " (as .lsys)";
         text = std::move(imported.text);
+        out.kind = imported.kind;
+        if (imported.source != FileKind::Png) includePath = path;
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
-        out.displayName = std::string(source) + (source.ends_with(".lsys") ? "" : ".lsys");
+        out.kind = detectFileKind("", text);
+        out.displayName = std::string(source) + (source.find('.') != std::string::npos ? "" : out.kind == FileKind::Cpfg ? ".l" : ".lsys");
     } else {
         std::cerr << source << ": no such file or preset; presets are:";
         for (const auto& n : presetNames()) std::cerr << " " << n;
         std::cerr << "\n";
         return std::nullopt;
     }
-    ParseResult r = parse(text);
+    ParseResult r = parse(text, parseOptionsFor(out.kind, includePath));
     for (const auto& d : r.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
     if (!r.ok()) return std::nullopt;
     out.grammar = r.grammar;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/derive.hpp"
+#include "core/file_kind.hpp"
 #include "core/forest.hpp"
 #include "core/grammar.hpp"
 
@@ -13,14 +14,16 @@ struct LoadedGrammar {
     std::string displayName;  // used in FILE:line:col messages
     std::string text;         // the grammar as written
     std::shared_ptr<const Grammar> grammar;
+    FileKind kind = FileKind::Lsys;  // of `text`: Lsys or Cpfg
 };
 
 // Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors
 // or cannot be read.
 std::optional<LoadedGrammar> loadGrammar(const std::string& source);
 
-// What a PNG written by Sprout holds: "lsys", "ifs" or "forest"; empty for any other file.
-std::string pngKind(const std::string& path);
+// What a source (file, PNG written by Sprout, preset or "-") holds, by detectFileKind():
+// Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).
+FileKind sourceKind(const std::string& source);
 
 // A forest scene (.forest file or scene preset) built into one geometry; `text` is the
 // scene as written. Prints diagnostics; false when it cannot be built.

@@ -63,14 +63,12 @@ bool parsePoint(const std::optional<std::string>& s, std::optional<glm::vec3>& o
     return true;
 }
 
-bool isPng(const std::string& path) { return path.size() > 4 && path.substr(path.size() - 4) == ".png"; }
-
 // The text of a file, or of the chunk `key` when it is a PNG written by Sprout.
 std::optional<std::string> readSource(const std::string& path, const char* key) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
     std::string text(std::istreambuf_iterator<char>(in), {});
-    if (!isPng(path)) return text;
+    if (detectFileKind(path, text) != FileKind::Png) return text;
     std::string error;
     return pngTextChunk(text, key, error);
 }
@@ -237,12 +235,9 @@ int runRender(int argc, char** argv) {
         }
     }
     // A PNG of an IFS or a forest scene is rendered as what it holds.
-    const std::string kind = pngKind(source);
-    const bool ifsPng = kind == "ifs", forestPng = kind == "forest";
-    if (source.ends_with(".ifs") || isIfsPreset(source) || ifsPng) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
-    const auto scenes = scenePresetNames();
-    if (source.ends_with(".forest") || std::find(scenes.begin(), scenes.end(), source) != scenes.end() || forestPng)
-        return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
+    const FileKind kind = sourceKind(source);
+    if (kind == FileKind::Ifs) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
+    if (kind == FileKind::Forest) return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
     auto loaded = loadGrammar(source);
     if (!loaded) return 1;
     if (n) o.iterations = int(*n);

@@ -1,5 +1,6 @@
 #include "app/viewer/text_edit.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -30,10 +31,30 @@ std::string_view trimLeft(std::string_view s) {
     return s;
 }
 
-// The offset of the value after "key:" on this line, or npos.
+bool startsWithNoCase(std::string_view s, std::string_view prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (size_t i = 0; i < prefix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(s[i])) != std::tolower(static_cast<unsigned char>(prefix[i]))) return false;
+    return true;
+}
+
+// The offset of the value after "key:" on this line (any case: cpfg writes `Axiom:`), or npos.
+// `n` is also `iterations` and cpfg's `derivation length`.
 size_t valueStart(std::string_view line, std::string_view key) {
+    if (key == "n" || key == "iterations") {
+        for (std::string_view alias : {"n", "iterations", "derivation length"}) {
+            std::string_view t = trimLeft(line);
+            if (!startsWithNoCase(t, alias)) continue;
+            std::string_view rest = trimLeft(t.substr(alias.size()));
+            if (!rest.starts_with(":") || line.find("->") != std::string_view::npos) continue;
+            size_t off = size_t(rest.data() - line.data()) + 1;
+            while (off < line.size() && line[off] == ' ') ++off;
+            return off;
+        }
+        return std::string_view::npos;
+    }
     std::string_view t = trimLeft(line);
-    if (!t.starts_with(key)) return std::string_view::npos;
+    if (!startsWithNoCase(t, key)) return std::string_view::npos;
     std::string_view rest = trimLeft(t.substr(key.size()));
     if (!rest.starts_with(":") || line.find("->") != std::string_view::npos) return std::string_view::npos;
     size_t off = size_t(rest.data() - line.data()) + 1;
@@ -72,6 +93,9 @@ std::string setDirective(std::string_view text, std::string_view key, std::strin
         size_t tilde = old.find('~');
         std::string keep = tilde == std::string_view::npos ? "" : " " + std::string(old.substr(tilde));
         if (tilde == std::string_view::npos && old.ends_with('\r')) keep = "\r";
+        // A comment after the value stays (cpfg: `derivation length: 5 /* steps */`).
+        if (size_t c = std::min(old.find("/*"), old.find("//")); c != std::string_view::npos && tilde == std::string_view::npos)
+            keep = " " + std::string(old.substr(c));
         std::string out(text.substr(0, l.begin + v));
         out += value;
         out += keep;
@@ -106,6 +130,12 @@ std::string setDefine(std::string_view text, std::string_view name, std::string_
         while (valueAt < line.size() && line[valueAt] == ' ') ++valueAt;
         std::string out(text.substr(0, l.begin + valueAt));
         out += value;
+        // A comment after the value stays (`#define R 1.5 /* ratio */`).
+        std::string_view old = line.substr(valueAt);
+        if (size_t c = std::min(old.find("/*"), old.find("//")); c != std::string_view::npos)
+            out += " " + std::string(old.substr(c));
+        else if (old.ends_with('\r'))
+            out += "\r";
         out += text.substr(l.end);
         return out;
     }

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "app/viewer/text_edit.hpp"
 #include "core/import/import.hpp"
@@ -87,6 +88,8 @@ ViewerState::~ViewerState() = default;
 void ViewerState::post() {
     Request r;
     r.text = m_text;
+    r.kind = m_kind;
+    r.path = m_path.string();
     r.seed = m_seedOverride;
     r.displayStep = m_displayStep;
     r.trackAges = m_playing && smoothGrowth;
@@ -202,22 +205,25 @@ bool ViewerState::open(const fs::path& path, std::string& error, const std::stri
         error = "cannot open " + path.string() + ": " + std::strerror(errno);
         return false;
     }
-    ImportResult imported = importByExtension(path.string(), *text, system);
+    // One way in (core's importFile): what the file is comes from its content. .lsys and
+    // cpfg-family files open as written and save back in their own syntax; Lparser and
+    // Fractint files open as the .lsys they translate to; a PNG as the text it carries.
+    ImportResult imported = importFile(path.string(), *text, system);
     if (!imported.ok()) {
         const Diagnostic& d = imported.diagnostics.front();
         error = path.string() + ":" + std::to_string(d.line) + ":" + std::to_string(d.col) + ": " + d.message;
         return false;
     }
-    if (imported.text == *text) {
+    if (imported.text == *text && imported.source != FileKind::Png) {
         openText(std::move(*text), path);
-        m_importedFrom.clear();
-        m_importSystems.clear();
+        if (std::exchange(m_kind, imported.kind) != imported.kind) post();
         return true;
     }
-    openText(std::move(imported.text));  // no path: saving asks for a .lsys name
+    openText(std::move(imported.text));  // no path: saving asks for a name
+    if (std::exchange(m_kind, imported.kind) != imported.kind) post();
     m_importedFrom = path;
     m_importSystems.clear();
-    if (path.extension() == ".l" || path.extension() == ".L")
+    if (imported.source == FileKind::Fractint)
         for (const auto& s : listFractint(*text)) m_importSystems.push_back(s.name);
     return true;
 }
@@ -232,6 +238,8 @@ void ViewerState::openText(std::string text, fs::path path, std::string preset) 
     m_displayStep = -1;
     m_seedOverride.reset();
     m_text = std::move(text);
+    m_kind = detectFileKind("", m_text);
+    if (m_kind != FileKind::Ifs && m_kind != FileKind::Forest && m_kind != FileKind::Cpfg) m_kind = FileKind::Lsys;
     m_dirty = false;
     post();
 }

@@ -59,6 +59,7 @@ public:
 
     // --- files
     const std::filesystem::path& path() const { return m_path; }
+    FileKind kind() const { return m_kind; }  // of the text: Lsys, Cpfg, Ifs or Forest
     // Opens a .lsys file, or imports an Lparser .ls / Fractint .l one (`system` picks one
     // of a Fractint file's systems); an import has no path until it is saved as .lsys.
     bool open(const std::filesystem::path& path, std::string& error, const std::string& system = {});
@@ -95,6 +96,7 @@ private:
     float m_growFraction = 1.0f;
     std::shared_ptr<const Result> m_plant, m_latest;
     std::filesystem::path m_path;
+    FileKind m_kind = FileKind::Lsys;
     std::string m_preset;  // the preset opened, until saved under a name
     std::filesystem::path m_importedFrom;
     std::vector<std::string> m_importSystems;

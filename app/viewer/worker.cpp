@@ -71,26 +71,6 @@ void Worker::run() {
     }
 }
 
-namespace {
-
-// An .ifs text: its first line that is not a comment is seven numbers (no '->').
-bool looksLikeIfs(const std::string& text) {
-    std::istringstream in(text);
-    std::string line;
-    while (std::getline(in, line)) {
-        if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
-        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-        if (line.find("->") != std::string::npos) return false;
-        std::istringstream words(line);
-        double v;
-        int n = 0;
-        while (words >> v) ++n;
-        return n == 7;
-    }
-    return false;
-}
-
-}  // namespace
 
 std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<Result> out) {
     ForestParseResult parsed = parseForest(r.text);
@@ -139,13 +119,18 @@ std::shared_ptr<Result> Worker::processIfs(const Request& r, std::shared_ptr<Res
 std::shared_ptr<Result> Worker::process(const Request& r) {
     auto out = std::make_shared<Result>();
     out->generation = r.generation;
-    // Forest scenes and iterated function systems are opened in the same editor.
-    if (isForestScene(r.text)) return processScene(r, out);
-    if (looksLikeIfs(r.text)) return processIfs(r, out);
+    // Forest scenes and iterated function systems are opened in the same editor; what the
+    // text is comes from core's detectFileKind, and a cpfg file stays cpfg while edited.
+    const FileKind detected = detectFileKind("", r.text);
+    const FileKind kind = detected == FileKind::Lsys && r.kind == FileKind::Cpfg ? FileKind::Cpfg : detected;
+    if (kind == FileKind::Forest) return processScene(r, out);
+    if (kind == FileKind::Ifs) return processIfs(r, out);
     auto t0 = std::chrono::steady_clock::now();
-    if (r.text != m_cachedText || !m_cachedGrammar) {
-        ParseResult parsed = parse(r.text);
+    if (r.text != m_cachedText || kind != m_cachedKind || r.path != m_cachedPath || !m_cachedGrammar) {
+        ParseResult parsed = parse(r.text, parseOptionsFor(kind, r.path));
         m_cachedText = r.text;
+        m_cachedKind = kind;
+        m_cachedPath = r.path;
         m_cachedGrammar = parsed.grammar;
         m_cachedDiagnostics = std::move(parsed.diagnostics);
         m_derivation.reset();

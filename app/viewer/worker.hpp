@@ -14,12 +14,15 @@
 #include <vector>
 
 #include "core/derive.hpp"
+#include "core/file_kind.hpp"
 #include "core/turtle.hpp"
 
 namespace sprout::viewer {
 
 struct Request {
     std::string text;
+    FileKind kind = FileKind::Lsys;  // what the open file is (the text is read as cpfg when it says so)
+    std::string path;                // the open file, for cpfg #include; empty when untitled
     std::optional<int> iterations;        // default: the grammar's n
     int displayStep = -1;                 // the step to draw; -1: the last one
     std::optional<std::uint64_t> seed;    // default: the grammar's seed
@@ -93,6 +96,8 @@ private:
     // Derivation cache: re-deriving the same text and seed with another n or display step
     // reuses the steps already made (stepping through iterations costs nothing extra).
     std::string m_cachedText;
+    FileKind m_cachedKind = FileKind::Lsys;
+    std::string m_cachedPath;
     std::uint64_t m_cachedSeed = 0;
     bool m_cachedAges = false;
     std::shared_ptr<const Grammar> m_cachedGrammar;

@@ -189,16 +189,22 @@ ImportResult importFractint(std::string_view source, std::string_view system) {
     return r;
 }
 
-ImportResult importByExtension(std::string_view path, std::string_view source, std::string_view system) {
-    auto ends = [&](std::string_view ext) {
-        return path.size() >= ext.size() && lower(std::string(path.substr(path.size() - ext.size()))) == ext;
-    };
+ImportResult importFile(std::string_view path, std::string_view source, std::string_view system) {
     size_t slash = path.find_last_of('/');
     std::string_view name = slash == std::string_view::npos ? path : path.substr(slash + 1);
-    if (ends(".ls")) return importLparser(source, name);
-    if (ends(".l")) return importFractint(source, system);
-    if (ends(".png")) return importPng(source);
-    return {std::string(source), {}};
+    const FileKind kind = detectFileKind(path, source);
+    ImportResult r;
+    switch (kind) {
+        case FileKind::Lparser: r = importLparser(source, name); break;
+        case FileKind::Fractint: r = importFractint(source, system); break;
+        case FileKind::Png: return importPng(source);
+        default:
+            r.text = std::string(source);
+            r.kind = kind;
+            break;
+    }
+    r.source = kind;
+    return r;
 }
 
 }  // namespace sprout

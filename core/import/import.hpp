@@ -7,13 +7,15 @@
 #include <vector>
 
 #include "core/diagnostic.hpp"
+#include "core/file_kind.hpp"
 
 namespace sprout {
 
 struct ImportResult {
-    std::string text;                      // .lsys (or, from a PNG, the .ifs or .forest it holds)
+    std::string text;                      // the text to edit: .lsys, cpfg as written, .ifs or .forest
     std::vector<Diagnostic> diagnostics;   // problems in the source, with its line numbers
-    std::string kind = "lsys";             // from a PNG: "lsys", "ifs" or "forest"
+    FileKind kind = FileKind::Lsys;        // of `text`: Lsys, Cpfg, Ifs or Forest (never a translated kind)
+    FileKind source = FileKind::Lsys;      // what the file itself was (Lparser, Fractint, Png ...)
     bool ok() const { return !hasErrors(diagnostics); }
 };
 
@@ -37,8 +39,9 @@ ImportResult importPng(std::string_view png);
 // a PNG or is damaged, nullopt with an empty `error` when the chunk is absent.
 std::optional<std::string> pngTextChunk(std::string_view png, std::string_view keyword, std::string& error);
 
-// By file extension: .ls (Lparser), .l (Fractint: `system` picks one, default the first),
-// .png (the grammar inside a Sprout picture), anything else is returned as it is.
-ImportResult importByExtension(std::string_view path, std::string_view source, std::string_view system = {});
+// Any file Sprout opens, by what detectFileKind() says it is: Lparser and Fractint files
+// (`system` picks one, default the first) are translated to .lsys; a PNG gives the text it
+// carries; .lsys, cpfg-family, .ifs and .forest texts are returned as they are written.
+ImportResult importFile(std::string_view path, std::string_view source, std::string_view system = {});
 
 }  // namespace sprout

@@ -54,7 +54,10 @@ ImportResult importPng(std::string_view png) {
     for (const char* key : {"lsys", "ifs", "forest"}) {
         if (auto text = pngTextChunk(png, key, error)) {
             r.text = std::move(*text);
-            r.kind = key;
+            r.source = FileKind::Png;
+            r.kind = std::string_view(key) == "ifs"      ? FileKind::Ifs
+                     : std::string_view(key) == "forest" ? FileKind::Forest
+                                                         : detectFileKind("", r.text);  // .lsys or cpfg
             return r;
         }
         if (!error.empty()) break;

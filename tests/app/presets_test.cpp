@@ -3,6 +3,7 @@
 
 #include "app/presets.hpp"
 #include "core/d0l.hpp"
+#include "core/file_kind.hpp"
 #include "core/derive.hpp"
 #include "core/turtle.hpp"
 #include "tests/core/same_drawing.hpp"
@@ -15,7 +16,7 @@ TEST(Presets, EveryPresetParsesWithoutWarningsAndDerives) {
     for (const auto& name : presetNames()) {
         auto text = presetText(name);
         ASSERT_TRUE(text) << name;
-        ParseResult r = parse(*text);
+        ParseResult r = parseDetected(*text);
         for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, name + ".lsys");
         ASSERT_TRUE(r.ok()) << name;
         EXPECT_TRUE(text->starts_with("#")) << name << " should start with a comment naming its source";
@@ -30,7 +31,7 @@ TEST(Presets, EveryPresetParsesWithoutWarningsAndDerives) {
 TEST(Presets, D0LPresetsDrawTheSameFromTheirDerivationTree) {
     int fromTree = 0;
     for (const auto& name : presetNames()) {
-        ParseResult r = parse(*presetText(name));
+        ParseResult r = parseDetected(*presetText(name));
         if (!r.ok() || !D0LExpander::applicable(*r.grammar)) continue;
         Derivation d(r.grammar);
         int n = r.grammar->settings.iterations;

@@ -9,6 +9,7 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
+#include "core/file_kind.hpp"
 #include "core/forest.hpp"
 #include "core/ifs.hpp"
 
@@ -18,7 +19,7 @@ namespace {
 constexpr int kW = 320, kH = 180;
 
 std::shared_ptr<const Grammar> grammarOf(std::string_view text) {
-    ParseResult r = parse(text);
+    ParseResult r = parseDetected(text);
     for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, "<test>");
     return r.grammar;
 }

@@ -1,0 +1,134 @@
+// tests/cpfg: small cpfg / L-Py family files written for Sprout, each carrying what it must
+// give in comment lines:
+//   // expect N: STRING     step N as `sprout expand` prints it, character by character
+//   // draws N: STRING      step N after the homomorphism: what the turtle draws
+//   // warning L: MESSAGE   a warning on line L (every warning must be listed)
+//   // n: N                 the derivation length the file sets
+// Every file must be recognised as the cpfg family by its content, not its name.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+
+#include "core/derive.hpp"
+#include "core/file_kind.hpp"
+#include "core/turtle.hpp"
+
+namespace sprout {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::vector<fs::path> cpfgFiles() {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::directory_iterator(SPROUT_CPFG_DIR))
+        if (e.path().extension() == ".l" || e.path().extension() == ".lpy") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST(Cpfg, EveryFileDerivesWhatItSays) {
+    const auto files = cpfgFiles();
+    ASSERT_GE(files.size(), 40u) << "tests/cpfg holds the cpfg-family test files";
+    const std::regex expectLine(R"(^// (expect|draws) (\d+): (.*)$)"), warningLine(R"(^// warning (\d+): (.*)$)"),
+        nLine(R"(^// n: (\d+)$)");
+    int checked = 0;
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.filename().string());
+        const std::string text = slurp(path);
+        ASSERT_EQ(detectFileKind(path.string(), text), FileKind::Cpfg);
+        ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, path.string()));
+        std::set<std::string> warnings;
+        for (const auto& d : r.diagnostics) {
+            if (d.severity == Severity::Error) ADD_FAILURE() << formatDiagnostic(d, path.filename().string());
+            else warnings.insert(std::to_string(d.line) + ": " + d.message);
+        }
+        ASSERT_TRUE(r.ok());
+        std::set<std::string> expectedWarnings;
+        std::istringstream lines(text);
+        bool any = false;
+        for (std::string line; std::getline(lines, line);) {
+            std::smatch m;
+            if (std::regex_match(line, m, warningLine)) {
+                expectedWarnings.insert(m[1].str() + ": " + m[2].str());
+            } else if (std::regex_match(line, m, nLine)) {
+                EXPECT_EQ(r.grammar->settings.iterations, std::stoi(m[1].str()));
+            } else if (std::regex_match(line, m, expectLine)) {
+                const int n = std::stoi(m[2].str());
+                DeriveResult d = derive(r.grammar, n);
+                ASSERT_TRUE(d.outcome.ok()) << d.outcome.message;
+                const ModuleString shown = m[1] == "draws" ? applyInterpretation(*r.grammar, *d.string, r.grammar->settings.seed)
+                                                           : *d.string;
+                EXPECT_EQ(toString(shown, r.grammar->alphabet), m[3].str()) << m[1] << " " << n;
+                any = true;
+                ++checked;
+            }
+        }
+        EXPECT_TRUE(any) << "no '// expect N: STRING' line";
+        EXPECT_EQ(warnings, expectedWarnings);
+    }
+    EXPECT_GE(checked, 80);
+}
+
+// The turtle additions draw what they say.
+TEST(Cpfg, DiscIsAPolygonAcrossTheHeading) {
+    ParseResult r = parse("Axiom: F(2) @c(0.8)\nderivation length: 0\n", parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_EQ(g.polygons.positions.size(), 24u);
+    for (const auto& p : g.polygons.positions) {
+        EXPECT_NEAR(p.y, 2.0f, 1e-5f);  // across the heading (+Y), at the turtle
+        EXPECT_NEAR(std::hypot(p.x, p.z), 0.8f, 1e-5f);
+    }
+}
+
+TEST(Cpfg, MoveToStartsANewStemThere) {
+    ParseResult r = parse("Axiom: F(1) @M(5,0,0) F(1)\nderivation length: 0\n", parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_EQ(g.cylinders.size(), 2u);
+    EXPECT_NEAR(g.cylinders[1].start.x, 5.0f, 1e-6f);
+    EXPECT_NEAR(g.cylinders[1].end.y, 1.0f, 1e-6f);
+}
+
+// Decomposition that never ends is refused with the step and the depth.
+TEST(Cpfg, EndlessDecompositionIsRefused) {
+    ParseResult r = parse("derivation length: 1\nAxiom: A\ndecomposition\nmaximum depth: 5\nA --> B A\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    DeriveResult d = derive(r.grammar, 1);
+    EXPECT_FALSE(d.outcome.ok());
+    EXPECT_EQ(d.outcome.message,
+              "step 0: the decomposition rules still apply after 5 levels (maximum depth): they never end. A decomposition "
+              "must end in modules no decomposition rule rewrites; raise 'maximum depth:' if it is this deep on purpose");
+}
+
+// Text typed without a folder cannot include; a file can include only beside itself.
+TEST(Cpfg, IncludeStaysInTheGrammarsFolder) {
+    auto errorsOf = [](const std::string& text, const std::string& path) {
+        std::vector<std::string> out;
+        for (const auto& d : parse(text, parseOptionsFor(FileKind::Cpfg, path)).diagnostics)
+            if (d.severity == Severity::Error) out.push_back(std::to_string(d.line) + ":" + std::to_string(d.col) + ": " + d.message);
+        return out;
+    };
+    const std::string dir = std::string(SPROUT_CPFG_DIR) + "/";
+    EXPECT_EQ(errorsOf("#include \"include_defs.h\"\nAxiom: F\n", ""),
+              std::vector<std::string>{"1:10: #include \"include_defs.h\" needs the grammar's folder: save the grammar beside it first"});
+    EXPECT_TRUE(errorsOf("#include \"include_defs.h\"\nAxiom: F(LEN)\n", dir + "x.l").empty());
+    EXPECT_EQ(errorsOf("#include \"../cpfg/include_defs.h\"\nAxiom: F\n", dir + "x.l"),
+              std::vector<std::string>{"1:10: cannot include '../cpfg/include_defs.h': only files in the grammar's own folder can be included"});
+    EXPECT_EQ(errorsOf("#include \"x.l\"\nAxiom: F\n", dir + "x.l"),
+              std::vector<std::string>{"1:10: 'x.l' includes itself"});
+}
+
+}  // namespace
+}  // namespace sprout
