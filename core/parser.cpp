@@ -43,6 +43,11 @@ size_t findLastTopLevel(std::string_view s, char token) {
     return found;
 }
 
+// cpfg query modules: the turtle writes a point or a vector into their three parameters.
+bool isQuery(std::string_view name) {
+    return name.size() == 2 && name[0] == '?' && std::string_view("PHUL").find(name[1]) != std::string_view::npos;
+}
+
 bool isIdentifier(std::string_view s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
     return std::all_of(s.begin(), s.end(), [](char c) {
@@ -140,6 +145,11 @@ bool Parser::tokenize(const SourceLine& line, std::string_view text, std::vector
 }
 
 std::optional<SymbolId> Parser::symbolFor(const SourceLine& line, std::string_view name, int arity) {
+    if (isQuery(name) && arity != 3 && arity != 0) {
+        m_sink.error(line, name, "the query module '" + std::string(name) + "' has 3 parameters (x, y, z) that the turtle fills in, not " +
+                                     std::to_string(arity));
+        return std::nullopt;
+    }
     if (arity > 0 && (name == "[" || name == "]" || name == "%")) {
         m_sink.error(line, name, "'" + std::string(name) + "' takes no parameters");
         return std::nullopt;

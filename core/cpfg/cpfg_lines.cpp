@@ -353,7 +353,7 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
             o.pieces.emplace_back(0, body[i].number);
             o.pieceStart.push_back(0);
             size_t j = i;
-            bool done = false;
+            bool done = false, python = false;
             while (j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
                 std::string_view cur = trim(joined);
                 std::string_view next = trim(body[j + 1].text);
@@ -365,6 +365,13 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
                                next.starts_with("-->") || next.starts_with("->") || next.starts_with(":") ||
                                next.starts_with("}") || produce))
                     break;
+                if (!produce && !open && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
+                                 startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
+                    m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
+                                                    "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
+                    python = true;
+                    break;
+                }
                 ++j;
                 joined += ' ';
                 o.pieces.emplace_back(joined.size(), body[j].number);
@@ -381,7 +388,12 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
                     break;
                 }
             }
-            if (done) {
+            if (python) {  // reported once, at the Python line; its rule is not read
+                // The rule's indented body goes with it.
+                for (size_t k = i + 1; k < body.size() && (k <= j + 1 || (!body[k].text.empty() && isSpace(body[k].text[0]))); ++k)
+                    body[k].text = body[k].text.substr(0, 0);
+                out.src.text = out.src.text.substr(0, 0);
+            } else if (done) {
                 m_store.push_back(std::move(joined));
                 out.src.text = m_store.back();
                 out.src.original = m_store.back();
