@@ -12,6 +12,7 @@
 
 #include "core/d0l.hpp"
 #include "core/derive.hpp"
+#include "core/generalized_cylinder.hpp"
 
 namespace sprout {
 namespace {
@@ -20,7 +21,7 @@ enum class Act : std::uint8_t {
     None, Draw, DrawNoVertex, Move, MoveNoVertex, Left, Right, Down, Up, RollLeft, RollRight,
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
-    Query, MoveTo, SetHeading, Disc,
+    Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
 };
 
 Act actionOf(const std::string& name) {
@@ -40,6 +41,8 @@ Act actionOf(const std::string& name) {
         // step), move to a point, set the heading, roll L horizontal, a disc.
         {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query},
         {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
+        // cpfg's generalized cylinders: start, control point, end, tangent length.
+        {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;
@@ -74,6 +77,7 @@ struct State {
     std::int32_t lastSegment = -1;  // the segment this branch's next segment continues
     std::uint16_t order = 0;
     std::int8_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
+    std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
     float angleScale = 1;     // @A: factor on the default turning angle
     // Resolved when the colour or the branch order changes: measured faster than looking it
     // up at every segment, even though it makes the state 80 bytes instead of 64.
@@ -207,6 +211,7 @@ public:
             m_arity[s] = g.alphabet[SymbolId(s)].arity;
             m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
             m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
+            m_hasCurves |= m_actions[s] == Act::CurveStart;
         }
         m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
         m_autoWidth = st.width <= 0;
@@ -269,7 +274,8 @@ public:
     // or on the module's index (jitter, tropism, growth), and interpretation rules (if any)
     // that map each symbol to one fixed string.
     bool treeApplicable() const {
-        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && simpleInterpretation(m_g);
+        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
+               simpleInterpretation(m_g);
     }
     static bool simpleInterpretation(const Grammar& g) {
         for (const auto& list : g.interpretation.bySymbol) {
@@ -305,7 +311,7 @@ private:
             }
             const Act act = actions[id];
             if (act == Act::None) continue;
-            if (act == Act::Draw && !arity && m_plainRuns && m_polygons.empty()) {
+            if (act == Act::Draw && !arity && m_plainRuns && m_polygons.empty() && t.curve < 0) {
                 // A run of plain F (F -> FF makes long ones): collinear segments in a tight loop.
                 size_t j = i + 1;
                 while (j < N && sym[j] == id) ++j;
@@ -680,6 +686,13 @@ private:
                     if (act == Act::Draw) vertex(t);
                     break;
                 }
+                if (t.curve >= 0) {  // a generalized cylinder: a control point, no cylinder
+                    t.pos += t.H * len;
+                    addBound(t.pos);
+                    if (m_tropismE != 0) bend(t);
+                    curvePoint(t, m_curves[size_t(t.curve)].subdivisions);
+                    break;
+                }
                 segment(t, len, i);
                 break;
             }
@@ -722,6 +735,7 @@ private:
             case Act::Push:
                 m_usedBrackets = true;
                 m_stack.push_back(t);  // PodBuffer: no per-push construction
+                t.curve = -1;  // a branch draws its own stem (or starts its own @Gs)
                 t.order = std::uint16_t(std::min<int>(t.order + 1, 65535));
                 if (m_gradient && t.colour < 0) t.stemColour = stemColour(t);
                 t.length *= m_branchLength;
@@ -780,8 +794,47 @@ private:
             case Act::MoveTo:
             case Act::SetHeading:
             case Act::Disc: cpfgCommand(t, act, p, arity); break;
+            case Act::CurveStart:
+            case Act::CurvePoint:
+            case Act::CurveEnd:
+            case Act::CurveTangent: curveCommand(t, act, p); break;
             default: break;
         }
+    }
+
+    // Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
+    // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
+    // tangents' length in chords. Every F in between is a control point too.
+    [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p) {
+        if (act == Act::CurveStart) {
+            if (m_curves.size() >= 32767) return;  // the state keeps the index in 16 bits
+            m_curves.emplace_back();
+            m_curves.back().curve.left = toGlm(t.L);
+            t.curve = std::int16_t(m_curves.size() - 1);
+            t.lastSegment = -1;
+            curvePoint(t, 1);
+            return;
+        }
+        if (t.curve < 0) return;
+        auto& c = m_curves[size_t(t.curve)];
+        const int n = p ? int(std::clamp(*p, 1.0, 64.0)) : c.subdivisions;
+        if (act == Act::CurveTangent) {
+            c.curve.tangentScale = p ? float(std::clamp(*p, 0.0, 10.0)) : 1.0f;
+            return;
+        }
+        if (act == Act::CurvePoint) c.subdivisions = n;
+        curvePoint(t, n);
+        if (act == Act::CurveEnd) t.curve = -1;
+    }
+    void curvePoint(const State& t, int subdivisions) {
+        auto& c = m_curves[size_t(t.curve)];
+        const glm::vec3 p = toGlm(t.pos);
+        if (!c.curve.points.empty() && glm::length(c.curve.points.back().position - p) < 1e-7f) {
+            c.curve.points.back().radius = t.width * 0.5f;  // the same place: update, do not repeat
+            c.curve.points.back().subdivisions = subdivisions;
+            return;
+        }
+        c.curve.points.push_back({p, glm::normalize(toGlm(t.H)), t.width * 0.5f, t.stemColour, subdivisions});
     }
 
     // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
@@ -982,6 +1035,7 @@ private:
                 c.endRadius *= k;
             }
         }
+        for (const auto& c : m_curves) appendTube(c.curve, k, out.polygons);
         // A planar curve: every point in the z = 0 plane and no branches or surfaces.
         const float tol = 1e-4f * (1 + glm::length(out.bounds.size()));
         bool flat = std::fabs(out.bounds.min.z) < tol && std::fabs(out.bounds.max.z) < tol;
@@ -1008,6 +1062,12 @@ private:
     glm::vec3 m_tropism;
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
+    bool m_hasCurves = false;
+    struct OpenCurve {
+        GeneralizedCylinder curve;
+        int subdivisions = 4;  // pieces of each span, until an @Gc(n) says otherwise
+    };
+    std::vector<OpenCurve> m_curves;
     bool m_absoluteWidths = false;
     // Drawing from the derivation tree
     const D0LExpander* m_tree = nullptr;

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <regex>
 #include <set>
+#include <glm/geometric.hpp>
 
 #include "core/derive.hpp"
 #include "core/file_kind.hpp"
@@ -98,6 +99,38 @@ TEST(Cpfg, MoveToStartsANewStemThere) {
     ASSERT_EQ(g.cylinders.size(), 2u);
     EXPECT_NEAR(g.cylinders[1].start.x, 5.0f, 1e-6f);
     EXPECT_NEAR(g.cylinders[1].end.y, 1.0f, 1e-6f);
+}
+
+// A generalized cylinder is one tube through the turtle's positions: no cylinders, rings of
+// 12 vertices at the radius around the curve, which passes through every control point.
+TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
+    ParseResult r = parse("derivation length: 0\nwidth: 0.5\nAxiom: @Gs F(1) +(30) F(1) @Gc(5) +(30) F(1) @Ge(5)\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    EXPECT_EQ(g.cylinders.size(), 0u);
+    // 4 control points: spans of 4 (the default), 5 and 5 pieces: 15 rings, plus two caps.
+    ASSERT_EQ(g.polygons.positions.size(), 15u * 12 + 2 * 13);
+    ASSERT_EQ(g.polygons.indices.size(), 14u * 12 * 6 + 2 * 12 * 3);
+    // Every ring vertex lies at the radius from its ring's centre; the centres of the rings at
+    // the control points are the turtle's positions.
+    const glm::vec3 control[] = {{0, 0, 0}, {0, 1, 0}, {-0.5f, 1 + std::sqrt(3.0f) / 2, 0},
+                                 {-0.5f - std::sqrt(3.0f) / 2, 1.5f + std::sqrt(3.0f) / 2, 0}};
+    const int ringAt[] = {0, 4, 9, 14};
+    for (int c = 0; c < 4; ++c) {
+        glm::vec3 centre(0);
+        for (int k = 0; k < 12; ++k) centre += g.polygons.positions[size_t(ringAt[c] * 12 + k)] / 12.0f;
+        EXPECT_NEAR(glm::length(centre - control[c]), 0.0f, 1e-4f) << "control point " << c;
+        for (int k = 0; k < 12; ++k)
+            EXPECT_NEAR(glm::length(g.polygons.positions[size_t(ringAt[c] * 12 + k)] - centre), 0.25f, 1e-4f);
+    }
+    // Smooth: the rings' normals turn by less than 20 degrees from one ring to the next.
+    for (int i = 0; i + 1 < 15; ++i) {
+        glm::vec3 a = g.polygons.positions[size_t(i * 12)] , b = g.polygons.positions[size_t((i + 1) * 12)];
+        glm::vec3 na = g.polygons.normals[size_t(i * 12)], nb = g.polygons.normals[size_t((i + 1) * 12)];
+        EXPECT_GT(glm::dot(na, nb), std::cos(20.0f * 3.14159265f / 180)) << "ring " << i << " " << a.y << " " << b.y;
+    }
 }
 
 // Decomposition that never ends is refused with the step and the depth.
