@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "app/image.hpp"
 #include "app/presets.hpp"
@@ -88,6 +89,46 @@ TEST(Render, EveryPresetIsFramedAndNotClipped) {
         // ...and touches none of them.
         EXPECT_EQ(border, 0) << name << " is clipped at the border";
     }
+}
+
+// Every cpfg-family test file draws a plausible picture at its derivation length: something
+// on screen, framed, not the whole frame, and at least two colours of plant (shading); files
+// that draw nothing (strings of symbols the turtle ignores) say so with '// picture: none'.
+TEST(Render, EveryCpfgTestFileDrawsAPlausiblePicture) {
+    namespace fs = std::filesystem;
+    SnapshotOptions o = plain();
+    Image empty = emptyScene(o);
+    int drawn = 0;
+    for (const auto& e : fs::directory_iterator(SPROUT_CPFG_DIR)) {
+        if (e.path().extension() != ".l" && e.path().extension() != ".lpy") continue;
+        const std::string name = e.path().filename().string();
+        std::ifstream in(e.path(), std::ios::binary);
+        const std::string text(std::istreambuf_iterator<char>(in), {});
+        ParseResult r = parseDetected(text, e.path().string());
+        ASSERT_TRUE(r.ok()) << name;
+        Image img = render(r.grammar, o);
+        Mask m = plantMask(img, empty);
+        const double cover = double(m.count) / (kW * kH);
+        if (text.find("// picture: none") != std::string::npos) {
+            EXPECT_LT(cover, 0.001) << name << " says it draws nothing";
+            continue;
+        }
+        ++drawn;
+        EXPECT_GT(cover, 0.002) << name << " draws almost nothing";
+        EXPECT_LT(cover, 0.9) << name;
+        int minX = kW, maxX = -1, minY = kH, maxY = -1;
+        std::set<std::uint32_t> shades;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x)
+                if (m.at(x, y)) {
+                    minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+                    const std::size_t i = std::size_t(y * kW + x) * 4;
+                    shades.insert(std::uint32_t(img.rgba[i] / 16) << 8 | std::uint32_t(img.rgba[i + 1] / 16) << 4 | img.rgba[i + 2] / 16);
+                }
+        EXPECT_TRUE(maxY - minY > kH * 0.5 || maxX - minX > kW * 0.5) << name << " is not framed";
+        EXPECT_GE(shades.size(), 2u) << name << " is one flat colour";
+    }
+    EXPECT_GE(drawn, 30);
 }
 
 TEST(Render, LeavesAreGreen) {
