@@ -248,8 +248,14 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
             // else (`#define LEAF ~l(2)`) is text put in place where its name is used.
             DiagnosticSink scratch;
             ExprScope scope{nullptr, &m_g.defines, &m_macros};
-            if (compileExpr(value, p.src, scope, scratch)) define(p.src, rest);
-            else m_textMacros.emplace_back(name, std::string(value));
+            if (compileExpr(value, p.src, scope, scratch)) {
+                define(p.src, rest);
+                // A slider writes its value back into the text it edits: only the grammar's
+                // own defines get one, not those of an included file.
+                if (!top && !m_g.defineOrder.empty() && m_g.defineOrder.back() == name) m_g.defineOrder.pop_back();
+            } else {
+                m_textMacros.emplace_back(name, std::string(value));
+            }
         } else if (word == "#include") {
             std::string_view name = rest;
             if ((name.starts_with("\"") && name.ends_with("\"") && name.size() >= 2) ||

@@ -84,6 +84,51 @@ TEST(Window, ScriptedEditChangesThePlant) {
     EXPECT_GT(ink, 200);
 }
 
+// A cpfg-family file opens as it is written (its #include read beside it), its #define
+// drives a slider that writes back into the text, growth stepping shows the decomposed
+// steps, and Save as writes the cpfg text, not a translation.
+TEST(Window, CpfgFileOpensEditsStepsAndSavesInItsOwnSyntax) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_cpfg_window_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "parts.h") << "#define ANGLE 40  /* from the included file */\n";
+    const std::string grammar = "/* window test: a cpfg file with an include, a define and a decomposition */\n"
+                                "#include \"parts.h\"\n#define LEN 2\nLsystem: 1\nderivation length: 4\nAxiom: A\n"
+                                "A --> I(LEN) /(90) A\ndecomposition\nmaximum depth: 3\n"
+                                "I(l) --> F(l) [ +(ANGLE) ~l(1) ] [ -(ANGLE) ~l(1) ]\nendlsystem\n";
+    std::ofstream(dir / "plant.l") << grammar;
+    const std::string full = (dir / "full.png").string(), one = (dir / "one.png").string(),
+                      longer = (dir / "longer.png").string(), saved = (dir / "saved.l").string();
+    std::ofstream(dir / "script.txt") << "wait\nscreenshot " << full << " 400x300\n"
+                                     << "step 1\nwait\nscreenshot " << one << " 400x300\n"
+                                     << "step 4\ndefine LEN 5\nwait\nscreenshot " << longer << " 400x300\n"
+                                     << "saveas " << saved << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb((dir / "plant.l").string() + " --script " + (dir / "script.txt").string()), 0);
+    Image a = load(full), b = load(one), c = load(longer);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    auto differ = [](const Image& x, const Image& y) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < x.rgba.size(); i += 4)
+            n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
+        return n;
+    };
+    // Leaves are on screen: green pixels in the view (the right of the window).
+    int green = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = a.width / 3; x < a.width; ++x) {
+            const std::size_t i = (std::size_t(y) * std::size_t(a.width) + std::size_t(x)) * 4;
+            green += a.rgba[i + 1] > a.rgba[i] + 20 && a.rgba[i + 1] > a.rgba[i + 2] + 20;
+        }
+    EXPECT_GT(green, 200) << "the decomposed leaves are drawn";
+    EXPECT_GT(differ(a, b), 400u * 300u / 100) << "step 1 of the growth is not the grown plant";
+    EXPECT_GT(differ(a, c), 400u * 300u / 100) << "the LEN slider changes the plant";
+    std::ifstream in(saved);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    std::string expected = grammar;
+    expected.replace(expected.find("#define LEN 2"), 13, "#define LEN 5");
+    EXPECT_EQ(text, expected) << "saved in its own syntax, with the slider's value";
+}
+
 // A screenshot keeps the camera (direction, zoom, target): `sprout render SHOT.png` draws
 // the same view, not the plant framed anew.
 TEST(Window, ScreenshotRendersAgainFromTheSameCamera) {
