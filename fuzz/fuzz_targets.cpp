@@ -11,6 +11,7 @@
 
 #include "core/derive.hpp"
 #include "core/expr.hpp"
+#include "core/file_kind.hpp"
 #include "core/grammar.hpp"
 #include "core/import/import.hpp"
 #include "core/rng.hpp"
@@ -61,6 +62,21 @@ void deriveAndDraw(const std::string& text, int maxSteps) {
     }
 }
 
+// The cpfg family: parsed as written (no folder: #include is an error), derived a few steps
+// with decomposition and queries under the same caps, and drawn (generalized cylinders too).
+void deriveAndDrawCpfg(const std::string& text, int maxSteps) {
+    ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, ""));
+    if (!r.ok()) return;
+    DeriveOptions o;
+    o.limits.maxModules = 200'000;
+    o.limits.maxBytes = 64ull << 20;
+    Derivation d(r.grammar, o);
+    const int n = std::min(r.grammar->settings.iterations, maxSteps);
+    if (!d.deriveTo(n).ok()) return;
+    Geometry g;
+    interpret(*d.step(n), *r.grammar, {n, d.seed(), nullptr}, g);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -93,6 +109,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const auto& s : listFractint(input)) (void)s;
     ImportResult r = importFractint(input, "");
     if (r.ok()) deriveAndDraw(r.text, 4);
+#elif defined(SPROUT_FUZZ_CPFG)
+    deriveAndDrawCpfg(input, 5);
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);

@@ -28,11 +28,12 @@ seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursi
     lparser) echo tests/data/seed001 fuzz/regressions/lparser; [ -d "$shared/lparser" ] && echo "$shared/lparser" ;;
     fractint) echo fuzz/seeds/fractint fuzz/regressions/fractint; [ -d "$shared" ] && echo "$shared" ;;
     png) echo tests/golden fuzz/regressions/png ;;
+    cpfg) echo tests/cpfg tests/bad-input presets fuzz/regressions/cpfg ;;
   esac
 }
 mkdir -p build-fuzz/artifacts
 status=0
-for t in parser expr derive turtle lparser fractint png; do
+for t in parser expr derive turtle lparser fractint png cpfg; do
   corpus=build-fuzz/corpus/$t
   mkdir -p "$corpus" fuzz/regressions/"$t"
   dirs=()
