@@ -48,7 +48,8 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         const glm::vec3 out = safeNormalize(pts[i + 1].position - pts[i].position, pts[i].heading);
         dir[i] = safeNormalize(in + out, pts[i].heading);
     }
-    samples.push_back({pts[0].position, dir[0], pts[0].radius, pts[0].colour});
+    // A span takes the colour the turtle had when it drew it (the point at its end).
+    samples.push_back({pts[0].position, dir[0], pts[0].radius, pts[1].colour});
     for (size_t i = 1; i < pts.size(); ++i) {
         const CurvePoint& a = pts[i - 1];
         const CurvePoint& b = pts[i];
@@ -60,7 +61,7 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
             const float s = float(k) / float(n);
             samples.push_back({hermite(a.position, t0, b.position, t1, s),
                                safeNormalize(hermiteTangent(a.position, t0, b.position, t1, s), dir[i]),
-                               a.radius + (b.radius - a.radius) * s, k == n ? b.colour : a.colour});
+                               a.radius + (b.radius - a.radius) * s, b.colour});
         }
     }
     if (samples.size() < 2) return;
