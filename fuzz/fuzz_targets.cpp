@@ -23,7 +23,7 @@ using namespace sprout;
 
 // Derives a few steps under a small size cap and draws the result: what the viewer does on
 // every keystroke, bounded so that the fuzzer stays fast.
-void deriveAndDraw(const std::string& text, int maxSteps) {
+[[maybe_unused]] void deriveAndDraw(const std::string& text, int maxSteps) {
     ParseResult r = parse(text);
     if (!r.ok()) return;
     DeriveOptions o;
@@ -64,7 +64,7 @@ void deriveAndDraw(const std::string& text, int maxSteps) {
 
 // The cpfg family: parsed as written (no folder: #include is an error), derived a few steps
 // with decomposition and queries under the same caps, and drawn (generalized cylinders too).
-void deriveAndDrawCpfg(const std::string& text, int maxSteps) {
+[[maybe_unused]] void deriveAndDrawCpfg(const std::string& text, int maxSteps) {
     ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, ""));
     if (!r.ok()) return;
     DeriveOptions o;
