@@ -82,6 +82,7 @@ private:
     bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
                       std::vector<std::string>& stack);
     void classifyCpfg(Line& line, Section& section, bool& ended);
+    std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
     void finishCpfg(std::vector<Diagnostic>& diags);
     // Statement blocks (core/cpfg/statements.cpp).
     bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,

@@ -313,26 +313,20 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
     }
 
     // Textual #defines put in place (the line keeps its number; columns after a replacement
-    // are counted in the replaced text).
+    // are counted in the replaced text). As the C preprocessor does, a macro is not expanded
+    // again inside its own expansion (`#define a &(a) F` would otherwise grow without end),
+    // and an expansion past 64 KB is refused.
     if (!m_textMacros.empty()) {
         for (auto& l : body) {
-            std::string expanded(l.text);
-            bool changed = false;
-            for (int pass = 0; pass < 8; ++pass) {
-                bool any = false;
-                for (const auto& [name, value] : m_textMacros) {
-                    for (size_t at = expanded.find(name); at != std::string::npos; at = expanded.find(name, at + 1)) {
-                        bool before = at == 0 || !identChar(expanded[at - 1]);
-                        bool after = at + name.size() >= expanded.size() || !identChar(expanded[at + name.size()]);
-                        if (!before || !after) continue;
-                        expanded.replace(at, name.size(), value);
-                        at += value.size() - 1;
-                        any = changed = true;
-                    }
-                }
-                if (!any) break;
+            std::vector<std::string> active;
+            bool tooLong = false;
+            std::string expanded = expandTextMacros(l.text, active, tooLong);
+            if (tooLong) {
+                m_sink.error(l, l.text, "the #define names on this line expand to more than 64 KB of text");
+                l.text = l.text.substr(0, 0);
+                continue;
             }
-            if (changed) {
+            if (expanded != l.text) {
                 m_store.push_back(std::move(expanded));
                 l.text = m_store.back();
                 l.original = m_store.back();
@@ -411,6 +405,33 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
         m_lines.push_back(out);
     }
     return true;
+}
+
+std::string Parser::expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const {
+    std::string out;
+    size_t i = 0;
+    while (i < text.size() && !tooLong) {
+        if (!(std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') || (i > 0 && identChar(text[i - 1]))) {
+            out += text[i++];
+            continue;
+        }
+        size_t end = i;
+        while (end < text.size() && identChar(text[end])) ++end;
+        const std::string_view word = text.substr(i, end - i);
+        i = end;
+        const std::string* value = nullptr;
+        for (const auto& [name, v] : m_textMacros)
+            if (name == word) value = &v;
+        if (!value || std::find(active.begin(), active.end(), word) != active.end()) {
+            out += word;
+            continue;
+        }
+        active.emplace_back(word);
+        out += expandTextMacros(*value, active, tooLong);
+        active.pop_back();
+        if (out.size() > (64u << 10)) tooLong = true;
+    }
+    return out;
 }
 
 void Parser::buildCpfgLines() {
