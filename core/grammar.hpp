@@ -14,6 +14,7 @@
 #include "core/diagnostic.hpp"
 #include "core/expr.hpp"
 #include "core/module_string.hpp"
+#include "core/surface_file.hpp"
 
 namespace sprout {
 
@@ -105,6 +106,8 @@ struct Grammar {
     Settings settings;
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;
+    // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
+    std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
     std::vector<std::string> defineOrder;  // for sliders, in file order
 
     bool parametric() const;        // any module with parameters in axiom or successors

@@ -92,6 +92,8 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
 size_t Parser::nameLength(std::string_view s, size_t pos) const {
     for (const auto& name : m_moduleNames)
         if (s.substr(pos, name.size()) == name) return name.size();
+    // cpfg: '~' and one character name a surface (~l a leaf, ~s the surface file s.s ...).
+    if (m_cpfg && s[pos] == '~' && pos + 1 < s.size() && std::isalnum(static_cast<unsigned char>(s[pos + 1]))) return 2;
     return std::min(s.size() - pos, utf8Length(static_cast<unsigned char>(s[pos])));
 }
 
@@ -782,6 +784,7 @@ ParseResult Parser::run() {
             if (sym.name == "[" || sym.name == "]") m_g.ignored[sym.nameId] = false;
         }
     }
+    if (m_cpfg) loadSurfaceFiles();
     lint();
 
     ParseResult result;

@@ -53,6 +53,7 @@ public:
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
+    void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
     bool cpfg() const { return m_cpfg; }
 
     enum class Section { Productions, Interpretation, Decomposition };
@@ -84,6 +85,7 @@ private:
     void classifyCpfg(Line& line, Section& section, bool& ended);
     std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
     void finishCpfg(std::vector<Diagnostic>& diags);
+    void loadSurfaceFiles();  // `~s` modules with an `s.s` file beside the grammar
     // Statement blocks (core/cpfg/statements.cpp).
     bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
                     std::vector<Statement>& out);

@@ -17,6 +17,11 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
         m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
         m_hasCurves |= m_actions[s] == Act::CurveStart;
+        if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {
+            m_actions[s] = Act::SurfaceFile;
+            m_surfaceFiles.resize(g.alphabet.size(), nullptr);
+            m_surfaceFiles[s] = f->second.get();
+        }
     }
     m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
     m_autoWidth = st.width <= 0;
@@ -77,6 +82,13 @@ void Turtle::runLoop(const ModuleString& s) {
         }
         const Act act = actions[id];
         if (act == Act::None) continue;
+        if (act == Act::SurfaceFile) {  // a cpfg .s surface: its mesh comes from the symbol
+            if constexpr (Parametric) {
+                if (arity && !finite(p, arity)) continue;
+            }
+            placeSurfaceFile(t, id, arity ? p : nullptr);
+            continue;
+        }
         if (act == Act::Draw && !arity && m_plainRuns && m_polygons.empty() && t.curve < 0) {
             // A run of plain F (F -> FF makes long ones): collinear segments in a tight loop.
             size_t j = i + 1;

@@ -169,6 +169,26 @@ void Turtle::finish() {
                       (view == ViewHint::Flat || (!m_usedBrackets && out.surfaces.empty()));
 }
 
+// A cpfg surface file at the turtle: its frame (heading, left, up) mapped onto the turtle's,
+// scaled by the module's parameter and the step length, coloured like a leaf.
+void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
+    const SurfaceFile& f = *m_surfaceFiles[id];
+    const float scale = (p ? float(*p) : 1.0f) * t.length;
+    const glm::vec3 pos = toGlm(t.pos), h = toGlm(t.H), l = toGlm(t.L), u = toGlm(up(t));
+    Mesh& m = m_out.polygons;
+    const std::uint32_t base = std::uint32_t(m.positions.size());
+    const std::uint32_t col = surfaceColour(t, SurfaceKind::Leaf);
+    for (size_t k = 0; k < f.positions.size(); ++k) {
+        const glm::vec3& q = f.positions[k];
+        const glm::vec3& n = f.normals[k];
+        m.positions.push_back(pos + scale * (q.x * h + q.y * l + q.z * u));
+        m.normals.push_back(n.x * h + n.y * l + n.z * u);
+        m.colours.push_back(col);
+        addBound(fromGlm(m.positions.back()));
+    }
+    for (std::uint32_t i : f.indices) m.indices.push_back(base + i);
+}
+
 }  // namespace turtle_impl
 
 void Bounds::add(const glm::vec3& p) {

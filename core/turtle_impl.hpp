@@ -30,6 +30,7 @@ enum class Act : std::uint8_t {
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
+    SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
 };
 
 inline Act actionOf(const std::string& name) {
@@ -224,6 +225,7 @@ public:
     // that map each symbol to one fixed string.
     bool treeApplicable() const {
         return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
+               m_surfaceFiles.empty() &&
                simpleInterpretation(m_g);
     }
     static bool simpleInterpretation(const Grammar& g) {
@@ -468,6 +470,7 @@ private:
     // tangents' length in chords. Every F in between is a control point too.
     [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p);
     void curvePoint(const State& t, int subdivisions);
+    void placeSurfaceFile(const State& t, SymbolId id, const double* p);
 
     // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
     [[gnu::noinline]] void cpfgCommand(State& t, Act act, const double* p, int arity);
@@ -579,6 +582,7 @@ private:
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
     bool m_hasCurves = false;
+    std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;
         int subdivisions = 4;  // pieces of each span, until an @Gc(n) says otherwise

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include "core/parser_impl.hpp"
 
@@ -124,7 +125,7 @@ std::string sectionWord(std::string_view t) {
 }
 
 bool knownKey(const std::string& key) {
-    if (cpfgKeys().count(key) || key == "lsystem" || key == "consider" || key == "maximum depth" ||
+    if (cpfgKeys().count(key) || key == "lsystem" || key == "consider" || key == "maximum depth" || key == "surface" ||
         key == "angle factor" || key == "define")
         return true;
     for (const auto& d : directives())
@@ -133,6 +134,7 @@ bool knownKey(const std::string& key) {
 }
 
 void considerHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setConsider(l, v); }
+void surfaceHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setSurface(l, v); }
 void depthHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setMaximumDepth(l, v); }
 void angleFactorHandler(Parser& p, const SourceLine& l, std::string_view v) {
     auto f = p.constant(l, v);
@@ -160,6 +162,7 @@ void defineBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
 }
 
 const Directive kConsider{"consider", considerHandler};
+const Directive kSurface{"surface", surfaceHandler, 0};  // before rules: it names a module
 const Directive kMaximumDepth{"maximum depth", depthHandler};
 const Directive kAngleFactor{"angle factor", angleFactorHandler};
 const Directive kDefineBlock{"define", defineBlockHandler, 1};
@@ -509,6 +512,7 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     std::string name = key;
     if (auto it = cpfgKeys().find(key); it != cpfgKeys().end()) name = it->second;
     if (key == "consider") l.directive = &kConsider;
+    else if (key == "surface") l.directive = &kSurface;
     else if (key == "maximum depth") l.directive = &kMaximumDepth;
     else if (key == "angle factor") l.directive = &kAngleFactor;
     else if (key == "define" && value.starts_with("{")) l.directive = &kDefineBlock;
@@ -535,6 +539,52 @@ void Parser::setConsider(const SourceLine& line, std::string_view text) {
         auto id = symbolFor(line, m.name, 0);
         if (!id) return;
         m_considered.push_back(m_g.alphabet[*id].nameId);
+    }
+}
+
+void Parser::setSurface(const SourceLine& line, std::string_view text) {
+    // cpfg's view-file line: `surface: NAME FILE.s [scale]` (the scale is not used: the
+    // module's parameter scales the surface).
+    std::istringstream words{std::string(text)};
+    std::string name, file;
+    if (!(words >> name >> file) || name.find_first_of("()[]~") != std::string::npos) {
+        m_sink.error(line, text, "expected 'surface: NAME FILE.s', as in 'surface: s leaf.s'");
+        return;
+    }
+    declareModules(line, "~" + name);
+    if (!m_options.include) {
+        m_sink.error(line, text, "surface '" + file + "' needs the grammar's folder: save the grammar beside it first");
+        return;
+    }
+    std::string error;
+    auto bytes = m_options.include(file, error);
+    if (!bytes) {
+        m_sink.error(line, text, "cannot read the surface '" + file + "': " + error);
+        return;
+    }
+    auto surface = parseSurfaceFile(*bytes, error);
+    if (!surface) {
+        m_sink.error(line, text, "'" + file + "' is not a cpfg surface file: " + error);
+        return;
+    }
+    m_g.surfaceFiles["~" + name] = std::make_shared<const SurfaceFile>(std::move(*surface));
+}
+
+void Parser::loadSurfaceFiles() {
+    if (!m_options.include) return;
+    for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+        const std::string& name = m_g.alphabet[SymbolId(s)].name;
+        if (name.size() < 2 || name[0] != '~' || m_g.surfaceFiles.count(name)) continue;
+        std::string error;
+        auto bytes = m_options.include(name.substr(1) + ".s", error);
+        if (!bytes) continue;  // no file: the built-in leaf and petal, or nothing
+        auto surface = parseSurfaceFile(*bytes, error);
+        if (!surface) {
+            m_sink.add({0, 0, "'" + name.substr(1) + ".s' beside the grammar is not a cpfg surface file (" + error +
+                                  "): '" + name + "' is drawn as the built-in shape", Severity::Warning});
+            continue;
+        }
+        m_g.surfaceFiles[name] = std::make_shared<const SurfaceFile>(std::move(*surface));
     }
 }
 

@@ -7,6 +7,7 @@
 // Every file must be recognised as the cpfg family by its content, not its name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -131,6 +132,34 @@ TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
         glm::vec3 na = g.polygons.normals[size_t(i * 12)], nb = g.polygons.normals[size_t((i + 1) * 12)];
         EXPECT_GT(glm::dot(na, nb), std::cos(20.0f * 3.14159265f / 180)) << "ring " << i << " " << a.y << " " << b.y;
     }
+}
+
+// A cpfg surface file is its Bezier patch, tessellated, in the turtle's frame.
+TEST(Cpfg, SurfaceFileIsPlacedInTheTurtlesFrame) {
+    const std::string dir = std::string(SPROUT_CPFG_DIR) + "/";
+    ParseResult r = parse("derivation length: 0\nsurface: b blade.s\nAxiom: ~b(2) +(90) ~q(1)\n",
+                          parseOptionsFor(FileKind::Cpfg, dir + "x.l"));
+    for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, "x.l");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.grammar->surfaceFiles.size(), 2u);  // b by its line, q found beside the grammar
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_EQ(g.polygons.positions.size(), 2u * 81);  // one patch, 8 x 8 quads, each surface
+    ASSERT_EQ(g.polygons.indices.size(), 2u * 8 * 8 * 6);
+    // The blade's tip (0, 1, 0) along its heading: at twice the heading (+Y) for ~b(2), at the
+    // turned heading (-X after '+' by 90) for ~q(1).
+    auto has = [&](glm::vec3 want) {
+        return std::any_of(g.polygons.positions.begin(), g.polygons.positions.end(),
+                           [&](const glm::vec3& p) { return glm::length(p - want) < 1e-5f; });
+    };
+    EXPECT_TRUE(has({0, 2, 0}));
+    EXPECT_TRUE(has({-1, 0, 0}));
+    // Not a surface file: said with its line.
+    ParseResult bad = parse("surface: b include_defs.h\nAxiom: ~b\n", parseOptionsFor(FileKind::Cpfg, dir + "x.l"));
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.diagnostics[0].message,
+              "'include_defs.h' is not a cpfg surface file: no Bezier patch in it (a cpfg surface file has a CONTACT "
+              "POINT line and patches of 16 control points)");
 }
 
 // Decomposition that never ends is refused with the step and the depth.

@@ -1,0 +1,27 @@
+#pragma once
+// cpfg's surface files (`.s`): bicubic Bezier patches with a contact point, a heading, an up
+// vector and a size, placed by a `~name` module in the turtle's frame (cpfg manual, "Surface
+// specification"). Parsed once with the grammar; drawn into the plant's polygon mesh.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace sprout {
+
+// Triangles in the surface's own frame, normalised: x along its heading, y along its left,
+// z along its up, the contact point at the origin, and divided by its SIZE, so that `~name(s)`
+// scales it by s.
+struct SurfaceFile {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> indices;
+    int patches = 0;
+};
+
+// `error` says what is wrong and on which line when the text is not a surface file.
+std::optional<SurfaceFile> parseSurfaceFile(std::string_view text, std::string& error);
+
+}  // namespace sprout
