@@ -1,11 +1,14 @@
 #include "app/animation.hpp"
 
+#include "core/io/atomic_file.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,11 +30,38 @@ bool endsWith(const std::string& s, const char* ext) {
 // Where frames go: ffmpeg's standard input, or numbered PNG files.
 class FrameSink {
 public:
-    ~FrameSink() { finish(); }
+    ~FrameSink() { finish(false); }  // not finished on purpose: an error, the old video stays
     bool open(const std::string& out, int w, int h, int fps, bool video, std::string& error) {
         m_out = out;
         m_w = w, m_h = h;
         if (!video) return true;
+        // ffmpeg writes a unique temporary beside the real file (links followed), renamed over
+        // it only when the video is whole: a failure keeps the old video.
+        if (!resolveLinks(out, m_target, error)) return false;
+        const size_t slash = m_target.find_last_of('/'), dot = m_target.find_last_of('.');
+        const std::string dir = slash == std::string::npos ? "." : m_target.substr(0, slash);
+        const std::string name = m_target.substr(slash == std::string::npos ? 0 : slash + 1);
+        const std::string ext = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? "" : m_target.substr(dot);
+        std::string tmpl = dir + "/." + name + ".sprout-XXXXXX" + ext;
+        std::vector<char> buf(tmpl.begin(), tmpl.end());
+        buf.push_back('\0');
+        const int tfd = mkstemps(buf.data(), int(ext.size()));
+        if (tfd < 0) {
+            error = std::string("cannot write: ") + std::strerror(errno);
+            return false;
+        }
+        struct stat old{};
+        mode_t mode = 0666;
+        if (::stat(m_target.c_str(), &old) == 0) {
+            mode = old.st_mode & 07777;
+        } else {
+            const mode_t mask = ::umask(0);
+            ::umask(mask);
+            mode &= ~mask;
+        }
+        (void)::fchmod(tfd, mode);
+        ::close(tfd);
+        m_temp = buf.data();
         int fds[2];
         if (pipe(fds) != 0) {
             error = std::string("cannot start ffmpeg: ") + std::strerror(errno);
@@ -45,7 +75,7 @@ public:
             close(fds[1]);
             const char* argv[] = {"ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgba", "-s", size.c_str(),
                                   "-r", rate.c_str(), "-i", "-", "-c:v", "libx264", "-preset", "medium", "-crf", "20",
-                                  "-pix_fmt", "yuv420p", "-movflags", "+faststart", out.c_str(), nullptr};
+                                  "-pix_fmt", "yuv420p", "-movflags", "+faststart", m_temp.c_str(), nullptr};
             execvp("ffmpeg", const_cast<char* const*>(argv));
             _exit(127);
         }
@@ -84,19 +114,22 @@ public:
         }
         return true;
     }
-    // Waits for ffmpeg; false when it failed.
-    bool finish() {
+    // Waits for ffmpeg; false when it failed. The video replaces the target only when whole.
+    bool finish(bool keep = true) {
         if (m_pipe >= 0) close(m_pipe), m_pipe = -1;
         if (m_pid <= 0) return true;
         int status = 0;
         waitpid(m_pid, &status, 0);
         m_pid = -1;
-        return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        const bool ok = keep && WIFEXITED(status) && WEXITSTATUS(status) == 0 && ::rename(m_temp.c_str(), m_target.c_str()) == 0;
+        if (!ok) ::unlink(m_temp.c_str());
+        m_temp.clear();
+        return ok;
     }
     const std::string& first() const { return m_first; }
 
 private:
-    std::string m_out, m_first;
+    std::string m_out, m_first, m_target, m_temp;
     int m_w = 0, m_h = 0, m_pipe = -1;
     pid_t m_pid = -1;
 };

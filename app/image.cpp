@@ -2,6 +2,8 @@
 
 #include <png.h>
 
+#include "core/io/atomic_file.hpp"
+
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -26,12 +28,11 @@ void onWarning(png_structp, png_const_charp) {}
 }  // namespace
 
 bool writePng(const std::string& path, const Image& image, std::string& error) {
-    File file;
-    // Write next to the target and rename, so a failed write never leaves half a file.
-    const std::string tmp = path + ".tmp";
-    file.f = std::fopen(tmp.c_str(), "wb");
-    if (!file.f) {
-        error = std::string("cannot write: ") + std::strerror(errno);
+    // Through the atomic writer: a failed write never leaves half a file, a link is followed,
+    // a FIFO or "-" is written directly (core/io/atomic_file.hpp).
+    AtomicFile file;
+    if (!file.open(path, error)) {
+        error = "cannot write: " + error;
         return false;
     }
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, onError, onWarning);
@@ -44,10 +45,15 @@ bool writePng(const std::string& path, const Image& image, std::string& error) {
     std::vector<png_text> texts;
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        std::remove(tmp.c_str());
-        return false;
+        return false;  // the AtomicFile removes its temporary
     }
-    png_init_io(png, file.f);
+    png_set_write_fn(
+        png, &file,
+        [](png_structp p, png_bytep data, png_size_t n) {
+            auto* f = static_cast<AtomicFile*>(png_get_io_ptr(p));
+            if (!f->write(data, n)) png_error(p, ("cannot write: " + f->error()).c_str());
+        },
+        [](png_structp) {});
     png_set_IHDR(png, info, png_uint_32(image.width), png_uint_32(image.height), 8, PNG_COLOR_TYPE_RGB_ALPHA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     for (const auto& [key, value] : image.text) {
@@ -67,16 +73,8 @@ bool writePng(const std::string& path, const Image& image, std::string& error) {
     png_write_image(png, rows.data());
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fflush(file.f) != 0 || std::fclose(file.f) != 0) {
-        file.f = nullptr;
-        error = std::string("cannot write: ") + std::strerror(errno);
-        std::remove(tmp.c_str());
-        return false;
-    }
-    file.f = nullptr;
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        error = std::string("cannot write: ") + std::strerror(errno);
-        std::remove(tmp.c_str());
+    if (!file.commit(error)) {
+        error = "cannot write: " + error;
         return false;
     }
     return true;

@@ -16,7 +16,7 @@
 namespace sprout::cli {
 
 int runExport(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--quiet"}, {"-o", "-n", "--seed", "--sides", "--max-modules"});
+    Args args(argc, argv, 1, {"--quiet"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto sides = args.integer("--sides", 3, 64);
@@ -24,13 +24,20 @@ int runExport(int argc, char** argv) {
     std::string problem = args.error();
     if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
         problem = "expects one FILE or PRESET and -o OUT";
+    // `-o -` writes to standard output, in the --format given (glb by default).
     std::optional<exporter::Format> format;
-    if (problem.empty() && !(format = exporter::formatFromPath(*args.value("-o"))))
-        problem = "cannot tell the format of " + *args.value("-o") + ": use .glb, .obj, .ply or .svg";
+    if (problem.empty() && args.value("--format")) {
+        if (!(format = exporter::formatFromPath("x." + *args.value("--format"))))
+            problem = "unknown --format " + *args.value("--format") + ": use glb, obj, ply or svg";
+    } else if (problem.empty() && *args.value("-o") == "-") {
+        format = exporter::Format::Glb;
+    } else if (problem.empty() && !(format = exporter::formatFromPath(*args.value("-o")))) {
+        problem = "cannot tell the format of " + *args.value("-o") + ": use .glb, .obj, .ply or .svg (or --format)";
+    }
     if (!problem.empty()) {
         std::cerr << "sprout export: " << problem
-                  << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg [-n N] [--seed S] [--sides K]"
-                     " [--quiet]\n";
+                  << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg|- [--format glb|obj|ply|svg] [-n N]"
+                     " [--seed S] [--sides K] [--quiet]\n";
         return 2;
     }
     const std::string source = args.positionals()[0], out = *args.value("-o");
@@ -86,10 +93,10 @@ int runExport(int argc, char** argv) {
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!args.flag("--quiet")) {
         if (*format == exporter::Format::Svg)
-            std::printf("%s: %zu segments, %zu filled triangles, %.1f KB in %.2f s\n", out.c_str(), geometry.cylinders.size(),
+            std::fprintf(out == "-" ? stderr : stdout, "%s: %zu segments, %zu filled triangles, %.1f KB in %.2f s\n", out.c_str(), geometry.cylinders.size(),
                         st.triangles, double(st.bytes) / 1024, secs);
         else
-            std::printf("%s: %zu segments as %zu tubes, %zu surfaces; %zu triangles, %zu vertices, %zu materials; %.1f MB in %.2f s\n",
+            std::fprintf(out == "-" ? stderr : stdout, "%s: %zu segments as %zu tubes, %zu surfaces; %zu triangles, %zu vertices, %zu materials; %.1f MB in %.2f s\n",
                         out.c_str(), geometry.cylinders.size(), st.stems, geometry.surfaces.size(), st.triangles, st.vertices,
                         st.materials, double(st.bytes) / (1 << 20), secs);
     }

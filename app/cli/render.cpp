@@ -29,6 +29,10 @@
 namespace sprout::cli {
 namespace {
 
+// What a command says about its work goes to standard output, unless the picture itself does
+// (`-o -`): then to standard error, so that `sprout render koch -o - | display` gets a PNG.
+std::FILE* info(const std::string& out) { return out == "-" ? stderr : stdout; }
+
 bool parseSize(const std::string& s, int& w, int& h) {
     int a = 0, b = 0;
     char x = 0, extra = 0;
@@ -105,7 +109,7 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
         std::cerr << out << ": " << error << "\n";
         return 1;
     }
-    if (stats) std::printf("%s: %s points of the chaos game in %.0f ms\n", out.c_str(), withThousands(ifs.points).c_str(), ms);
+    if (stats) std::fprintf(info(out), "%s: %s points of the chaos game in %.0f ms\n", out.c_str(), withThousands(ifs.points).c_str(), ms);
     return 0;
 }
 
@@ -161,7 +165,7 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
         return 1;
     }
     if (stats)
-        std::printf("%s: %d plants, %d grasses, %s segments; built in %.0f ms, rendered in %.0f ms\n", out.c_str(), fs.plants,
+        std::fprintf(info(out), "%s: %d plants, %d grasses, %s segments; built in %.0f ms, rendered in %.0f ms\n", out.c_str(), fs.plants,
                     fs.grasses, withThousands(fs.segments).c_str(), buildMs, shot.renderMs);
     return 0;
 }
@@ -273,7 +277,7 @@ int runRender(int argc, char** argv) {
         }
         if (!ar.note.empty()) std::cerr << out << ": " << ar.note << "\n";
         double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::printf("%s: %d frames%s in %.1f s\n", ar.video ? out.c_str() : ar.firstFrame.c_str(), ar.frames,
+        std::fprintf(info(out), "%s: %d frames%s in %.1f s\n", ar.video ? out.c_str() : ar.firstFrame.c_str(), ar.frames,
                     ar.video ? "" : " (numbered PNG files)", secs);
         return 0;
     }
@@ -292,7 +296,7 @@ int runRender(int argc, char** argv) {
         return 1;
     }
     if (args.flag("--stats"))
-        std::printf("%s: %zu segments (%s), %zu surfaces, %zu triangles; derive %.1f ms, interpret %.1f ms, "
+        std::fprintf(info(out), "%s: %zu segments (%s), %zu surfaces, %zu triangles; derive %.1f ms, interpret %.1f ms, "
                     "render %.1f ms\n",
                     out.c_str(), shot.stats.cylinders,
                     shot.stats.curve ? "2D curve"

@@ -8,23 +8,24 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "app/export/scene.hpp"
 #include "app/export/svg.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace sprout::exporter {
 namespace {
 
-// Buffered output that remembers the first failure.
+// Buffered output that remembers the first failure, streamed into an AtomicFile: a full disk
+// or a failed write leaves the old file and no partial one.
 class Out {
 public:
-    explicit Out(const std::string& path) : m_path(path), m_file(std::fopen(path.c_str(), "wb")) {
-        if (!m_file) m_error = std::strerror(errno);
+    explicit Out(const std::string& path) {
+        std::string error;
+        if (!m_file.open(path, error)) m_error = error;
         m_buffer.reserve(kBuffer);
-    }
-    ~Out() {
-        if (m_file) std::fclose(m_file);
     }
     bool ok() const { return m_error.empty(); }
     const std::string& error() const { return m_error; }
@@ -51,10 +52,18 @@ public:
         auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
         write(tmp, std::size_t(r.ptr - tmp));
     }
+    // Writes what is buffered; the file becomes the target's only with commit().
     bool close() {
         flush();
-        if (m_file && std::fclose(m_file) != 0 && m_error.empty()) m_error = std::strerror(errno);
-        m_file = nullptr;
+        return ok();
+    }
+    bool commit() {
+        if (!close()) {
+            m_file.abort();
+            return false;
+        }
+        std::string error;
+        if (!m_file.commit(error)) m_error = error;
         return ok();
     }
 
@@ -65,12 +74,11 @@ private:
         m_buffer.clear();
     }
     void put(const char* p, std::size_t n) {
-        if (!m_file || !n) return;
-        if (std::fwrite(p, 1, n, m_file) != n && m_error.empty()) m_error = std::strerror(errno);
+        if (!m_error.empty() || !n) return;
+        if (!m_file.write(p, n)) m_error = m_file.error();
         m_bytes += n;
     }
-    std::string m_path;
-    std::FILE* m_file;
+    AtomicFile m_file;
     std::string m_error;
     std::vector<char> m_buffer;
     std::uint64_t m_bytes = 0;
@@ -79,7 +87,7 @@ private:
 // Closes the file; the byte count, or the first write error.
 bool finish(Out& out, ExportStats& st, std::string& error) {
     st.bytes = out.bytes();
-    if (out.close()) return true;
+    if (out.commit()) return true;
     error = out.error();
     return false;
 }
@@ -249,10 +257,14 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
 // ----------------------------------------------------------------------------- OBJ + MTL
 bool writeObj(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
-    std::string mtlPath = path.substr(0, path.size() - 4) + ".mtl";
+    // The pair is written into two temporaries and committed together at the end, the MTL
+    // first: a failure leaves both old files. On standard output there is no MTL beside it.
+    const bool toStdout = path == "-";
+    std::string mtlPath = toStdout ? std::string() : path.substr(0, path.size() - 4) + ".mtl";
     std::string mtlName = mtlPath.substr(mtlPath.find_last_of('/') + 1);
-    {
-        Out mtl(mtlPath);
+    std::optional<Out> mtlFile;
+    if (!toStdout) {
+        Out& mtl = mtlFile.emplace(mtlPath);
         std::map<std::pair<std::uint32_t, bool>, bool> seen;
         mtl.text("# " + o.generator + "\n");
         for (const auto& p : scene.primitives) {
@@ -270,7 +282,7 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
         }
     }
     Out out(path);
-    out.text("# " + o.generator + "\nmtllib " + mtlName + "\n");
+    out.text("# " + o.generator + "\n" + (toStdout ? std::string() : "mtllib " + mtlName + "\n"));
     Progress progress(o, scene.primitives, 2);
     std::uint64_t base = 1;  // OBJ counts from 1
     for (const char* part : kParts) {
@@ -305,6 +317,14 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
             });
             base += p.vertices;
         }
+    }
+    if (!out.close()) {
+        error = out.error();
+        return false;
+    }
+    if (mtlFile && !mtlFile->commit()) {
+        error = mtlPath + ": " + mtlFile->error();
+        return false;
     }
     return finish(out, st, error);
 }

@@ -1,5 +1,7 @@
 #include "app/export/svg.hpp"
 
+#include "core/io/atomic_file.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -121,17 +123,7 @@ bool writeSvg(const Geometry& g, const std::string& path, const ExportOptions& o
     st.materials = fills.size();
     s += "</svg>\n";
 
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) {
-        error = std::strerror(errno);
-        return false;
-    }
-    bool ok = std::fwrite(s.data(), 1, s.size(), f) == s.size();
-    ok = std::fclose(f) == 0 && ok;
-    if (!ok) {
-        error = std::strerror(errno);
-        return false;
-    }
+    if (!writeFileAtomically(path, s, error)) return false;
     st.bytes = s.size();
     return true;
 }

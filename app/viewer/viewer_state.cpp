@@ -12,40 +12,15 @@
 
 #include "app/viewer/text_edit.hpp"
 #include "core/import/import.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace sprout::viewer {
 namespace fs = std::filesystem;
 
 bool saveTextAtomically(const fs::path& path, const std::string& text, std::string& error) {
-    const fs::path tmp = path.string() + ".saving";
-    int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) {
-        error = std::strerror(errno);
-        return false;
-    }
-    size_t done = 0;
-    while (done < text.size()) {
-        ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            error = std::strerror(errno);
-            ::close(fd);
-            ::unlink(tmp.c_str());
-            return false;
-        }
-        done += size_t(n);
-    }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) {
-        error = std::strerror(errno);
-        ::unlink(tmp.c_str());
-        return false;
-    }
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
-        error = std::strerror(errno);
-        ::unlink(tmp.c_str());
-        return false;
-    }
-    return true;
+    // A unique temporary beside the real file (a symlinked grammar updates the file it names),
+    // fsync, rename, fsync of the folder (core/io/atomic_file.hpp).
+    return writeFileAtomically(path.string(), text, error);
 }
 
 namespace {

@@ -200,15 +200,22 @@ TEST(ViewerState, AtomicSaveReplacesWholeFiles) {
     std::ifstream in(dir / "a.lsys");
     std::string got((std::istreambuf_iterator<char>(in)), {});
     EXPECT_EQ(got, "second");
-    EXPECT_FALSE(fs::exists(dir / "a.lsys.saving"));
-    // A save that fails (here the temporary file cannot be made) keeps the old file whole
-    // and says why.
-    fs::create_directories(dir / "a.lsys.saving" / "blocker");
-    error.clear();
-    EXPECT_FALSE(saveTextAtomically(dir / "a.lsys", "third", error));
-    EXPECT_FALSE(error.empty());
-    std::ifstream again(dir / "a.lsys");
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), "second");
+    // The temporary has a unique name: nothing is left, and a file of someone else's named
+    // like the old fixed temporary is neither overwritten nor renamed away.
+    for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename(), "a.lsys");
+    std::ofstream(dir / "a.lsys.saving") << "not ours";
+    ASSERT_TRUE(saveTextAtomically(dir / "a.lsys", "third", error)) << error;
+    std::ifstream again(dir / "a.lsys"), theirs(dir / "a.lsys.saving");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), "third");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(theirs), {}), "not ours");
+    // A symlinked grammar: the file it names is saved, the link stays.
+    fs::create_directories(dir / "repo");
+    fs::create_symlink("repo/real.lsys", dir / "link.lsys");
+    ASSERT_TRUE(saveTextAtomically(dir / "link.lsys", "linked", error)) << error;
+    EXPECT_TRUE(fs::is_symlink(dir / "link.lsys"));
+    std::ifstream real(dir / "repo" / "real.lsys");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(real), {}), "linked");
+    // (A save that fails part way keeps the old file: Files.AFullDiskKeepsTheOldFile.)
     // A path in a folder that does not exist: a message, nothing written.
     error.clear();
     EXPECT_FALSE(saveTextAtomically(dir / "missing" / "b.lsys", "x", error));

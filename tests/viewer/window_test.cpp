@@ -129,6 +129,26 @@ TEST(Window, CpfgFileOpensEditsStepsAndSavesInItsOwnSyntax) {
     EXPECT_EQ(text, expected) << "saved in its own syntax, with the slider's value";
 }
 
+// Save as through the viewer script: a symlinked grammar updates the file the link names
+// (the link stays a link), and someone else's file named like a temporary is left alone.
+TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_save_link_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir / "repo");
+    std::ofstream(dir / "repo" / "plant.lsys") << "axiom: F\n";
+    std::ofstream(dir / "repo" / "plant.lsys.tmp") << "not Sprout's";
+    fs::create_symlink("repo/plant.lsys", dir / "link.lsys");
+    std::ofstream(dir / "script.txt") << "text n: 2\\naxiom: F\\nF -> F[+F]F\\n\nwait\nsaveas " << (dir / "link.lsys").string()
+                                     << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb("koch --script " + (dir / "script.txt").string()), 0);
+    EXPECT_TRUE(fs::is_symlink(dir / "link.lsys"));
+    std::ifstream in(dir / "repo" / "plant.lsys");
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), {}), "n: 2\naxiom: F\nF -> F[+F]F\n");
+    std::ifstream other(dir / "repo" / "plant.lsys.tmp");
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(other)), {}), "not Sprout's");
+}
+
 // A screenshot keeps the camera (direction, zoom, target): `sprout render SHOT.png` draws
 // the same view, not the plant framed anew.
 TEST(Window, ScreenshotRendersAgainFromTheSameCamera) {
