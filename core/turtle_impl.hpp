@@ -299,6 +299,7 @@ private:
     // interpretation rule's successor (cpfg's homomorphism, applied once at the leaves).
     void setLeaves();
 
+    [[gnu::noinline]] void walkLeaves(SymbolId s, State& t);
     void walk(SymbolId s, int d, State& t);
 
     void build(SymbolId s, int d);

@@ -1,8 +1,15 @@
 // sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]
 // Prints the derived string of step N: module names concatenated, parameters as
 // name(p1,p2) in shortest round-trip form. The test oracle relies on this format.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <vector>
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
@@ -12,21 +19,94 @@
 namespace sprout::cli {
 namespace {
 
-void writeString(const ModuleString& s, const Alphabet& alphabet) {
-    std::string chunk;
-    chunk.reserve(1 << 20);
-    const double* p = s.params.data();
-    for (SymbolId id : s.symbols) {
-        const SymbolInfo& info = alphabet[id];
-        appendModule(chunk, info, p);
-        p += info.arity;
-        if (chunk.size() >= (1 << 20) - 256) {
-            std::fwrite(chunk.data(), 1, chunk.size(), stdout);
-            chunk.clear();
+// Standard output in large writes from one reusable buffer (no stdio per module).
+class Output {
+public:
+    Output() : m_buffer(kSize) {}
+    char* reserve(std::size_t n) {
+        if (m_used + n > kSize) flush();
+        return m_buffer.data() + m_used;
+    }
+    void commit(std::size_t n) { m_used += n; }
+    void put(const char* p, std::size_t n) {
+        if (n > kSize) {
+            flush();
+            send(p, n);
+            return;
+        }
+        std::memcpy(reserve(n), p, n);
+        m_used += n;
+    }
+    bool flush() {
+        send(m_buffer.data(), m_used);
+        m_used = 0;
+        return m_ok;
+    }
+    static constexpr std::size_t kSize = 4 << 20;
+
+private:
+    void send(const char* p, std::size_t n) {
+        while (n > 0 && m_ok) {
+            const ssize_t w = ::write(STDOUT_FILENO, p, n);
+            if (w < 0 && errno == EINTR) continue;
+            if (w <= 0) {
+                m_ok = false;  // a closed pipe or a full disk: the exit status says so
+                break;
+            }
+            p += w, n -= std::size_t(w);
         }
     }
-    chunk += '\n';
-    std::fwrite(chunk.data(), 1, chunk.size(), stdout);
+    std::vector<char> m_buffer;
+    std::size_t m_used = 0;
+    bool m_ok = true;
+};
+
+// The string as `toString` prints it, at the speed of a table lookup: a string of one-letter
+// modules is one byte per symbol, translated a block at a time; parameters are written with
+// std::to_chars (shortest round-trip form).
+bool writeString(const ModuleString& s, const Alphabet& alphabet) {
+    Output out;
+    const std::size_t N = s.size(), A = alphabet.size();
+    const SymbolId* sym = s.symbols.data();
+    bool oneByte = s.params.empty();
+    std::vector<unsigned char> table(A);
+    for (std::size_t k = 0; k < A && oneByte; ++k) {
+        const std::string& name = alphabet[SymbolId(k)].name;
+        oneByte = name.size() == 1;
+        if (oneByte) table[k] = static_cast<unsigned char>(name[0]);
+    }
+    if (oneByte) {
+        const unsigned char* t = table.data();
+        for (std::size_t i = 0; i < N;) {
+            const std::size_t n = std::min(N - i, Output::kSize);
+            char* dst = out.reserve(n);
+            for (std::size_t k = 0; k < n; ++k) dst[k] = char(t[sym[i + k]]);
+            out.commit(n);
+            i += n;
+        }
+    } else {
+        const double* p = s.params.data();
+        for (std::size_t i = 0; i < N; ++i) {
+            const SymbolInfo& info = alphabet[sym[i]];
+            // Name, '(', up to 32 numbers of at most 24 characters, ',' and ')'.
+            char* dst = out.reserve(info.name.size() + 2 + std::size_t(info.arity) * 26);
+            char* at = dst;
+            std::memcpy(at, info.name.data(), info.name.size());
+            at += info.name.size();
+            if (info.arity) {
+                *at++ = '(';
+                for (int k = 0; k < info.arity; ++k) {
+                    if (k) *at++ = ',';
+                    at = std::to_chars(at, at + 25, p[k]).ptr;
+                }
+                *at++ = ')';
+                p += info.arity;
+            }
+            out.commit(std::size_t(at - dst));
+        }
+    }
+    out.put("\n", 1);
+    return out.flush();
 }
 
 void printStats(Derivation& d, int n, const std::string& name) {
@@ -75,7 +155,7 @@ int runExpand(int argc, char** argv) {
         return 1;
     }
     if (args.flag("--stats")) printStats(derivation, steps, loaded->displayName);
-    else writeString(*derivation.step(steps), loaded->grammar->alphabet);
+    else if (!writeString(*derivation.step(steps), loaded->grammar->alphabet)) return 1;
     return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
