@@ -35,9 +35,10 @@ int main() {
             return 1;
         }
         viewer::ViewerState state(dir);
-        state.worker().prepare = [](const Geometry& g) -> std::shared_ptr<const void> {
+        state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
+        const Geometry& g = *owner;
             auto p = std::make_shared<render::PreparedScene>();
-            render::Renderer::prepare(g, g.cylinders.size() > 20000 ? render::Quality::Interactive : render::Quality::Still, *p);
+            render::Renderer::prepare(g, g.cylinders.size() > 20000 ? render::Quality::Interactive : render::Quality::Still, *p, owner);
             return p;
         };
         state.openText("n: 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");

@@ -1,5 +1,7 @@
 #include "app/render/renderer.hpp"
 
+#include "app/render/curve_raster.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -27,7 +29,11 @@ constexpr float kLevelThreshold[3] = {1.0f / 100, 1.0f / 300, 1.0f / 900};  // f
 // Interactive detail (the window while editing a big plant) trades roundness for speed:
 // every triangle costs llvmpipe ~0.2 us of single-threaded setup.
 constexpr float kInteractiveScale = 3.0f;
-constexpr std::size_t kVertexBudget = 6'000'000;  // ~170 MB baked; past it, thresholds rise
+constexpr std::size_t kVertexBudget = 6'000'000;
+// Planar curves with more segments than this are rasterised on the CPU (curve_raster.hpp):
+// below it every preset keeps its ribbons, pixel for pixel; above it a ribbon per segment
+// costs far more than the picture (the quadratic Gosper curve n=5: 9.8 M ribbons, 5.6 s).
+constexpr std::size_t kRasterCurveSegments = 200'000;  // ~170 MB baked; past it, thresholds rise
 
 void setUniform(GLuint p, const char* name, const glm::mat4& m) {
     glUniformMatrix4fv(glGetUniformLocation(p, name), 1, GL_FALSE, glm::value_ptr(m));
@@ -45,7 +51,9 @@ struct Buffers {
 
 struct Renderer::Impl {
     GLuint bakedProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
-           groundProgram = 0;
+           groundProgram = 0, curveRasterProgram = 0, coverageTexture = 0;
+    std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
+    std::vector<std::uint8_t> coverage;
     Buffers baked, lines, curveQuad, groundQuad;
     GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
@@ -67,9 +75,18 @@ struct Renderer::Impl {
             {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
             {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
             {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
+            {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         };
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
+
+        glGenTextures(1, &coverageTexture);
+        glBindTexture(GL_TEXTURE_2D, coverageTexture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
 
         // Baked triangles: position, normal, colour (polygon.vert's layout).
         glGenVertexArrays(1, &baked.vao);
@@ -254,7 +271,7 @@ const UnitMeshes& unitMeshes() {
 
 }  // namespace
 
-void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out) {
+void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, std::shared_ptr<const Geometry> owner) {
     const UnitMeshes& meshes = unitMeshes();
     out = PreparedScene();
     out.bounds = g.bounds;
@@ -264,7 +281,11 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out) {
     BakedMesh& b = out.baked;
     const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
     const float extent = std::max({size.x, size.y, size.z, 1e-6f});
-    if (g.planarCurve) {
+    if (g.planarCurve && g.cylinders.size() > kRasterCurveSegments) {
+        // A big curve: rasterised from its segments at the size of the picture when drawn,
+        // never copied (9.8 M segments are 390 MB).
+        out.curveGeometry = owner ? std::move(owner) : std::shared_ptr<const Geometry>(&g, [](const Geometry*) {});
+    } else if (g.planarCurve) {
         // A curve: every segment a screen-space ribbon.
         out.curve.assign(g.cylinders.begin(), g.cylinders.end());
     } else {
@@ -350,6 +371,7 @@ void Renderer::upload(const PreparedScene& p) {
     s.bounds = p.bounds;
     s.planarCurve = p.planarCurve;
     s.curveCount = p.curve.size();
+    s.rasterCurve = p.curveGeometry;
     if (s.curveCount) {
         glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(s.curveCount * sizeof(CylinderInstance)), p.curve.data(), GL_STATIC_DRAW);
@@ -450,6 +472,29 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glDisable(GL_BLEND);
     }
 
+    if (curve && s.rasterCurve) {
+        // A big curve rasterised on the CPU at this size, blended in as ink.
+        rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), viewProj, width, height,
+                       std::max(1.5f, float(height) / 400.0f), s.coverage);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, s.coverage.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glUseProgram(s.curveRasterProgram);
+        setUniform(s.curveRasterProgram, "uCoverage", 1);
+        setUniform(s.curveRasterProgram, "uInk", o.curveInk);
+        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glBindVertexArray(s.emptyVao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glDisable(GL_BLEND);
+        glEnable(GL_DEPTH_TEST);
+        glActiveTexture(GL_TEXTURE0);
+        stats.triangles += 2;
+        stats.curve = true;
+    }
     if (curve && s.curveCount) {
         const GLuint p = s.curveProgram;
         glUseProgram(p);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "app/render/bake.hpp"
 #include "app/render/camera.hpp"
 #include "core/geometry.hpp"
@@ -48,6 +50,10 @@ struct PreparedScene {
     BakedMesh baked;                     // stems, leaves, petals, spheres, polygons
     std::vector<float> lines;            // the thinnest stems: x y z colour, two per line
     std::vector<CylinderInstance> curve; // planar curves: ribbons drawn from these
+    // A big planar curve (over 200 k segments): drawn from the geometry's own segments,
+    // rasterised on the CPU at the picture's size instead of a ribbon per segment
+    // (app/render/curve_raster.hpp). Shared with the geometry's owner, or borrowed from it.
+    std::shared_ptr<const Geometry> curveGeometry;
     std::size_t levels[4] = {0, 0, 0, 0};
     std::size_t cylinders = 0, surfaces = 0;
     Bounds bounds;
@@ -64,11 +70,15 @@ public:
     // Loads GL through `loader`, compiles the shaders and creates the meshes. Needs a
     // current OpenGL 3.3 core context; false with a message when it cannot.
     bool init(ProcLoader loader, std::string& error);
-    // Copies the plant to the GPU, baked into triangles and lines at the current detail.
+    // Copies the plant to the GPU, baked into triangles and lines at the current detail. A big
+    // planar curve is drawn from `geometry` itself: it must stay alive until the next upload.
     void upload(const Geometry& geometry);
     void upload(const PreparedScene& scene);
     // Bakes a plant at the given detail; thread-safe, no GL.
-    static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out);
+    // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
+    // borrows `geometry`, which must then outlive it.
+    static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out,
+                        std::shared_ptr<const Geometry> owner = {});
     // Detail of the next upload: Interactive draws more thin stems as lines (the window on a
     // big plant); Still (the default) is for pictures.
     void setDetail(Quality detail);

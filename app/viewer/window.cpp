@@ -242,9 +242,10 @@ int runViewer(int argc, char** argv) {
     glfwSetDropCallback(window, onDrop);
     ImGui_ImplOpenGL3_Init("#version 330");
 
-    app.state.worker().prepare = [](const Geometry& g) -> std::shared_ptr<const void> {
+    app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
+        const Geometry& g = *owner;
         auto p = std::make_shared<render::PreparedScene>();
-        render::Renderer::prepare(g, g.cylinders.size() > kBigPlant ? render::Quality::Interactive : render::Quality::Still, *p);
+        render::Renderer::prepare(g, g.cylinders.size() > kBigPlant ? render::Quality::Interactive : render::Quality::Still, *p, owner);
         return p;
     };
     // Forest scenes find their species among the presets and beside the scene's file.

@@ -89,7 +89,7 @@ std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<R
     out->deriveMs = millisSince(t0);
     out->modules = stats.segments;
     out->seed = parsed.forest->seed;
-    if (prepare) out->prepared = prepare(*geometry);
+    if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
     return out;
 }
@@ -185,7 +185,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     }
     interpret(*string, g, t, *geometry);
     out->interpretMs = millisSince(t0);
-    if (prepare) out->prepared = prepare(*geometry);
+    if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
     return out;
 }

@@ -74,7 +74,9 @@ public:
     DeriveLimits limits;  // set before posting
     // Work for the worker after interpretation (the window bakes the plant for drawing here,
     // so a big plant's arrival costs the window only buffer copies); set before posting.
-    std::function<std::shared_ptr<const void>(const Geometry&)> prepare;
+    // Given the geometry's owner: what it prepares may share it (a big planar curve is drawn
+    // from the geometry's own segments).
+    std::function<std::shared_ptr<const void>(const std::shared_ptr<const Geometry>&)> prepare;
     // Where a forest scene's species come from (presets, files); set before posting.
     std::function<std::optional<std::string>(const std::string&)> speciesSource;
 

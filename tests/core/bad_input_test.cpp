@@ -45,7 +45,9 @@ TEST(BadInput, EveryFileGetsItsMessageAtItsPosition) {
         // are .l and .lpy here), #include reads beside it.
         const std::string text = slurp(entry.path());
         const FileKind kind = detectFileKind(entry.path().string(), text);
-        if (ext != ".lsys") EXPECT_EQ(kind, FileKind::Cpfg);
+        if (ext != ".lsys") {
+            EXPECT_EQ(kind, FileKind::Cpfg);
+        }
         ParseResult r = parse(text, parseOptionsFor(kind, entry.path().string()));
         if (where == "ok" || where == "derive") {
             ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics[0].message);

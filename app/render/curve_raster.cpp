@@ -1,0 +1,133 @@
+#include "app/render/curve_raster.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sprout::render {
+
+namespace {
+
+// Four samples per pixel, where a 4x multisampled framebuffer takes them (the standard
+// pattern): a pixel's coverage is the share of its samples inside some segment, the union of
+// all of them, as the ribbons drawn with 4x MSAA give. (Blending per-pixel coverages by their
+// maximum left the inside of a dense curve speckled: two strokes a pixel apart each cover a
+// pixel between them by 75%, together by all of it.)
+constexpr float kSample[4][2] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+
+// One segment, extended by half a width at each end as the ribbons are: the samples within
+// half a width of it.
+void stamp(glm::vec2 a, glm::vec2 b, float half, int w, int h, std::uint8_t* mask) {
+    glm::vec2 d = b - a;
+    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    const glm::vec2 dir = len > 1e-6f ? d / len : glm::vec2(1, 0);
+    a -= dir * half;
+    b += dir * half;
+    d = b - a;
+    const float len2 = d.x * d.x + d.y * d.y, half2 = half * half;
+    const int x0 = std::max(0, int(std::floor(std::min(a.x, b.x) - half)));
+    const int x1 = std::min(w - 1, int(std::floor(std::max(a.x, b.x) + half)));
+    const int y0 = std::max(0, int(std::floor(std::min(a.y, b.y) - half)));
+    const int y1 = std::min(h - 1, int(std::floor(std::max(a.y, b.y) + half)));
+    for (int y = y0; y <= y1; ++y) {
+        std::uint8_t* row = mask + std::size_t(y) * std::size_t(w);
+        for (int x = x0; x <= x1; ++x) {
+            if (row[x] == 15) continue;  // every sample already inked: dense curves fill up early
+            std::uint8_t bits = 0;
+            for (int k = 0; k < 4; ++k) {
+                const float px = float(x) + kSample[k][0], py = float(y) + kSample[k][1];
+                float t = len2 > 0 ? ((px - a.x) * d.x + (py - a.y) * d.y) / len2 : 0.0f;
+                t = std::clamp(t, 0.0f, 1.0f);
+                const float qx = a.x + d.x * t - px, qy = a.y + d.y * t - py;
+                if (qx * qx + qy * qy <= half2) bits |= std::uint8_t(1u << k);
+            }
+            row[x] |= bits;
+        }
+    }
+}
+
+// A short chord (up to 1.25 pixels, the common case in a dense curve) is stamped as a round
+// dot at its middle from a table of 5 x 5 sample masks per eighth of a pixel: no geometry per
+// pixel (measured: 3x faster than the exact stamp on the quadratic Gosper curve n=5).
+class DotStamps {
+public:
+    explicit DotStamps(float radius) {
+        for (int fy = 0; fy < 8; ++fy)
+            for (int fx = 0; fx < 8; ++fx)
+                for (int y = 0; y < 5; ++y)
+                    for (int x = 0; x < 5; ++x) {
+                        const float cx = 2.0f + float(fx) / 8.0f, cy = 2.0f + float(fy) / 8.0f;
+                        std::uint8_t bits = 0;
+                        for (int k = 0; k < 4; ++k) {
+                            const float dx = float(x) + kSample[k][0] - cx, dy = float(y) + kSample[k][1] - cy;
+                            if (dx * dx + dy * dy <= radius * radius) bits |= std::uint8_t(1u << k);
+                        }
+                        m_table[fy][fx][y][x] = bits;
+                    }
+    }
+    // False when the dot would cross the image's border (the exact stamp does it then).
+    bool stamp(glm::vec2 centre, int w, int h, std::uint8_t* mask) const {
+        const float ix = std::floor(centre.x), iy = std::floor(centre.y);
+        const int x0 = int(ix) - 2, y0 = int(iy) - 2;
+        if (x0 < 0 || y0 < 0 || x0 + 5 > w || y0 + 5 > h) return false;
+        const int fx = std::min(7, int((centre.x - ix) * 8.0f)), fy = std::min(7, int((centre.y - iy) * 8.0f));
+        const std::uint8_t(&k)[5][5] = m_table[fy][fx];
+        for (int y = 0; y < 5; ++y) {
+            std::uint8_t* row = mask + std::size_t(y0 + y) * std::size_t(w) + std::size_t(x0);
+            for (int x = 0; x < 5; ++x) row[x] |= k[y][x];
+        }
+        return true;
+    }
+
+private:
+    std::uint8_t m_table[8][8][5][5];
+};
+
+}  // namespace
+
+void rasterizeCurve(const CylinderInstance* segs, std::size_t count, const glm::mat4& viewProj, int w, int h,
+                    float lineWidth, std::vector<std::uint8_t>& coverage) {
+    coverage.assign(std::size_t(w) * std::size_t(h), 0);
+    const float half = lineWidth * 0.5f;
+    // World (x, y, 0) to pixels: the orthographic camera of a planar curve is an affine map.
+    const float ax = viewProj[0][0] * 0.5f * float(w), bx = viewProj[1][0] * 0.5f * float(w),
+                cx = (viewProj[3][0] * 0.5f + 0.5f) * float(w);
+    const float ay = viewProj[0][1] * 0.5f * float(h), by = viewProj[1][1] * 0.5f * float(h),
+                cy = (viewProj[3][1] * 0.5f + 0.5f) * float(h);
+    auto toPixel = [&](const glm::vec3& p) { return glm::vec2(ax * p.x + bx * p.y + cx, ay * p.x + by * p.y + cy); };
+    constexpr float kMerge2 = 0.75f * 0.75f;
+    // A dot for a chord of about a pixel: half the width, and half the chord on each side.
+    const DotStamps dots(std::min(half + 0.25f, 2.4f));
+    auto chord = [&](glm::vec2 a, glm::vec2 b) {
+        const glm::vec2 d = b - a;
+        if (d.x * d.x + d.y * d.y <= 1.25f * 1.25f && dots.stamp((a + b) * 0.5f, w, h, coverage.data())) return;
+        stamp(a, b, half, w, h, coverage.data());
+    };  // merge what is shorter than three quarters of a pixel
+    glm::vec2 kept(0), pending(0);
+    glm::vec3 lastWorld(0);
+    bool open = false, hasPending = false;
+    for (std::size_t i = 0; i < count; ++i) {
+        const CylinderInstance& c = segs[i];
+        if (!open || c.start != lastWorld) {  // a new polyline: the turtle moved without drawing
+            if (open && hasPending) chord(kept, pending);
+            kept = toPixel(c.start);
+            open = true;
+            hasPending = false;
+        }
+        const glm::vec2 p = toPixel(c.end);
+        lastWorld = c.end;
+        const glm::vec2 d = p - kept;
+        if (d.x * d.x + d.y * d.y < kMerge2) {  // still within 3/4 pixel of the last point kept
+            pending = p;
+            hasPending = true;
+            continue;
+        }
+        chord(kept, p);
+        kept = p;
+        hasPending = false;
+    }
+    if (open && hasPending) chord(kept, pending);
+    // Sample masks to coverage.
+    for (std::uint8_t& m : coverage) m = std::uint8_t((__builtin_popcount(m) * 255 + 2) / 4);
+}
+
+}  // namespace sprout::render

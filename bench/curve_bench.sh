@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# A big planar curve costs what its picture costs: `sprout render` of the quadratic Gosper
+# curve (ABOP 1.11b) at n=5 (9.8 M segments) against n=3 (15.6 k segments), 640x480, as whole
+# processes; best of 5 wall-clock runs each, peak memory of the big one.
+# Bars: ratio <= 3, peak memory <= 600 MB.
+#
+#   bench/curve_bench.sh     (after scripts/setup.sh; uses GNU time, Debian's `time` package)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sprout=build/sprout
+[ -x "$sprout" ] || { echo "build first: scripts/setup.sh" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "needs GNU time: apt-get install time" >&2; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+run() {  # n -> "best_seconds peak_kb"
+  local best=999 peak=0 line s kb
+  for _ in 1 2 3 4 5; do
+    line=$(/usr/bin/time -f "%e %M" "$sprout" render quadratic_gosper_1_11b -n "$1" --size 640x480 -o "$work/c.png" 2>&1 >/dev/null | tail -1)
+    s=${line% *}; kb=${line#* }
+    best=$(awk -v a="$best" -v b="$s" 'BEGIN { print (b < a ? b : a) }')
+    (( kb > peak )) && peak=$kb
+  done
+  echo "$best $peak"
+}
+read -r small smallKb <<<"$(run 3)"
+read -r big bigKb <<<"$(run 5)"
+awk -v s="$small" -v b="$big" -v m="$bigKb" 'BEGIN {
+  printf "curve_bench: quadratic Gosper n=5 (9.8 M segments) %.2f s, n=3 (15.6 k segments) %.2f s: ratio %.2f (bar <= 3); peak memory %.0f MB (bar <= 600)\n", b, s, b / s, m / 1024;
+  exit !(b / s <= 3 && m / 1024 <= 600) }'
