@@ -1,6 +1,7 @@
 #pragma once
 // Internals of parse(), shared by parser.cpp (lines, rules, module sequences) and
 // directives.cpp (the `key: value` table).
+#include <array>
 #include <deque>
 #include <functional>
 #include <string>
@@ -50,6 +51,7 @@ public:
     void declareModules(const SourceLine& line, std::string_view names);
     void define(const SourceLine& line, std::string_view text);
     void setAxiom(const SourceLine& line, std::string_view text);
+    bool setPlainAxiom(const SourceLine& line, std::string_view text);  // no parameters: the fast way
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
@@ -107,6 +109,8 @@ private:
     std::string m_original;
     std::vector<Line> m_lines;
     std::vector<std::string> m_moduleNames;  // declared multi-letter names, longest first
+    std::array<bool, 256> m_nameStart{};      // first bytes of those names: others are one character
+    void indexModuleNames();
     DiagnosticSink m_sink;
     Grammar m_g;
     std::optional<Rng> m_rng;  // rand() outside rules
