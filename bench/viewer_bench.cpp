@@ -50,26 +50,36 @@ int main() {
         state.setText("n: 10\nangle: 22.5\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");  // 6.46 M modules
         editMs = ms(Clock::now() - e0);
         worst = editMs;
+        // As the window does: the plant goes to the GPU a piece per frame (8 MB), the frames
+        // go on until it is whole; every frame counts, the pieces' included.
+        constexpr std::size_t kPiece = 8u << 20;
+        bool arrivedOnce = false;
+        int uploadFrames = 0;
         while (true) {
             auto f0 = Clock::now();
             bool arrived = state.update();
-            if (arrived) renderer.upload(*static_cast<const render::PreparedScene*>(state.plant()->prepared.get()));
+            if (arrived)
+                renderer.beginUpload(std::static_pointer_cast<const render::PreparedScene>(state.plant()->prepared), kPiece);
+            if (renderer.uploading()) {
+                renderer.continueUpload(kPiece);
+                ++uploadFrames;
+            }
             state.tick(1.0 / 60);
             state.autosave();
             double f = ms(Clock::now() - f0);
             worst = std::max(worst, f);
             ++frames;
-            if (arrived) {
-                arrivalMs = f;
-                break;
-            }
+            if (arrived) arrivalMs = f;
+            arrivedOnce |= arrived;
+            if (arrivedOnce && !renderer.uploading()) break;
             std::this_thread::sleep_until(f0 + std::chrono::microseconds(16667));
         }
         double total = ms(Clock::now() - t0);
         std::printf("UI frames while deriving %s modules (%s segments; %.0f ms in the background): %d frames, worst %.2f ms "
-                    "(the edit itself %.3f ms, the arrival with its upload %.2f ms); budget 16 ms, worst/budget %.2f\n",
+                    "(the edit itself %.3f ms, the arrival frame %.2f ms, the upload in %d frames of 8 MB); budget 16 ms, "
+                    "worst/budget %.2f\n",
                     withThousands(state.plant()->modules).c_str(), withThousands(state.plant()->geometry->cylinders.size()).c_str(),
-                    total, frames, worst, editMs, arrivalMs, worst / 16.0);
+                    total, frames, worst, editMs, arrivalMs, uploadFrames, worst / 16.0);
     }
     // 2. Keystroke to plant on screen.
     {

@@ -55,6 +55,11 @@ struct Renderer::Impl {
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
     Buffers baked, lines, curveQuad, groundQuad;
+    Buffers bakedBack, linesBack;  // filled by a staged upload, then swapped in
+    // A staged upload: the scene, and how many of its bytes (vertices, indices, lines, in that
+    // order) are on the GPU so far.
+    std::shared_ptr<const PreparedScene> staging;
+    std::size_t stagedBytes = 0;
     GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
     GLuint msaaFbo = 0, msaaColour = 0, msaaDepth = 0;
@@ -66,6 +71,36 @@ struct Renderer::Impl {
     Bounds bounds;
     bool planarCurve = false;
     Quality detail = Quality::Still;
+
+    // Baked triangles: position, normal, colour (polygon.vert's layout).
+    static void makeBaked(Buffers& b) {
+        glGenVertexArrays(1, &b.vao);
+        glBindVertexArray(b.vao);
+        glGenBuffers(1, &b.vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+        const GLsizei bs = sizeof(BakedVertex);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, position)));
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, normal)));
+        glEnableVertexAttribArray(2);
+        glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, colour)));
+        glGenBuffers(1, &b.ebo);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
+        glBindVertexArray(0);
+    }
+    // Lines: position, colour.
+    static void makeLines(Buffers& b) {
+        glGenVertexArrays(1, &b.vao);
+        glBindVertexArray(b.vao);
+        glGenBuffers(1, &b.vbo);
+        glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 16, reinterpret_cast<void*>(12));
+        glBindVertexArray(0);
+    }
 
     bool build(std::string& error) {
         struct P {
@@ -88,32 +123,10 @@ struct Renderer::Impl {
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glBindTexture(GL_TEXTURE_2D, 0);
 
-        // Baked triangles: position, normal, colour (polygon.vert's layout).
-        glGenVertexArrays(1, &baked.vao);
-        glBindVertexArray(baked.vao);
-        glGenBuffers(1, &baked.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, baked.vbo);
-        const GLsizei bs = sizeof(BakedVertex);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, position)));
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, normal)));
-        glEnableVertexAttribArray(2);
-        glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, colour)));
-        glGenBuffers(1, &baked.ebo);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, baked.ebo);
-        glBindVertexArray(0);
-
-        // Lines: position, colour.
-        glGenVertexArrays(1, &lines.vao);
-        glBindVertexArray(lines.vao);
-        glGenBuffers(1, &lines.vbo);
-        glBindBuffer(GL_ARRAY_BUFFER, lines.vbo);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 16, nullptr);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 16, reinterpret_cast<void*>(12));
-        glBindVertexArray(0);
+        // Two sets of baked and line buffers: the one on screen, and the one a staged upload
+        // fills a piece per frame (beginUpload) before they swap.
+        for (Buffers* b : {&baked, &bakedBack}) makeBaked(*b);
+        for (Buffers* b : {&lines, &linesBack}) makeLines(*b);
 
         // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
         // of quads (their width is in pixels, so they cannot be baked).
@@ -368,6 +381,20 @@ void Renderer::upload(const Geometry& g) {
 
 void Renderer::upload(const PreparedScene& p) {
     Impl& s = *m;
+    s.staging.reset();  // a whole upload replaces any staged one
+    glBindVertexArray(s.baked.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(p.baked.indices.size() * 4), p.baked.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, s.lines.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.lines.size() * 4), p.lines.data(), GL_STATIC_DRAW);
+    adopt(p);
+}
+
+// Everything of a scene but its baked and line buffers: bounds, curves, counts, statistics.
+void Renderer::adopt(const PreparedScene& p) {
+    Impl& s = *m;
     s.bounds = p.bounds;
     s.planarCurve = p.planarCurve;
     s.curveCount = p.curve.size();
@@ -376,19 +403,72 @@ void Renderer::upload(const PreparedScene& p) {
         glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(s.curveCount * sizeof(CylinderInstance)), p.curve.data(), GL_STATIC_DRAW);
     }
-    glBindVertexArray(s.baked.vao);
-    glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(p.baked.indices.size() * 4), p.baked.indices.data(), GL_STATIC_DRAW);
-    glBindVertexArray(0);
     s.bakedIndices = p.baked.indices.size();
     s.lineCount = p.lines.size() / 8;
-    glBindBuffer(GL_ARRAY_BUFFER, s.lines.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.lines.size() * 4), p.lines.data(), GL_STATIC_DRAW);
     m_stats = {};
     m_stats.cylinders = p.cylinders;
     m_stats.surfaces = p.surfaces;
     for (int l = 0; l < 4; ++l) m_stats.levels[l] = p.levels[l];
+}
+
+bool Renderer::beginUpload(std::shared_ptr<const PreparedScene> p, std::size_t bytesPerFrame) {
+    Impl& s = *m;
+    const std::size_t vb = p->baked.vertices.size() * sizeof(BakedVertex), ib = p->baked.indices.size() * 4,
+                      lb = p->lines.size() * 4;
+    if (vb + ib + lb <= bytesPerFrame) {  // small: at once
+        upload(*p);
+        return true;
+    }
+    // The back buffers get their size now and their bytes a piece per frame; the scene on
+    // screen is drawn meanwhile.
+    glBindVertexArray(s.bakedBack.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s.bakedBack.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vb), nullptr, GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(ib), nullptr, GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, s.linesBack.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lb), nullptr, GL_STATIC_DRAW);
+    s.staging = std::move(p);
+    s.stagedBytes = 0;
+    return false;
+}
+
+bool Renderer::uploading() const { return m->staging != nullptr; }
+
+bool Renderer::continueUpload(std::size_t bytes) {
+    Impl& s = *m;
+    if (!s.staging) return true;
+    const PreparedScene& p = *s.staging;
+    struct Part {
+        GLenum target;
+        GLuint vao, buffer;
+        const void* data;
+        std::size_t size;
+    } parts[] = {
+        {GL_ARRAY_BUFFER, s.bakedBack.vao, s.bakedBack.vbo, p.baked.vertices.data(), p.baked.vertices.size() * sizeof(BakedVertex)},
+        {GL_ELEMENT_ARRAY_BUFFER, s.bakedBack.vao, s.bakedBack.ebo, p.baked.indices.data(), p.baked.indices.size() * 4},
+        {GL_ARRAY_BUFFER, 0, s.linesBack.vbo, p.lines.data(), p.lines.size() * 4},
+    };
+    std::size_t base = 0;
+    for (const Part& part : parts) {
+        const std::size_t from = s.stagedBytes > base ? s.stagedBytes - base : 0;
+        if (bytes > 0 && from < part.size) {
+            const std::size_t n = std::min(bytes, part.size - from);
+            glBindVertexArray(part.vao);  // the element buffer is the vertex array's
+            glBindBuffer(part.target, part.buffer);
+            glBufferSubData(part.target, GLintptr(from), GLsizeiptr(n), static_cast<const char*>(part.data) + from);
+            glBindVertexArray(0);
+            s.stagedBytes += n;
+            bytes -= n;
+        }
+        base += part.size;
+    }
+    if (s.stagedBytes < base) return false;
+    std::swap(s.baked, s.bakedBack);
+    std::swap(s.lines, s.linesBack);
+    adopt(p);
+    s.staging.reset();
+    return true;
 }
 
 void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,

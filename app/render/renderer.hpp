@@ -74,6 +74,14 @@ public:
     // planar curve is drawn from `geometry` itself: it must stay alive until the next upload.
     void upload(const Geometry& geometry);
     void upload(const PreparedScene& scene);
+    // A big scene a piece per frame, so that no frame waits for all of it (a 1.57 M-segment
+    // plant is some 150 MB of buffers): beginUpload sizes the GPU buffers (and uploads at once
+    // what fits in `bytesPerFrame`; true then), continueUpload copies up to `bytes` more each
+    // frame and swaps the new scene in when it is whole (true). The scene on screen is drawn
+    // until then.
+    bool beginUpload(std::shared_ptr<const PreparedScene> scene, std::size_t bytesPerFrame);
+    bool continueUpload(std::size_t bytes);
+    bool uploading() const;
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.
@@ -94,6 +102,7 @@ public:
     const RenderStats& stats() const { return m_stats; }
 
 private:
+    void adopt(const PreparedScene& scene);
     struct Impl;
     std::unique_ptr<Impl> m;
     RenderStats m_stats;

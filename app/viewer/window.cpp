@@ -37,6 +37,9 @@ render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render:
 
 // Plants with more segments are shown at interactive detail in the window.
 constexpr std::size_t kBigPlant = 20000;
+// Bytes of a big plant's buffers copied to the GPU per frame: a few ms of memory copy on
+// software GL, so a frame with a piece of upload still keeps its 16 ms.
+constexpr std::size_t kUploadBytesPerFrame = 8u << 20;
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
@@ -320,13 +323,20 @@ int runViewer(int argc, char** argv) {
             // Big plants are edited at interactive detail (more thin stems as lines), baked on
             // the worker; screenshots re-upload at full detail.
             app.bigPlant = g.cylinders.size() > kBigPlant;
-            if (auto prepared = app.state.plant()->prepared) app.renderer.upload(*static_cast<const render::PreparedScene*>(prepared.get()));
+            // A big plant goes to the GPU a piece per frame (the plant on screen stays until
+            // the new one is whole), so that its arrival does not cost one long frame.
+            if (auto prepared = app.state.plant()->prepared)
+                app.renderer.beginUpload(std::static_pointer_cast<const render::PreparedScene>(prepared), kUploadBytesPerFrame);
             else app.renderer.upload(g);
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (app.frameOnNextPlant) {
                 app.frame();
                 app.frameOnNextPlant = false;
             }
+            app.needsRedraw = true;
+        }
+        if (app.renderer.uploading()) {
+            app.renderer.continueUpload(kUploadBytesPerFrame);
             app.needsRedraw = true;
         }
         app.state.tick(dt);
