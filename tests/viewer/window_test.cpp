@@ -5,7 +5,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <thread>
 #include <array>
 
 #include "app/image.hpp"
@@ -16,11 +19,11 @@ namespace fs = std::filesystem;
 
 bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
-int runUnderXvfb(const std::string& args) {
+int runUnderXvfb(const std::string& args, const std::string& env = "") {
     fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
     fs::create_directories(home);
     std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" +
-                      home.string() + "/cache timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
+                      home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
                       args + " >/dev/null 2>&1";
     return std::system(cmd.c_str());
 }
@@ -147,6 +150,34 @@ TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
     EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), {}), "n: 2\naxiom: F\nF -> F[+F]F\n");
     std::ifstream other(dir / "repo" / "plant.lsys.tmp");
     EXPECT_EQ(std::string((std::istreambuf_iterator<char>(other)), {}), "not Sprout's");
+}
+
+// A save that fails part way (a full disk: write() fails for Sprout's temporaries, injected
+// with LD_PRELOAD) keeps the old file whole and leaves no temporary; a FIFO is written into.
+TEST(Window, SaveAsOnAFullDiskKeepsTheOldFileAndAFifoIsWrittenInto) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_save_full_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "plant.lsys") << "axiom: F\n";
+    std::ofstream(dir / "script.txt") << "text n: 2\\naxiom: F\\nF -> F[+F]F\\n\nwait\nsaveas " << (dir / "plant.lsys").string()
+                                     << "\nsaveas " << (dir / "pipe.lsys").string() << "\nquit\n";
+    ASSERT_EQ(::mkfifo((dir / "pipe.lsys").c_str(), 0600), 0);
+    std::string fromFifo;
+    std::thread reader([&] {
+        std::ifstream in(dir / "pipe.lsys");
+        fromFifo.assign(std::istreambuf_iterator<char>(in), {});
+    });
+    // The failure applies to files named like Sprout's temporaries: the FIFO is written directly.
+    const int code = runUnderXvfb("koch --script " + (dir / "script.txt").string(),
+                                  "ASAN_OPTIONS=verify_asan_link_order=0:detect_leaks=0 SPROUT_FAIL_WRITES=1 LD_PRELOAD=" SPROUT_FAIL_WRITES_LIB);
+    reader.join();
+    ASSERT_EQ(code, 0);
+    std::ifstream in(dir / "plant.lsys");
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), {}), "axiom: F\n") << "the old file, whole";
+    for (const auto& e : fs::directory_iterator(dir))
+        EXPECT_EQ(e.path().filename().string().find(".sprout-"), std::string::npos) << e.path();
+    EXPECT_EQ(fromFifo, "n: 2\naxiom: F\nF -> F[+F]F\n");
 }
 
 // A screenshot keeps the camera (direction, zoom, target): `sprout render SHOT.png` draws
