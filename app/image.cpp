@@ -51,7 +51,12 @@ bool writePng(const std::string& path, const Image& image, std::string& error) {
         png, &file,
         [](png_structp p, png_bytep data, png_size_t n) {
             auto* f = static_cast<AtomicFile*>(png_get_io_ptr(p));
-            if (!f->write(data, n)) png_error(p, ("cannot write: " + f->error()).c_str());
+            if (!f->write(data, n)) {
+                // png_error does not return: no C++ object may live in this frame.
+                static thread_local char message[256];
+                std::snprintf(message, sizeof message, "cannot write: %s", f->error().c_str());
+                png_error(p, message);
+            }
         },
         [](png_structp) {});
     png_set_IHDR(png, info, png_uint_32(image.width), png_uint_32(image.height), 8, PNG_COLOR_TYPE_RGB_ALPHA,
