@@ -54,6 +54,11 @@ struct Renderer::Impl {
            groundProgram = 0, curveRasterProgram = 0, coverageTexture = 0;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
+    // What the coverage texture holds: a frame with the same curve, view and size (the panel
+    // redrawn, a still window) reuses it instead of rasterising millions of segments again.
+    const Geometry* coverageOf = nullptr;
+    glm::mat4 coverageView{0.0f};
+    int coverageWidth = 0, coverageHeight = 0;
     Buffers baked, lines, curveQuad, groundQuad;
     Buffers bakedBack, linesBack;  // filled by a staged upload, then swapped in
     // A staged upload: the scene, and how many of its bytes (vertices, indices, lines, in that
@@ -399,6 +404,7 @@ void Renderer::adopt(const PreparedScene& p) {
     s.planarCurve = p.planarCurve;
     s.curveCount = p.curve.size();
     s.rasterCurve = p.curveGeometry;
+    s.coverageOf = nullptr;  // a new scene: rasterise again (even at a recycled address)
     if (s.curveCount) {
         glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(s.curveCount * sizeof(CylinderInstance)), p.curve.data(), GL_STATIC_DRAW);
@@ -554,13 +560,20 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
 
     if (curve && s.rasterCurve) {
         // A big curve rasterised on the CPU at this size, blended in as ink.
-        rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), viewProj, width, height,
-                       std::max(1.5f, float(height) / 400.0f), s.coverage);
         glActiveTexture(GL_TEXTURE1);
         glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, s.coverage.data());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        if (s.coverageOf != s.rasterCurve.get() || s.coverageView != viewProj || s.coverageWidth != width ||
+            s.coverageHeight != height) {
+            rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), viewProj, width, height,
+                           std::max(1.5f, float(height) / 400.0f), s.coverage);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, s.coverage.data());
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+            s.coverageOf = s.rasterCurve.get();
+            s.coverageView = viewProj;
+            s.coverageWidth = width;
+            s.coverageHeight = height;
+        }
         glUseProgram(s.curveRasterProgram);
         setUniform(s.curveRasterProgram, "uCoverage", 1);
         setUniform(s.curveRasterProgram, "uInk", o.curveInk);
