@@ -50,16 +50,7 @@ public:
             error = std::string("cannot write: ") + std::strerror(errno);
             return false;
         }
-        struct stat old{};
-        mode_t mode = 0666;
-        if (::stat(m_target.c_str(), &old) == 0) {
-            mode = old.st_mode & 07777;
-        } else {
-            const mode_t mask = ::umask(0);
-            ::umask(mask);
-            mode &= ~mask;
-        }
-        (void)::fchmod(tfd, mode);
+        (void)::fchmod(tfd, mode_t(newFileMode(m_target)));
         ::close(tfd);
         m_temp = buf.data();
         int fds[2];

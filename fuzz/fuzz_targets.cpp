@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -21,17 +22,26 @@ namespace {
 
 using namespace sprout;
 
-// Derives a few steps under a small size cap and draws the result: what the viewer does on
-// every keystroke, bounded so that the fuzzer stays fast.
-[[maybe_unused]] void deriveAndDraw(const std::string& text, int maxSteps) {
-    ParseResult r = parse(text);
-    if (!r.ok()) return;
+// Derives a few steps under a small size cap, as the viewer does on every keystroke, bounded
+// so that the fuzzer stays fast; null when the text does not parse or derive.
+[[maybe_unused]] std::unique_ptr<Derivation> deriveSome(ParseResult& r, int maxSteps, int& n) {
+    if (!r.ok()) return nullptr;
     DeriveOptions o;
     o.limits.maxModules = 200'000;
     o.limits.maxBytes = 64ull << 20;
-    Derivation d(r.grammar, o);
-    const int n = std::min(r.grammar->settings.iterations, maxSteps);
-    if (!d.deriveTo(n).ok()) return;
+    auto d = std::make_unique<Derivation>(r.grammar, o);
+    n = std::min(r.grammar->settings.iterations, maxSteps);
+    if (!d->deriveTo(n).ok()) return nullptr;
+    return d;
+}
+
+// Derives a few steps and draws the result, from the tree and from the string.
+[[maybe_unused]] void deriveAndDraw(const std::string& text, int maxSteps) {
+    ParseResult r = parse(text);
+    int n = 0;
+    auto derivation = deriveSome(r, maxSteps, n);
+    if (!derivation) return;
+    Derivation& d = *derivation;
     TurtleOptions t{n, d.seed(), nullptr};
     t.treeMinModules = 0;  // D0L strings of any size are drawn from the tree
     Geometry g;
@@ -66,15 +76,11 @@ using namespace sprout;
 // with decomposition and queries under the same caps, and drawn (generalized cylinders too).
 [[maybe_unused]] void deriveAndDrawCpfg(const std::string& text, int maxSteps) {
     ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, ""));
-    if (!r.ok()) return;
-    DeriveOptions o;
-    o.limits.maxModules = 200'000;
-    o.limits.maxBytes = 64ull << 20;
-    Derivation d(r.grammar, o);
-    const int n = std::min(r.grammar->settings.iterations, maxSteps);
-    if (!d.deriveTo(n).ok()) return;
+    int n = 0;
+    auto d = deriveSome(r, maxSteps, n);
+    if (!d) return;
     Geometry g;
-    interpret(*d.step(n), *r.grammar, {n, d.seed(), nullptr}, g);
+    interpret(*d->step(n), *r.grammar, {n, d->seed(), nullptr}, g);
 }
 
 }  // namespace

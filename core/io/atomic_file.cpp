@@ -46,6 +46,14 @@ bool resolveLinks(const std::string& path, std::string& resolved, std::string& e
     return false;
 }
 
+unsigned newFileMode(const std::string& target) {
+    struct stat st{};
+    if (::stat(target.c_str(), &st) == 0) return st.st_mode & 07777;
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return 0666 & ~mask;
+}
+
 AtomicFile::~AtomicFile() { abort(); }
 
 bool AtomicFile::open(const std::string& path, std::string& error) {
@@ -85,16 +93,7 @@ bool AtomicFile::open(const std::string& path, std::string& error) {
         return false;
     }
     m_temp = name.data();
-    // The new file gets the old one's permissions, or the usual ones for a new file.
-    mode_t mode = 0666;
-    if (exists) {
-        mode = st.st_mode & 07777;
-    } else {
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-        mode &= ~mask;
-    }
-    (void)::fchmod(m_fd, mode);
+    (void)::fchmod(m_fd, mode_t(newFileMode(m_target)));
     m_direct = false;
     return true;
 }

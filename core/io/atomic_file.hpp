@@ -48,6 +48,10 @@ private:
     std::uint64_t m_bytes = 0;
 };
 
+// The permissions a file replacing `target` gets: the old file's, or the usual ones for a new
+// file (0666 less the umask). Temporaries are made 0600 and given these before the rename.
+unsigned newFileMode(const std::string& target);
+
 // The whole of `data` through an AtomicFile.
 bool writeFileAtomically(const std::string& path, std::string_view data, std::string& error);
 
