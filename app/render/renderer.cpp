@@ -51,7 +51,7 @@ struct Buffers {
 
 struct Renderer::Impl {
     GLuint bakedProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
-           groundProgram = 0, curveRasterProgram = 0, coverageTexture = 0;
+           groundProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
     // What the coverage texture holds: a frame with the same curve, view and size (the panel
@@ -116,14 +116,16 @@ struct Renderer::Impl {
             {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
             {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
             {&curveRasterProgram, "background.vert", "curve_raster.frag"},
+            {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
         };
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
 
         glGenTextures(1, &coverageTexture);
         glBindTexture(GL_TEXTURE_2D, coverageTexture);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        // Linear: exact at the size it was made (samples at texel centres), smooth when moved.
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glBindTexture(GL_TEXTURE_2D, 0);
@@ -481,6 +483,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
                     int y) {
     Impl& s = *m;
     RenderStats stats = m_stats;
+    stats.curveMoved = false;
     stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
@@ -562,8 +565,26 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         // A big curve rasterised on the CPU at this size, blended in as ink.
         glActiveTexture(GL_TEXTURE1);
         glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
-        if (s.coverageOf != s.rasterCurve.get() || s.coverageView != viewProj || s.coverageWidth != width ||
-            s.coverageHeight != height) {
+        const bool sameCurve = s.coverageOf == s.rasterCurve.get() && s.coverageWidth == width && s.coverageHeight == height;
+        GLuint program = s.curveRasterProgram;
+        if (sameCurve && s.coverageView != viewProj && o.quality == Quality::Interactive) {
+            // Dragging: the last image moved to where its corners are in this view.
+            program = s.curveImpostorProgram;
+            stats.curveMoved = true;
+            const glm::mat4 back = glm::inverse(s.coverageView);
+            glm::vec2 corners[4];
+            for (int k = 0; k < 4; ++k) {
+                const glm::vec2 ndc(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f);
+                // The image's corner in the plane z = 0 of the old view, then in this one.
+                const glm::vec4 a = back * glm::vec4(ndc, -1.0f, 1.0f), b = back * glm::vec4(ndc, 1.0f, 1.0f);
+                const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
+                const float t = std::fabs(p1.z - p0.z) > 1e-12f ? -p0.z / (p1.z - p0.z) : 0.0f;
+                const glm::vec4 c = viewProj * glm::vec4(p0 + (p1 - p0) * t, 1.0f);
+                corners[k] = glm::vec2(c) / c.w;
+            }
+            glUseProgram(program);
+            glUniform2fv(glGetUniformLocation(program, "uCorners"), 4, glm::value_ptr(corners[0]));
+        } else if (!sameCurve || s.coverageView != viewProj) {
             rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), viewProj, width, height,
                            std::max(1.5f, float(height) / 400.0f), s.coverage);
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -574,9 +595,9 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
             s.coverageWidth = width;
             s.coverageHeight = height;
         }
-        glUseProgram(s.curveRasterProgram);
-        setUniform(s.curveRasterProgram, "uCoverage", 1);
-        setUniform(s.curveRasterProgram, "uInk", o.curveInk);
+        glUseProgram(program);
+        setUniform(program, "uCoverage", 1);
+        setUniform(program, "uInk", o.curveInk);
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

@@ -41,6 +41,7 @@ struct RenderStats {
     std::size_t cylinders = 0, surfaces = 0, triangles = 0;
     std::size_t levels[4] = {0, 0, 0, 0};  // stems drawn as fine mesh, coarse mesh, prism, line
     bool curve = false;                 // drawn as a 2D curve
+    bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread

@@ -175,6 +175,46 @@ TEST(Render, RasterisedCurveLooksLikeItsRibbons) {
     EXPECT_LT(differ, kW * kH / 25) << "the same pixels, up to the edges of the ink";
 }
 
+// While the view of a big curve is dragged (interactive quality) the last raster is moved as a
+// picture instead of rasterising again; it must land where the new raster would.
+TEST(Render, DraggedBigCurveMovesItsLastPicture) {
+    auto g = grammarOf(*presetText("dragon"));
+    DeriveResult d = derive(g, 19);  // 524 k segments: rasterised
+    ASSERT_TRUE(d.outcome.ok());
+    auto geometry = std::make_shared<Geometry>();
+    interpret(*d.string, *g, {19, 1, nullptr}, *geometry);
+    std::string error;
+    auto context = HeadlessContext::create(kW, kH, error);
+    ASSERT_TRUE(context) << error;
+    render::Renderer renderer;
+    ASSERT_TRUE(renderer.init(context->loader(), error)) << error;
+    render::PreparedScene scene;
+    render::Renderer::prepare(*geometry, render::Quality::Still, scene, geometry);
+    ASSERT_TRUE(scene.curveGeometry);
+    renderer.upload(scene);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    render::Camera camera = snapshotCamera(*geometry, o);
+    render::RenderOptions still = o.render, moving = o.render;
+    still.quality = render::Quality::Still;
+    moving.quality = render::Quality::Interactive;
+    renderer.renderImage(camera, kW, kH, still);  // the picture before the drag
+    camera.target += glm::vec3(camera.orthoHeight * 0.08f, camera.orthoHeight * -0.05f, 0);
+    camera.orthoHeight *= 1.15f;  // panned and zoomed out
+    const std::vector<std::uint8_t> dragged = renderer.renderImage(camera, kW, kH, moving);
+    EXPECT_TRUE(renderer.stats().curveMoved) << "dragging moves the last picture";
+    const std::vector<std::uint8_t> exact = renderer.renderImage(camera, kW, kH, still);
+    EXPECT_FALSE(renderer.stats().curveMoved) << "a still view rasterises anew";
+    int inkDragged = 0, inkExact = 0, differ = 0;
+    for (std::size_t i = 0; i < exact.size(); i += 4) {
+        const bool a = dragged[i] + dragged[i + 1] + dragged[i + 2] < 3 * 120, b = exact[i] + exact[i + 1] + exact[i + 2] < 3 * 120;
+        inkDragged += a, inkExact += b, differ += a != b;
+    }
+    EXPECT_GT(inkExact, kW * kH / 20);
+    EXPECT_NEAR(double(inkDragged) / inkExact, 1.0, 0.1);
+    EXPECT_LT(differ, kW * kH / 30) << "the moved picture is where the curve is";
+}
+
 TEST(Render, LeavesAreGreen) {
     auto g = grammarOf("angle: 40\nwidth: 0.05\naxiom: F[+~leaf(3)][-~leaf(3)]F[+~leaf(3)][-~leaf(3)]F\n");
     SnapshotOptions o = plain();
