@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include <glm/geometric.hpp>
+
 #include "core/d0l.hpp"
 #include "core/step_rewriter.hpp"
 #include "core/turtle.hpp"
@@ -273,7 +275,7 @@ void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
     size_t count = 0;
     for (size_t k = 0; k < grammar.alphabet.size(); ++k) {
         const std::string& n = grammar.alphabet[SymbolId(k)].name;
-        if (n.size() == 2 && n[0] == '?' && std::string_view("PHUL").find(n[1]) != std::string_view::npos) kind[k] = n[1];
+        if (n.size() == 2 && n[0] == '?' && std::string_view("PHULE").find(n[1]) != std::string_view::npos) kind[k] = n[1];
     }
     for (SymbolId id : s.symbols) count += kind[id] != 0;
     if (count != frames.size()) return;
@@ -281,7 +283,12 @@ void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
     for (size_t i = 0; i < s.size(); ++i) {
         const SymbolId id = s.symbols[i];
         const unsigned a = grammar.alphabet[id].arity;
-        if (kind[id]) {
+        if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
+            const QueryFrame& f = frames[q++];
+            const glm::dvec3 p(f.position), h(f.heading);
+            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)
+                grammar.environment.answer(p, glm::normalize(h), &s.params[pp], int(a));
+        } else if (kind[id]) {
             const QueryFrame& f = frames[q++];
             const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
             // Rounded to 1e-5: the float turtle's last bits would otherwise show as 2.9999998.

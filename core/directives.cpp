@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -147,6 +148,37 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 
 }  // namespace
 
+void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
+    // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
+    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder"};
+    std::vector<std::string> words;
+    std::vector<double> numbers;
+    size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && (isSpace(text[i]) || text[i] == ',')) ++i;
+        size_t start = i;
+        int depth = 0;
+        while (i < text.size() && (depth > 0 || (!isSpace(text[i]) && text[i] != ','))) {
+            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+            ++i;
+        }
+        std::string_view token = text.substr(start, i - start);
+        if (token.empty()) continue;
+        const bool keyword = std::any_of(std::begin(keywords), std::end(keywords), [&](const char* k) { return token == k; });
+        if (keyword && numbers.empty()) {
+            words.emplace_back(token);
+        } else if (std::isalpha(static_cast<unsigned char>(token[0])) && numbers.empty() && !m_g.defines.count(std::string(token))) {
+            words.emplace_back(token);  // an unknown kind: declare() names it
+        } else {
+            auto v = constant(line, token);
+            if (!v) return;
+            numbers.push_back(*v);
+        }
+    }
+    std::string error;
+    if (!m_g.environment.declare(words, numbers, error)) m_sink.error(line, trim(text).empty() ? line.text : trim(text), error);
+}
+
 const std::vector<Directive>& directives() {
     static const std::vector<Directive> k = {
         {"module", [](Parser& p, const SourceLine& l, std::string_view v) { p.declareModules(l, v); }, 0},
@@ -166,6 +198,7 @@ const std::vector<Directive>& directives() {
         {"seed", seed, 0},  // before anything that may call rand()
         {"axiom", [](Parser& p, const SourceLine& l, std::string_view v) { p.setAxiom(l, v); }},
         {"ignore", [](Parser& p, const SourceLine& l, std::string_view v) { p.setIgnore(l, v); }},
+        {"environment", [](Parser& p, const SourceLine& l, std::string_view v) { p.declareEnvironment(l, v); }, 1},
     };
     return k;
 }

@@ -12,6 +12,7 @@
 
 #include "core/alphabet.hpp"
 #include "core/diagnostic.hpp"
+#include "core/environment.hpp"
 #include "core/expr.hpp"
 #include "core/module_string.hpp"
 #include "core/surface_file.hpp"
@@ -106,6 +107,7 @@ struct Grammar {
     Settings settings;
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;
+    Environment environment;  // what ?E modules ask after each step (`environment:` lines)
     // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
     std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
     std::vector<std::string> defineOrder;  // for sliders, in file order
@@ -114,7 +116,7 @@ struct Grammar {
     bool hasContext() const;
     bool stochastic() const;
     bool usesCut() const;
-    bool hasQueries() const;        // ?P ?H ?U ?L modules: the string is interpreted after each step
+    bool hasQueries() const;        // ?P ?H ?U ?L ?E modules: the string is interpreted after each step
     // Anything the D0L fast path cannot do: decomposition, queries, statement blocks.
     bool needsGeneralEngine() const;
 };

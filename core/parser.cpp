@@ -84,7 +84,7 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
     // generalized cylinders and query modules; the Lparser extensions).
     m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T",
-                     "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L"};
+                     "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L", "?E"};
     indexModuleNames();
 }
 
@@ -835,6 +835,16 @@ ParseResult Parser::run() {
         }
     }
     if (m_cpfg) loadSurfaceFiles();
+    if (m_g.environment.empty() && m_g.alphabet.findName("?E")) {
+        // Where it is first written, for the message.
+        for (const auto& l : m_lines) {
+            if (size_t at = l.src.text.find("?E"); at != std::string_view::npos && l.kind != Line::Skip) {
+                m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
+                                                            "such as 'environment: sphere 0 10 0 8'");
+                break;
+            }
+        }
+    }
     lint();
 
     ParseResult result;
@@ -881,7 +891,7 @@ bool Grammar::stochastic() const {
 bool Grammar::hasQueries() const {
     for (size_t s = 0; s < alphabet.size(); ++s) {
         const std::string& n = alphabet[SymbolId(s)].name;
-        if (n.size() == 2 && n[0] == '?' && (n[1] == 'P' || n[1] == 'H' || n[1] == 'U' || n[1] == 'L')) return true;
+        if (n.size() == 2 && n[0] == '?' && (n[1] == 'P' || n[1] == 'H' || n[1] == 'U' || n[1] == 'L' || n[1] == 'E')) return true;
     }
     return false;
 }

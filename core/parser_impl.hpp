@@ -54,6 +54,7 @@ public:
     bool setPlainAxiom(const SourceLine& line, std::string_view text);  // no parameters: the fast way
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
+    void declareEnvironment(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
     void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
     bool cpfg() const { return m_cpfg; }

@@ -48,7 +48,7 @@ inline Act actionOf(const std::string& name) {
         {"@L", Act::ScaleLength}, {"@A", Act::ScaleAngle}, {"@W", Act::ScaleWidth}, {"@T", Act::Gravity},
         // cpfg: query modules (the turtle's frame is written back into them after each
         // step), move to a point, set the heading, roll L horizontal, a disc.
-        {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query},
+        {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query}, {"?E", Act::Query},
         {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
         // cpfg's generalized cylinders: start, control point, end, tangent length.
         {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},

@@ -1,0 +1,52 @@
+#pragma once
+// Open L-systems (Mech and Prusinkiewicz 1996; cpfg's communication modules): after each
+// derivation step the string is interpreted, each ?E module is sent with the turtle's frame to
+// the environment, and the environment's answer replaces its parameters before the next step.
+// Sprout's built-in environments, declared in the grammar with `environment:` lines:
+//
+//   environment: sphere CX CY CZ R          a region to grow in (topiary): ?E(inside, distance)
+//   environment: box X0 Y0 Z0 X1 Y1 Z1      the same for a box
+//   environment: ellipsoid CX CY CZ RX RY RZ
+//   environment: cylinder CX CY CZ R H      upright, its base at CY
+//       ?E(inside, distance): inside is 1 when the turtle is inside the region (any of the
+//       shapes), else 0; distance is its distance to the region's surface (>= 0).
+//
+//   environment: obstacle sphere|box ...    things to grow around, and
+//   environment: ground Y                   the ground plane
+//       ?E(length, hit, fx, fy, fz): length (the plant's own value, kept) is how far ahead
+//       to look; hit is 1 when the segment from the turtle along its heading that long would
+//       enter an obstacle or go below the ground, else 0; (fx, fy, fz) is a free direction:
+//       the heading when nothing is hit, else the heading slid along the surface it hits (head-on:
+//       n x (1,0,0), or n x (0,0,1) when the normal n is along x).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace sprout {
+
+struct EnvShape {
+    enum class Kind { Sphere, Box, Ellipsoid, Cylinder } kind = Kind::Sphere;
+    glm::dvec3 a{0.0}, b{0.0};  // sphere: centre, (r, -, -); box: min, max; ellipsoid: centre, radii;
+                                // cylinder: base centre, (r, h, -)
+    bool contains(const glm::dvec3& p) const;
+    double distanceToSurface(const glm::dvec3& p) const;  // >= 0, inside or out
+    glm::dvec3 normal(const glm::dvec3& p) const;          // outward, at the surface nearest p
+};
+
+struct Environment {
+    std::vector<EnvShape> region;     // topiary: the union of these
+    std::vector<EnvShape> obstacles;  // to grow around
+    std::optional<double> ground;     // the ground plane's height
+    bool empty() const { return region.empty() && obstacles.empty() && !ground; }
+    bool isRegion() const { return !region.empty(); }
+
+    // The answer to one ?E at `position` heading `heading` (unit): writes `arity` parameters.
+    void answer(const glm::dvec3& position, const glm::dvec3& heading, double* params, int arity) const;
+
+    // Parses the value of one `environment:` line into this environment; false with `error`.
+    bool declare(const std::vector<std::string>& words, const std::vector<double>& numbers, std::string& error);
+};
+
+}  // namespace sprout

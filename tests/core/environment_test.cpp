@@ -1,0 +1,102 @@
+// Open L-systems: the built-in environments' answers on hand-made cases, and small open
+// L-systems derived step by step (core/environment.hpp).
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "core/derive.hpp"
+#include "core/environment.hpp"
+#include "tests/core/test_util.hpp"
+
+namespace sprout {
+namespace {
+
+std::vector<double> ask(const Environment& env, glm::dvec3 p, glm::dvec3 h, std::vector<double> params) {
+    env.answer(p, glm::normalize(h), params.data(), int(params.size()));
+    return params;
+}
+
+Environment declared(std::vector<std::vector<std::string>> words, std::vector<std::vector<double>> numbers) {
+    Environment env;
+    std::string error;
+    for (size_t i = 0; i < words.size(); ++i) EXPECT_TRUE(env.declare(words[i], numbers[i], error)) << error;
+    return env;
+}
+
+TEST(Environment, RegionsSayInsideAndTheDistanceToTheirSurface) {
+    const Environment sphere = declared({{"sphere"}}, {{0, 0, 0, 2.5}});
+    EXPECT_EQ(ask(sphere, {0, 1, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{1, 1.5}));
+    EXPECT_EQ(ask(sphere, {0, 3, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{0, 0.5}));
+    const Environment box = declared({{"box"}}, {{0, 0, 0, 1, 2, 1}});
+    EXPECT_EQ(ask(box, {0.5, 0.5, 0.5}, {0, 1, 0}, {0, 0}), (std::vector<double>{1, 0.5}));
+    EXPECT_EQ(ask(box, {3, 1, 0.5}, {0, 1, 0}, {0, 0}), (std::vector<double>{0, 2}));
+    const Environment ellipsoid = declared({{"ellipsoid"}}, {{0, 0, 0, 2, 1, 1}});
+    EXPECT_EQ(ask(ellipsoid, {1, 0, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{1, 1}));
+    EXPECT_EQ(ask(ellipsoid, {0, 2, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{0, 1}));
+    const Environment cylinder = declared({{"cylinder"}}, {{0, 0, 0, 1, 2}});
+    EXPECT_EQ(ask(cylinder, {0, 0.5, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{1, 0.5}));
+    EXPECT_EQ(ask(cylinder, {3, 1, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{0, 2}));
+    // The union of two shapes: inside either, the distance to the nearer surface.
+    const Environment two = declared({{"sphere"}, {"sphere"}}, {{0, 0, 0, 1}, {3, 0, 0, 1}});
+    EXPECT_EQ(ask(two, {3.5, 0, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{1, 0.5}));
+    EXPECT_EQ(ask(two, {1.5, 0, 0}, {0, 1, 0}, {0, 0}), (std::vector<double>{0, 0.5}));
+}
+
+TEST(Environment, ObstaclesSayWhetherASegmentHitsAndAFreeDirection) {
+    const Environment env = declared({{"obstacle", "sphere"}, {"ground"}}, {{0, 5, 0, 1}, {0}});
+    // Straight at the sphere's centre: a hit, head-on; the free way is along the surface,
+    // n x (1,0,0) for the normal n = (0,-1,0) where it enters.
+    EXPECT_EQ(ask(env, {0, 2, 0}, {0, 1, 0}, {4, 0, 0, 0, 0}), (std::vector<double>{4, 1, 0, 0, 1}));
+    // Too short to reach it: no hit, the heading is free.
+    EXPECT_EQ(ask(env, {0, 2, 0}, {0, 1, 0}, {1.5, 0, 0, 0, 0}), (std::vector<double>{1.5, 0, 0, 1, 0}));
+    // Past it: no hit.
+    EXPECT_EQ(ask(env, {3, 2, 0}, {0, 1, 0}, {6, 0, 0, 0, 0}), (std::vector<double>{6, 0, 0, 1, 0}));
+    // Down into the ground at a slant: slid along it, horizontally.
+    EXPECT_EQ(ask(env, {0, 1, 0}, {0.6, -0.8, 0}, {2, 0, 0, 0, 0}), (std::vector<double>{2, 1, 1, 0, 0}));
+    // A glancing hit on the sphere slides along its surface: a unit vector at a right angle
+    // to the normal where it enters.
+    auto a = ask(env, {0.6, 2, 0}, {0, 1, 0}, {4, 0, 0, 0, 0});
+    EXPECT_EQ(a[1], 1);
+    EXPECT_NEAR(a[2] * a[2] + a[3] * a[3] + a[4] * a[4], 1.0, 1e-4);
+    EXPECT_GT(a[2], 0.5) << "away from the centre";
+}
+
+TEST(Environment, DeclarationsAreChecked) {
+    Environment env;
+    std::string error;
+    EXPECT_FALSE(env.declare({"cone"}, {1, 2, 3}, error));
+    EXPECT_EQ(error, "unknown environment 'cone': Sprout's are sphere, box, ellipsoid, cylinder (a region to grow in), "
+                     "obstacle sphere|box and ground");
+    EXPECT_FALSE(env.declare({"sphere"}, {1, 2, 3}, error));
+    EXPECT_EQ(error, "expected 4 numbers: 'environment: sphere CX CY CZ R'");
+    EXPECT_FALSE(env.declare({"sphere"}, {0, 0, 0, -1}, error));
+    EXPECT_EQ(error, "a sphere's radius must be above 0");
+    EXPECT_TRUE(env.declare({"sphere"}, {0, 0, 0, 1}, error));
+    EXPECT_FALSE(env.declare({"ground"}, {0}, error));
+    EXPECT_EQ(error, "one grammar has one kind of environment: a region to grow in, or obstacles and ground (their ?E answers differ)");
+}
+
+// An apex grows while the environment says it is inside the sphere: the answers of step k
+// decide step k+1.
+TEST(Environment, OpenLSystemGrowsUntilTheRegionSaysStop) {
+    const std::string g = "n: 5\nenvironment: sphere 0 0 0 2.5\naxiom: F(1) ?E(0,0) A\n"
+                          "?E(inside, d) < A : inside == 1 -> F(1) ?E(0,0) A\n";
+    EXPECT_EQ(test::expand(g, 0), "F(1)?E(1,1.5)A");
+    EXPECT_EQ(test::expand(g, 1), "F(1)?E(1,1.5)F(1)?E(1,0.5)A");
+    EXPECT_EQ(test::expand(g, 2), "F(1)?E(1,1.5)F(1)?E(1,0.5)F(1)?E(0,0.5)A");
+    EXPECT_EQ(test::expand(g, 5), "F(1)?E(1,1.5)F(1)?E(1,0.5)F(1)?E(0,0.5)A");
+}
+
+// A shoot meets an obstacle and turns to the free direction the environment gives.
+TEST(Environment, OpenLSystemTurnsAroundAnObstacle) {
+    const std::string g = "n: 3\nenvironment: obstacle box -1 2.5 -1 1 4 1\n"
+                          "axiom: F(1) ?E(1,0,0,0,0) A\n"
+                          "?E(l, hit, x, y, z) < A : hit == 0 -> F(1) ?E(1,0,0,0,0) A\n"
+                          "?E(l, hit, x, y, z) < A : hit == 1 -> @R(1,0,0) F(1) ?E(1,0,0,0,0) A\n";
+    EXPECT_EQ(test::expand(g, 0), "F(1)?E(1,0,0,1,0)A");
+    EXPECT_EQ(test::expand(g, 1), "F(1)?E(1,0,0,1,0)F(1)?E(1,1,0,0,1)A");
+    EXPECT_EQ(test::expand(g, 2), "F(1)?E(1,0,0,1,0)F(1)?E(1,1,0,0,1)@R(1,0,0)F(1)?E(1,0,1,0,0)A");
+}
+
+}  // namespace
+}  // namespace sprout
