@@ -93,7 +93,16 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             if (ages) *ages = std::move(outAges);
         }
     }
-    if (m_grammar->hasQueries()) answerQueries(*m_grammar, s, step, m_seed);
+    if (m_grammar->hasQueries()) {
+        std::string error;
+        if (!answerQueries(*m_grammar, s, step, m_seed, &error)) {
+            DeriveOutcome o;
+            o.status = DeriveStatus::Failed;
+            o.step = step;
+            o.message = "step " + std::to_string(step) + ": " + error;
+            return o;
+        }
+    }
     return {};
 }
 
@@ -262,13 +271,21 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
     return out;
 }
 
-void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed) {
+bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error) {
     std::vector<QueryFrame> frames;
     Geometry scratch;
     TurtleOptions t{step, seed, nullptr};
     t.fromTree = false;
     t.queries = &frames;
     interpret(s, grammar, t, scratch);
+    LightGrid light;
+    if (grammar.environment.isLight()) {
+        std::string why;
+        if (!grammar.environment.buildLight(scratch, light, why)) {
+            if (error) *error = why;
+            return false;
+        }
+    }
     // Frames come in drawing order; a homomorphism that drops or repeats query modules
     // would break the correspondence, and then the parameters are left as they were.
     std::vector<char> kind(grammar.alphabet.size(), 0);
@@ -278,7 +295,7 @@ void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
         if (n.size() == 2 && n[0] == '?' && std::string_view("PHULE").find(n[1]) != std::string_view::npos) kind[k] = n[1];
     }
     for (SymbolId id : s.symbols) count += kind[id] != 0;
-    if (count != frames.size()) return;
+    if (count != frames.size()) return true;
     size_t q = 0, pp = 0;
     for (size_t i = 0; i < s.size(); ++i) {
         const SymbolId id = s.symbols[i];
@@ -287,7 +304,7 @@ void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
             const QueryFrame& f = frames[q++];
             const glm::dvec3 p(f.position), h(f.heading);
             if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)
-                grammar.environment.answer(p, glm::normalize(h), &s.params[pp], int(a));
+                grammar.environment.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
         } else if (kind[id]) {
             const QueryFrame& f = frames[q++];
             const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
@@ -296,6 +313,7 @@ void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
         }
         pp += a;
     }
+    return true;
 }
 
 }  // namespace sprout

@@ -110,7 +110,9 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
 
 // cpfg query modules: interprets `s` with the turtle and writes the frame at each ?P ?H ?U ?L
 // into its parameters (position, heading, up, left; as many as the module has).
-void answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed);
+// ?E modules are answered by the grammar's environment; false with `error` when it cannot
+// (a light grid that would be too big).
+bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error = nullptr);
 
 // "12,345,678"
 std::string withThousands(std::uint64_t v);

@@ -150,7 +150,7 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 
 void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
-    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder"};
+    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light"};
     std::vector<std::string> words;
     std::vector<double> numbers;
     size_t i = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/geometric.hpp>
 
@@ -63,7 +64,68 @@ glm::dvec3 EnvShape::normal(const glm::dvec3& p) const {
     return n > 0 ? g / n : glm::dvec3(0, 1, 0);
 }
 
-void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double* params, int arity) const {
+double LightGrid::lightAt(const glm::dvec3& p) const {
+    const glm::dvec3 c = (p - origin) / voxel;
+    const int i = int(std::floor(c.x)), j = int(std::floor(c.y)), k = int(std::floor(c.z));
+    if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return 1.0;  // beyond the plant: open sky
+    const double s = shadow[(std::size_t(j) * std::size_t(nz) + std::size_t(k)) * std::size_t(nx) + std::size_t(i)];
+    return std::max(0.0, 1.0 - s);
+}
+
+bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& error) const {
+    grid = LightGrid();
+    grid.voxel = lightVoxel;
+    if (g.bounds.empty) return true;
+    // Shadow reaches kDepth cells down and as many sideways: the grid is the plant's box,
+    // widened by that much on the sides and below.
+    constexpr int kDepth = 8;
+    const glm::dvec3 lo = glm::dvec3(g.bounds.min) - glm::dvec3(kDepth + 1, kDepth + 1, kDepth + 1) * lightVoxel;
+    const glm::dvec3 hi = glm::dvec3(g.bounds.max) + glm::dvec3(kDepth + 1, 1, kDepth + 1) * lightVoxel;
+    const glm::dvec3 cells = glm::ceil((hi - lo) / lightVoxel);
+    const double total = cells.x * cells.y * cells.z;
+    if (!(total <= double(kMaxLightCells))) {
+        char msg[200];
+        std::snprintf(msg, sizeof msg,
+                      "the light grid would have %.0f x %.0f x %.0f = %.3g cells (%.1f GB at 4 bytes each), over the limit of "
+                      "32 million: make the voxels larger ('environment: light VOXEL')",
+                      cells.x, cells.y, cells.z, total, total * 4 / 1e9);
+        error = msg;
+        return false;
+    }
+    grid.origin = lo;
+    grid.nx = int(cells.x), grid.ny = int(cells.y), grid.nz = int(cells.z);
+    grid.shadow.assign(std::size_t(total), 0.0f);
+    auto at = [&](int i, int j, int k) -> float& {
+        return grid.shadow[(std::size_t(j) * std::size_t(grid.nz) + std::size_t(k)) * std::size_t(grid.nx) + std::size_t(i)];
+    };
+    // Each leaf (and a quarter for each segment's end) shades a pyramid of cells below it.
+    auto cast = [&](const glm::vec3& p, double weight) {
+        const glm::dvec3 c = (glm::dvec3(p) - lo) / lightVoxel;
+        const int i0 = int(std::floor(c.x)), j0 = int(std::floor(c.y)), k0 = int(std::floor(c.z));
+        for (int q = 1; q <= kDepth; ++q) {
+            const int j = j0 - q;
+            if (j < 0) break;
+            const float s = float(weight * lightShadow * std::pow(2.0, -(q - 1)));
+            for (int dk = -(q - 1); dk <= q - 1; ++dk)
+                for (int di = -(q - 1); di <= q - 1; ++di) {
+                    const int i = i0 + di, k = k0 + dk;
+                    if (i >= 0 && k >= 0 && i < grid.nx && k < grid.nz) at(i, j, k) += s;
+                }
+        }
+    };
+    for (const SurfaceInstance& s : g.surfaces)
+        if (s.kind != SurfaceKind::Sphere) cast(s.position, 1.0);
+    for (const CylinderInstance& c : g.cylinders) cast(c.end, 0.25);
+    for (const glm::vec3& p : g.polygons.positions) cast(p, 0.05);
+    return true;
+}
+
+void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double* params, int arity,
+                         const LightGrid* light) const {
+    if (isLight()) {
+        if (arity > 0) params[0] = light ? std::round(light->lightAt(p) * 1e5) / 1e5 : 1.0;
+        return;
+    }
     if (isRegion()) {
         bool inside = false;
         double distance = 1e300;
@@ -133,6 +195,23 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
     size_t w = 0;
     const bool obstacle = words[0] == "obstacle";
     if (obstacle) ++w;
+    if (!obstacle && words[0] == "light") {
+        if (v.empty() || v.size() > 2 || !(v[0] > 0) || (v.size() == 2 && !(v[1] > 0))) {
+            error = "expected 'environment: light VOXEL [SHADOW]', with a voxel size above 0 (and a shadow above 0)";
+            return false;
+        }
+        if (!region.empty() || !obstacles.empty() || ground) {
+            error = "one grammar has one kind of environment: light, a region to grow in, or obstacles and ground";
+            return false;
+        }
+        lightVoxel = v[0];
+        if (v.size() == 2) lightShadow = v[1];
+        return true;
+    }
+    if (isLight()) {
+        error = "one grammar has one kind of environment: light, a region to grow in, or obstacles and ground";
+        return false;
+    }
     if (!obstacle && words[0] == "ground") {
         if (v.size() != 1) {
             error = "expected 'environment: ground Y', the height of the ground";

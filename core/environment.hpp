@@ -18,11 +18,21 @@
 //       enter an obstacle or go below the ground, else 0; (fx, fy, fz) is a free direction:
 //       the heading when nothing is hit, else the heading slid along the surface it hits (head-on:
 //       n x (1,0,0), or n x (0,0,1) when the normal n is along x).
+//
+//   environment: light VOXEL [SHADOW]       light from the sky, shaded by the plant itself
+//       ?E(light): the light at the turtle, 1 in the open; each leaf (and, a quarter as much,
+//       each stem segment) grown so far casts shadow into a voxel grid of VOXEL-sized cells,
+//       SHADOW (0.5 by default) in the cell below it, halving with each cell further down and
+//       spreading one cell wider each cell down (shadow propagation, Palubicki et al. 2009);
+//       light = max(0, 1 - shadow).
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "core/geometry.hpp"
 
 namespace sprout {
 
@@ -35,15 +45,34 @@ struct EnvShape {
     glm::dvec3 normal(const glm::dvec3& p) const;          // outward, at the surface nearest p
 };
 
+// The light grid of one step: shadow per voxel, made from the geometry grown so far.
+struct LightGrid {
+    glm::dvec3 origin{0.0};
+    double voxel = 1;
+    int nx = 0, ny = 0, nz = 0;
+    std::vector<float> shadow;
+    double lightAt(const glm::dvec3& p) const;
+};
+
 struct Environment {
     std::vector<EnvShape> region;     // topiary: the union of these
     std::vector<EnvShape> obstacles;  // to grow around
     std::optional<double> ground;     // the ground plane's height
-    bool empty() const { return region.empty() && obstacles.empty() && !ground; }
+    double lightVoxel = 0;            // > 0: a light environment with voxels this size
+    double lightShadow = 0.5;
+    bool empty() const { return region.empty() && obstacles.empty() && !ground && lightVoxel <= 0; }
     bool isRegion() const { return !region.empty(); }
+    bool isLight() const { return lightVoxel > 0; }
+
+    // Cells of the light grid are capped so that no plant can exhaust memory with it.
+    static constexpr std::uint64_t kMaxLightCells = 32'000'000;  // 128 MB of shadow
+    // The light grid for the plant drawn so far; false with `error` when it would be too big.
+    bool buildLight(const Geometry& grown, LightGrid& grid, std::string& error) const;
 
     // The answer to one ?E at `position` heading `heading` (unit): writes `arity` parameters.
-    void answer(const glm::dvec3& position, const glm::dvec3& heading, double* params, int arity) const;
+    // `light` is the step's light grid (light environments only).
+    void answer(const glm::dvec3& position, const glm::dvec3& heading, double* params, int arity,
+                const LightGrid* light = nullptr) const;
 
     // Parses the value of one `environment:` line into this environment; false with `error`.
     bool declare(const std::vector<std::string>& words, const std::vector<double>& numbers, std::string& error);

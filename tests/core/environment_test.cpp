@@ -98,5 +98,23 @@ TEST(Environment, OpenLSystemTurnsAroundAnObstacle) {
     EXPECT_EQ(test::expand(g, 2), "F(1)?E(1,0,0,1,0)F(1)?E(1,1,0,0,1)@R(1,0,0)F(1)?E(1,0,1,0,0)A");
 }
 
+// Light: a leaf at (0, 5, 0) in 1-unit voxels shades the cells below it, 0.5 in the first,
+// halving with each cell down and one cell wider each time; nothing above or beside.
+TEST(Environment, LightIsTheSkyLessTheShadowOfWhatGrewAbove) {
+    const std::string g = "n: 0\nenvironment: light 1\n"
+                          "axiom: @M(0,5,0) ~l(1) @M(0,3,0) ?E(0) @M(3,3,0) ?E(0) @M(0,6,0) ?E(0) @M(0,1.5,0) ?E(0) "
+                          "@M(1,3,0) ?E(0)\n";
+    // Two cells below: 0.25 of shadow; beside it at three cells: none; above: none; four cells
+    // below: 0.0625; one cell aside two below: inside the spread, 0.25.
+    EXPECT_EQ(test::expand(g, 0), "@M(0,5,0)~l(1)@M(0,3,0)?E(0.75)@M(3,3,0)?E(1)@M(0,6,0)?E(1)@M(0,1.5,0)?E(0.9375)@M(1,3,0)?E(0.75)");
+    // A grid that would exhaust memory is refused, naming its size.
+    auto r = parse("n: 0\nenvironment: light 0.0001\naxiom: F(100) ~l(1) ?E(0)\n");
+    ASSERT_TRUE(r.ok());
+    DeriveResult d = derive(r.grammar, 0);
+    EXPECT_FALSE(d.outcome.ok());
+    EXPECT_EQ(d.outcome.message, "step 0: the light grid would have 18 x 1010010 x 18 = 3.27e+08 cells (1.3 GB at 4 bytes "
+                                 "each), over the limit of 32 million: make the voxels larger ('environment: light VOXEL')");
+}
+
 }  // namespace
 }  // namespace sprout
