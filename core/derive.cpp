@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 
 #include <glm/geometric.hpp>
 
@@ -76,9 +77,10 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
             if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages ? &ageArgs : nullptr))
                 return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
-            const bool same = out.symbols.size() == s.symbols.size() && out.params.size() == s.params.size() &&
-                              std::equal(out.symbols.data(), out.symbols.data() + out.symbols.size(), s.symbols.data()) &&
-                              std::equal(out.params.data(), out.params.data() + out.params.size(), s.params.data());
+            // Bit for bit: a NaN parameter is the same NaN, not a change.
+            const bool same = out.symbols == s.symbols && out.params.size() == s.params.size() &&
+                              (out.params.size() == 0 ||
+                               std::memcmp(out.params.data(), s.params.data(), out.params.size() * sizeof(double)) == 0);
             if (same) break;
             if (pass == depth) {
                 DeriveOutcome o;
@@ -262,9 +264,9 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
         ModuleString next;
         Rng r = Rng::forStream(seed, 0x1e7e7 + std::uint64_t(level));
         rewriter.rewrite(out, next, r, nullptr, {});
-        const bool same = next.symbols.size() == out.symbols.size() &&
-                          std::equal(next.symbols.data(), next.symbols.data() + next.symbols.size(), out.symbols.data()) &&
-                          std::equal(next.params.data(), next.params.data() + next.params.size(), out.params.data());
+        const bool same = next.symbols == out.symbols && next.params.size() == out.params.size() &&
+                          (next.params.size() == 0 ||
+                           std::memcmp(next.params.data(), out.params.data(), next.params.size() * sizeof(double)) == 0);
         out = std::move(next);
         if (same) break;
     }
