@@ -298,11 +298,38 @@ bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
     }
     for (SymbolId id : s.symbols) count += kind[id] != 0;
     if (count != frames.size()) return true;
+    if (grammar.environment.isAttraction()) {
+        // Space colonisation answers every bud at once: a point pulls only its nearest bud.
+        std::vector<glm::dvec3> buds;
+        std::vector<double*> params;
+        std::vector<int> arities;
+        size_t q = 0, pp = 0;
+        for (size_t i = 0; i < s.size(); ++i) {
+            const SymbolId id = s.symbols[i];
+            const unsigned a = grammar.alphabet[id].arity;
+            if (kind[id]) {
+                const QueryFrame& f = frames[q++];
+                if (kind[id] == 'E') {
+                    buds.emplace_back(f.position);
+                    params.push_back(&s.params[pp]);
+                    arities.push_back(int(a));
+                }
+            }
+            pp += a;
+        }
+        grammar.environment.answerAttraction(buds, grammar.environment.freePoints(scratch, seed), params, arities);
+        // The ?P ?H ?U ?L of the same string below; the ?E are answered: they only use up
+        // their frame there.
+        for (char& k : kind)
+            if (k == 'E') k = 'e';
+    }
     size_t q = 0, pp = 0;
     for (size_t i = 0; i < s.size(); ++i) {
         const SymbolId id = s.symbols[i];
         const unsigned a = grammar.alphabet[id].arity;
-        if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
+        if (kind[id] == 'e') {
+            ++q;
+        } else if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
             const QueryFrame& f = frames[q++];
             const glm::dvec3 p(f.position), h(f.heading);
             if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)

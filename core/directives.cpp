@@ -150,7 +150,8 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 
 void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
-    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light"};
+    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light", "attraction",
+                                     "influence", "kill"};
     std::vector<std::string> words;
     std::vector<double> numbers;
     size_t i = 0;
@@ -165,7 +166,7 @@ void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
         std::string_view token = text.substr(start, i - start);
         if (token.empty()) continue;
         const bool keyword = std::any_of(std::begin(keywords), std::end(keywords), [&](const char* k) { return token == k; });
-        if (keyword && numbers.empty()) {
+        if (keyword) {
             words.emplace_back(token);
         } else if (std::isalpha(static_cast<unsigned char>(token[0])) && numbers.empty() && !m_g.defines.count(std::string(token))) {
             words.emplace_back(token);  // an unknown kind: declare() names it

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -120,6 +121,96 @@ bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& er
     return true;
 }
 
+std::vector<glm::dvec3> Environment::freePoints(const Geometry& grown, std::uint64_t seed) const {
+    std::vector<glm::dvec3> points;
+    if (!attractionShape) return points;
+    const EnvShape& shape = *attractionShape;
+    // The shape's box, for rejection sampling.
+    glm::dvec3 lo, hi;
+    switch (shape.kind) {
+        case EnvShape::Kind::Sphere: lo = shape.a - glm::dvec3(shape.b.x), hi = shape.a + glm::dvec3(shape.b.x); break;
+        case EnvShape::Kind::Box: lo = shape.a, hi = shape.b; break;
+        case EnvShape::Kind::Ellipsoid: lo = shape.a - shape.b, hi = shape.a + shape.b; break;
+        case EnvShape::Kind::Cylinder:
+            lo = shape.a - glm::dvec3(shape.b.x, 0, shape.b.x), hi = shape.a + glm::dvec3(shape.b.x, shape.b.y, shape.b.x);
+            break;
+    }
+    // SplitMix64, as the grammar's randomness: the same points on every machine.
+    std::uint64_t state = seed ^ 0xa77ac7104e5ull;
+    auto next = [&] {
+        std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return double((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    for (int tries = 0; int(points.size()) < attractionPoints && tries < attractionPoints * 20; ++tries) {
+        const glm::dvec3 p(lo.x + (hi.x - lo.x) * next(), lo.y + (hi.y - lo.y) * next(), lo.z + (hi.z - lo.z) * next());
+        if (shape.contains(p)) points.push_back(p);
+    }
+    // Used up: within the kill distance of a node of the plant (a segment's ends), found
+    // through a hash of the nodes in cells the kill distance wide.
+    std::unordered_map<std::uint64_t, std::vector<glm::dvec3>> cells;
+    auto key = [&](const glm::dvec3& p) {
+        const glm::dvec3 c = glm::floor(p / kill);
+        return (std::uint64_t(std::int64_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::int64_t(c.y) & 0x1fffff) << 21) |
+               std::uint64_t(std::int64_t(c.z) & 0x1fffff);
+    };
+    for (const CylinderInstance& c : grown.cylinders)
+        for (const glm::vec3& e : {c.start, c.end}) cells[key(glm::dvec3(e))].push_back(glm::dvec3(e));
+    std::vector<glm::dvec3> free;
+    for (const glm::dvec3& p : points) {
+        bool used = false;
+        for (int dz = -1; dz <= 1 && !used; ++dz)
+            for (int dy = -1; dy <= 1 && !used; ++dy)
+                for (int dx = -1; dx <= 1 && !used; ++dx) {
+                    auto it = cells.find(key(p + glm::dvec3(dx, dy, dz) * kill));
+                    if (it == cells.end()) continue;
+                    for (const glm::dvec3& n : it->second)
+                        if (glm::length(n - p) <= kill) used = true;
+                }
+        if (!used) free.push_back(p);
+    }
+    return free;
+}
+
+void Environment::answerAttraction(const std::vector<glm::dvec3>& buds, const std::vector<glm::dvec3>& points,
+                                   const std::vector<double*>& params, const std::vector<int>& arities) const {
+    std::vector<glm::dvec3> pull(buds.size(), glm::dvec3(0.0));
+    std::vector<int> count(buds.size(), 0);
+    // Buds in cells the influence radius wide: each point looks at its own and the next cells.
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+    auto key = [&](const glm::dvec3& p) {
+        const glm::dvec3 c = glm::floor(p / influence);
+        return (std::uint64_t(std::int64_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::int64_t(c.y) & 0x1fffff) << 21) |
+               std::uint64_t(std::int64_t(c.z) & 0x1fffff);
+    };
+    for (std::uint32_t b = 0; b < buds.size(); ++b) cells[key(buds[b])].push_back(b);
+    for (const glm::dvec3& p : points) {
+        double best = influence;
+        std::int64_t nearest = -1;
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    auto it = cells.find(key(p + glm::dvec3(dx, dy, dz) * influence));
+                    if (it == cells.end()) continue;
+                    for (std::uint32_t b : it->second) {
+                        const double d = glm::length(p - buds[b]);
+                        if (d <= best && (d < best || std::int64_t(b) < nearest)) best = d, nearest = b;
+                    }
+                }
+        if (nearest < 0 || best <= 0) continue;
+        pull[size_t(nearest)] += (p - buds[size_t(nearest)]) / best;
+        ++count[size_t(nearest)];
+    }
+    for (size_t b = 0; b < buds.size(); ++b) {
+        const double n = glm::length(pull[b]);
+        const glm::dvec3 dir = n > 0 ? pull[b] / n : glm::dvec3(0.0);
+        double* out = params[b];
+        for (int k = 0; k < 3 && k < arities[b]; ++k) out[k] = std::round(dir[k] * 1e5) / 1e5 + 0.0;
+        if (arities[b] > 3) out[3] = count[b];
+    }
+}
+
 void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double* params, int arity,
                          const LightGrid* light) const {
     if (isLight()) {
@@ -195,6 +286,48 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
     size_t w = 0;
     const bool obstacle = words[0] == "obstacle";
     if (obstacle) ++w;
+    if (!obstacle && words[0] == "attraction") {
+        // attraction N shape numbers... [influence R] [kill K]: the words after the shape's
+        // numbers come as words too; their values follow at the end of `v`.
+        if (words.size() < 2 || v.empty() || !(v[0] >= 1 && v[0] <= 1e6) || v[0] != std::floor(v[0])) {
+            error = "expected 'environment: attraction N sphere CX CY CZ R [influence R] [kill K]', N a whole number of points "
+                    "from 1 to 1000000";
+            return false;
+        }
+        if (!region.empty() || !obstacles.empty() || ground || isLight() || attractionShape) {
+            error = "one grammar has one kind of environment: attraction points, light, a region to grow in, or obstacles and ground";
+            return false;
+        }
+        std::vector<double> rest(v.begin() + 1, v.end());
+        size_t extra = words.size() - 2;  // influence / kill, each with one number at the end
+        if (rest.size() < extra) {
+            error = "'influence' and 'kill' each need a distance after them";
+            return false;
+        }
+        std::vector<double> shapeNumbers(rest.begin(), rest.end() - std::ptrdiff_t(extra));
+        Environment probe;
+        if (!probe.declare({words[1]}, shapeNumbers, error)) return false;
+        attractionShape = probe.region.front();
+        attractionPoints = int(v[0]);
+        for (size_t k = 0; k < extra; ++k) {
+            const double value = rest[rest.size() - extra + k];
+            if (!(value > 0)) {
+                error = "'" + words[2 + k] + "' must be a distance above 0";
+                return false;
+            }
+            if (words[2 + k] == "influence") influence = value;
+            else if (words[2 + k] == "kill") kill = value;
+            else {
+                error = "unknown word '" + words[2 + k] + "': attraction points take 'influence R' and 'kill K'";
+                return false;
+            }
+        }
+        return true;
+    }
+    if (isAttraction()) {
+        error = "one grammar has one kind of environment: attraction points, light, a region to grow in, or obstacles and ground";
+        return false;
+    }
     if (!obstacle && words[0] == "light") {
         if (v.empty() || v.size() > 2 || !(v[0] > 0) || (v.size() == 2 && !(v[1] > 0))) {
             error = "expected 'environment: light VOXEL [SHADOW]', with a voxel size above 0 (and a shadow above 0)";

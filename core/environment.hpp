@@ -25,6 +25,13 @@
 //       SHADOW (0.5 by default) in the cell below it, halving with each cell further down and
 //       spreading one cell wider each cell down (shadow propagation, Palubicki et al. 2009);
 //       light = max(0, 1 - shadow).
+//
+//   environment: attraction N sphere|box|ellipsoid|cylinder ... [influence R] [kill K]
+//       space colonisation (Runions, Lane and Prusinkiewicz 2007): N points scattered (seeded)
+//       in the shape; a point within K (default 1) of the plant is used up; every other point
+//       pulls the one bud nearest to it, if that bud is within R (default 4).
+//       ?E(x, y, z, count): the mean direction to the points pulling this bud (unit, or 0 0 0)
+//       and how many they are.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -60,7 +67,15 @@ struct Environment {
     std::optional<double> ground;     // the ground plane's height
     double lightVoxel = 0;            // > 0: a light environment with voxels this size
     double lightShadow = 0.5;
-    bool empty() const { return region.empty() && obstacles.empty() && !ground && lightVoxel <= 0; }
+    // Space colonisation: the points' shape, their number, the radii of influence and kill.
+    std::optional<EnvShape> attractionShape;
+    int attractionPoints = 0;
+    double influence = 4, kill = 1;
+    bool isAttraction() const { return attractionShape.has_value(); }
+    // The points still free after the plant drawn so far used up those near it (seeded by
+    // `seed`, the same points every step, so the answer depends on the plant only).
+    std::vector<glm::dvec3> freePoints(const Geometry& grown, std::uint64_t seed) const;
+    bool empty() const { return region.empty() && obstacles.empty() && !ground && lightVoxel <= 0 && !attractionShape; }
     bool isRegion() const { return !region.empty(); }
     bool isLight() const { return lightVoxel > 0; }
 
@@ -69,6 +84,10 @@ struct Environment {
     // The light grid for the plant drawn so far; false with `error` when it would be too big.
     bool buildLight(const Geometry& grown, LightGrid& grid, std::string& error) const;
 
+    // Space colonisation answers all buds at once: each free point pulls its nearest bud.
+    // `params[b]` points at bud b's parameters (arity `arities[b]`).
+    void answerAttraction(const std::vector<glm::dvec3>& buds, const std::vector<glm::dvec3>& points,
+                          const std::vector<double*>& params, const std::vector<int>& arities) const;
     // The answer to one ?E at `position` heading `heading` (unit): writes `arity` parameters.
     // `light` is the step's light grid (light environments only).
     void answer(const glm::dvec3& position, const glm::dvec3& heading, double* params, int arity,

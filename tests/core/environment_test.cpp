@@ -116,5 +116,40 @@ TEST(Environment, LightIsTheSkyLessTheShadowOfWhatGrewAbove) {
                                  "each), over the limit of 32 million: make the voxels larger ('environment: light VOXEL')");
 }
 
+// Space colonisation: every point pulls only its nearest bud within the radius of influence;
+// a bud's answer is the mean of the unit directions to its points, and their number.
+TEST(Environment, AttractionPointsPullTheirNearestBud) {
+    Environment env = declared({{"attraction", "sphere", "influence", "kill"}}, {{50, 0, 0, 0, 9, 4, 0.5}});
+    ASSERT_TRUE(env.isAttraction());
+    EXPECT_EQ(env.influence, 4);
+    EXPECT_EQ(env.kill, 0.5);
+    const std::vector<glm::dvec3> buds{{0, 0, 0}, {10, 0, 0}};
+    const std::vector<glm::dvec3> points{{0, 2, 0}, {0, 0, 3}, {9, 1, 0}, {20, 0, 0}, {5.5, 0, 0}};
+    std::vector<double> a(4, -1), b(4, -1);
+    env.answerAttraction(buds, points, {a.data(), b.data()}, {4, 4});
+    // (5.5, 0, 0) is 4.5 from one bud and 5.5 from the other: beyond the influence of both.
+    EXPECT_EQ(a, (std::vector<double>{0, 0.70711, 0.70711, 2}));
+    EXPECT_EQ(b, (std::vector<double>{-0.70711, 0.70711, 0, 1}));
+    // A point nearer to the second bud pulls only it, even within the first's influence.
+    std::vector<double> c(4, -1), d(4, -1);
+    env.answerAttraction(buds, {{6.5, 0, 0}}, {c.data(), d.data()}, {4, 4});
+    EXPECT_EQ(c, (std::vector<double>{0, 0, 0, 0}));
+    EXPECT_EQ(d, (std::vector<double>{-1, 0, 0, 1}));
+    // Points used up: exactly those within the kill distance (3 here) of a node of the plant.
+    Environment dense = declared({{"attraction", "sphere", "kill"}}, {{400, 0, 0, 0, 9, 3}});
+    Geometry plant;
+    plant.cylinders.push_back({{0, -3, 0}, 0.1f, {0, 3, 0}, 0.1f, 0, 0, 0});
+    const auto all = dense.freePoints(Geometry{}, 7), free = dense.freePoints(plant, 7);
+    EXPECT_EQ(all.size(), 400u);
+    auto nearest = [](const glm::dvec3& p) { return std::min(glm::length(p - glm::dvec3(0, -3, 0)), glm::length(p - glm::dvec3(0, 3, 0))); };
+    size_t near = 0;
+    for (const auto& p : all) near += nearest(p) <= 3;
+    EXPECT_GT(near, 10u);
+    EXPECT_EQ(free.size(), all.size() - near);
+    for (const auto& p : free) EXPECT_GT(nearest(p), 3);
+    // The same seed, the same points.
+    EXPECT_EQ(dense.freePoints(Geometry{}, 7), all);
+}
+
 }  // namespace
 }  // namespace sprout
