@@ -151,7 +151,7 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
     static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light", "attraction",
-                                     "influence", "kill"};
+                                     "influence", "kill", "mesh"};
     std::vector<std::string> words;
     std::vector<double> numbers;
     size_t i = 0;
@@ -177,6 +177,18 @@ void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
         }
     }
     std::string error;
+    if (words.size() == 2 && words[0] == "mesh" && numbers.empty()) {
+        // A closed mesh beside the grammar, read with the same folder rules as #include.
+        const std::string& file = words[1];
+        auto fail = [&](const std::string& why) { m_sink.error(line, trim(text), why); };
+        if (!m_options.include) return fail("the mesh '" + file + "' needs the grammar's folder: save the grammar beside it first");
+        auto bytes = m_options.include(file, error);
+        if (!bytes) return fail("cannot read the mesh '" + file + "': " + error);
+        auto mesh = std::make_shared<TriMesh>();
+        if (!mesh->parse(*bytes, error)) return fail("'" + file + "' cannot be the environment: " + error);
+        if (!m_g.environment.declareMesh(std::move(mesh), error)) fail(error);
+        return;
+    }
     if (!m_g.environment.declare(words, numbers, error)) m_sink.error(line, trim(text).empty() ? line.text : trim(text), error);
 }
 

@@ -3,14 +3,119 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
 
 namespace sprout {
 
+namespace {
+
+// Möller-Trumbore: the distance along the ray to the triangle, or < 0 when it misses.
+double rayTriangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    if (std::fabs(det) < 1e-15) return -1;
+    const glm::dvec3 t = o - a;
+    const double u = glm::dot(t, p) / det;
+    if (u < 0 || u > 1) return -1;
+    const glm::dvec3 q = glm::cross(t, e1);
+    const double v = glm::dot(d, q) / det;
+    if (v < 0 || u + v > 1) return -1;
+    return glm::dot(e2, q) / det;
+}
+
+// The distance from p to the triangle (Ericson, Real-Time Collision Detection 5.1.5).
+double pointTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return glm::length(p - a);
+    const glm::dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return glm::length(p - b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return glm::length(p - (a + ab * (d1 / (d1 - d3))));
+    const glm::dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return glm::length(p - c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return glm::length(p - (a + ac * (d2 / (d2 - d6))));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return glm::length(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
+    const double denom = 1 / (va + vb + vc);
+    return glm::length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
+}
+
+}  // namespace
+
+bool TriMesh::parse(std::string_view obj, std::string& error) {
+    vertices.clear();
+    triangles.clear();
+    std::istringstream in{std::string(obj)};
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        std::istringstream words(line);
+        std::string tag;
+        if (!(words >> tag)) continue;
+        if (tag == "v") {
+            glm::dvec3 v;
+            if (!(words >> v.x >> v.y >> v.z) || !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+                error = "line " + std::to_string(number) + ": a vertex needs three finite numbers";
+                return false;
+            }
+            vertices.push_back(v);
+        } else if (tag == "f") {
+            std::vector<std::uint32_t> face;
+            std::string ref;
+            while (words >> ref) {
+                const long i = std::strtol(ref.c_str(), nullptr, 10);  // "7", "7/1", "7//3", "-1"
+                const long index = i < 0 ? long(vertices.size()) + i : i - 1;
+                if (i == 0 || index < 0 || index >= long(vertices.size())) {
+                    error = "line " + std::to_string(number) + ": the face names vertex " + ref + ", which is not there";
+                    return false;
+                }
+                face.push_back(std::uint32_t(index));
+            }
+            for (size_t k = 2; k < face.size(); ++k) triangles.insert(triangles.end(), {face[0], face[k - 1], face[k]});
+        }
+    }
+    if (triangles.empty()) {
+        error = "it has no faces";
+        return false;
+    }
+    // Closed: every edge is shared by exactly two triangles (inside and outside make sense).
+    std::unordered_map<std::uint64_t, int> edges;
+    for (size_t t = 0; t < triangles.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint64_t a = triangles[t + size_t(k)], b = triangles[t + size_t((k + 1) % 3)];
+            ++edges[std::min(a, b) << 32 | std::max(a, b)];
+        }
+    size_t open = 0;
+    for (const auto& [e, n] : edges) open += n != 2;
+    if (open) {
+        error = "it is not closed: " + std::to_string(open) + " of its edges do not belong to exactly two faces";
+        return false;
+    }
+    return true;
+}
+
 bool EnvShape::contains(const glm::dvec3& p) const {
     switch (kind) {
+        case Kind::Mesh: {
+            // Crossings of a ray: odd inside. A direction off the axes, so that it does not
+            // run along the edges of an axis-aligned mesh.
+            const glm::dvec3 d = glm::normalize(glm::dvec3(1.0, 0.000137, 0.000271));
+            int crossings = 0;
+            for (size_t t = 0; t < mesh->triangles.size(); t += 3)
+                crossings += rayTriangle(p, d, mesh->vertices[mesh->triangles[t]], mesh->vertices[mesh->triangles[t + 1]],
+                                         mesh->vertices[mesh->triangles[t + 2]]) > 0;
+            return crossings % 2 == 1;
+        }
         case Kind::Sphere: return glm::length(p - a) <= b.x;
         case Kind::Box: return p.x >= a.x && p.y >= a.y && p.z >= a.z && p.x <= b.x && p.y <= b.y && p.z <= b.z;
         case Kind::Ellipsoid: {
@@ -27,6 +132,13 @@ bool EnvShape::contains(const glm::dvec3& p) const {
 
 double EnvShape::distanceToSurface(const glm::dvec3& p) const {
     switch (kind) {
+        case Kind::Mesh: {
+            double best = 1e300;
+            for (size_t t = 0; t < mesh->triangles.size(); t += 3)
+                best = std::min(best, pointTriangle(p, mesh->vertices[mesh->triangles[t]], mesh->vertices[mesh->triangles[t + 1]],
+                                                    mesh->vertices[mesh->triangles[t + 2]]));
+            return best;
+        }
         case Kind::Sphere: return std::fabs(glm::length(p - a) - b.x);
         case Kind::Box: {
             const glm::dvec3 c = (a + b) * 0.5, h = (b - a) * 0.5, q = glm::abs(p - c) - h;
@@ -134,6 +246,10 @@ std::vector<glm::dvec3> Environment::freePoints(const Geometry& grown, std::uint
         case EnvShape::Kind::Cylinder:
             lo = shape.a - glm::dvec3(shape.b.x, 0, shape.b.x), hi = shape.a + glm::dvec3(shape.b.x, shape.b.y, shape.b.x);
             break;
+        case EnvShape::Kind::Mesh:
+            lo = hi = shape.mesh->vertices.front();
+            for (const auto& v : shape.mesh->vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+            break;
     }
     // SplitMix64, as the grammar's randomness: the same points on every machine.
     std::uint64_t state = seed ^ 0xa77ac7104e5ull;
@@ -225,7 +341,8 @@ void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double*
             distance = std::min(distance, s.distanceToSurface(p));
         }
         if (arity > 0) params[0] = inside ? 1 : 0;
-        if (arity > 1) params[1] = distance;
+        // Rounded to 1e-5 as the other answers: the turtle's float positions show otherwise.
+        if (arity > 1) params[1] = std::round(distance * 1e5) / 1e5 + 0.0;
         return;
     }
     // Obstacles: march the segment ahead in small steps (exact enough for boxes and spheres at
@@ -276,6 +393,18 @@ void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double*
     }
     if (arity > 1) params[1] = hit ? 1 : 0;
     for (int k = 0; k < 3 && 2 + k < arity; ++k) params[2 + k] = std::round(free[k] * 1e5) / 1e5 + 0.0;
+}
+
+bool Environment::declareMesh(std::shared_ptr<const TriMesh> mesh, std::string& error) {
+    if (!obstacles.empty() || ground || isLight() || isAttraction()) {
+        error = "one grammar has one kind of environment: a region to grow in, or obstacles and ground";
+        return false;
+    }
+    EnvShape s;
+    s.kind = EnvShape::Kind::Mesh;
+    s.mesh = std::move(mesh);
+    region.push_back(std::move(s));
+    return true;
 }
 
 bool Environment::declare(const std::vector<std::string>& words, const std::vector<double>& v, std::string& error) {
@@ -385,8 +514,8 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
         s.kind = EnvShape::Kind::Cylinder, s.a = {v[0], v[1], v[2]}, s.b = {v[3], v[4], 0};
         if (!(v[3] > 0 && v[4] > 0)) return error = "a cylinder's radius and height must be above 0", false;
     } else {
-        error = "unknown environment '" + kind + "': Sprout's are sphere, box, ellipsoid, cylinder (a region to grow in), "
-                "obstacle sphere|box and ground";
+        error = "unknown environment '" + kind + "': Sprout's are sphere, box, ellipsoid, cylinder, mesh (a region to grow "
+                "in), obstacle sphere|box, ground, light and attraction";
         return false;
     }
     (obstacle ? obstacles : region).push_back(s);

@@ -8,6 +8,7 @@
 //   environment: box X0 Y0 Z0 X1 Y1 Z1      the same for a box
 //   environment: ellipsoid CX CY CZ RX RY RZ
 //   environment: cylinder CX CY CZ R H      upright, its base at CY
+//   environment: mesh FILE.obj              a closed triangle mesh beside the grammar
 //       ?E(inside, distance): inside is 1 when the turtle is inside the region (any of the
 //       shapes), else 0; distance is its distance to the region's surface (>= 0).
 //
@@ -33,7 +34,9 @@
 //       ?E(x, y, z, count): the mean direction to the points pulling this bud (unit, or 0 0 0)
 //       and how many they are.
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -43,8 +46,18 @@
 
 namespace sprout {
 
+// A closed triangle mesh (an OBJ file's faces, fanned into triangles).
+struct TriMesh {
+    std::vector<glm::dvec3> vertices;
+    std::vector<std::uint32_t> triangles;  // three indices each
+    // Parses OBJ text (`v` and `f` lines); false with `error` when it has no faces, an index out
+    // of range, or is not closed (an edge that does not belong to exactly two faces).
+    bool parse(std::string_view obj, std::string& error);
+};
+
 struct EnvShape {
-    enum class Kind { Sphere, Box, Ellipsoid, Cylinder } kind = Kind::Sphere;
+    enum class Kind { Sphere, Box, Ellipsoid, Cylinder, Mesh } kind = Kind::Sphere;
+    std::shared_ptr<const TriMesh> mesh;  // Kind::Mesh
     glm::dvec3 a{0.0}, b{0.0};  // sphere: centre, (r, -, -); box: min, max; ellipsoid: centre, radii;
                                 // cylinder: base centre, (r, h, -)
     bool contains(const glm::dvec3& p) const;
@@ -95,6 +108,8 @@ struct Environment {
 
     // Parses the value of one `environment:` line into this environment; false with `error`.
     bool declare(const std::vector<std::string>& words, const std::vector<double>& numbers, std::string& error);
+    // `environment: mesh FILE.obj`: the mesh read from the file (the caller reads it).
+    bool declareMesh(std::shared_ptr<const TriMesh> mesh, std::string& error);
 };
 
 }  // namespace sprout

@@ -131,7 +131,7 @@ FileKind detectFileKind(std::string_view path, std::string_view bytes) {
 ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
     ParseOptions o;
     o.cpfg = kind == FileKind::Cpfg;
-    if (o.cpfg && !path.empty()) {
+    if (!path.empty()) {  // #include (cpfg) and files an environment names read beside the grammar
         const size_t slash = path.find_last_of('/');
         o.include = includeFromFolder(slash == std::string::npos ? "." : path.substr(0, slash));
         o.fileName = slash == std::string::npos ? path : path.substr(slash + 1);

@@ -65,8 +65,8 @@ TEST(Environment, DeclarationsAreChecked) {
     Environment env;
     std::string error;
     EXPECT_FALSE(env.declare({"cone"}, {1, 2, 3}, error));
-    EXPECT_EQ(error, "unknown environment 'cone': Sprout's are sphere, box, ellipsoid, cylinder (a region to grow in), "
-                     "obstacle sphere|box and ground");
+    EXPECT_EQ(error, "unknown environment 'cone': Sprout's are sphere, box, ellipsoid, cylinder, mesh (a region to grow in), "
+                     "obstacle sphere|box, ground, light and attraction");
     EXPECT_FALSE(env.declare({"sphere"}, {1, 2, 3}, error));
     EXPECT_EQ(error, "expected 4 numbers: 'environment: sphere CX CY CZ R'");
     EXPECT_FALSE(env.declare({"sphere"}, {0, 0, 0, -1}, error));
@@ -114,6 +114,28 @@ TEST(Environment, LightIsTheSkyLessTheShadowOfWhatGrewAbove) {
     EXPECT_FALSE(d.outcome.ok());
     EXPECT_EQ(d.outcome.message, "step 0: the light grid would have 18 x 1010010 x 18 = 3.27e+08 cells (1.3 GB at 4 bytes "
                                  "each), over the limit of 32 million: make the voxels larger ('environment: light VOXEL')");
+}
+
+// A closed mesh beside the grammar is a region like the built-in shapes; an open one is
+// refused, naming what is wrong.
+TEST(Environment, AClosedMeshIsARegion) {
+    const std::string dir = std::string(SPROUT_TEST_DATA) + "/";
+    ParseResult r = parse("n: 0\nenvironment: mesh env_cube.obj\naxiom: @M(0.5,0.5,0.5) ?E(0,0) @M(2,1,0.5) ?E(0,0) "
+                          "@M(0.5,1.9,0.5) ?E(0,0)\n",
+                          ParseOptions{false, includeFromFolder(dir), "grammar.lsys"});
+    for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, "grammar.lsys");
+    ASSERT_TRUE(r.ok());
+    DeriveResult d = derive(r.grammar, 0);
+    ASSERT_TRUE(d.outcome.ok()) << d.outcome.message;
+    EXPECT_EQ(toString(*d.string, r.grammar->alphabet), "@M(0.5,0.5,0.5)?E(1,0.5)@M(2,1,0.5)?E(0,1)@M(0.5,1.9,0.5)?E(1,0.1)");
+    ParseResult open = parse("n: 0\nenvironment: mesh env_open_cube.obj\naxiom: F\n",
+                             ParseOptions{false, includeFromFolder(dir), "grammar.lsys"});
+    ASSERT_FALSE(open.ok());
+    EXPECT_EQ(open.diagnostics[0].message, "'env_open_cube.obj' cannot be the environment: it is not closed: 3 of its edges "
+                                           "do not belong to exactly two faces");
+    ParseResult typed = parse("n: 0\nenvironment: mesh env_cube.obj\naxiom: F\n");
+    ASSERT_FALSE(typed.ok());
+    EXPECT_EQ(typed.diagnostics[0].message, "the mesh 'env_cube.obj' needs the grammar's folder: save the grammar beside it first");
 }
 
 // Space colonisation: every point pulls only its nearest bud within the radius of influence;
