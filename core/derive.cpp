@@ -26,6 +26,12 @@ std::string humanBytes(std::uint64_t b) {
 
 }  // namespace
 
+// A rewriting's fixed point, bit for bit: a NaN parameter is the same NaN, not a change.
+static bool sameString(const ModuleString& a, const ModuleString& b) {
+    return a.symbols == b.symbols && a.params.size() == b.params.size() &&
+           (a.params.size() == 0 || std::memcmp(a.params.data(), b.params.data(), a.params.size() * sizeof(double)) == 0);
+}
+
 std::string withThousands(std::uint64_t v) {
     std::string digits = std::to_string(v), out;
     for (size_t i = 0; i < digits.size(); ++i) {
@@ -39,25 +45,22 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     : m_grammar(std::move(grammar)),
       m_options(std::move(options)),
       m_seed(m_options.seed.value_or(m_grammar->settings.seed)) {
-    m_steps.push_back(std::make_shared<const ModuleString>(m_grammar->axiom));
-    m_stats.push_back({0, m_grammar->axiom.size(), m_grammar->axiom.params.size(), 0.0});
+    std::shared_ptr<PodBuffer<std::uint16_t>> axiomAges;
     if (m_options.trackAges) {
-        auto a = std::make_shared<PodBuffer<std::uint16_t>>();
-        a->resizeUninitialized(m_grammar->axiom.size());
-        std::fill(a->data(), a->data() + a->size(), std::uint16_t(0));
-        m_ages.push_back(std::move(a));
+        axiomAges = std::make_shared<PodBuffer<std::uint16_t>>();
+        axiomAges->resizeUninitialized(m_grammar->axiom.size());
+        std::fill(axiomAges->data(), axiomAges->data() + axiomAges->size(), std::uint16_t(0));
     }
     if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
-    if (m_decomposer || m_grammar->hasQueries()) {  // the axiom is decomposed and queried too
-        auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
-        PodBuffer<std::uint16_t>* ages = m_ages.empty() ? nullptr : const_cast<PodBuffer<std::uint16_t>*>(m_ages[0].get());
-        m_axiomOutcome = finishStep(0, *axiom, ages);
-        m_stats[0] = {0, axiom->size(), axiom->params.size(), 0.0};
-        m_steps[0] = std::move(axiom);
-    }
+    auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
+    if (m_decomposer || m_grammar->hasQueries())  // the axiom is decomposed and queried too
+        m_axiomOutcome = finishStep(0, *axiom, axiomAges.get());
+    m_stats.push_back({0, axiom->size(), axiom->params.size(), 0.0});
+    m_steps.push_back(std::move(axiom));
+    if (axiomAges) m_ages.push_back(std::move(axiomAges));
 }
 
 DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages) {
@@ -77,11 +80,7 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
             if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages ? &ageArgs : nullptr))
                 return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
-            // Bit for bit: a NaN parameter is the same NaN, not a change.
-            const bool same = out.symbols == s.symbols && out.params.size() == s.params.size() &&
-                              (out.params.size() == 0 ||
-                               std::memcmp(out.params.data(), s.params.data(), out.params.size() * sizeof(double)) == 0);
-            if (same) break;
+            if (sameString(out, s)) break;
             if (pass == depth) {
                 DeriveOutcome o;
                 o.status = DeriveStatus::Failed;
@@ -264,9 +263,7 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
         ModuleString next;
         Rng r = Rng::forStream(seed, 0x1e7e7 + std::uint64_t(level));
         rewriter.rewrite(out, next, r, nullptr, {});
-        const bool same = next.symbols == out.symbols && next.params.size() == out.params.size() &&
-                          (next.params.size() == 0 ||
-                           std::memcmp(next.params.data(), out.params.data(), next.params.size() * sizeof(double)) == 0);
+        const bool same = sameString(next, out);
         out = std::move(next);
         if (same) break;
     }
@@ -292,10 +289,7 @@ bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint6
     // would break the correspondence, and then the parameters are left as they were.
     std::vector<char> kind(grammar.alphabet.size(), 0);
     size_t count = 0;
-    for (size_t k = 0; k < grammar.alphabet.size(); ++k) {
-        const std::string& n = grammar.alphabet[SymbolId(k)].name;
-        if (n.size() == 2 && n[0] == '?' && std::string_view("PHULE").find(n[1]) != std::string_view::npos) kind[k] = n[1];
-    }
+    for (size_t k = 0; k < grammar.alphabet.size(); ++k) kind[k] = queryKind(grammar.alphabet[SymbolId(k)].name);
     for (SymbolId id : s.symbols) count += kind[id] != 0;
     if (count != frames.size()) return true;
     if (grammar.environment.isAttraction()) {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -126,6 +127,13 @@ struct ParseResult {
     std::vector<Diagnostic> diagnostics;     // errors and warnings, in line order
     bool ok() const { return grammar != nullptr; }
 };
+
+// What a module asks after each step: 'P' 'H' 'U' 'L' for the turtle's position and frame
+// (cpfg query modules), 'E' for the environment (communication module), 0 for anything else.
+inline char queryKind(std::string_view name) {
+    if (name.size() != 2 || name[0] != '?') return 0;
+    return std::string_view("PHULE").find(name[1]) != std::string_view::npos ? name[1] : 0;
+}
 
 // Reads the file named by an `#include` (cpfg family): its text, or nullopt with `error` set.
 using IncludeReader = std::function<std::optional<std::string>(const std::string& name, std::string& error)>;

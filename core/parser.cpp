@@ -43,11 +43,6 @@ size_t findLastTopLevel(std::string_view s, char token) {
     return found;
 }
 
-// cpfg query modules: the turtle writes a point or a vector into their three parameters.
-bool isQuery(std::string_view name) {
-    return name.size() == 2 && name[0] == '?' && std::string_view("PHUL").find(name[1]) != std::string_view::npos;
-}
-
 bool isIdentifier(std::string_view s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
     return std::all_of(s.begin(), s.end(), [](char c) {
@@ -157,7 +152,8 @@ bool Parser::tokenize(const SourceLine& line, std::string_view text, std::vector
 }
 
 std::optional<SymbolId> Parser::symbolFor(const SourceLine& line, std::string_view name, int arity) {
-    if (isQuery(name) && arity != 3 && arity != 0) {
+    // A query module gets a point or a vector: three parameters (?E takes any number).
+    if (const char q = queryKind(name); q && q != 'E' && arity != 3 && arity != 0) {
         m_sink.error(line, name, "the query module '" + std::string(name) + "' has 3 parameters (x, y, z) that the turtle fills in, not " +
                                      std::to_string(arity));
         return std::nullopt;
@@ -889,10 +885,8 @@ bool Grammar::stochastic() const {
 }
 
 bool Grammar::hasQueries() const {
-    for (size_t s = 0; s < alphabet.size(); ++s) {
-        const std::string& n = alphabet[SymbolId(s)].name;
-        if (n.size() == 2 && n[0] == '?' && (n[1] == 'P' || n[1] == 'H' || n[1] == 'U' || n[1] == 'L' || n[1] == 'E')) return true;
-    }
+    for (size_t s = 0; s < alphabet.size(); ++s)
+        if (queryKind(alphabet[SymbolId(s)].name)) return true;
     return false;
 }
 

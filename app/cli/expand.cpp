@@ -1,10 +1,7 @@
 // sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]
 // Prints the derived string of step N: module names concatenated, parameters as
 // name(p1,p2) in shortest round-trip form. The test oracle relies on this format.
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -15,50 +12,36 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
 #include "core/derive.hpp"
+#include "core/io/atomic_file.hpp"
 
 namespace sprout::cli {
 namespace {
 
-// Standard output in large writes from one reusable buffer (no stdio per module).
+// Standard output in large writes from one reusable buffer (no stdio per module), through the
+// writer every file goes through ("-" is standard output there).
 class Output {
 public:
-    Output() : m_buffer(kSize) {}
+    Output() : m_buffer(kSize) {
+        std::string error;
+        m_file.open("-", error);
+    }
     char* reserve(std::size_t n) {
         if (m_used + n > kSize) flush();
         return m_buffer.data() + m_used;
     }
     void commit(std::size_t n) { m_used += n; }
-    void put(const char* p, std::size_t n) {
-        if (n > kSize) {
-            flush();
-            send(p, n);
-            return;
-        }
-        std::memcpy(reserve(n), p, n);
-        m_used += n;
-    }
+    // False after a closed pipe or a full disk: the exit status says so.
     bool flush() {
-        send(m_buffer.data(), m_used);
+        m_file.write(m_buffer.data(), m_used);
         m_used = 0;
-        return m_ok;
+        return m_file.ok();
     }
     static constexpr std::size_t kSize = 4 << 20;
 
 private:
-    void send(const char* p, std::size_t n) {
-        while (n > 0 && m_ok) {
-            const ssize_t w = ::write(STDOUT_FILENO, p, n);
-            if (w < 0 && errno == EINTR) continue;
-            if (w <= 0) {
-                m_ok = false;  // a closed pipe or a full disk: the exit status says so
-                break;
-            }
-            p += w, n -= std::size_t(w);
-        }
-    }
+    AtomicFile m_file;
     std::vector<char> m_buffer;
     std::size_t m_used = 0;
-    bool m_ok = true;
 };
 
 // The string as `toString` prints it, at the speed of a table lookup: a string of one-letter
@@ -105,7 +88,8 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
             out.commit(std::size_t(at - dst));
         }
     }
-    out.put("\n", 1);
+    *out.reserve(1) = '\n';
+    out.commit(1);
     return out.flush();
 }
 

@@ -40,19 +40,7 @@ bool startsWithNoCase(std::string_view s, std::string_view prefix) {
 
 // The offset of the value after "key:" on this line (any case: cpfg writes `Axiom:`), or npos.
 // `n` is also `iterations` and cpfg's `derivation length`.
-size_t valueStart(std::string_view line, std::string_view key) {
-    if (key == "n" || key == "iterations") {
-        for (std::string_view alias : {"n", "iterations", "derivation length"}) {
-            std::string_view t = trimLeft(line);
-            if (!startsWithNoCase(t, alias)) continue;
-            std::string_view rest = trimLeft(t.substr(alias.size()));
-            if (!rest.starts_with(":") || line.find("->") != std::string_view::npos) continue;
-            size_t off = size_t(rest.data() - line.data()) + 1;
-            while (off < line.size() && line[off] == ' ') ++off;
-            return off;
-        }
-        return std::string_view::npos;
-    }
+size_t keyValueStart(std::string_view line, std::string_view key) {
     std::string_view t = trimLeft(line);
     if (!startsWithNoCase(t, key)) return std::string_view::npos;
     std::string_view rest = trimLeft(t.substr(key.size()));
@@ -60,6 +48,13 @@ size_t valueStart(std::string_view line, std::string_view key) {
     size_t off = size_t(rest.data() - line.data()) + 1;
     while (off < line.size() && line[off] == ' ') ++off;
     return off;
+}
+
+size_t valueStart(std::string_view line, std::string_view key) {
+    if (key != "n" && key != "iterations") return keyValueStart(line, key);
+    for (std::string_view alias : {"n", "iterations", "derivation length"})
+        if (size_t off = keyValueStart(line, alias); off != std::string_view::npos) return off;
+    return std::string_view::npos;
 }
 
 }  // namespace
