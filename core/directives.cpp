@@ -151,7 +151,7 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
     static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light", "attraction",
-                                     "influence", "kill", "mesh"};
+                                     "influence", "kill", "mesh", "sun"};
     std::vector<std::string> words;
     std::vector<double> numbers;
     size_t i = 0;

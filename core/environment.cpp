@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace sprout {
 
@@ -185,15 +186,23 @@ double LightGrid::lightAt(const glm::dvec3& p) const {
     return std::max(0.0, 1.0 - s);
 }
 
+glm::dvec3 Environment::sunDirection() const {
+    const double az = glm::radians(sunAzimuth), el = glm::radians(sunElevation);
+    if (sunElevation >= 90) return {0, 1, 0};  // exactly overhead: no rounding in the default
+    return glm::normalize(glm::dvec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)));
+}
+
 bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& error) const {
     grid = LightGrid();
     grid.voxel = lightVoxel;
     if (g.bounds.empty) return true;
-    // Shadow reaches kDepth cells down and as many sideways: the grid is the plant's box,
-    // widened by that much on the sides and below.
+    // Shadow reaches kDepth cells away from the sun and as many sideways: the grid is the
+    // plant's box, widened by that much on the sides and below (and above, for a sun below).
     constexpr int kDepth = 8;
+    const glm::dvec3 sun = sunDirection(), away = -sun;
+    const double up = sun.y >= 0 ? 1 : kDepth + 1;
     const glm::dvec3 lo = glm::dvec3(g.bounds.min) - glm::dvec3(kDepth + 1, kDepth + 1, kDepth + 1) * lightVoxel;
-    const glm::dvec3 hi = glm::dvec3(g.bounds.max) + glm::dvec3(kDepth + 1, 1, kDepth + 1) * lightVoxel;
+    const glm::dvec3 hi = glm::dvec3(g.bounds.max) + glm::dvec3(kDepth + 1, up, kDepth + 1) * lightVoxel;
     const glm::dvec3 cells = glm::ceil((hi - lo) / lightVoxel);
     const double total = cells.x * cells.y * cells.z;
     if (!(total <= double(kMaxLightCells))) {
@@ -208,21 +217,28 @@ bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& er
     grid.origin = lo;
     grid.nx = int(cells.x), grid.ny = int(cells.y), grid.nz = int(cells.z);
     grid.shadow.assign(std::size_t(total), 0.0f);
-    auto at = [&](int i, int j, int k) -> float& {
-        return grid.shadow[(std::size_t(j) * std::size_t(grid.nz) + std::size_t(k)) * std::size_t(grid.nx) + std::size_t(i)];
-    };
-    // Each leaf (and a quarter for each segment's end) shades a pyramid of cells below it.
+    // The pyramid's axis steps one cell along the shadow's main axis each time, and spreads
+    // over the other two.
+    const glm::dvec3 mag = glm::abs(away);
+    const int axis = mag.y >= mag.x && mag.y >= mag.z ? 1 : mag.x >= mag.z ? 0 : 2;
+    const glm::dvec3 stride = away / mag[axis];  // one cell along the main axis per step
+    const int spreadA = axis == 0 ? 1 : 0, spreadB = axis == 2 ? 1 : 2;
+    const int n[3] = {grid.nx, grid.ny, grid.nz};
+    // Each leaf (and a quarter for each segment's end) shades a pyramid of cells away from the sun.
     auto cast = [&](const glm::vec3& p, double weight) {
         const glm::dvec3 c = (glm::dvec3(p) - lo) / lightVoxel;
-        const int i0 = int(std::floor(c.x)), j0 = int(std::floor(c.y)), k0 = int(std::floor(c.z));
         for (int q = 1; q <= kDepth; ++q) {
-            const int j = j0 - q;
-            if (j < 0) break;
+            const glm::dvec3 centre = c + stride * double(q);
+            int cell[3] = {int(std::floor(centre.x)), int(std::floor(centre.y)), int(std::floor(centre.z))};
+            if (cell[axis] < 0 || cell[axis] >= n[axis]) break;
             const float s = float(weight * lightShadow * std::pow(2.0, -(q - 1)));
-            for (int dk = -(q - 1); dk <= q - 1; ++dk)
-                for (int di = -(q - 1); di <= q - 1; ++di) {
-                    const int i = i0 + di, k = k0 + dk;
-                    if (i >= 0 && k >= 0 && i < grid.nx && k < grid.nz) at(i, j, k) += s;
+            const int a0 = cell[spreadA], b0 = cell[spreadB];
+            for (int db = -(q - 1); db <= q - 1; ++db)
+                for (int da = -(q - 1); da <= q - 1; ++da) {
+                    cell[spreadA] = a0 + da, cell[spreadB] = b0 + db;
+                    if (cell[spreadA] >= 0 && cell[spreadB] >= 0 && cell[spreadA] < n[spreadA] && cell[spreadB] < n[spreadB])
+                        grid.shadow[(std::size_t(cell[1]) * std::size_t(grid.nz) + std::size_t(cell[2])) * std::size_t(grid.nx) +
+                                    std::size_t(cell[0])] += s;
                 }
         }
     };
@@ -458,8 +474,17 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
         return false;
     }
     if (!obstacle && words[0] == "light") {
-        if (v.empty() || v.size() > 2 || !(v[0] > 0) || (v.size() == 2 && !(v[1] > 0))) {
-            error = "expected 'environment: light VOXEL [SHADOW]', with a voxel size above 0 (and a shadow above 0)";
+        // light VOXEL [SHADOW] [sun AZIMUTH ELEVATION]
+        const bool sun = words.size() == 2 && words[1] == "sun";
+        const size_t own = v.size() - (sun ? 2 : 0);
+        if ((words.size() > 1 && !sun) || v.size() < (sun ? 3u : 1u) || own < 1 || own > 2 || !(v[0] > 0) ||
+            (own == 2 && !(v[1] > 0))) {
+            error = "expected 'environment: light VOXEL [SHADOW] [sun AZIMUTH ELEVATION]', with a voxel size above 0 (and a "
+                    "shadow above 0)";
+            return false;
+        }
+        if (sun && !(std::isfinite(v[own]) && v[own + 1] > 0 && v[own + 1] <= 90)) {
+            error = "the sun's elevation must be above 0 and at most 90 degrees (90: overhead)";
             return false;
         }
         if (!region.empty() || !obstacles.empty() || ground) {
@@ -467,7 +492,8 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
             return false;
         }
         lightVoxel = v[0];
-        if (v.size() == 2) lightShadow = v[1];
+        if (own == 2) lightShadow = v[1];
+        if (sun) sunAzimuth = v[own], sunElevation = v[own + 1];
         return true;
     }
     if (isLight()) {

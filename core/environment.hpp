@@ -20,12 +20,15 @@
 //       the heading when nothing is hit, else the heading slid along the surface it hits (head-on:
 //       n x (1,0,0), or n x (0,0,1) when the normal n is along x).
 //
-//   environment: light VOXEL [SHADOW]       light from the sky, shaded by the plant itself
+//   environment: light VOXEL [SHADOW] [sun AZIMUTH ELEVATION]
+//       light from the sky, shaded by the plant itself
 //       ?E(light): the light at the turtle, 1 in the open; each leaf (and, a quarter as much,
 //       each stem segment) grown so far casts shadow into a voxel grid of VOXEL-sized cells,
 //       SHADOW (0.5 by default) in the cell below it, halving with each cell further down and
 //       spreading one cell wider each cell down (shadow propagation, Palubicki et al. 2009);
-//       light = max(0, 1 - shadow).
+//       light = max(0, 1 - shadow). With `sun`, the light comes from that direction (degrees:
+//       azimuth about +Y from +Z, elevation above the horizon, 90 = overhead, the default) and
+//       the shadow is cast away from it.
 //
 //   environment: attraction N sphere|box|ellipsoid|cylinder ... [influence R] [kill K]
 //       space colonisation (Runions, Lane and Prusinkiewicz 2007): N points scattered (seeded)
@@ -80,6 +83,8 @@ struct Environment {
     std::optional<double> ground;     // the ground plane's height
     double lightVoxel = 0;            // > 0: a light environment with voxels this size
     double lightShadow = 0.5;
+    double sunAzimuth = 0, sunElevation = 90;  // degrees; where the light comes from
+    glm::dvec3 sunDirection() const;           // unit, towards the sun
     // Space colonisation: the points' shape, their number, the radii of influence and kill.
     std::optional<EnvShape> attractionShape;
     int attractionPoints = 0;

@@ -116,6 +116,22 @@ TEST(Environment, LightIsTheSkyLessTheShadowOfWhatGrewAbove) {
                                  "each), over the limit of 32 million: make the voxels larger ('environment: light VOXEL')");
 }
 
+// A low sun casts the shadow away from it: from azimuth 90 (+X) at 45 degrees, the leaf's
+// shadow runs down and towards -X, one cell aside for each cell down; straight below it and
+// on the sunny side there is none.
+TEST(Environment, LightFromTheSunsDirection) {
+    const std::string g = "n: 0\nenvironment: light 1 sun 90 45\n"
+                          "axiom: @M(0,5,0) ~l(1) @M(-2,3,0) ?E(0) @M(0,3,0) ?E(0) @M(2,3,0) ?E(0) @M(-1,4,0) ?E(0) "
+                          "@M(-4,1,0) ?E(0)\n";
+    EXPECT_EQ(test::expand(g, 0), "@M(0,5,0)~l(1)@M(-2,3,0)?E(0.75)@M(0,3,0)?E(1)@M(2,3,0)?E(1)@M(-1,4,0)?E(0.5)@M(-4,1,0)?E(0.9375)");
+    // Overhead (the default) is the same as saying so.
+    EXPECT_EQ(test::expand("n: 0\nenvironment: light 1 0.5 sun 0 90\naxiom: @M(0,5,0) ~l(1) @M(0,3,0) ?E(0)\n", 0),
+              "@M(0,5,0)~l(1)@M(0,3,0)?E(0.75)");
+    auto r = parse("n: 0\nenvironment: light 1 sun 30 0\naxiom: ?E(0)\n");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics[0].message, "the sun's elevation must be above 0 and at most 90 degrees (90: overhead)");
+}
+
 // A closed mesh beside the grammar is a region like the built-in shapes; an open one is
 // refused, naming what is wrong.
 TEST(Environment, AClosedMeshIsARegion) {
