@@ -51,7 +51,7 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
         axiomAges->resizeUninitialized(m_grammar->axiom.size());
         std::fill(axiomAges->data(), axiomAges->data() + axiomAges->size(), std::uint16_t(0));
     }
-    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
+    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
@@ -59,6 +59,7 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     if (m_decomposer || m_grammar->hasQueries())  // the axiom is decomposed and queried too
         m_axiomOutcome = finishStep(0, *axiom, axiomAges.get());
     m_stats.push_back({0, axiom->size(), axiom->params.size(), 0.0});
+    if (m_options.holdQueries) m_last = axiom;
     m_steps.push_back(std::move(axiom));
     if (axiomAges) m_ages.push_back(std::move(axiomAges));
 }
@@ -94,7 +95,7 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             if (ages) *ages = std::move(outAges);
         }
     }
-    if (m_grammar->hasQueries()) {
+    if (m_grammar->hasQueries() && !m_options.holdQueries) {
         std::string error;
         if (!answerQueries(*m_grammar, s, step, m_seed, &error)) {
             DeriveOutcome o;
@@ -215,6 +216,7 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
         }
         if (ages) m_ages.push_back(std::move(ages));
         record(k, *out, millisSince(t0));
+        if (m_options.holdQueries) m_last = out;
         m_steps.push_back(std::move(out));
         m_reached = k;
         if (m_options.progress) m_options.progress(k, n, 1.0);
@@ -271,70 +273,127 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
 }
 
 bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error) {
-    std::vector<QueryFrame> frames;
-    Geometry scratch;
-    TurtleOptions t{step, seed, nullptr};
-    t.fromTree = false;
-    t.queries = &frames;
-    interpret(s, grammar, t, scratch);
+    std::vector<QueryTarget> one{{&grammar, &s, step, seed}};
+    return answerQueriesTogether(grammar.environment, seed, one, error);
+}
+
+namespace {
+
+// A plant's frame turned by `yaw` degrees about +Y (forests), and back.
+glm::dvec3 turnBy(const glm::dvec3& v, double yaw) {
+    const double c = std::cos(yaw * 3.14159265358979 / 180), s = std::sin(yaw * 3.14159265358979 / 180);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+
+}  // namespace
+
+bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets, std::string* error) {
+    struct Pass {
+        std::vector<QueryFrame> frames;
+        Geometry grown;
+        std::vector<char> kind;
+        bool answerable = false;
+    };
+    std::vector<Pass> passes(targets.size());
+    for (size_t t = 0; t < targets.size(); ++t) {
+        const QueryTarget& q = targets[t];
+        Pass& pass = passes[t];
+        TurtleOptions o{q.step, q.seed, nullptr};
+        o.fromTree = false;
+        o.queries = &pass.frames;
+        interpret(*q.string, *q.grammar, o, pass.grown);
+        // Frames come in drawing order; a homomorphism that drops or repeats query modules
+        // would break the correspondence, and then the parameters are left as they were.
+        const Alphabet& alphabet = q.grammar->alphabet;
+        pass.kind.assign(alphabet.size(), 0);
+        for (size_t k = 0; k < alphabet.size(); ++k) pass.kind[k] = queryKind(alphabet[SymbolId(k)].name);
+        size_t count = 0;
+        for (SymbolId id : q.string->symbols) count += pass.kind[id] != 0;
+        pass.answerable = count == pass.frames.size();
+    }
+    // What the environment sees: every plant where it stands. One plant at the origin is its
+    // own geometry.
+    const bool placed = targets.size() > 1 || targets[0].yaw != 0 || targets[0].at != glm::dvec3(0.0);
+    Geometry world;
+    const Geometry* grown = &passes[0].grown;
+    if (placed && (env.isLight() || env.isAttraction())) {
+        for (size_t t = 0; t < targets.size(); ++t)
+            placeGeometry(passes[t].grown, float(targets[t].yaw), glm::vec3(targets[t].at), world);
+        grown = &world;
+    }
     LightGrid light;
-    if (grammar.environment.isLight()) {
+    if (env.isLight()) {
         std::string why;
-        if (!grammar.environment.buildLight(scratch, light, why)) {
+        if (!env.buildLight(*grown, light, why)) {
             if (error) *error = why;
             return false;
         }
     }
-    // Frames come in drawing order; a homomorphism that drops or repeats query modules
-    // would break the correspondence, and then the parameters are left as they were.
-    std::vector<char> kind(grammar.alphabet.size(), 0);
-    size_t count = 0;
-    for (size_t k = 0; k < grammar.alphabet.size(); ++k) kind[k] = queryKind(grammar.alphabet[SymbolId(k)].name);
-    for (SymbolId id : s.symbols) count += kind[id] != 0;
-    if (count != frames.size()) return true;
-    if (grammar.environment.isAttraction()) {
-        // Space colonisation answers every bud at once: a point pulls only its nearest bud.
+    auto toWorld = [&](const QueryTarget& q, const glm::vec3& p) { return turnBy(glm::dvec3(p), q.yaw) + q.at; };
+    // Directions in an answer go back into the plant's own frame.
+    auto directionBack = [&](const QueryTarget& q, double* out, int count) {
+        if (q.yaw == 0 || count < 3) return;
+        const glm::dvec3 v = turnBy(glm::dvec3(out[0], out[1], out[2]), -q.yaw);
+        for (int k = 0; k < 3; ++k) out[k] = std::round(v[k] * 1e5) / 1e5 + 0.0;
+    };
+    if (env.isAttraction()) {
+        // Space colonisation answers every bud at once, of every plant: a point pulls only its
+        // nearest bud.
         std::vector<glm::dvec3> buds;
         std::vector<double*> params;
         std::vector<int> arities;
+        std::vector<size_t> owner;
+        for (size_t t = 0; t < targets.size(); ++t) {
+            if (!passes[t].answerable) continue;
+            ModuleString& s = *targets[t].string;
+            const Alphabet& alphabet = targets[t].grammar->alphabet;
+            size_t q = 0, pp = 0;
+            for (size_t i = 0; i < s.size(); ++i) {
+                const SymbolId id = s.symbols[i];
+                const unsigned a = alphabet[id].arity;
+                if (passes[t].kind[id]) {
+                    const QueryFrame& f = passes[t].frames[q++];
+                    if (passes[t].kind[id] == 'E') {
+                        buds.push_back(toWorld(targets[t], f.position));
+                        params.push_back(&s.params[pp]);
+                        arities.push_back(int(a));
+                        owner.push_back(t);
+                    }
+                }
+                pp += a;
+            }
+        }
+        env.answerAttraction(buds, env.freePoints(*grown, envSeed), params, arities);
+        for (size_t b = 0; b < buds.size(); ++b) directionBack(targets[owner[b]], params[b], std::min(arities[b], 3));
+    }
+    for (size_t t = 0; t < targets.size(); ++t) {
+        if (!passes[t].answerable) continue;
+        const QueryTarget& target = targets[t];
+        ModuleString& s = *target.string;
+        const Alphabet& alphabet = target.grammar->alphabet;
+        const std::vector<char>& kind = passes[t].kind;
         size_t q = 0, pp = 0;
         for (size_t i = 0; i < s.size(); ++i) {
             const SymbolId id = s.symbols[i];
-            const unsigned a = grammar.alphabet[id].arity;
-            if (kind[id]) {
-                const QueryFrame& f = frames[q++];
-                if (kind[id] == 'E') {
-                    buds.emplace_back(f.position);
-                    params.push_back(&s.params[pp]);
-                    arities.push_back(int(a));
+            const unsigned a = alphabet[id].arity;
+            if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
+                const QueryFrame& f = passes[t].frames[q++];
+                if (env.isAttraction()) {  // answered above: the ?E only uses up its frame here
+                } else {
+                    const glm::dvec3 p = toWorld(target, f.position), h = turnBy(glm::dvec3(f.heading), target.yaw);
+                    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0) {
+                        env.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
+                        if (!env.obstacles.empty() || env.ground) directionBack(target, &s.params[pp] + 2, int(a) - 2);
+                    }
                 }
+            } else if (kind[id]) {
+                const QueryFrame& f = passes[t].frames[q++];
+                const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
+                // Rounded to 1e-5: the float turtle's last bits would otherwise show as 2.9999998.
+                for (unsigned k = 0; k < a && k < 3; ++k) s.params[pp + k] = std::round(double(v[int(k)]) * 1e5) / 1e5 + 0.0;
             }
             pp += a;
         }
-        grammar.environment.answerAttraction(buds, grammar.environment.freePoints(scratch, seed), params, arities);
-        // The ?P ?H ?U ?L of the same string below; the ?E are answered: they only use up
-        // their frame there.
-        for (char& k : kind)
-            if (k == 'E') k = 'e';
-    }
-    size_t q = 0, pp = 0;
-    for (size_t i = 0; i < s.size(); ++i) {
-        const SymbolId id = s.symbols[i];
-        const unsigned a = grammar.alphabet[id].arity;
-        if (kind[id] == 'e') {
-            ++q;
-        } else if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
-            const QueryFrame& f = frames[q++];
-            const glm::dvec3 p(f.position), h(f.heading);
-            if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)
-                grammar.environment.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
-        } else if (kind[id]) {
-            const QueryFrame& f = frames[q++];
-            const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
-            // Rounded to 1e-5: the float turtle's last bits would otherwise show as 2.9999998.
-            for (unsigned k = 0; k < a && k < 3; ++k) s.params[pp + k] = std::round(double(v[int(k)]) * 1e5) / 1e5 + 0.0;
-        }
-        pp += a;
     }
     return true;
 }

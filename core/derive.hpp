@@ -35,6 +35,10 @@ struct DeriveOptions {
     // Also record the step that created each module (2 more bytes per module), for growth
     // animation; uses the step-by-step engine for every grammar.
     bool trackAges = false;
+    // Leave the query modules of each step unanswered: the caller answers them in
+    // unansweredStep() before deriving the next step (forests that share one environment
+    // derive their plants in lockstep). Uses the step-by-step engine.
+    bool holdQueries = false;
 };
 
 struct StepStats {
@@ -74,6 +78,8 @@ public:
     bool fastPath() const { return m_d0l != nullptr; }
     const Grammar& grammar() const { return *m_grammar; }
     std::uint64_t seed() const { return m_seed; }
+    // With DeriveOptions::holdQueries: the last step made, to answer its query modules in.
+    ModuleString* unansweredStep() { return m_last.get(); }
 
 private:
     DeriveOutcome checkSize(int step, std::uint64_t modules, std::uint64_t params) const;
@@ -87,6 +93,7 @@ private:
     DeriveOptions m_options;
     std::uint64_t m_seed;
     std::vector<std::shared_ptr<const ModuleString>> m_steps;  // null where not made (D0L)
+    std::shared_ptr<ModuleString> m_last;  // holdQueries: the last step, still to be answered
     std::vector<std::shared_ptr<const PodBuffer<std::uint16_t>>> m_ages;  // trackAges only
     std::vector<StepStats> m_stats;
     int m_reached = 0;
@@ -113,6 +120,23 @@ ModuleString applyInterpretation(const Grammar& grammar, const ModuleString& s, 
 // ?E modules are answered by the grammar's environment; false with `error` when it cannot
 // (a light grid that would be too big).
 bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error = nullptr);
+
+// One string whose query modules are answered together with others (a forest sharing one
+// environment): its grammar, step and seed, and where the plant stands: its own frame turned
+// by `yaw` degrees about +Y and moved to `at`. ?P ?H ?U ?L answer in the plant's own frame;
+// ?E asks the shared environment in the world, which sees every plant, and its directions
+// come back in the plant's frame.
+struct QueryTarget {
+    const Grammar* grammar = nullptr;
+    ModuleString* string = nullptr;
+    int step = 0;
+    std::uint64_t seed = 1;
+    double yaw = 0;
+    glm::dvec3 at{0.0};
+};
+// `envSeed` seeds the environment's own randomness (attraction points).
+bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets,
+                           std::string* error = nullptr);
 
 // "12,345,678"
 std::string withThousands(std::uint64_t v);

@@ -1,5 +1,6 @@
 #include "core/forest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -21,18 +22,31 @@ bool isForestScene(std::string_view text) {
     return false;
 }
 
-ForestParseResult parseForest(std::string_view text) {
+ForestParseResult parseForest(std::string_view text, const IncludeReader& include) {
     ForestParseResult r;
     Forest f;
     std::istringstream in{std::string(text)};
     std::string line;
     int number = 0;
+    // The environment lines, each on its own line number in an otherwise empty grammar: the
+    // grammar parser reads them as it does in a grammar, and its messages keep their line:col.
+    std::string environmentText;
+    bool hasEnvironment = false;
     while (std::getline(in, line)) {
         ++number;
         if (size_t h = line.find('#'); h != std::string::npos) line.resize(h);
         std::istringstream words(line);
         std::string key;
-        if (!(words >> key)) continue;
+        if (!(words >> key)) {
+            environmentText += '\n';
+            continue;
+        }
+        if (key == "environment:") {
+            environmentText += line + '\n';
+            hasEnvironment = true;
+            continue;
+        }
+        environmentText += '\n';
         auto bad = [&](const std::string& msg) { r.diagnostics.push_back({number, 1, msg, Severity::Error}); };
         if (key == "scene:") {
             std::string kind;
@@ -57,6 +71,12 @@ ForestParseResult parseForest(std::string_view text) {
             bad("unknown scene setting '" + key + "'");
         }
     }
+    if (hasEnvironment) {
+        ParseResult e = parse(environmentText + "axiom: F\n", ParseOptions{false, include, ""});
+        for (const Diagnostic& d : e.diagnostics)
+            if (d.severity == Severity::Error) r.diagnostics.push_back(d);
+        if (e.grammar) f.environment = e.grammar->environment;
+    }
     if (f.species.empty() && r.diagnostics.empty()) r.diagnostics.push_back({1, 1, "a forest needs at least one 'species:'", Severity::Error});
     if (r.diagnostics.empty()) r.forest = std::move(f);
     return r;
@@ -64,38 +84,63 @@ ForestParseResult parseForest(std::string_view text) {
 
 namespace {
 
-struct Species {
+// A plant that asks the shared environment, and where it stands.
+struct SharingPlant {
     std::shared_ptr<const Grammar> grammar;
+    std::uint64_t seed;
+    float yaw;
+    glm::vec3 at;
 };
 
-// Appends `g` turned by `yaw` degrees about +Y and moved to `at`.
-void place(const Geometry& g, float yaw, const glm::vec3& at, Geometry& out) {
-    const float c = std::cos(yaw * 3.14159265f / 180), s = std::sin(yaw * 3.14159265f / 180);
-    auto move = [&](const glm::vec3& p) { return glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z) + at; };
-    auto turn = [&](const glm::vec3& p) { return glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z); };
-    for (const auto& cyl : g.cylinders) {
-        CylinderInstance x = cyl;
-        x.start = move(cyl.start);
-        x.end = move(cyl.end);
-        out.cylinders.push_back(x);
-        out.bounds.add(x.start);
-        out.bounds.add(x.end);
+// Grows the plants step by step together: after each step the forest's one environment
+// answers every plant's ?E where it stands, seeing all of them.
+bool growTogether(const Forest& f, const std::vector<SharingPlant>& plants, Geometry& out, ForestStats& stats, std::string& error,
+                  const DeriveLimits& limits) {
+    std::vector<std::unique_ptr<Derivation>> derivations;
+    int steps = 0;
+    for (const SharingPlant& p : plants) {
+        DeriveOptions o;
+        o.seed = p.seed;
+        o.limits = limits;
+        o.holdQueries = true;
+        derivations.push_back(std::make_unique<Derivation>(p.grammar, o));
+        steps = std::max(steps, p.grammar->settings.iterations);
     }
-    for (const auto& sf : g.surfaces) {
-        SurfaceInstance x = sf;
-        x.position = move(sf.position);
-        x.heading = turn(sf.heading);
-        x.up = turn(sf.up);
-        out.surfaces.push_back(x);
-        out.bounds.add(x.position);
+    // A plant that has reached its own n stays in the world, and its last step is answered
+    // again with the others (its question is about the environment as it is now).
+    auto answer = [&](int step) {
+        std::vector<QueryTarget> targets;
+        for (size_t i = 0; i < plants.size(); ++i) {
+            const int k = std::min(step, plants[i].grammar->settings.iterations);
+            targets.push_back({plants[i].grammar.get(), derivations[i]->unansweredStep(), k, plants[i].seed, plants[i].yaw,
+                               glm::dvec3(plants[i].at)});
+        }
+        std::string why;
+        if (answerQueriesTogether(f.environment, f.seed, targets, &why)) return true;
+        error = "step " + std::to_string(step) + ": " + why;
+        return false;
+    };
+    if (!answer(0)) return false;
+    for (int k = 1; k <= steps; ++k) {
+        for (size_t i = 0; i < plants.size(); ++i) {
+            if (k > plants[i].grammar->settings.iterations) continue;
+            DeriveOutcome o = derivations[i]->deriveTo(k);
+            if (!o.ok()) {
+                error = o.message;
+                return false;
+            }
+        }
+        if (!answer(k)) return false;
     }
-    const std::uint32_t base = std::uint32_t(out.polygons.positions.size());
-    for (size_t i = 0; i < g.polygons.positions.size(); ++i) {
-        out.polygons.positions.push_back(move(g.polygons.positions[i]));
-        out.polygons.normals.push_back(turn(g.polygons.normals[i]));
-        out.polygons.colours.push_back(g.polygons.colours[i]);
+    Geometry plant;
+    for (size_t i = 0; i < plants.size(); ++i) {
+        const int n = plants[i].grammar->settings.iterations;
+        interpret(*derivations[i]->step(n), *plants[i].grammar, {n, plants[i].seed, nullptr}, plant);
+        placeGeometry(plant, plants[i].yaw, plants[i].at, out);
+        stats.segments += plant.cylinders.size();
     }
-    for (auto i : g.polygons.indices) out.polygons.indices.push_back(base + i);
+    stats.sharing = int(plants.size());
+    return true;
 }
 
 }  // namespace
@@ -132,7 +177,13 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
     for (auto& v : rowShift) v = float(rng.uniform() * 0.4 - 0.2) * cell;  // whole rows by up to 20%
     for (auto& v : columnShift) v = float(rng.uniform() * 0.4 - 0.2) * cell;
     Geometry plant;
+    // Plants that ask the shared environment: grown after the others, all together.
+    std::vector<SharingPlant> sharing;
     auto grow = [&](const std::shared_ptr<const Grammar>& g, std::uint64_t seed, float yaw, glm::vec3 at) {
+        if (!f.environment.empty() && g->hasQueries()) {
+            sharing.push_back({g, seed, yaw, at});
+            return true;
+        }
         DeriveOptions o;
         o.seed = seed;  // each plant its own specimen
         o.limits = limits;
@@ -144,7 +195,7 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             return false;
         }
         interpret(*d.step(n), *g, {n, seed, nullptr}, plant);
-        place(plant, yaw, at, out);
+        placeGeometry(plant, yaw, at, out);
         stats.segments += plant.cylinders.size();
         return true;
     };
@@ -174,6 +225,7 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             }
         }
     }
+    if (!sharing.empty() && !growTogether(f, sharing, out, stats, error, limits)) return false;
     out.planarCurve = false;
     return true;
 }

@@ -10,6 +10,12 @@
 //   species: bushy_tree_4_4 0.4
 //   species: broken_tree_4_4 0.1
 //   grass: grass_4_4 4     # grass specimens per cell (optional)
+//   environment: light 2   # one environment shared by every plant (optional, as in a grammar)
+//
+// With an `environment:`, the plants whose grammars ask ?E grow in lockstep, and after each
+// step the one environment answers them all where they stand: they shade each other (light),
+// compete for the same attraction points, grow around the same obstacles. It replaces any
+// environment of their own. Plants that ask nothing grow on their own as before.
 //
 // Positions move by up to 30% of the cell, whole rows and columns by up to 20%; each plant
 // turns about the vertical by N(180, 60) degrees (kept positive), as in the document.
@@ -37,6 +43,7 @@ struct Forest {
     std::vector<Species> species;
     std::string grass;
     int grassPerCell = 0;
+    Environment environment;  // shared by every plant that asks ?E; empty: none
 };
 
 bool isForestScene(std::string_view text);
@@ -45,7 +52,8 @@ struct ForestParseResult {
     std::optional<Forest> forest;
     std::vector<Diagnostic> diagnostics;
 };
-ForestParseResult parseForest(std::string_view text);
+// `include` reads the files an environment names (a mesh) beside the scene; without it they are an error.
+ForestParseResult parseForest(std::string_view text, const IncludeReader& include = {});
 
 // Looks up a species' grammar text by name (a preset or a file); nullopt when unknown.
 using GrammarSource = std::function<std::optional<std::string>(const std::string& name)>;
@@ -53,6 +61,7 @@ using GrammarSource = std::function<std::optional<std::string>(const std::string
 struct ForestStats {
     int plants = 0, grasses = 0;
     std::uint64_t segments = 0;
+    int sharing = 0;  // plants grown in lockstep with the shared environment
 };
 
 // Grows every plant and gathers them into one Geometry. False with a message on failure.

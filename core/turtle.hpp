@@ -48,6 +48,9 @@ struct TurtleStats {
 // parameters are skipped.
 TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out);
 
+// Appends `g` turned by `yaw` degrees about +Y and moved to `at` (a plant of a forest).
+void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& out);
+
 // Default palette (16 colours: 0 bark, 1..8 greens dark to light, 9.. flower colours).
 std::uint32_t defaultPaletteColour(int index);
 

@@ -216,4 +216,34 @@ void Geometry::clear() {
 }
 
 
+void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& out) {
+    const float c = std::cos(yaw * 3.14159265f / 180), s = std::sin(yaw * 3.14159265f / 180);
+    auto turn = [&](const glm::vec3& p) { return glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z); };
+    auto move = [&](const glm::vec3& p) { return turn(p) + at; };
+    for (const auto& cyl : g.cylinders) {
+        CylinderInstance x = cyl;
+        x.start = move(cyl.start);
+        x.end = move(cyl.end);
+        out.cylinders.push_back(x);
+        out.bounds.add(x.start);
+        out.bounds.add(x.end);
+    }
+    for (const auto& sf : g.surfaces) {
+        SurfaceInstance x = sf;
+        x.position = move(sf.position);
+        x.heading = turn(sf.heading);
+        x.up = turn(sf.up);
+        out.surfaces.push_back(x);
+        out.bounds.add(x.position);
+    }
+    const std::uint32_t base = std::uint32_t(out.polygons.positions.size());
+    for (size_t i = 0; i < g.polygons.positions.size(); ++i) {
+        out.polygons.positions.push_back(move(g.polygons.positions[i]));
+        out.polygons.normals.push_back(turn(g.polygons.normals[i]));
+        out.polygons.colours.push_back(g.polygons.colours[i]);
+        out.bounds.add(out.polygons.positions.back());
+    }
+    for (auto i : g.polygons.indices) out.polygons.indices.push_back(base + i);
+}
+
 }  // namespace sprout

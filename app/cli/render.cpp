@@ -12,6 +12,7 @@
 #include "app/snapshot.hpp"
 #include "app/viewer/text_edit.hpp"
 #include "core/import/import.hpp"
+#include "core/file_kind.hpp"
 #include "core/forest.hpp"
 #include "core/ifs.hpp"
 
@@ -119,13 +120,15 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
 bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
                       Geometry& geometry, ForestStats& fs, std::string& text) {
     std::filesystem::path dir;
+    IncludeReader beside;  // a mesh an environment names, beside the scene
     if (std::filesystem::exists(source)) {
         text = readSource(source, "forest").value_or("");
         dir = std::filesystem::path(source).parent_path();
+        beside = parseOptionsFor(FileKind::Forest, source).include;
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
     }
-    ForestParseResult parsed = parseForest(text);
+    ForestParseResult parsed = parseForest(text, beside);
     for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
     if (!parsed.forest) return false;
     if (seed) parsed.forest->seed = *seed;

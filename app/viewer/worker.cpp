@@ -73,7 +73,7 @@ void Worker::run() {
 
 
 std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<Result> out) {
-    ForestParseResult parsed = parseForest(r.text);
+    ForestParseResult parsed = parseForest(r.text, parseOptionsFor(FileKind::Forest, r.path).include);
     out->diagnostics = parsed.diagnostics;
     if (!parsed.forest) return out;
     if (r.seed) parsed.forest->seed = *r.seed;
@@ -89,6 +89,7 @@ std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<R
     out->deriveMs = millisSince(t0);
     out->modules = stats.segments;
     out->seed = parsed.forest->seed;
+    out->environment = std::make_shared<const Environment>(parsed.forest->environment);
     if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
     return out;
@@ -139,6 +140,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     out->diagnostics = m_cachedDiagnostics;
     out->grammar = m_cachedGrammar;
     if (!out->grammar) return out;
+    out->environment = std::shared_ptr<const Environment>(out->grammar, &out->grammar->environment);
 
     const Grammar& g = *out->grammar;
     out->seed = r.seed.value_or(g.settings.seed);

@@ -44,6 +44,8 @@ struct Result {
     std::uint64_t seed = 0;
     std::shared_ptr<const Geometry> geometry;  // null unless the plant was made
     std::shared_ptr<const void> prepared;      // what Worker::prepare made of the geometry
+    // The environment the plant grew in (a forest's shared one; a grammar's is in `grammar`).
+    std::shared_ptr<const Environment> environment;
     // An iterated function system is drawn as an image instead (RGBA, top row first).
     std::shared_ptr<const std::vector<std::uint8_t>> image;
     int imageWidth = 0, imageHeight = 0;
