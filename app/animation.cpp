@@ -180,7 +180,12 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     const render::Camera framed = snapshotCamera(geometry, o);
     const Bounds grown = geometry.bounds;  // ground and shadows sized for the grown plant
     const bool planar = geometry.planarCurve;
-    if (ao.kind == AnimationKind::Turntable) renderer.upload(geometry);
+    SnapshotOptions withEnvironment = o;  // a grammar's own environment, drawn when asked
+    if (o.showEnvironment && !o.environment) withEnvironment.environment = std::shared_ptr<const Environment>(grammar, &grammar->environment);
+    if (ao.kind == AnimationKind::Turntable) {
+        renderer.upload(geometry);
+        if (!overlayEnvironment(renderer, withEnvironment, geometry, derivation.seed(), error)) return false;
+    }
 
     FrameSink sink;
     if (!sink.open(target, o.width, o.height, ao.fps, result.video, error)) return false;
@@ -199,6 +204,8 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
             geometry.bounds = grown;
             geometry.planarCurve = planar;  // an axiom that draws nothing is no 2D curve
             renderer.upload(geometry);
+            // The environment as the plant at this frame sees it (points used up, its shade).
+            if (!overlayEnvironment(renderer, withEnvironment, geometry, derivation.seed(), error)) return false;
         } else {
             camera.yaw = framed.yaw + 360.0f * float(k) / float(frames);
         }

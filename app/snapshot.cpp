@@ -29,7 +29,21 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     t0 = std::chrono::steady_clock::now();
     interpret(*derivation.step(n), *grammar, {n, derivation.seed(), nullptr}, out.geometry);
     out.interpretMs = millisSince(t0);
-    return renderGeometry(o, out, error);
+    if (o.showEnvironment && !o.environment) {
+        SnapshotOptions own = o;
+        own.environment = std::shared_ptr<const Environment>(grammar, &grammar->environment);
+        return renderGeometry(own, out, error, derivation.seed());
+    }
+    return renderGeometry(o, out, error, derivation.seed());
+}
+
+bool overlayEnvironment(render::Renderer& renderer, const SnapshotOptions& o, const Geometry& grown, std::uint64_t seed,
+                        std::string& error) {
+    if (!o.showEnvironment || !o.environment || o.environment->empty()) return true;
+    Mesh mesh;
+    if (!drawEnvironment(*o.environment, grown, seed, o.environmentView, mesh, &error)) return false;
+    renderer.setOverlay(mesh);
+    return true;
 }
 
 render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
@@ -50,13 +64,14 @@ render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
     return camera;
 }
 
-bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error) {
+bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error, std::uint64_t seed) {
     auto t0 = std::chrono::steady_clock::now();
     auto context = HeadlessContext::create(o.width, o.height, error);
     if (!context) return false;
     render::Renderer renderer;
     if (!renderer.init(context->loader(), error)) return false;
     renderer.upload(out.geometry);
+    if (!overlayEnvironment(renderer, o, out.geometry, seed, error)) return false;
     render::Camera camera = snapshotCamera(out.geometry, o);
     renderer.draw(camera, o.width, o.height, o.render, 0);
     out.image.width = o.width;

@@ -10,6 +10,7 @@
 #include "app/render/camera.hpp"
 #include "app/render/renderer.hpp"
 #include "core/derive.hpp"
+#include "core/environment_drawing.hpp"
 #include "core/turtle.hpp"
 
 namespace sprout {
@@ -26,6 +27,11 @@ struct SnapshotOptions {
     std::optional<glm::vec3> target;
     render::RenderOptions render;
     DeriveLimits limits;
+    // Draw the environment the plant grew in (translucent shapes, obstacles, points, and a slice
+    // of the light grid when asked): a grammar's own, or `environment` (a forest's).
+    bool showEnvironment = false;
+    EnvironmentView environmentView;
+    std::shared_ptr<const Environment> environment;
 };
 
 struct Snapshot {
@@ -40,7 +46,11 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
                     std::string& error);
 // The camera a snapshot of `g` uses: framed on the plant, the options' view and angles.
 render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& options);
-// Renders `out.geometry` as it is (a forest scene, an imported model).
-bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error);
+// Renders `out.geometry` as it is (a forest scene, an imported model). `seed` places the
+// environment's attraction points.
+bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error, std::uint64_t seed = 1);
+// With options.showEnvironment, hands the environment drawn for `grown` to the renderer.
+bool overlayEnvironment(render::Renderer& renderer, const SnapshotOptions& options, const Geometry& grown, std::uint64_t seed,
+                        std::string& error);
 
 }  // namespace sprout

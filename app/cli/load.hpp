@@ -27,7 +27,9 @@ FileKind sourceKind(const std::string& source);
 
 // A forest scene (.forest file or scene preset) built into one geometry; `text` is the
 // scene as written. Prints diagnostics; false when it cannot be built.
+// `environment`, when given, receives the scene's shared environment (empty when it has none).
 bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
-                      Geometry& geometry, ForestStats& stats, std::string& text);
+                      Geometry& geometry, ForestStats& stats, std::string& text, Environment* environment = nullptr,
+                      std::uint64_t* usedSeed = nullptr);
 
 }  // namespace sprout::cli

@@ -1,5 +1,6 @@
 // sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]
 //                                      [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats]
+//                                      [--show-environment] [--light-slice H]
 // Renders through OSMesa: no display and no GLFW, the same shaders as the window.
 #include <cstdio>
 #include <iostream>
@@ -118,7 +119,7 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
 
 // A forest scene: its species are presets or files beside the scene file.
 bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
-                      Geometry& geometry, ForestStats& fs, std::string& text) {
+                      Geometry& geometry, ForestStats& fs, std::string& text, Environment* environment, std::uint64_t* usedSeed) {
     std::filesystem::path dir;
     IncludeReader beside;  // a mesh an environment names, beside the scene
     if (std::filesystem::exists(source)) {
@@ -132,6 +133,8 @@ bool buildForestScene(const std::string& source, std::optional<std::uint64_t> se
     for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
     if (!parsed.forest) return false;
     if (seed) parsed.forest->seed = *seed;
+    if (environment) *environment = parsed.forest->environment;
+    if (usedSeed) *usedSeed = parsed.forest->seed;
     auto species = [&](const std::string& name) -> std::optional<std::string> {
         std::filesystem::path p = dir / name;
         if (std::filesystem::exists(p)) {
@@ -156,9 +159,12 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
     Snapshot shot;
     ForestStats fs;
     auto t0 = std::chrono::steady_clock::now();
-    if (!buildForestScene(source, o.seed, o.limits, shot.geometry, fs, text)) return 1;
+    auto environment = std::make_shared<Environment>();
+    std::uint64_t seed = 1;
+    if (!buildForestScene(source, o.seed, o.limits, shot.geometry, fs, text, environment.get(), &seed)) return 1;
     double buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (!renderGeometry(o, shot, error)) {
+    o.environment = environment;
+    if (!renderGeometry(o, shot, error, seed)) {
         std::cerr << source << ": " << error << "\n";
         return 1;
     }
@@ -176,9 +182,9 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 }  // namespace
 
 int runRender(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats"},
+    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats", "--show-environment"},
               {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
-               "--frames", "--fps"});
+               "--frames", "--fps", "--light-slice"});
     SnapshotOptions o;
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
@@ -208,13 +214,19 @@ int runRender(int argc, char** argv) {
         else if (*v == "iso") o.view = render::ViewPreset::Iso;
         else if (*v != "auto") problem = "--view expects front, side, top, iso or auto";
     }
+    std::optional<float> slice;
+    if (problem.empty() && (!parseFloat(args.value("--light-slice"), slice) || (slice && !(*slice >= 0 && *slice <= 1))))
+        problem = "--light-slice expects a height from 0 (the plant's lowest point) to 1 (its top)";
+    o.showEnvironment = args.flag("--show-environment") || slice;
+    o.environmentView.lightSlice = slice.has_value();
+    if (slice) o.environmentView.sliceHeight = *slice;
     if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
         problem = "expects one FILE or PRESET and -o OUT.png";
     if (!problem.empty()) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
                      " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground]\n"
+                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H]\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
     }

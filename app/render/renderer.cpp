@@ -51,7 +51,10 @@ struct Buffers {
 
 struct Renderer::Impl {
     GLuint bakedProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
-           groundProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0;
+           groundProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0;
+    Buffers overlay;  // the environment drawn with the plant (setOverlay)
+    std::size_t overlayIndices = 0;
+    Bounds overlayBounds;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
     // What the coverage texture holds: a frame with the same curve, view and size (the panel
@@ -117,6 +120,7 @@ struct Renderer::Impl {
             {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
             {&curveRasterProgram, "background.vert", "curve_raster.frag"},
             {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
+            {&overlayProgram, "polygon.vert", "overlay.frag"},
         };
         for (auto& p : programs)
             if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
@@ -132,7 +136,7 @@ struct Renderer::Impl {
 
         // Two sets of baked and line buffers: the one on screen, and the one a staged upload
         // fills a piece per frame (beginUpload) before they swap.
-        for (Buffers* b : {&baked, &bakedBack}) makeBaked(*b);
+        for (Buffers* b : {&baked, &bakedBack, &overlay}) makeBaked(*b);
         for (Buffers* b : {&lines, &linesBack}) makeLines(*b);
 
         // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
@@ -492,7 +496,10 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     const float dist = glm::length(camera.eye() - centre);
     // The ground reaches further than the plant: keep all of it between the clip planes
     // (llvmpipe left whole tiles unpainted where the ground crossed the near plane).
-    const float reach = std::max(radius, 1.3f * std::max({size.x, size.z, size.y}));
+    float reach = std::max(radius, 1.3f * std::max({size.x, size.z, size.y}));
+    if (s.overlayIndices && !s.overlayBounds.empty)  // the environment, which may reach further
+        for (const glm::vec3& corner : {s.overlayBounds.min, s.overlayBounds.max})
+            reach = std::max(reach, glm::length(corner - centre) * 1.8f);
     const float near = std::max(1e-3f * dist, (dist - reach * 1.5f) * 0.9f), far = dist + reach * 3;
     const glm::mat4 viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
     const bool curve = s.planarCurve;
@@ -631,6 +638,25 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     }
     for (GLuint p : {s.bakedProgram, s.lineProgram}) s.setLighting(p, o, eye, lightViewProj, shadows, texel);
     s.drawScene(viewProj, false, stats);
+    if (s.overlayIndices) {
+        // The environment, after the plant: its solid parts, then the translucent ones.
+        s.setLighting(s.overlayProgram, o, eye, lightViewProj, shadows, texel);
+        setUniform(s.overlayProgram, "uViewProj", viewProj);
+        glBindVertexArray(s.overlay.vao);
+        for (int pass = 0; pass < 3; ++pass) {  // opaque, then translucent far and near sides
+            if (pass == 1) {
+                glEnable(GL_BLEND);
+                glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                glDepthMask(GL_FALSE);
+            }
+            setUniform(s.overlayProgram, "uPass", pass);
+            glDrawElements(GL_TRIANGLES, GLsizei(s.overlayIndices), GL_UNSIGNED_INT, nullptr);
+        }
+        glBindVertexArray(0);
+        glDepthMask(GL_TRUE);
+        glDisable(GL_BLEND);
+        stats.triangles += s.overlayIndices / 3;
+    }
 
     // Resolve the multisampled image into the target.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);
@@ -638,6 +664,21 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     m_stats = stats;
+}
+
+void Renderer::setOverlay(const Mesh& mesh) {
+    Impl& s = *m;
+    BakedMesh baked;
+    bakePolygons(mesh, baked);
+    glBindVertexArray(s.overlay.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s.overlay.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(baked.vertices.size() * sizeof(BakedVertex)), baked.vertices.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.overlay.ebo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(baked.indices.size() * 4), baked.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    s.overlayIndices = baked.indices.size();
+    s.overlayBounds = Bounds();
+    for (const glm::vec3& p : mesh.positions) s.overlayBounds.add(p);
 }
 
 std::vector<std::uint8_t> Renderer::renderImage(const Camera& camera, int width, int height, const RenderOptions& o) {

@@ -83,6 +83,9 @@ public:
     bool beginUpload(std::shared_ptr<const PreparedScene> scene, std::size_t bytesPerFrame);
     bool continueUpload(std::size_t bytes);
     bool uploading() const;
+    // What is drawn with the plant, translucent, after it: the environment
+    // (core/environment_drawing.hpp). An empty mesh draws nothing.
+    void setOverlay(const Mesh& mesh);
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.

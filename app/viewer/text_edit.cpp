@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <vector>
 
 namespace sprout::viewer {
@@ -135,6 +137,125 @@ std::string setDefine(std::string_view text, std::string_view name, std::string_
         return out;
     }
     return std::string(text);
+}
+
+std::vector<EnvironmentNumber> environmentNumbers(std::string_view text) {
+    using Kind = EnvironmentNumber::Kind;
+    std::vector<EnvironmentNumber> out;
+    int lineNumber = 0;
+    for (const Line& l : lines(text)) {
+        ++lineNumber;
+        std::string_view line = text.substr(l.begin, l.end - l.begin);
+        const std::string_view body = trimLeft(line);
+        if (!startsWithNoCase(body, "environment:")) continue;
+        size_t pos = l.begin + (line.size() - body.size()) + 12;
+        size_t stop = l.end;  // comments end the value
+        for (std::string_view c : {"#", "//", "/*"}) {
+            const size_t at = text.substr(pos, stop - pos).find(c);
+            if (at != std::string_view::npos) stop = pos + at;
+        }
+        struct Token {
+            size_t begin, end;
+            bool word;
+            std::optional<double> number;  // a literal
+        };
+        std::vector<Token> tokens;
+        while (pos < stop) {
+            while (pos < stop && (text[pos] == ' ' || text[pos] == '\t' || text[pos] == ',' || text[pos] == '\r')) ++pos;
+            if (pos >= stop) break;
+            size_t end = pos;
+            int depth = 0;
+            while (end < stop && (depth > 0 || (text[end] != ' ' && text[end] != '\t' && text[end] != ',' && text[end] != '\r'))) {
+                depth += text[end] == '(' ? 1 : text[end] == ')' ? -1 : 0;
+                ++end;
+            }
+            const std::string token(text.substr(pos, end - pos));
+            Token t{pos, end, std::isalpha(static_cast<unsigned char>(token[0])) != 0, std::nullopt};
+            char* rest = nullptr;
+            const double v = std::strtod(token.c_str(), &rest);
+            if (!t.word && rest && *rest == '\0' && std::isfinite(v)) t.number = v;
+            if (t.word && token != "obstacle" && token != "sphere" && token != "box" && token != "ellipsoid" &&
+                token != "cylinder" && token != "ground" && token != "light" && token != "attraction" && token != "influence" &&
+                token != "kill" && token != "sun" && token != "mesh")
+                t.word = false;  // a define's name: an expression
+            tokens.push_back(t);
+            pos = end;
+        }
+        if (tokens.empty() || !tokens[0].word) continue;
+        auto word = [&](size_t k) { return std::string(text.substr(tokens[k].begin, tokens[k].end - tokens[k].begin)); };
+        // Names for the numbers of a shape, in order.
+        auto shapeNames = [](const std::string& shape) -> std::vector<std::pair<const char*, Kind>> {
+            if (shape == "sphere") return {{"centre x", Kind::Position}, {"centre y", Kind::Position}, {"centre z", Kind::Position}, {"radius", Kind::Size}};
+            if (shape == "box")
+                return {{"x0", Kind::Position}, {"y0", Kind::Position}, {"z0", Kind::Position},
+                        {"x1", Kind::Position}, {"y1", Kind::Position}, {"z1", Kind::Position}};
+            if (shape == "ellipsoid")
+                return {{"centre x", Kind::Position}, {"centre y", Kind::Position}, {"centre z", Kind::Position},
+                        {"radius x", Kind::Size},     {"radius y", Kind::Size},     {"radius z", Kind::Size}};
+            if (shape == "cylinder")
+                return {{"base x", Kind::Position}, {"base y", Kind::Position}, {"base z", Kind::Position},
+                        {"radius", Kind::Size},     {"height", Kind::Size}};
+            return {};
+        };
+        // What each number means, following the words before it.
+        std::string prefix = word(0), current;
+        std::vector<std::pair<const char*, Kind>> names;
+        size_t named = 0;
+        const std::string first = word(0);
+        if (first == "obstacle" && tokens.size() > 1 && tokens[1].word) prefix += " " + word(1), names = shapeNames(word(1));
+        else if (first == "ground") names = {{"height", Kind::Position}};
+        else if (first == "light") names = {{"voxel size", Kind::Size}, {"shadow", Kind::Shadow}};
+        else if (first == "attraction") names = {{"points", Kind::Count}};
+        else names = shapeNames(first);
+        bool sawSun = false;
+        size_t lastEnd = tokens.back().end;
+        for (size_t k = 1; k < tokens.size(); ++k) {
+            const Token& t = tokens[k];
+            if (t.word) {
+                const std::string w = word(k);
+                if (w == "sun") names = {{"sun azimuth", Kind::Azimuth}, {"sun elevation", Kind::Elevation}}, named = 0, sawSun = true;
+                else if (w == "influence") names = {{"influence", Kind::Size}}, named = 0;
+                else if (w == "kill") names = {{"kill", Kind::Size}}, named = 0;
+                else if (first == "attraction" && k >= 2) {  // the shape after the number of points
+                    names = shapeNames(w), named = 0;
+                    prefix = "attraction " + w;
+                }
+                continue;
+            }
+            const size_t index = named++;
+            if (!t.number || index >= names.size()) continue;  // an expression, or one too many
+            EnvironmentNumber n;
+            n.line = lineNumber;
+            n.begin = t.begin, n.end = t.end;
+            n.label = (names[index].first == std::string("influence") || names[index].first == std::string("kill") ? "attraction"
+                                                                                                                  : prefix) +
+                      std::string(" ") + names[index].first;
+            n.kind = names[index].second;
+            n.value = *t.number;
+            out.push_back(n);
+        }
+        if (first == "light" && !sawSun)
+            for (int k = 0; k < 2; ++k) {
+                EnvironmentNumber n;
+                n.line = lineNumber;
+                n.begin = n.end = lastEnd;
+                n.label = k == 0 ? "light sun azimuth" : "light sun elevation";
+                n.kind = k == 0 ? Kind::Azimuth : Kind::Elevation;
+                n.value = k == 0 ? 0 : 90;
+                n.sun = k;
+                out.push_back(n);
+            }
+    }
+    return out;
+}
+
+std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber& n, double v) {
+    std::string value = formatValue(v);
+    if (n.sun >= 0) value = " sun " + (n.sun == 0 ? value + " 90" : "0 " + value);
+    std::string out(text.substr(0, n.begin));
+    out += value;
+    out += text.substr(n.end);
+    return out;
 }
 
 }  // namespace sprout::viewer

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sprout::viewer {
 
@@ -16,6 +17,22 @@ std::string setDefine(std::string_view text, std::string_view name, std::string_
 
 // The value text of the first `key:` line, if any.
 std::optional<std::string> directiveValue(std::string_view text, std::string_view key);
+
+// A number of an `environment:` line that the panel's sliders move (open L-systems): where it
+// is in the text, what it means, and its value. Numbers written as expressions of defines have
+// none: their defines' sliders move them.
+struct EnvironmentNumber {
+    enum class Kind { Position, Size, Count, Shadow, Azimuth, Elevation };
+    int line = 0;                 // 1-based
+    size_t begin = 0, end = 0;    // the number's bytes in the text
+    std::string label;            // "sphere radius", "obstacle box x1", "light sun azimuth"
+    Kind kind = Kind::Position;
+    double value = 0;
+    int sun = -1;                 // a light with no sun yet: 0 azimuth, 1 elevation (added when moved)
+};
+std::vector<EnvironmentNumber> environmentNumbers(std::string_view text);
+// The text with that number set to `v` (for a light with no sun: " sun AZIMUTH ELEVATION" added).
+std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber& number, double v);
 
 // Shortest text for a slider value (3 significant decimals is what a slider can set).
 std::string formatValue(double v);

@@ -23,6 +23,35 @@ fs::path tempDir(const std::string& name) {
     return p;
 }
 
+// The environment's sliders: each literal number of an `environment:` line, named by what it
+// is; an expression of defines has none; a light with no sun gets its sun when moved.
+TEST(TextEdit, EnvironmentSlidersMoveTheNumbersOfItsLines) {
+    const std::string text = "n: 3\nenvironment: sphere 0 5, 0 R  # the crown\nenvironment: obstacle box -1 2 -1 1 3 1\n"
+                             "environment: light 1.5\naxiom: F ?E(0,0)\n";
+    auto numbers = environmentNumbers(text);
+    std::vector<std::string> labels;
+    for (const auto& n : numbers) labels.push_back(n.label + "=" + formatValue(n.value));
+    EXPECT_EQ(labels, (std::vector<std::string>{"sphere centre x=0", "sphere centre y=5", "sphere centre z=0",
+                                                "obstacle box x0=-1", "obstacle box y0=2", "obstacle box z0=-1",
+                                                "obstacle box x1=1", "obstacle box y1=3", "obstacle box z1=1",
+                                                "light voxel size=1.5", "light sun azimuth=0", "light sun elevation=90"}));
+    EXPECT_EQ(setEnvironmentNumber(text, numbers[1], 6.5),
+              "n: 3\nenvironment: sphere 0 6.5, 0 R  # the crown\nenvironment: obstacle box -1 2 -1 1 3 1\n"
+              "environment: light 1.5\naxiom: F ?E(0,0)\n");
+    EXPECT_EQ(setEnvironmentNumber(text, numbers[11], 40),
+              "n: 3\nenvironment: sphere 0 5, 0 R  # the crown\nenvironment: obstacle box -1 2 -1 1 3 1\n"
+              "environment: light 1.5 sun 0 40\naxiom: F ?E(0,0)\n");
+    auto attraction = environmentNumbers("environment: attraction 300 ellipsoid 0 9 0 5 4 5 influence 6 kill 0.8\n");
+    ASSERT_EQ(attraction.size(), 9u);
+    EXPECT_EQ(attraction[0].label, "attraction points");
+    EXPECT_EQ(attraction[4].label, "attraction ellipsoid radius x");
+    EXPECT_EQ(attraction[8].label, "attraction kill");
+    auto sun = environmentNumbers("environment: light 1 0.4 sun 30 60\n");
+    ASSERT_EQ(sun.size(), 4u);
+    EXPECT_EQ(sun[3].label, "light sun elevation");
+    EXPECT_EQ(sun[3].value, 60);
+}
+
 TEST(TextEdit, SliderValuesGoBackIntoTheText) {
     EXPECT_EQ(setDirective(kPlant, "angle", "30"), "n: 3\nangle: 30\naxiom: F\nF -> F[+F]F[-F]F\n");
     EXPECT_EQ(setDirective("angle: 22 ~ 4\naxiom: F\n", "angle", "30"), "angle: 30 ~ 4\naxiom: F\n");  // jitter kept
