@@ -23,6 +23,10 @@ struct ViewSettings {
     bool turntable = false;
     float turntableSpeed = 20;  // degrees per second
     int screenshotSize = 0;     // index into kScreenshotSizes
+    // The environment an open L-system grows in, drawn with it; a slice of its light grid.
+    bool showEnvironment = true;
+    bool lightSlice = false;
+    float sliceHeight = 0.5f;  // 0 the plant's lowest point, 1 its top
 };
 
 struct ScreenshotSize {
@@ -72,6 +76,11 @@ struct App {
     void frame();  // camera on the current plant
     void resetView();
     void applySun();
+    // Draws the environment of the plant on screen as the view settings say (a new plant, a
+    // toggle); `environmentDirty` asks for it on the next frame.
+    void updateEnvironment();
+    bool environmentDirty = true;
+    std::shared_ptr<const Result> environmentOf;  // the plant whose environment is drawn
     bool takeScreenshot(const std::string& path, int width, int height);
     // Writes the plant on screen as .glb, .obj, .ply or .svg on a background thread.
     void exportModel(const std::string& path);

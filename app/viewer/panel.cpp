@@ -10,6 +10,7 @@
 #include <imgui_stdlib.h>
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -213,6 +214,47 @@ void growthSection(App& app) {
     ImGui::Checkbox("smooth growth (new segments grow in)", &app.state.smoothGrowth);
     if (ImGui::Button(app.videoJob.running() ? "Recording..." : "Record video...") && !app.videoJob.running()) app.videoPopup = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the growth from the axiom to step n, or a 360-degree turntable, as MP4");
+}
+
+// The environment of an open L-system: drawn or not, a slice of its light, and one slider per
+// number of its `environment:` lines, written back into the text (the plant regrows on the
+// worker as for any edit).
+void environmentSection(App& app, const Environment& env) {
+    ViewSettings& v = app.view;
+    if (ImGui::Checkbox("show environment", &v.showEnvironment)) app.environmentDirty = true;
+    if (env.isLight()) {
+        ImGui::SameLine();
+        if (ImGui::Checkbox("light slice", &v.lightSlice)) app.environmentDirty = true;
+        if (v.lightSlice && ImGui::SliderFloat("slice height", &v.sliceHeight, 0, 1, "%.2f")) app.environmentDirty = true;
+    }
+    auto plant = app.state.plant();
+    const float scale = plant && plant->geometry && !plant->geometry->bounds.empty
+                            ? std::max(1.0f, glm::length(plant->geometry->bounds.size()))
+                            : 10.0f;
+    const std::string& text = app.state.text();
+    int id = 0;
+    for (const EnvironmentNumber& n : environmentNumbers(text)) {
+        ImGui::PushID(id++);
+        float f = float(n.value);
+        bool moved = false;
+        using Kind = EnvironmentNumber::Kind;
+        switch (n.kind) {
+            case Kind::Position: moved = ImGui::DragFloat(n.label.c_str(), &f, scale * 0.002f, 0, 0, "%.3g"); break;
+            case Kind::Size: moved = ImGui::DragFloat(n.label.c_str(), &f, std::max(0.001f, f * 0.005f), 0.01f, 1e6f, "%.3g"); break;
+            case Kind::Shadow: moved = ImGui::SliderFloat(n.label.c_str(), &f, 0.01f, 2, "%.2f"); break;
+            case Kind::Azimuth: moved = ImGui::SliderFloat(n.label.c_str(), &f, -180, 180, "%.0f deg"); break;
+            case Kind::Elevation: moved = ImGui::SliderFloat(n.label.c_str(), &f, 1, 90, "%.0f deg"); break;
+            case Kind::Count: {
+                int k = int(f);
+                moved = ImGui::DragInt(n.label.c_str(), &k, std::max(1.0f, float(k) * 0.005f), 1, 1000000);
+                f = float(k);
+                break;
+            }
+        }
+        if (moved) app.state.setText(setEnvironmentNumber(text, n, f));
+        ImGui::PopID();
+        if (moved) break;  // the text changed under the others
+    }
 }
 
 void viewSection(App& app) {
@@ -464,6 +506,8 @@ void drawPanel(App& app) {
     if (ImGui::CollapsingHeader("Grammar", ImGuiTreeNodeFlags_DefaultOpen)) grammarSection(app);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);
+    if (auto plant = app.state.plant(); plant && plant->environment && !plant->environment->empty())
+        if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(app, *plant->environment);
     if (ImGui::CollapsingHeader("View and light")) viewSection(app);
     if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) presetSection(app);
     // Statistics line.

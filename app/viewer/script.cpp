@@ -3,6 +3,8 @@
 //   text <grammar>        replace the text ("\n" for line breaks)
 //   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
 //   define <name> <value> a define, as its slider would
+//   environment <k> <value>   the k-th (from 0) environment slider, as the panel's would
+//   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
@@ -16,10 +18,13 @@
 #include <GLFW/glfw3.h>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "app/viewer/app.hpp"
+#include "app/viewer/text_edit.hpp"
 
 namespace sprout::viewer {
 
@@ -103,6 +108,24 @@ bool Script::step(App& app) {
             double v = 0;
             in >> name >> v;
             app.state.setDefineValue(name, v);
+            return true;
+        }
+        if (cmd == "environment") {
+            size_t k = 0;
+            double v = 0;
+            in >> k >> v;
+            auto numbers = environmentNumbers(app.state.text());
+            if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
+            else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+            return true;
+        }
+        if (cmd == "show-environment" || cmd == "light-slice") {
+            std::string v;
+            in >> v;
+            if (cmd == "show-environment") app.view.showEnvironment = v != "off";
+            else if (v == "off") app.view.lightSlice = false;
+            else app.view.lightSlice = true, app.view.sliceHeight = std::strtof(v.c_str(), nullptr);
+            app.environmentDirty = true;
             return true;
         }
         if (cmd == "step") {

@@ -23,6 +23,7 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
+#include "core/environment_drawing.hpp"
 
 namespace sprout::viewer {
 namespace {
@@ -100,6 +101,22 @@ void App::save() {
 void App::applySun() {
     float az = glm::radians(view.sunAzimuth), el = glm::radians(view.sunElevation);
     view.render.sunDirection = {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+    needsRedraw = true;
+}
+
+void App::updateEnvironment() {
+    auto plant = state.plant();
+    Mesh mesh;
+    if (plant && plant->geometry && plant->environment && !plant->environment->empty() && view.showEnvironment) {
+        std::string error;
+        EnvironmentView how;
+        how.lightSlice = view.lightSlice;
+        how.sliceHeight = view.sliceHeight;
+        if (!drawEnvironment(*plant->environment, *plant->geometry, plant->seed, how, mesh, &error)) say(error);
+    }
+    renderer.setOverlay(mesh);
+    environmentOf = plant;
+    environmentDirty = false;
     needsRedraw = true;
 }
 
@@ -335,6 +352,7 @@ int runViewer(int argc, char** argv) {
             }
             app.needsRedraw = true;
         }
+        if (app.environmentDirty || app.environmentOf != app.state.plant()) app.updateEnvironment();
         if (app.renderer.uploading()) {
             app.renderer.continueUpload(kUploadBytesPerFrame);
             app.needsRedraw = true;

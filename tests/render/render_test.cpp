@@ -269,6 +269,36 @@ TEST(Render, ShadowDarkensTheGroundUnderATree) {
     EXPECT_GT(darker, kW * kH / 200);
 }
 
+// The environment drawn with the plant: a region is blue-tinted glass around the stem, an
+// obstacle is solid stone, and a slice of the light grid is deep blue in the leaves' shade.
+TEST(Render, EnvironmentIsDrawnWhenAsked) {
+    auto g = grammarOf("n: 0\nenvironment: sphere 0 2 0 1.5\naxiom: F(4) ?E(0,0)\n");
+    SnapshotOptions o = plain();
+    Image without = render(g, o);
+    o.showEnvironment = true;
+    Image with = render(g, o);
+    int glass = 0;
+    for (std::size_t i = 0; i < with.rgba.size(); i += 4) {
+        const int d = std::abs(int(with.rgba[i]) - int(without.rgba[i])) + std::abs(int(with.rgba[i + 2]) - int(without.rgba[i + 2]));
+        glass += d > 12 && with.rgba[i + 2] > with.rgba[i] + 10;
+    }
+    EXPECT_GT(glass, kW * kH / 20) << "the sphere tints the picture blue";
+    // A solid obstacle hides what is behind it: the middle of the picture is its stone grey.
+    auto stone = grammarOf("n: 0\nenvironment: obstacle box -2 0 -2 2 4 2\naxiom: F(4) ?E(1,0,0,0,0)\n");
+    Image box = render(stone, o);
+    const std::uint8_t* mid = &box.rgba[(std::size_t(kH / 2) * kW + kW / 2) * 4];
+    EXPECT_LT(std::abs(int(mid[0]) - int(mid[1])), 30);
+    EXPECT_LT(std::abs(int(mid[1]) - int(mid[2])), 40);
+    // A leafy crown over a slice of its light: deep blue cells in its shade.
+    auto crown = grammarOf("n: 0\nenvironment: light 0.5 2\naxiom: F(4) [ &(90) ~l(2) ] [ ^(90) ~l(2) ] [ +(90) ~l(2) ] ?E(1)\n");
+    o.environmentView.lightSlice = true;
+    o.environmentView.sliceHeight = 0.6;
+    Image slice = render(crown, o);
+    int shade = 0;
+    for (std::size_t i = 0; i < slice.rgba.size(); i += 4) shade += slice.rgba[i + 2] > slice.rgba[i] + 60 && slice.rgba[i] < 110;
+    EXPECT_GT(shade, 200) << "the shade under the leaves is drawn";
+}
+
 TEST(Render, TwoDimensionalCurvesAreCrispInk) {
     Image img = render(grammarOf(*presetText("koch")), plain());
     int ink = 0;

@@ -133,6 +133,48 @@ TEST(Window, CpfgFileOpensEditsStepsAndSavesInItsOwnSyntax) {
     EXPECT_EQ(text, expected) << "saved in its own syntax, with the slider's value";
 }
 
+// An open L-system's environment in the window: drawn as glass over the plant (and gone when
+// hidden), its radius moved by the panel's slider through the script, which regrows the plant
+// inside the larger sphere and writes the value into the text that is saved; growth stepping
+// shows the plant as the environment let it grow by then.
+TEST(Window, EnvironmentIsDrawnAndItsSliderRegrowsThePlant) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_env_window_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string grammar = "n: 9\nangle: 30\nenvironment: sphere 0 6 0 3\n"
+                                "axiom: F(3) ?E(1,0) A\n"
+                                "?E(i, d) < A : i == 1 -> F(1) [ +(35) ?E(1,0) A ] /(120) [ -(35) ?E(1,0) A ] ?E(1,0) A\n"
+                                "?E(i, d) < A : i == 0 -> ~l(1)\n";
+    std::ofstream(dir / "bush.lsys") << grammar;
+    const std::string shown = (dir / "shown.png").string(), hidden = (dir / "hidden.png").string(),
+                      bigger = (dir / "bigger.png").string(), early = (dir / "early.png").string(),
+                      saved = (dir / "saved.lsys").string();
+    // Slider 3 is the sphere's radius (0-2: its centre).
+    std::ofstream(dir / "script.txt") << "wait\nscreenshot " << shown << " 400x300\n"
+                                     << "show-environment off\nwait\nscreenshot " << hidden << " 400x300\n"
+                                     << "environment 3 5\nwait\nscreenshot " << bigger << " 400x300\n"
+                                     << "step 3\nwait\nscreenshot " << early << " 400x300\n"
+                                     << "saveas " << saved << "\nquit\n";
+    ASSERT_EQ(runUnderXvfb((dir / "bush.lsys").string() + " --script " + (dir / "script.txt").string()), 0);
+    Image a = load(shown), b = load(hidden), c = load(bigger), d = load(early);
+    ASSERT_EQ(a.rgba.size(), b.rgba.size());
+    auto differ = [](const Image& x, const Image& y) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < x.rgba.size(); i += 4)
+            n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) +
+                     std::abs(int(x.rgba[i + 2]) - int(y.rgba[i + 2])) > 24;
+        return n;
+    };
+    EXPECT_GT(differ(a, b), 400u * 300u / 50) << "the glass sphere is drawn, and hidden when asked";
+    EXPECT_GT(differ(b, c), 400u * 300u / 50) << "a larger sphere grows a larger bush";
+    EXPECT_GT(differ(c, d), 400u * 300u / 100) << "step 3 is not the grown plant";
+    std::ifstream in(saved);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    std::string expected = grammar;
+    expected.replace(expected.find("sphere 0 6 0 3"), 14, "sphere 0 6 0 5");
+    EXPECT_EQ(text, expected) << "the slider's value is in the saved text";
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
