@@ -381,10 +381,17 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
                 if (env.isAttraction()) {  // answered above: the ?E only uses up its frame here
                 } else {
                     const glm::dvec3 p = toWorld(target, f.position), h = turnBy(glm::dvec3(f.heading), target.yaw);
-                    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0) {
-                        env.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
-                        if (!env.obstacles.empty() || env.ground) directionBack(target, &s.params[pp] + 2, int(a) - 2);
+                    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)) {
+                        // No answer can be right there, and a NaN would spread through the rules.
+                        if (error)
+                            *error = std::string(targets.size() > 1 ? "plant " + std::to_string(t + 1) + ": " : "") + "the ?E at module " +
+                                     std::to_string(i + 1) + " of the string is at a point that is not a number (the turtle's "
+                                     "moves before it are NaN or infinite, e.g. F of a parameter that overflowed): the "
+                                     "environment cannot answer it";
+                        return false;
                     }
+                    env.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
+                    if (!env.obstacles.empty() || env.ground) directionBack(target, &s.params[pp] + 2, int(a) - 2);
                 }
             } else if (kind[id]) {
                 const QueryFrame& f = passes[t].frames[q++];

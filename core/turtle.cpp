@@ -100,7 +100,9 @@ void Turtle::runLoop(const ModuleString& s) {
             }
         }
         if constexpr (Parametric) {
-            if (arity && !finite(p, arity)) continue;  // NaN or infinity: skip, never draw garbage
+            // NaN or infinity: skip, never draw garbage. A query module still reports its frame:
+            // its parameters are answers to be written, whatever they hold now.
+            if (arity && act != Act::Query && !finite(p, arity)) continue;
         }
         apply(t, act, arity ? p : nullptr, i, arity);
     }

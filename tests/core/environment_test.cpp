@@ -132,6 +132,14 @@ TEST(Environment, LightFromTheSunsDirection) {
     EXPECT_EQ(r.diagnostics[0].message, "the sun's elevation must be above 0 and at most 90 degrees (90: overhead)");
 }
 
+// A ?E whose parameters a rule made NaN is still asked: its parameters are for the answer
+// (the turtle skips other modules with NaN parameters, and once that silently left every ?E
+// of the step unanswered).
+TEST(Environment, AQuestionHoldingNaNIsStillAnswered) {
+    EXPECT_EQ(test::expand("n: 1\nenvironment: sphere 0 0 0 2\naxiom: B(0)\nB(x) -> F(1) ?E(x/0*0, 0) F(1) ?E(0,0)\n", 1),
+              "F(1)?E(1,1)F(1)?E(1,0)");
+}
+
 // A closed mesh beside the grammar is a region like the built-in shapes; an open one is
 // refused, naming what is wrong.
 TEST(Environment, AClosedMeshIsARegion) {
