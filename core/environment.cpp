@@ -224,28 +224,48 @@ bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& er
     const glm::dvec3 stride = away / mag[axis];  // one cell along the main axis per step
     const int spreadA = axis == 0 ? 1 : 0, spreadB = axis == 2 ? 1 : 2;
     const int n[3] = {grid.nx, grid.ny, grid.nz};
-    // Each leaf (and a quarter for each segment's end) shades a pyramid of cells away from the sun.
-    auto cast = [&](const glm::vec3& p, double weight) {
-        const glm::dvec3 c = (glm::dvec3(p) - lo) / lightVoxel;
+    // Each leaf (and a quarter for each segment's end) shades a pyramid of cells away from the
+    // sun. Shadow adds up, so the casters are first summed per cell (a crown puts many in one)
+    // and each cell casts once, from its centre.
+    std::vector<std::pair<std::uint64_t, float>> casters;
+    casters.reserve(g.surfaces.size() + g.cylinders.size() + g.polygons.positions.size());
+    auto deposit = [&](const glm::vec3& p, float weight) {
+        const glm::dvec3 c = glm::floor((glm::dvec3(p) - lo) / lightVoxel);
+        if (!(c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < grid.nx && c.y < grid.ny && c.z < grid.nz)) return;
+        casters.emplace_back((std::uint64_t(c.y) * std::uint64_t(grid.nz) + std::uint64_t(c.z)) * std::uint64_t(grid.nx) +
+                                 std::uint64_t(c.x),
+                             weight);
+    };
+    for (const SurfaceInstance& s : g.surfaces)
+        if (s.kind != SurfaceKind::Sphere) deposit(s.position, 1.0f);
+    for (const CylinderInstance& c : g.cylinders) deposit(c.end, 0.25f);
+    for (const glm::vec3& p : g.polygons.positions) deposit(p, 0.05f);
+    std::stable_sort(casters.begin(), casters.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    float level[kDepth + 1];
+    for (int q = 1; q <= kDepth; ++q) level[q] = float(lightShadow * std::pow(2.0, -(q - 1)));
+    for (size_t k = 0; k < casters.size();) {
+        const std::uint64_t index = casters[k].first;
+        double weight = 0;  // summed in the order of the geometry (a stable sort): the same on every machine
+        for (; k < casters.size() && casters[k].first == index; ++k) weight += casters[k].second;
+        const int i0 = int(index % std::uint64_t(grid.nx)), k0 = int(index / std::uint64_t(grid.nx) % std::uint64_t(grid.nz)),
+                  j0 = int(index / (std::uint64_t(grid.nx) * std::uint64_t(grid.nz)));
+        const glm::dvec3 c(i0 + 0.5, j0 + 0.5, k0 + 0.5);
         for (int q = 1; q <= kDepth; ++q) {
             const glm::dvec3 centre = c + stride * double(q);
             int cell[3] = {int(std::floor(centre.x)), int(std::floor(centre.y)), int(std::floor(centre.z))};
             if (cell[axis] < 0 || cell[axis] >= n[axis]) break;
-            const float s = float(weight * lightShadow * std::pow(2.0, -(q - 1)));
+            const float s = float(weight) * level[q];
             const int a0 = cell[spreadA], b0 = cell[spreadB];
-            for (int db = -(q - 1); db <= q - 1; ++db)
-                for (int da = -(q - 1); da <= q - 1; ++da) {
-                    cell[spreadA] = a0 + da, cell[spreadB] = b0 + db;
-                    if (cell[spreadA] >= 0 && cell[spreadB] >= 0 && cell[spreadA] < n[spreadA] && cell[spreadB] < n[spreadB])
-                        grid.shadow[(std::size_t(cell[1]) * std::size_t(grid.nz) + std::size_t(cell[2])) * std::size_t(grid.nx) +
-                                    std::size_t(cell[0])] += s;
+            const int aLo = std::max(0, a0 - (q - 1)), aHi = std::min(n[spreadA] - 1, a0 + (q - 1));
+            const int bLo = std::max(0, b0 - (q - 1)), bHi = std::min(n[spreadB] - 1, b0 + (q - 1));
+            for (int bb = bLo; bb <= bHi; ++bb)
+                for (int aa = aLo; aa <= aHi; ++aa) {
+                    cell[spreadA] = aa, cell[spreadB] = bb;
+                    grid.shadow[(std::size_t(cell[1]) * std::size_t(grid.nz) + std::size_t(cell[2])) * std::size_t(grid.nx) +
+                                std::size_t(cell[0])] += s;
                 }
         }
-    };
-    for (const SurfaceInstance& s : g.surfaces)
-        if (s.kind != SurfaceKind::Sphere) cast(s.position, 1.0);
-    for (const CylinderInstance& c : g.cylinders) cast(c.end, 0.25);
-    for (const glm::vec3& p : g.polygons.positions) cast(p, 0.05);
+    }
     return true;
 }
 
