@@ -1,4 +1,4 @@
-// sprout export FILE|PRESET -o OUT.glb|.obj|.ply|.svg [-n N] [--seed S] [--sides K]
+// sprout export FILE|PRESET -o OUT.glb|.obj|.ply|.svg [-n N] [--seed S] [--sides K] [--with-environment]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
+#include "core/environment_drawing.hpp"
 #include "app/export/export.hpp"
 #include "app/presets.hpp"
 #include "core/derive.hpp"
@@ -16,7 +17,7 @@
 namespace sprout::cli {
 
 int runExport(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--quiet"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
+    Args args(argc, argv, 1, {"--quiet", "--with-environment"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto sides = args.integer("--sides", 3, 64);
@@ -37,12 +38,14 @@ int runExport(int argc, char** argv) {
     if (!problem.empty()) {
         std::cerr << "sprout export: " << problem
                   << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg|- [--format glb|obj|ply|svg] [-n N]"
-                     " [--seed S] [--sides K] [--quiet]\n";
+                     " [--seed S] [--sides K] [--with-environment] [--quiet]\n";
         return 2;
     }
     const std::string source = args.positionals()[0], out = *args.value("-o");
     auto t0 = std::chrono::steady_clock::now();
     Geometry geometry;
+    Environment environment;  // what the plant grew in, exported with it when asked
+    std::uint64_t usedSeed = 1;
     DeriveLimits limits;
     if (maxModules) limits.maxModules = std::uint64_t(*maxModules);
     const FileKind kind = sourceKind(source);  // a picture written by Sprout holds what it shows
@@ -53,7 +56,8 @@ int runExport(int argc, char** argv) {
     } else if (kind == FileKind::Forest) {
         ForestStats fs;
         std::string text;
-        if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text))
+        if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text,
+                              &environment, &usedSeed))
             return 1;
     } else {
         auto loaded = loadGrammar(source);
@@ -70,6 +74,25 @@ int runExport(int argc, char** argv) {
             return 1;
         }
         interpret(*derivation.step(steps), g, {steps, derivation.seed(), nullptr}, geometry);
+        environment = g.environment;
+        usedSeed = derivation.seed();
+    }
+    if (args.flag("--with-environment") && !environment.empty()) {
+        // The environment's shapes as the viewer draws them, as polygons beside the plant.
+        Mesh shapes;
+        std::string error;
+        if (!drawEnvironment(environment, geometry, usedSeed, {}, shapes, &error)) {
+            std::cerr << source << ": " << error << "\n";
+            return 1;
+        }
+        const std::uint32_t base = std::uint32_t(geometry.polygons.positions.size());
+        for (size_t i = 0; i < shapes.positions.size(); ++i) {
+            geometry.polygons.positions.push_back(shapes.positions[i]);
+            geometry.polygons.normals.push_back(shapes.normals[i]);
+            geometry.polygons.colours.push_back(shapes.colours[i] | 0xffu);  // opaque: not every format has alpha
+            geometry.bounds.add(shapes.positions[i]);
+        }
+        for (std::uint32_t i : shapes.indices) geometry.polygons.indices.push_back(base + i);
     }
     // A progress line on a terminal for big plants.
     const bool tty = isatty(2) && !args.flag("--quiet");

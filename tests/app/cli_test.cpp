@@ -86,4 +86,22 @@ TEST(Cli, WarningsGoToStderrAndDoNotFail) {
     EXPECT_NE(r.err.find("<stdin>:3:1: warning: this rule never applies"), std::string::npos) << r.err;
 }
 
+// An open L-system's environment goes into a model when asked: the topiary box is 12 more
+// triangles beside the same plant.
+TEST(Cli, ExportCarriesTheEnvironmentWhenAsked) {
+    const std::string dir = testing::TempDir();
+    auto plain = runSprout("export env_topiary_box -o " + dir + "sprout_env_plain.ply");
+    auto with = runSprout("export env_topiary_box -o " + dir + "sprout_env_with.ply --with-environment");
+    ASSERT_EQ(plain.code, 0) << plain.err;
+    ASSERT_EQ(with.code, 0) << with.err;
+    auto triangles = [](const std::string& line) {
+        const size_t at = line.find(" triangles");
+        size_t from = line.rfind(' ', at - 1);
+        return std::stol(line.substr(from + 1, at - from - 1));
+    };
+    EXPECT_EQ(triangles(with.out), triangles(plain.out) + 12) << plain.out << with.out;
+    std::remove((dir + "sprout_env_plain.ply").c_str());
+    std::remove((dir + "sprout_env_with.ply").c_str());
+}
+
 }  // namespace
