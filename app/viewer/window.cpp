@@ -352,7 +352,8 @@ int runViewer(int argc, char** argv) {
             }
             app.needsRedraw = true;
         }
-        if (app.environmentDirty || app.environmentOf != app.state.plant()) app.updateEnvironment();
+        // The environment changes with the plant on screen: after a staged upload is whole.
+        if ((app.environmentDirty || app.environmentOf != app.state.plant()) && !app.renderer.uploading()) app.updateEnvironment();
         if (app.renderer.uploading()) {
             app.renderer.continueUpload(kUploadBytesPerFrame);
             app.needsRedraw = true;
