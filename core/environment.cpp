@@ -178,6 +178,19 @@ glm::dvec3 EnvShape::normal(const glm::dvec3& p) const {
     return n > 0 ? g / n : glm::dvec3(0, 1, 0);
 }
 
+void EnvShape::box(glm::dvec3& lo, glm::dvec3& hi) const {
+    switch (kind) {
+        case Kind::Sphere: lo = a - glm::dvec3(b.x), hi = a + glm::dvec3(b.x); break;
+        case Kind::Box: lo = a, hi = b; break;
+        case Kind::Ellipsoid: lo = a - b, hi = a + b; break;
+        case Kind::Cylinder: lo = a - glm::dvec3(b.x, 0, b.x), hi = a + glm::dvec3(b.x, b.y, b.x); break;
+        case Kind::Mesh:
+            lo = hi = mesh->vertices.front();
+            for (const auto& v : mesh->vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+            break;
+    }
+}
+
 double LightGrid::lightAt(const glm::dvec3& p) const {
     const glm::dvec3 c = (p - origin) / voxel;
     const int i = int(std::floor(c.x)), j = int(std::floor(c.y)), k = int(std::floor(c.z));
@@ -275,18 +288,7 @@ std::vector<glm::dvec3> Environment::freePoints(const Geometry& grown, std::uint
     const EnvShape& shape = *attractionShape;
     // The shape's box, for rejection sampling.
     glm::dvec3 lo, hi;
-    switch (shape.kind) {
-        case EnvShape::Kind::Sphere: lo = shape.a - glm::dvec3(shape.b.x), hi = shape.a + glm::dvec3(shape.b.x); break;
-        case EnvShape::Kind::Box: lo = shape.a, hi = shape.b; break;
-        case EnvShape::Kind::Ellipsoid: lo = shape.a - shape.b, hi = shape.a + shape.b; break;
-        case EnvShape::Kind::Cylinder:
-            lo = shape.a - glm::dvec3(shape.b.x, 0, shape.b.x), hi = shape.a + glm::dvec3(shape.b.x, shape.b.y, shape.b.x);
-            break;
-        case EnvShape::Kind::Mesh:
-            lo = hi = shape.mesh->vertices.front();
-            for (const auto& v : shape.mesh->vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-            break;
-    }
+    shape.box(lo, hi);
     // SplitMix64, as the grammar's randomness: the same points on every machine.
     std::uint64_t state = seed ^ 0xa77ac7104e5ull;
     auto next = [&] {
@@ -384,13 +386,23 @@ void Environment::answer(const glm::dvec3& p, const glm::dvec3& heading, double*
     // Obstacles: march the segment ahead in small steps (exact enough for boxes and spheres at
     // plant scale: 64 steps of the segment, then the first hit refined by bisection).
     const double length = arity > 0 && std::isfinite(params[0]) && params[0] > 0 ? params[0] : 1.0;
+    // Only the obstacles whose boxes meet the segment's box are marched against (a grammar may
+    // declare hundreds, and a plant ask tens of thousands of questions).
+    const glm::dvec3 end = p + heading * length, segLo = glm::min(p, end), segHi = glm::max(p, end);
+    std::vector<const EnvShape*> near;
+    for (const EnvShape& s : obstacles) {
+        glm::dvec3 lo, hi;
+        s.box(lo, hi);
+        if (lo.x <= segHi.x && lo.y <= segHi.y && lo.z <= segHi.z && hi.x >= segLo.x && hi.y >= segLo.y && hi.z >= segLo.z)
+            near.push_back(&s);
+    }
     auto blocked = [&](const glm::dvec3& q, const EnvShape** by) {
         if (ground && q.y < *ground) {
             *by = nullptr;
             return true;
         }
-        for (const EnvShape& s : obstacles)
-            if (s.contains(q)) {
+        for (const EnvShape* sp : near)
+            if (const EnvShape& s = *sp; s.contains(q)) {
                 *by = &s;
                 return true;
             }

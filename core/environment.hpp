@@ -66,6 +66,7 @@ struct EnvShape {
     bool contains(const glm::dvec3& p) const;
     double distanceToSurface(const glm::dvec3& p) const;  // >= 0, inside or out
     glm::dvec3 normal(const glm::dvec3& p) const;          // outward, at the surface nearest p
+    void box(glm::dvec3& lo, glm::dvec3& hi) const;        // its axis-aligned bounding box
 };
 
 // The light grid of one step: shadow per voxel, made from the geometry grown so far.
