@@ -51,20 +51,28 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
         axiomAges->resizeUninitialized(m_grammar->axiom.size());
         std::fill(axiomAges->data(), axiomAges->data() + axiomAges->size(), std::uint16_t(0));
     }
-    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
+    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries && !m_options.trackOrigins) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
     auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
+    std::shared_ptr<Origins> axiomOrigins;
+    if (m_options.trackOrigins) {
+        axiomOrigins = std::make_shared<Origins>();
+        axiomOrigins->parent.resizeUninitialized(axiom->size());
+        axiomOrigins->rule.resizeUninitialized(axiom->size());
+        for (size_t i = 0; i < axiom->size(); ++i) axiomOrigins->parent.data()[i] = std::uint32_t(i), axiomOrigins->rule.data()[i] = -1;
+    }
     if (m_decomposer || m_grammar->hasQueries())  // the axiom is decomposed and queried too
-        m_axiomOutcome = finishStep(0, *axiom, axiomAges.get());
+        m_axiomOutcome = finishStep(0, *axiom, axiomAges.get(), axiomOrigins.get());
+    if (axiomOrigins) m_origins.push_back(std::move(axiomOrigins));
     m_stats.push_back({0, axiom->size(), axiom->params.size(), 0.0});
     if (m_options.holdQueries) m_last = axiom;
     m_steps.push_back(std::move(axiom));
     if (axiomAges) m_ages.push_back(std::move(axiomAges));
 }
 
-DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages) {
+DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins) {
     if (m_decomposer) {
         // Repeated passes of the (context-free) decomposition rules: pass d rewrites what
         // pass d-1 produced, which is applying them depth-first to each module (cpfg / lpfg).
@@ -76,10 +84,12 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             if (!o.ok()) return o;
             ModuleString out;
             PodBuffer<std::uint16_t> outAges;
+            Origins passOrigins;
             StepRewriter::Ages ageArgs{};
             if (ages) ageArgs = {ages->data(), &outAges, std::uint16_t(std::min(step, 65535))};
+            if (origins) ageArgs.parent = &passOrigins.parent, ageArgs.rule = &passOrigins.rule;
             Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
-            if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages ? &ageArgs : nullptr))
+            if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages || origins ? &ageArgs : nullptr))
                 return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
             if (sameString(out, s)) break;
             if (pass == depth) {
@@ -93,6 +103,20 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             }
             s = std::move(out);
             if (ages) *ages = std::move(outAges);
+            if (origins) {
+                // A module the decomposition made comes from the module of the step before that
+                // its source came from; the decomposition rule is what made it.
+                const std::uint32_t* before = origins->parent.data();
+                const std::int32_t* beforeRule = origins->rule.data();
+                std::uint32_t* parent = passOrigins.parent.data();
+                std::int32_t* rule = passOrigins.rule.data();
+                for (size_t j = 0; j < passOrigins.parent.size(); ++j) {
+                    const std::uint32_t src = parent[j];
+                    rule[j] = rule[j] >= 0 ? -(rule[j] + 2) : beforeRule[src];
+                    parent[j] = before[src];
+                }
+                *origins = std::move(passOrigins);
+            }
         }
     }
     if (m_grammar->hasQueries() && !m_options.holdQueries) {
@@ -118,7 +142,10 @@ DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64
         if (s) kept += s->bytes();
     for (const auto& a : m_ages)
         if (a) kept += a->size() * sizeof(std::uint16_t);
+    for (const auto& o : m_origins)
+        if (o) kept += o->parent.size() * (sizeof(std::uint32_t) + sizeof(std::int32_t));
     if (m_options.trackAges) bytes += modules * sizeof(std::uint16_t);
+    if (m_options.trackOrigins) bytes += modules * (sizeof(std::uint32_t) + sizeof(std::int32_t));
     o.step = step;
     o.predictedModules = modules;
     o.predictedBytes = bytes;
@@ -189,15 +216,23 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
         std::function<void(double)> progress;
         if (m_options.progress) progress = [&](double f) { m_options.progress(k, n, f); };
         std::shared_ptr<PodBuffer<std::uint16_t>> ages;
+        std::shared_ptr<Origins> origins;
         StepRewriter::Ages ageArgs{};
         if (m_options.trackAges) {
             ages = std::make_shared<PodBuffer<std::uint16_t>>();
             ageArgs = {m_ages[size_t(k - 1)]->data(), ages.get(), std::uint16_t(std::min(k, 65535))};
         }
+        if (m_options.trackOrigins) {
+            origins = std::make_shared<Origins>();
+            ageArgs.parent = &origins->parent;
+            ageArgs.rule = &origins->rule;
+        }
         // cpfg: a '%' of the last step removes the rest of its branch as this step is derived.
         const ModuleString* src = &in;
         ModuleString cutCopy;
         PodBuffer<std::uint16_t> cutAges;
+        PodBuffer<std::uint32_t> cutIndex;  // origins: where each module of the cut copy was
+        PodBuffer<std::int32_t> cutRule;
         if (m_grammar->cutInNextStep &&
             std::find(in.symbols.data(), in.symbols.data() + in.size(), Alphabet::kCut) != in.symbols.data() + in.size()) {
             cutCopy = in;
@@ -205,16 +240,25 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
                 cutAges = *m_ages[size_t(k - 1)];
                 ageArgs.in = cutAges.data();
             }
-            applyCut(cutCopy, m_grammar->alphabet, ages ? &cutAges : nullptr);
+            if (origins) {
+                cutIndex.resizeUninitialized(in.size());
+                cutRule.resizeUninitialized(in.size());
+                for (size_t i = 0; i < in.size(); ++i) cutIndex.data()[i] = std::uint32_t(i), cutRule.data()[i] = -1;
+            }
+            applyCut(cutCopy, m_grammar->alphabet, ages ? &cutAges : nullptr, origins ? &cutIndex : nullptr,
+                     origins ? &cutRule : nullptr);
             src = &cutCopy;
         }
-        if (!m_rewriter->rewrite(*src, *out, rng, m_options.cancel, progress, ages ? &ageArgs : nullptr))
+        if (!m_rewriter->rewrite(*src, *out, rng, m_options.cancel, progress, ages || origins ? &ageArgs : nullptr))
             return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
+        if (origins && src == &cutCopy)
+            for (size_t j = 0; j < origins->parent.size(); ++j) origins->parent.data()[j] = cutIndex.data()[origins->parent.data()[j]];
         if (m_decomposer || m_grammar->hasQueries()) {
-            DeriveOutcome f = finishStep(k, *out, ages.get());
+            DeriveOutcome f = finishStep(k, *out, ages.get(), origins.get());
             if (!f.ok()) return f;
         }
         if (ages) m_ages.push_back(std::move(ages));
+        if (origins) m_origins.push_back(std::move(origins));
         record(k, *out, millisSince(t0));
         if (m_options.holdQueries) m_last = out;
         m_steps.push_back(std::move(out));
@@ -235,6 +279,11 @@ std::shared_ptr<const ModuleString> Derivation::step(int k) {
         m_steps[size_t(k)] = std::move(out);
     }
     return m_steps[size_t(k)];
+}
+
+std::shared_ptr<const Origins> Derivation::origins(int k) const {
+    if (k < 0 || size_t(k) >= m_origins.size()) return nullptr;
+    return m_origins[size_t(k)];
 }
 
 std::shared_ptr<const PodBuffer<std::uint16_t>> Derivation::ages(int k) const {

@@ -39,6 +39,18 @@ struct DeriveOptions {
     // unansweredStep() before deriving the next step (forests that share one environment
     // derive their plants in lockstep). Uses the step-by-step engine.
     bool holdQueries = false;
+    // Also record where each module came from (the module of the step before and the rule
+    // that made it; 8 bytes per module), for picking and the derivation inspector. Uses the
+    // step-by-step engine.
+    bool trackOrigins = false;
+};
+
+// Where the modules of one step came from (DeriveOptions::trackOrigins).
+struct Origins {
+    PodBuffer<std::uint32_t> parent;  // index of the module in the step before (step 0: in the axiom as written)
+    // The rule that made it: >= 0 a production of grammar.rules, <= -2 the decomposition
+    // production -(rule + 2), -1 none (copied unchanged; the axiom).
+    PodBuffer<std::int32_t> rule;
 };
 
 struct StepStats {
@@ -72,6 +84,8 @@ public:
     std::shared_ptr<const ModuleString> step(int k);
     // The creation step of each module of step k (with DeriveOptions::trackAges), else null.
     std::shared_ptr<const PodBuffer<std::uint16_t>> ages(int k) const;
+    // Where the modules of step k came from (with DeriveOptions::trackOrigins), else null.
+    std::shared_ptr<const Origins> origins(int k) const;
     int stepsDerived() const { return m_reached; }
     // Statistics for the steps produced so far (D0L: the ones made).
     const std::vector<StepStats>& stats() const { return m_stats; }
@@ -85,7 +99,7 @@ private:
     DeriveOutcome checkSize(int step, std::uint64_t modules, std::uint64_t params) const;
     DeriveOutcome deriveGeneral(int n);
     // cpfg: the decomposition rules until none applies, then the query modules' frames.
-    DeriveOutcome finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages);
+    DeriveOutcome finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins = nullptr);
     bool cancelled() const { return m_options.cancel && m_options.cancel->load(std::memory_order_relaxed); }
     void record(int step, const ModuleString& s, double millis);
 
@@ -95,6 +109,7 @@ private:
     std::vector<std::shared_ptr<const ModuleString>> m_steps;  // null where not made (D0L)
     std::shared_ptr<ModuleString> m_last;  // holdQueries: the last step, still to be answered
     std::vector<std::shared_ptr<const PodBuffer<std::uint16_t>>> m_ages;  // trackAges only
+    std::vector<std::shared_ptr<const Origins>> m_origins;                // trackOrigins only
     std::vector<StepStats> m_stats;
     int m_reached = 0;
     std::unique_ptr<class D0LExpander> m_d0l;

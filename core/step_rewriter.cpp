@@ -240,9 +240,17 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     out.symbols.resizeUninitialized(maxModules);
     out.params.resizeUninitialized(maxParams);
     std::uint16_t* da = nullptr;
-    if (ages) {
+    std::uint32_t* dParent = nullptr;
+    std::int32_t* dRule = nullptr;
+    if (ages && ages->out) {
         ages->out->resizeUninitialized(maxModules);
         da = ages->out->data();
+    }
+    if (ages && ages->parent) {
+        ages->parent->resizeUninitialized(maxModules);
+        ages->rule->resizeUninitialized(maxModules);
+        dParent = ages->parent->data();
+        dRule = ages->rule->data();
     }
     SymbolId* ds = out.symbols.data();
     double* dp = out.params.data();
@@ -271,6 +279,8 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
                 std::memcpy(da, ages->in + i, (j - i) * sizeof(std::uint16_t));
                 da += j - i;
             }
+            if (dParent)
+                for (size_t k = i; k < j; ++k) *dParent++ = std::uint32_t(k), *dRule++ = -1;
             if (pc) std::memcpy(dp, par + pp, pc * sizeof(double));
             dp += pc;
             pp += pc;
@@ -295,11 +305,15 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
                 for (size_t j = 0; j < n; ++j) da[j] = int(j) == keep ? ages->in[i] : ages->step;
                 da += n;
             }
+            if (dParent)
+                for (size_t j = 0; j < n; ++j)
+                    *dParent++ = std::uint32_t(i), *dRule++ = std::int32_t(p - m_rules.productions.data());
             for (const Expr& e : succ.args) *dp++ = e.eval(m_slots.data(), rng);
         } else {
             *ds++ = sym[i];
             for (unsigned k = 0; k < a; ++k) *dp++ = par[pp + k];
             if (da) *da++ = ages->in[i];
+            if (dParent) *dParent++ = std::uint32_t(i), *dRule++ = -1;
         }
         pp += a;
         ++i;
@@ -307,16 +321,23 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     out.symbols.resizeUninitialized(size_t(ds - out.symbols.data()));
     out.params.resizeUninitialized(size_t(dp - out.params.data()));
     if (da) ages->out->resizeUninitialized(size_t(da - ages->out->data()));
-    if (m_cut) applyCut(out, m_g.alphabet, ages ? ages->out : nullptr);
+    if (dParent) {
+        ages->parent->resizeUninitialized(size_t(dParent - ages->parent->data()));
+        ages->rule->resizeUninitialized(size_t(dRule - ages->rule->data()));
+    }
+    if (m_cut) applyCut(out, m_g.alphabet, da ? ages->out : nullptr, dParent ? ages->parent : nullptr, dParent ? ages->rule : nullptr);
     if (out.symbols.capacity() > out.symbols.size() + out.symbols.size() / 4 + 1024) out.symbols.shrinkToFit();
     if (out.params.capacity() > out.params.size() + out.params.size() / 4 + 1024) out.params.shrinkToFit();
     return true;
 }
 
-void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages) {
+void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages, PodBuffer<std::uint32_t>* parent,
+              PodBuffer<std::int32_t>* rule) {
     SymbolId* sym = s.symbols.data();
     double* par = s.params.data();
     std::uint16_t* age = ages ? ages->data() : nullptr;
+    std::uint32_t* from = parent ? parent->data() : nullptr;
+    std::int32_t* by = rule ? rule->data() : nullptr;
     const size_t N = s.size();
     size_t w = 0, pr = 0, pw = 0;
     for (size_t i = 0; i < N;) {
@@ -333,6 +354,8 @@ void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t
         }
         unsigned a = alphabet[id].arity;
         if (age) age[w] = age[i];
+        if (from) from[w] = from[i];
+        if (by) by[w] = by[i];
         sym[w++] = id;
         for (unsigned k = 0; k < a; ++k) par[pw++] = par[pr++];
         ++i;
@@ -340,6 +363,8 @@ void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t
     s.symbols.resizeUninitialized(w);
     s.params.resizeUninitialized(pw);
     if (ages) ages->resizeUninitialized(w);
+    if (parent) parent->resizeUninitialized(w);
+    if (rule) rule->resizeUninitialized(w);
 }
 
 }  // namespace sprout

@@ -24,9 +24,13 @@ public:
     // rewrote keeps its age, and so does the first module of a successor that repeats the
     // predecessor (F -> FF: the old F stays, the new one grows); all others are `step`.
     struct Ages {
-        const std::uint16_t* in;
+        const std::uint16_t* in;  // with `out`: ages (either may be null when only origins are asked)
         PodBuffer<std::uint16_t>* out;
         std::uint16_t step;
+        // Provenance, when set: for each output module, the index of the input module it came
+        // from, and the production that made it (its index in the rule set; -1: copied as it was).
+        PodBuffer<std::uint32_t>* parent = nullptr;
+        PodBuffer<std::int32_t>* rule = nullptr;
     };
     bool rewrite(const ModuleString& in, ModuleString& out, Rng& rng, const std::atomic<bool>* cancel,
                  const std::function<void(double)>& progress, const Ages* ages = nullptr);
@@ -69,6 +73,8 @@ void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng)
 
 // Removes each cut symbol '%' together with the rest of its branch (ABOP section 1.10.3,
 // used for shedding): everything up to, not including, the ']' that closes the branch.
-void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages = nullptr);
+// Per-module arrays (ages, provenance) are compacted along with the string.
+void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages = nullptr,
+              PodBuffer<std::uint32_t>* parent = nullptr, PodBuffer<std::int32_t>* rule = nullptr);
 
 }  // namespace sprout

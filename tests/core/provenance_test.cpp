@@ -1,0 +1,107 @@
+// Which rule made this branch: module -> step -> rule -> ancestors, against lineages derived
+// by hand for small grammars of each kind (core/provenance.hpp).
+#include <gtest/gtest.h>
+
+#include "core/file_kind.hpp"
+#include "core/provenance.hpp"
+#include "tests/core/test_util.hpp"
+
+namespace sprout {
+namespace {
+
+struct Traced {
+    std::shared_ptr<const Grammar> grammar;
+    std::unique_ptr<Derivation> derivation;
+    std::string lineageOf(int step, std::uint32_t index) {
+        return describeLineage(*grammar, lineage(*derivation, step, index));
+    }
+    std::string at(int step) { return toString(*derivation->step(step), grammar->alphabet); }
+};
+
+Traced trace(const std::string& text, int n, FileKind kind = FileKind::Lsys) {
+    Traced t;
+    ParseResult r = parse(text, parseOptionsFor(kind, ""));
+    for (const auto& d : r.diagnostics)
+        if (d.severity == Severity::Error) ADD_FAILURE() << formatDiagnostic(d, "<test>");
+    t.grammar = r.grammar;
+    DeriveOptions o;
+    o.trackOrigins = true;
+    t.derivation = std::make_unique<Derivation>(t.grammar, o);
+    EXPECT_TRUE(t.derivation->deriveTo(n).ok());
+    return t;
+}
+
+// Lindenmayer's algae (A -> AB, B -> A), by hand:
+//   0: A   1: A B   2: A B A   3: A B A A B
+// Step 3's fourth module (an A) was made at step 3 by A -> AB (line 2) from step 2's third A,
+// which B -> A (line 3) made at step 2 from step 1's B, which A -> AB made from the axiom.
+TEST(Provenance, AlgaeLineageByHand) {
+    Traced t = trace("axiom: A\nA -> AB\nB -> A\n", 3);
+    ASSERT_EQ(t.at(3), "ABAAB");
+    EXPECT_EQ(t.lineageOf(3, 3), "A at step 3 by line 2 <- A at step 2 by line 3 <- B at step 1 by line 2 <- A (axiom)");
+    EXPECT_EQ(t.lineageOf(0, 0), "A (axiom)");
+    auto links = lineage(*t.derivation, 3, 4);  // the last B: A -> AB at step 3, from step 2's last A
+    ASSERT_EQ(links.size(), 4u);
+    EXPECT_EQ(links[0].step, 3);
+    EXPECT_EQ(links[0].ruleLine, 2);
+    EXPECT_EQ(links[1].index, 2u);
+    EXPECT_TRUE(lineage(*t.derivation, 3, 5).empty());  // past the end
+}
+
+// Context-sensitive: only the A right of B becomes B; the others are copied, so their lineage
+// goes straight to the axiom, and the copy of a module keeps the step that made it.
+TEST(Provenance, ContextSensitiveAndCopiedModules) {
+    Traced t = trace("axiom: B A A A\nB < A -> B\nB -> A\n", 2);
+    ASSERT_EQ(t.at(1), "ABAA");
+    ASSERT_EQ(t.at(2), "AABA");
+    EXPECT_EQ(t.lineageOf(1, 1), "B at step 1 by line 2 <- A (axiom)");
+    EXPECT_EQ(t.lineageOf(1, 3), "A (axiom)");               // copied at step 1
+    EXPECT_EQ(t.lineageOf(2, 3), "A (axiom)");               // copied twice
+    EXPECT_EQ(t.lineageOf(2, 2), "B at step 2 by line 2 <- A (axiom)");
+    EXPECT_EQ(t.lineageOf(2, 1), "A at step 2 by line 3 <- B at step 1 by line 2 <- A (axiom)");
+}
+
+// Parametric with conditions: the rule that applied is the one whose condition held.
+TEST(Provenance, ParametricConditionsPickTheLine) {
+    Traced t = trace("axiom: A(0)\nA(x) : x < 2 -> A(x+1) [ B(x) ]\nA(x) : x >= 2 -> C(x)\nB(x) -> B(x) F\n", 3);
+    ASSERT_EQ(t.at(3), "C(2)[B(1)F][B(0)FF]");
+    EXPECT_EQ(t.lineageOf(3, 0), "C at step 3 by line 3 <- A at step 2 by line 2 <- A at step 1 by line 2 <- A (axiom)");
+    // B(0)'s F's: B -> B F rewrites B(0) each step, so the F right after it (index 7) is new at
+    // step 3, made from the B(0) that step 2 made; the next F (index 8) is step 2's, copied.
+    EXPECT_EQ(t.lineageOf(3, 7), "F at step 3 by line 4 <- B at step 2 by line 4 <- B at step 1 by line 2 <- A (axiom)");
+    EXPECT_EQ(t.lineageOf(3, 8), "F at step 2 by line 4 <- B at step 1 by line 2 <- A (axiom)");
+}
+
+// Stochastic: the lineage names whichever of the two rules the seed chose.
+TEST(Provenance, StochasticNamesTheChosenRule) {
+    for (std::uint64_t seed : {1, 2, 3, 4, 5, 6}) {
+        ParseResult r = parse("axiom: A\nA -> AB : 0.5\nA -> BA : 0.5\n");
+        DeriveOptions o;
+        o.trackOrigins = true;
+        o.seed = seed;
+        Derivation d(r.grammar, o);
+        ASSERT_TRUE(d.deriveTo(1).ok());
+        const std::string s = toString(*d.step(1), r.grammar->alphabet);
+        const int line = s == "AB" ? 2 : 3;
+        EXPECT_EQ(lineage(d, 1, 0)[0].ruleLine, line) << s;
+        EXPECT_EQ(lineage(d, 1, 1)[0].ruleLine, line) << s;
+    }
+}
+
+// cpfg: a decomposition rule is what made the modules it writes, and they come from the
+// module of the step before; a cut in the next step leaves indices that still lead home.
+TEST(Provenance, DecompositionAndCutInTheNextStep) {
+    Traced t = trace("Lsystem: 1\nderivation length: 2\nAxiom: A\nA --> I A\ndecomposition\nI --> F X\nendlsystem\n", 2,
+                     FileKind::Cpfg);
+    ASSERT_EQ(t.at(2), "FXFXA");
+    EXPECT_EQ(t.lineageOf(2, 3), "X at step 2 by line 6 <- A at step 1 by line 4 <- A (axiom)");
+    EXPECT_EQ(t.lineageOf(2, 0), "F at step 1 by line 6 <- A (axiom)");
+    Traced cut = trace("Lsystem: 1\nderivation length: 2\nAxiom: A [ % B ] C\nA --> A A\nC --> D\nendlsystem\n", 2,
+                       FileKind::Cpfg);
+    ASSERT_EQ(cut.at(2), "AAAA[]D");
+    EXPECT_EQ(cut.lineageOf(2, 6), "D at step 1 by line 5 <- C (axiom)");
+    EXPECT_EQ(cut.lineageOf(2, 3), "A at step 2 by line 4 <- A at step 1 by line 4 <- A (axiom)");
+}
+
+}  // namespace
+}  // namespace sprout
