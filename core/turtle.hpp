@@ -36,6 +36,11 @@ struct TurtleOptions {
     bool fromTree = true;
     std::size_t treeMinModules = 1 << 15;  // shorter strings are read: blocks would not pay
     std::vector<QueryFrame>* queries = nullptr;  // when set, receives the frame at each query module
+    // When set (picking): the index in the drawn string of the module that drew each segment
+    // and each leaf, petal or sphere, in the order they are written. The string is read, not
+    // the derivation tree.
+    std::vector<std::uint32_t>* segmentModules = nullptr;
+    std::vector<std::uint32_t>* surfaceModules = nullptr;
 };
 
 struct TurtleStats {

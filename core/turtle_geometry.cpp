@@ -136,6 +136,7 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
         return;
     }
     m_out.surfaces.push_back(s);
+    if (m_opt.surfaceModules) m_opt.surfaceModules->push_back(std::uint32_t(m_surfaceModule));
     addBound(t.pos);
     addBound(t.pos + t.H * s.size);
 }

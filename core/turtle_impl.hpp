@@ -225,6 +225,7 @@ public:
     // that map each symbol to one fixed string.
     bool treeApplicable() const {
         return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
+               !m_opt.segmentModules && !m_opt.surfaceModules &&
                m_surfaceFiles.empty() &&
                simpleInterpretation(m_g);
     }
@@ -451,7 +452,10 @@ private:
             case Act::Gravity: bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f); break;
             case Act::Leaf:
             case Act::Petal:
-            case Act::Sphere: surface(t, act, p, growth(i)); break;
+            case Act::Sphere:
+                m_surfaceModule = i;
+                surface(t, act, p, growth(i));
+                break;
             case Act::Query:
                 if (m_opt.queries) m_opt.queries->push_back({toGlm(t.pos), toGlm(t.H), toGlm(up(t)), toGlm(t.L)});
                 break;
@@ -510,6 +514,7 @@ private:
         c.colour = t.stemColour;
         c.order = t.order;
         c.step = m_opt.ages ? m_opt.ages[i] : 0;
+        if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(i));
         addBound(t.pos);
         if (m_tropismE != 0) bend(t);
     }
@@ -531,6 +536,7 @@ private:
             c.colour = colour;
             c.order = t.order;
             c.step = m_opt.ages ? m_opt.ages[first + k] : 0;
+            if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(first + k));
             a = b;
         }
         t.pos = a;
@@ -604,6 +610,7 @@ private:
     std::vector<v4>& m_blockPoints = m_work.blockPoints;
     std::deque<TreeScratch>& m_scratch = m_work.scratch;
     int m_level = 0;                 // blocks being built
+    size_t m_surfaceModule = 0;      // the module drawing the surface being made (picking)
     bool m_abort = false;            // the block being built cannot be one
 };
 

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "core/file_kind.hpp"
+#include "core/pick.hpp"
 #include "core/provenance.hpp"
+#include "core/turtle.hpp"
 #include "tests/core/test_util.hpp"
 
 namespace sprout {
@@ -101,6 +103,40 @@ TEST(Provenance, DecompositionAndCutInTheNextStep) {
     ASSERT_EQ(cut.at(2), "AAAA[]D");
     EXPECT_EQ(cut.lineageOf(2, 6), "D at step 1 by line 5 <- C (axiom)");
     EXPECT_EQ(cut.lineageOf(2, 3), "A at step 2 by line 4 <- A at step 1 by line 4 <- A (axiom)");
+}
+
+// A click on a stem: the ray finds the segment, the turtle says which module drew it, and
+// the lineage says which rule made it. Step 2 of A -> F [ + A ] F is F [ + F [ + A ] F ] F:
+// the trunk's second F (module 10) came from step 1's last F.
+TEST(Provenance, PickedSegmentLeadsToItsRule) {
+    Traced t = trace("n: 2\nangle: 90\naxiom: A\nA -> F [ + A ] F\n", 2);
+    ASSERT_EQ(t.at(2), "F[+F[+A]F]F");
+    Geometry g;
+    std::vector<std::uint32_t> segmentModules, surfaceModules;
+    TurtleOptions o{2, 1, nullptr};
+    o.segmentModules = &segmentModules;
+    o.surfaceModules = &surfaceModules;
+    interpret(*t.derivation->step(2), *t.grammar, o, g);
+    ASSERT_EQ(g.cylinders.size(), 4u);
+    ASSERT_EQ(segmentModules, (std::vector<std::uint32_t>{0, 3, 8, 10}));
+    // Looking along -Z at the trunk's upper half, and at its lower half.
+    auto upper = pick(g, {0, 1.5f, 10}, {0, 0, -1});
+    ASSERT_TRUE(upper);
+    EXPECT_EQ(upper->kind, PickHit::Kind::Segment);
+    EXPECT_EQ(segmentModules[upper->index], 10u);
+    EXPECT_NEAR(upper->distance, 10, 0.01);
+    EXPECT_EQ(t.lineageOf(2, segmentModules[upper->index]), "F at step 1 by line 4 <- A (axiom)");
+    auto lower = pick(g, {0, 0.5f, 10}, {0, 0, -1});
+    ASSERT_TRUE(lower);
+    EXPECT_EQ(segmentModules[lower->index], 0u);
+    // Beside everything: nothing.
+    EXPECT_FALSE(pick(g, {5, 5, 10}, {0, 0, -1}));
+    // The branch's inner F, drawn to the side: made at step 2 from step 1's A.
+    const CylinderInstance& inner = g.cylinders[2];
+    const glm::vec3 mid = (inner.start + inner.end) * 0.5f;
+    auto side = pick(g, mid + glm::vec3(0, 0, 10), {0, 0, -1});
+    ASSERT_TRUE(side);
+    EXPECT_EQ(t.lineageOf(2, segmentModules[side->index]), "F at step 2 by line 4 <- A at step 1 by line 4 <- A (axiom)");
 }
 
 }  // namespace
