@@ -91,6 +91,7 @@ public:
     const std::vector<StepStats>& stats() const { return m_stats; }
     bool fastPath() const { return m_d0l != nullptr; }
     const Grammar& grammar() const { return *m_grammar; }
+    const std::shared_ptr<const Grammar>& sharedGrammar() const { return m_grammar; }
     std::uint64_t seed() const { return m_seed; }
     // With DeriveOptions::holdQueries: the last step made, to answer its query modules in.
     ModuleString* unansweredStep() { return m_last.get(); }

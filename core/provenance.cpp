@@ -9,16 +9,27 @@ int ruleLine(const Grammar& g, int rule) {
     return 0;
 }
 
-std::vector<LineageLink> lineage(Derivation& d, int step, std::uint32_t index) {
+DerivationRecord DerivationRecord::of(Derivation& d) {
+    DerivationRecord r;
+    r.grammar = d.sharedGrammar();
+    for (int k = 0; k <= d.stepsDerived(); ++k) {
+        r.steps.push_back(d.step(k));
+        r.origins.push_back(d.origins(k));
+    }
+    return r;
+}
+
+std::vector<LineageLink> lineage(Derivation& d, int step, std::uint32_t index) { return lineage(DerivationRecord::of(d), step, index); }
+
+std::vector<LineageLink> lineage(const DerivationRecord& r, int step, std::uint32_t index) {
     std::vector<LineageLink> links;
-    if (step < 0 || step > d.stepsDerived()) return links;
-    auto s = d.step(step);
-    if (!d.origins(step) || !s || index >= s->size()) return links;
+    if (step < 0 || size_t(step) >= r.steps.size() || size_t(step) >= r.origins.size() || !r.grammar) return links;
+    if (!r.origins[size_t(step)] || !r.steps[size_t(step)] || index >= r.steps[size_t(step)]->size()) return links;
     int k = step;
     std::uint32_t i = index;
     for (;;) {
-        auto o = d.origins(k);
-        if (!o || i >= o->parent.size()) return {};
+        const auto& o = r.origins[size_t(k)];
+        if (!o || !r.steps[size_t(k)] || i >= o->parent.size()) return {};
         const std::int32_t rule = o->rule.data()[i];
         if (rule == -1 && k > 0) {  // copied unchanged from the step before: made earlier
             i = o->parent.data()[i];
@@ -28,15 +39,32 @@ std::vector<LineageLink> lineage(Derivation& d, int step, std::uint32_t index) {
         LineageLink link;
         link.step = k;
         link.index = i;
-        link.symbol = d.step(k)->symbols.data()[i];
+        link.symbol = r.steps[size_t(k)]->symbols.data()[i];
         link.rule = rule;
-        link.ruleLine = ruleLine(d.grammar(), rule);
+        link.ruleLine = ruleLine(*r.grammar, rule);
         links.push_back(link);
         if (k == 0) break;
         i = o->parent.data()[i];
         --k;
     }
     return links;
+}
+
+std::vector<std::int32_t> madeBy(const DerivationRecord& r, int step) {
+    std::vector<std::int32_t> made, next;
+    if (step < 0 || size_t(step) >= r.origins.size()) return made;
+    for (int k = 0; k <= step; ++k) {
+        const auto& o = r.origins[size_t(k)];
+        if (!o) return {};
+        next.resize(o->rule.size());
+        for (size_t i = 0; i < next.size(); ++i) {
+            const std::int32_t rule = o->rule.data()[i];
+            const std::uint32_t parent = o->parent.data()[i];
+            next[i] = rule != -1 || k == 0 ? rule : parent < made.size() ? made[parent] : -1;
+        }
+        made.swap(next);
+    }
+    return made;
 }
 
 std::string describeLineage(const Grammar& g, const std::vector<LineageLink>& links) {

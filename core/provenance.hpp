@@ -19,10 +19,24 @@ struct LineageLink {
     int ruleLine = 0;          // the rule's line in the file; 0 for the axiom
 };
 
+// The steps of a derivation and their origins, kept apart from it (shared pointers to
+// immutable data): the viewer hands it to the window thread while the worker goes on.
+struct DerivationRecord {
+    std::shared_ptr<const Grammar> grammar;
+    std::vector<std::shared_ptr<const ModuleString>> steps;
+    std::vector<std::shared_ptr<const Origins>> origins;
+    static DerivationRecord of(Derivation& d);  // steps 0 .. the last one derived
+};
+
 // links[0] is the module itself where it was made; each next one is the module it came from,
 // ending at a module of the axiom. Empty when the derivation keeps no origins or the module is
 // not there.
+std::vector<LineageLink> lineage(const DerivationRecord& record, int step, std::uint32_t index);
 std::vector<LineageLink> lineage(Derivation& derivation, int step, std::uint32_t index);
+
+// For each module of step `step`, the rule that made it (as Origins::rule; -1 for modules of
+// the axiom never rewritten): "everything this rule made" in one pass over the steps.
+std::vector<std::int32_t> madeBy(const DerivationRecord& record, int step);
 
 // The line of an encoded rule in the grammar's file (0: none).
 int ruleLine(const Grammar& grammar, int rule);

@@ -54,6 +54,8 @@ struct Renderer::Impl {
            groundProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
     std::size_t overlayIndices = 0;
+    Buffers highlight;  // picked stems, drawn over everything (setHighlight)
+    std::size_t highlightIndices = 0;
     Bounds overlayBounds;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
@@ -136,7 +138,7 @@ struct Renderer::Impl {
 
         // Two sets of baked and line buffers: the one on screen, and the one a staged upload
         // fills a piece per frame (beginUpload) before they swap.
-        for (Buffers* b : {&baked, &bakedBack, &overlay}) makeBaked(*b);
+        for (Buffers* b : {&baked, &bakedBack, &overlay, &highlight}) makeBaked(*b);
         for (Buffers* b : {&lines, &linesBack}) makeLines(*b);
 
         // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
@@ -658,6 +660,18 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         stats.triangles += s.overlayIndices / 3;
     }
 
+    if (s.highlightIndices) {
+        // What was picked, seen through whatever is in front of it.
+        s.setLighting(s.overlayProgram, o, eye, lightViewProj, false, texel);
+        setUniform(s.overlayProgram, "uViewProj", viewProj);
+        setUniform(s.overlayProgram, "uPass", 0);
+        glDisable(GL_DEPTH_TEST);
+        glBindVertexArray(s.highlight.vao);
+        glDrawElements(GL_TRIANGLES, GLsizei(s.highlightIndices), GL_UNSIGNED_INT, nullptr);
+        glBindVertexArray(0);
+        glEnable(GL_DEPTH_TEST);
+    }
+
     // Resolve the multisampled image into the target.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
@@ -666,17 +680,27 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     m_stats = stats;
 }
 
-void Renderer::setOverlay(const Mesh& mesh) {
-    Impl& s = *m;
+namespace {
+std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {
     BakedMesh baked;
     bakePolygons(mesh, baked);
-    glBindVertexArray(s.overlay.vao);
-    glBindBuffer(GL_ARRAY_BUFFER, s.overlay.vbo);
+    glBindVertexArray(vao);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(baked.vertices.size() * sizeof(BakedVertex)), baked.vertices.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s.overlay.ebo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(baked.indices.size() * 4), baked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
-    s.overlayIndices = baked.indices.size();
+    return baked.indices.size();
+}
+}  // namespace
+
+void Renderer::setHighlight(const Mesh& mesh) {
+    m->highlightIndices = uploadMesh(mesh, m->highlight.vao, m->highlight.vbo, m->highlight.ebo);
+}
+
+void Renderer::setOverlay(const Mesh& mesh) {
+    Impl& s = *m;
+    s.overlayIndices = uploadMesh(mesh, s.overlay.vao, s.overlay.vbo, s.overlay.ebo);
     s.overlayBounds = Bounds();
     for (const glm::vec3& p : mesh.positions) s.overlayBounds.add(p);
 }

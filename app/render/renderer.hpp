@@ -86,6 +86,8 @@ public:
     // What is drawn with the plant, translucent, after it: the environment
     // (core/environment_drawing.hpp). An empty mesh draws nothing.
     void setOverlay(const Mesh& mesh);
+    // Picked stems and leaves (opaque colours), drawn last and through everything in front.
+    void setHighlight(const Mesh& mesh);
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.

@@ -5,6 +5,9 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
 #include <string>
 
 #include "app/render/renderer.hpp"
@@ -87,6 +90,30 @@ struct App {
     // Records the plant on screen as a growth or turntable video (a child process renders it).
     void recordVideo(const std::string& kind, const std::string& path);
     std::string nextScreenshotPath() const;
+
+    // Picking (app/viewer/picking.cpp): what a click in the 3D view hit, the module that drew
+    // it and the rule that made it, its ancestors; and everything one rule made.
+    struct Selection {
+        std::shared_ptr<const Result> plant;  // the plant it was picked on
+        bool surface = false;                 // a leaf, petal or sphere; else a stem segment
+        std::uint32_t instance = 0;           // index of the segment or surface
+        std::uint32_t module = 0;             // its module in the drawn string
+        std::vector<LineageLink> links;       // empty when the derivation cannot say (a homomorphism)
+    };
+    std::optional<Selection> selection;
+    std::optional<std::pair<double, double>> pendingPick;  // a click waiting for the derivation's origins
+    int highlightLine = 0;           // a rule's line: every segment it made is highlighted
+    std::size_t highlightCount = 0;  // how many (stems and surfaces)
+    bool highlightDirty = false;
+    std::shared_ptr<const Result> highlightOf;  // the plant the highlight was made for
+    bool followCursor = true;        // highlight the rule under the editor's cursor
+    int cursorOffset = -1;           // the editor's cursor, a byte offset into the text
+    // Picks at window pixel (x, y); false (and asks for origins) when the plant has none yet.
+    bool pickAt(double x, double y);
+    // The line printed by the script's `pick`: "module=F index=12 step=3 rule_line=7".
+    std::string describeSelection() const;
+    void setHighlightLine(int line);
+    void updateHighlight();  // the highlight mesh for the selection and the highlighted rule
 };
 
 void drawPanel(App& app);

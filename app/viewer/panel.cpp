@@ -9,6 +9,7 @@
 #include <imgui_internal.h>  // ActivateItem: focus the editor on a clicked error
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <cstdio>
@@ -69,6 +70,7 @@ int jumpCallback(ImGuiInputTextCallbackData* data) {
         data->CursorPos = data->SelectionStart = data->SelectionEnd = std::min(app->jumpTo, data->BufTextLen);
         app->jumpTo = -1;
     }
+    app->cursorOffset = data->CursorPos;  // the rule under the cursor can be highlighted
     return 0;
 }
 
@@ -254,6 +256,96 @@ void environmentSection(App& app, const Environment& env) {
         if (moved) app.state.setText(setEnvironmentNumber(text, n, f));
         ImGui::PopID();
         if (moved) break;  // the text changed under the others
+    }
+}
+
+// The text of one line of the grammar (1-based), trimmed.
+std::string lineText(const std::string& text, int line) {
+    size_t pos = 0;
+    for (int l = 1; l < line && pos != std::string::npos; ++l) {
+        pos = text.find('\n', pos);
+        if (pos != std::string::npos) ++pos;
+    }
+    if (pos == std::string::npos || pos >= text.size()) return "";
+    std::string out = text.substr(pos, text.find('\n', pos) - pos);
+    while (!out.empty() && (out.back() == '\r' || out.back() == ' ')) out.pop_back();
+    return out;
+}
+
+// One module of a string as text, parameters included: "F(1.5)".
+std::string moduleText(const ModuleString& s, const Alphabet& alphabet, std::uint32_t index) {
+    size_t p = 0;
+    for (std::uint32_t i = 0; i < index; ++i) p += alphabet[s.symbols.data()[i]].arity;
+    const auto& a = alphabet[s.symbols.data()[index]];
+    std::string out = a.name;
+    for (unsigned k = 0; k < a.arity; ++k) out += (k ? "," : "(") + formatValue(s.params.data()[p + k]) + (k + 1 == a.arity ? ")" : "");
+    return out;
+}
+
+// Which rule made this branch: the picked module, its rule and ancestors; the rule under the
+// editor's cursor, and how much it made.
+void whySection(App& app) {
+    auto plant = app.state.plant();
+    if (!plant || !plant->geometry) return;
+    if (!plant->grammar) {
+        ImGui::TextWrapped("Picking works on grammars; a forest's plants are grown apart from their derivations.");
+        return;
+    }
+    if (!app.state.picking()) {
+        ImGui::TextWrapped("Click a stem or leaf in the view to see which module drew it and which rule made it.");
+        if (ImGui::Button("Start picking")) app.state.setPicking(true);
+        return;
+    }
+    const std::string& text = app.state.text();
+    // The rule under the cursor: everything it made lights up.
+    if (app.followCursor && app.cursorOffset >= 0 && app.cursorOffset <= int(text.size())) {
+        const int line = 1 + int(std::count(text.begin(), text.begin() + app.cursorOffset, '\n'));
+        static int lastLine = 0;
+        bool isRule = false;
+        for (const Production& p : plant->grammar->rules.productions) isRule |= p.line == line;
+        for (const Production& p : plant->grammar->decomposition.productions) isRule |= p.line == line;
+        if (line != lastLine && isRule) app.setHighlightLine(line);
+        lastLine = line;
+    }
+    ImGui::Checkbox("highlight what the rule under the cursor made", &app.followCursor);
+    if (app.highlightLine > 0) {
+        ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.25f, 1), "line %d made %zu stems and leaves:", app.highlightLine, app.highlightCount);
+        ImGui::TextWrapped("%s", ascii(lineText(text, app.highlightLine)).c_str());
+        if (ImGui::SmallButton("clear highlight")) app.setHighlightLine(0);
+    }
+    ImGui::Separator();
+    if (!app.selection) {
+        ImGui::TextWrapped("Click a stem or leaf in the view.");
+        return;
+    }
+    const App::Selection& sel = *app.selection;
+    const PickData& pick = *sel.plant->pick;
+    const Grammar& g = *pick.record.grammar;
+    const auto& drawn = pick.record.steps[size_t(pick.step)];
+    if (pick.homomorphism) {
+        ImGui::TextWrapped("%s, module %u of the string the interpretation rules drew (their modules have no lineage).",
+                           sel.surface ? "a leaf" : "a stem", sel.module);
+        return;
+    }
+    if (!drawn || sel.module >= drawn->size()) return;
+    ImGui::Text("%s %s, module %u of step %d", sel.surface ? "leaf / surface" : "stem", moduleText(*drawn, g.alphabet, sel.module).c_str(),
+                sel.module, pick.step);
+    for (size_t k = 0; k < sel.links.size(); ++k) {
+        const LineageLink& l = sel.links[k];
+        ImGui::PushID(int(k));
+        const std::string name = g.alphabet[l.symbol].name;
+        if (l.ruleLine > 0) {
+            if (ImGui::SmallButton(("line " + std::to_string(l.ruleLine)).c_str())) {
+                app.jumpTo = offsetOf(text, l.ruleLine, 1);
+                ImGui::ActivateItem(ImGui::GetID("##grammar"));
+                app.setHighlightLine(l.ruleLine);
+            }
+            ImGui::SameLine();
+            ImGui::TextWrapped("%s%s made at step %d by: %s", k ? "<- " : "", name.c_str(), l.step, ascii(lineText(text, l.ruleLine)).c_str());
+        } else {
+            ImGui::TextWrapped("%s%s, module %u of the axiom", k ? "<- " : "", name.c_str(), l.index);
+        }
+        ImGui::PopID();
     }
 }
 
@@ -508,6 +600,7 @@ void drawPanel(App& app) {
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);
     if (auto plant = app.state.plant(); plant && plant->environment && !plant->environment->empty())
         if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(app, *plant->environment);
+    if (ImGui::CollapsingHeader("Why this branch?", app.state.picking() ? ImGuiTreeNodeFlags_DefaultOpen : 0)) whySection(app);
     if (ImGui::CollapsingHeader("View and light")) viewSection(app);
     if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) presetSection(app);
     // Statistics line.

@@ -5,6 +5,9 @@
 //   define <name> <value> a define, as its slider would
 //   environment <k> <value>   the k-th (from 0) environment slider, as the panel's would
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
+//   pick <x> <y>          a click at window pixel (x, y): prints
+//                         "module=NAME index=I step=S rule_line=L" (or "module=none")
+//   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
@@ -117,6 +120,33 @@ bool Script::step(App& app) {
             auto numbers = environmentNumbers(app.state.text());
             if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
             else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+            return true;
+        }
+        if (cmd == "pick" || cmd == "highlight-rule") {
+            auto plant = app.state.plant();
+            if (!plant || !plant->geometry) {
+                std::printf(cmd == "pick" ? "module=none\n" : "highlighted=0\n");
+                std::fflush(stdout);
+                return true;
+            }
+            if (!plant->pick) {  // the derivation must keep its origins first: ask, then come back
+                app.state.setPicking(true);
+                m_lines.push_front(in.str());
+                return true;
+            }
+            if (cmd == "pick") {
+                double x = 0, y = 0;
+                in >> x >> y;
+                app.pickAt(x, y);
+                std::printf("%s\n", app.describeSelection().c_str());
+            } else {
+                int line = 0;
+                in >> line;
+                app.setHighlightLine(line);
+                app.updateHighlight();
+                std::printf("highlighted=%zu\n", app.highlightCount);
+            }
+            std::fflush(stdout);
             return true;
         }
         if (cmd == "show-environment" || cmd == "light-slice") {

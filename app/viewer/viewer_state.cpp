@@ -69,8 +69,15 @@ void ViewerState::post() {
     r.displayStep = m_displayStep;
     r.trackAges = m_playing && smoothGrowth;
     r.growFraction = r.trackAges ? m_growFraction : 1.0f;
+    r.trackOrigins = m_picking;
     r.generation = ++m_generation;
     m_worker.post(std::move(r));
+}
+
+void ViewerState::setPicking(bool on) {
+    if (on == m_picking) return;
+    m_picking = on;
+    post();
 }
 
 void ViewerState::setText(std::string text) {

@@ -42,6 +42,10 @@ public:
     void stepBy(int delta);
     bool playing() const { return m_playing; }
     void setPlaying(bool on);
+    // Picking: the derivation keeps where each module came from (8 bytes a module), asked for
+    // on the first click and kept while the viewer is open.
+    bool picking() const { return m_picking; }
+    void setPicking(bool on);
     float stepsPerSecond = 2.0f;
     bool loop = true;
     bool smoothGrowth = true;  // new segments grow from nothing while their step plays
@@ -92,6 +96,7 @@ private:
     std::optional<std::uint64_t> m_seedOverride;
     int m_displayStep = -1;  // -1: follow n
     bool m_playing = false;
+    bool m_picking = false;
     double m_animClock = 0;
     float m_growFraction = 1.0f;
     std::shared_ptr<const Result> m_plant, m_latest;

@@ -51,6 +51,8 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 struct Mouse {
     bool rotating = false, panning = false;
     double x = 0, y = 0;
+    double clickX = 0, clickY = 0;  // where the left button went down
+    bool clickArmed = false;         // released there: a pick, not a drag
 };
 
 }  // namespace
@@ -352,6 +354,9 @@ int runViewer(int argc, char** argv) {
             }
             app.needsRedraw = true;
         }
+        // A click that waited for the derivation's origins; the highlight follows the plant.
+        if (app.pendingPick && app.state.plant() && app.state.plant()->pick) app.pickAt(app.pendingPick->first, app.pendingPick->second);
+        if ((app.highlightDirty || app.highlightOf != app.state.plant()) && !app.renderer.uploading()) app.updateHighlight();
         // The environment changes with the plant on screen: after a staged upload is whole.
         if ((app.environmentDirty || app.environmentOf != app.state.plant()) && !app.renderer.uploading()) app.updateEnvironment();
         if (app.renderer.uploading()) {
@@ -411,7 +416,14 @@ int runViewer(int argc, char** argv) {
         double mx = 0, my = 0;
         glfwGetCursorPos(window, &mx, &my);
         const bool overView = !io.WantCaptureMouse;
-        if (overView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) mouse.rotating = true;
+        if (overView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+            mouse.rotating = true;
+            mouse.clickX = mx, mouse.clickY = my, mouse.clickArmed = true;  // a click, unless it drags
+        }
+        if (mouse.clickArmed && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+            mouse.clickArmed = false;
+            if (std::abs(mx - mouse.clickX) + std::abs(my - mouse.clickY) < 4) app.pickAt(mx, my);
+        }
         if (overView && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
             mouse.panning = true;
         if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) mouse.rotating = false;

@@ -146,11 +146,13 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     out->seed = r.seed.value_or(g.settings.seed);
     out->iterations = r.iterations.value_or(g.settings.iterations);
     out->displayStep = r.displayStep < 0 ? out->iterations : std::min(r.displayStep, out->iterations);
-    if (!m_derivation || m_cachedSeed != out->seed || m_cachedAges != r.trackAges) {
+    if (!m_derivation || m_cachedSeed != out->seed || m_cachedAges != r.trackAges || m_cachedOrigins != r.trackOrigins) {
         DeriveOptions opts;
         opts.seed = out->seed;
         opts.trackAges = r.trackAges;
+        opts.trackOrigins = r.trackOrigins;
         m_cachedAges = r.trackAges;
+        m_cachedOrigins = r.trackOrigins;
         opts.limits = limits;
         opts.cancel = &m_cancel;
         opts.progress = [this](int step, int, double fraction) {
@@ -185,8 +187,20 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
         t.growFraction = std::max(0.0f, r.growFraction);
         out->growFraction = t.growFraction;
     }
+    std::shared_ptr<PickData> pick;
+    if (r.trackOrigins) {
+        pick = std::make_shared<PickData>();
+        t.segmentModules = &pick->segmentModules;
+        t.surfaceModules = &pick->surfaceModules;
+    }
     interpret(*string, g, t, *geometry);
     out->interpretMs = millisSince(t0);
+    if (pick) {
+        pick->record = DerivationRecord::of(*m_derivation);
+        pick->step = out->displayStep;
+        pick->homomorphism = !g.interpretation.productions.empty();
+        out->pick = std::move(pick);
+    }
     if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
     return out;

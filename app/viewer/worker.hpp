@@ -15,6 +15,7 @@
 
 #include "core/derive.hpp"
 #include "core/file_kind.hpp"
+#include "core/provenance.hpp"
 #include "core/turtle.hpp"
 
 namespace sprout::viewer {
@@ -30,7 +31,18 @@ struct Request {
     // their size (needs the derivation to record ages).
     float growFraction = 1.0f;
     bool trackAges = false;
+    // Picking: keep where every module came from, and which module drew each segment.
+    bool trackOrigins = false;
     std::uint64_t generation = 0;
+};
+
+// What a click needs to say which module drew a stem and which rule made it.
+struct PickData {
+    DerivationRecord record;                     // the steps and their origins
+    int step = 0;                                // the step drawn
+    std::vector<std::uint32_t> segmentModules;   // per segment: its module in the drawn string
+    std::vector<std::uint32_t> surfaceModules;   // per leaf, petal, sphere
+    bool homomorphism = false;                   // drawn through interpretation rules: indices are in their output
 };
 
 struct Result {
@@ -46,6 +58,7 @@ struct Result {
     std::shared_ptr<const void> prepared;      // what Worker::prepare made of the geometry
     // The environment the plant grew in (a forest's shared one; a grammar's is in `grammar`).
     std::shared_ptr<const Environment> environment;
+    std::shared_ptr<const PickData> pick;  // with Request::trackOrigins
     // An iterated function system is drawn as an image instead (RGBA, top row first).
     std::shared_ptr<const std::vector<std::uint8_t>> image;
     int imageWidth = 0, imageHeight = 0;
@@ -104,6 +117,7 @@ private:
     std::string m_cachedPath;
     std::uint64_t m_cachedSeed = 0;
     bool m_cachedAges = false;
+    bool m_cachedOrigins = false;
     std::shared_ptr<const Grammar> m_cachedGrammar;
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;

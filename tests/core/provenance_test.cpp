@@ -48,6 +48,7 @@ TEST(Provenance, AlgaeLineageByHand) {
     EXPECT_EQ(links[0].ruleLine, 2);
     EXPECT_EQ(links[1].index, 2u);
     EXPECT_TRUE(lineage(*t.derivation, 3, 5).empty());  // past the end
+    EXPECT_EQ(madeBy(DerivationRecord::of(*t.derivation), 3), (std::vector<std::int32_t>{0, 0, 1, 0, 0}));
 }
 
 // Context-sensitive: only the A right of B becomes B; the others are copied, so their lineage
@@ -61,6 +62,8 @@ TEST(Provenance, ContextSensitiveAndCopiedModules) {
     EXPECT_EQ(t.lineageOf(2, 3), "A (axiom)");               // copied twice
     EXPECT_EQ(t.lineageOf(2, 2), "B at step 2 by line 2 <- A (axiom)");
     EXPECT_EQ(t.lineageOf(2, 1), "A at step 2 by line 3 <- B at step 1 by line 2 <- A (axiom)");
+    // Everything each rule made, in one pass: B -> A is rule 1, B < A -> B rule 0, -1 the axiom's.
+    EXPECT_EQ(madeBy(DerivationRecord::of(*t.derivation), 2), (std::vector<std::int32_t>{1, 1, 0, -1}));
 }
 
 // Parametric with conditions: the rule that applied is the one whose condition held.

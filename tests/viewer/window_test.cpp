@@ -20,12 +20,12 @@ namespace fs = std::filesystem;
 
 bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
-int runUnderXvfb(const std::string& args, const std::string& env = "") {
+int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null") {
     fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
     fs::create_directories(home);
     std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" +
                       home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
-                      args + " >/dev/null 2>&1";
+                      args + " >" + stdoutFile + " 2>/dev/null";
     return std::system(cmd.c_str());
 }
 
@@ -173,6 +173,40 @@ TEST(Window, EnvironmentIsDrawnAndItsSliderRegrowsThePlant) {
     std::string expected = grammar;
     expected.replace(expected.find("sphere 0 6 0 3"), 14, "sphere 0 6 0 5");
     EXPECT_EQ(text, expected) << "the slider's value is in the saved text";
+}
+
+// Which rule made this branch: a click on the fractal plant's trunk (the preset, framed in a
+// 1300x860 window) says which module drew it and which rule made it, and highlighting a rule
+// lights up what it made (orange), then another rule something else.
+TEST(Window, PickingNamesTheModuleAndRuleAndHighlightsWhatARuleMade) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_pick_window_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string plain = (dir / "plain.png").string(), rule7 = (dir / "rule7.png").string(),
+                      rule6 = (dir / "rule6.png").string(), out = (dir / "out.txt").string();
+    std::ofstream(dir / "script.txt") << "wait\nscreenshot " << plain << " 400x300\n"
+                                     << "pick 946 720\npick 1290 20\n"
+                                     << "highlight-rule 7\nscreenshot " << rule7 << " 400x300\n"
+                                     << "highlight-rule 6\nscreenshot " << rule6 << " 400x300\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --size 1300x860 --script " + (dir / "script.txt").string(), "", out), 0);
+    std::ifstream in(out);
+    const std::string printed((std::istreambuf_iterator<char>(in)), {});
+    // The trunk's lowest F: module 9 of step 5, made at step 5 by F -> FF (line 7); the sky: nothing.
+    // Line 7 made 720 of the 1,488 stems; line 6 (X -> F-[[X]+X]+F[+FX]-X) the other 768.
+    EXPECT_EQ(printed, "module=F index=9 step=5 rule_line=7\nmodule=none\nhighlighted=720\nhighlighted=768\n");
+    Image a = load(plain), b = load(rule7), c = load(rule6);
+    auto orange = [](const Image& img) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < img.rgba.size(); i += 4)
+            n += img.rgba[i] > 200 && img.rgba[i + 1] > 120 && img.rgba[i + 1] < 210 && img.rgba[i + 2] < 110;
+        return n;
+    };
+    EXPECT_LT(orange(a), 50u);
+    EXPECT_GT(orange(b), 2000u) << "what line 7 made is highlighted";
+    EXPECT_GT(orange(c), 500u);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < b.rgba.size(); i += 4) differ += std::abs(int(b.rgba[i + 2]) - int(c.rgba[i + 2])) > 40;
+    EXPECT_GT(differ, 1000u) << "another rule lights up other stems";
 }
 
 // Save as through the viewer script: a symlinked grammar updates the file the link names
