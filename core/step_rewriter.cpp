@@ -96,12 +96,36 @@ bool StepRewriter::matches(const PatternModule& pm, SymbolId s) const {
 }
 
 void StepRewriter::bind(const PatternModule& pm, size_t j) {
+    if (m_bound) m_bound->push_back(j);
     if (pm.arity > 0)
         std::memcpy(&m_slots[pm.firstSlot], m_in->params.data() + m_offset[j], size_t(pm.arity) * sizeof(double));
 }
 
 // ABOP 1.8 / cpfg: the left context is found walking back towards the root, skipping
 // completed side branches `[...]` and stepping out of the current branch at its `[`.
+bool StepRewriter::contextOf(const ModuleString& in, size_t i, const Production& p, std::vector<std::size_t>& left,
+                             std::vector<std::size_t>& right) {
+    left.clear();
+    right.clear();
+    if (i >= in.size()) return false;
+    prepare(in);
+    if (!m_needBrackets || m_offset.size() != in.size()) {
+        // Parameter offsets for bind(): computed here when the step did not need them.
+        m_offset.resize(in.size());
+        std::uint64_t o = 0;
+        for (size_t k = 0; k < in.size(); ++k) m_offset[k] = o, o += m_arity[in.symbols.data()[k]];
+    }
+    if (m_match.size() != in.size()) m_match.assign(in.size(), kUnmatched);
+    m_slots.resize(std::max<size_t>(m_slots.size(), size_t(p.slotCount) + 1));
+    m_bound = &left;
+    bool ok = matchLeft(p, i);
+    std::reverse(left.begin(), left.end());
+    m_bound = &right;
+    ok = ok && matchRight(p, i);
+    m_bound = nullptr;
+    return ok;
+}
+
 bool StepRewriter::matchLeft(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     std::ptrdiff_t j = std::ptrdiff_t(i) - 1;

@@ -35,6 +35,12 @@ public:
     bool rewrite(const ModuleString& in, ModuleString& out, Rng& rng, const std::atomic<bool>* cancel,
                  const std::function<void(double)>& progress, const Ages* ages = nullptr);
 
+    // The modules of `in` that the context of production `p` matches around module i (the
+    // derivation inspector: which context matched): left ones and right ones, each in text
+    // order. False when the context does not match there.
+    bool contextOf(const ModuleString& in, size_t i, const Production& p, std::vector<std::size_t>& left,
+                   std::vector<std::size_t>& right);
+
 private:
     const Production* select(size_t i, Rng& rng);
     bool matches(const PatternModule& pm, SymbolId s) const;
@@ -66,6 +72,7 @@ private:
     size_t m_paramPos = 0;                 // parameter offset of the module being rewritten
     std::vector<double> m_slots;
     std::vector<std::uint32_t> m_candidates;
+    std::vector<std::size_t>* m_bound = nullptr;  // contextOf: where matched modules are
 };
 
 // Runs a cpfg statement block over a production's slots (parameters and locals).

@@ -114,9 +114,26 @@ struct App {
     std::string describeSelection() const;
     void setHighlightLine(int line);
     void updateHighlight();  // the highlight mesh for the selection and the highlighted rule
+    // Picks module `index` of the drawn string (the inspector): its first stem or surface.
+    void selectModule(std::uint32_t index);
+
+    // The derivation inspector's state (app/viewer/inspector.cpp).
+    struct Inspector {
+        int step = -1;
+        std::uint64_t first = 0;    // the first module listed
+        std::int64_t chosen = -1;
+        char query[64] = "";
+        bool found = true;
+        std::shared_ptr<const Result> of;  // what the caches below are for
+        int cachedStep = -1;
+        std::vector<std::uint64_t> checkpoints;
+        std::vector<std::int32_t> made;
+    } inspector;
+    bool openInspector = false;  // the script's `inspect` opens its panel section
 };
 
 void drawPanel(App& app);
+void inspectorSection(App& app);
 
 // --script FILE: one action per line, run as the window goes (tests, demos).
 class Script {

@@ -601,6 +601,8 @@ void drawPanel(App& app) {
     if (auto plant = app.state.plant(); plant && plant->environment && !plant->environment->empty())
         if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(app, *plant->environment);
     if (ImGui::CollapsingHeader("Why this branch?", app.state.picking() ? ImGuiTreeNodeFlags_DefaultOpen : 0)) whySection(app);
+    if (app.openInspector) ImGui::SetNextItemOpen(true), app.openInspector = false;
+    if (ImGui::CollapsingHeader("Derivation inspector")) inspectorSection(app);
     if (ImGui::CollapsingHeader("View and light")) viewSection(app);
     if (ImGui::CollapsingHeader("Presets", ImGuiTreeNodeFlags_DefaultOpen)) presetSection(app);
     // Statistics line.

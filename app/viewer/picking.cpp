@@ -110,4 +110,21 @@ void App::updateHighlight() {
     needsRedraw = true;
 }
 
+void App::selectModule(std::uint32_t index) {
+    auto plant = state.plant();
+    if (!plant || !plant->pick) return;
+    Selection s;
+    s.plant = plant;
+    s.module = index;
+    bool drawn = false;
+    for (std::uint32_t i = 0; i < plant->pick->segmentModules.size() && !drawn; ++i)
+        if (plant->pick->segmentModules[i] == index) s.instance = i, drawn = true;
+    for (std::uint32_t i = 0; i < plant->pick->surfaceModules.size() && !drawn; ++i)
+        if (plant->pick->surfaceModules[i] == index) s.instance = i, s.surface = true, drawn = true;
+    if (!drawn) s.instance = std::uint32_t(-1);  // draws nothing: nothing is outlined
+    if (!plant->pick->homomorphism) s.links = lineage(plant->pick->record, plant->pick->step, index);
+    selection = std::move(s);
+    highlightDirty = true;
+}
+
 }  // namespace sprout::viewer

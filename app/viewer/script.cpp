@@ -8,6 +8,7 @@
 //   pick <x> <y>          a click at window pixel (x, y): prints
 //                         "module=NAME index=I step=S rule_line=L" (or "module=none")
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
+//   inspect <step> <module>   the derivation inspector on that step, that module chosen
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
@@ -20,6 +21,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -120,6 +122,19 @@ bool Script::step(App& app) {
             auto numbers = environmentNumbers(app.state.text());
             if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
             else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+            return true;
+        }
+        if (cmd == "inspect") {
+            if (!app.state.picking() || !app.state.plant() || !app.state.plant()->pick) {
+                app.state.setPicking(true);
+                m_lines.push_front(in.str());
+                return true;
+            }
+            std::int64_t module = 0;
+            in >> app.inspector.step >> module;
+            app.inspector.chosen = module;
+            app.inspector.first = std::uint64_t(std::max<std::int64_t>(0, module - 4));
+            app.openInspector = true;
             return true;
         }
         if (cmd == "pick" || cmd == "highlight-rule") {

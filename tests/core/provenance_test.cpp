@@ -5,6 +5,7 @@
 #include "core/file_kind.hpp"
 #include "core/pick.hpp"
 #include "core/provenance.hpp"
+#include "core/step_rewriter.hpp"
 #include "core/turtle.hpp"
 #include "tests/core/test_util.hpp"
 
@@ -140,6 +141,20 @@ TEST(Provenance, PickedSegmentLeadsToItsRule) {
     auto side = pick(g, mid + glm::vec3(0, 0, 10), {0, 0, -1});
     ASSERT_TRUE(side);
     EXPECT_EQ(t.lineageOf(2, segmentModules[side->index]), "F at step 2 by line 4 <- A at step 1 by line 4 <- A (axiom)");
+}
+
+// Which context matched: ABOP's bracketed context skips side branches; for B < A > C in
+// B [ X ] A [ Y ] C the left context is the B before the branch and the right the C after.
+TEST(Provenance, ContextThatMatched) {
+    auto g = test::grammarOf("axiom: B [ X ] A [ Y ] C\nB < A > C -> D\n");
+    ASSERT_TRUE(g);
+    StepRewriter rewriter(*g, g->rules);
+    std::vector<std::size_t> left, right;
+    ASSERT_TRUE(rewriter.contextOf(g->axiom, 4, g->rules.productions[0], left, right));
+    EXPECT_EQ(left, (std::vector<std::size_t>{0}));
+    EXPECT_EQ(right, (std::vector<std::size_t>{8}));
+    EXPECT_FALSE(rewriter.contextOf(g->axiom, 2, g->rules.productions[0], left, right));  // X is no A's place
+    EXPECT_EQ(test::expand("axiom: B [ X ] A [ Y ] C\nB < A > C -> D\n", 1), "B[X]D[Y]C");
 }
 
 }  // namespace

@@ -1,0 +1,159 @@
+// The derivation inspector: the string of any step, a range at a time (a 25 M-module string is
+// never copied: 256 modules are read where they are), each module coloured by the rule that
+// made it, with the module count of every step, a search, and for a chosen module its rule,
+// where it came from and, for a context-sensitive rule, which context matched. Choosing a
+// module of the drawn step picks it in the 3D view.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "app/viewer/app.hpp"
+#include "app/viewer/text_edit.hpp"
+#include "core/step_rewriter.hpp"
+
+namespace sprout::viewer {
+namespace {
+
+constexpr std::uint64_t kRows = 256;         // modules listed at once
+constexpr std::uint64_t kCheckpoint = 4096;  // parameter offsets kept every this many modules
+
+ImVec4 ruleColour(std::int32_t rule) {
+    if (rule == -1) return ImVec4(0.62f, 0.62f, 0.62f, 1);  // the axiom's, never rewritten
+    static const ImVec4 hues[] = {{0.45f, 0.85f, 0.45f, 1}, {0.95f, 0.65f, 0.3f, 1}, {0.45f, 0.7f, 1.0f, 1},
+                                  {0.95f, 0.45f, 0.7f, 1},  {0.9f, 0.9f, 0.4f, 1},   {0.6f, 0.5f, 1.0f, 1},
+                                  {0.4f, 0.9f, 0.9f, 1},    {1.0f, 0.5f, 0.45f, 1}};
+    const int k = rule >= 0 ? rule : -(rule + 2) + 5;
+    return hues[size_t(k) % std::size(hues)];
+}
+
+// "F(1.5)": module i, its parameters found from the nearest checkpoint.
+std::string moduleAt(const ModuleString& s, const Alphabet& a, const std::vector<std::uint64_t>& checkpoints, std::uint64_t i) {
+    std::uint64_t p = checkpoints[size_t(i / kCheckpoint)];
+    for (std::uint64_t k = i / kCheckpoint * kCheckpoint; k < i; ++k) p += a[s.symbols.data()[k]].arity;
+    const auto& m = a[s.symbols.data()[i]];
+    std::string out = m.name;
+    for (unsigned k = 0; k < m.arity; ++k) out += (k ? "," : "(") + formatValue(s.params.data()[p + k]) + (k + 1 == m.arity ? ")" : "");
+    return out;
+}
+
+}  // namespace
+
+void inspectorSection(App& app) {
+    auto plant = app.state.plant();
+    if (!plant || !plant->grammar) {
+        ImGui::TextWrapped("The inspector shows the derivation of a grammar.");
+        return;
+    }
+    if (!app.state.picking() || !plant->pick) {
+        ImGui::TextWrapped("The inspector reads where every module came from, which the derivation keeps once asked.");
+        if (!app.state.picking() && ImGui::Button("Inspect the derivation")) app.state.setPicking(true);
+        return;
+    }
+    const PickData& pick = *plant->pick;
+    const DerivationRecord& record = pick.record;
+    const Grammar& g = *record.grammar;
+    const int last = std::min(pick.step, int(record.steps.size()) - 1);
+    App::Inspector& in = app.inspector;
+    if (in.step < 0 || in.step > last) in.step = last;
+    if (ImGui::TreeNode("modules per step")) {
+        for (int k = 0; k <= last; ++k)
+            if (record.steps[size_t(k)]) ImGui::Text("step %2d: %s modules", k, withThousands(record.steps[size_t(k)]->size()).c_str());
+        ImGui::TreePop();
+    }
+    ImGui::SliderInt("step##inspect", &in.step, 0, last);
+    const auto& string = record.steps[size_t(in.step)];
+    if (!string) return;
+    const std::uint64_t n = string->size();
+    // What the view needs of this step, made once: parameter checkpoints and each module's rule.
+    if (in.of != plant || in.cachedStep != in.step) {
+        in.of = plant;
+        in.cachedStep = in.step;
+        in.checkpoints.assign(size_t(n / kCheckpoint + 1), 0);
+        std::uint64_t p = 0;
+        for (std::uint64_t i = 0; i < n; ++i) {
+            if (i % kCheckpoint == 0) in.checkpoints[size_t(i / kCheckpoint)] = p;
+            p += g.alphabet[string->symbols.data()[i]].arity;
+        }
+        in.made = madeBy(record, in.step);
+        in.first = std::min<std::uint64_t>(in.first, n ? n - 1 : 0);
+    }
+    // Search by module name: the next one after the chosen module.
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputText("##find", in.query, sizeof in.query);
+    ImGui::SameLine();
+    if (ImGui::Button("find next") && in.query[0]) {
+        std::uint64_t from = in.chosen >= 0 ? std::uint64_t(in.chosen) + 1 : 0;
+        in.found = false;
+        for (std::uint64_t k = 0; k < n; ++k) {
+            const std::uint64_t i = (from + k) % n;
+            if (g.alphabet[string->symbols.data()[i]].name == in.query) {
+                in.chosen = std::int64_t(i);
+                in.first = i >= 8 ? i - 8 : 0;
+                in.found = true;
+                break;
+            }
+        }
+    }
+    if (in.query[0] && !in.found) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(none)");
+    }
+    std::uint64_t first = in.first;
+    const std::uint64_t step = 64, big = kRows;
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::InputScalar("from module", ImGuiDataType_U64, &first, &step, &big)) in.first = std::min(first, n ? n - 1 : 0);
+    ImGui::TextDisabled("%s modules; colour: the rule that made each (grey: the axiom's)", withThousands(n).c_str());
+    ImGui::BeginChild("##string", ImVec2(-1, ImGui::GetTextLineHeightWithSpacing() * 12), true);
+    const std::uint64_t end = std::min(n, in.first + kRows);
+    for (std::uint64_t i = in.first; i < end; ++i) {
+        const std::int32_t rule = i < in.made.size() ? in.made[size_t(i)] : -1;
+        ImGui::PushStyleColor(ImGuiCol_Text, ruleColour(rule));
+        char label[160];
+        std::snprintf(label, sizeof label, "%10llu  %s", static_cast<unsigned long long>(i), moduleAt(*string, g.alphabet, in.checkpoints, i).c_str());
+        if (ImGui::Selectable(label, in.chosen == std::int64_t(i))) {
+            in.chosen = std::int64_t(i);
+            if (in.step == pick.step) app.selectModule(std::uint32_t(i));  // the drawn step: pick it in 3D
+        }
+        ImGui::PopStyleColor();
+    }
+    ImGui::EndChild();
+    if (in.chosen < 0 || std::uint64_t(in.chosen) >= n) return;
+    // The chosen module: its rule, where it came from, and the context that matched.
+    const std::uint32_t chosen = std::uint32_t(in.chosen);
+    ImGui::Text("%s", moduleAt(*string, g.alphabet, in.checkpoints, chosen).c_str());
+    const auto links = lineage(record, in.step, chosen);
+    if (links.empty()) return;
+    const LineageLink& made = links[0];
+    if (made.ruleLine == 0) {
+        ImGui::TextWrapped("from the axiom (module %u)", made.index);
+        return;
+    }
+    ImGui::TextWrapped("made at step %d by line %d", made.step, made.ruleLine);
+    if (made.rule < 0 || made.step < 1) return;
+    const Production& rule = g.rules.productions[size_t(made.rule)];
+    if (!rule.hasContext()) return;
+    const auto& before = record.steps[size_t(made.step - 1)];
+    const auto& origins = record.origins[size_t(made.step)];
+    if (!before || !origins) return;
+    const std::uint32_t parent = origins->parent.data()[made.index];
+    StepRewriter rewriter(g, g.rules);
+    std::vector<std::size_t> left, right;
+    if (!rewriter.contextOf(*before, parent, rule, left, right)) return;
+    std::vector<std::uint64_t> beforeCheckpoints(size_t(before->size() / kCheckpoint + 1), 0);
+    {
+        std::uint64_t p = 0;
+        for (std::uint64_t i = 0; i < before->size(); ++i) {
+            if (i % kCheckpoint == 0) beforeCheckpoints[size_t(i / kCheckpoint)] = p;
+            p += g.alphabet[before->symbols.data()[i]].arity;
+        }
+    }
+    std::string context = "context matched in step " + std::to_string(made.step - 1) + ": ";
+    for (std::size_t j : left) context += moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ") ";
+    context += "< [" + moduleAt(*before, g.alphabet, beforeCheckpoints, parent) + " (" + std::to_string(parent) + ")] >";
+    for (std::size_t j : right) context += " " + moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ")";
+    ImGui::TextWrapped("%s", context.c_str());
+}
+
+}  // namespace sprout::viewer
