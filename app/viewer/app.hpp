@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/render/renderer.hpp"
+#include "app/viewer/editor/editor.hpp"
 #include "app/viewer/export_job.hpp"
 #include "app/viewer/thumbnails.hpp"
 #include "app/viewer/viewer_state.hpp"
@@ -70,6 +71,8 @@ struct App {
     bool quitRequested = false;
     bool quitConfirmed = false;
     int jumpTo = -1;  // byte offset the editor's cursor goes to (a clicked error)
+    editor::Editor editor;        // the grammar editor (app/viewer/editor)
+    std::string editorDocument;   // the document it holds: a new one starts a new undo history
 
     void say(std::string message);
     // Opens a file (edits in progress go to the autosave first) and frames it.

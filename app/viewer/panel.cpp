@@ -6,10 +6,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <imgui_internal.h>  // ActivateItem: focus the editor on a clicked error
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <cstdio>
@@ -18,6 +18,7 @@
 
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
+#include "app/viewer/editor/editor.hpp"
 #include "app/viewer/text_edit.hpp"
 
 namespace sprout::viewer {
@@ -64,22 +65,43 @@ int offsetOf(const std::string& text, int line, int col) {
     return int(pos);
 }
 
-int jumpCallback(ImGuiInputTextCallbackData* data) {
-    auto* app = static_cast<App*>(data->UserData);
-    if (app->jumpTo >= 0) {  // put the cursor on the error that was clicked
-        data->CursorPos = data->SelectionStart = data->SelectionEnd = std::min(app->jumpTo, data->BufTextLen);
-        app->jumpTo = -1;
-    }
-    app->cursorOffset = data->CursorPos;  // the rule under the cursor can be highlighted
-    return 0;
+// Words the editor completes: settings, functions, and the grammar's longer module names.
+std::vector<std::string> completionsFor(App& app) {
+    static const char* fixed[] = {"angle:", "axiom:", "iterations:", "step:", "width:", "seed:", "tropism:", "palette:",
+                                  "gradient:", "view:", "define:", "module:", "ignore:", "consider:", "environment:",
+                                  "branch_scale:", "step_scale:", "sphere", "ellipsoid", "cylinder", "obstacle", "ground",
+                                  "light", "attraction", "influence", "sin", "cos", "tan", "sqrt", "floor", "ceil", "min", "max",
+                                  "ran", "nran", "random", "trunc", "fabs", "exp", "log", "pow", "atan2", "Lsystem:",
+                                  "derivation length:", "Axiom:", "decomposition", "homomorphism", "endlsystem",
+                                  "maximum depth:", "#define", "#include"};
+    std::vector<std::string> out(std::begin(fixed), std::end(fixed));
+    if (auto plant = app.state.plant(); plant && plant->grammar)
+        for (size_t k = 0; k < plant->grammar->alphabet.size(); ++k) {
+            const std::string& name = plant->grammar->alphabet[SymbolId(k)].name;
+            if (name.size() >= 3 && std::isalpha(static_cast<unsigned char>(name[0]))) out.push_back(name);
+        }
+    return out;
 }
 
 void grammarSection(App& app) {
-    std::string text = app.state.text();
+    // The editor follows the text the rest of the viewer changes (sliders, a file opened).
+    const std::string document = app.state.title() + "|" + app.state.path().string();
+    const bool newDocument = document != app.editorDocument;
+    app.editorDocument = document;
+    app.editor.sync(app.state.text(), newDocument);
+    if (app.jumpTo >= 0) {  // a clicked message or rule: the cursor goes there
+        const editor::Pos p = app.editor.model().posOf(std::size_t(app.jumpTo));
+        app.editor.gotoLineCol(p.line + 1, p.col + 1);
+        app.jumpTo = -1;
+    }
+    std::vector<editor::Marker> markers;
+    if (auto latest = app.state.latest())
+        for (const auto& d : latest->diagnostics) markers.push_back({d.line, d.col, d.severity == Severity::Error, ascii(d.message)});
     const float h = std::max(160.0f, ImGui::GetTextLineHeight() * 16);
-    if (ImGui::InputTextMultiline("##grammar", &text, ImVec2(-1, h),
-                                  ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, jumpCallback, &app))
-        app.state.setText(std::move(text));
+    FileKind kind = app.state.kind();
+    if (kind == FileKind::Png) kind = FileKind::Lsys;
+    if (app.editor.draw("grammar", h, kind, markers, completionsFor(app))) app.state.setText(app.editor.text());
+    app.cursorOffset = app.editor.cursorOffset();
     auto latest = app.state.latest();
     if (latest) {
         // Each problem at its line:col; a click puts the editor's cursor there.
@@ -89,8 +111,6 @@ void grammarSection(App& app) {
             std::snprintf(label, sizeof label, "line %d, col %d##%d_%d", d.line, d.col, d.line, d.col);
             if (ImGui::SmallButton(label)) {
                 app.jumpTo = offsetOf(app.state.text(), d.line, d.col);
-                ImGui::SetKeyboardFocusHere(-1);
-                ImGui::ActivateItem(ImGui::GetID("##grammar"));
             }
             ImGui::SameLine();
             ImGui::TextWrapped("%s%s", d.severity == Severity::Warning ? "warning: " : "", ascii(d.message).c_str());
@@ -337,7 +357,6 @@ void whySection(App& app) {
         if (l.ruleLine > 0) {
             if (ImGui::SmallButton(("line " + std::to_string(l.ruleLine)).c_str())) {
                 app.jumpTo = offsetOf(text, l.ruleLine, 1);
-                ImGui::ActivateItem(ImGui::GetID("##grammar"));
                 app.setHighlightLine(l.ruleLine);
             }
             ImGui::SameLine();
