@@ -90,12 +90,13 @@ struct SharingPlant {
     std::uint64_t seed;
     float yaw;
     glm::vec3 at;
+    std::string species;
 };
 
 // Grows the plants step by step together: after each step the forest's one environment
 // answers every plant's ?E where it stands, seeing all of them.
 bool growTogether(const Forest& f, const std::vector<SharingPlant>& plants, Geometry& out, ForestStats& stats, std::string& error,
-                  const DeriveLimits& limits) {
+                  const DeriveLimits& limits, std::vector<ForestPlant>* placed) {
     std::vector<std::unique_ptr<Derivation>> derivations;
     int steps = 0;
     for (const SharingPlant& p : plants) {
@@ -136,6 +137,10 @@ bool growTogether(const Forest& f, const std::vector<SharingPlant>& plants, Geom
     for (size_t i = 0; i < plants.size(); ++i) {
         const int n = plants[i].grammar->settings.iterations;
         interpret(*derivations[i]->step(n), *plants[i].grammar, {n, plants[i].seed, nullptr}, plant);
+        if (placed)
+            placed->push_back({plants[i].species, plants[i].at, plants[i].yaw, false, std::uint32_t(out.cylinders.size()),
+                               std::uint32_t(plant.cylinders.size()), std::uint32_t(out.surfaces.size()),
+                               std::uint32_t(plant.surfaces.size())});
         placeGeometry(plant, plants[i].yaw, plants[i].at, out);
         stats.segments += plant.cylinders.size();
     }
@@ -146,7 +151,8 @@ bool growTogether(const Forest& f, const std::vector<SharingPlant>& plants, Geom
 }  // namespace
 
 bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, ForestStats& stats, std::string& error,
-                 const DeriveLimits& limits) {
+                 const DeriveLimits& limits, std::vector<ForestPlant>* placed) {
+    if (placed) placed->clear();
     out.clear();
     stats = {};
     std::map<std::string, std::shared_ptr<const Grammar>> grammars;
@@ -179,9 +185,10 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
     Geometry plant;
     // Plants that ask the shared environment: grown after the others, all together.
     std::vector<SharingPlant> sharing;
-    auto grow = [&](const std::shared_ptr<const Grammar>& g, std::uint64_t seed, float yaw, glm::vec3 at) {
+    auto grow = [&](const std::string& species, std::uint64_t seed, float yaw, glm::vec3 at, bool grass) {
+        const std::shared_ptr<const Grammar>& g = grammars[species];
         if (!f.environment.empty() && g->hasQueries()) {
-            sharing.push_back({g, seed, yaw, at});
+            sharing.push_back({g, seed, yaw, at, species});
             return true;
         }
         DeriveOptions o;
@@ -195,6 +202,9 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             return false;
         }
         interpret(*d.step(n), *g, {n, seed, nullptr}, plant);
+        if (placed)
+            placed->push_back({species, at, yaw, grass, std::uint32_t(out.cylinders.size()), std::uint32_t(plant.cylinders.size()),
+                               std::uint32_t(out.surfaces.size()), std::uint32_t(plant.surfaces.size())});
         placeGeometry(plant, yaw, at, out);
         stats.segments += plant.cylinders.size();
         return true;
@@ -216,16 +226,16 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             float yaw = 0;
             do yaw = float(rng.normal(180, 60));
             while (yaw <= 0);
-            if (!grow(grammars[s->name], rng.next(), yaw, {x, 0, z})) return false;
+            if (!grow(s->name, rng.next(), yaw, {x, 0, z}, false)) return false;
             ++stats.plants;
             for (int k = 0; k < f.grassPerCell; ++k) {
                 float gx = x + float(rng.uniform() - 0.5) * cell, gz = z + float(rng.uniform() - 0.5) * cell;
-                if (!grow(grammars[f.grass], rng.next(), float(rng.uniform() * 360), {gx, 0, gz})) return false;
+                if (!grow(f.grass, rng.next(), float(rng.uniform() * 360), {gx, 0, gz}, true)) return false;
                 ++stats.grasses;
             }
         }
     }
-    if (!sharing.empty() && !growTogether(f, sharing, out, stats, error, limits)) return false;
+    if (!sharing.empty() && !growTogether(f, sharing, out, stats, error, limits, placed)) return false;
     out.planarCurve = false;
     return true;
 }

@@ -64,8 +64,19 @@ struct ForestStats {
     int sharing = 0;  // plants grown in lockstep with the shared environment
 };
 
+// One plant of a built forest and where its instances are in the forest's geometry (picking:
+// which plant, which species).
+struct ForestPlant {
+    std::string species;
+    glm::vec3 at{0.0f};
+    float yaw = 0;
+    bool grass = false;
+    std::uint32_t firstSegment = 0, segments = 0, firstSurface = 0, surfaces = 0;
+};
+
 // Grows every plant and gathers them into one Geometry. False with a message on failure.
+// `plants`, when given, receives each plant's place in it.
 bool buildForest(const Forest& forest, const GrammarSource& source, Geometry& out, ForestStats& stats,
-                 std::string& error, const DeriveLimits& limits = {});
+                 std::string& error, const DeriveLimits& limits = {}, std::vector<ForestPlant>* plants = nullptr);
 
 }  // namespace sprout

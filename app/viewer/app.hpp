@@ -102,6 +102,7 @@ struct App {
         std::uint32_t instance = 0;           // index of the segment or surface
         std::uint32_t module = 0;             // its module in the drawn string
         std::vector<LineageLink> links;       // empty when the derivation cannot say (a homomorphism)
+        int forestPlant = -1;                 // a forest: which plant (its species in plant->forest)
     };
     std::optional<Selection> selection;
     std::optional<std::pair<double, double>> pendingPick;  // a click waiting for the derivation's origins

@@ -307,10 +307,21 @@ std::string moduleText(const ModuleString& s, const Alphabet& alphabet, std::uin
 void whySection(App& app) {
     auto plant = app.state.plant();
     if (!plant || !plant->geometry) return;
-    if (!plant->grammar) {
-        ImGui::TextWrapped("Picking works on grammars; a forest's plants are grown apart from their derivations.");
+    if (plant->forest) {  // a forest: which plant, which species
+        if (!app.selection || app.selection->forestPlant < 0 || app.selection->plant != plant) {
+            ImGui::TextWrapped("Click a plant in the view to see which one it is and its species.");
+            return;
+        }
+        const ForestPlant& f = (*plant->forest)[size_t(app.selection->forestPlant)];
+        ImGui::Text("plant %d of %zu: %s%s", app.selection->forestPlant + 1, plant->forest->size(), f.species.c_str(),
+                    f.grass ? " (grass)" : "");
+        ImGui::Text("at (%.1f, %.1f), turned %.0f deg; %s %u of its %u", double(f.at.x), double(f.at.z), double(f.yaw),
+                    app.selection->surface ? "surface" : "segment", app.selection->module,
+                    app.selection->surface ? f.surfaces : f.segments);
+        ImGui::TextDisabled("open the species (Presets or File) to see which rule made it");
         return;
     }
+    if (!plant->grammar) return;
     if (!app.state.picking()) {
         ImGui::TextWrapped("Click a stem or leaf in the view to see which module drew it and which rule made it.");
         if (ImGui::Button("Start picking")) app.state.setPicking(true);

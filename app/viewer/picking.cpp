@@ -21,7 +21,7 @@ namespace sprout::viewer {
 bool App::pickAt(double x, double y) {
     auto plant = state.plant();
     if (!plant || !plant->geometry) return false;
-    if (!plant->pick) {  // the first click: the derivation must keep its origins
+    if (!plant->pick && !plant->forest) {  // the first click: the derivation must keep its origins
         state.setPicking(true);
         pendingPick = std::make_pair(x, y);
         return false;
@@ -45,10 +45,18 @@ bool App::pickAt(double x, double y) {
         s.plant = plant;
         s.surface = hit->kind == PickHit::Kind::Surface;
         s.instance = hit->index;
-        const auto& map = s.surface ? plant->pick->surfaceModules : plant->pick->segmentModules;
-        if (hit->index < map.size()) {
-            s.module = map[hit->index];
-            if (!plant->pick->homomorphism) s.links = lineage(plant->pick->record, plant->pick->step, s.module);
+        if (plant->forest) {  // a forest: which plant, which species
+            for (size_t k = 0; k < plant->forest->size(); ++k) {
+                const ForestPlant& f = (*plant->forest)[k];
+                const std::uint32_t first = s.surface ? f.firstSurface : f.firstSegment, count = s.surface ? f.surfaces : f.segments;
+                if (hit->index >= first && hit->index < first + count) s.forestPlant = int(k), s.module = hit->index - first;
+            }
+        } else {
+            const auto& map = s.surface ? plant->pick->surfaceModules : plant->pick->segmentModules;
+            if (hit->index < map.size()) {
+                s.module = map[hit->index];
+                if (!plant->pick->homomorphism) s.links = lineage(plant->pick->record, plant->pick->step, s.module);
+            }
         }
         selection = std::move(s);
         if (!selection->links.empty() && followCursor) setHighlightLine(selection->links[0].ruleLine);
@@ -60,6 +68,11 @@ bool App::pickAt(double x, double y) {
 
 std::string App::describeSelection() const {
     if (!selection) return "module=none";
+    if (selection->forestPlant >= 0) {
+        const ForestPlant& f = (*selection->plant->forest)[size_t(selection->forestPlant)];
+        return "plant=" + std::to_string(selection->forestPlant + 1) + " species=" + f.species + (f.grass ? " (grass)" : "") +
+               (selection->surface ? " surface=" : " segment=") + std::to_string(selection->module);
+    }
     const Grammar& g = *selection->plant->pick->record.grammar;
     const auto& steps = selection->plant->pick->record.steps;
     const int drawn = selection->plant->pick->step;

@@ -144,7 +144,7 @@ bool Script::step(App& app) {
                 std::fflush(stdout);
                 return true;
             }
-            if (!plant->pick) {  // the derivation must keep its origins first: ask, then come back
+            if (!plant->pick && !(plant->forest && cmd == "pick")) {  // the derivation must keep its origins first: ask, then come back
                 app.state.setPicking(true);
                 m_lines.push_front(in.str());
                 return true;

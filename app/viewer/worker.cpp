@@ -82,7 +82,8 @@ std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<R
     auto t0 = std::chrono::steady_clock::now();
     std::string error;
     auto source = speciesSource ? speciesSource : [](const std::string&) { return std::optional<std::string>(); };
-    if (!buildForest(*parsed.forest, source, *geometry, stats, error, limits)) {
+    auto plants = std::make_shared<std::vector<ForestPlant>>();
+    if (!buildForest(*parsed.forest, source, *geometry, stats, error, limits, plants.get())) {
         out->message = error;
         return out;
     }
@@ -90,6 +91,7 @@ std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<R
     out->modules = stats.segments;
     out->seed = parsed.forest->seed;
     out->environment = std::make_shared<const Environment>(parsed.forest->environment);
+    out->forest = std::move(plants);
     if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
     return out;

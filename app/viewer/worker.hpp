@@ -15,6 +15,7 @@
 
 #include "core/derive.hpp"
 #include "core/file_kind.hpp"
+#include "core/forest.hpp"
 #include "core/provenance.hpp"
 #include "core/turtle.hpp"
 
@@ -59,6 +60,7 @@ struct Result {
     // The environment the plant grew in (a forest's shared one; a grammar's is in `grammar`).
     std::shared_ptr<const Environment> environment;
     std::shared_ptr<const PickData> pick;  // with Request::trackOrigins
+    std::shared_ptr<const std::vector<ForestPlant>> forest;  // a forest scene: each plant's place in the geometry
     // An iterated function system is drawn as an image instead (RGBA, top row first).
     std::shared_ptr<const std::vector<std::uint8_t>> image;
     int imageWidth = 0, imageHeight = 0;

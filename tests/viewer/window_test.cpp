@@ -209,6 +209,23 @@ TEST(Window, PickingNamesTheModuleAndRuleAndHighlightsWhatARuleMade) {
     EXPECT_GT(differ, 1000u) << "another rule lights up other stems";
 }
 
+// Picking in a forest names the plant and its species (the shaded row: six light trees).
+TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_pick_forest_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string out = (dir / "out.txt").string();
+    std::ofstream(dir / "script.txt") << "wait\npick 700 450\npick 1290 20\nquit\n";
+    ASSERT_EQ(runUnderXvfb("env_forest_row --size 1300x860 --script " + (dir / "script.txt").string(), "", out), 0);
+    std::ifstream in(out);
+    std::string first, second;
+    std::getline(in, first);
+    std::getline(in, second);
+    EXPECT_EQ(first.rfind("plant=", 0), 0u) << first;
+    EXPECT_NE(first.find(" species=env_light_tree "), std::string::npos) << first;
+    EXPECT_EQ(second, "module=none");
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
