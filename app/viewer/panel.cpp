@@ -100,6 +100,7 @@ void grammarSection(App& app) {
     const float h = std::max(160.0f, ImGui::GetTextLineHeight() * 16);
     FileKind kind = app.state.kind();
     if (kind == FileKind::Png) kind = FileKind::Lsys;
+    app.editor.setBandLine(app.highlightLine);
     if (app.editor.draw("grammar", h, kind, markers, completionsFor(app))) app.state.setText(app.editor.text());
     app.cursorOffset = app.editor.cursorOffset();
     auto latest = app.state.latest();

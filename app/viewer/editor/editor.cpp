@@ -229,6 +229,9 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
                                               : IM_COL32(110, 110, 120, 255),
                     number);
         if (mark) dl->AddCircleFilled(ImVec2(origin.x + gutter - 6, y + lineH * 0.5f), 3, mark->error ? IM_COL32(255, 80, 70, 255) : IM_COL32(255, 190, 60, 255));
+        if (i + 1 == m_bandLine)  // the rule of a picked branch
+            dl->AddRectFilled(ImVec2(textX - 2, y), ImVec2(textX + std::max(widest, ImGui::GetWindowWidth()), y + lineH),
+                              IM_COL32(120, 90, 30, 150));
         // Selection.
         if (selA != selB && i >= selA.line && i <= selB.line) {
             const float x0 = textX + (i == selA.line ? xOf(line, selA.col) : 0);

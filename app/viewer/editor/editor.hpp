@@ -36,6 +36,8 @@ public:
     // Puts the cursor at line:col (1-based) and the keyboard focus in the editor.
     void gotoLineCol(int line, int col);
     int cursorOffset() const { return int(m_model.offsetOf(m_model.cursor())); }
+    // A line (1-based; 0 none) shown with a band behind it: the rule that made a picked branch.
+    void setBandLine(int line) { m_bandLine = line; }
     bool focused() const { return m_focused; }
     // The colour of each token (0xAABBGGRR, ImGui's order).
     static std::uint32_t colour(Token t);
@@ -58,6 +60,7 @@ private:
     std::vector<std::string> m_candidates;  // completions of the word at the cursor
     int m_candidate = 0;
     bool m_dragging = false;
+    int m_bandLine = 0;
 };
 
 }  // namespace sprout::viewer::editor
