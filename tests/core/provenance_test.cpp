@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/file_kind.hpp"
+#include "core/import/import.hpp"
 #include "core/pick.hpp"
 #include "core/provenance.hpp"
 #include "core/step_rewriter.hpp"
@@ -155,6 +156,24 @@ TEST(Provenance, ContextThatMatched) {
     EXPECT_EQ(right, (std::vector<std::size_t>{8}));
     EXPECT_FALSE(rewriter.contextOf(g->axiom, 2, g->rules.productions[0], left, right));  // X is no A's place
     EXPECT_EQ(test::expand("axiom: B [ X ] A [ Y ] C\nB < A > C -> D\n", 1), "B[X]D[Y]C");
+}
+
+// An imported grammar (Fractint) is picked in the .lsys text it becomes: the rule line the
+// lineage names is the translated rule the editor shows.
+TEST(Provenance, ImportedGrammarNamesItsTranslatedRule) {
+    ImportResult imported = importFractint("Koch {\n  Angle 6\n  Axiom F\n  F=F+F--F+F\n}\n", "Koch");
+    ASSERT_TRUE(imported.ok());
+    Traced t = trace(imported.text, 2);
+    const auto links = lineage(*t.derivation, 2, 6);  // a module of step 2
+    ASSERT_EQ(links.size(), 3u);
+    EXPECT_EQ(links[0].step, 2);
+    EXPECT_EQ(links[2].ruleLine, 0);  // the axiom
+    // That line of the translated text is the rule F -> F+F--F+F.
+    std::string line;
+    size_t pos = 0;
+    for (int l = 1; l < links[0].ruleLine; ++l) pos = imported.text.find('\n', pos) + 1;
+    line = imported.text.substr(pos, imported.text.find('\n', pos) - pos);
+    EXPECT_NE(line.find("F -> F+F--F+F"), std::string::npos) << imported.text;
 }
 
 }  // namespace
