@@ -33,12 +33,6 @@ std::string_view trimLeft(std::string_view s) {
     return s;
 }
 
-bool startsWithNoCase(std::string_view s, std::string_view prefix) {
-    if (s.size() < prefix.size()) return false;
-    for (size_t i = 0; i < prefix.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(s[i])) != std::tolower(static_cast<unsigned char>(prefix[i]))) return false;
-    return true;
-}
 
 // The offset of the value after "key:" on this line (any case: cpfg writes `Axiom:`), or npos.
 // `n` is also `iterations` and cpfg's `derivation length`.
@@ -60,6 +54,13 @@ size_t valueStart(std::string_view line, std::string_view key) {
 }
 
 }  // namespace
+
+bool startsWithNoCase(std::string_view s, std::string_view prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (size_t i = 0; i < prefix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(s[i])) != std::tolower(static_cast<unsigned char>(prefix[i]))) return false;
+    return true;
+}
 
 std::string formatValue(double v) {
     if (std::fabs(v - std::round(v)) < 1e-9) return std::to_string(static_cast<long long>(std::llround(v)));

@@ -34,6 +34,9 @@ std::vector<EnvironmentNumber> environmentNumbers(std::string_view text);
 // The text with that number set to `v` (for a light with no sun: " sun AZIMUTH ELEVATION" added).
 std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber& number, double v);
 
+// Whether `s` starts with `prefix`, letters compared without case.
+bool startsWithNoCase(std::string_view s, std::string_view prefix);
+
 // Shortest text for a slider value (3 significant decimals is what a slider can set).
 std::string formatValue(double v);
 

@@ -1,4 +1,5 @@
 #include "app/viewer/editor/editor.hpp"
+#include "app/viewer/text_edit.hpp"
 
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
 #define GLFW_INCLUDE_NONE
@@ -30,12 +31,6 @@ int colAt(const std::string& line, float x) {
     return col;
 }
 
-bool lower(std::string_view a, std::string_view prefix) {
-    if (a.size() < prefix.size()) return false;
-    for (size_t i = 0; i < prefix.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(prefix[i]))) return false;
-    return true;
-}
 
 }  // namespace
 
@@ -145,7 +140,7 @@ bool Editor::handleKeys(FileKind kind, const std::vector<std::string>& completio
         m_candidate = 0;
         if (word.size() >= 2)
             for (const std::string& c : completions)
-                if (c.size() > word.size() && lower(c, word) && m_candidates.size() < 8) m_candidates.push_back(c);
+                if (c.size() > word.size() && startsWithNoCase(c, word) && m_candidates.size() < 8) m_candidates.push_back(c);
     }
     const bool moved = m_model.version() != before;
     if (moved || typed) m_scrollToCursor = true;
@@ -223,8 +218,8 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
         const Marker* mark = nullptr;
         for (const Marker& m : markers)
             if (m.line == i + 1 && (!mark || (m.error && !mark->error))) mark = &m;
-        char number[16];
-        std::snprintf(number, sizeof number, "%*d", digits, i + 1);
+        char number[32];
+        std::snprintf(number, sizeof number, "%*d", std::min(digits, 10), i + 1);
         dl->AddText(ImVec2(origin.x, y), mark ? (mark->error ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255))
                                               : IM_COL32(110, 110, 120, 255),
                     number);

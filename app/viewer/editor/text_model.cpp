@@ -287,11 +287,12 @@ bool TextModel::findNext(std::string_view query, bool caseSensitive) {
     return true;
 }
 
-bool TextModel::undo() {
-    if (m_undo.empty()) return false;
-    m_redo.push_back({text(), m_cursor, m_anchor});
-    Snapshot s = std::move(m_undo.back());
-    m_undo.pop_back();
+// Undo and redo: the state on top of one history comes back, the present goes on the other.
+bool TextModel::travel(std::vector<Snapshot>& from, std::vector<Snapshot>& to) {
+    if (from.empty()) return false;
+    to.push_back({text(), m_cursor, m_anchor});
+    Snapshot s = std::move(from.back());
+    from.pop_back();
     setText(s.text);
     m_cursor = clamp(s.cursor);
     m_anchor = clamp(s.anchor);
@@ -299,16 +300,7 @@ bool TextModel::undo() {
     return true;
 }
 
-bool TextModel::redo() {
-    if (m_redo.empty()) return false;
-    m_undo.push_back({text(), m_cursor, m_anchor});
-    Snapshot s = std::move(m_redo.back());
-    m_redo.pop_back();
-    setText(s.text);
-    m_cursor = clamp(s.cursor);
-    m_anchor = clamp(s.anchor);
-    m_typing = false;
-    return true;
-}
+bool TextModel::undo() { return travel(m_undo, m_redo); }
+bool TextModel::redo() { return travel(m_redo, m_undo); }
 
 }  // namespace sprout::viewer::editor

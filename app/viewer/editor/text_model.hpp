@@ -78,6 +78,7 @@ private:
         Pos cursor, anchor;
     };
     void record(bool typing = false);  // before an edit: the state to come back to
+    bool travel(std::vector<Snapshot>& from, std::vector<Snapshot>& to);
     void eraseSelection();
     void touched() { ++m_version; }
     Pos clamp(Pos p) const;
