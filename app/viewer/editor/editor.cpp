@@ -218,11 +218,11 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
         const Marker* mark = nullptr;
         for (const Marker& m : markers)
             if (m.line == i + 1 && (!mark || (m.error && !mark->error))) mark = &m;
-        char number[32];
-        std::snprintf(number, sizeof number, "%*d", std::min(digits, 10), i + 1);
+        std::string number = std::to_string(i + 1);
+        number.insert(0, size_t(std::max(0, digits - int(number.size()))), ' ');
         dl->AddText(ImVec2(origin.x, y), mark ? (mark->error ? IM_COL32(255, 110, 100, 255) : IM_COL32(255, 200, 90, 255))
                                               : IM_COL32(110, 110, 120, 255),
-                    number);
+                    number.c_str());
         if (mark) dl->AddCircleFilled(ImVec2(origin.x + gutter - 6, y + lineH * 0.5f), 3, mark->error ? IM_COL32(255, 80, 70, 255) : IM_COL32(255, 190, 60, 255));
         if (i + 1 == m_bandLine)  // the rule of a picked branch
             dl->AddRectFilled(ImVec2(textX - 2, y), ImVec2(textX + std::max(widest, ImGui::GetWindowWidth()), y + lineH),
