@@ -337,6 +337,7 @@ glm::dvec3 turnBy(const glm::dvec3& v, double yaw) {
 }  // namespace
 
 bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets, std::string* error) {
+    if (targets.empty()) return true;
     struct Pass {
         std::vector<QueryFrame> frames;
         Geometry grown;

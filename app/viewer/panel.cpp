@@ -86,7 +86,8 @@ std::vector<std::string> completionsFor(App& app) {
 void grammarSection(App& app) {
     // The editor follows the text the rest of the viewer changes (sliders, a file opened).
     const std::string document = app.state.title() + "|" + app.state.path().string();
-    const bool newDocument = document != app.editorDocument;
+    // Another file or preset is a new document (a new undo history); Save as keeps the text.
+    const bool newDocument = document != app.editorDocument && app.state.text() != app.editor.text();
     app.editorDocument = document;
     app.editor.sync(app.state.text(), newDocument);
     if (app.jumpTo >= 0) {  // a clicked message or rule: the cursor goes there
