@@ -57,6 +57,12 @@ struct App {
     bool interacting = false;  // dragging: no shadows for big plants
     bool bigPlant = false;     // uploaded at interactive detail
     unsigned imageTexture = 0; // an iterated function system's density image
+    // The 3D view as last drawn: copied to the window each frame, drawn again only when
+    // something changed (needsRedraw, its size, its quality), so a still scene costs a copy.
+    unsigned viewFbo = 0, viewColour = 0;
+    int viewWidth = 0, viewHeight = 0;
+    bool viewInteractive = false;
+    std::uint64_t viewDraws = 0;  // how many times the 3D view was drawn
     std::string status;        // last action's message
     double statusTime = 0;
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;

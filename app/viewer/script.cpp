@@ -9,6 +9,7 @@
 //                         "module=NAME index=I step=S rule_line=L" (or "module=none")
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   inspect <step> <module>   the derivation inspector on that step, that module chosen
+//   view-draws            prints "view_draws=N": how many times the 3D view has been drawn
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
@@ -122,6 +123,11 @@ bool Script::step(App& app) {
             auto numbers = environmentNumbers(app.state.text());
             if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
             else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+            return true;
+        }
+        if (cmd == "view-draws") {
+            std::printf("view_draws=%llu\n", static_cast<unsigned long long>(app.viewDraws));
+            std::fflush(stdout);
             return true;
         }
         if (cmd == "inspect") {

@@ -515,14 +515,34 @@ int runViewer(int argc, char** argv) {
         }
         ImGui::Render();
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
-            auto t0 = std::chrono::steady_clock::now();
             render::RenderOptions o = app.view.render;
-            o.quality = app.interacting || app.state.playing() || app.view.turntable ? render::Quality::Interactive
-                                                                                     : render::Quality::Still;
-            // The panel covers the left part; the view is drawn beside it.
-            app.renderer.draw(app.camera, vw, vh, o, 0, app.panelWidth, 0);
-            app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            app.needsRedraw = false;
+            const bool interactive = app.interacting || app.state.playing() || app.view.turntable;
+            o.quality = interactive ? render::Quality::Interactive : render::Quality::Still;
+            if (!app.viewFbo) {
+                glGenFramebuffers(1, &app.viewFbo);
+                glGenRenderbuffers(1, &app.viewColour);
+            }
+            if (vw != app.viewWidth || vh != app.viewHeight) {
+                glBindRenderbuffer(GL_RENDERBUFFER, app.viewColour);
+                glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
+                glBindFramebuffer(GL_FRAMEBUFFER, app.viewFbo);
+                glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, app.viewColour);
+                app.viewWidth = vw, app.viewHeight = vh;
+                app.needsRedraw = true;
+            }
+            // Letting go of a drag refines the picture to full quality.
+            if (interactive != app.viewInteractive) app.viewInteractive = interactive, app.needsRedraw = true;
+            if (app.needsRedraw) {
+                auto t0 = std::chrono::steady_clock::now();
+                app.renderer.draw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
+                app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                app.needsRedraw = false;
+                ++app.viewDraws;
+            }
+            // The panel covers the left part; the view goes beside it.
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
             ++framesWithPlant;
         } else {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

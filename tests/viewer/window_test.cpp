@@ -226,6 +226,25 @@ TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
     EXPECT_EQ(second, "module=none");
 }
 
+// A still scene costs nothing: while the script sleeps the window keeps making frames (the
+// panel), but the 3D view is drawn again only when something changes (a turn of the camera).
+TEST(Window, StillViewIsNotDrawnAgain) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_still_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string out = (dir / "out.txt").string();
+    std::ofstream(dir / "script.txt") << "wait\nview-draws\nsleep 0.5\nview-draws\nyaw 30\nwait\nview-draws\nquit\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --size 800x600 --script " + (dir / "script.txt").string(), "", out), 0);
+    std::ifstream in(out);
+    long a = -1, b = -1, c = -1;
+    std::string line;
+    for (long* v : {&a, &b, &c})
+        if (std::getline(in, line) && line.rfind("view_draws=", 0) == 0) *v = std::stol(line.substr(11));
+    ASSERT_GE(a, 1);
+    EXPECT_EQ(b, a) << "half a second of frames without a change drew the view again";
+    EXPECT_GT(c, b) << "turning the camera draws it";
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
