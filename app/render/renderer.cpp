@@ -56,6 +56,8 @@ struct Renderer::Impl {
     std::size_t overlayIndices = 0;
     Buffers highlight;  // picked stems, drawn over everything (setHighlight)
     std::size_t highlightIndices = 0;
+    Buffers proxy;  // a big scene's sketch while the view moves (PreparedScene::proxy)
+    std::size_t proxyCount = 0;
     Bounds overlayBounds;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
@@ -139,7 +141,7 @@ struct Renderer::Impl {
         // Two sets of baked and line buffers: the one on screen, and the one a staged upload
         // fills a piece per frame (beginUpload) before they swap.
         for (Buffers* b : {&baked, &bakedBack, &overlay, &highlight}) makeBaked(*b);
-        for (Buffers* b : {&lines, &linesBack}) makeLines(*b);
+        for (Buffers* b : {&lines, &linesBack, &proxy}) makeLines(*b);
 
         // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
         // of quads (their width is in pixels, so they cannot be baked).
@@ -384,6 +386,31 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         bakeSurface(x, mesh, b);
     }
     bakePolygons(g.polygons, b);
+    // A sketch for moving views of big scenes: every stem of the lowest branch orders (up to
+    // half the budget: the trunk and main branches whole), then an even share of the others
+    // and of the leaves, as lines.
+    const std::size_t count = g.cylinders.size() + g.surfaces.size();
+    if (!g.planarCurve && count > 2 * PreparedScene::kProxyLines) {
+        const std::size_t budget = PreparedScene::kProxyLines;
+        std::vector<std::size_t> perOrder(65536 + 1, 0);
+        for (const auto& c : g.cylinders) ++perOrder[c.order];
+        int whole = -1;  // orders 0..whole are drawn whole
+        for (std::size_t sum = 0; whole + 1 < 65536 && sum + perOrder[size_t(whole + 1)] <= budget / 2;) sum += perOrder[size_t(++whole)];
+        std::size_t main = 0;
+        for (int k = 0; k <= whole; ++k) main += perOrder[size_t(k)];
+        const std::size_t stride = (count - main) / (budget - main) + 1;
+        out.proxy.reserve(budget * 8 + 64);
+        auto line = [&](const glm::vec3& a, const glm::vec3& e, std::uint32_t colour) {
+            float cf;
+            std::memcpy(&cf, &colour, 4);
+            out.proxy.insert(out.proxy.end(), {a.x, a.y, a.z, cf, e.x, e.y, e.z, cf});
+        };
+        std::size_t k = 0;
+        for (const auto& c : g.cylinders)
+            if (int(c.order) <= whole || ++k % stride == 0) line(c.start, c.end, c.colour);
+        for (const auto& x : g.surfaces)
+            if (++k % stride == 0) line(x.position, x.position + x.heading * x.size, x.colour);
+    }
 }
 
 void Renderer::upload(const Geometry& g) {
@@ -419,6 +446,9 @@ void Renderer::adopt(const PreparedScene& p) {
     }
     s.bakedIndices = p.baked.indices.size();
     s.lineCount = p.lines.size() / 8;
+    s.proxyCount = p.proxy.size() / 8;
+    glBindBuffer(GL_ARRAY_BUFFER, s.proxy.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.proxy.size() * 4), p.proxy.data(), GL_STATIC_DRAW);
     m_stats = {};
     m_stats.cylinders = p.cylinders;
     m_stats.surfaces = p.surfaces;
@@ -490,6 +520,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     Impl& s = *m;
     RenderStats stats = m_stats;
     stats.curveMoved = false;
+    stats.proxy = false;
     stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
@@ -506,7 +537,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     const glm::mat4 viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
     const bool curve = s.planarCurve;
     // Interactive frames of big plants skip the shadow pass, which costs a second draw.
-    const bool bigInteractive = o.quality == Quality::Interactive && s.bakedIndices / 3 + s.lineCount > 30000;
+    const bool bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 30000 || s.proxyCount);
     const bool shadows = o.shadows && !curve && !bigInteractive;
     const bool ground = o.ground && !curve && !s.bounds.empty;
 
@@ -639,7 +670,17 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         stats.curve = true;
     }
     for (GLuint p : {s.bakedProgram, s.lineProgram}) s.setLighting(p, o, eye, lightViewProj, shadows, texel);
-    s.drawScene(viewProj, false, stats);
+    if (o.quality == Quality::Interactive && s.proxyCount) {
+        // A big scene while the view moves: its sketch (the still view draws it whole again).
+        glUseProgram(s.lineProgram);
+        setUniform(s.lineProgram, "uViewProj", viewProj);
+        glBindVertexArray(s.proxy.vao);
+        glDrawArrays(GL_LINES, 0, GLsizei(2 * s.proxyCount));
+        glBindVertexArray(0);
+        stats.proxy = true;
+    } else {
+        s.drawScene(viewProj, false, stats);
+    }
     if (s.overlayIndices) {
         // The environment, after the plant: its solid parts, then the translucent ones.
         s.setLighting(s.overlayProgram, o, eye, lightViewProj, shadows, texel);

@@ -42,6 +42,7 @@ struct RenderStats {
     std::size_t levels[4] = {0, 0, 0, 0};  // stems drawn as fine mesh, coarse mesh, prism, line
     bool curve = false;                 // drawn as a 2D curve
     bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
+    bool proxy = false;                 // a big scene drawn as its sketch while the view moves
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread
@@ -59,6 +60,10 @@ struct PreparedScene {
     std::size_t cylinders = 0, surfaces = 0;
     Bounds bounds;
     bool planarCurve = false;
+    // A big scene while the view moves: lines (as `lines`) for its main branches and an even
+    // share of the rest, at most kProxyLines; the full scene is drawn again when it stops.
+    std::vector<float> proxy;
+    static constexpr std::size_t kProxyLines = 60000;
 };
 
 class Renderer {

@@ -61,6 +61,9 @@ struct App {
     // something changed (needsRedraw, its size, its quality), so a still scene costs a copy.
     unsigned viewFbo = 0, viewColour = 0;
     int viewWidth = 0, viewHeight = 0;
+    // While the view moves it is drawn at half the size and stretched (a software rasteriser
+    // pays per pixel); letting go draws it at full size again.
+    int drawWidth = 0, drawHeight = 0;  // the size the cached view was drawn at
     bool viewInteractive = false;
     std::uint64_t viewDraws = 0;  // how many times the 3D view was drawn
     std::string status;        // last action's message

@@ -530,19 +530,25 @@ int runViewer(int argc, char** argv) {
                 app.viewWidth = vw, app.viewHeight = vh;
                 app.needsRedraw = true;
             }
-            // Letting go of a drag refines the picture to full quality.
+            // Letting go of a drag refines the picture to full size and quality.
             if (interactive != app.viewInteractive) app.viewInteractive = interactive, app.needsRedraw = true;
             if (app.needsRedraw) {
                 auto t0 = std::chrono::steady_clock::now();
-                app.renderer.draw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
+                // Moving: half the pixels each way (a big 2D curve keeps its full-size raster,
+                // which moves as a picture while dragged).
+                const bool half = interactive && !app.state.plant()->geometry->planarCurve;
+                app.drawWidth = half ? std::max(1, vw / 2) : vw;
+                app.drawHeight = half ? std::max(1, vh / 2) : vh;
+                app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, o, app.viewFbo, 0, 0);
                 app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
                 app.needsRedraw = false;
                 ++app.viewDraws;
             }
-            // The panel covers the left part; the view goes beside it.
+            // The panel covers the left part; the view goes beside it (stretched when drawn small).
             glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-            glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT,
+                              app.drawWidth == vw ? GL_NEAREST : GL_LINEAR);
             ++framesWithPlant;
         } else {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -215,6 +215,51 @@ TEST(Render, DraggedBigCurveMovesItsLastPicture) {
     EXPECT_LT(differ, kW * kH / 30) << "the moved picture is where the curve is";
 }
 
+// A big plant while the view moves is drawn as its sketch (its main branches and a share of
+// the rest as lines): far fewer primitives, the same place and outline; the still view is the
+// whole plant as before.
+TEST(Render, BigPlantIsSketchedWhileMoving) {
+    auto g = grammarOf(std::string(*presetText("fractal_plant")) + "\nn: 9\n");  // 393 k segments
+    DeriveResult d = derive(g, 9);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {9, 1, nullptr}, geometry);
+    std::string error;
+    auto context = HeadlessContext::create(kW, kH, error);
+    ASSERT_TRUE(context) << error;
+    render::Renderer renderer;
+    ASSERT_TRUE(renderer.init(context->loader(), error)) << error;
+    render::PreparedScene scene;
+    render::Renderer::prepare(geometry, render::Quality::Interactive, scene);
+    ASSERT_GT(scene.proxy.size(), 0u);
+    EXPECT_LE(scene.proxy.size() / 8, render::PreparedScene::kProxyLines + 1000);
+    renderer.upload(scene);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    render::Camera camera = snapshotCamera(geometry, o);
+    render::RenderOptions still = o.render, moving = o.render;
+    still.quality = render::Quality::Still;
+    moving.quality = render::Quality::Interactive;
+    const std::vector<std::uint8_t> sketch = renderer.renderImage(camera, kW, kH, moving);
+    EXPECT_TRUE(renderer.stats().proxy);
+    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
+    EXPECT_FALSE(renderer.stats().proxy);
+    const Image empty = emptyScene(o);
+    // Plant pixels: the sketch's lie where the whole plant's are, over its outline.
+    int inSketch = 0, inWhole = 0, outside = 0;
+    for (std::size_t i = 0; i < whole.size(); i += 4) {
+        auto differs = [&](const std::vector<std::uint8_t>& img) {
+            return std::abs(int(img[i]) - int(empty.rgba[i])) + std::abs(int(img[i + 1]) - int(empty.rgba[i + 1])) +
+                       std::abs(int(img[i + 2]) - int(empty.rgba[i + 2])) > 30;
+        };
+        const bool a = differs(sketch), b = differs(whole);
+        inSketch += a, inWhole += b, outside += a && !b;
+    }
+    EXPECT_GT(inWhole, kW * kH / 20);
+    EXPECT_GT(inSketch, inWhole / 5) << "the sketch shows the plant";
+    EXPECT_LT(outside, inSketch / 5) << "where the plant is";
+}
+
 TEST(Render, LeavesAreGreen) {
     auto g = grammarOf("angle: 40\nwidth: 0.05\naxiom: F[+~leaf(3)][-~leaf(3)]F[+~leaf(3)][-~leaf(3)]F\n");
     SnapshotOptions o = plain();
