@@ -22,6 +22,7 @@ bool App::pickAt(double x, double y) {
     auto plant = state.plant();
     if (!plant || !plant->geometry) return false;
     if (!plant->pick && !plant->forest) {  // the first click: the derivation must keep its origins
+        selection.reset();
         state.setPicking(true);
         pendingPick = std::make_pair(x, y);
         return false;

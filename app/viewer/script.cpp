@@ -130,10 +130,21 @@ bool Script::step(App& app) {
             std::fflush(stdout);
             return true;
         }
+        // Picking and the inspector need the derivation's origins: the first time, ask for
+        // them and come back once the plant that has them is on screen. A plant that cannot
+        // get them (the text has errors since) is answered without.
+        auto needsOrigins = [&](bool forestWillDo) {
+            auto plant = app.state.plant();
+            if (!plant || plant->pick || (forestWillDo && plant->forest)) return false;
+            if (app.state.picking() && !app.state.worker().busy()) return false;  // asked, and none came
+            app.state.setPicking(true);
+            m_lines.push_front(in.str());
+            return true;
+        };
         if (cmd == "inspect") {
-            if (!app.state.picking() || !app.state.plant() || !app.state.plant()->pick) {
-                app.state.setPicking(true);
-                m_lines.push_front(in.str());
+            if (needsOrigins(false)) return true;
+            if (!app.state.plant() || !app.state.plant()->pick) {
+                std::fprintf(stderr, "script: inspect: the plant on screen has no derivation to inspect\n");
                 return true;
             }
             std::int64_t module = 0;
@@ -150,11 +161,7 @@ bool Script::step(App& app) {
                 std::fflush(stdout);
                 return true;
             }
-            if (!plant->pick && !(plant->forest && cmd == "pick")) {  // the derivation must keep its origins first: ask, then come back
-                app.state.setPicking(true);
-                m_lines.push_front(in.str());
-                return true;
-            }
+            if (needsOrigins(cmd == "pick")) return true;
             if (cmd == "pick") {
                 double x = 0, y = 0;
                 in >> x >> y;
