@@ -482,8 +482,18 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
             return false;
         }
         std::vector<double> shapeNumbers(rest.begin(), rest.end() - std::ptrdiff_t(extra));
+        // The points' shape is one of the region shapes (not ground, light, an obstacle, ...).
+        if (words[1] != "sphere" && words[1] != "box" && words[1] != "ellipsoid" && words[1] != "cylinder") {
+            error = "attraction points fill a shape: 'environment: attraction N sphere|box|ellipsoid|cylinder ...', not '" +
+                    words[1] + "'";
+            return false;
+        }
         Environment probe;
         if (!probe.declare({words[1]}, shapeNumbers, error)) return false;
+        if (probe.region.size() != 1) {
+            error = "expected one shape for the attraction points";
+            return false;
+        }
         attractionShape = probe.region.front();
         attractionPoints = int(v[0]);
         for (size_t k = 0; k < extra; ++k) {
