@@ -55,6 +55,7 @@ struct App {
     bool frameOnNextPlant = true;
     bool showHelp = false;
     bool interacting = false;  // dragging: no shadows for big plants
+    bool scriptDragging = false;  // the script's `drag` holds the view as a mouse drag would
     bool bigPlant = false;     // uploaded at interactive detail
     unsigned imageTexture = 0; // an iterated function system's density image
     // The 3D view as last drawn: copied to the window each frame, drawn again only when
@@ -154,12 +155,14 @@ public:
     bool load(const std::string& path, std::string& error);
     // Runs the actions that can run now; false once `quit` ran or the script ended.
     bool step(App& app);
-    bool empty() const { return m_lines.empty(); }
+    bool empty() const { return m_lines.empty() && m_dragFrames == 0; }
 
 private:
     std::deque<std::string> m_lines;
     std::uint64_t m_waitFor = 0;  // the generation the last action posted
     double m_sleepUntil = 0;
+    int m_dragFrames = 0;           // `drag`: frames still to move
+    float m_dragYaw = 0, m_dragPitch = 0;  // degrees a frame
 };
 
 }  // namespace sprout::viewer

@@ -10,6 +10,8 @@
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   inspect <step> <module>   the derivation inspector on that step, that module chosen
 //   view-draws            prints "view_draws=N": how many times the 3D view has been drawn
+//   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
+//                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
@@ -48,6 +50,13 @@ bool Script::load(const std::string& path, std::string& error) {
 }
 
 bool Script::step(App& app) {
+    if (m_dragFrames > 0) {  // a drag in progress: one move a frame, as the mouse makes them
+        app.camera.yaw -= m_dragYaw;
+        app.camera.pitch = std::clamp(app.camera.pitch + m_dragPitch, -89.0f, 89.0f);
+        app.needsRedraw = true;
+        --m_dragFrames;
+        return true;
+    }
     while (!m_lines.empty()) {
         std::istringstream in(m_lines.front());
         std::string cmd;
@@ -123,6 +132,22 @@ bool Script::step(App& app) {
             auto numbers = environmentNumbers(app.state.text());
             if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
             else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+            return true;
+        }
+        if (cmd == "drag") {
+            float dx = 0, dy = 0;
+            int frames = 1;
+            in >> dx >> dy >> frames;
+            frames = std::max(1, frames);
+            app.scriptDragging = true;  // held: the view moves at interactive quality
+            m_dragFrames = frames;
+            m_dragYaw = dx * 0.4f / float(frames);  // as the mouse: 0.4 degrees a pixel
+            m_dragPitch = dy * 0.4f / float(frames);
+            return true;
+        }
+        if (cmd == "release") {
+            app.scriptDragging = false;
+            app.needsRedraw = true;
             return true;
         }
         if (cmd == "view-draws") {

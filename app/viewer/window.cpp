@@ -431,7 +431,7 @@ int runViewer(int argc, char** argv) {
         const float ddx = float(mx - mouse.x), ddy = float(my - mouse.y);
         mouse.x = mx;
         mouse.y = my;
-        app.interacting = mouse.rotating || mouse.panning;
+        app.interacting = mouse.rotating || mouse.panning || app.scriptDragging;
         if (mouse.rotating && (ddx || ddy)) {
             app.camera.yaw -= ddx * 0.4f;
             app.camera.pitch = std::clamp(app.camera.pitch + ddy * 0.4f, -89.0f, 89.0f);

@@ -245,6 +245,42 @@ TEST(Window, StillViewIsNotDrawnAgain) {
     EXPECT_GT(c, b) << "turning the camera draws it";
 }
 
+// Dragging the view: a frame is drawn for every move of the drag (frames keep coming), and
+// once it is let go the window shows the full picture: the same pixels as a render of the view
+// from the same camera.
+TEST(Window, DraggedViewKeepsDrawingAndSettlesOnTheFullPicture) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_drag_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string out = (dir / "out.txt").string(), window = (dir / "window.png").string(), view = (dir / "view.png").string();
+    // No `quit`: --screenshot takes the whole window once the script is done.
+    std::ofstream(dir / "script.txt") << "wait\nview-draws\ndrag 300 40 12\nview-draws\nrelease\nwait\nscreenshot " << view
+                                     << "\nview-draws\n";
+    ASSERT_EQ(runUnderXvfb("fractal_plant --size 1100x700 --script " + (dir / "script.txt").string() + " --screenshot " + window, "",
+                           out),
+              0);
+    std::ifstream in(out);
+    long draws[3] = {-1, -1, -1};
+    std::string line;
+    for (long& d : draws)
+        if (std::getline(in, line) && line.rfind("view_draws=", 0) == 0) d = std::stol(line.substr(11));
+    EXPECT_GE(draws[1] - draws[0], 12) << "a frame drawn for every move of the drag";
+    EXPECT_GT(draws[2], draws[1]) << "letting go draws the full picture";
+    // The window's view (right of the 430-pixel panel) against the render of the same camera.
+    Image w = load(window), v = load(view);
+    ASSERT_EQ(w.width, 1100);
+    ASSERT_EQ(v.width, 1100 - 430);
+    ASSERT_EQ(v.height, w.height);
+    std::size_t differ = 0;
+    for (int y = 0; y < v.height; ++y)
+        for (int x = 0; x < v.width; ++x) {
+            const std::uint8_t* a = &w.rgba[(std::size_t(y) * std::size_t(w.width) + std::size_t(x + 430)) * 4];
+            const std::uint8_t* b = &v.rgba[(std::size_t(y) * std::size_t(v.width) + std::size_t(x)) * 4];
+            differ += std::abs(int(a[0]) - int(b[0])) + std::abs(int(a[1]) - int(b[1])) + std::abs(int(a[2]) - int(b[2])) > 6;
+        }
+    EXPECT_LT(differ, std::size_t(v.width) * std::size_t(v.height) / 500) << "the still view is the full picture";
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
