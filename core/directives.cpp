@@ -150,22 +150,11 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
 
 void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
-    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light", "attraction",
-                                     "influence", "kill", "mesh", "sun"};
     std::vector<std::string> words;
     std::vector<double> numbers;
-    size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && (isSpace(text[i]) || text[i] == ',')) ++i;
-        size_t start = i;
-        int depth = 0;
-        while (i < text.size() && (depth > 0 || (!isSpace(text[i]) && text[i] != ','))) {
-            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
-            ++i;
-        }
-        std::string_view token = text.substr(start, i - start);
-        if (token.empty()) continue;
-        const bool keyword = std::any_of(std::begin(keywords), std::end(keywords), [&](const char* k) { return token == k; });
+    for (const auto& [start, end] : environmentTokens(text)) {
+        std::string_view token = text.substr(start, end - start);
+        const bool keyword = isEnvironmentKeyword(token);
         if (keyword) {
             words.emplace_back(token);
         } else if (std::isalpha(static_cast<unsigned char>(token[0])) && numbers.empty() && !m_g.defines.count(std::string(token))) {

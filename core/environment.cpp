@@ -52,6 +52,29 @@ double pointTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3&
 
 }  // namespace
 
+std::vector<std::pair<std::size_t, std::size_t>> environmentTokens(std::string_view text) {
+    auto separator = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v' || c == ','; };
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && separator(text[i])) ++i;
+        const std::size_t start = i;
+        int depth = 0;
+        while (i < text.size() && (depth > 0 || !separator(text[i]))) {
+            depth += text[i] == '(' ? 1 : text[i] == ')' ? -1 : 0;
+            ++i;
+        }
+        if (i > start) out.emplace_back(start, i);
+    }
+    return out;
+}
+
+bool isEnvironmentKeyword(std::string_view word) {
+    static const char* keywords[] = {"obstacle", "ground", "sphere", "box", "ellipsoid", "cylinder", "light", "attraction",
+                                     "influence", "kill", "mesh", "sun"};
+    return std::any_of(std::begin(keywords), std::end(keywords), [&](const char* k) { return word == k; });
+}
+
 bool TriMesh::parse(std::string_view obj, std::string& error) {
     vertices.clear();
     triangles.clear();

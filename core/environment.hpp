@@ -41,6 +41,7 @@
 #include <optional>
 #include <string_view>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -48,6 +49,14 @@
 #include "core/geometry.hpp"
 
 namespace sprout {
+
+// The tokens of an `environment:` line's value, as [begin, end) byte spans: split at blanks and
+// commas, a parenthesised expression kept whole. The parser and the viewer's sliders read the
+// line through this one split.
+std::vector<std::pair<std::size_t, std::size_t>> environmentTokens(std::string_view value);
+// The words of those lines: obstacle, ground, sphere, box, ellipsoid, cylinder, light,
+// attraction, influence, kill, mesh, sun (any other name is a define's, in an expression).
+bool isEnvironmentKeyword(std::string_view word);
 
 // A closed triangle mesh (an OBJ file's faces, fanned into triangles).
 struct TriMesh {

@@ -113,6 +113,7 @@ struct App {
         std::uint32_t module = 0;             // its module in the drawn string
         std::vector<LineageLink> links;       // empty when the derivation cannot say (a homomorphism)
         int forestPlant = -1;                 // a forest: which plant (its species in plant->forest)
+        std::string text;                     // the module as written, "F(1.5)" (made once, when picked)
     };
     std::optional<Selection> selection;
     std::optional<std::pair<double, double>> pendingPick;  // a click waiting for the derivation's origins
@@ -121,7 +122,7 @@ struct App {
     bool highlightDirty = false;
     std::shared_ptr<const Result> highlightOf;  // the plant the highlight was made for
     bool followCursor = true;        // highlight the rule under the editor's cursor
-    int cursorOffset = -1;           // the editor's cursor, a byte offset into the text
+    int cursorLine = 0;              // the rule under the cursor: the line it last followed
     // Picks at window pixel (x, y); false (and asks for origins) when the plant has none yet.
     bool pickAt(double x, double y);
     // The line printed by the script's `pick`: "module=F index=12 step=3 rule_line=7".
@@ -130,6 +131,8 @@ struct App {
     void updateHighlight();  // the highlight mesh for the selection and the highlighted rule
     // Picks module `index` of the drawn string (the inspector): its first stem or surface.
     void selectModule(std::uint32_t index);
+    // The selection of module `module` of the drawn string, drawn by segment or surface `instance`.
+    Selection selectionOf(std::shared_ptr<const Result> plant, std::uint32_t module, bool surface, std::uint32_t instance) const;
 
     // The derivation inspector's state (app/viewer/inspector.cpp).
     struct Inspector {
@@ -142,12 +145,21 @@ struct App {
         int cachedStep = -1;
         std::vector<std::uint64_t> checkpoints;
         std::vector<std::int32_t> made;
+        // The chosen module's rule and matched context, as shown (made once per choice).
+        std::int64_t describedChoice = -1;
+        std::vector<std::string> description;
     } inspector;
+    // Words the editor completes, made once per plant.
+    std::vector<std::string> completions;
+    std::shared_ptr<const Result> completionsOf;
     bool openInspector = false;  // the script's `inspect` opens its panel section
 };
 
 void drawPanel(App& app);
 void inspectorSection(App& app);
+// What the inspector says of module `module` of step `step`: the module, the rule that made
+// it, and the context that matched (one line each).
+std::vector<std::string> describeModule(const DerivationRecord& record, int step, std::uint32_t module);
 
 // --script FILE: one action per line, run as the window goes (tests, demos).
 class Script {

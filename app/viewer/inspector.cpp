@@ -28,17 +28,67 @@ ImVec4 ruleColour(std::int32_t rule) {
     return hues[size_t(k) % std::size(hues)];
 }
 
+// Parameter offsets every kCheckpoint modules, so that any module's parameters are found
+// without walking the string from its start.
+std::vector<std::uint64_t> checkpointsOf(const ModuleString& s, const Alphabet& a) {
+    std::vector<std::uint64_t> out(size_t(s.size() / kCheckpoint + 1), 0);
+    std::uint64_t p = 0;
+    for (std::uint64_t i = 0; i < s.size(); ++i) {
+        if (i % kCheckpoint == 0) out[size_t(i / kCheckpoint)] = p;
+        p += a[s.symbols.data()[i]].arity;
+    }
+    return out;
+}
+
 // "F(1.5)": module i, its parameters found from the nearest checkpoint.
 std::string moduleAt(const ModuleString& s, const Alphabet& a, const std::vector<std::uint64_t>& checkpoints, std::uint64_t i) {
     std::uint64_t p = checkpoints[size_t(i / kCheckpoint)];
     for (std::uint64_t k = i / kCheckpoint * kCheckpoint; k < i; ++k) p += a[s.symbols.data()[k]].arity;
-    const auto& m = a[s.symbols.data()[i]];
-    std::string out = m.name;
-    for (unsigned k = 0; k < m.arity; ++k) out += (k ? "," : "(") + formatValue(s.params.data()[p + k]) + (k + 1 == m.arity ? ")" : "");
+    std::string out;
+    appendModule(out, a[s.symbols.data()[i]], s.params.data() + p);
+    return out;
+}
+
+// What the inspector says of a chosen module: itself, the rule that made it and, for a rule
+// with a context, the modules of the step before that the context matched.
+std::vector<std::string> describe(const DerivationRecord& record, int step, std::uint32_t chosen,
+                                  const std::vector<std::uint64_t>& checkpoints) {
+    const Grammar& g = *record.grammar;
+    std::vector<std::string> out{moduleAt(*record.steps[size_t(step)], g.alphabet, checkpoints, chosen)};
+    const auto links = lineage(record, step, chosen);
+    if (links.empty()) return out;
+    const LineageLink& made = links[0];
+    if (made.ruleLine == 0) {
+        out.push_back("from the axiom (module " + std::to_string(made.index) + ")");
+        return out;
+    }
+    out.push_back("made at step " + std::to_string(made.step) + " by line " + std::to_string(made.ruleLine));
+    if (made.rule < 0 || made.step < 1) return out;
+    const Production& rule = g.rules.productions[size_t(made.rule)];
+    const auto& before = record.steps[size_t(made.step - 1)];
+    const auto& origins = record.origins[size_t(made.step)];
+    if (!rule.hasContext() || !before || !origins) return out;
+    const std::uint32_t parent = origins->parent.data()[made.index];
+    StepRewriter rewriter(g, g.rules);
+    std::vector<std::size_t> left, right;
+    if (!rewriter.contextOf(*before, parent, rule, left, right)) return out;
+    const std::vector<std::uint64_t> beforeCheckpoints = checkpointsOf(*before, g.alphabet);
+    auto text = [&](std::size_t j) { return moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ")"; };
+    std::string context = "context matched in step " + std::to_string(made.step - 1) + ": ";
+    for (std::size_t j : left) context += text(j) + " ";
+    context += "< [" + text(parent) + "] >";
+    for (std::size_t j : right) context += " " + text(j);
+    out.push_back(context);
     return out;
 }
 
 }  // namespace
+
+std::vector<std::string> describeModule(const DerivationRecord& record, int step, std::uint32_t module) {
+    if (step < 0 || size_t(step) >= record.steps.size() || !record.steps[size_t(step)] || module >= record.steps[size_t(step)]->size())
+        return {};
+    return describe(record, step, module, checkpointsOf(*record.steps[size_t(step)], record.grammar->alphabet));
+}
 
 void inspectorSection(App& app) {
     auto plant = app.state.plant();
@@ -70,12 +120,8 @@ void inspectorSection(App& app) {
     if (in.of != plant || in.cachedStep != in.step) {
         in.of = plant;
         in.cachedStep = in.step;
-        in.checkpoints.assign(size_t(n / kCheckpoint + 1), 0);
-        std::uint64_t p = 0;
-        for (std::uint64_t i = 0; i < n; ++i) {
-            if (i % kCheckpoint == 0) in.checkpoints[size_t(i / kCheckpoint)] = p;
-            p += g.alphabet[string->symbols.data()[i]].arity;
-        }
+        in.checkpoints = checkpointsOf(*string, g.alphabet);
+        in.describedChoice = -1;
         in.made = madeBy(record, in.step);
         in.first = std::min<std::uint64_t>(in.first, n ? n - 1 : 0);
     }
@@ -86,9 +132,11 @@ void inspectorSection(App& app) {
     if (ImGui::Button("find next") && in.query[0]) {
         std::uint64_t from = in.chosen >= 0 ? std::uint64_t(in.chosen) + 1 : 0;
         in.found = false;
+        std::vector<char> named(g.alphabet.size(), 0);  // the symbols of that name, any arity
+        for (size_t k = 0; k < named.size(); ++k) named[k] = g.alphabet[SymbolId(k)].name == in.query;
         for (std::uint64_t k = 0; k < n; ++k) {
             const std::uint64_t i = (from + k) % n;
-            if (g.alphabet[string->symbols.data()[i]].name == in.query) {
+            if (named[string->symbols.data()[i]]) {
                 in.chosen = std::int64_t(i);
                 in.first = i >= 8 ? i - 8 : 0;
                 in.found = true;
@@ -120,40 +168,13 @@ void inspectorSection(App& app) {
     }
     ImGui::EndChild();
     if (in.chosen < 0 || std::uint64_t(in.chosen) >= n) return;
-    // The chosen module: its rule, where it came from, and the context that matched.
-    const std::uint32_t chosen = std::uint32_t(in.chosen);
-    ImGui::Text("%s", moduleAt(*string, g.alphabet, in.checkpoints, chosen).c_str());
-    const auto links = lineage(record, in.step, chosen);
-    if (links.empty()) return;
-    const LineageLink& made = links[0];
-    if (made.ruleLine == 0) {
-        ImGui::TextWrapped("from the axiom (module %u)", made.index);
-        return;
+    // The chosen module: its rule, where it came from, and the context that matched (worked
+    // out once per choice: the step before may be millions of modules).
+    if (in.describedChoice != in.chosen) {
+        in.description = describe(record, in.step, std::uint32_t(in.chosen), in.checkpoints);
+        in.describedChoice = in.chosen;
     }
-    ImGui::TextWrapped("made at step %d by line %d", made.step, made.ruleLine);
-    if (made.rule < 0 || made.step < 1) return;
-    const Production& rule = g.rules.productions[size_t(made.rule)];
-    if (!rule.hasContext()) return;
-    const auto& before = record.steps[size_t(made.step - 1)];
-    const auto& origins = record.origins[size_t(made.step)];
-    if (!before || !origins) return;
-    const std::uint32_t parent = origins->parent.data()[made.index];
-    StepRewriter rewriter(g, g.rules);
-    std::vector<std::size_t> left, right;
-    if (!rewriter.contextOf(*before, parent, rule, left, right)) return;
-    std::vector<std::uint64_t> beforeCheckpoints(size_t(before->size() / kCheckpoint + 1), 0);
-    {
-        std::uint64_t p = 0;
-        for (std::uint64_t i = 0; i < before->size(); ++i) {
-            if (i % kCheckpoint == 0) beforeCheckpoints[size_t(i / kCheckpoint)] = p;
-            p += g.alphabet[before->symbols.data()[i]].arity;
-        }
-    }
-    std::string context = "context matched in step " + std::to_string(made.step - 1) + ": ";
-    for (std::size_t j : left) context += moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ") ";
-    context += "< [" + moduleAt(*before, g.alphabet, beforeCheckpoints, parent) + " (" + std::to_string(parent) + ")] >";
-    for (std::size_t j : right) context += " " + moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ")";
-    ImGui::TextWrapped("%s", context.c_str());
+    for (const std::string& line : in.description) ImGui::TextWrapped("%s", line.c_str());
 }
 
 }  // namespace sprout::viewer

@@ -102,8 +102,11 @@ void grammarSection(App& app) {
     FileKind kind = app.state.kind();
     if (kind == FileKind::Png) kind = FileKind::Lsys;
     app.editor.setBandLine(app.highlightLine);
-    if (app.editor.draw("grammar", h, kind, markers, completionsFor(app))) app.state.setText(app.editor.text());
-    app.cursorOffset = app.editor.cursorOffset();
+    if (app.completionsOf != app.state.plant() || app.completions.empty()) {
+        app.completions = completionsFor(app);
+        app.completionsOf = app.state.plant();
+    }
+    if (app.editor.draw("grammar", h, kind, markers, app.completions)) app.state.setText(app.editor.text());
     auto latest = app.state.latest();
     if (latest) {
         // Each problem at its line:col; a click puts the editor's cursor there.
@@ -294,16 +297,6 @@ std::string lineText(const std::string& text, int line) {
     return out;
 }
 
-// One module of a string as text, parameters included: "F(1.5)".
-std::string moduleText(const ModuleString& s, const Alphabet& alphabet, std::uint32_t index) {
-    size_t p = 0;
-    for (std::uint32_t i = 0; i < index; ++i) p += alphabet[s.symbols.data()[i]].arity;
-    const auto& a = alphabet[s.symbols.data()[index]];
-    std::string out = a.name;
-    for (unsigned k = 0; k < a.arity; ++k) out += (k ? "," : "(") + formatValue(s.params.data()[p + k]) + (k + 1 == a.arity ? ")" : "");
-    return out;
-}
-
 // Which rule made this branch: the picked module, its rule and ancestors; the rule under the
 // editor's cursor, and how much it made.
 void whySection(App& app) {
@@ -330,15 +323,13 @@ void whySection(App& app) {
         return;
     }
     const std::string& text = app.state.text();
-    // The rule under the cursor: everything it made lights up.
-    if (app.followCursor && app.cursorOffset >= 0 && app.cursorOffset <= int(text.size())) {
-        const int line = 1 + int(std::count(text.begin(), text.begin() + app.cursorOffset, '\n'));
-        static int lastLine = 0;
+    // The rule under the cursor: everything it made lights up (when the cursor comes to it).
+    if (const int line = app.editor.model().cursor().line + 1; app.followCursor && line != app.cursorLine) {
+        app.cursorLine = line;
         bool isRule = false;
         for (const Production& p : plant->grammar->rules.productions) isRule |= p.line == line;
         for (const Production& p : plant->grammar->decomposition.productions) isRule |= p.line == line;
-        if (line != lastLine && isRule) app.setHighlightLine(line);
-        lastLine = line;
+        if (isRule) app.setHighlightLine(line);
     }
     ImGui::Checkbox("highlight what the rule under the cursor made", &app.followCursor);
     if (app.highlightLine > 0) {
@@ -361,7 +352,7 @@ void whySection(App& app) {
         return;
     }
     if (!drawn || sel.module >= drawn->size()) return;
-    ImGui::Text("%s %s, module %u of step %d", sel.surface ? "leaf / surface" : "stem", moduleText(*drawn, g.alphabet, sel.module).c_str(),
+    ImGui::Text("%s %s, module %u of step %d", sel.surface ? "leaf / surface" : "stem", sel.text.c_str(),
                 sel.module, pick.step);
     for (size_t k = 0; k < sel.links.size(); ++k) {
         const LineageLink& l = sel.links[k];

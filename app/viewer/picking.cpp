@@ -54,10 +54,7 @@ bool App::pickAt(double x, double y) {
             }
         } else {
             const auto& map = s.surface ? plant->pick->surfaceModules : plant->pick->segmentModules;
-            if (hit->index < map.size()) {
-                s.module = map[hit->index];
-                if (!plant->pick->homomorphism) s.links = lineage(plant->pick->record, plant->pick->step, s.module);
-            }
+            if (hit->index < map.size()) s = selectionOf(plant, map[hit->index], s.surface, hit->index);
         }
         selection = std::move(s);
         if (!selection->links.empty() && followCursor) setHighlightLine(selection->links[0].ruleLine);
@@ -124,20 +121,35 @@ void App::updateHighlight() {
     needsRedraw = true;
 }
 
+App::Selection App::selectionOf(std::shared_ptr<const Result> plant, std::uint32_t module, bool surface,
+                                std::uint32_t instance) const {
+    Selection s;
+    s.plant = plant;
+    s.module = module;
+    s.surface = surface;
+    s.instance = instance;
+    const PickData& pick = *plant->pick;
+    if (!pick.homomorphism) s.links = lineage(pick.record, pick.step, module);
+    const auto& drawn = pick.record.steps[size_t(pick.step)];
+    if (drawn && module < drawn->size()) {  // its parameters follow those of the modules before it
+        const Alphabet& alphabet = pick.record.grammar->alphabet;
+        std::size_t p = 0;
+        for (std::uint32_t i = 0; i < module; ++i) p += alphabet[drawn->symbols.data()[i]].arity;
+        appendModule(s.text, alphabet[drawn->symbols.data()[module]], drawn->params.data() + p);
+    }
+    return s;
+}
+
 void App::selectModule(std::uint32_t index) {
     auto plant = state.plant();
     if (!plant || !plant->pick) return;
-    Selection s;
-    s.plant = plant;
-    s.module = index;
-    bool drawn = false;
+    bool surface = false, drawn = false;
+    std::uint32_t instance = std::uint32_t(-1);  // drawing nothing: nothing is outlined
     for (std::uint32_t i = 0; i < plant->pick->segmentModules.size() && !drawn; ++i)
-        if (plant->pick->segmentModules[i] == index) s.instance = i, drawn = true;
+        if (plant->pick->segmentModules[i] == index) instance = i, drawn = true;
     for (std::uint32_t i = 0; i < plant->pick->surfaceModules.size() && !drawn; ++i)
-        if (plant->pick->surfaceModules[i] == index) s.instance = i, s.surface = true, drawn = true;
-    if (!drawn) s.instance = std::uint32_t(-1);  // draws nothing: nothing is outlined
-    if (!plant->pick->homomorphism) s.links = lineage(plant->pick->record, plant->pick->step, index);
-    selection = std::move(s);
+        if (plant->pick->surfaceModules[i] == index) instance = i, surface = drawn = true;
+    selection = selectionOf(plant, index, surface, instance);
     highlightDirty = true;
 }
 

@@ -8,7 +8,8 @@
 //   pick <x> <y>          a click at window pixel (x, y): prints
 //                         "module=NAME index=I step=S rule_line=L" (or "module=none")
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
-//   inspect <step> <module>   the derivation inspector on that step, that module chosen
+//   inspect <step> <module>   the derivation inspector on that step, that module chosen; prints
+//                         what it says of the module, a line each ("inspect: ...")
 //   view-draws            prints "view_draws=N": how many times the 3D view has been drawn
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
@@ -177,6 +178,9 @@ bool Script::step(App& app) {
             app.inspector.chosen = module;
             app.inspector.first = std::uint64_t(std::max<std::int64_t>(0, module - 4));
             app.openInspector = true;
+            for (const std::string& line : describeModule(app.state.plant()->pick->record, app.inspector.step, std::uint32_t(module)))
+                std::printf("inspect: %s\n", line.c_str());
+            std::fflush(stdout);
             return true;
         }
         if (cmd == "pick" || cmd == "highlight-rule") {

@@ -1,5 +1,7 @@
 #include "app/viewer/text_edit.hpp"
 
+#include "core/environment.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -161,26 +163,15 @@ std::vector<EnvironmentNumber> environmentNumbers(std::string_view text) {
             std::optional<double> number;  // a literal
         };
         std::vector<Token> tokens;
-        while (pos < stop) {
-            while (pos < stop && (text[pos] == ' ' || text[pos] == '\t' || text[pos] == ',' || text[pos] == '\r')) ++pos;
-            if (pos >= stop) break;
-            size_t end = pos;
-            int depth = 0;
-            while (end < stop && (depth > 0 || (text[end] != ' ' && text[end] != '\t' && text[end] != ',' && text[end] != '\r'))) {
-                depth += text[end] == '(' ? 1 : text[end] == ')' ? -1 : 0;
-                ++end;
-            }
-            const std::string token(text.substr(pos, end - pos));
-            Token t{pos, end, std::isalpha(static_cast<unsigned char>(token[0])) != 0, std::nullopt};
+        for (const auto& [b, e] : environmentTokens(text.substr(pos, stop - pos))) {
+            const size_t begin = pos + b, end = pos + e;
+            const std::string token(text.substr(begin, end - begin));
+            Token t{begin, end, std::isalpha(static_cast<unsigned char>(token[0])) != 0, std::nullopt};
             char* rest = nullptr;
             const double v = std::strtod(token.c_str(), &rest);
             if (!t.word && rest && *rest == '\0' && std::isfinite(v)) t.number = v;
-            if (t.word && token != "obstacle" && token != "sphere" && token != "box" && token != "ellipsoid" &&
-                token != "cylinder" && token != "ground" && token != "light" && token != "attraction" && token != "influence" &&
-                token != "kill" && token != "sun" && token != "mesh")
-                t.word = false;  // a define's name: an expression
+            if (t.word && !isEnvironmentKeyword(token)) t.word = false;  // a define's name: an expression
             tokens.push_back(t);
-            pos = end;
         }
         if (tokens.empty() || !tokens[0].word) continue;
         auto word = [&](size_t k) { return std::string(text.substr(tokens[k].begin, tokens[k].end - tokens[k].begin)); };

@@ -65,6 +65,22 @@ Mask plantMask(const Image& plant, const Image& empty) {
     return m;
 }
 
+// A renderer on a headless context of its own, kW x kH; null (the test fails) without OpenGL.
+struct HeadlessRenderer {
+    std::unique_ptr<HeadlessContext> context;
+    render::Renderer renderer;
+};
+std::unique_ptr<HeadlessRenderer> headlessRenderer() {
+    auto h = std::make_unique<HeadlessRenderer>();
+    std::string error;
+    h->context = HeadlessContext::create(kW, kH, error);
+    if (!h->context || !h->renderer.init(h->context->loader(), error)) {
+        ADD_FAILURE() << "no OpenGL: " << error;
+        return nullptr;
+    }
+    return h;
+}
+
 Image emptyScene(const SnapshotOptions& o) { return render(grammarOf("axiom: X\n"), o); }
 
 TEST(Render, EveryPresetIsFramedAndNotClipped) {
@@ -145,11 +161,9 @@ TEST(Render, RasterisedCurveLooksLikeItsRibbons) {
     auto geometry = std::make_shared<Geometry>();
     interpret(*d.string, *g, {14, 1, nullptr}, *geometry);
     ASSERT_TRUE(geometry->planarCurve);
-    std::string error;
-    auto context = HeadlessContext::create(kW, kH, error);
-    ASSERT_TRUE(context) << error;
-    render::Renderer renderer;
-    ASSERT_TRUE(renderer.init(context->loader(), error)) << error;
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
     SnapshotOptions o = plain();
     o.width = kW, o.height = kH;
     const render::Camera camera = snapshotCamera(*geometry, o);
@@ -183,11 +197,9 @@ TEST(Render, DraggedBigCurveMovesItsLastPicture) {
     ASSERT_TRUE(d.outcome.ok());
     auto geometry = std::make_shared<Geometry>();
     interpret(*d.string, *g, {19, 1, nullptr}, *geometry);
-    std::string error;
-    auto context = HeadlessContext::create(kW, kH, error);
-    ASSERT_TRUE(context) << error;
-    render::Renderer renderer;
-    ASSERT_TRUE(renderer.init(context->loader(), error)) << error;
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
     render::PreparedScene scene;
     render::Renderer::prepare(*geometry, render::Quality::Still, scene, geometry);
     ASSERT_TRUE(scene.curveGeometry);
@@ -224,11 +236,9 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
     interpret(*d.string, *g, {9, 1, nullptr}, geometry);
-    std::string error;
-    auto context = HeadlessContext::create(kW, kH, error);
-    ASSERT_TRUE(context) << error;
-    render::Renderer renderer;
-    ASSERT_TRUE(renderer.init(context->loader(), error)) << error;
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
     render::PreparedScene scene;
     render::Renderer::prepare(geometry, render::Quality::Interactive, scene);
     ASSERT_GT(scene.proxy.size(), 0u);
@@ -330,10 +340,14 @@ TEST(Render, EnvironmentIsDrawnWhenAsked) {
     EXPECT_GT(glass, kW * kH / 20) << "the sphere tints the picture blue";
     // A solid obstacle hides what is behind it: the middle of the picture is its stone grey.
     auto stone = grammarOf("n: 0\nenvironment: obstacle box -2 0 -2 2 4 2\naxiom: F(4) ?E(1,0,0,0,0)\n");
-    Image box = render(stone, o);
-    const std::uint8_t* mid = &box.rgba[(std::size_t(kH / 2) * kW + kW / 2) * 4];
+    Image box = render(stone, o), bare = render(stone, plain());
+    const std::size_t at = (std::size_t(kH / 2) * kW + kW / 2 + kW / 8) * 4;  // beside the stem
+    const std::uint8_t *mid = &box.rgba[at], *sky = &bare.rgba[at];
     EXPECT_LT(std::abs(int(mid[0]) - int(mid[1])), 30);
     EXPECT_LT(std::abs(int(mid[1]) - int(mid[2])), 40);
+    // The sky there is bluer and brighter than the stone in front of it.
+    EXPECT_GT(int(sky[0]) + sky[1] + sky[2] - (int(mid[0]) + mid[1] + mid[2]), 60) << "the stone hides the sky";
+    EXPECT_GT(int(sky[2]) - sky[0], int(mid[2]) - mid[0] + 10);
     // A leafy crown over a slice of its light: deep blue cells in its shade.
     auto crown = grammarOf("n: 0\nenvironment: light 0.5 2\naxiom: F(4) [ &(90) ~l(2) ] [ ^(90) ~l(2) ] [ +(90) ~l(2) ] ?E(1)\n");
     o.environmentView.lightSlice = true;

@@ -47,6 +47,29 @@ std::array<double, 3> mean(const Image& img, int x0, int y0, int x1, int y1) {
     return m;
 }
 
+// A folder of one test's own.
+fs::path testDir(const std::string& name) {
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_" + name + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Runs the viewer on `args` with `script` (kept in `dir`): what it printed, a line each.
+std::vector<std::string> runScript(const fs::path& dir, const std::string& args, const std::string& script) {
+    std::ofstream(dir / "script.txt") << script;
+    const std::string out = (dir / "out.txt").string();
+    EXPECT_EQ(runUnderXvfb(args + " --script " + (dir / "script.txt").string(), "", out), 0);
+    std::ifstream in(out);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// The count of a "view_draws=N" line, -1 when it is not one.
+long viewDraws(const std::vector<std::string>& lines, size_t k) {
+    return k < lines.size() && lines[k].rfind("view_draws=", 0) == 0 ? std::stol(lines[k].substr(11)) : -1;
+}
+
 TEST(Window, ScreenshotShowsThePanelAndThePlant) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     const std::string out = testing::TempDir() + "sprout_window.png";
@@ -180,20 +203,16 @@ TEST(Window, EnvironmentIsDrawnAndItsSliderRegrowsThePlant) {
 // lights up what it made (orange), then another rule something else.
 TEST(Window, PickingNamesTheModuleAndRuleAndHighlightsWhatARuleMade) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_pick_window_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+    const fs::path dir = testDir("pick_window");
     const std::string plain = (dir / "plain.png").string(), rule7 = (dir / "rule7.png").string(),
-                      rule6 = (dir / "rule6.png").string(), out = (dir / "out.txt").string();
-    std::ofstream(dir / "script.txt") << "wait\nscreenshot " << plain << " 400x300\n"
-                                     << "pick 946 720\npick 1290 20\n"
-                                     << "highlight-rule 7\nscreenshot " << rule7 << " 400x300\n"
-                                     << "highlight-rule 6\nscreenshot " << rule6 << " 400x300\nquit\n";
-    ASSERT_EQ(runUnderXvfb("fractal_plant --size 1300x860 --script " + (dir / "script.txt").string(), "", out), 0);
-    std::ifstream in(out);
-    const std::string printed((std::istreambuf_iterator<char>(in)), {});
+                      rule6 = (dir / "rule6.png").string();
+    const auto printed = runScript(dir, "fractal_plant --size 1300x860",
+                                   "wait\nscreenshot " + plain + " 400x300\npick 946 720\npick 1290 20\nhighlight-rule 7\nscreenshot " +
+                                       rule7 + " 400x300\nhighlight-rule 6\nscreenshot " + rule6 + " 400x300\nquit\n");
     // The trunk's lowest F: module 9 of step 5, made at step 5 by F -> FF (line 7); the sky: nothing.
     // Line 7 made 720 of the 1,488 stems; line 6 (X -> F-[[X]+X]+F[+FX]-X) the other 768.
-    EXPECT_EQ(printed, "module=F index=9 step=5 rule_line=7\nmodule=none\nhighlighted=720\nhighlighted=768\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"module=F index=9 step=5 rule_line=7", "module=none", "highlighted=720",
+                                                 "highlighted=768"}));
     Image a = load(plain), b = load(rule7), c = load(rule6);
     auto orange = [](const Image& img) {
         std::size_t n = 0;
@@ -212,34 +231,29 @@ TEST(Window, PickingNamesTheModuleAndRuleAndHighlightsWhatARuleMade) {
 // Picking in a forest names the plant and its species (the shaded row: six light trees).
 TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_pick_forest_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string out = (dir / "out.txt").string();
-    std::ofstream(dir / "script.txt") << "wait\npick 700 450\npick 1290 20\nquit\n";
-    ASSERT_EQ(runUnderXvfb("env_forest_row --size 1300x860 --script " + (dir / "script.txt").string(), "", out), 0);
-    std::ifstream in(out);
-    std::string first, second;
-    std::getline(in, first);
-    std::getline(in, second);
-    EXPECT_EQ(first.rfind("plant=", 0), 0u) << first;
-    EXPECT_NE(first.find(" species=env_light_tree "), std::string::npos) << first;
-    EXPECT_EQ(second, "module=none");
+    const auto printed = runScript(testDir("pick_forest"), "env_forest_row --size 1300x860", "wait\npick 700 450\npick 1290 20\nquit\n");
+    ASSERT_EQ(printed.size(), 2u);
+    EXPECT_EQ(printed[0].rfind("plant=", 0), 0u) << printed[0];
+    EXPECT_NE(printed[0].find(" species=env_light_tree "), std::string::npos) << printed[0];
+    EXPECT_EQ(printed[1], "module=none");
+}
+
+// The derivation inspector of the context-sensitive signal (step 2 is F [ + F B F ] F): the
+// '+' was made at step 2 by A > T -> [+FBF] (line 6), whose context matched step 1's T.
+TEST(Window, InspectorSaysWhichContextMatched) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const auto printed = runScript(testDir("inspect"), "signal --size 1200x800", "wait\ninspect 2 2\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"inspect: +", "inspect: made at step 2 by line 6",
+                                                 "inspect: context matched in step 1: < [A (1)] > T (2)"}));
 }
 
 // A still scene costs nothing: while the script sleeps the window keeps making frames (the
 // panel), but the 3D view is drawn again only when something changes (a turn of the camera).
 TEST(Window, StillViewIsNotDrawnAgain) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_still_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string out = (dir / "out.txt").string();
-    std::ofstream(dir / "script.txt") << "wait\nview-draws\nsleep 0.5\nview-draws\nyaw 30\nwait\nview-draws\nquit\n";
-    ASSERT_EQ(runUnderXvfb("fractal_plant --size 800x600 --script " + (dir / "script.txt").string(), "", out), 0);
-    std::ifstream in(out);
-    long a = -1, b = -1, c = -1;
-    std::string line;
-    for (long* v : {&a, &b, &c})
-        if (std::getline(in, line) && line.rfind("view_draws=", 0) == 0) *v = std::stol(line.substr(11));
+    const auto printed = runScript(testDir("still"), "fractal_plant --size 800x600",
+                                   "wait\nview-draws\nsleep 0.5\nview-draws\nyaw 30\nwait\nview-draws\nquit\n");
+    const long a = viewDraws(printed, 0), b = viewDraws(printed, 1), c = viewDraws(printed, 2);
     ASSERT_GE(a, 1);
     EXPECT_EQ(b, a) << "half a second of frames without a change drew the view again";
     EXPECT_GT(c, b) << "turning the camera draws it";
@@ -250,20 +264,13 @@ TEST(Window, StillViewIsNotDrawnAgain) {
 // from the same camera.
 TEST(Window, DraggedViewKeepsDrawingAndSettlesOnTheFullPicture) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_drag_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    const std::string out = (dir / "out.txt").string(), window = (dir / "window.png").string(), view = (dir / "view.png").string();
+    const fs::path dir = testDir("drag");
+    const std::string window = (dir / "window.png").string(), view = (dir / "view.png").string();
     // No `quit`: --screenshot takes the whole window once the script is done.
-    std::ofstream(dir / "script.txt") << "wait\nview-draws\ndrag 300 40 12\nview-draws\nrelease\nwait\nscreenshot " << view
-                                     << "\nview-draws\n";
-    ASSERT_EQ(runUnderXvfb("fractal_plant --size 1100x700 --script " + (dir / "script.txt").string() + " --screenshot " + window, "",
-                           out),
-              0);
-    std::ifstream in(out);
-    long draws[3] = {-1, -1, -1};
-    std::string line;
-    for (long& d : draws)
-        if (std::getline(in, line) && line.rfind("view_draws=", 0) == 0) d = std::stol(line.substr(11));
+    const auto printed = runScript(dir, "fractal_plant --size 1100x700 --screenshot " + window,
+                                   "wait\nview-draws\ndrag 300 40 12\nview-draws\nrelease\nwait\nscreenshot " + view + "\nview-draws\n");
+    const long draws[3] = {viewDraws(printed, 0), viewDraws(printed, 1), viewDraws(printed, 2)};
+    ASSERT_GE(draws[0], 1);
     EXPECT_GE(draws[1] - draws[0], 12) << "a frame drawn for every move of the drag";
     EXPECT_GT(draws[2], draws[1]) << "letting go draws the full picture";
     // The window's view (right of the 430-pixel panel) against the render of the same camera.
