@@ -70,6 +70,7 @@ bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error,
     if (!context) return false;
     render::Renderer renderer;
     if (!renderer.init(context->loader(), error)) return false;
+    if (o.viewerDetail) renderer.setDetail(render::viewerDetail(out.geometry.cylinders.size()));
     renderer.upload(out.geometry);
     if (!overlayEnvironment(renderer, o, out.geometry, seed, error)) return false;
     render::Camera camera = snapshotCamera(out.geometry, o);

@@ -26,6 +26,8 @@ struct SnapshotOptions {
     std::optional<float> distance;
     std::optional<glm::vec3> target;
     render::RenderOptions render;
+    // Full detail, or the viewer's (`--detail viewer`: a big plant as the window shows it).
+    bool viewerDetail = false;
     DeriveLimits limits;
     // Draw the environment the plant grew in (translucent shapes, obstacles, points, and a slice
     // of the light grid when asked): a grammar's own, or `environment` (a forest's).

@@ -47,7 +47,7 @@ bool grow(const std::string& text, int n, Geometry& g) {
 Result orbit(render::Renderer& renderer, const Geometry& g, int vw, int vh) {
     Result r;
     r.segments = g.cylinders.size();
-    renderer.setDetail(g.cylinders.size() > 20000 ? render::Quality::Interactive : render::Quality::Still);
+    renderer.setDetail(render::viewerDetail(g.cylinders.size()));
     renderer.upload(g);
     render::Camera camera = render::frameGeometry(g, float(vw) / float(vh), render::ViewPreset::Auto);
     render::RenderOptions o;

@@ -1,6 +1,6 @@
 // sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]
 //                                      [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats]
-//                                      [--show-environment] [--light-slice H]
+//                                      [--show-environment] [--light-slice H] [--detail full|viewer]
 // Renders through OSMesa: no display and no GLFW, the same shaders as the window.
 #include <cstdio>
 #include <iostream>
@@ -184,7 +184,7 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 int runRender(int argc, char** argv) {
     Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats", "--show-environment"},
               {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
-               "--frames", "--fps", "--light-slice"});
+               "--frames", "--fps", "--light-slice", "--detail"});
     SnapshotOptions o;
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
@@ -220,13 +220,17 @@ int runRender(int argc, char** argv) {
     o.showEnvironment = args.flag("--show-environment") || slice;
     o.environmentView.lightSlice = slice.has_value();
     if (slice) o.environmentView.sliceHeight = *slice;
+    if (auto d = args.value("--detail"); problem.empty() && d) {
+        if (*d == "viewer") o.viewerDetail = true;
+        else if (*d != "full") problem = "--detail expects full (the default) or viewer (a big plant as the viewer window draws it)";
+    }
     if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
         problem = "expects one FILE or PRESET and -o OUT.png";
     if (!problem.empty()) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
                      " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H]\n"
+                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H] [--detail full|viewer]\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
     }

@@ -3,8 +3,10 @@
 #include "app/render/curve_raster.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <future>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -74,8 +76,18 @@ struct Renderer::Impl {
     std::size_t stagedBytes = 0;
     GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
-    GLuint msaaFbo = 0, msaaColour = 0, msaaDepth = 0;
-    int msaaWidth = 0, msaaHeight = 0, msaaSamples = 0, samples = 1;
+    // The shadow map depends on the scene and the sun, not on the camera: a picture from
+    // another view with the same light uses it as it is (an orbit's still view skips a pass).
+    bool shadowValid = false;
+    glm::mat4 shadowView{0.0f};
+    // Multisampled images: one per sample count (a big plant's moving frames take 2, still
+    // pictures 4), so that letting go of a drag does not allocate them again.
+    struct Msaa {
+        GLuint fbo = 0, colour = 0, depth = 0;
+        int width = 0, height = 0, samples = 0;
+    } msaa[2];
+    GLuint msaaFbo = 0;  // the one in use
+    int samples = 1;
     int curveBatch = 1;
 
     // What was uploaded.
@@ -215,43 +227,35 @@ struct Renderer::Impl {
 
     void ensureMsaa(int w, int h, int wantSamples) {
         wantSamples = std::min(wantSamples, samples);
-        if (msaaFbo && w == msaaWidth && h == msaaHeight && wantSamples == msaaSamples) return;
-        msaaSamples = wantSamples;
-        if (!msaaFbo) {
-            glGenFramebuffers(1, &msaaFbo);
-            glGenRenderbuffers(1, &msaaColour);
-            glGenRenderbuffers(1, &msaaDepth);
+        Msaa& t = msaa[wantSamples >= 4 ? 1 : 0];
+        msaaFbo = t.fbo;
+        if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
+        if (!t.fbo) {
+            glGenFramebuffers(1, &t.fbo);
+            glGenRenderbuffers(1, &t.colour);
+            glGenRenderbuffers(1, &t.depth);
         }
-        glBindRenderbuffer(GL_RENDERBUFFER, msaaColour);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, msaaSamples, GL_RGBA8, w, h);
-        glBindRenderbuffer(GL_RENDERBUFFER, msaaDepth);
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, msaaSamples, GL_DEPTH_COMPONENT24, w, h);
-        glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaaColour);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaaDepth);
-        msaaWidth = w;
-        msaaHeight = h;
+        t.samples = wantSamples;
+        glBindRenderbuffer(GL_RENDERBUFFER, t.colour);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, t.samples, GL_RGBA8, w, h);
+        glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, t.samples, GL_DEPTH_COMPONENT24, w, h);
+        glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
+        t.width = w;
+        t.height = h;
+        msaaFbo = t.fbo;
     }
 
-    // Everything that casts or receives light, with one view-projection.
-    void drawScene(const glm::mat4& viewProj, bool depthOnly, RenderStats& stats) {
-        if (bakedIndices) {
-            GLuint p = depthOnly ? bakedDepth : bakedProgram;
-            glUseProgram(p);
-            setUniform(p, "uViewProj", viewProj);
-            setUniform(p, "uSpecular", 0.1f);
-            glBindVertexArray(baked.vao);
-            glDrawElements(GL_TRIANGLES, GLsizei(bakedIndices), GL_UNSIGNED_INT, nullptr);
-            stats.triangles += bakedIndices / 3;
-        }
-        if (lineCount) {  // depth pass and colour pass alike: a line has no surface to shade
-            glUseProgram(lineProgram);
-            setUniform(lineProgram, "uViewProj", viewProj);
-            glBindVertexArray(lines.vao);
-            glDrawArrays(GL_LINES, 0, GLsizei(2 * lineCount));
-        }
-        glBindVertexArray(0);
-    }
+    // Baked triangles and lines (numbered after the triangles) [from, to), in order.
+    void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats);
+    // A big curve's raster made on a thread for a progressive draw.
+    std::future<std::vector<std::uint8_t>> raster;
+    // Units (primitives, rows) a millisecond each part of each phase of a picture in pieces
+    // draws here (Renderer::partOf), learnt from the pieces (continueDrawFor); first guesses
+    // for software GL.
+    double rate[5][3] = {{1, 5000, 20000}, {1, 1, 1}, {20, 20, 20}, {2000, 2000, 10000}, {1, 1, 1}};
 
     void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
                      float texel) {
@@ -266,6 +270,30 @@ struct Renderer::Impl {
         setUniform(p, "uShadows", shadows ? 1 : 0);
         setUniform(p, "uShadowTexel", texel);
     }
+};
+
+// One picture: everything worked out from the camera once, then drawn in passes that a
+// progressive draw spreads over frames (beginDraw / continueDraw) and draw() runs at once.
+// The primitives of a scene are numbered: curve ribbons, then baked triangles, then lines;
+// a pass draws a range of them in that order, so a picture drawn in pieces has the pixels
+// of one drawn whole.
+struct Renderer::Pass {
+    glm::mat4 viewProj{1.0f}, lightViewProj{1.0f};
+    glm::vec3 eye{0.0f}, centre{0.0f};
+    float texel = 0, groundRadius = 0;
+    bool shadows = false, ground = false, curve = false, bigInteractive = false;
+    int width = 0, height = 0, x = 0, y = 0;
+    unsigned target = 0;
+    RenderOptions o;
+    // Progress: the phase, and how many of its units (primitives, or rows of the backdrop)
+    // are drawn; the phase and units of the last piece, for pieces sized by time.
+    enum Phase { Shadow, Raster, Backdrop, Scene, Finish };
+    int phase = Shadow;
+    std::size_t done = 0;
+    bool started = false;  // the phase's set-up is done
+    int lastPhase = Shadow, lastPart = 0;
+    std::size_t lastUnits = 0;
+    RenderStats stats;
 };
 
 Renderer::Renderer() : m(std::make_unique<Impl>()) {}
@@ -435,6 +463,8 @@ void Renderer::upload(const PreparedScene& p) {
 // Everything of a scene but its baked and line buffers: bounds, curves, counts, statistics.
 void Renderer::adopt(const PreparedScene& p) {
     Impl& s = *m;
+    m_progress.reset();  // a picture in pieces is of the scene before
+    s.shadowValid = false;
     s.bounds = p.bounds;
     s.planarCurve = p.planarCurve;
     s.curveCount = p.curve.size();
@@ -515,176 +545,308 @@ bool Renderer::continueUpload(std::size_t bytes) {
     return true;
 }
 
-void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
-                    int y) {
-    Impl& s = *m;
-    RenderStats stats = m_stats;
-    stats.curveMoved = false;
-    stats.proxy = false;
-    stats.triangles = 0;
+void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
+                    int y) const {
+    const Impl& s = *m;
+    p = Pass();
+    p.o = o;
+    p.width = width, p.height = height, p.x = x, p.y = y, p.target = target;
+    p.stats = m_stats;
+    p.stats.curveMoved = false;
+    p.stats.proxy = false;
+    p.stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
     const float radius = std::max(0.5f * glm::length(size), 1e-4f);
-    const glm::vec3 centre = s.bounds.empty ? glm::vec3(0) : s.bounds.centre();
-    const float dist = glm::length(camera.eye() - centre);
+    p.centre = s.bounds.empty ? glm::vec3(0) : s.bounds.centre();
+    const float dist = glm::length(camera.eye() - p.centre);
     // The ground reaches further than the plant: keep all of it between the clip planes
     // (llvmpipe left whole tiles unpainted where the ground crossed the near plane).
     float reach = std::max(radius, 1.3f * std::max({size.x, size.z, size.y}));
     if (s.overlayIndices && !s.overlayBounds.empty)  // the environment, which may reach further
         for (const glm::vec3& corner : {s.overlayBounds.min, s.overlayBounds.max})
-            reach = std::max(reach, glm::length(corner - centre) * 1.8f);
+            reach = std::max(reach, glm::length(corner - p.centre) * 1.8f);
     const float near = std::max(1e-3f * dist, (dist - reach * 1.5f) * 0.9f), far = dist + reach * 3;
-    const glm::mat4 viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
-    const bool curve = s.planarCurve;
+    p.viewProj = camera.projection(aspect, camera.orthographic ? 1e-3f : near, far) * camera.view();
+    p.eye = camera.eye();
+    p.curve = s.planarCurve;
     // Interactive frames of big plants skip the shadow pass, which costs a second draw.
-    const bool bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 30000 || s.proxyCount);
-    const bool shadows = o.shadows && !curve && !bigInteractive;
-    const bool ground = o.ground && !curve && !s.bounds.empty;
-
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);  // leaves and petals are double-sided
-
-    // Shadow map from the sun: an orthographic box around the plant and its ground.
-    glm::mat4 lightViewProj(1.0f);
-    const float groundRadius = std::max({size.x, size.z, size.y}) * 1.2f;
-    if (shadows) {
+    p.bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 30000 || s.proxyCount);
+    p.shadows = o.shadows && !p.curve && !p.bigInteractive;
+    p.ground = o.ground && !p.curve && !s.bounds.empty;
+    p.groundRadius = std::max({size.x, size.z, size.y}) * 1.2f;
+    if (p.shadows) {  // from the sun: an orthographic box around the plant and its ground
         glm::vec3 sun = glm::normalize(o.sunDirection);
-        float r = std::max(radius, groundRadius) * 1.05f;
+        float r = std::max(radius, p.groundRadius) * 1.05f;
         glm::vec3 up = std::fabs(sun.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-        glm::mat4 lv = glm::lookAt(centre + sun * r * 2.0f, centre, up);
-        lightViewProj = glm::ortho(-r, r, -r, r, 0.01f, r * 4.0f) * lv;
-        glBindFramebuffer(GL_FRAMEBUFFER, s.shadowFbo);
-        glViewport(0, 0, kShadowSize, kShadowSize);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, 0);  // never sample the map while writing it
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(1.5f, 2.0f);
-        RenderStats ignored;
-        s.drawScene(lightViewProj, true, ignored);
-        glDisable(GL_POLYGON_OFFSET_FILL);
+        glm::mat4 lv = glm::lookAt(p.centre + sun * r * 2.0f, p.centre, up);
+        p.lightViewProj = glm::ortho(-r, r, -r, r, 0.01f, r * 4.0f) * lv;
     }
-    const float texel = shadows ? 2.1f * std::max(radius, groundRadius) / kShadowSize : 0.0f;
+    p.texel = p.shadows ? 2.1f * std::max(radius, p.groundRadius) / kShadowSize : 0.0f;
+    p.phase = p.shadows && !(s.shadowValid && s.shadowView == p.lightViewProj) ? Pass::Shadow : Pass::Raster;
+}
 
-    // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
-    s.ensureMsaa(width, height, bigInteractive ? 2 : 4);
-    glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
-    glViewport(0, 0, width, height);
-    glClearColor(o.backgroundBottom.r, o.backgroundBottom.g, o.backgroundBottom.b, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, s.shadowTexture);
-
-    // Background gradient.
-    glDisable(GL_DEPTH_TEST);
-    glUseProgram(s.backgroundProgram);
-    setUniform(s.backgroundProgram, "uTop", o.backgroundTop);
-    setUniform(s.backgroundProgram, "uBottom", o.backgroundBottom);
-    glBindVertexArray(s.emptyVao);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glEnable(GL_DEPTH_TEST);
-
-    const glm::vec3 eye = camera.eye();
-    if (ground) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-        s.setLighting(s.groundProgram, o, eye, lightViewProj, shadows, texel);
-        setUniform(s.groundProgram, "uViewProj", viewProj);
-        setUniform(s.groundProgram, "uCentre", glm::vec3(centre.x, s.bounds.min.y, centre.z));
-        setUniform(s.groundProgram, "uRadius", groundRadius);
-        setUniform(s.groundProgram, "uGroundColour", o.groundColour);
-        glBindVertexArray(s.groundQuad.vao);
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
-    }
-
-    if (curve && s.rasterCurve) {
-        // A big curve rasterised on the CPU at this size, blended in as ink.
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
-        const bool sameCurve = s.coverageOf == s.rasterCurve.get() && s.coverageWidth == width && s.coverageHeight == height;
-        GLuint program = s.curveRasterProgram;
-        if (sameCurve && s.coverageView != viewProj && o.quality == Quality::Interactive) {
-            // Dragging: the last image moved to where its corners are in this view.
-            program = s.curveImpostorProgram;
-            stats.curveMoved = true;
-            const glm::mat4 back = glm::inverse(s.coverageView);
-            glm::vec2 corners[4];
-            for (int k = 0; k < 4; ++k) {
-                const glm::vec2 ndc(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f);
-                // The image's corner in the plane z = 0 of the old view, then in this one.
-                const glm::vec4 a = back * glm::vec4(ndc, -1.0f, 1.0f), b = back * glm::vec4(ndc, 1.0f, 1.0f);
-                const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
-                const float t = std::fabs(p1.z - p0.z) > 1e-12f ? -p0.z / (p1.z - p0.z) : 0.0f;
-                const glm::vec4 c = viewProj * glm::vec4(p0 + (p1 - p0) * t, 1.0f);
-                corners[k] = glm::vec2(c) / c.w;
-            }
-            glUseProgram(program);
-            glUniform2fv(glGetUniformLocation(program, "uCorners"), 4, glm::value_ptr(corners[0]));
-        } else if (!sameCurve || s.coverageView != viewProj) {
-            rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), viewProj, width, height,
-                           std::max(1.5f, float(height) / 400.0f), s.coverage);
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, s.coverage.data());
-            glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-            s.coverageOf = s.rasterCurve.get();
-            s.coverageView = viewProj;
-            s.coverageWidth = width;
-            s.coverageHeight = height;
-        }
-        glUseProgram(program);
-        setUniform(program, "uCoverage", 1);
-        setUniform(program, "uInk", o.curveInk);
-        glDisable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        glBindVertexArray(s.emptyVao);
-        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-        glDisable(GL_BLEND);
-        glEnable(GL_DEPTH_TEST);
-        glActiveTexture(GL_TEXTURE0);
-        stats.triangles += 2;
-        stats.curve = true;
-    }
-    if (curve && s.curveCount) {
-        const GLuint p = s.curveProgram;
+// Baked triangles [from, to) and then lines, numbered after the triangles.
+void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to,
+                               RenderStats& stats) {
+    const std::size_t tris = bakedIndices / 3;
+    if (from < tris && from < to) {
+        const std::size_t b = std::min(to, tris);
+        GLuint p = depthOnly ? bakedDepth : bakedProgram;
         glUseProgram(p);
         setUniform(p, "uViewProj", viewProj);
-        setUniform(p, "uViewport", glm::vec2(width, height));
-        setUniform(p, "uWidth", std::max(1.5f, float(height) / 400.0f));
-        setUniform(p, "uInk", o.curveInk);
-        setUniform(p, "uInstances", 1);
-        setUniform(p, "uFirst", 0);
-        setUniform(p, "uCount", int(s.curveCount));
-        setUniform(p, "uBatch", s.curveBatch);
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_BUFFER, s.curveTexture);
-        glBindVertexArray(s.curveQuad.vao);
-        const GLsizei instances = GLsizei((s.curveCount + std::size_t(s.curveBatch) - 1) / std::size_t(s.curveBatch));
-        glDrawElementsInstanced(GL_TRIANGLES, GLsizei(6 * s.curveBatch), GL_UNSIGNED_INT, nullptr, instances);
-        glActiveTexture(GL_TEXTURE0);
-        stats.triangles += 2 * s.curveCount;
-        stats.curve = true;
+        setUniform(p, "uSpecular", 0.1f);
+        glBindVertexArray(baked.vao);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - from)), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
+        stats.triangles += b - from;
     }
-    for (GLuint p : {s.bakedProgram, s.lineProgram}) s.setLighting(p, o, eye, lightViewProj, shadows, texel);
-    if (o.quality == Quality::Interactive && s.proxyCount) {
-        // A big scene while the view moves: its sketch (the still view draws it whole again).
-        glUseProgram(s.lineProgram);
-        setUniform(s.lineProgram, "uViewProj", viewProj);
-        glBindVertexArray(s.proxy.vao);
-        glDrawArrays(GL_LINES, 0, GLsizei(2 * s.proxyCount));
-        glBindVertexArray(0);
-        stats.proxy = true;
-    } else {
-        s.drawScene(viewProj, false, stats);
+    if (to > tris && lineCount) {  // depth pass and colour pass alike: a line has no surface to shade
+        const std::size_t a = std::max(from, tris) - tris, b = std::min(to - tris, lineCount);
+        if (a < b) {
+            glUseProgram(lineProgram);
+            setUniform(lineProgram, "uViewProj", viewProj);
+            glBindVertexArray(lines.vao);
+            glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
+        }
+    }
+    glBindVertexArray(0);
+}
+
+// The parts of a phase, by cost: the shadow map's triangles, then its lines; the scene's
+// curve ribbons, triangles, lines.
+int Renderer::partOf(const Pass& p) const {
+    const std::size_t curves = p.curve ? m->curveCount : 0, tris = m->bakedIndices / 3;
+    if (p.phase == Pass::Shadow) return p.done < tris ? 1 : 2;
+    if (p.phase == Pass::Scene) return p.done < curves ? 0 : p.done < curves + tris ? 1 : 2;
+    return 0;
+}
+
+std::size_t Renderer::partEnd(const Pass& p) const {
+    const std::size_t curves = p.curve ? m->curveCount : 0, tris = m->bakedIndices / 3;
+    const int part = partOf(p);
+    if (p.phase == Pass::Shadow && part == 1) return tris;
+    if (p.phase == Pass::Scene && part == 0) return curves;
+    if (p.phase == Pass::Scene && part == 1) return curves + tris;
+    return SIZE_MAX;
+}
+
+bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
+    Impl& s = *m;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);  // leaves and petals are double-sided
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    budget = wait ? SIZE_MAX : std::max<std::size_t>(budget, 1);
+    p.lastPhase = p.phase;
+    p.lastPart = 0;
+    p.lastUnits = 0;
+    const std::size_t sceneCount = s.bakedIndices / 3 + s.lineCount;
+    // The next piece of a phase of `total` units; a piece is of one part of one phase only
+    // (their costs differ: a triangle covers pixels, a line few), unless all is drawn at once.
+    auto take = [&](std::size_t total) {
+        p.lastPhase = p.phase;
+        p.lastPart = partOf(p);
+        const std::size_t end = wait ? total : std::min(total, partEnd(p));
+        const std::size_t n = std::min(end - p.done, budget);
+        p.lastUnits = n;
+        return n;
+    };
+    auto next = [&](int phase) {
+        p.phase = phase, p.done = 0, p.started = false;
+        return wait;  // go on to it now only when drawing at once
+    };
+    if (p.phase == Pass::Shadow) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s.shadowFbo);
+        glViewport(0, 0, kShadowSize, kShadowSize);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, 0);  // never sample the map while writing it
+        if (!p.started) glClear(GL_DEPTH_BUFFER_BIT), p.started = true, s.shadowValid = false;
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(1.5f, 2.0f);
+        const std::size_t n = take(sceneCount);
+        RenderStats ignored;
+        s.drawRange(p.lightViewProj, true, p.done, p.done + n, ignored);
+        p.done += n;
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        if (p.done < sceneCount) return false;
+        s.shadowValid = true;
+        s.shadowView = p.lightViewProj;
+        if (!next(Pass::Raster)) return false;
+    }
+    if (p.phase == Pass::Raster) {  // a big curve's raster, made on a thread when it may take its time
+        bool made = false;
+        if (p.curve && s.rasterCurve) {
+            const bool sameCurve = s.coverageOf == s.rasterCurve.get() && s.coverageWidth == p.width && s.coverageHeight == p.height;
+            const float lineWidth = std::max(1.5f, float(p.height) / 400.0f);
+            // Dragging moves the last raster (in the backdrop), or else one is made for this view.
+            if (!(sameCurve && s.coverageView == p.viewProj) && !(sameCurve && p.o.quality == Quality::Interactive)) {
+                std::vector<std::uint8_t> coverage;
+                if (wait) {
+                    if (s.raster.valid()) s.raster.wait();  // a progressive one's thread is done with its buffers
+                    coverage = std::move(s.coverage);
+                    rasterizeCurve(s.rasterCurve->cylinders.data(), s.rasterCurve->cylinders.size(), p.viewProj, p.width,
+                                   p.height, lineWidth, coverage);
+                } else {
+                    if (!p.started) {
+                        if (s.raster.valid()) s.raster.wait();  // an abandoned one
+                        s.raster = std::async(std::launch::async, [curve = s.rasterCurve, view = p.viewProj, w = p.width,
+                                                                   h = p.height, lineWidth] {
+                            std::vector<std::uint8_t> c;
+                            rasterizeCurve(curve->cylinders.data(), curve->cylinders.size(), view, w, h, lineWidth, c);
+                            return c;
+                        });
+                        p.started = true;
+                    }
+                    if (s.raster.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+                    coverage = s.raster.get();
+                }
+                s.coverage = std::move(coverage);
+                glActiveTexture(GL_TEXTURE1);
+                glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, p.width, p.height, 0, GL_RED, GL_UNSIGNED_BYTE, s.coverage.data());
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+                glActiveTexture(GL_TEXTURE0);
+                s.coverageOf = s.rasterCurve.get();
+                s.coverageView = p.viewProj;
+                s.coverageWidth = p.width;
+                s.coverageHeight = p.height;
+                made = true;
+            }
+        }
+        p.phase = Pass::Backdrop, p.done = 0, p.started = false;
+        if (made && !wait) return false;
+    }
+    // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
+    s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
+    glViewport(0, 0, p.width, p.height);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, s.shadowTexture);
+    if (p.phase == Pass::Backdrop) {
+        // The sky, the ground and a big curve's ink: a band of rows a piece (every pixel pays
+        // for the ground's shadow lookups).
+        const std::size_t rows = take(std::size_t(p.height));
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, GLint(p.done), p.width, GLsizei(rows));
+        p.done += rows;
+        glClearColor(p.o.backgroundBottom.r, p.o.backgroundBottom.g, p.o.backgroundBottom.b, 1);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_DEPTH_TEST);
+        glUseProgram(s.backgroundProgram);
+        setUniform(s.backgroundProgram, "uTop", p.o.backgroundTop);
+        setUniform(s.backgroundProgram, "uBottom", p.o.backgroundBottom);
+        glBindVertexArray(s.emptyVao);
+        glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        glEnable(GL_DEPTH_TEST);
+        if (p.ground) {
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glDepthMask(GL_FALSE);
+            s.setLighting(s.groundProgram, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+            setUniform(s.groundProgram, "uViewProj", p.viewProj);
+            setUniform(s.groundProgram, "uCentre", glm::vec3(p.centre.x, s.bounds.min.y, p.centre.z));
+            setUniform(s.groundProgram, "uRadius", p.groundRadius);
+            setUniform(s.groundProgram, "uGroundColour", p.o.groundColour);
+            glBindVertexArray(s.groundQuad.vao);
+            glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
+        }
+        if (p.curve && s.rasterCurve) {
+            // A big curve rasterised on the CPU, blended in as ink; while dragged, the last
+            // raster moved to where its corners are in this view.
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, s.coverageTexture);
+            GLuint program = s.curveRasterProgram;
+            if (s.coverageView != p.viewProj) {
+                program = s.curveImpostorProgram;
+                p.stats.curveMoved = true;
+                const glm::mat4 back = glm::inverse(s.coverageView);
+                glm::vec2 corners[4];
+                for (int k = 0; k < 4; ++k) {
+                    const glm::vec2 ndc(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f);
+                    // The image's corner in the plane z = 0 of the old view, then in this one.
+                    const glm::vec4 a = back * glm::vec4(ndc, -1.0f, 1.0f), b = back * glm::vec4(ndc, 1.0f, 1.0f);
+                    const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
+                    const float t = std::fabs(p1.z - p0.z) > 1e-12f ? -p0.z / (p1.z - p0.z) : 0.0f;
+                    const glm::vec4 c = p.viewProj * glm::vec4(p0 + (p1 - p0) * t, 1.0f);
+                    corners[k] = glm::vec2(c) / c.w;
+                }
+                glUseProgram(program);
+                glUniform2fv(glGetUniformLocation(program, "uCorners"), 4, glm::value_ptr(corners[0]));
+            }
+            glUseProgram(program);
+            setUniform(program, "uCoverage", 1);
+            setUniform(program, "uInk", p.o.curveInk);
+            glDisable(GL_DEPTH_TEST);
+            glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glBindVertexArray(s.emptyVao);
+            glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+            glDisable(GL_BLEND);
+            glEnable(GL_DEPTH_TEST);
+            glActiveTexture(GL_TEXTURE0);
+            p.stats.curve = true;
+        }
+        glDisable(GL_SCISSOR_TEST);
+        if (p.done < std::size_t(p.height)) return false;
+        if (p.curve && s.rasterCurve) p.stats.triangles += 2;
+        if (!next(Pass::Scene)) return false;
+    }
+    const std::size_t curveCount = p.curve ? s.curveCount : 0;
+    if (p.phase == Pass::Scene) {
+        // The primitives: curve ribbons, triangles, lines (or a big scene's sketch while the
+        // view moves: the still view draws it whole again).
+        const bool sketch = p.o.quality == Quality::Interactive && s.proxyCount;
+        const std::size_t total = curveCount + (sketch ? s.proxyCount : sceneCount);
+        const std::size_t from = p.done, to = p.done + take(total);
+        if (from < curveCount && from < to) {
+            const std::size_t b = std::min(to, curveCount);
+            const GLuint prog = s.curveProgram;
+            glUseProgram(prog);
+            setUniform(prog, "uViewProj", p.viewProj);
+            setUniform(prog, "uViewport", glm::vec2(p.width, p.height));
+            setUniform(prog, "uWidth", std::max(1.5f, float(p.height) / 400.0f));
+            setUniform(prog, "uInk", p.o.curveInk);
+            setUniform(prog, "uInstances", 1);
+            setUniform(prog, "uFirst", int(from));
+            setUniform(prog, "uCount", int(b - from));
+            setUniform(prog, "uBatch", s.curveBatch);
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_BUFFER, s.curveTexture);
+            glBindVertexArray(s.curveQuad.vao);
+            const GLsizei instances = GLsizei((b - from + std::size_t(s.curveBatch) - 1) / std::size_t(s.curveBatch));
+            glDrawElementsInstanced(GL_TRIANGLES, GLsizei(6 * s.curveBatch), GL_UNSIGNED_INT, nullptr, instances);
+            glActiveTexture(GL_TEXTURE0);
+            p.stats.triangles += 2 * (b - from);
+            p.stats.curve = true;
+        }
+        if (to > curveCount) {
+            const std::size_t a = std::max(from, curveCount) - curveCount, b = to - curveCount;
+            for (GLuint prog : {s.bakedProgram, s.lineProgram}) s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+            if (sketch) {
+                glUseProgram(s.lineProgram);
+                setUniform(s.lineProgram, "uViewProj", p.viewProj);
+                glBindVertexArray(s.proxy.vao);
+                glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
+                glBindVertexArray(0);
+                p.stats.proxy = true;
+            } else {
+                s.drawRange(p.viewProj, false, a, b, p.stats);
+            }
+        }
+        p.done = to;
+        if (p.done < total) return false;
+        p.phase = Pass::Finish;
     }
     if (s.overlayIndices) {
         // The environment, after the plant: its solid parts, then the translucent ones.
-        s.setLighting(s.overlayProgram, o, eye, lightViewProj, shadows, texel);
-        setUniform(s.overlayProgram, "uViewProj", viewProj);
+        s.setLighting(s.overlayProgram, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+        setUniform(s.overlayProgram, "uViewProj", p.viewProj);
         glBindVertexArray(s.overlay.vao);
         for (int pass = 0; pass < 3; ++pass) {  // opaque, then translucent far and near sides
             if (pass == 1) {
@@ -698,13 +860,12 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glBindVertexArray(0);
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
-        stats.triangles += s.overlayIndices / 3;
+        p.stats.triangles += s.overlayIndices / 3;
     }
-
     if (s.highlightIndices) {
         // What was picked, seen through whatever is in front of it.
-        s.setLighting(s.overlayProgram, o, eye, lightViewProj, false, texel);
-        setUniform(s.overlayProgram, "uViewProj", viewProj);
+        s.setLighting(s.overlayProgram, p.o, p.eye, p.lightViewProj, false, p.texel);
+        setUniform(s.overlayProgram, "uViewProj", p.viewProj);
         setUniform(s.overlayProgram, "uPass", 0);
         glDisable(GL_DEPTH_TEST);
         glBindVertexArray(s.highlight.vao);
@@ -712,14 +873,53 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
         glBindVertexArray(0);
         glEnable(GL_DEPTH_TEST);
     }
-
     // Resolve the multisampled image into the target.
     glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-    glBlitFramebuffer(0, 0, width, height, x, y, x + width, y + height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    m_stats = stats;
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, p.target);
+    glBlitFramebuffer(0, 0, p.width, p.height, p.x, p.y, p.x + p.width, p.y + p.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, p.target);
+    m_stats = p.stats;
+    return true;
 }
+
+void Renderer::draw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
+                    int y) {
+    m_progress.reset();  // the multisampled image is this picture's now
+    Pass p;
+    plan(p, camera, width, height, o, target, x, y);
+    step(p, SIZE_MAX, true);
+}
+
+void Renderer::beginDraw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x, int y) {
+    m_progress = std::make_unique<Pass>();
+    plan(*m_progress, camera, width, height, o, target, x, y);
+}
+
+bool Renderer::continueDraw(std::size_t primitives) {
+    if (!m_progress) return true;
+    if (!step(*m_progress, std::max<std::size_t>(primitives, 1), false)) return false;
+    m_progress.reset();
+    return true;
+}
+
+bool Renderer::continueDrawFor(double milliseconds) {
+    if (!m_progress) return true;
+    Pass& p = *m_progress;
+    double& rate = m->rate[p.phase][partOf(p)];
+    const std::size_t units = std::size_t(std::clamp(rate * milliseconds, 1.0, 1e9));
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool whole = step(p, units, false);
+    glFinish();  // a software rasteriser draws at the flush: the piece's time is until it is done
+    const double took = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    // A full piece says how fast this phase draws here (one cut short by the end of its phase
+    // carries fixed costs that would say too slow).
+    if (p.lastUnits == units && p.lastPhase != Pass::Raster)
+        m->rate[p.lastPhase][p.lastPart] = std::clamp(double(units) / std::max(took, 0.05), rate / 4, rate * 4);
+    if (whole) m_progress.reset();
+    return whole;
+}
+
+bool Renderer::drawing() const { return m_progress != nullptr; }
 
 namespace {
 std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {

@@ -25,6 +25,12 @@ enum class Quality {
     Interactive,  // the window while it moves: coarser meshes for big plants
 };
 
+// The viewer edits plants with more stems than this at Interactive detail (its still view
+// too: a big plant's picture in the window); pictures and exports take Still detail.
+constexpr std::size_t kViewerDetailStems = 20000;
+// The detail the viewer draws a plant of `stems` stems at.
+inline Quality viewerDetail(std::size_t stems) { return stems > kViewerDetailStems ? Quality::Interactive : Quality::Still; }
+
 struct RenderOptions {
     Quality quality = Quality::Still;
     glm::vec3 sunDirection{-0.45f, 0.85f, 0.35f};  // towards the sun
@@ -105,6 +111,20 @@ public:
     // default framebuffer), its lower-left corner at (x, y) there.
     void draw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0,
               int x = 0, int y = 0);
+    // The same picture a piece per frame, so that a frame waits for at most a piece of a big
+    // scene (the window's still view on software GL): beginDraw works out the camera,
+    // continueDraw draws up to `primitives` more triangles, lines and curve segments (or rows
+    // of the sky and ground; the shadow map first, then the picture) and resolves it into the target when it is whole
+    // (true then). The target keeps what it held until then; the pixels are those of draw().
+    // draw(), renderImage() and a new scene abandon a picture in pieces.
+    void beginDraw(const Camera& camera, int width, int height, const RenderOptions& options, unsigned target = 0,
+                   int x = 0, int y = 0);
+    bool continueDraw(std::size_t primitives);
+    // A piece sized to take about `milliseconds` (waited for with glFinish), from the rate the
+    // pieces before drew at; a piece is of one phase: the shadow map, the sky and ground (a
+    // band of rows), the plant.
+    bool continueDrawFor(double milliseconds);
+    bool drawing() const;
     // Draws into an offscreen image of any size (screenshots larger than the window).
     std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // RGBA pixels of framebuffer `source`, top row first.
@@ -115,7 +135,14 @@ public:
 private:
     void adopt(const PreparedScene& scene);
     struct Impl;
+    struct Pass;
+    void plan(Pass& pass, const Camera& camera, int width, int height, const RenderOptions& options, unsigned target, int x,
+              int y) const;
+    bool step(Pass& pass, std::size_t budget, bool wait);
+    int partOf(const Pass& pass) const;
+    std::size_t partEnd(const Pass& pass) const;
     std::unique_ptr<Impl> m;
+    std::unique_ptr<Pass> m_progress;  // a picture drawn in pieces (beginDraw)
     RenderStats m_stats;
 };
 

@@ -22,8 +22,10 @@ namespace sprout::viewer {
 
 struct ViewSettings {
     render::RenderOptions render;
-    float sunAzimuth = -40;   // degrees around +Y
-    float sunElevation = 55;  // degrees above the horizon
+    // The sun's sliders; they start where render.sunDirection's default is (App's
+    // constructor), so that the window lights a plant as `sprout render` does.
+    float sunAzimuth = 0;    // degrees around +Y
+    float sunElevation = 0;  // degrees above the horizon
     bool turntable = false;
     float turntableSpeed = 20;  // degrees per second
     int screenshotSize = 0;     // index into kScreenshotSizes
@@ -67,6 +69,13 @@ struct App {
     int drawWidth = 0, drawHeight = 0;  // the size the cached view was drawn at
     bool viewInteractive = false;
     std::uint64_t viewDraws = 0;  // how many times the 3D view was drawn
+    std::uint64_t sketchDraws = 0;  // of those, moving frames of a big scene drawn as its sketch
+    // The still view is drawn a piece per frame (Renderer::beginDraw), so that no frame of the
+    // panel waits for a whole big plant on a software rasteriser: the pieces are sized to take
+    // about kRefineMs each, and the view shows its last picture until the new one is whole.
+    bool refining = false;
+    double refineStart = 0;             // when the picture in pieces was begun (glfwGetTime)
+    double refineWorstMs = 0;           // the longest frame while the last picture was refined
     std::string status;        // last action's message
     double statusTime = 0;
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;

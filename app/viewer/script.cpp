@@ -10,7 +10,10 @@
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   inspect <step> <module>   the derivation inspector on that step, that module chosen; prints
 //                         what it says of the module, a line each ("inspect: ...")
-//   view-draws            prints "view_draws=N": how many times the 3D view has been drawn
+//   view-draws            prints "view_draws=N sketched=M": how many times the 3D view has been
+//                         drawn, and how many of those were a big scene's sketch (moving)
+//   refine-stats          prints "refine_ms=T worst_frame_ms=W": the time the last still view
+//                         took to draw whole (a piece a frame) and its longest frame
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
@@ -66,6 +69,7 @@ bool Script::step(App& app) {
         // animation may post newer requests meanwhile; those are not waited for).
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
+        if (app.refining) return true;  // and until the still view is whole
         if (app.exportJob.running()) return true;
         if (app.videoJob.running()) {
             if (std::string m = app.videoJob.poll(); !m.empty()) app.say(m);
@@ -151,8 +155,14 @@ bool Script::step(App& app) {
             app.needsRedraw = true;
             return true;
         }
+        if (cmd == "refine-stats") {
+            std::printf("refine_ms=%.1f worst_frame_ms=%.1f\n", app.drawMs, app.refineWorstMs);
+            std::fflush(stdout);
+            return true;
+        }
         if (cmd == "view-draws") {
-            std::printf("view_draws=%llu\n", static_cast<unsigned long long>(app.viewDraws));
+            std::printf("view_draws=%llu sketched=%llu\n", static_cast<unsigned long long>(app.viewDraws),
+                        static_cast<unsigned long long>(app.sketchDraws));
             std::fflush(stdout);
             return true;
         }

@@ -36,11 +36,12 @@ std::string cacheDir() {
 
 render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
 
-// Plants with more segments are shown at interactive detail in the window.
-constexpr std::size_t kBigPlant = 20000;
 // Bytes of a big plant's buffers copied to the GPU per frame: a few ms of memory copy on
 // software GL, so a frame with a piece of upload still keeps its 16 ms.
 constexpr std::size_t kUploadBytesPerFrame = 8u << 20;
+// The time a piece of the still view may take (Renderer::continueDraw): with the panel's own
+// few ms, a frame keeps its 16 ms while a big plant is refined.
+constexpr double kRefineMs = 8.0;
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
@@ -57,7 +58,11 @@ struct Mouse {
 
 }  // namespace
 
-App::App(std::string executable) : thumbnails(executable, cacheDir()), videoJob(executable) { applySun(); }
+App::App(std::string executable) : thumbnails(executable, cacheDir()), videoJob(executable) {
+    const glm::vec3 d = glm::normalize(view.render.sunDirection);  // left as it is until a slider moves
+    view.sunAzimuth = glm::degrees(std::atan2(d.x, d.z));
+    view.sunElevation = glm::degrees(std::asin(d.y));
+}
 
 void App::recordVideo(const std::string& kind, const std::string& path) {
     auto plant = state.plant();
@@ -267,7 +272,7 @@ int runViewer(int argc, char** argv) {
     app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
         const Geometry& g = *owner;
         auto p = std::make_shared<render::PreparedScene>();
-        render::Renderer::prepare(g, g.cylinders.size() > kBigPlant ? render::Quality::Interactive : render::Quality::Still, *p, owner);
+        render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), *p, owner);
         return p;
     };
     // Forest scenes find their species among the presets and beside the scene's file.
@@ -310,12 +315,14 @@ int runViewer(int argc, char** argv) {
             glfwSetWindowTitle(window, title.c_str());
             windowTitle = std::move(title);
         }
-        const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot;
+        const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot ||
+                               app.refining;
         if (animating || app.needsRedraw) glfwPollEvents();
         else glfwWaitEventsTimeout(0.25);  // idle: no frames, no CPU
         const double now = glfwGetTime(), dt = now - last;
         last = now;
         auto frameStart = std::chrono::steady_clock::now();
+        bool refinedPiece = false;  // a piece of the still view drawn in this frame
 
         auto previous = app.state.plant();
         if (app.state.update() && app.state.plant()->image) {
@@ -341,7 +348,7 @@ int runViewer(int argc, char** argv) {
             }
             // Big plants are edited at interactive detail (more thin stems as lines), baked on
             // the worker; screenshots re-upload at full detail.
-            app.bigPlant = g.cylinders.size() > kBigPlant;
+            app.bigPlant = render::viewerDetail(g.cylinders.size()) == render::Quality::Interactive;
             // A big plant goes to the GPU a piece per frame (the plant on screen stays until
             // the new one is whole), so that its arrival does not cost one long frame.
             if (auto prepared = app.state.plant()->prepared)
@@ -359,10 +366,8 @@ int runViewer(int argc, char** argv) {
         if ((app.highlightDirty || app.highlightOf != app.state.plant()) && !app.renderer.uploading()) app.updateHighlight();
         // The environment changes with the plant on screen: after a staged upload is whole.
         if ((app.environmentDirty || app.environmentOf != app.state.plant()) && !app.renderer.uploading()) app.updateEnvironment();
-        if (app.renderer.uploading()) {
-            app.renderer.continueUpload(kUploadBytesPerFrame);
-            app.needsRedraw = true;
-        }
+        // The plant on screen is drawn until the new one is whole (its picture is kept meanwhile).
+        if (app.renderer.uploading() && app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = true;
         app.state.tick(dt);
         app.state.autosave();
         if (now - lastDiskCheck > 1.0) {
@@ -532,17 +537,36 @@ int runViewer(int argc, char** argv) {
             }
             // Letting go of a drag refines the picture to full size and quality.
             if (interactive != app.viewInteractive) app.viewInteractive = interactive, app.needsRedraw = true;
-            if (app.needsRedraw) {
+            // A picture in pieces abandoned (a screenshot drew in between): begin it again.
+            if (app.refining && !app.renderer.drawing()) app.refining = false, app.needsRedraw = true;
+            if (app.needsRedraw && interactive) {
                 auto t0 = std::chrono::steady_clock::now();
                 // Moving: half the pixels each way (a big 2D curve keeps its full-size raster,
                 // which moves as a picture while dragged).
-                const bool half = interactive && !app.state.plant()->geometry->planarCurve;
+                const bool half = !app.state.plant()->geometry->planarCurve;
                 app.drawWidth = half ? std::max(1, vw / 2) : vw;
                 app.drawHeight = half ? std::max(1, vh / 2) : vh;
-                app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, o, app.viewFbo, 0, 0);
+                app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, o, app.viewFbo, 0, 0);  // abandons a refinement
+                app.refining = false;
                 app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-                app.needsRedraw = false;
                 ++app.viewDraws;
+                app.sketchDraws += app.renderer.stats().proxy;
+            } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
+                app.renderer.beginDraw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
+                app.refining = true;
+                app.refineStart = glfwGetTime();
+                app.refineWorstMs = 0;
+            }
+            app.needsRedraw = false;
+            if (app.refining) {
+                refinedPiece = true;
+                const bool whole = app.renderer.continueDrawFor(kRefineMs);
+                if (whole) {
+                    app.refining = false;
+                    app.drawWidth = vw, app.drawHeight = vh;
+                    app.drawMs = (glfwGetTime() - app.refineStart) * 1000;
+                    ++app.viewDraws;
+                }
             }
             // The panel covers the left part; the view goes beside it (stretched when drawn small).
             glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
@@ -561,7 +585,7 @@ int runViewer(int argc, char** argv) {
         glViewport(0, 0, fw, fh);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty()) {
+        if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && !app.refining) {
             // The whole window as the user sees it: panel and plant.
             glFinish();
             Image img;
@@ -581,6 +605,7 @@ int runViewer(int argc, char** argv) {
         }
         app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
+        if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs);
     }
     app.state.autosave(true);
     app.state.markCleanExit();

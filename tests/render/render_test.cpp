@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <thread>
 
 #include "app/headless.hpp"
 #include "app/image.hpp"
@@ -268,6 +269,71 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     EXPECT_GT(inWhole, kW * kH / 20);
     EXPECT_GT(inSketch, inWhole / 5) << "the sketch shows the plant";
     EXPECT_LT(outside, inSketch / 5) << "where the plant is";
+}
+
+// The window's still view of a big scene is drawn a piece per frame (beginDraw /
+// continueDraw): the pieces make the very pixels of one draw, for a plant with shadows and
+// leaves, a curve of ribbons and a big curve whose raster is made on a thread; until the last
+// piece the target keeps what it showed.
+TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    struct Case {
+        const char* preset;
+        int n;
+        std::size_t piece;
+    } cases[] = {{"fractal_plant", 6, 997}, {"fractal_plant", 9, 20000}, {"dragon", 10, 101}, {"dragon", 19, 5000}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.preset + std::string(" n=") + std::to_string(c.n));
+        auto g = grammarOf(std::string(*presetText(c.preset)));
+        DeriveResult d = derive(g, c.n);
+        ASSERT_TRUE(d.outcome.ok());
+        auto geometry = std::make_shared<Geometry>();
+        interpret(*d.string, *g, {c.n, 1, nullptr}, *geometry);
+        render::PreparedScene scene;
+        render::Renderer::prepare(*geometry, render::viewerDetail(geometry->cylinders.size()), scene, geometry);
+        renderer.upload(scene);
+        SnapshotOptions o = plain();
+        o.width = kW, o.height = kH;
+        o.render.shadows = true;
+        const render::Camera camera = snapshotCamera(*geometry, o);
+        const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, o.render);
+        // In pieces, into the default framebuffer, which first shows another view (so that
+        // a raster made before cannot pass for this one either).
+        render::Camera moved = camera;
+        moved.yaw += 30;
+        moved.target += glm::vec3(0.1f, 0.05f, 0) * (moved.orthographic ? moved.orthoHeight : moved.distance);
+        renderer.draw(moved, kW, kH, o.render, 0);
+        const std::vector<std::uint8_t> shown = renderer.readPixels(kW, kH, 0);
+        ASSERT_NE(shown, whole);
+        // Twice: with the shadow map drawn in pieces too (a scene uploaded anew), and with the
+        // one the last picture left (the same sun: an orbit's still view skips that pass).
+        for (bool fresh : {true, false}) {
+            if (fresh) renderer.upload(scene);
+            renderer.beginDraw(camera, kW, kH, o.render, 0);
+            int pieces = 0;
+            while (!renderer.continueDraw(c.piece)) {
+                ASSERT_LT(++pieces, 100000);
+                if (pieces == 1) {
+                    EXPECT_EQ(renderer.readPixels(kW, kH, 0), shown) << "the target keeps its picture until the new one is whole";
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));  // as frames do: the raster's thread goes on
+            }
+            EXPECT_FALSE(renderer.drawing());
+            EXPECT_GT(pieces, 2);
+            const std::vector<std::uint8_t> pieced = renderer.readPixels(kW, kH, 0);
+            ASSERT_EQ(pieced.size(), whole.size());
+            std::size_t differ = 0;
+            for (std::size_t i = 0; i < whole.size(); ++i) differ += pieced[i] != whole[i];
+            EXPECT_EQ(differ, 0u) << (fresh ? "shadow map drawn in pieces" : "shadow map kept");
+            if (fresh) renderer.draw(moved, kW, kH, o.render, 0);  // shown again
+        }
+    }
+    // A new draw abandons a picture in pieces.
+    renderer.beginDraw(render::Camera(), kW, kH, plain().render, 0);
+    renderer.renderImage(render::Camera(), kW, kH, plain().render);
+    EXPECT_FALSE(renderer.drawing());
 }
 
 TEST(Render, LeavesAreGreen) {

@@ -288,6 +288,50 @@ TEST(Window, DraggedViewKeepsDrawingAndSettlesOnTheFullPicture) {
     EXPECT_LT(differ, std::size_t(v.width) * std::size_t(v.height) / 500) << "the still view is the full picture";
 }
 
+// The same with a big plant (393 k stems): every move of the drag draws a frame, as the
+// plant's sketch; let go, the still view is drawn whole a piece per frame, and it is the
+// picture `sprout render --detail viewer` makes from the same camera (the recipe and view
+// a screenshot carries).
+TEST(Window, DraggedBigPlantKeepsDrawingAndSettlesOnTheHeadlessPicture) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("drag_big");
+    const std::string window = (dir / "window.png").string(), view = (dir / "view.png").string(),
+                      headless = (dir / "headless.png").string();
+    const auto printed = runScript(dir, "fractal_plant --size 1100x700 --screenshot " + window,
+                                   "set n 9\nwait\nview-draws\ndrag -200 30 10\nview-draws\nrelease\nwait\nview-draws\nscreenshot " +
+                                       view + "\n");
+    const long draws[3] = {viewDraws(printed, 0), viewDraws(printed, 1), viewDraws(printed, 2)};
+    ASSERT_GE(draws[0], 1);
+    EXPECT_GE(draws[1] - draws[0], 10) << "a frame drawn for every move of the drag";
+    EXPECT_EQ(draws[2], draws[1] + 1) << "letting go draws the still view once (in pieces)";
+    auto sketched = [&](size_t k) {
+        const auto at = k < printed.size() ? printed[k].find("sketched=") : std::string::npos;
+        return at == std::string::npos ? -1L : std::stol(printed[k].substr(at + 9));
+    };
+    EXPECT_GE(sketched(1) - sketched(0), 10) << "the moving frames are the plant's sketch";
+    EXPECT_EQ(sketched(2), sketched(1)) << "the still view is not";
+    // The screenshot carries the grammar (now n: 9) and the camera: render it headless at the
+    // viewer's detail, the size of the window's view.
+    ASSERT_EQ(std::system((std::string(SPROUT_BINARY) + " render " + view + " --detail viewer --size 670x700 -o " + headless +
+                           " >/dev/null")
+                              .c_str()),
+              0);
+    Image w = load(window), h = load(headless);
+    ASSERT_EQ(w.width, 1100);
+    ASSERT_EQ(h.width, 1100 - 430);
+    ASSERT_EQ(h.height, w.height);
+    std::size_t differ = 0, plant = 0;
+    for (int y = 0; y < h.height; ++y)
+        for (int x = 0; x < h.width; ++x) {
+            const std::uint8_t* a = &w.rgba[(std::size_t(y) * std::size_t(w.width) + std::size_t(x + 430)) * 4];
+            const std::uint8_t* b = &h.rgba[(std::size_t(y) * std::size_t(h.width) + std::size_t(x)) * 4];
+            differ += std::abs(int(a[0]) - int(b[0])) + std::abs(int(a[1]) - int(b[1])) + std::abs(int(a[2]) - int(b[2])) > 6;
+            plant += b[1] > b[0] + 20 && b[1] > b[2] + 20;  // green
+        }
+    EXPECT_GT(plant, std::size_t(h.width) * std::size_t(h.height) / 50) << "the plant is in the picture";
+    EXPECT_LT(differ, std::size_t(h.width) * std::size_t(h.height) / 1000) << "the still view is the headless picture";
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
