@@ -80,12 +80,13 @@ struct Renderer::Impl {
     // another view with the same light uses it as it is (an orbit's still view skips a pass).
     bool shadowValid = false;
     glm::mat4 shadowView{0.0f};
-    // Multisampled images: one per sample count (a big plant's moving frames take 2, still
-    // pictures 4), so that letting go of a drag does not allocate them again.
+    // Multisampled images: one for moving frames of big plants (2 samples), one for other
+    // moving frames (4 samples, half size in the window), one for still pictures, so that
+    // starting or letting go of a drag does not allocate them again.
     struct Msaa {
         GLuint fbo = 0, colour = 0, depth = 0;
         int width = 0, height = 0, samples = 0;
-    } msaa[2];
+    } msaa[3];
     GLuint msaaFbo = 0;  // the one in use
     int samples = 1;
     int curveBatch = 1;
@@ -225,9 +226,9 @@ struct Renderer::Impl {
         return ok;
     }
 
-    void ensureMsaa(int w, int h, int wantSamples) {
+    void ensureMsaa(int w, int h, int wantSamples, int slot) {
         wantSamples = std::min(wantSamples, samples);
-        Msaa& t = msaa[wantSamples >= 4 ? 1 : 0];
+        Msaa& t = msaa[slot];
         msaaFbo = t.fbo;
         if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
         if (!t.fbo) {
@@ -250,12 +251,16 @@ struct Renderer::Impl {
 
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
     void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats);
-    // A big curve's raster made on a thread for a progressive draw.
-    std::future<std::vector<std::uint8_t>> raster;
+    // A big curve's raster made on a thread for a progressive draw, and its time.
+    struct Raster {
+        std::vector<std::uint8_t> coverage;
+        double ms = 0;
+    };
+    std::future<Raster> raster;
     // Units (primitives, rows) a millisecond each part of each phase of a picture in pieces
     // draws here (Renderer::partOf), learnt from the pieces (continueDrawFor); first guesses
     // for software GL.
-    double rate[5][3] = {{1, 5000, 20000}, {1, 1, 1}, {20, 20, 20}, {2000, 2000, 10000}, {1, 1, 1}};
+    double rate[5][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {2000, 2000, 4000}, {1, 1, 1}};
 
     void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
                      float texel) {
@@ -293,6 +298,7 @@ struct Renderer::Pass {
     bool started = false;  // the phase's set-up is done
     int lastPhase = Shadow, lastPart = 0;
     std::size_t lastUnits = 0;
+    double spentMs = 0;  // the pieces' time (continueDrawFor), and a big curve's raster's
     RenderStats stats;
 };
 
@@ -465,6 +471,7 @@ void Renderer::adopt(const PreparedScene& p) {
     Impl& s = *m;
     m_progress.reset();  // a picture in pieces is of the scene before
     s.shadowValid = false;
+    m_lastPictureMs = 1e9;
     s.bounds = p.bounds;
     s.planarCurve = p.planarCurve;
     s.curveCount = p.curve.size();
@@ -694,14 +701,18 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
                         if (s.raster.valid()) s.raster.wait();  // an abandoned one
                         s.raster = std::async(std::launch::async, [curve = s.rasterCurve, view = p.viewProj, w = p.width,
                                                                    h = p.height, lineWidth] {
-                            std::vector<std::uint8_t> c;
-                            rasterizeCurve(curve->cylinders.data(), curve->cylinders.size(), view, w, h, lineWidth, c);
-                            return c;
+                            const auto t0 = std::chrono::steady_clock::now();
+                            Impl::Raster r;
+                            rasterizeCurve(curve->cylinders.data(), curve->cylinders.size(), view, w, h, lineWidth, r.coverage);
+                            r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                            return r;
                         });
                         p.started = true;
                     }
                     if (s.raster.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
-                    coverage = s.raster.get();
+                    Impl::Raster r = s.raster.get();
+                    coverage = std::move(r.coverage);
+                    p.spentMs += r.ms;
                 }
                 s.coverage = std::move(coverage);
                 glActiveTexture(GL_TEXTURE1);
@@ -721,7 +732,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         if (made && !wait) return false;
     }
     // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
-    s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4);
+    s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4, p.bigInteractive ? 0 : p.o.quality == Quality::Interactive ? 1 : 2);
     glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
     glViewport(0, 0, p.width, p.height);
     glActiveTexture(GL_TEXTURE0);
@@ -915,6 +926,8 @@ bool Renderer::continueDrawFor(double milliseconds) {
     // carries fixed costs that would say too slow).
     if (p.lastUnits == units && p.lastPhase != Pass::Raster)
         m->rate[p.lastPhase][p.lastPart] = std::clamp(double(units) / std::max(took, 0.05), rate / 4, rate * 4);
+    p.spentMs += took;
+    if (whole) m_lastPictureMs = p.spentMs;
     if (whole) m_progress.reset();
     return whole;
 }

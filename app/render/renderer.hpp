@@ -125,6 +125,9 @@ public:
     // band of rows), the plant.
     bool continueDrawFor(double milliseconds);
     bool drawing() const;
+    // What the last picture drawn by continueDrawFor took to draw, all pieces together (a big
+    // curve's raster included); huge until one of this scene is done.
+    double lastPictureMs() const { return m_lastPictureMs; }
     // Draws into an offscreen image of any size (screenshots larger than the window).
     std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // RGBA pixels of framebuffer `source`, top row first.
@@ -143,6 +146,7 @@ private:
     std::size_t partEnd(const Pass& pass) const;
     std::unique_ptr<Impl> m;
     std::unique_ptr<Pass> m_progress;  // a picture drawn in pieces (beginDraw)
+    double m_lastPictureMs = 1e9;
     RenderStats m_stats;
 };
 

@@ -70,12 +70,18 @@ struct App {
     bool viewInteractive = false;
     std::uint64_t viewDraws = 0;  // how many times the 3D view was drawn
     std::uint64_t sketchDraws = 0;  // of those, moving frames of a big scene drawn as its sketch
+    std::uint64_t fullMovingDraws = 0;  // and moving frames drawn at full quality (a fast scene)
     // The still view is drawn a piece per frame (Renderer::beginDraw), so that no frame of the
     // panel waits for a whole big plant on a software rasteriser: the pieces are sized to take
     // about kRefineMs each, and the view shows its last picture until the new one is whole.
     bool refining = false;
+    bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big
+    bool movingWarm = false;    // the moving view has been drawn once in this window
     double refineStart = 0;             // when the picture in pieces was begun (glfwGetTime)
     double refineWorstMs = 0;           // the longest frame while the last picture was refined
+    // Frames that drew the moving view (script frame-stats): the longest, their sum and count.
+    double movingWorstMs = 0, movingTotalMs = 0;
+    std::uint64_t movingFrames = 0;
     std::string status;        // last action's message
     double statusTime = 0;
     double uploadMs = 0, drawMs = 0, frameMs = 0, worstFrameMs = 0;
@@ -183,6 +189,7 @@ private:
     std::uint64_t m_waitFor = 0;  // the generation the last action posted
     double m_sleepUntil = 0;
     int m_dragFrames = 0;           // `drag`: frames still to move
+    bool m_thumbnailsSeen = false;  // `wait-thumbnails`: a frame has polled them since
     float m_dragYaw = 0, m_dragPitch = 0;  // degrees a frame
 };
 

@@ -10,10 +10,16 @@
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   inspect <step> <module>   the derivation inspector on that step, that module chosen; prints
 //                         what it says of the module, a line each ("inspect: ...")
-//   view-draws            prints "view_draws=N sketched=M": how many times the 3D view has been
-//                         drawn, and how many of those were a big scene's sketch (moving)
-//   refine-stats          prints "refine_ms=T worst_frame_ms=W": the time the last still view
-//                         took to draw whole (a piece a frame) and its longest frame
+//   view-draws            prints "view_draws=N sketched=M full_moving=F": how many times the 3D
+//                         view has been drawn, how many of those were a big scene's sketch
+//                         (moving) and how many moving frames were at full quality (a scene
+//                         whose still picture takes a few ms: a GPU, a small plant)
+//   wait-thumbnails       until the presets' thumbnails are made (benchmarks)
+//   frame-stats           prints "moving_worst_ms=A moving_mean_ms=B refine_ms=T
+//                         refine_worst_frame_ms=W peak_mb=M": the longest and mean frame that
+//                         moved the view since the last frame-stats, the time the last still
+//                         view took to draw whole (a piece a frame) and its longest frame, and
+//                         the process's peak memory
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
@@ -69,7 +75,7 @@ bool Script::step(App& app) {
         // animation may post newer requests meanwhile; those are not waited for).
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
-        if (app.refining) return true;  // and until the still view is whole
+        if (app.refining || app.renderer.uploading()) return true;  // and until the view shows it whole
         if (app.exportJob.running()) return true;
         if (app.videoJob.running()) {
             if (std::string m = app.videoJob.poll(); !m.empty()) app.say(m);
@@ -155,14 +161,32 @@ bool Script::step(App& app) {
             app.needsRedraw = true;
             return true;
         }
-        if (cmd == "refine-stats") {
-            std::printf("refine_ms=%.1f worst_frame_ms=%.1f\n", app.drawMs, app.refineWorstMs);
+        if (cmd == "wait-thumbnails") {  // until the presets' thumbnails are made
+            if (app.thumbnails.making() || !m_thumbnailsSeen) {
+                m_thumbnailsSeen = true;  // a frame's poll has run since: one is started if any is missing
+                m_lines.push_front(in.str());
+            }
+            return true;
+        }
+        if (cmd == "frame-stats") {
+            long peakKb = 0;  // the process's peak resident memory
+            if (std::FILE* f = std::fopen("/proc/self/status", "r")) {
+                char line[256];
+                while (std::fgets(line, sizeof line, f))
+                    if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
+                std::fclose(f);
+            }
+            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f\n",
+                        app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
+                        app.refineWorstMs, double(peakKb) / 1024);
             std::fflush(stdout);
+            app.movingWorstMs = app.movingTotalMs = 0;
+            app.movingFrames = 0;
             return true;
         }
         if (cmd == "view-draws") {
-            std::printf("view_draws=%llu sketched=%llu\n", static_cast<unsigned long long>(app.viewDraws),
-                        static_cast<unsigned long long>(app.sketchDraws));
+            std::printf("view_draws=%llu sketched=%llu full_moving=%llu\n", static_cast<unsigned long long>(app.viewDraws),
+                        static_cast<unsigned long long>(app.sketchDraws), static_cast<unsigned long long>(app.fullMovingDraws));
             std::fflush(stdout);
             return true;
         }

@@ -36,7 +36,7 @@ const Image* Thumbnails::get(const std::string& name) const {
     return it == m_images.end() ? nullptr : &it->second;
 }
 
-void Thumbnails::poll(const std::vector<std::string>& names) {
+void Thumbnails::poll(const std::vector<std::string>& names, bool start) {
     if (m_child > 0) {
         int status = 0;
         pid_t r = ::waitpid(m_child, &status, WNOHANG);
@@ -58,6 +58,7 @@ void Thumbnails::poll(const std::vector<std::string>& names) {
             m_images[name] = std::move(img);
             continue;
         }
+        if (!start) return;
         const std::string size = std::to_string(kWidth) + "x" + std::to_string(kHeight);
         std::vector<std::string> args = {m_exe, "render", name, "-o", path, "--size", size};
         std::vector<char*> argv;

@@ -15,8 +15,12 @@ class Thumbnails {
 public:
     Thumbnails(std::string executable, std::string cacheDir);
     ~Thumbnails();
-    // Starts the next missing thumbnail when none is being made; collects finished ones.
-    void poll(const std::vector<std::string>& names);
+    // Collects a finished thumbnail, and starts the next missing one when none is being made
+    // and `start` allows (the window holds them back while the view moves or refines: on two
+    // cores a thumbnail's render would take one from the software rasteriser).
+    void poll(const std::vector<std::string>& names, bool start = true);
+    // A thumbnail is being made.
+    bool making() const { return m_child > 0; }
     // The image, once made (nullptr until then).
     const Image* get(const std::string& name) const;
     // Set when the window uploaded the image to a texture.

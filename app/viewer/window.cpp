@@ -42,6 +42,8 @@ constexpr std::size_t kUploadBytesPerFrame = 8u << 20;
 // The time a piece of the still view may take (Renderer::continueDraw): with the panel's own
 // few ms, a frame keeps its 16 ms while a big plant is refined.
 constexpr double kRefineMs = 8.0;
+// A scene whose still picture took at most this long is drawn at full quality while it moves.
+constexpr double kFullWhileMovingMs = 10.0;
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
@@ -323,6 +325,7 @@ int runViewer(int argc, char** argv) {
         last = now;
         auto frameStart = std::chrono::steady_clock::now();
         bool refinedPiece = false;  // a piece of the still view drawn in this frame
+        bool moved = false;         // the moving view drawn in this frame
 
         auto previous = app.state.plant();
         if (app.state.update() && app.state.plant()->image) {
@@ -352,8 +355,9 @@ int runViewer(int argc, char** argv) {
             // A big plant goes to the GPU a piece per frame (the plant on screen stays until
             // the new one is whole), so that its arrival does not cost one long frame.
             if (auto prepared = app.state.plant()->prepared)
-                app.renderer.beginUpload(std::static_pointer_cast<const render::PreparedScene>(prepared), kUploadBytesPerFrame);
-            else app.renderer.upload(g);
+                app.sceneArrived = app.renderer.beginUpload(std::static_pointer_cast<const render::PreparedScene>(prepared),
+                                                            kUploadBytesPerFrame);
+            else app.renderer.upload(g), app.sceneArrived = true;
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (app.frameOnNextPlant) {
                 app.frame();
@@ -367,7 +371,7 @@ int runViewer(int argc, char** argv) {
         // The environment changes with the plant on screen: after a staged upload is whole.
         if ((app.environmentDirty || app.environmentOf != app.state.plant()) && !app.renderer.uploading()) app.updateEnvironment();
         // The plant on screen is drawn until the new one is whole (its picture is kept meanwhile).
-        if (app.renderer.uploading() && app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = true;
+        if (app.renderer.uploading() && app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = app.sceneArrived = true;
         app.state.tick(dt);
         app.state.autosave();
         if (now - lastDiskCheck > 1.0) {
@@ -385,7 +389,7 @@ int runViewer(int argc, char** argv) {
                 for (const auto& x : scenePresetNames()) n.push_back(x);
                 return n;
             }();
-            app.thumbnails.poll(all);
+            app.thumbnails.poll(all, !app.interacting && !app.refining && !app.state.playing() && !app.view.turntable);
         }
         if (!g_dropped.empty()) {
             std::string path = g_dropped.front();
@@ -539,19 +543,37 @@ int runViewer(int argc, char** argv) {
             if (interactive != app.viewInteractive) app.viewInteractive = interactive, app.needsRedraw = true;
             // A picture in pieces abandoned (a screenshot drew in between): begin it again.
             if (app.refining && !app.renderer.drawing()) app.refining = false, app.needsRedraw = true;
-            if (app.needsRedraw && interactive) {
+            auto drawMoving = [&] {
                 auto t0 = std::chrono::steady_clock::now();
-                // Moving: half the pixels each way (a big 2D curve keeps its full-size raster,
-                // which moves as a picture while dragged).
-                const bool half = !app.state.plant()->geometry->planarCurve;
+                // A scene whose still picture takes a few ms (a GPU, or a small plant) moves at
+                // full quality. Others: half the pixels each way (a big 2D curve keeps its
+                // full-size raster, which moves as a picture while dragged), and big ones as
+                // their sketch with no shadows.
+                const bool full = app.renderer.lastPictureMs() <= kFullWhileMovingMs;
+                render::RenderOptions m = o;
+                m.quality = full ? render::Quality::Still : render::Quality::Interactive;
+                const bool half = !full && !app.state.plant()->geometry->planarCurve;
+                app.fullMovingDraws += full;
                 app.drawWidth = half ? std::max(1, vw / 2) : vw;
                 app.drawHeight = half ? std::max(1, vh / 2) : vh;
-                app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, o, app.viewFbo, 0, 0);  // abandons a refinement
+                app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, m, app.viewFbo, 0, 0);  // abandons a refinement
                 app.refining = false;
                 app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
                 ++app.viewDraws;
                 app.sketchDraws += app.renderer.stats().proxy;
+                app.movingWarm = true;
+            };
+            // A new scene shows its moving-quality picture first when the still one takes a
+            // while (a big plant: many frames of pieces), or when the moving path has not run in
+            // this window yet (a software rasteriser compiles its shader variants on first use,
+            // which would otherwise cost the first drag a long frame).
+            const bool preview = app.needsRedraw && !interactive && app.sceneArrived && (app.bigPlant || !app.movingWarm);
+            app.sceneArrived = false;
+            if (app.needsRedraw && interactive) {
+                drawMoving();
+                moved = true;
             } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
+                if (preview) drawMoving();
                 app.renderer.beginDraw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
                 app.refining = true;
                 app.refineStart = glfwGetTime();
@@ -606,6 +628,11 @@ int runViewer(int argc, char** argv) {
         app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
         if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs);
+        if (moved) {
+            app.movingWorstMs = std::max(app.movingWorstMs, app.frameMs);
+            app.movingTotalMs += app.frameMs;
+            ++app.movingFrames;
+        }
     }
     app.state.autosave(true);
     app.state.markCleanExit();

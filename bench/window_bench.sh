@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The viewer window itself on software GL (Xvfb and Mesa's llvmpipe, as a laptop without a GPU,
+# a VM or a remote desktop gets), 1440x860: for the fractal plant at n=2 and n=10, the 10x10
+# forest and the quadratic Gosper curve at n=5, the viewer script drags the view for 60 frames
+# and lets go. Printed, from the script's frame-stats: the worst and mean frame while moving
+# (the whole frame: panel, view, swap), the time until the still view is whole again (drawn a
+# piece a frame) and the longest frame meanwhile, and the viewer's peak memory; ratios to the
+# n=2 plant measured in the same run.
+# Bars (issue 15): moving frames <= 40 ms, full quality <= 0.5 s after letting go, peak memory
+# <= 1 GB with the Gosper curve or the n=10 plant.
+#
+#   bench/window_bench.sh     (after scripts/setup.sh; needs xvfb-run)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sprout="$PWD/build/sprout"
+[ -x "$sprout" ] || { echo "build first: scripts/setup.sh" >&2; exit 1; }
+command -v xvfb-run >/dev/null || { echo "needs xvfb-run (Debian's xvfb)" >&2; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# The presets' thumbnails are made once, before the runs (a first start makes them in the
+# background, one `sprout render` at a time).
+export XDG_CACHE_HOME="$work/cache" HOME="$work"
+printf 'wait-thumbnails\nquit\n' >"$work/thumbnails.txt"
+(cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" koch --script "$work/thumbnails.txt") >/dev/null 2>&1
+run() {  # name source "set n N"|"" -> the frame-stats line after the drag
+  local script="$work/$1.txt"
+  { [ -n "$3" ] && echo "$3"; printf 'wait\nsleep 1\nwait\nframe-stats\ndrag 360 60 60\nrelease\nwait\nframe-stats\nquit\n'; } >"$script"
+  (cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" "$2" --size 1440x860 --script "$script") 2>/dev/null |
+    grep '^moving_worst_ms=' | tail -1
+}
+base=""
+ok=1
+for scene in "fractal plant n=2|fractal_plant|set n 2" "fractal plant n=10|fractal_plant|set n 10" \
+             "forest 10x10|forest|" "Gosper curve n=5|quadratic_gosper_1_11b|set n 5"; do
+  IFS='|' read -r name source set <<<"$scene"
+  line="$(run "${source}_${set// /}" "$source" "$set")"
+  [ -n "$line" ] || { echo "window_bench: $name: the viewer printed no frame-stats" >&2; exit 1; }
+  eval "$(echo "$line" | tr ' ' '\n' | sed 's/^/local_/')"
+  if [ -z "$base" ]; then base="$local_moving_worst_ms $local_refine_ms"; fi
+  read -r bw br <<<"$base"
+  awk -v n="$name" -v w="$local_moving_worst_ms" -v m="$local_moving_mean_ms" -v r="$local_refine_ms" \
+      -v rw="$local_refine_worst_frame_ms" -v p="$local_peak_mb" -v bw="$bw" -v br="$br" 'BEGIN {
+    printf "window_bench: %-20s moving frames worst %5.1f ms, mean %5.1f ms (bar 40; %.2fx n=2); full quality after letting go %4.0f ms (bar 500; %.2fx n=2), its longest frame %4.1f ms; peak memory %4.0f MB (bar 1024)\n", n, w, m, w / bw, r, r / br, rw, p }'
+  awk -v w="$local_moving_worst_ms" -v r="$local_refine_ms" -v p="$local_peak_mb" 'BEGIN { exit !(w <= 40 && r <= 500 && p <= 1024) }' || ok=0
+done
+[ "$ok" = 1 ]
