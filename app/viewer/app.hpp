@@ -77,6 +77,8 @@ struct App {
     bool refining = false;
     bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big
     bool movingWarm = false;    // the moving view has been drawn once in this window
+    double lastStillMs = 0;     // what the last still view took to draw (its pieces together)
+    glm::mat4 drawnCamera{0.0f};  // the camera (projection and view) the view was last drawn from
     double refineStart = 0;             // when the picture in pieces was begun (glfwGetTime)
     double refineWorstMs = 0;           // the longest frame while the last picture was refined
     // Frames that drew the moving view (script frame-stats): the longest, their sum and count.

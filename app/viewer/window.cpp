@@ -563,17 +563,25 @@ int runViewer(int argc, char** argv) {
                 app.sketchDraws += app.renderer.stats().proxy;
                 app.movingWarm = true;
             };
-            // A new scene shows its moving-quality picture first when the still one takes a
-            // while (a big plant: many frames of pieces), or when the moving path has not run in
-            // this window yet (a software rasteriser compiles its shader variants on first use,
-            // which would otherwise cost the first drag a long frame).
-            const bool preview = app.needsRedraw && !interactive && app.sceneArrived && (app.bigPlant || !app.movingWarm);
+            // The moving-quality picture comes first, the still one following in pieces, when
+            // the still one takes several frames: for a new scene (a big plant, or a slider
+            // dragged over a plant whose picture is slow: each new plant is seen at once) and
+            // for a camera moved by the wheel or the keys. And for the first scene, so that the
+            // moving path has run before the first drag (a software rasteriser compiles its
+            // shader variants on first use: a long frame).
+            const glm::mat4 cameraKey = app.camera.projection(float(vw) / float(vh), 1, 100) * app.camera.view();
+            const bool slow = app.lastStillMs > kRefineMs;
+            const bool cameraMoved = cameraKey != app.drawnCamera;
+            const bool arrived = app.sceneArrived;
+            const bool preview = app.needsRedraw && !interactive &&
+                                 ((arrived && (app.bigPlant || slow || !app.movingWarm)) || (cameraMoved && slow));
             app.sceneArrived = false;
+            if (app.needsRedraw) app.drawnCamera = cameraKey;
             if (app.needsRedraw && interactive) {
                 drawMoving();
                 moved = true;
             } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
-                if (preview) drawMoving();
+                if (preview) drawMoving(), moved = cameraMoved && !arrived;  // a moving frame of the wheel or keys
                 app.renderer.beginDraw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
                 app.refining = true;
                 app.refineStart = glfwGetTime();
@@ -585,6 +593,7 @@ int runViewer(int argc, char** argv) {
                 const bool whole = app.renderer.continueDrawFor(kRefineMs);
                 if (whole) {
                     app.refining = false;
+                    app.lastStillMs = app.renderer.lastPictureMs();
                     app.drawWidth = vw, app.drawHeight = vh;
                     app.drawMs = (glfwGetTime() - app.refineStart) * 1000;
                     ++app.viewDraws;
