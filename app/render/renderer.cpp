@@ -260,7 +260,7 @@ struct Renderer::Impl {
     // Units (primitives, rows) a millisecond each part of each phase of a picture in pieces
     // draws here (Renderer::partOf), learnt from the pieces (continueDrawFor); first guesses
     // for software GL.
-    double rate[5][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {2000, 2000, 4000}, {1, 1, 1}};
+    double rate[6][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {2000, 2000, 4000}, {200, 200, 200}, {1, 1, 1}};
 
     void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
                      float texel) {
@@ -292,7 +292,7 @@ struct Renderer::Pass {
     RenderOptions o;
     // Progress: the phase, and how many of its units (primitives, or rows of the backdrop)
     // are drawn; the phase and units of the last piece, for pieces sized by time.
-    enum Phase { Shadow, Raster, Backdrop, Scene, Finish };
+    enum Phase { Shadow, Raster, Backdrop, Scene, Overlay, Finish };
     int phase = Shadow;
     std::size_t done = 0;
     bool started = false;  // the phase's set-up is done
@@ -626,6 +626,7 @@ int Renderer::partOf(const Pass& p) const {
     const std::size_t curves = p.curve ? m->curveCount : 0, tris = m->bakedIndices / 3;
     if (p.phase == Pass::Shadow) return p.done < tris ? 1 : 2;
     if (p.phase == Pass::Scene) return p.done < curves ? 0 : p.done < curves + tris ? 1 : 2;
+    if (p.phase == Pass::Overlay) return int(std::min<std::size_t>(p.done / std::max<std::size_t>(m->overlayIndices / 3, 1), 2));
     return 0;
 }
 
@@ -635,6 +636,7 @@ std::size_t Renderer::partEnd(const Pass& p) const {
     if (p.phase == Pass::Shadow && part == 1) return tris;
     if (p.phase == Pass::Scene && part == 0) return curves;
     if (p.phase == Pass::Scene && part == 1) return curves + tris;
+    if (p.phase == Pass::Overlay) return std::size_t(part + 1) * (m->overlayIndices / 3);
     return SIZE_MAX;
 }
 
@@ -852,26 +854,37 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         }
         p.done = to;
         if (p.done < total) return false;
-        p.phase = Pass::Finish;
+        p.phase = Pass::Overlay, p.done = 0, p.started = false;
+        if (s.overlayIndices && !wait) return false;
     }
-    if (s.overlayIndices) {
-        // The environment, after the plant: its solid parts, then the translucent ones.
+    if (p.phase == Pass::Overlay && s.overlayIndices) {
+        // The environment, after the plant: its solid parts, then the far and the near sides
+        // of the translucent ones; each pass a range of triangles a piece (big glass covers
+        // the picture three times over). Scissored bands of rows, as the backdrop is drawn,
+        // gave other pixels on the bands' edges here (blended glass, on llvmpipe); ranges of
+        // triangles in their order give the very pixels of one draw.
+        const std::size_t tris = s.overlayIndices / 3;
         s.setLighting(s.overlayProgram, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
         setUniform(s.overlayProgram, "uViewProj", p.viewProj);
         glBindVertexArray(s.overlay.vao);
-        for (int pass = 0; pass < 3; ++pass) {  // opaque, then translucent far and near sides
-            if (pass == 1) {
+        for (std::size_t n = take(3 * tris); n > 0;) {
+            const int pass = int(p.done / tris);
+            const std::size_t first = p.done % tris, count = std::min(n, tris - first);
+            if (pass >= 1) {
                 glEnable(GL_BLEND);
                 glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
                 glDepthMask(GL_FALSE);
             }
             setUniform(s.overlayProgram, "uPass", pass);
-            glDrawElements(GL_TRIANGLES, GLsizei(s.overlayIndices), GL_UNSIGNED_INT, nullptr);
+            glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(3 * first * sizeof(std::uint32_t)));
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
+            p.done += count, n -= count;
         }
         glBindVertexArray(0);
-        glDepthMask(GL_TRUE);
-        glDisable(GL_BLEND);
-        p.stats.triangles += s.overlayIndices / 3;
+        if (p.done < 3 * tris) return false;
+        p.stats.triangles += tris;
     }
     if (s.highlightIndices) {
         // What was picked, seen through whatever is in front of it.

@@ -4,6 +4,7 @@
 // input, screenshots), panel.cpp (the ImGui panel), script.cpp (scripted actions).
 #include <cstdint>
 #include <deque>
+#include <future>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -109,11 +110,21 @@ struct App {
     void frame();  // camera on the current plant
     void resetView();
     void applySun();
-    // Draws the environment of the plant on screen as the view settings say (a new plant, a
-    // toggle); `environmentDirty` asks for it on the next frame.
+    // The environment of the plant on screen, drawn as the view settings say (a new plant, a
+    // toggle; `environmentDirty` asks for it), on a thread: a light slice of a big plant takes
+    // a few hundred ms. updateEnvironment starts a drawing when none is being made (the
+    // newest settings win: a later frame starts the next); showEnvironment puts a finished one
+    // on screen once its plant is whole there (a drawing of a plant gone since is dropped).
     void updateEnvironment();
+    void showEnvironment();
     bool environmentDirty = true;
-    std::shared_ptr<const Result> environmentOf;  // the plant whose environment is drawn
+    std::shared_ptr<const Result> environmentOf;  // the plant whose environment is drawn or being drawn
+    struct EnvironmentDrawing {
+        Mesh mesh;
+        std::string error;
+        std::shared_ptr<const Result> plant;
+    };
+    std::future<EnvironmentDrawing> environmentJob;
     bool takeScreenshot(const std::string& path, int width, int height);
     // Writes the plant on screen as .glb, .obj, .ply or .svg on a background thread.
     void exportModel(const std::string& path);

@@ -114,18 +114,31 @@ void App::applySun() {
 }
 
 void App::updateEnvironment() {
+    if (environmentJob.valid()) return;  // one at a time
     auto plant = state.plant();
-    Mesh mesh;
-    if (plant && plant->geometry && plant->environment && !plant->environment->empty() && view.showEnvironment) {
-        std::string error;
-        EnvironmentView how;
-        how.lightSlice = view.lightSlice;
-        how.sliceHeight = view.sliceHeight;
-        if (!drawEnvironment(*plant->environment, *plant->geometry, plant->seed, how, mesh, &error)) say(error);
-    }
-    renderer.setOverlay(mesh);
     environmentOf = plant;
     environmentDirty = false;
+    EnvironmentView how;
+    how.lightSlice = view.lightSlice;
+    how.sliceHeight = view.sliceHeight;
+    const bool draw = plant && plant->geometry && plant->environment && !plant->environment->empty() && view.showEnvironment;
+    environmentJob = std::async(draw ? std::launch::async : std::launch::deferred, [plant, how, draw] {
+        EnvironmentDrawing d;
+        d.plant = plant;
+        if (draw && !drawEnvironment(*plant->environment, *plant->geometry, plant->seed, how, d.mesh, &d.error) && d.error.empty())
+            d.error = "the environment could not be drawn";
+        return d;
+    });
+}
+
+void App::showEnvironment() {
+    if (!environmentJob.valid() || renderer.uploading() ||
+        environmentJob.wait_for(std::chrono::seconds(0)) == std::future_status::timeout)
+        return;
+    EnvironmentDrawing d = environmentJob.get();
+    if (d.plant != state.plant()) return;  // the next drawing is for the plant now on screen
+    if (!d.error.empty()) say(d.error);
+    renderer.setOverlay(d.mesh);
     needsRedraw = true;
 }
 
@@ -318,7 +331,7 @@ int runViewer(int argc, char** argv) {
             windowTitle = std::move(title);
         }
         const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot ||
-                               app.refining;
+                               app.refining || app.environmentJob.valid();
         if (animating || app.needsRedraw) glfwPollEvents();
         else glfwWaitEventsTimeout(0.25);  // idle: no frames, no CPU
         const double now = glfwGetTime(), dt = now - last;
@@ -369,7 +382,8 @@ int runViewer(int argc, char** argv) {
         if (app.pendingPick && app.state.plant() && app.state.plant()->pick) app.pickAt(app.pendingPick->first, app.pendingPick->second);
         if ((app.highlightDirty || app.highlightOf != app.state.plant()) && !app.renderer.uploading()) app.updateHighlight();
         // The environment changes with the plant on screen: after a staged upload is whole.
-        if ((app.environmentDirty || app.environmentOf != app.state.plant()) && !app.renderer.uploading()) app.updateEnvironment();
+        if (app.environmentDirty || app.environmentOf != app.state.plant()) app.updateEnvironment();
+        app.showEnvironment();
         // The plant on screen is drawn until the new one is whole (its picture is kept meanwhile).
         if (app.renderer.uploading() && app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = app.sceneArrived = true;
         app.state.tick(dt);

@@ -13,6 +13,7 @@
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/render/renderer.hpp"
+#include "core/environment_drawing.hpp"
 #include "core/file_kind.hpp"
 #include "core/forest.hpp"
 #include "core/ifs.hpp"
@@ -273,8 +274,9 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
 
 // The window's still view of a big scene is drawn a piece per frame (beginDraw /
 // continueDraw): the pieces make the very pixels of one draw, for a plant with shadows and
-// leaves, a curve of ribbons and a big curve whose raster is made on a thread; until the last
-// piece the target keeps what it showed.
+// leaves (also with its environment drawn: glass, and a slice of its light), a curve of
+// ribbons and a big curve whose raster is made on a thread; until the last piece the target
+// keeps what it showed.
 TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
     auto headless = headlessRenderer();
     ASSERT_TRUE(headless);
@@ -283,10 +285,16 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
         const char* preset;
         int n;
         std::size_t piece;
-    } cases[] = {{"fractal_plant", 6, 997}, {"fractal_plant", 9, 20000}, {"dragon", 10, 101}, {"dragon", 19, 5000}};
+        const char* environment = nullptr;  // appended to the preset, drawn
+    } cases[] = {{"fractal_plant", 6, 997},
+                 {"fractal_plant", 9, 20000},
+                 {"fractal_plant", 5, 50, "environment: sphere 0 40 0 25\n"},
+                 {"fractal_plant", 5, 50, "environment: light 4 0.3\n"},
+                 {"dragon", 10, 101},
+                 {"dragon", 19, 5000}};
     for (const Case& c : cases) {
-        SCOPED_TRACE(c.preset + std::string(" n=") + std::to_string(c.n));
-        auto g = grammarOf(std::string(*presetText(c.preset)));
+        SCOPED_TRACE(c.preset + std::string(" n=") + std::to_string(c.n) + (c.environment ? " with its environment" : ""));
+        auto g = grammarOf(std::string(*presetText(c.preset)) + "\n" + (c.environment ? c.environment : ""));
         DeriveResult d = derive(g, c.n);
         ASSERT_TRUE(d.outcome.ok());
         auto geometry = std::make_shared<Geometry>();
@@ -294,6 +302,14 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
         render::PreparedScene scene;
         render::Renderer::prepare(*geometry, render::viewerDetail(geometry->cylinders.size()), scene, geometry);
         renderer.upload(scene);
+        Mesh environment;
+        if (c.environment) {
+            EnvironmentView slice;
+            slice.lightSlice = true;
+            ASSERT_TRUE(drawEnvironment(g->environment, *geometry, 1, slice, environment));
+            ASSERT_GT(environment.indices.size(), 100u);
+        }
+        renderer.setOverlay(environment);
         SnapshotOptions o = plain();
         o.width = kW, o.height = kH;
         o.render.shadows = true;
