@@ -414,24 +414,6 @@ int runViewer(int argc, char** argv) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
-        if (offerRecovery) {
-            ImGui::OpenPopup("Recover unsaved grammar?");
-            offerRecovery = false;
-        }
-        if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-            ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
-            if (ImGui::Button("Restore it")) {
-                if (auto text = app.state.recoverable()) app.state.setText(*text);
-                app.state.discardRecovery();
-                ImGui::CloseCurrentPopup();
-            }
-            ImGui::SameLine();
-            if (ImGui::Button("Discard")) {
-                app.state.discardRecovery();
-                ImGui::CloseCurrentPopup();
-            }
-            ImGui::EndPopup();
-        }
         drawPanel(app);
 
         // Camera: drag to orbit (left) or pan (right / middle), wheel to zoom.
@@ -536,6 +518,27 @@ int runViewer(int argc, char** argv) {
             ImGui::End();
             ImGui::PopStyleVar(2);
         }
+        // The recovery question last in the frame: a modal opened before the panel's windows
+        // first appear fails ImGui's check for the modal that blocks them (it aborted the
+        // viewer on the first start after a crash).
+        if (offerRecovery) {
+            ImGui::OpenPopup("Recover unsaved grammar?");
+            offerRecovery = false;
+        }
+        if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+            ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
+            if (ImGui::Button("Restore it")) {
+                if (auto text = app.state.recoverable()) app.state.setText(*text);
+                app.state.discardRecovery();
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::SameLine();
+            if (ImGui::Button("Discard")) {
+                app.state.discardRecovery();
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::EndPopup();
+        }
         ImGui::Render();
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
             render::RenderOptions o = app.view.render;
@@ -620,6 +623,12 @@ int runViewer(int argc, char** argv) {
                               app.drawWidth == vw ? GL_NEAREST : GL_LINEAR);
             ++framesWithPlant;
         } else {
+            // No 3D view now (an IFS image, drawn by the panel's pass; a minimised window): a
+            // picture in pieces is left, and the view is drawn anew when it is back (its size
+            // is forgotten). Nothing to redraw meanwhile: an IFS on screen costs no frames.
+            app.refining = false;
+            app.viewWidth = app.viewHeight = 0;
+            app.needsRedraw = false;
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fw, fh);
             glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background

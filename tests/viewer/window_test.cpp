@@ -465,5 +465,28 @@ TEST(Window, TextComesBackAfterTheProcessIsKilledMidEdit) {
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), edited);
 }
 
+// The first start after a crash asks whether to take the autosaved text back, in a modal
+// popup on the first frame: it must not abort the viewer (ImGui's check for the modal that
+// blocks a newly appearing window failed when the popup was opened before the panel). The
+// viewer, with no script, is still running when `timeout` stops it.
+TEST(Window, FirstStartAfterACrashAsksAndKeepsRunning) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
+    fs::remove_all(home / "state");
+    const fs::path dir = testDir("ask_after_crash");
+    std::ofstream(dir / "crash.txt") << "text n: 2\\naxiom: F\\nF -> F[+F]F\\n\nwait\nsleep 3\ncrash\n";
+    EXPECT_NE(runUnderXvfb("koch --script " + (dir / "crash.txt").string()), 0) << "the viewer was killed";
+    const std::string rc = (dir / "rc.txt").string();
+    const std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" + home.string() +
+                            "/cache xvfb-run -a -s '-screen 0 1600x1000x24' sh -c 'timeout 4 " SPROUT_BINARY " koch; echo $? >" + rc +
+                            "' >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    std::ifstream in(rc);
+    int code = -1;
+    in >> code;
+    EXPECT_EQ(code, 124) << "running until stopped (134: aborted)";
+    fs::remove_all(home / "state");  // no question for the tests after this one
+}
+
 }  // namespace
 }  // namespace sprout
