@@ -117,6 +117,11 @@ struct App {
     // on screen once its plant is whole there (a drawing of a plant gone since is dropped).
     void updateEnvironment();
     void showEnvironment();
+    // The view shows the plant on screen whole: uploaded, its environment drawn, its still
+    // picture finished (scripts and --screenshot wait for this).
+    bool viewSettled() const {
+        return !refining && !renderer.uploading() && !environmentJob.valid() && !environmentDirty && environmentOf == state.plant();
+    }
     bool environmentDirty = true;
     std::shared_ptr<const Result> environmentOf;  // the plant whose environment is drawn or being drawn
     struct EnvironmentDrawing {

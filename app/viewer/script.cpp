@@ -75,9 +75,7 @@ bool Script::step(App& app) {
         // animation may post newer requests meanwhile; those are not waited for).
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
-        if (app.refining || app.renderer.uploading() || app.environmentJob.valid() ||
-            app.environmentDirty || app.environmentOf != app.state.plant())
-            return true;  // and until the view shows it whole, with its environment
+        if (!app.viewSettled()) return true;  // and until the view shows it whole, with its environment
         if (app.exportJob.running()) return true;
         if (app.videoJob.running()) {
             if (std::string m = app.videoJob.poll(); !m.empty()) app.say(m);

@@ -639,7 +639,7 @@ int runViewer(int argc, char** argv) {
         glViewport(0, 0, fw, fh);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && !app.refining) {
+        if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && app.viewSettled()) {
             // The whole window as the user sees it: panel and plant.
             glFinish();
             Image img;
