@@ -76,6 +76,8 @@ struct App {
     // panel waits for a whole big plant on a software rasteriser: the pieces are sized to take
     // about kRefineMs each, and the view shows its last picture until the new one is whole.
     bool refining = false;
+    std::uint64_t presentedUi = 0;  // the panel last shown (a hash of ImGui's draw data)
+    int presentedWidth = 0, presentedHeight = 0;
     bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big
     bool movingWarm = false;    // the moving view has been drawn once in this window
     double lastStillMs = 0;     // what the last still view took to draw (its pieces together)

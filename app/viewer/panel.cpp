@@ -638,8 +638,12 @@ void drawPanel(App& app) {
         for (const auto& s : p->geometry->surfaces) leaves += s.kind == SurfaceKind::Leaf;
         ImGui::TextColored(kDim, "%s modules, %zu segments, %zu leaves, %zu polygons", withThousands(p->modules).c_str(),
                            p->geometry->cylinders.size(), leaves, p->geometry->polygons.indices.size() / 3);
+        // The frame's time is read twice a second: a number that changes every frame would
+        // make every frame one to show (the window skips frames in which nothing changes).
+        static double shownFrameMs = 0, shownAt = -1;
+        if (glfwGetTime() - shownAt > 0.5) shownFrameMs = app.frameMs, shownAt = glfwGetTime();
         ImGui::TextColored(kDim, "derive %.1f ms, interpret %.1f ms, upload %.1f ms, draw %.1f ms, frame %.1f ms",
-                           p->deriveMs, p->interpretMs, app.uploadMs, app.drawMs, app.frameMs);
+                           p->deriveMs, p->interpretMs, app.uploadMs, app.drawMs, shownFrameMs);
     }
     if (!app.status.empty() && glfwGetTime() - app.statusTime < 6) ImGui::TextWrapped("%s", app.status.c_str());
     ImGui::End();

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -44,6 +45,37 @@ constexpr std::size_t kUploadBytesPerFrame = 8u << 20;
 constexpr double kRefineMs = 8.0;
 // A scene whose still picture took at most this long is drawn at full quality while it moves.
 constexpr double kFullWhileMovingMs = 10.0;
+
+// A hash of what ImGui draws in a frame (vertices, indices, commands): equal hashes, the
+// same panel on screen.
+std::uint64_t drawDataHash(const ImDrawData* d) {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    auto mix = [&h](const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        std::size_t i = 0;
+        for (std::uint64_t w; i + 8 <= n; i += 8) {
+            std::memcpy(&w, b + i, 8);
+            h = (h ^ w) * 0x100000001B3ull;
+            h ^= h >> 29;
+        }
+        for (; i < n; ++i) h = (h ^ b[i]) * 0x100000001B3ull;
+    };
+    if (!d || !d->Valid) return 0;
+    mix(&d->CmdListsCount, sizeof d->CmdListsCount);
+    for (int k = 0; k < d->CmdListsCount; ++k) {
+        const ImDrawList* l = d->CmdLists[k];
+        mix(l->VtxBuffer.Data, std::size_t(l->VtxBuffer.Size) * sizeof(ImDrawVert));
+        mix(l->IdxBuffer.Data, std::size_t(l->IdxBuffer.Size) * sizeof(ImDrawIdx));
+        for (const ImDrawCmd& c : l->CmdBuffer) {
+            mix(&c.ClipRect, sizeof c.ClipRect);
+            mix(&c.TextureId, sizeof c.TextureId);
+            mix(&c.VtxOffset, sizeof c.VtxOffset);
+            mix(&c.IdxOffset, sizeof c.IdxOffset);
+            mix(&c.ElemCount, sizeof c.ElemCount);
+        }
+    }
+    return h;
+}
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
@@ -339,6 +371,8 @@ int runViewer(int argc, char** argv) {
         auto frameStart = std::chrono::steady_clock::now();
         bool refinedPiece = false;  // a piece of the still view drawn in this frame
         bool moved = false;         // the moving view drawn in this frame
+        bool viewUpdated = false;   // the view's picture changed in this frame
+        bool present = true;        // the frame is shown (see below)
 
         auto previous = app.state.plant();
         if (app.state.update() && app.state.plant()->image) {
@@ -579,6 +613,7 @@ int runViewer(int argc, char** argv) {
                 ++app.viewDraws;
                 app.sketchDraws += app.renderer.stats().proxy;
                 app.movingWarm = true;
+                viewUpdated = true;
             };
             // The moving-quality picture comes first, the still one following in pieces, when
             // the still one takes several frames: for a new scene (a big plant, or a slider
@@ -614,13 +649,25 @@ int runViewer(int argc, char** argv) {
                     app.drawWidth = vw, app.drawHeight = vh;
                     app.drawMs = (glfwGetTime() - app.refineStart) * 1000;
                     ++app.viewDraws;
+                    viewUpdated = true;
                 }
             }
-            // The panel covers the left part; the view goes beside it (stretched when drawn small).
-            glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
-            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-            glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT,
-                              app.drawWidth == vw ? GL_NEAREST : GL_LINEAR);
+            // A frame in which nothing on screen changes is not shown: while the still view is
+            // drawn in pieces the window shows its last picture, so unless the panel changed
+            // (hover, typing, the caret), its pieces follow each other without the copy of
+            // the view and the panel's drawing (~7 ms a frame on software GL).
+            const bool refiningOn = app.refining && !viewUpdated;  // only then can a frame be left out
+            const std::uint64_t ui = refiningOn ? drawDataHash(ImGui::GetDrawData()) : 0;
+            present = !refiningOn || ui != app.presentedUi || fw != app.presentedWidth || fh != app.presentedHeight;
+            if (present) {
+                app.presentedUi = ui;  // 0 after a frame that was not hashed: the next one is shown
+                app.presentedWidth = fw, app.presentedHeight = fh;
+                // The panel covers the left part; the view goes beside it (stretched when drawn small).
+                glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
+                glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+                glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, app.panelWidth, 0, app.panelWidth + vw, vh,
+                                  GL_COLOR_BUFFER_BIT, app.drawWidth == vw ? GL_NEAREST : GL_LINEAR);
+            }
             ++framesWithPlant;
         } else {
             // No 3D view now (an IFS image, drawn by the panel's pass; a minimised window): a
@@ -629,6 +676,7 @@ int runViewer(int argc, char** argv) {
             app.refining = false;
             app.viewWidth = app.viewHeight = 0;
             app.needsRedraw = false;
+            app.presentedWidth = 0;
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, fw, fh);
             glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
@@ -637,7 +685,7 @@ int runViewer(int argc, char** argv) {
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        if (present) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && app.viewSettled()) {
             // The whole window as the user sees it: panel and plant.
@@ -652,7 +700,8 @@ int runViewer(int argc, char** argv) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
-        glfwSwapBuffers(window);
+        if (present) glfwSwapBuffers(window);
+        else glFlush();  // the piece goes on drawing meanwhile
         if (!script.empty() && framesWithPlant > 0 && !script.step(app)) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
