@@ -53,8 +53,10 @@ bool grow(const std::string& text, int n, Geometry& g) {
 Result orbit(render::Renderer& renderer, const Geometry& g, int vw, int vh) {
     Result r;
     r.segments = g.cylinders.size();
-    renderer.setDetail(render::viewerDetail(g.cylinders.size()));
-    renderer.upload(g);
+    render::PreparedScene scene;  // as the window's worker prepares it
+    render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), scene);
+    render::Renderer::prepareMoving(g, scene);
+    renderer.upload(scene);
     render::Camera camera = render::frameGeometry(g, float(vw) / float(vh), render::ViewPreset::Auto);
     render::RenderOptions o;
     o.quality = render::Quality::Interactive;

@@ -39,6 +39,7 @@ int main() {
         const Geometry& g = *owner;
             auto p = std::make_shared<render::PreparedScene>();
             render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), *p, owner);
+            render::Renderer::prepareMoving(g, *p);
             return p;
         };
         state.openText("n: 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");

@@ -20,6 +20,7 @@ namespace sprout::render {
 namespace {
 
 constexpr int kShadowSize = 2048;
+constexpr int kStaleShadowFrames = 3;
 
 // Levels of detail for stems, chosen by the stem's radius relative to the plant's size (the
 // plant is framed whole, so that says how many pixels it covers at 720p): a round mesh with
@@ -58,8 +59,8 @@ struct Renderer::Impl {
     std::size_t overlayIndices = 0;
     Buffers highlight;  // picked stems, drawn over everything (setHighlight)
     std::size_t highlightIndices = 0;
-    Buffers proxy;  // a big scene's sketch while the view moves (PreparedScene::proxy)
-    std::size_t proxyCount = 0;
+    Buffers proxy, proxyMesh;  // what a moving frame draws (PreparedScene::proxy, proxyBaked)
+    std::size_t proxyCount = 0, proxyIndices = 0;
     Bounds overlayBounds;
     std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
     std::vector<std::uint8_t> coverage;
@@ -78,8 +79,14 @@ struct Renderer::Impl {
     GLuint shadowFbo = 0, shadowTexture = 0;
     // The shadow map depends on the scene and the sun, not on the camera: a picture from
     // another view with the same light uses it as it is (an orbit's still view skips a pass).
-    bool shadowValid = false;
+    // A moving frame of a scene that changes every frame (growth playback) may use the map of
+    // an earlier scene, with the light's matrix it was made with, up to kStaleShadowFrames
+    // frames running: fewer shadow updates while it moves.
+    bool shadowMade = false;   // the map holds a scene's shadows
+    bool shadowValid = false;  // of the scene uploaded now
     glm::mat4 shadowView{0.0f};
+    float shadowTexel = 0;
+    int shadowAge = 0;  // moving frames that used it since it was made
     // Multisampled images: one for moving frames of big plants (2 samples), one for other
     // moving frames (4 samples, half size in the window), one for still pictures, so that
     // starting or letting go of a drag does not allocate them again.
@@ -153,7 +160,7 @@ struct Renderer::Impl {
 
         // Two sets of baked and line buffers: the one on screen, and the one a staged upload
         // fills a piece per frame (beginUpload) before they swap.
-        for (Buffers* b : {&baked, &bakedBack, &overlay, &highlight}) makeBaked(*b);
+        for (Buffers* b : {&baked, &bakedBack, &overlay, &highlight, &proxyMesh}) makeBaked(*b);
         for (Buffers* b : {&lines, &linesBack, &proxy}) makeLines(*b);
 
         // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
@@ -250,7 +257,9 @@ struct Renderer::Impl {
     }
 
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
-    void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats);
+    // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`.
+    void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats,
+                   bool moving = false);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;
@@ -299,6 +308,8 @@ struct Renderer::Pass {
     int lastPhase = Shadow, lastPart = 0;
     std::size_t lastUnits = 0;
     double spentMs = 0;  // the pieces' time (continueDrawFor), and a big curve's raster's
+    bool staleShadows = false;  // a moving frame with an earlier scene's shadow map
+    bool sketch = false;        // a moving frame that draws the scene's proxy
     RenderStats stats;
 };
 
@@ -336,6 +347,7 @@ const UnitMeshes& unitMeshes() {
 void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, std::shared_ptr<const Geometry> owner) {
     const UnitMeshes& meshes = unitMeshes();
     out = PreparedScene();
+    out.detail = detail;
     out.bounds = g.bounds;
     out.planarCurve = g.planarCurve;
     out.cylinders = g.cylinders.size();
@@ -420,20 +432,26 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         bakeSurface(x, mesh, b);
     }
     bakePolygons(g.polygons, b);
-    // A sketch for moving views of big scenes: every stem of the lowest branch orders (up to
-    // half the budget: the trunk and main branches whole), then an even share of the others
-    // and of the leaves, as lines.
-    const std::size_t count = g.cylinders.size() + g.surfaces.size();
-    if (!g.planarCurve && count > 2 * PreparedScene::kProxyLines) {
-        const std::size_t budget = PreparedScene::kProxyLines;
+}
+
+void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
+    out.proxy.clear();
+    out.proxyBaked = BakedMesh();
+    if (g.planarCurve) return;  // a big curve moves its raster
+    const std::size_t budget = PreparedScene::kProxyLines;
+    const std::size_t triangles = out.baked.indices.size() / 3, primitives = triangles + out.lines.size() / 8;
+    // A sketch: every stem of the lowest branch orders (up to half the budget: the trunk and
+    // main branches whole), then an even share of the others and of the leaves, as lines.
+    auto sketch = [&] {
+        const std::size_t count = g.cylinders.size() + g.surfaces.size();
         std::vector<std::size_t> perOrder(65536 + 1, 0);
         for (const auto& c : g.cylinders) ++perOrder[c.order];
         int whole = -1;  // orders 0..whole are drawn whole
         for (std::size_t sum = 0; whole + 1 < 65536 && sum + perOrder[size_t(whole + 1)] <= budget / 2;) sum += perOrder[size_t(++whole)];
         std::size_t main = 0;
         for (int k = 0; k <= whole; ++k) main += perOrder[size_t(k)];
-        const std::size_t stride = (count - main) / (budget - main) + 1;
-        out.proxy.reserve(budget * 8 + 64);
+        const std::size_t stride = count > budget ? (count - main) / (budget - main) + 1 : 1;
+        out.proxy.reserve(std::min(count, budget) * 8 + 64);
         auto line = [&](const glm::vec3& a, const glm::vec3& e, std::uint32_t colour) {
             float cf;
             std::memcpy(&cf, &colour, 4);
@@ -444,6 +462,21 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
             if (int(c.order) <= whole || ++k % stride == 0) line(c.start, c.end, c.colour);
         for (const auto& x : g.surfaces)
             if (++k % stride == 0) line(x.position, x.position + x.heading * x.size, x.colour);
+    };
+    if (out.detail == Quality::Interactive) {
+        if (primitives > budget) sketch();
+    } else if (triangles > PreparedScene::kProxyTriangles || primitives > budget) {
+        // Full detail: the interactive bake, if it has far fewer triangles or fits the budget
+        // (else its sketch).
+        PreparedScene coarse;
+        prepare(g, Quality::Interactive, coarse);
+        const std::size_t coarseTriangles = coarse.baked.indices.size() / 3;
+        if (coarseTriangles + coarse.lines.size() / 8 > budget) {
+            sketch();
+        } else if (2 * coarseTriangles < triangles || primitives > budget) {
+            out.proxyBaked = std::move(coarse.baked);
+            out.proxy = std::move(coarse.lines);
+        }
     }
 }
 
@@ -486,6 +519,13 @@ void Renderer::adopt(const PreparedScene& p) {
     s.proxyCount = p.proxy.size() / 8;
     glBindBuffer(GL_ARRAY_BUFFER, s.proxy.vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.proxy.size() * 4), p.proxy.data(), GL_STATIC_DRAW);
+    s.proxyIndices = p.proxyBaked.indices.size();
+    glBindVertexArray(s.proxyMesh.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, s.proxyMesh.vbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.proxyBaked.vertices.size() * sizeof(BakedVertex)), p.proxyBaked.vertices.data(),
+                 GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(s.proxyIndices * 4), p.proxyBaked.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
     m_stats = {};
     m_stats.cylinders = p.cylinders;
     m_stats.surfaces = p.surfaces;
@@ -561,6 +601,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.stats = m_stats;
     p.stats.curveMoved = false;
     p.stats.proxy = false;
+    p.stats.staleShadows = false;
     p.stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
@@ -578,7 +619,8 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.eye = camera.eye();
     p.curve = s.planarCurve;
     // Interactive frames of big plants skip the shadow pass, which costs a second draw.
-    p.bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 30000 || s.proxyCount);
+    p.sketch = o.quality == Quality::Interactive && (s.proxyCount || s.proxyIndices);
+    p.bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 10000 || p.sketch);
     p.shadows = o.shadows && !p.curve && !p.bigInteractive;
     p.ground = o.ground && !p.curve && !s.bounds.empty;
     p.groundRadius = std::max({size.x, size.z, size.y}) * 1.2f;
@@ -590,20 +632,31 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
         p.lightViewProj = glm::ortho(-r, r, -r, r, 0.01f, r * 4.0f) * lv;
     }
     p.texel = p.shadows ? 2.1f * std::max(radius, p.groundRadius) / kShadowSize : 0.0f;
-    p.phase = p.shadows && !(s.shadowValid && s.shadowView == p.lightViewProj) ? Pass::Shadow : Pass::Raster;
+    p.phase = Pass::Raster;
+    if (p.shadows && !(s.shadowValid && s.shadowView == p.lightViewProj)) {
+        if (o.quality == Quality::Interactive && s.shadowMade && s.shadowAge < kStaleShadowFrames) {
+            p.lightViewProj = s.shadowView;  // an earlier scene's shadows, where that map puts them
+            p.texel = s.shadowTexel;
+            p.staleShadows = p.stats.staleShadows = true;
+        } else {
+            p.phase = Pass::Shadow;
+        }
+    }
 }
 
 // Baked triangles [from, to) and then lines, numbered after the triangles.
 void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to,
-                               RenderStats& stats) {
-    const std::size_t tris = bakedIndices / 3;
+                               RenderStats& stats, bool moving) {
+    const Buffers& mesh = moving ? proxyMesh : baked;
+    const Buffers& thin = moving ? proxy : lines;
+    const std::size_t tris = (moving ? proxyIndices : bakedIndices) / 3, lineCount = moving ? proxyCount : this->lineCount;
     if (from < tris && from < to) {
         const std::size_t b = std::min(to, tris);
         GLuint p = depthOnly ? bakedDepth : bakedProgram;
         glUseProgram(p);
         setUniform(p, "uViewProj", viewProj);
         setUniform(p, "uSpecular", 0.1f);
-        glBindVertexArray(baked.vao);
+        glBindVertexArray(mesh.vao);
         glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - from)), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
         stats.triangles += b - from;
@@ -613,7 +666,7 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::s
         if (a < b) {
             glUseProgram(lineProgram);
             setUniform(lineProgram, "uViewProj", viewProj);
-            glBindVertexArray(lines.vao);
+            glBindVertexArray(thin.vao);
             glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
         }
     }
@@ -623,7 +676,8 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::s
 // The parts of a phase, by cost: the shadow map's triangles, then its lines; the scene's
 // curve ribbons, triangles, lines.
 int Renderer::partOf(const Pass& p) const {
-    const std::size_t curves = p.curve ? m->curveCount : 0, tris = m->bakedIndices / 3;
+    const std::size_t curves = p.curve ? m->curveCount : 0,
+                      tris = (p.sketch && p.phase == Pass::Scene ? m->proxyIndices : m->bakedIndices) / 3;
     if (p.phase == Pass::Shadow) return p.done < tris ? 1 : 2;
     if (p.phase == Pass::Scene) return p.done < curves ? 0 : p.done < curves + tris ? 1 : 2;
     if (p.phase == Pass::Overlay) return int(std::min<std::size_t>(p.done / std::max<std::size_t>(m->overlayIndices / 3, 1), 2));
@@ -631,7 +685,8 @@ int Renderer::partOf(const Pass& p) const {
 }
 
 std::size_t Renderer::partEnd(const Pass& p) const {
-    const std::size_t curves = p.curve ? m->curveCount : 0, tris = m->bakedIndices / 3;
+    const std::size_t curves = p.curve ? m->curveCount : 0,
+                      tris = (p.sketch && p.phase == Pass::Scene ? m->proxyIndices : m->bakedIndices) / 3;
     const int part = partOf(p);
     if (p.phase == Pass::Shadow && part == 1) return tris;
     if (p.phase == Pass::Scene && part == 0) return curves;
@@ -672,7 +727,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         glViewport(0, 0, kShadowSize, kShadowSize);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, 0);  // never sample the map while writing it
-        if (!p.started) glClear(GL_DEPTH_BUFFER_BIT), p.started = true, s.shadowValid = false;
+        if (!p.started) glClear(GL_DEPTH_BUFFER_BIT), p.started = true, s.shadowValid = s.shadowMade = false;
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.5f, 2.0f);
         const std::size_t n = take(sceneCount);
@@ -681,8 +736,10 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         p.done += n;
         glDisable(GL_POLYGON_OFFSET_FILL);
         if (p.done < sceneCount) return false;
-        s.shadowValid = true;
+        s.shadowValid = s.shadowMade = true;
         s.shadowView = p.lightViewProj;
+        s.shadowTexel = p.texel;
+        s.shadowAge = 0;
         if (!next(Pass::Raster)) return false;
     }
     if (p.phase == Pass::Raster) {  // a big curve's raster, made on a thread when it may take its time
@@ -814,8 +871,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
     if (p.phase == Pass::Scene) {
         // The primitives: curve ribbons, triangles, lines (or a big scene's sketch while the
         // view moves: the still view draws it whole again).
-        const bool sketch = p.o.quality == Quality::Interactive && s.proxyCount;
-        const std::size_t total = curveCount + (sketch ? s.proxyCount : sceneCount);
+        const std::size_t total = curveCount + (p.sketch ? s.proxyIndices / 3 + s.proxyCount : sceneCount);
         const std::size_t from = p.done, to = p.done + take(total);
         if (from < curveCount && from < to) {
             const std::size_t b = std::min(to, curveCount);
@@ -841,16 +897,8 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         if (to > curveCount) {
             const std::size_t a = std::max(from, curveCount) - curveCount, b = to - curveCount;
             for (GLuint prog : {s.bakedProgram, s.lineProgram}) s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
-            if (sketch) {
-                glUseProgram(s.lineProgram);
-                setUniform(s.lineProgram, "uViewProj", p.viewProj);
-                glBindVertexArray(s.proxy.vao);
-                glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
-                glBindVertexArray(0);
-                p.stats.proxy = true;
-            } else {
-                s.drawRange(p.viewProj, false, a, b, p.stats);
-            }
+            s.drawRange(p.viewProj, false, a, b, p.stats, p.sketch);
+            p.stats.proxy = p.sketch;
         }
         p.done = to;
         if (p.done < total) return false;
@@ -911,12 +959,14 @@ void Renderer::draw(const Camera& camera, int width, int height, const RenderOpt
     m_progress.reset();  // the multisampled image is this picture's now
     Pass p;
     plan(p, camera, width, height, o, target, x, y);
+    m->shadowAge += p.staleShadows;
     step(p, SIZE_MAX, true);
 }
 
 void Renderer::beginDraw(const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x, int y) {
     m_progress = std::make_unique<Pass>();
     plan(*m_progress, camera, width, height, o, target, x, y);
+    m->shadowAge += m_progress->staleShadows;
 }
 
 bool Renderer::continueDraw(std::size_t primitives) {

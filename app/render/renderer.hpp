@@ -49,6 +49,7 @@ struct RenderStats {
     bool curve = false;                 // drawn as a 2D curve
     bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
     bool proxy = false;                 // a big scene drawn as its sketch while the view moves
+    bool staleShadows = false;          // a moving frame drawn with an earlier scene's shadow map
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread
@@ -66,10 +67,17 @@ struct PreparedScene {
     std::size_t cylinders = 0, surfaces = 0;
     Bounds bounds;
     bool planarCurve = false;
-    // A big scene while the view moves: lines (as `lines`) for its main branches and an even
-    // share of the rest, at most kProxyLines; the full scene is drawn again when it stops.
+    Quality detail = Quality::Still;
+    // What a moving frame draws instead of the scene (Renderer::prepareMoving, the window's); the full scene is drawn again when the
+    // view stops. A big scene's sketch: lines (as `lines`) for its main branches and an even
+    // share of the rest, at most kProxyLines, when the scene has more triangles and lines than
+    // that. A scene of full detail with many triangles (over kProxyTriangles): its bake at
+    // interactive detail, triangles and lines (a software rasteriser pays for long thin
+    // triangles: a 6 k-stem plant moved at 25-35 ms a frame, 10 ms so), or that bake's sketch.
     std::vector<float> proxy;
-    static constexpr std::size_t kProxyLines = 60000;
+    BakedMesh proxyBaked;
+    static constexpr std::size_t kProxyLines = 30000;
+    static constexpr std::size_t kProxyTriangles = 4000;
 };
 
 class Renderer {
@@ -104,6 +112,10 @@ public:
     // borrows `geometry`, which must then outlive it.
     static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out,
                         std::shared_ptr<const Geometry> owner = {});
+    // What a moving frame draws instead of `scene` (prepared from `geometry`): its sketch or a
+    // coarser bake, when drawing it whole would cost more than kProxyLines primitives or
+    // kProxyTriangles full-detail triangles; nothing else. Thread-safe, no GL.
+    static void prepareMoving(const Geometry& geometry, PreparedScene& scene);
     // Detail of the next upload: Interactive draws more thin stems as lines (the window on a
     // big plant); Still (the default) is for pictures.
     void setDetail(Quality detail);

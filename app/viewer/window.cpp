@@ -320,6 +320,7 @@ int runViewer(int argc, char** argv) {
         const Geometry& g = *owner;
         auto p = std::make_shared<render::PreparedScene>();
         render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), *p, owner);
+        render::Renderer::prepareMoving(g, *p);
         return p;
     };
     // Forest scenes find their species among the presets and beside the scene's file.
@@ -406,6 +407,7 @@ int runViewer(int argc, char** argv) {
                                                             kUploadBytesPerFrame);
             else app.renderer.upload(g), app.sceneArrived = true;
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            if (std::getenv("SPROUT_DEBUG_FRAMES")) std::fprintf(stderr, "arrival: upload %.1f ms, %zu segments\n", app.uploadMs, g.cylinders.size());
             if (app.frameOnNextPlant) {
                 app.frame();
                 app.frameOnNextPlant = false;
@@ -603,6 +605,8 @@ int runViewer(int argc, char** argv) {
                 const bool full = app.renderer.lastPictureMs() <= kFullWhileMovingMs;
                 render::RenderOptions m = o;
                 m.quality = full ? render::Quality::Still : render::Quality::Interactive;
+                if (std::getenv("NOSHADOWPLAY") && app.state.playing()) m.shadows = false;
+                if (std::getenv("NOGROUNDPLAY") && app.state.playing()) m.ground = false;
                 const bool half = !full && !app.state.plant()->geometry->planarCurve;
                 app.fullMovingDraws += full;
                 app.drawWidth = half ? std::max(1, vw / 2) : vw;
@@ -709,6 +713,7 @@ int runViewer(int argc, char** argv) {
         app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
         if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs);
+        if (std::getenv("SPROUT_DEBUG_FRAMES") && moved) std::fprintf(stderr, "frame %.1f upload %.1f draw %.1f uploading %d stems %zu tris %zu proxy %d\n", app.frameMs, app.uploadMs, app.drawMs, int(app.renderer.uploading()), app.renderer.stats().cylinders, app.renderer.stats().triangles, int(app.renderer.stats().proxy));
         if (moved) {
             app.movingWorstMs = std::max(app.movingWorstMs, app.frameMs);
             app.movingTotalMs += app.frameMs;

@@ -243,7 +243,9 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     render::Renderer& renderer = headless->renderer;
     render::PreparedScene scene;
     render::Renderer::prepare(geometry, render::Quality::Interactive, scene);
+    render::Renderer::prepareMoving(geometry, scene);
     ASSERT_GT(scene.proxy.size(), 0u);
+    EXPECT_TRUE(scene.proxyBaked.indices.empty()) << "lines only";
     EXPECT_LE(scene.proxy.size() / 8, render::PreparedScene::kProxyLines + 1000);
     renderer.upload(scene);
     SnapshotOptions o = plain();
@@ -301,6 +303,7 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
         interpret(*d.string, *g, {c.n, 1, nullptr}, *geometry);
         render::PreparedScene scene;
         render::Renderer::prepare(*geometry, render::viewerDetail(geometry->cylinders.size()), scene, geometry);
+        render::Renderer::prepareMoving(*geometry, scene);
         renderer.upload(scene);
         Mesh environment;
         if (c.environment) {
@@ -350,6 +353,51 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
     renderer.beginDraw(render::Camera(), kW, kH, plain().render, 0);
     renderer.renderImage(render::Camera(), kW, kH, plain().render);
     EXPECT_FALSE(renderer.drawing());
+}
+
+// A plant of a few thousand stems at full detail has many long thin triangles, which a
+// software rasteriser pays for: while the view moves it is drawn from its interactive bake
+// (far fewer triangles, thin stems as lines), in the same place; still, whole.
+TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
+    auto g = grammarOf(std::string(*presetText("fractal_plant")) + "\nn: 6\n");  // 6,048 stems
+    DeriveResult d = derive(g, 6);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {6, 1, nullptr}, geometry);
+    render::PreparedScene scene;
+    render::Renderer::prepare(geometry, render::Quality::Still, scene);
+    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_GT(scene.baked.indices.size() / 3, render::PreparedScene::kProxyTriangles);
+    ASSERT_FALSE(scene.proxyBaked.indices.empty());
+    EXPECT_LT(2 * scene.proxyBaked.indices.size(), scene.baked.indices.size());
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    renderer.upload(scene);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    render::RenderOptions still = o.render, moving = o.render;
+    still.quality = render::Quality::Still;
+    moving.quality = render::Quality::Interactive;
+    const std::vector<std::uint8_t> coarse = renderer.renderImage(camera, kW, kH, moving);
+    EXPECT_TRUE(renderer.stats().proxy);
+    EXPECT_LT(renderer.stats().triangles, scene.baked.indices.size() / 3 / 2);
+    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
+    EXPECT_FALSE(renderer.stats().proxy);
+    const Image empty = emptyScene(o);
+    int inCoarse = 0, inWhole = 0, outside = 0;
+    for (std::size_t i = 0; i < whole.size(); i += 4) {
+        auto differs = [&](const std::vector<std::uint8_t>& img) {
+            return std::abs(int(img[i]) - int(empty.rgba[i])) + std::abs(int(img[i + 1]) - int(empty.rgba[i + 1])) +
+                       std::abs(int(img[i + 2]) - int(empty.rgba[i + 2])) > 30;
+        };
+        const bool a = differs(coarse), b = differs(whole);
+        inCoarse += a, inWhole += b, outside += a && !b;
+    }
+    EXPECT_GT(inWhole, kW * kH / 50);
+    EXPECT_GT(inCoarse, inWhole / 3) << "the coarser bake shows the plant";
+    EXPECT_LT(outside, inCoarse / 5) << "where the plant is";
 }
 
 TEST(Render, LeavesAreGreen) {
