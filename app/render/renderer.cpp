@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <future>
+#include <unordered_map>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -238,6 +239,10 @@ struct Renderer::Impl {
         Msaa& t = msaa[slot];
         msaaFbo = t.fbo;
         if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
+        // Moving frames change size with the window's resolution scale: a larger image is
+        // drawn into in part (the picture's at the lower-left corner) rather than made again.
+        if (slot < 2 && t.fbo && w <= t.width && h <= t.height && 4 * w * h >= t.width * t.height && wantSamples == t.samples)
+            return;
         if (!t.fbo) {
             glGenFramebuffers(1, &t.fbo);
             glGenRenderbuffers(1, &t.colour);
@@ -434,6 +439,44 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     bakePolygons(g.polygons, b);
 }
 
+namespace {
+
+// Vertex clustering (Rossignac and Borrel): the vertices in one cell of a grid become one
+// (their normals averaged), and triangles that collapse are dropped, so a mesh of any size
+// becomes one bounded by the grid's cells on its surface.
+BakedMesh clusterMesh(const BakedMesh& in, const Bounds& bounds, float cell) {
+    BakedMesh out;
+    std::unordered_map<std::uint64_t, std::uint32_t> cells;
+    cells.reserve(in.vertices.size() / 4 + 16);
+    std::vector<std::uint32_t> remap(in.vertices.size());
+    std::vector<glm::vec3> normals;
+    for (std::size_t i = 0; i < in.vertices.size(); ++i) {
+        const BakedVertex& v = in.vertices[i];
+        const glm::vec3 q = glm::floor((v.position - bounds.min) / cell);
+        auto axis = [](float x) { return std::uint64_t(std::clamp(x, 0.0f, float((1 << 21) - 1))); };
+        const std::uint64_t key = axis(q.x) | axis(q.y) << 21 | axis(q.z) << 42;
+        const auto [at, fresh] = cells.try_emplace(key, std::uint32_t(out.vertices.size()));
+        if (fresh) {
+            out.vertices.push_back(v);
+            normals.push_back(v.normal);
+        } else {
+            normals[at->second] += v.normal;
+        }
+        remap[i] = at->second;
+    }
+    for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+        const float l = glm::length(normals[i]);
+        if (l > 1e-12f) out.vertices[i].normal = normals[i] / l;
+    }
+    for (std::size_t t = 0; t + 2 < in.indices.size(); t += 3) {
+        const std::uint32_t a = remap[in.indices[t]], b = remap[in.indices[t + 1]], c = remap[in.indices[t + 2]];
+        if (a != b && b != c && a != c) out.indices.insert(out.indices.end(), {a, b, c});
+    }
+    return out;
+}
+
+}  // namespace
+
 void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     out.proxy.clear();
     out.proxyBaked = BakedMesh();
@@ -463,7 +506,14 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         for (const auto& x : g.surfaces)
             if (++k % stride == 0) line(x.position, x.position + x.heading * x.size, x.colour);
     };
-    if (out.detail == Quality::Interactive) {
+    if (g.polygons.indices.size() / 3 > budget / 2 && triangles > budget) {
+        // Mostly polygons (generalized cylinders, surfaces): no stems to sketch, so the mesh
+        // is clustered on a grid of 1/200 of the scene (about two pixels of a framed view at
+        // half size), with the stems' lines.
+        const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
+        out.proxyBaked = clusterMesh(out.baked, g.bounds, std::max({size.x, size.y, size.z, 1e-6f}) / 200);
+        out.proxy = out.lines;
+    } else if (out.detail == Quality::Interactive) {
         if (primitives > budget) sketch();
     } else if (triangles > PreparedScene::kProxyTriangles || primitives > budget) {
         // Full detail: the interactive bake, if it has far fewer triangles or fits the budget
@@ -620,7 +670,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.curve = s.planarCurve;
     // Interactive frames of big plants skip the shadow pass, which costs a second draw.
     p.sketch = o.quality == Quality::Interactive && (s.proxyCount || s.proxyIndices);
-    p.bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 10000 || p.sketch);
+    p.bigInteractive = o.quality == Quality::Interactive && (s.bakedIndices / 3 + s.lineCount > 4000 || p.sketch);
     p.shadows = o.shadows && !p.curve && !p.bigInteractive;
     p.ground = o.ground && !p.curve && !s.bounds.empty;
     p.groundRadius = std::max({size.x, size.z, size.y}) * 1.2f;
@@ -985,10 +1035,13 @@ bool Renderer::continueDrawFor(double milliseconds) {
     const bool whole = step(p, units, false);
     glFinish();  // a software rasteriser draws at the flush: the piece's time is until it is done
     const double took = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    // A full piece says how fast this phase draws here (one cut short by the end of its phase
-    // carries fixed costs that would say too slow).
-    if (p.lastUnits == units && p.lastPhase != Pass::Raster)
-        m->rate[p.lastPhase][p.lastPart] = std::clamp(double(units) / std::max(took, 0.05), rate / 4, rate * 4);
+    // A full piece says how fast this part draws here. One cut short by the end of its part
+    // carries fixed costs that would say too slow, unless it overran: then the rate was too
+    // high (a few hundred big leaves in one piece took 75 ms).
+    double& learnt = m->rate[p.lastPhase][p.lastPart];
+    const double measured = double(p.lastUnits) / std::max(took, 0.05);
+    if (p.lastPhase != Pass::Raster && p.lastUnits == units) learnt = std::clamp(measured, learnt / 4, learnt * 4);
+    else if (p.lastPhase != Pass::Raster && p.lastUnits > 0 && took > milliseconds) learnt = std::clamp(measured, learnt / 16, learnt);
     p.spentMs += took;
     if (whole) m_lastPictureMs = p.spentMs;
     if (whole) m_progress.reset();
@@ -996,6 +1049,8 @@ bool Renderer::continueDrawFor(double milliseconds) {
 }
 
 bool Renderer::drawing() const { return m_progress != nullptr; }
+
+bool Renderer::rasterCurve() const { return m->rasterCurve != nullptr; }
 
 namespace {
 std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {

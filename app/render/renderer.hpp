@@ -140,6 +140,8 @@ public:
     // What the last picture drawn by continueDrawFor took to draw, all pieces together (a big
     // curve's raster included); huge until one of this scene is done.
     double lastPictureMs() const { return m_lastPictureMs; }
+    // The scene is a big planar curve, drawn from a raster made at the picture's size.
+    bool rasterCurve() const;
     // Draws into an offscreen image of any size (screenshots larger than the window).
     std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // RGBA pixels of framebuffer `source`, top row first.

@@ -78,6 +78,7 @@ struct App {
     bool refining = false;
     std::uint64_t presentedUi = 0;  // the panel last shown (a hash of ImGui's draw data)
     int presentedWidth = 0, presentedHeight = 0;
+    float movingScale = 0.5f;  // the moving view's share of the pixels each way (0.25 to 0.5)
     bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big
     bool movingWarm = false;    // the moving view has been drawn once in this window
     double lastStillMs = 0;     // what the last still view took to draw (its pieces together)

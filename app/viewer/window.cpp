@@ -45,6 +45,8 @@ constexpr std::size_t kUploadBytesPerFrame = 8u << 20;
 constexpr double kRefineMs = 8.0;
 // A scene whose still picture took at most this long is drawn at full quality while it moves.
 constexpr double kFullWhileMovingMs = 10.0;
+// The frame time the moving view's resolution is fitted to (App::movingScale).
+constexpr double kMovingFrameMs = 26.0;
 
 // A hash of what ImGui draws in a frame (vertices, indices, commands): equal hashes, the
 // same panel on screen.
@@ -373,6 +375,7 @@ int runViewer(int argc, char** argv) {
         bool refinedPiece = false;  // a piece of the still view drawn in this frame
         bool moved = false;         // the moving view drawn in this frame
         bool viewUpdated = false;   // the view's picture changed in this frame
+        bool previewed = false;     // a new scene's moving-quality picture drawn in this frame
         bool present = true;        // the frame is shown (see below)
 
         auto previous = app.state.plant();
@@ -407,7 +410,6 @@ int runViewer(int argc, char** argv) {
                                                             kUploadBytesPerFrame);
             else app.renderer.upload(g), app.sceneArrived = true;
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            if (std::getenv("SPROUT_DEBUG_FRAMES")) std::fprintf(stderr, "arrival: upload %.1f ms, %zu segments\n", app.uploadMs, g.cylinders.size());
             if (app.frameOnNextPlant) {
                 app.frame();
                 app.frameOnNextPlant = false;
@@ -599,18 +601,17 @@ int runViewer(int argc, char** argv) {
             auto drawMoving = [&] {
                 auto t0 = std::chrono::steady_clock::now();
                 // A scene whose still picture takes a few ms (a GPU, or a small plant) moves at
-                // full quality. Others: half the pixels each way (a big 2D curve keeps its
-                // full-size raster, which moves as a picture while dragged), and big ones as
-                // their sketch with no shadows.
+                // full quality. Others at a fraction of the pixels each way, half at most and
+                // less while frames take too long (a big 2D curve keeps its full-size raster,
+                // which moves as a picture while dragged), and big ones as their sketch or a
+                // coarser bake with no shadow pass.
                 const bool full = app.renderer.lastPictureMs() <= kFullWhileMovingMs;
                 render::RenderOptions m = o;
                 m.quality = full ? render::Quality::Still : render::Quality::Interactive;
-                if (std::getenv("NOSHADOWPLAY") && app.state.playing()) m.shadows = false;
-                if (std::getenv("NOGROUNDPLAY") && app.state.playing()) m.ground = false;
-                const bool half = !full && !app.state.plant()->geometry->planarCurve;
+                const bool scaled = !full && !app.renderer.rasterCurve();
                 app.fullMovingDraws += full;
-                app.drawWidth = half ? std::max(1, vw / 2) : vw;
-                app.drawHeight = half ? std::max(1, vh / 2) : vh;
+                app.drawWidth = scaled ? std::max(1, int(float(vw) * app.movingScale)) : vw;
+                app.drawHeight = scaled ? std::max(1, int(float(vh) * app.movingScale)) : vh;
                 app.renderer.draw(app.camera, app.drawWidth, app.drawHeight, m, app.viewFbo, 0, 0);  // abandons a refinement
                 app.refining = false;
                 app.drawMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -637,7 +638,7 @@ int runViewer(int argc, char** argv) {
                 drawMoving();
                 moved = true;
             } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
-                if (preview) drawMoving(), moved = cameraMoved && !arrived;  // a moving frame of the wheel or keys
+                if (preview) drawMoving(), moved = cameraMoved && !arrived, previewed = true;  // moving: the wheel or keys
                 app.renderer.beginDraw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
                 app.refining = true;
                 app.refineStart = glfwGetTime();
@@ -713,7 +714,13 @@ int runViewer(int argc, char** argv) {
         app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
         if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs);
-        if (std::getenv("SPROUT_DEBUG_FRAMES") && moved) std::fprintf(stderr, "frame %.1f upload %.1f draw %.1f uploading %d stems %zu tris %zu proxy %d\n", app.frameMs, app.uploadMs, app.drawMs, int(app.renderer.uploading()), app.renderer.stats().cylinders, app.renderer.stats().triangles, int(app.renderer.stats().proxy));
+        if (moved || previewed) {
+            // The moving view's share of the pixels follows its frames' time (which goes with
+            // the pixels drawn): fewer while a frame takes longer than kMovingFrameMs, back
+            // towards half each way when quick.
+            const float k = float(std::sqrt(kMovingFrameMs / std::max(app.frameMs, 1.0)));
+            app.movingScale = std::clamp(app.movingScale * std::clamp(k, 0.6f, 1.1f), 0.25f, 0.5f);
+        }
         if (moved) {
             app.movingWorstMs = std::max(app.movingWorstMs, app.frameMs);
             app.movingTotalMs += app.frameMs;

@@ -85,6 +85,24 @@ std::unique_ptr<HeadlessRenderer> headlessRenderer() {
 
 Image emptyScene(const SnapshotOptions& o) { return render(grammarOf("axiom: X\n"), o); }
 
+// Pixels of a plant (unlike the empty scene's) in a moving frame and in the still picture,
+// and the moving frame's outside the still one's.
+struct PlantPixels {
+    int inMoving = 0, inWhole = 0, outside = 0;
+};
+PlantPixels plantPixels(const std::vector<std::uint8_t>& moving, const std::vector<std::uint8_t>& whole, const Image& empty) {
+    PlantPixels p;
+    for (std::size_t i = 0; i < whole.size(); i += 4) {
+        auto differs = [&](const std::vector<std::uint8_t>& img) {
+            return std::abs(int(img[i]) - int(empty.rgba[i])) + std::abs(int(img[i + 1]) - int(empty.rgba[i + 1])) +
+                       std::abs(int(img[i + 2]) - int(empty.rgba[i + 2])) > 30;
+        };
+        const bool a = differs(moving), b = differs(whole);
+        p.inMoving += a, p.inWhole += b, p.outside += a && !b;
+    }
+    return p;
+}
+
 TEST(Render, EveryPresetIsFramedAndNotClipped) {
     SnapshotOptions o = plain();
     Image empty = emptyScene(o);
@@ -258,20 +276,11 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     EXPECT_TRUE(renderer.stats().proxy);
     const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
     EXPECT_FALSE(renderer.stats().proxy);
-    const Image empty = emptyScene(o);
     // Plant pixels: the sketch's lie where the whole plant's are, over its outline.
-    int inSketch = 0, inWhole = 0, outside = 0;
-    for (std::size_t i = 0; i < whole.size(); i += 4) {
-        auto differs = [&](const std::vector<std::uint8_t>& img) {
-            return std::abs(int(img[i]) - int(empty.rgba[i])) + std::abs(int(img[i + 1]) - int(empty.rgba[i + 1])) +
-                       std::abs(int(img[i + 2]) - int(empty.rgba[i + 2])) > 30;
-        };
-        const bool a = differs(sketch), b = differs(whole);
-        inSketch += a, inWhole += b, outside += a && !b;
-    }
-    EXPECT_GT(inWhole, kW * kH / 20);
-    EXPECT_GT(inSketch, inWhole / 5) << "the sketch shows the plant";
-    EXPECT_LT(outside, inSketch / 5) << "where the plant is";
+    const PlantPixels p = plantPixels(sketch, whole, emptyScene(o));
+    EXPECT_GT(p.inWhole, kW * kH / 20);
+    EXPECT_GT(p.inMoving, p.inWhole / 5) << "the sketch shows the plant";
+    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
 }
 
 // The window's still view of a big scene is drawn a piece per frame (beginDraw /
@@ -385,19 +394,45 @@ TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
     EXPECT_LT(renderer.stats().triangles, scene.baked.indices.size() / 3 / 2);
     const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
     EXPECT_FALSE(renderer.stats().proxy);
-    const Image empty = emptyScene(o);
-    int inCoarse = 0, inWhole = 0, outside = 0;
-    for (std::size_t i = 0; i < whole.size(); i += 4) {
-        auto differs = [&](const std::vector<std::uint8_t>& img) {
-            return std::abs(int(img[i]) - int(empty.rgba[i])) + std::abs(int(img[i + 1]) - int(empty.rgba[i + 1])) +
-                       std::abs(int(img[i + 2]) - int(empty.rgba[i + 2])) > 30;
-        };
-        const bool a = differs(coarse), b = differs(whole);
-        inCoarse += a, inWhole += b, outside += a && !b;
-    }
-    EXPECT_GT(inWhole, kW * kH / 50);
-    EXPECT_GT(inCoarse, inWhole / 3) << "the coarser bake shows the plant";
-    EXPECT_LT(outside, inCoarse / 5) << "where the plant is";
+    const PlantPixels p = plantPixels(coarse, whole, emptyScene(o));
+    EXPECT_GT(p.inWhole, kW * kH / 50);
+    EXPECT_GT(p.inMoving, p.inWhole / 3) << "the coarser bake shows the plant";
+    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
+}
+
+// A plant drawn as generalized cylinders is one big polygon mesh, with no stems to sketch:
+// while the view moves its mesh is clustered on a grid (far fewer triangles), in the same
+// place.
+TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
+    auto g = grammarOf(std::string(*presetText("cpfg_abop_2_8_ternary_gc")));
+    const int n = g->settings.iterations;
+    DeriveResult d = derive(g, n);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {n, 1, nullptr}, geometry);
+    render::PreparedScene scene;
+    render::Renderer::prepare(geometry, render::Quality::Still, scene);
+    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_GT(geometry.polygons.indices.size() / 3, 100000u);
+    ASSERT_FALSE(scene.proxyBaked.indices.empty());
+    EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "far fewer triangles";
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    renderer.upload(scene);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    render::RenderOptions still = o.render, moving = o.render;
+    still.quality = render::Quality::Still;
+    moving.quality = render::Quality::Interactive;
+    const std::vector<std::uint8_t> clustered = renderer.renderImage(camera, kW, kH, moving);
+    EXPECT_TRUE(renderer.stats().proxy);
+    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
+    const PlantPixels p = plantPixels(clustered, whole, emptyScene(o));
+    EXPECT_GT(p.inWhole, kW * kH / 50);
+    EXPECT_GT(p.inMoving, p.inWhole / 3) << "the clustered mesh shows the plant";
+    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
 }
 
 TEST(Render, LeavesAreGreen) {
