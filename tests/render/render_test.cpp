@@ -103,6 +103,36 @@ PlantPixels plantPixels(const std::vector<std::uint8_t>& moving, const std::vect
     return p;
 }
 
+// A scene prepared as the window's worker prepares it (its proxy for moving frames too),
+// drawn headless from the snapshot camera as a moving frame and as the still picture.
+struct MovingAndStill {
+    bool ok = false;
+    bool movingProxy = false, stillProxy = false;  // what each drew instead of the scene
+    std::size_t movingTriangles = 0;
+    PlantPixels pixels;
+};
+MovingAndStill drawMovingAndStill(const Geometry& geometry, const render::PreparedScene& scene) {
+    MovingAndStill r;
+    auto headless = headlessRenderer();
+    if (!headless) return r;
+    render::Renderer& renderer = headless->renderer;
+    renderer.upload(scene);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    render::RenderOptions still = o.render, moving = o.render;
+    still.quality = render::Quality::Still;
+    moving.quality = render::Quality::Interactive;
+    const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, moving);
+    r.movingProxy = renderer.stats().proxy;
+    r.movingTriangles = renderer.stats().triangles;
+    const std::vector<std::uint8_t> b = renderer.renderImage(camera, kW, kH, still);
+    r.stillProxy = renderer.stats().proxy;
+    r.pixels = plantPixels(a, b, emptyScene(o));
+    r.ok = true;
+    return r;
+}
+
 TEST(Render, EveryPresetIsFramedAndNotClipped) {
     SnapshotOptions o = plain();
     Image empty = emptyScene(o);
@@ -256,31 +286,20 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
     interpret(*d.string, *g, {9, 1, nullptr}, geometry);
-    auto headless = headlessRenderer();
-    ASSERT_TRUE(headless);
-    render::Renderer& renderer = headless->renderer;
     render::PreparedScene scene;
     render::Renderer::prepare(geometry, render::Quality::Interactive, scene);
     render::Renderer::prepareMoving(geometry, scene);
     ASSERT_GT(scene.proxy.size(), 0u);
     EXPECT_TRUE(scene.proxyBaked.indices.empty()) << "lines only";
     EXPECT_LE(scene.proxy.size() / 8, render::PreparedScene::kProxyLines + 1000);
-    renderer.upload(scene);
-    SnapshotOptions o = plain();
-    o.width = kW, o.height = kH;
-    render::Camera camera = snapshotCamera(geometry, o);
-    render::RenderOptions still = o.render, moving = o.render;
-    still.quality = render::Quality::Still;
-    moving.quality = render::Quality::Interactive;
-    const std::vector<std::uint8_t> sketch = renderer.renderImage(camera, kW, kH, moving);
-    EXPECT_TRUE(renderer.stats().proxy);
-    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
-    EXPECT_FALSE(renderer.stats().proxy);
+    const MovingAndStill r = drawMovingAndStill(geometry, scene);
+    ASSERT_TRUE(r.ok);
+    EXPECT_TRUE(r.movingProxy);
+    EXPECT_FALSE(r.stillProxy);
     // Plant pixels: the sketch's lie where the whole plant's are, over its outline.
-    const PlantPixels p = plantPixels(sketch, whole, emptyScene(o));
-    EXPECT_GT(p.inWhole, kW * kH / 20);
-    EXPECT_GT(p.inMoving, p.inWhole / 5) << "the sketch shows the plant";
-    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
+    EXPECT_GT(r.pixels.inWhole, kW * kH / 20);
+    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 5) << "the sketch shows the plant";
+    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
 }
 
 // The window's still view of a big scene is drawn a piece per frame (beginDraw /
@@ -379,25 +398,14 @@ TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
     ASSERT_GT(scene.baked.indices.size() / 3, render::PreparedScene::kProxyTriangles);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(2 * scene.proxyBaked.indices.size(), scene.baked.indices.size());
-    auto headless = headlessRenderer();
-    ASSERT_TRUE(headless);
-    render::Renderer& renderer = headless->renderer;
-    renderer.upload(scene);
-    SnapshotOptions o = plain();
-    o.width = kW, o.height = kH;
-    const render::Camera camera = snapshotCamera(geometry, o);
-    render::RenderOptions still = o.render, moving = o.render;
-    still.quality = render::Quality::Still;
-    moving.quality = render::Quality::Interactive;
-    const std::vector<std::uint8_t> coarse = renderer.renderImage(camera, kW, kH, moving);
-    EXPECT_TRUE(renderer.stats().proxy);
-    EXPECT_LT(renderer.stats().triangles, scene.baked.indices.size() / 3 / 2);
-    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
-    EXPECT_FALSE(renderer.stats().proxy);
-    const PlantPixels p = plantPixels(coarse, whole, emptyScene(o));
-    EXPECT_GT(p.inWhole, kW * kH / 50);
-    EXPECT_GT(p.inMoving, p.inWhole / 3) << "the coarser bake shows the plant";
-    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
+    const MovingAndStill r = drawMovingAndStill(geometry, scene);
+    ASSERT_TRUE(r.ok);
+    EXPECT_TRUE(r.movingProxy);
+    EXPECT_FALSE(r.stillProxy);
+    EXPECT_LT(r.movingTriangles, scene.baked.indices.size() / 3 / 2);
+    EXPECT_GT(r.pixels.inWhole, kW * kH / 50);
+    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 3) << "the coarser bake shows the plant";
+    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
 }
 
 // A plant drawn as generalized cylinders is one big polygon mesh, with no stems to sketch:
@@ -416,23 +424,13 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
     ASSERT_GT(geometry.polygons.indices.size() / 3, 100000u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "far fewer triangles";
-    auto headless = headlessRenderer();
-    ASSERT_TRUE(headless);
-    render::Renderer& renderer = headless->renderer;
-    renderer.upload(scene);
-    SnapshotOptions o = plain();
-    o.width = kW, o.height = kH;
-    const render::Camera camera = snapshotCamera(geometry, o);
-    render::RenderOptions still = o.render, moving = o.render;
-    still.quality = render::Quality::Still;
-    moving.quality = render::Quality::Interactive;
-    const std::vector<std::uint8_t> clustered = renderer.renderImage(camera, kW, kH, moving);
-    EXPECT_TRUE(renderer.stats().proxy);
-    const std::vector<std::uint8_t> whole = renderer.renderImage(camera, kW, kH, still);
-    const PlantPixels p = plantPixels(clustered, whole, emptyScene(o));
-    EXPECT_GT(p.inWhole, kW * kH / 50);
-    EXPECT_GT(p.inMoving, p.inWhole / 3) << "the clustered mesh shows the plant";
-    EXPECT_LT(p.outside, p.inMoving / 5) << "where the plant is";
+    const MovingAndStill r = drawMovingAndStill(geometry, scene);
+    ASSERT_TRUE(r.ok);
+    EXPECT_TRUE(r.movingProxy);
+    EXPECT_FALSE(r.stillProxy);
+    EXPECT_GT(r.pixels.inWhole, kW * kH / 50);
+    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 3) << "the clustered mesh shows the plant";
+    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
 }
 
 TEST(Render, LeavesAreGreen) {
