@@ -9,7 +9,7 @@
 # Bars (issue 15): moving frames <= 40 ms, full quality <= 0.5 s after letting go, peak memory
 # <= 1 GB with the Gosper curve or the n=10 plant.
 #
-#   bench/window_bench.sh     (after scripts/setup.sh; needs xvfb-run)
+#   bench/window_bench.sh [--presets]     (after scripts/setup.sh; needs xvfb-run)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sprout="$PWD/build/sprout"
@@ -43,4 +43,21 @@ for scene in "fractal plant n=2|fractal_plant|set n 2" "fractal plant n=10|fract
     printf "window_bench: %-20s moving frames worst %5.1f ms, mean %5.1f ms (bar 40; %.2fx n=2); full quality after letting go %4.0f ms (bar 500; %.2fx n=2), its longest frame %4.1f ms; peak memory %4.0f MB (bar 1024)\n", n, w, m, w / bw, r, r / br, rw, p }'
   awk -v w="$local_moving_worst_ms" -v r="$local_refine_ms" -v p="$local_peak_mb" 'BEGIN { exit !(w <= 40 && r <= 500 && p <= 1024) }' || ok=0
 done
+# With --presets: every built-in preset, each dragged for 20 frames and let go; the five
+# slowest moving frames, and how many presets moved within the bar.
+if [ "${1:-}" = "--presets" ]; then
+  printf 'wait\nsleep 0.5\nwait\nframe-stats\ndrag 200 30 20\nrelease\nwait\nframe-stats\nquit\n' >"$work/preset.txt"
+  : >"$work/presets.txt"
+  for p in $("$sprout" presets); do
+    line="$( (cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" "$p" --size 1440x860 --script "$work/preset.txt") 2>/dev/null |
+             grep '^moving_worst_ms=' | tail -1 || true)"
+    echo "$p ${line:-moving_worst_ms=999 (no frame-stats)}" >>"$work/presets.txt"
+  done
+  total=$(wc -l <"$work/presets.txt")
+  within=$(awk '{ split($2, a, "="); if (a[2] + 0 <= 40) n++ } END { print n + 0 }' "$work/presets.txt")
+  echo "window_bench: all $total presets: $within moved within 40 ms a frame; the slowest:"
+  awk '{ split($2, a, "="); split($4, r, "="); printf "%8.1f ms moving at worst, full quality %6.0f ms  %s\n", a[2], r[2], $1 }' "$work/presets.txt" |
+    sort -rn | head -5 | sed 's/^/  /'
+  [ "$within" = "$total" ] || ok=0
+fi
 [ "$ok" = 1 ]

@@ -274,7 +274,7 @@ struct Renderer::Impl {
     // Units (primitives, rows) a millisecond each part of each phase of a picture in pieces
     // draws here (Renderer::partOf), learnt from the pieces (continueDrawFor); first guesses
     // for software GL.
-    double rate[6][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {2000, 2000, 4000}, {200, 200, 200}, {1, 1, 1}};
+    double rate[6][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {500, 500, 4000}, {50, 50, 50}, {1, 1, 1}};
 
     void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
                      float texel) {
@@ -1040,7 +1040,8 @@ bool Renderer::continueDrawFor(double milliseconds) {
     // high (a few hundred big leaves in one piece took 75 ms).
     double& learnt = m->rate[p.lastPhase][p.lastPart];
     const double measured = double(p.lastUnits) / std::max(took, 0.05);
-    if (p.lastPhase != Pass::Raster && p.lastUnits == units) learnt = std::clamp(measured, learnt / 4, learnt * 4);
+    // It grows slowly (the triangles of a part differ: leaves near the eye cover more).
+    if (p.lastPhase != Pass::Raster && p.lastUnits == units) learnt = std::clamp(measured, learnt / 4, learnt * 1.5);
     else if (p.lastPhase != Pass::Raster && p.lastUnits > 0 && took > milliseconds) learnt = std::clamp(measured, learnt / 16, learnt);
     p.spentMs += took;
     if (whole) m_lastPictureMs = p.spentMs;
