@@ -634,8 +634,13 @@ void drawPanel(App& app) {
     if (p && p->image) {
         ImGui::TextColored(kDim, "%s points of the chaos game in %.0f ms", withThousands(p->modules).c_str(), p->deriveMs);
     } else if (p && p->geometry) {
-        std::size_t leaves = 0;
-        for (const auto& s : p->geometry->surfaces) leaves += s.kind == SurfaceKind::Leaf;
+        static std::weak_ptr<const Result> countedOf;  // leaves counted once per plant, not every frame
+        static std::size_t leaves = 0;
+        if (countedOf.lock() != p) {
+            countedOf = p;
+            leaves = 0;
+            for (const auto& s : p->geometry->surfaces) leaves += s.kind == SurfaceKind::Leaf;
+        }
         ImGui::TextColored(kDim, "%s modules, %zu segments, %zu leaves, %zu polygons", withThousands(p->modules).c_str(),
                            p->geometry->cylinders.size(), leaves, p->geometry->polygons.indices.size() / 3);
         // The frame's time is read twice a second: a number that changes every frame would
