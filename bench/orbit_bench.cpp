@@ -54,8 +54,7 @@ Result orbit(render::Renderer& renderer, const Geometry& g, int vw, int vh) {
     Result r;
     r.segments = g.cylinders.size();
     render::PreparedScene scene;  // as the window's worker prepares it
-    render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), scene);
-    render::Renderer::prepareMoving(g, scene);
+    render::Renderer::prepareForViewer(g, scene);
     renderer.upload(scene);
     render::Camera camera = render::frameGeometry(g, float(vw) / float(vh), render::ViewPreset::Auto);
     render::RenderOptions o;

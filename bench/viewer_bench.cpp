@@ -38,8 +38,7 @@ int main() {
         state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
         const Geometry& g = *owner;
             auto p = std::make_shared<render::PreparedScene>();
-            render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), *p, owner);
-            render::Renderer::prepareMoving(g, *p);
+            render::Renderer::prepareForViewer(g, *p, owner);
             return p;
         };
         state.openText("n: 3\naxiom: X\nX -> F-[[X]+X]+F[+FX]-X\nF -> FF\n");

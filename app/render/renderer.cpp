@@ -477,6 +477,11 @@ BakedMesh clusterMesh(const BakedMesh& in, const Bounds& bounds, float cell) {
 
 }  // namespace
 
+void Renderer::prepareForViewer(const Geometry& g, PreparedScene& out, std::shared_ptr<const Geometry> owner) {
+    prepare(g, viewerDetail(g.cylinders.size()), out, std::move(owner));
+    prepareMoving(g, out);
+}
+
 void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     out.proxy.clear();
     out.proxyBaked = BakedMesh();
@@ -651,7 +656,6 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.stats = m_stats;
     p.stats.curveMoved = false;
     p.stats.proxy = false;
-    p.stats.staleShadows = false;
     p.stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
@@ -687,7 +691,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
         if (o.quality == Quality::Interactive && s.shadowMade && s.shadowAge < kStaleShadowFrames) {
             p.lightViewProj = s.shadowView;  // an earlier scene's shadows, where that map puts them
             p.texel = s.shadowTexel;
-            p.staleShadows = p.stats.staleShadows = true;
+            p.staleShadows = true;
         } else {
             p.phase = Pass::Shadow;
         }

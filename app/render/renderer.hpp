@@ -49,7 +49,6 @@ struct RenderStats {
     bool curve = false;                 // drawn as a 2D curve
     bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
     bool proxy = false;                 // a big scene drawn as its sketch while the view moves
-    bool staleShadows = false;          // a moving frame drawn with an earlier scene's shadow map
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread
@@ -68,8 +67,8 @@ struct PreparedScene {
     Bounds bounds;
     bool planarCurve = false;
     Quality detail = Quality::Still;
-    // What a moving frame draws instead of the scene (Renderer::prepareMoving, the window's); the full scene is drawn again when the
-    // view stops. A big scene's sketch: lines (as `lines`) for its main branches and an even
+    // What a moving frame draws instead of the scene (Renderer::prepareMoving, the window's);
+    // the full scene is drawn again when the view stops. A big scene's sketch: lines (as `lines`) for its main branches and an even
     // share of the rest, at most kProxyLines, when the scene has more triangles and lines than
     // that. A scene of full detail with many triangles (over kProxyTriangles): its bake at
     // interactive detail, triangles and lines (a software rasteriser pays for long thin
@@ -116,6 +115,9 @@ public:
     // coarser bake, when drawing it whole would cost more than kProxyLines primitives or
     // kProxyTriangles full-detail triangles; nothing else. Thread-safe, no GL.
     static void prepareMoving(const Geometry& geometry, PreparedScene& scene);
+    // A plant as the window shows it: at the viewer's detail for its size, with what its
+    // moving frames draw (prepare, then prepareMoving). Thread-safe, no GL.
+    static void prepareForViewer(const Geometry& geometry, PreparedScene& out, std::shared_ptr<const Geometry> owner = {});
     // Detail of the next upload: Interactive draws more thin stems as lines (the window on a
     // big plant); Still (the default) is for pictures.
     void setDetail(Quality detail);

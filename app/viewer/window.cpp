@@ -321,8 +321,7 @@ int runViewer(int argc, char** argv) {
     app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
         const Geometry& g = *owner;
         auto p = std::make_shared<render::PreparedScene>();
-        render::Renderer::prepare(g, render::viewerDetail(g.cylinders.size()), *p, owner);
-        render::Renderer::prepareMoving(g, *p);
+        render::Renderer::prepareForViewer(g, *p, owner);
         return p;
     };
     // Forest scenes find their species among the presets and beside the scene's file.
@@ -579,9 +578,9 @@ int runViewer(int argc, char** argv) {
         }
         ImGui::Render();
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
-            render::RenderOptions o = app.view.render;
+            render::RenderOptions o = app.view.render;  // still quality; drawMoving picks the moving frames'
+            o.quality = render::Quality::Still;
             const bool interactive = app.interacting || app.state.playing() || app.view.turntable;
-            o.quality = interactive ? render::Quality::Interactive : render::Quality::Still;
             if (!app.viewFbo) {
                 glGenFramebuffers(1, &app.viewFbo);
                 glGenRenderbuffers(1, &app.viewColour);

@@ -104,17 +104,16 @@ PlantPixels plantPixels(const std::vector<std::uint8_t>& moving, const std::vect
 }
 
 // A scene prepared as the window's worker prepares it (its proxy for moving frames too),
-// drawn headless from the snapshot camera as a moving frame and as the still picture.
-struct MovingAndStill {
-    bool ok = false;
-    bool movingProxy = false, stillProxy = false;  // what each drew instead of the scene
-    std::size_t movingTriangles = 0;
-    PlantPixels pixels;
-};
-MovingAndStill drawMovingAndStill(const Geometry& geometry, const render::PreparedScene& scene) {
-    MovingAndStill r;
+// drawn headless from the snapshot camera as a moving frame and as the still picture. The
+// moving frame must draw the proxy and the still one the scene; the still plant must cover
+// 1/wholeShare of the picture, the moving one 1/shownShare of that, and at most a fifth of
+// the moving frame's plant may lie outside the still one's. Returns the moving frame's
+// triangles.
+std::size_t expectMovingFrameOnThePlant(const Geometry& geometry, const render::PreparedScene& scene, int wholeShare,
+                                        int shownShare, const char* what) {
     auto headless = headlessRenderer();
-    if (!headless) return r;
+    EXPECT_TRUE(headless);
+    if (!headless) return 0;
     render::Renderer& renderer = headless->renderer;
     renderer.upload(scene);
     SnapshotOptions o = plain();
@@ -124,13 +123,15 @@ MovingAndStill drawMovingAndStill(const Geometry& geometry, const render::Prepar
     still.quality = render::Quality::Still;
     moving.quality = render::Quality::Interactive;
     const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, moving);
-    r.movingProxy = renderer.stats().proxy;
-    r.movingTriangles = renderer.stats().triangles;
+    EXPECT_TRUE(renderer.stats().proxy) << "the moving frame draws " << what;
+    const std::size_t movingTriangles = renderer.stats().triangles;
     const std::vector<std::uint8_t> b = renderer.renderImage(camera, kW, kH, still);
-    r.stillProxy = renderer.stats().proxy;
-    r.pixels = plantPixels(a, b, emptyScene(o));
-    r.ok = true;
-    return r;
+    EXPECT_FALSE(renderer.stats().proxy) << "the still picture draws the scene";
+    const PlantPixels p = plantPixels(a, b, emptyScene(o));
+    EXPECT_GT(p.inWhole, kW * kH / wholeShare);
+    EXPECT_GT(p.inMoving, p.inWhole / shownShare) << what << " shows the plant";
+    EXPECT_LT(p.outside, p.inMoving / 5) << what << " lies where the plant is";
+    return movingTriangles;
 }
 
 TEST(Render, EveryPresetIsFramedAndNotClipped) {
@@ -292,14 +293,8 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     ASSERT_GT(scene.proxy.size(), 0u);
     EXPECT_TRUE(scene.proxyBaked.indices.empty()) << "lines only";
     EXPECT_LE(scene.proxy.size() / 8, render::PreparedScene::kProxyLines + 1000);
-    const MovingAndStill r = drawMovingAndStill(geometry, scene);
-    ASSERT_TRUE(r.ok);
-    EXPECT_TRUE(r.movingProxy);
-    EXPECT_FALSE(r.stillProxy);
     // Plant pixels: the sketch's lie where the whole plant's are, over its outline.
-    EXPECT_GT(r.pixels.inWhole, kW * kH / 20);
-    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 5) << "the sketch shows the plant";
-    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
+    expectMovingFrameOnThePlant(geometry, scene, 20, 5, "the sketch");
 }
 
 // The window's still view of a big scene is drawn a piece per frame (beginDraw /
@@ -330,8 +325,7 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
         auto geometry = std::make_shared<Geometry>();
         interpret(*d.string, *g, {c.n, 1, nullptr}, *geometry);
         render::PreparedScene scene;
-        render::Renderer::prepare(*geometry, render::viewerDetail(geometry->cylinders.size()), scene, geometry);
-        render::Renderer::prepareMoving(*geometry, scene);
+        render::Renderer::prepareForViewer(*geometry, scene, geometry);
         renderer.upload(scene);
         Mesh environment;
         if (c.environment) {
@@ -398,14 +392,7 @@ TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
     ASSERT_GT(scene.baked.indices.size() / 3, render::PreparedScene::kProxyTriangles);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(2 * scene.proxyBaked.indices.size(), scene.baked.indices.size());
-    const MovingAndStill r = drawMovingAndStill(geometry, scene);
-    ASSERT_TRUE(r.ok);
-    EXPECT_TRUE(r.movingProxy);
-    EXPECT_FALSE(r.stillProxy);
-    EXPECT_LT(r.movingTriangles, scene.baked.indices.size() / 3 / 2);
-    EXPECT_GT(r.pixels.inWhole, kW * kH / 50);
-    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 3) << "the coarser bake shows the plant";
-    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
+    EXPECT_LT(expectMovingFrameOnThePlant(geometry, scene, 50, 3, "the coarser bake"), scene.baked.indices.size() / 3 / 2);
 }
 
 // A plant drawn as generalized cylinders is one big polygon mesh, with no stems to sketch:
@@ -424,13 +411,7 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
     ASSERT_GT(geometry.polygons.indices.size() / 3, 100000u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "far fewer triangles";
-    const MovingAndStill r = drawMovingAndStill(geometry, scene);
-    ASSERT_TRUE(r.ok);
-    EXPECT_TRUE(r.movingProxy);
-    EXPECT_FALSE(r.stillProxy);
-    EXPECT_GT(r.pixels.inWhole, kW * kH / 50);
-    EXPECT_GT(r.pixels.inMoving, r.pixels.inWhole / 3) << "the clustered mesh shows the plant";
-    EXPECT_LT(r.pixels.outside, r.pixels.inMoving / 5) << "where the plant is";
+    expectMovingFrameOnThePlant(geometry, scene, 50, 3, "the clustered mesh");
 }
 
 TEST(Render, LeavesAreGreen) {
