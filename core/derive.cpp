@@ -405,7 +405,7 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
                     const QueryFrame& f = passes[t].frames[q++];
                     if (passes[t].kind[id] == 'E') {
                         buds.push_back(toWorld(targets[t], f.position));
-                        params.push_back(&s.params[pp]);
+                        params.push_back(s.params.data() + pp);  // a ?E without parameters: none there
                         arities.push_back(int(a));
                         owner.push_back(t);
                     }
@@ -440,8 +440,10 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
                                      "environment cannot answer it";
                         return false;
                     }
-                    env.answer(p, glm::normalize(h), &s.params[pp], int(a), &light);
-                    if (!env.obstacles.empty() || env.ground) directionBack(target, &s.params[pp] + 2, int(a) - 2);
+                    // A ?E without parameters (the string may hold none at all) is asked, and told
+                    // nothing: no reference into an empty buffer is made for it.
+                    env.answer(p, glm::normalize(h), s.params.data() + pp, int(a), &light);
+                    if ((!env.obstacles.empty() || env.ground) && a >= 5) directionBack(target, s.params.data() + pp + 2, int(a) - 2);
                 }
             } else if (kind[id]) {
                 const QueryFrame& f = passes[t].frames[q++];
