@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/bounded.hpp"
 #include "core/parser_impl.hpp"
 
 namespace sprout::detail {
@@ -13,12 +14,13 @@ DirectiveHandler integer(int Settings::*field, int min, int max, const char* wha
     return [=](Parser& p, const SourceLine& line, std::string_view value) {
         auto v = p.constant(line, value);
         if (!v) return;
-        if (*v != std::floor(*v) || *v < min || *v > max) {
+        const auto whole = wholeIn(*v, min, max);
+        if (!whole) {
             p.sink().error(line, value, std::string(what) + " must be a whole number from " +
                                             std::to_string(min) + " to " + std::to_string(max));
             return;
         }
-        p.grammar().settings.*field = int(*v);
+        p.grammar().settings.*field = int(*whole);
     };
 }
 
@@ -26,13 +28,8 @@ DirectiveHandler number(double Settings::*field, double min, double max, const c
     return [=](Parser& p, const SourceLine& line, std::string_view value) {
         auto v = p.constant(line, value);
         if (!v) return;
-        if (!(*v >= min && *v <= max)) {
-            auto text = [](double x) {
-                char b[32];
-                std::snprintf(b, sizeof b, "%g", x);
-                return std::string(b);
-            };
-            p.sink().error(line, value, std::string(what) + " must be between " + text(min) + " and " + text(max));
+        if (!inRange(*v, min, max)) {
+            p.sink().error(line, value, std::string(what) + " must be between " + formatNumber(min) + " and " + formatNumber(max));
             return;
         }
         p.grammar().settings.*field = *v;
@@ -162,6 +159,9 @@ void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
         } else {
             auto v = constant(line, token);
             if (!v) return;
+            if (!inRange(*v, -Environment::kMaxNumber, Environment::kMaxNumber))
+                return m_sink.error(line, token, "'" + std::string(token) + "' is " + formatNumber(*v) +
+                                                     ": an environment's numbers go from -1e9 to 1e9");
             numbers.push_back(*v);
         }
     }

@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "core/bounded.hpp"
+
 namespace sprout {
 
 namespace {
@@ -216,10 +218,20 @@ void EnvShape::box(glm::dvec3& lo, glm::dvec3& hi) const {
 
 double LightGrid::lightAt(const glm::dvec3& p) const {
     const glm::dvec3 c = (p - origin) / voxel;
-    const int i = int(std::floor(c.x)), j = int(std::floor(c.y)), k = int(std::floor(c.z));
-    if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) return 1.0;  // beyond the plant: open sky
+    // Compared as doubles before any cast: a turtle 1e30 away (or at NaN) is beyond the grid.
+    if (!(c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < nx && c.y < ny && c.z < nz)) return 1.0;  // beyond the plant: open sky
+    const int i = int(c.x), j = int(c.y), k = int(c.z);
     const double s = shadow[(std::size_t(j) * std::size_t(nz) + std::size_t(k)) * std::size_t(nx) + std::size_t(i)];
     return std::max(0.0, 1.0 - s);
+}
+
+std::uint64_t cellKey(const glm::dvec3& p, double cell) {
+    // The cell's indices saturate (bounded.hpp): the environment's own numbers keep its points
+    // within 1e15 cells of the origin (kMaxNumber / kMinDistance), so a plant's node beyond
+    // 2^63 cells (F(1e30)) has no point near it and any cell it shares is only compared by
+    // distance. 21 bits an axis: cells that alias share a bucket, nothing more.
+    const auto index = [&](double v) { return std::uint64_t(floorCell<std::int64_t>(v / cell)) & 0x1fffff; };
+    return (index(p.x) << 42) | (index(p.y) << 21) | index(p.z);
 }
 
 glm::dvec3 Environment::sunDirection() const {
@@ -241,12 +253,22 @@ bool Environment::buildLight(const Geometry& g, LightGrid& grid, std::string& er
     const glm::dvec3 hi = glm::dvec3(g.bounds.max) + glm::dvec3(kDepth + 1, up, kDepth + 1) * lightVoxel;
     const glm::dvec3 cells = glm::ceil((hi - lo) / lightVoxel);
     const double total = cells.x * cells.y * cells.z;
-    if (!(total <= double(kMaxLightCells))) {
-        char msg[200];
+    // Each side checked on its own too: a plant 1e12 from the origin loses its width in float
+    // (lo == hi on an axis), and a product with a zero side says nothing of the others.
+    const auto side = [](double c) { return c >= 1 && c <= double(kMaxLightCells); };
+    if (!(total <= double(kMaxLightCells)) || !side(cells.x) || !side(cells.y) || !side(cells.z)) {
+        // Whole counts in full while they are short; a plant 1e30 tall in powers of ten.
+        const auto count = [](double c, const char* whole) {
+            char b[40];
+            std::snprintf(b, sizeof b, c < 1e12 ? whole : "%.3g", c);
+            return std::string(b);
+        };
+        char msg[400];
         std::snprintf(msg, sizeof msg,
-                      "the light grid would have %.0f x %.0f x %.0f = %.3g cells (%.1f GB at 4 bytes each), over the limit of "
+                      "the light grid would have %s x %s x %s = %.3g cells (%s GB at 4 bytes each), over the limit of "
                       "32 million: make the voxels larger ('environment: light VOXEL')",
-                      cells.x, cells.y, cells.z, total, total * 4 / 1e9);
+                      count(cells.x, "%.0f").c_str(), count(cells.y, "%.0f").c_str(), count(cells.z, "%.0f").c_str(), total,
+                      count(total * 4 / 1e9, "%.1f").c_str());
         error = msg;
         return false;
     }
@@ -327,11 +349,7 @@ std::vector<glm::dvec3> Environment::freePoints(const Geometry& grown, std::uint
     // Used up: within the kill distance of a node of the plant (a segment's ends), found
     // through a hash of the nodes in cells the kill distance wide.
     std::unordered_map<std::uint64_t, std::vector<glm::dvec3>> cells;
-    auto key = [&](const glm::dvec3& p) {
-        const glm::dvec3 c = glm::floor(p / kill);
-        return (std::uint64_t(std::int64_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::int64_t(c.y) & 0x1fffff) << 21) |
-               std::uint64_t(std::int64_t(c.z) & 0x1fffff);
-    };
+    auto key = [&](const glm::dvec3& p) { return cellKey(p, kill); };
     for (const CylinderInstance& c : grown.cylinders)
         for (const glm::vec3& e : {c.start, c.end}) cells[key(glm::dvec3(e))].push_back(glm::dvec3(e));
     std::vector<glm::dvec3> free;
@@ -356,11 +374,7 @@ void Environment::answerAttraction(const std::vector<glm::dvec3>& buds, const st
     std::vector<int> count(buds.size(), 0);
     // Buds in cells the influence radius wide: each point looks at its own and the next cells.
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
-    auto key = [&](const glm::dvec3& p) {
-        const glm::dvec3 c = glm::floor(p / influence);
-        return (std::uint64_t(std::int64_t(c.x) & 0x1fffff) << 42) | (std::uint64_t(std::int64_t(c.y) & 0x1fffff) << 21) |
-               std::uint64_t(std::int64_t(c.z) & 0x1fffff);
-    };
+    auto key = [&](const glm::dvec3& p) { return cellKey(p, influence); };
     for (std::uint32_t b = 0; b < buds.size(); ++b) cells[key(buds[b])].push_back(b);
     for (const glm::dvec3& p : points) {
         double best = influence;
@@ -525,6 +539,10 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
                 error = "'" + words[2 + k] + "' must be a distance above 0";
                 return false;
             }
+            if (value < kMinDistance) {
+                error = "'" + words[2 + k] + "' must be a distance of at least 1e-6";
+                return false;
+            }
             if (words[2 + k] == "influence") influence = value;
             else if (words[2 + k] == "kill") kill = value;
             else {
@@ -546,6 +564,10 @@ bool Environment::declare(const std::vector<std::string>& words, const std::vect
             (own == 2 && !(v[1] > 0))) {
             error = "expected 'environment: light VOXEL [SHADOW] [sun AZIMUTH ELEVATION]', with a voxel size above 0 (and a "
                     "shadow above 0)";
+            return false;
+        }
+        if (v[0] < kMinDistance) {
+            error = "the light's voxel size must be at least 1e-6 (a grid of smaller cells holds no plant)";
             return false;
         }
         if (sun && !(std::isfinite(v[own]) && v[own + 1] > 0 && v[own + 1] <= 90)) {

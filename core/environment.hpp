@@ -87,6 +87,10 @@ struct LightGrid {
     double lightAt(const glm::dvec3& p) const;
 };
 
+// The key of the cell `cell` wide that holds p (a hash key: 21 bits an axis), defined for any p,
+// NaN and 1e30 included.
+std::uint64_t cellKey(const glm::dvec3& p, double cell);
+
 struct Environment {
     std::vector<EnvShape> region;     // topiary: the union of these
     std::vector<EnvShape> obstacles;  // to grow around
@@ -107,6 +111,11 @@ struct Environment {
     bool isRegion() const { return !region.empty(); }
     bool isLight() const { return lightVoxel > 0; }
 
+    // The environment's numbers (centres, sizes, distances, the sun's angles) are at most
+    // kMaxNumber either way, and its distances (kill, influence, the light's voxel) at least
+    // kMinDistance: its points and cells then lie within 1e15 cells of the origin, exact in a
+    // double and in a 64-bit cell index. The plant itself may reach any distance (cellKey).
+    static constexpr double kMaxNumber = 1e9, kMinDistance = 1e-6;
     // Cells of the light grid are capped so that no plant can exhaust memory with it.
     static constexpr std::uint64_t kMaxLightCells = 32'000'000;  // 128 MB of shadow
     // The light grid for the plant drawn so far; false with `error` when it would be too big.

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/bounded.hpp"
+
 namespace sprout {
 namespace {
 
@@ -162,7 +164,8 @@ bool drawEnvironment(const Environment& env, const Geometry& grown, std::uint64_
         if (grid.nx > 0 && grid.ny > 0 && grid.nz > 0) {
             // The height runs over the plant, from its lowest point to its top.
             const double want = grown.bounds.min.y + view.sliceHeight * (grown.bounds.max.y - grown.bounds.min.y);
-            const int j = std::clamp(int(std::floor((want - grid.origin.y) / grid.voxel)), 0, grid.ny - 1);
+            // The slice's height comes from the view (a script may say 'nan'): clamped as a double.
+            const int j = std::clamp(floorCell<int>((want - grid.origin.y) / grid.voxel), 0, grid.ny - 1);
             const double y = grid.origin.y + (j + 0.5) * grid.voxel;
             // At most 256 x 256 quads: a larger grid is sampled.
             const int step = std::max(1, std::max(grid.nx, grid.nz) / 256);

@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/bounded.hpp"
 #include "core/file_kind.hpp"
 #include "core/turtle.hpp"
 
@@ -53,7 +54,8 @@ ForestParseResult parseForest(std::string_view text, const IncludeReader& includ
             words >> kind;
             if (kind != "forest") bad("only 'scene: forest' is known");
         } else if (key == "grid:") {
-            if (!(words >> f.columns >> f.rows) || f.columns < 1 || f.rows < 1 || f.columns * f.rows > 10000)
+            if (!(words >> f.columns >> f.rows) || f.columns < 1 || f.rows < 1 ||
+                std::int64_t(f.columns) * f.rows > 10000)
                 bad("expected 'grid: COLUMNS ROWS' with at most 10000 cells");
         } else if (key == "spacing:") {
             if (!(words >> f.spacing) || !(f.spacing > 0)) bad("expected a positive 'spacing:'");
@@ -178,7 +180,7 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
     if (f.grassPerCell && !load(f.grass)) return false;
 
     Rng rng = Rng::forStream(f.seed, 0xF0E57);
-    const float cell = float(f.spacing);
+    const float cell = toFloat(f.spacing);
     std::vector<float> rowShift(std::size_t(f.rows)), columnShift(std::size_t(f.columns));
     for (auto& v : rowShift) v = float(rng.uniform() * 0.4 - 0.2) * cell;  // whole rows by up to 20%
     for (auto& v : columnShift) v = float(rng.uniform() * 0.4 - 0.2) * cell;

@@ -6,6 +6,7 @@
 #include <string>
 #include <thread>
 
+#include "core/bounded.hpp"
 #include "core/rng.hpp"
 
 namespace sprout {
@@ -28,11 +29,12 @@ IfsParseResult parseIfs(std::string_view text) {
         if (!(words >> first)) continue;
         if (first == "points:" || first == "seed:") {
             double v = 0;
-            if (!(words >> v) || v < 1 || v > 1e12) {
-                r.diagnostics.push_back({number, 1, "'" + first + "' needs a positive whole number", Severity::Error});
+            const auto whole = (words >> v) ? wholeIn(v, 1, 1'000'000'000'000) : std::nullopt;
+            if (!whole) {
+                r.diagnostics.push_back({number, 1, "'" + first + "' needs a whole number from 1 to 1e12", Severity::Error});
                 continue;
             }
-            (first == "points:" ? ifs.points : ifs.seed) = std::uint64_t(v);
+            (first == "points:" ? ifs.points : ifs.seed) = std::uint64_t(*whole);
             continue;
         }
         if (first == "colour:" || first == "color:") {

@@ -1,6 +1,7 @@
 // The string turtle: interprets a module string one module at a time (see turtle_impl.hpp
 // for the files the turtle is made of), and the entry point that chooses the derivation tree
 // for big D0L strings.
+#include "core/bounded.hpp"
 #include "core/turtle_impl.hpp"
 
 namespace sprout {
@@ -25,19 +26,19 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     }
     m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
     m_autoWidth = st.width <= 0;
-    m_angle = float(st.angle.mean) * kPi / 180.0f;
+    m_angle = toFloat(st.angle.mean) * kPi / 180.0f;
     m_cos = std::cos(m_angle);
     m_sin = std::sin(m_angle);
-    m_angleSigma = float(st.angle.sigma) * kPi / 180.0f;
-    m_stepSigma = float(st.step.sigma);
-    m_tropism = glm::vec3(st.tropism[0], st.tropism[1], st.tropism[2]);
+    m_angleSigma = toFloat(st.angle.sigma) * kPi / 180.0f;
+    m_stepSigma = toFloat(st.step.sigma);
+    m_tropism = glm::vec3(toFloat(st.tropism[0]), toFloat(st.tropism[1]), toFloat(st.tropism[2]));
     if (glm::length(m_tropism) > 0) m_tropism = glm::normalize(m_tropism);
-    m_tropismE = float(st.tropismStrength);
-    m_widthFactor = float(st.widthFactor);
-    m_branchLength = float(st.branchLength);
+    m_tropismE = toFloat(st.tropismStrength);
+    m_widthFactor = toFloat(st.widthFactor);
+    m_branchLength = toFloat(st.branchLength);
     // Automatic widths thin each branch order, as real stems do (da Vinci's rule keeps
     // the total cross-section roughly constant at a fork).
-    m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : float(st.branchWidth);
+    m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : toFloat(st.branchWidth);
     m_palette = st.palette;
     if (m_palette.empty()) m_palette.assign(std::begin(kDefaultPalette), std::end(kDefaultPalette));
     if (m_palette.size() > 127) m_palette.resize(127);  // the state keeps the index in a byte
@@ -46,8 +47,8 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     float t = 0;
     for (int o = 0; o < kOrderColours; ++o, t = 1 - (1 - t) * 0.55f)
         m_byOrder[o] = lerpColour(st.barkColour, st.tipColour, t);
-    m_state.length = float(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
-    m_state.width = m_autoWidth ? 1.0f : float(st.width);
+    m_state.length = toFloat(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
+    m_state.width = m_autoWidth ? 1.0f : toFloat(st.width);
     m_min = m_max = m_state.pos;
     m_state.stemColour = stemColour(m_state);
     // Runs of F can be batched when nothing changes from one segment to the next.

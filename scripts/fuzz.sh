@@ -3,10 +3,15 @@
 # a bounded time. Fails on any crash, sanitizer report, leak or timeout; the input that did it
 # is left in build-fuzz/artifacts/ (add it to fuzz/regressions/TARGET/, which ctest replays).
 #
-#   scripts/fuzz.sh [SECONDS_PER_TARGET]   (default 60)
+#   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 60, every target)
+#
+# A long campaign on two cores runs two halves side by side, e.g.
+#   scripts/fuzz.sh 1200 parser expr derive turtle & scripts/fuzz.sh 1200 lparser fractint png cpfg
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
+targets=("${@:2}")
+((${#targets[@]})) || targets=(parser expr derive turtle lparser fractint png cpfg)
 jobs="$(nproc 2>/dev/null || echo 2)"
 for p in clang libclang-rt-14-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -23,7 +28,7 @@ cmake --build build-fuzz -j"$jobs"
 shared=../shared/corpus
 seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursively)
   case "$1" in
-    parser|derive|turtle) echo presets tests/bad-input fuzz/seeds/environment fuzz/regressions/"$1" ;;
+    parser|derive|turtle) echo presets tests/bad-input tests/extreme fuzz/seeds/environment fuzz/regressions/"$1" ;;
     expr) echo fuzz/seeds/expr fuzz/regressions/expr ;;
     lparser) echo tests/data/seed001 fuzz/regressions/lparser; [ -d "$shared/lparser" ] && echo "$shared/lparser" ;;
     fractint) echo fuzz/seeds/fractint fuzz/regressions/fractint; [ -d "$shared" ] && echo "$shared" ;;
@@ -33,7 +38,7 @@ seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursi
 }
 mkdir -p build-fuzz/artifacts
 status=0
-for t in parser expr derive turtle lparser fractint png cpfg; do
+for t in "${targets[@]}"; do
   corpus=build-fuzz/corpus/$t
   mkdir -p "$corpus" fuzz/regressions/"$t"
   dirs=()

@@ -55,4 +55,19 @@ std::optional<std::int64_t> Args::integer(const std::string& name, std::int64_t 
     return out;
 }
 
+bool parseSize(const std::string& s, int& w, int& h) {
+    // from_chars, not sscanf's %d (undefined past int's range).
+    const std::size_t x = s.find_first_of("xX");
+    if (x == std::string::npos) return false;
+    int a = 0, b = 0;
+    const char *begin = s.data(), *end = s.data() + s.size();
+    auto ra = std::from_chars(begin, begin + x, a);
+    auto rb = std::from_chars(begin + x + 1, end, b);
+    if (ra.ec != std::errc() || ra.ptr != begin + x || rb.ec != std::errc() || rb.ptr != end) return false;
+    if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
+    w = a;
+    h = b;
+    return true;
+}
+
 }  // namespace sprout::cli

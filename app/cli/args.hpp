@@ -28,4 +28,8 @@ private:
     std::string m_error;
 };
 
+// "WIDTHxHEIGHT" (or X), each from 16 to 8192; false, leaving w and h, when it is not that.
+// The one reader of picture sizes: render's and the viewer's --size, a script's screenshot.
+bool parseSize(const std::string& s, int& w, int& h);
+
 }  // namespace sprout::cli

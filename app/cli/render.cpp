@@ -35,15 +35,6 @@ namespace {
 // (`-o -`): then to standard error, so that `sprout render koch -o - | display` gets a PNG.
 std::FILE* info(const std::string& out) { return out == "-" ? stderr : stdout; }
 
-bool parseSize(const std::string& s, int& w, int& h) {
-    int a = 0, b = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(s.c_str(), "%d%c%d%c", &a, &x, &b, &extra) != 3 || (x != 'x' && x != 'X')) return false;
-    if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
-    w = a;
-    h = b;
-    return true;
-}
 
 bool parseFloat(const std::optional<std::string>& s, std::optional<float>& out) {
     if (!s) return true;

@@ -29,6 +29,7 @@ struct Projection {
 void num(std::string& s, float x) {
     char tmp[32];
     auto r = std::to_chars(tmp, tmp + sizeof tmp, x, std::chars_format::fixed, 2);
+    if (r.ec != std::errc()) r = std::to_chars(tmp, tmp + sizeof tmp, x);  // past 1e29: shortest form (1e+30)
     s.append(tmp, r.ptr);
 }
 

@@ -8,6 +8,12 @@
 
 namespace sprout::render {
 
+void Camera::zoom(float k) {
+    if (!(k > 0)) return;
+    distance = std::clamp(distance * k, 1e-6f, 1e12f);
+    orthoHeight = std::clamp(orthoHeight * k, 1e-6f, 1e12f);
+}
+
 glm::vec3 Camera::eye() const {
     float y = glm::radians(yaw), p = glm::radians(pitch);
     glm::vec3 dir(std::sin(y) * std::cos(p), std::sin(p), std::cos(y) * std::cos(p));

@@ -17,6 +17,10 @@ struct Camera {
     bool orthographic = false;
     float orthoHeight = 10;  // visible height (orthographic)
 
+    // Closer (k < 1) or farther (k > 1), distance and orthographic height together, kept
+    // between 1e-6 and 1e12 whatever the wheel, the keys or a script ask: a zoom to 0 or to
+    // infinity would make the projection NaN.
+    void zoom(float k);
     glm::vec3 eye() const;
     glm::mat4 view() const;
     glm::mat4 projection(float aspect, float near, float far) const;

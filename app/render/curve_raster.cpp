@@ -1,4 +1,5 @@
 #include "app/render/curve_raster.hpp"
+#include "core/bounded.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,10 +25,12 @@ void stamp(glm::vec2 a, glm::vec2 b, float half, int w, int h, std::uint8_t* mas
     b += dir * half;
     d = b - a;
     const float len2 = d.x * d.x + d.y * d.y, half2 = half * half;
-    const int x0 = std::max(0, int(std::floor(std::min(a.x, b.x) - half)));
-    const int x1 = std::min(w - 1, int(std::floor(std::max(a.x, b.x) + half)));
-    const int y0 = std::max(0, int(std::floor(std::min(a.y, b.y) - half)));
-    const int y1 = std::min(h - 1, int(std::floor(std::max(a.y, b.y) + half)));
+    // Saturated before the image's clamp: a segment far off screen (a deep zoom) or at NaN
+    // has pixel coordinates beyond int.
+    const int x0 = std::max(0, floorCell<int>(std::min(a.x, b.x) - half));
+    const int x1 = std::min(w - 1, floorCell<int>(std::max(a.x, b.x) + half));
+    const int y0 = std::max(0, floorCell<int>(std::min(a.y, b.y) - half));
+    const int y1 = std::min(h - 1, floorCell<int>(std::max(a.y, b.y) + half));
     for (int y = y0; y <= y1; ++y) {
         std::uint8_t* row = mask + std::size_t(y) * std::size_t(w);
         for (int x = x0; x <= x1; ++x) {
@@ -67,8 +70,8 @@ public:
     // False when the dot would cross the image's border (the exact stamp does it then).
     bool stamp(glm::vec2 centre, int w, int h, std::uint8_t* mask) const {
         const float ix = std::floor(centre.x), iy = std::floor(centre.y);
+        if (!(ix >= 2 && iy >= 2 && ix + 3 <= float(w) && iy + 3 <= float(h))) return false;  // before any cast
         const int x0 = int(ix) - 2, y0 = int(iy) - 2;
-        if (x0 < 0 || y0 < 0 || x0 + 5 > w || y0 + 5 > h) return false;
         const int fx = std::min(7, int((centre.x - ix) * 8.0f)), fy = std::min(7, int((centre.y - iy) * 8.0f));
         const std::uint8_t(&k)[5][5] = m_table[fy][fx];
         for (int y = 0; y < 5; ++y) {

@@ -16,6 +16,7 @@
 #include "app/render/gl.hpp"
 #include "app/render/meshes.hpp"
 #include "app/render/shader.hpp"
+#include "core/bounded.hpp"
 
 namespace sprout::render {
 namespace {
@@ -453,7 +454,7 @@ BakedMesh clusterMesh(const BakedMesh& in, const Bounds& bounds, float cell) {
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
         const BakedVertex& v = in.vertices[i];
         const glm::vec3 q = glm::floor((v.position - bounds.min) / cell);
-        auto axis = [](float x) { return std::uint64_t(std::clamp(x, 0.0f, float((1 << 21) - 1))); };
+        auto axis = [](float x) { return std::uint64_t(std::clamp(saturate<int>(x), 0, (1 << 21) - 1)); };  // NaN: cell 0
         const std::uint64_t key = axis(q.x) | axis(q.y) << 21 | axis(q.z) << 42;
         const auto [at, fresh] = cells.try_emplace(key, std::uint32_t(out.vertices.size()));
         if (fresh) {

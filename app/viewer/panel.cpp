@@ -20,6 +20,7 @@
 #include "app/viewer/app.hpp"
 #include "app/viewer/editor/editor.hpp"
 #include "app/viewer/text_edit.hpp"
+#include "core/bounded.hpp"
 
 namespace sprout::viewer {
 namespace {
@@ -28,7 +29,7 @@ const ImVec4 kError(1.0f, 0.45f, 0.4f, 1), kWarning(1.0f, 0.8f, 0.35f, 1), kDim(
 
 // A slider over a value written in the text; returns true when moved.
 bool valueSlider(App& app, const char* label, const char* key, double current, float lo, float hi, const char* fmt = "%.3g") {
-    float v = float(current);
+    float v = toFloat(current);
     if (ImGui::SliderFloat(label, &v, lo, hi, fmt)) {
         app.state.setDirectiveValue(key, v);
         return true;
@@ -215,7 +216,7 @@ void parameterSection(App& app) {
     // One slider per `define`, generated from the file (L-Py's scalar parameters panel).
     for (const auto& name : plant->grammar->defineOrder) {
         double v = plant->grammar->defines.at(name);
-        float f = float(v);
+        float f = toFloat(v);
         float span = std::max(1.0f, std::fabs(f) * 2);
         if (ImGui::SliderFloat(name.c_str(), &f, v < 0 ? -span : 0.0f, span, "%.3g")) app.state.setDefineValue(name, f);
     }
@@ -262,7 +263,7 @@ void environmentSection(App& app, const Environment& env) {
     int id = 0;
     for (const EnvironmentNumber& n : environmentNumbers(text)) {
         ImGui::PushID(id++);
-        float f = float(n.value);
+        float f = toFloat(n.value);
         bool moved = false;
         using Kind = EnvironmentNumber::Kind;
         switch (n.kind) {
@@ -272,7 +273,7 @@ void environmentSection(App& app, const Environment& env) {
             case Kind::Azimuth: moved = ImGui::SliderFloat(n.label.c_str(), &f, -180, 180, "%.0f deg"); break;
             case Kind::Elevation: moved = ImGui::SliderFloat(n.label.c_str(), &f, 1, 90, "%.0f deg"); break;
             case Kind::Count: {
-                int k = int(f);
+                int k = saturate<int>(f);
                 moved = ImGui::DragInt(n.label.c_str(), &k, std::max(1.0f, float(k) * 0.005f), 1, 1000000);
                 f = float(k);
                 break;

@@ -41,8 +41,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/cli/args.hpp"
 #include "app/viewer/app.hpp"
 #include "app/viewer/text_edit.hpp"
+#include "core/bounded.hpp"
 
 namespace sprout::viewer {
 
@@ -125,7 +127,7 @@ bool Script::step(App& app) {
             std::string key;
             double v = 0;
             in >> key >> v;
-            if (key == "n") app.state.setIterations(int(v));
+            if (key == "n") app.state.setIterations(saturate<int>(v));
             else app.state.setDirectiveValue(key, v);
             return true;
         }
@@ -245,7 +247,10 @@ bool Script::step(App& app) {
             in >> v;
             if (cmd == "show-environment") app.view.showEnvironment = v != "off";
             else if (v == "off") app.view.lightSlice = false;
-            else app.view.lightSlice = true, app.view.sliceHeight = std::strtof(v.c_str(), nullptr);
+            else {
+                const float h = std::strtof(v.c_str(), nullptr);  // 0 to 1; NaN is 0
+                app.view.lightSlice = true, app.view.sliceHeight = h >= 0 && h <= 1 ? h : h > 1 ? 1.0f : 0.0f;
+            }
             app.environmentDirty = true;
             return true;
         }
@@ -266,17 +271,16 @@ bool Script::step(App& app) {
         } else if (cmd == "zoom") {  // as the mouse wheel: closer by this factor
             float f = 1;
             in >> f;
-            if (f > 0) {
-                app.camera.distance /= f;
-                app.camera.orthoHeight /= f;
-            }
+            if (f > 0) app.camera.zoom(1 / f);
             app.needsRedraw = true;
         } else if (cmd == "screenshot") {
             std::string path, size;
             in >> path >> size;
-            int w = 0, h = 0;
-            if (!size.empty()) std::sscanf(size.c_str(), "%dx%d", &w, &h);
-            app.takeScreenshot(path, w, h);
+            int w = 0, h = 0;  // 0: the window's size
+            if (!size.empty() && !cli::parseSize(size, w, h))
+                app.say("screenshot: the size must be WIDTHxHEIGHT between 16x16 and 8192x8192");
+            else
+                app.takeScreenshot(path, w, h);
         } else if (cmd == "record") {
             std::string kind, path;
             in >> kind >> path;

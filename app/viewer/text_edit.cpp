@@ -65,8 +65,14 @@ bool startsWithNoCase(std::string_view s, std::string_view prefix) {
 }
 
 std::string formatValue(double v) {
-    if (std::fabs(v - std::round(v)) < 1e-9) return std::to_string(static_cast<long long>(std::llround(v)));
+    // Whole numbers as integers while a long long holds them exactly; beyond, and for NaN and
+    // infinities, %g (llround's result is unspecified past 2^63).
+    if (std::fabs(v) < 9e15 && std::fabs(v - std::round(v)) < 1e-9) return std::to_string(static_cast<long long>(std::llround(v)));
     char buf[32];
+    if (!(std::fabs(v) < 1e15)) {
+        std::snprintf(buf, sizeof buf, "%.9g", v);
+        return buf;
+    }
     std::snprintf(buf, sizeof buf, "%.3f", v);
     std::string s = buf;
     while (s.back() == '0') s.pop_back();

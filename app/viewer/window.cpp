@@ -270,8 +270,8 @@ int runViewer(int argc, char** argv) {
     }
     const std::string source = args.positionals().empty() ? std::string(kDefaultPreset) : args.positionals()[0];
     int width = 1440, height = 860;
-    if (auto s = args.value("--size"); s && std::sscanf(s->c_str(), "%dx%d", &width, &height) != 2) {
-        std::cerr << "sprout: --size expects WIDTHxHEIGHT\n";
+    if (auto s = args.value("--size"); s && !cli::parseSize(*s, width, height)) {
+        std::cerr << "sprout: --size expects WIDTHxHEIGHT between 16x16 and 8192x8192, e.g. 1440x860\n";
         return 2;
     }
     Script script;
@@ -492,9 +492,7 @@ int runViewer(int argc, char** argv) {
             app.needsRedraw = true;
         }
         if (overView && io.MouseWheel != 0) {
-            float k = std::pow(0.9f, io.MouseWheel);
-            app.camera.distance *= k;
-            app.camera.orthoHeight *= k;
+            app.camera.zoom(std::pow(0.9f, io.MouseWheel));
             app.needsRedraw = true;
         }
         // Keyboard shortcuts (listed in the help window, F1).
@@ -515,8 +513,8 @@ int runViewer(int argc, char** argv) {
             if (ImGui::IsKeyDown(GLFW_KEY_W)) app.camera.pitch = std::min(89.0f, app.camera.pitch + orbit), app.needsRedraw = true;
             if (ImGui::IsKeyDown(GLFW_KEY_S) && !io.KeyCtrl)
                 app.camera.pitch = std::max(-89.0f, app.camera.pitch - orbit), app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_Q) && !io.KeyCtrl) app.camera.distance *= 1 / zoom, app.camera.orthoHeight *= 1 / zoom, app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_E) && !io.KeyCtrl) app.camera.distance *= zoom, app.camera.orthoHeight *= zoom, app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_Q) && !io.KeyCtrl) app.camera.zoom(1 / zoom), app.needsRedraw = true;
+            if (ImGui::IsKeyDown(GLFW_KEY_E) && !io.KeyCtrl) app.camera.zoom(zoom), app.needsRedraw = true;
             if (ImGui::IsKeyPressed(GLFW_KEY_P)) {
                 const auto& s = kScreenshotSizes[app.view.screenshotSize];
                 app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);

@@ -204,8 +204,10 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
                    key == "no_wait" || key == "bounding_box" || key == "seed") {
             // Output and viewer settings of Lparser: nothing to translate.
         } else if (key == "color") {
+            // Read by a stream, not sscanf's %d (undefined past int's range): an overflow fails.
             int i = 0, red = 0, green = 0, blue = 0;
-            if (std::sscanf(rest.c_str(), "%d %d %d %d", &i, &red, &green, &blue) != 4 || i < 0 || i > 126) {
+            std::istringstream numbers(rest);
+            if (!(numbers >> i >> red >> green >> blue) || i < 0 || i > 126) {
                 r.diagnostics.push_back({number, 7, "expected 'color INDEX RED GREEN BLUE'", Severity::Error});
                 continue;
             }

@@ -2,11 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/image.hpp"
 #include "tests/app/run_sprout.hpp"
 
 namespace {
@@ -45,6 +49,43 @@ TEST(Cli, GrammarErrorsAreFileLineCol) {
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(r.err, path + ":3:8: unknown function 'sine' — did you mean 'sin'?\n" + path +
                          ":4:1: unknown setting 'anlge' — did you mean 'angle'?\n");
+}
+
+// tests/extreme (issue 26) as a user meets them: `sprout render` of each file ends in a picture
+// of the size asked, or in exit code 1 and the message of expected.tsv at FILE:L:C (or FILE:
+// for a derivation that stops).
+TEST(Cli, ExtremeNumbersRenderOrSayWhereTheyAreWrong) {
+    const std::filesystem::path dir = SPROUT_EXTREME_DIR;
+    std::ifstream table(dir / "expected.tsv");
+    int pictures = 0, messages = 0;
+    for (std::string line; std::getline(table, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream cells(line);
+        std::string name, where, message;
+        std::getline(cells, name, '\t');
+        std::getline(cells, where, '\t');
+        std::getline(cells, message);
+        SCOPED_TRACE(name);
+        const std::string file = (dir / name).string(), png = testing::TempDir() + std::to_string(getpid()) + "_extreme.png";
+        Result r = runSprout("render " + file + " --size 96x72 -o " + png);
+        if (where == "ok") {
+            ASSERT_EQ(r.code, 0) << r.err;
+            sprout::Image image;
+            std::string error;
+            ASSERT_TRUE(sprout::readPng(png, image, error)) << error;
+            EXPECT_EQ(image.width, 96);
+            EXPECT_EQ(image.height, 72);
+            std::remove(png.c_str());
+            ++pictures;
+        } else {
+            EXPECT_EQ(r.code, 1);
+            const std::string at = where == "derive" ? file + ": " : file + ":" + where + ": ";
+            EXPECT_NE(r.err.find(at + message), std::string::npos) << r.err;
+            ++messages;
+        }
+    }
+    EXPECT_GE(pictures, 4);
+    EXPECT_GE(messages, 8);
 }
 
 TEST(Cli, SizeCapRefusalNamesStepAndCount) {

@@ -2,6 +2,7 @@
 #include "app/viewer/text_edit.hpp"
 
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
+#include "core/bounded.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -181,7 +182,8 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
     // Mouse: click to place the cursor, drag or shift-click to select.
     auto posAtMouse = [&] {
         Pos p;
-        p.line = std::clamp(int((io.MousePos.y - origin.y) / lineH), 0, m_model.lineCount() - 1);
+        // No mouse is -FLT_MAX in ImGui: saturated before the clamp.
+        p.line = std::clamp(saturate<int>((io.MousePos.y - origin.y) / lineH), 0, m_model.lineCount() - 1);
         p.col = colAt(m_model.line(p.line), io.MousePos.x - textX);
         return p;
     };
