@@ -1,6 +1,6 @@
 #include "app/animation.hpp"
 
-#include "core/io/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,8 +13,8 @@
 #include <unistd.h>
 
 #include "app/headless.hpp"
-#include "core/derive.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout {
 namespace {

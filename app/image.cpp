@@ -2,7 +2,7 @@
 
 #include <png.h>
 
-#include "core/io/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 
 #include <cstdio>
 #include <cstring>
@@ -29,7 +29,7 @@ void onWarning(png_structp, png_const_charp) {}
 
 bool writePng(const std::string& path, const Image& image, std::string& error) {
     // Through the atomic writer: a failed write never leaves half a file, a link is followed,
-    // a FIFO or "-" is written directly (core/io/atomic_file.hpp).
+    // a FIFO or "-" is written directly (core/base/atomic_file.hpp).
     AtomicFile file;
     if (!file.open(path, error)) {
         error = "cannot write: " + error;

@@ -9,9 +9,9 @@
 #include "app/image.hpp"
 #include "app/render/camera.hpp"
 #include "app/render/renderer.hpp"
-#include "core/derive.hpp"
-#include "core/environment_drawing.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/environment/environment_drawing.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/derive.hpp"
+#include "core/derive/derive.hpp"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include "app/export/export.hpp"
 #include "app/export/scene.hpp"
 #include "app/presets.hpp"
-#include "core/derive.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace {
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }

@@ -10,8 +10,8 @@
 #include <cstdio>
 
 #include "app/presets.hpp"
-#include "core/forest.hpp"
-#include "core/turtle.hpp"
+#include "core/scene/forest.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace {
 

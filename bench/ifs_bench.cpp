@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "core/ifs.hpp"
+#include "core/scene/ifs.hpp"
 
 int main() {
     using namespace sprout;

@@ -21,9 +21,9 @@
 #include "app/presets.hpp"
 #include "app/render/camera.hpp"
 #include "app/render/renderer.hpp"
-#include "core/derive.hpp"
-#include "core/forest.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/scene/forest.hpp"
+#include "core/turtle/turtle.hpp"
 
 using namespace sprout;
 using Clock = std::chrono::steady_clock;

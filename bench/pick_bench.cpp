@@ -12,9 +12,9 @@
 #include <glm/geometric.hpp>
 
 #include "app/presets.hpp"
-#include "core/derive.hpp"
-#include "core/pick.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/pick.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace {
 double ms(std::chrono::steady_clock::time_point t0) {

@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/derive.hpp"
-#include "core/file_kind.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
 
 namespace {
 

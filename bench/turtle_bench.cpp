@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/derive.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace {
 using namespace sprout;

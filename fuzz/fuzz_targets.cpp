@@ -10,13 +10,13 @@
 #include <string>
 #include <string_view>
 
-#include "core/derive.hpp"
-#include "core/expr.hpp"
-#include "core/file_kind.hpp"
-#include "core/grammar.hpp"
-#include "core/import/import.hpp"
-#include "core/rng.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/expr.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/language/grammar.hpp"
+#include "core/language/import/import.hpp"
+#include "core/base/rng.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
-#include "core/derive.hpp"
-#include "core/io/atomic_file.hpp"
+#include "core/derive/derive.hpp"
+#include "core/base/atomic_file.hpp"
 
 namespace sprout::cli {
 namespace {

@@ -8,11 +8,11 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
-#include "core/environment_drawing.hpp"
+#include "core/environment/environment_drawing.hpp"
 #include "app/export/export.hpp"
 #include "app/presets.hpp"
-#include "core/derive.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout::cli {
 

@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 
 #include "app/presets.hpp"
-#include "core/import/import.hpp"
+#include "core/language/import/import.hpp"
 
 namespace sprout::cli {
 namespace {

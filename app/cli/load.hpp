@@ -3,10 +3,10 @@
 #include <optional>
 #include <string>
 
-#include "core/derive.hpp"
-#include "core/file_kind.hpp"
-#include "core/forest.hpp"
-#include "core/grammar.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/scene/forest.hpp"
+#include "core/language/grammar.hpp"
 
 namespace sprout::cli {
 

@@ -12,10 +12,10 @@
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/viewer/text_edit.hpp"
-#include "core/import/import.hpp"
-#include "core/file_kind.hpp"
-#include "core/forest.hpp"
-#include "core/ifs.hpp"
+#include "core/language/import/import.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/scene/forest.hpp"
+#include "core/scene/ifs.hpp"
 
 #include <algorithm>
 

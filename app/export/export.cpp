@@ -13,7 +13,7 @@
 
 #include "app/export/scene.hpp"
 #include "app/export/svg.hpp"
-#include "core/io/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 
 namespace sprout::exporter {
 namespace {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "core/geometry.hpp"
+#include "core/turtle/geometry.hpp"
 
 namespace sprout::exporter {
 

@@ -1,6 +1,6 @@
 #include "app/export/svg.hpp"
 
-#include "core/io/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 
 #include <algorithm>
 #include <cerrno>

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/render/meshes.hpp"
-#include "core/geometry.hpp"
+#include "core/turtle/geometry.hpp"
 
 namespace sprout::render {
 

@@ -1,5 +1,5 @@
 #include "app/render/curve_raster.hpp"
-#include "core/bounded.hpp"
+#include "core/base/bounded.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "core/geometry.hpp"
+#include "core/turtle/geometry.hpp"
 
 namespace sprout::render {
 

@@ -16,7 +16,7 @@
 #include "app/render/gl.hpp"
 #include "app/render/meshes.hpp"
 #include "app/render/shader.hpp"
-#include "core/bounded.hpp"
+#include "core/base/bounded.hpp"
 
 namespace sprout::render {
 namespace {

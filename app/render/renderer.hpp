@@ -13,7 +13,7 @@
 
 #include "app/render/bake.hpp"
 #include "app/render/camera.hpp"
-#include "core/geometry.hpp"
+#include "core/turtle/geometry.hpp"
 
 namespace sprout::render {
 
@@ -102,7 +102,7 @@ public:
     bool continueUpload(std::size_t bytes);
     bool uploading() const;
     // What is drawn with the plant, translucent, after it: the environment
-    // (core/environment_drawing.hpp). An empty mesh draws nothing.
+    // (core/environment/environment_drawing.hpp). An empty mesh draws nothing.
     void setOverlay(const Mesh& mesh);
     // Picked stems and leaves (opaque colours), drawn last and through everything in front.
     void setHighlight(const Mesh& mesh);

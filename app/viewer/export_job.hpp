@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "core/geometry.hpp"
+#include "core/turtle/geometry.hpp"
 
 namespace sprout::viewer {
 

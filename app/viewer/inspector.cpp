@@ -11,7 +11,7 @@
 
 #include "app/viewer/app.hpp"
 #include "app/viewer/text_edit.hpp"
-#include "core/step_rewriter.hpp"
+#include "core/derive/step_rewriter.hpp"
 
 namespace sprout::viewer {
 namespace {

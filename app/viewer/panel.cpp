@@ -20,7 +20,7 @@
 #include "app/viewer/app.hpp"
 #include "app/viewer/editor/editor.hpp"
 #include "app/viewer/text_edit.hpp"
-#include "core/bounded.hpp"
+#include "core/base/bounded.hpp"
 
 namespace sprout::viewer {
 namespace {

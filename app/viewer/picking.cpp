@@ -14,7 +14,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "app/viewer/app.hpp"
-#include "core/pick.hpp"
+#include "core/turtle/pick.hpp"
 
 namespace sprout::viewer {
 

@@ -44,7 +44,7 @@
 #include "app/cli/args.hpp"
 #include "app/viewer/app.hpp"
 #include "app/viewer/text_edit.hpp"
-#include "core/bounded.hpp"
+#include "core/base/bounded.hpp"
 
 namespace sprout::viewer {
 

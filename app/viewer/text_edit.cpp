@@ -1,6 +1,6 @@
 #include "app/viewer/text_edit.hpp"
 
-#include "core/environment.hpp"
+#include "core/language/environment_spec.hpp"
 
 #include <algorithm>
 #include <cctype>

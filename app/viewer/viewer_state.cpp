@@ -11,15 +11,15 @@
 #include <utility>
 
 #include "app/viewer/text_edit.hpp"
-#include "core/import/import.hpp"
-#include "core/io/atomic_file.hpp"
+#include "core/language/import/import.hpp"
+#include "core/base/atomic_file.hpp"
 
 namespace sprout::viewer {
 namespace fs = std::filesystem;
 
 bool saveTextAtomically(const fs::path& path, const std::string& text, std::string& error) {
     // A unique temporary beside the real file (a symlinked grammar updates the file it names),
-    // fsync, rename, fsync of the folder (core/io/atomic_file.hpp).
+    // fsync, rename, fsync of the folder (core/base/atomic_file.hpp).
     return writeFileAtomically(path.string(), text, error);
 }
 

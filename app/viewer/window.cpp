@@ -24,7 +24,7 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
-#include "core/environment_drawing.hpp"
+#include "core/environment/environment_drawing.hpp"
 
 namespace sprout::viewer {
 namespace {

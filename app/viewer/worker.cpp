@@ -3,8 +3,8 @@
 #include <chrono>
 #include <sstream>
 
-#include "core/forest.hpp"
-#include "core/ifs.hpp"
+#include "core/scene/forest.hpp"
+#include "core/scene/ifs.hpp"
 
 namespace sprout::viewer {
 namespace {

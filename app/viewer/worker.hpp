@@ -13,11 +13,11 @@
 #include <thread>
 #include <vector>
 
-#include "core/derive.hpp"
-#include "core/file_kind.hpp"
-#include "core/forest.hpp"
-#include "core/provenance.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/scene/forest.hpp"
+#include "core/derive/provenance.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout::viewer {
 

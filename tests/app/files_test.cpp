@@ -1,4 +1,4 @@
-// What Sprout writes never hurts what is already there (core/io/atomic_file.hpp), run as a
+// What Sprout writes never hurts what is already there (core/base/atomic_file.hpp), run as a
 // user runs it: through a symlink, into a FIFO, beside someone else's temporary file, several
 // at once, on a full disk (a write failure injected with LD_PRELOAD), and to standard output.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "core/io/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 #include "tests/app/run_sprout.hpp"
 
 namespace {

@@ -2,10 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "app/presets.hpp"
-#include "core/d0l.hpp"
-#include "core/file_kind.hpp"
-#include "core/derive.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/d0l.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/derive/derive.hpp"
+#include "core/turtle/turtle.hpp"
 #include "tests/core/same_drawing.hpp"
 
 namespace sprout {

@@ -8,10 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "core/derive.hpp"
-#include "core/file_kind.hpp"
-#include "core/grammar.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/language/grammar.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout {
 namespace {

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "core/bounded.hpp"
-#include "core/environment.hpp"
+#include "core/base/bounded.hpp"
+#include "core/environment/environment.hpp"
 
 namespace sprout {
 namespace {

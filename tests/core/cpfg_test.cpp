@@ -14,9 +14,9 @@
 #include <set>
 #include <glm/geometric.hpp>
 
-#include "core/derive.hpp"
-#include "core/file_kind.hpp"
-#include "core/turtle.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/turtle/turtle.hpp"
 
 namespace sprout {
 namespace {

@@ -1,7 +1,7 @@
 // D0L derivation: exact strings from ABOP chapter 1, on the fast path and the general one.
 #include <gtest/gtest.h>
 
-#include "core/d0l.hpp"
+#include "core/derive/d0l.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {

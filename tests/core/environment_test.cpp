@@ -4,15 +4,15 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/derive.hpp"
-#include "core/environment.hpp"
+#include "core/derive/derive.hpp"
+#include "core/environment/environment.hpp"
 #include "tests/core/test_util.hpp"
 
 namespace sprout {
 namespace {
 
 std::vector<double> ask(const Environment& env, glm::dvec3 p, glm::dvec3 h, std::vector<double> params) {
-    env.answer(p, glm::normalize(h), params.data(), int(params.size()));
+    answer(env, p, glm::normalize(h), params.data(), int(params.size()));
     return params;
 }
 
@@ -194,20 +194,20 @@ TEST(Environment, AttractionPointsPullTheirNearestBud) {
     const std::vector<glm::dvec3> buds{{0, 0, 0}, {10, 0, 0}};
     const std::vector<glm::dvec3> points{{0, 2, 0}, {0, 0, 3}, {9, 1, 0}, {20, 0, 0}, {5.5, 0, 0}};
     std::vector<double> a(4, -1), b(4, -1);
-    env.answerAttraction(buds, points, {a.data(), b.data()}, {4, 4});
+    answerAttraction(env, buds, points, {a.data(), b.data()}, {4, 4});
     // (5.5, 0, 0) is 4.5 from one bud and 5.5 from the other: beyond the influence of both.
     EXPECT_EQ(a, (std::vector<double>{0, 0.70711, 0.70711, 2}));
     EXPECT_EQ(b, (std::vector<double>{-0.70711, 0.70711, 0, 1}));
     // A point nearer to the second bud pulls only it, even within the first's influence.
     std::vector<double> c(4, -1), d(4, -1);
-    env.answerAttraction(buds, {{6.5, 0, 0}}, {c.data(), d.data()}, {4, 4});
+    answerAttraction(env, buds, {{6.5, 0, 0}}, {c.data(), d.data()}, {4, 4});
     EXPECT_EQ(c, (std::vector<double>{0, 0, 0, 0}));
     EXPECT_EQ(d, (std::vector<double>{-1, 0, 0, 1}));
     // Points used up: exactly those within the kill distance (3 here) of a node of the plant.
     Environment dense = declared({{"attraction", "sphere", "kill"}}, {{400, 0, 0, 0, 9, 3}});
     Geometry plant;
     plant.cylinders.push_back({{0, -3, 0}, 0.1f, {0, 3, 0}, 0.1f, 0, 0, 0});
-    const auto all = dense.freePoints(Geometry{}, 7), free = dense.freePoints(plant, 7);
+    const auto all = freePoints(dense, Geometry{}, 7), free = freePoints(dense, plant, 7);
     EXPECT_EQ(all.size(), 400u);
     auto nearest = [](const glm::dvec3& p) { return std::min(glm::length(p - glm::dvec3(0, -3, 0)), glm::length(p - glm::dvec3(0, 3, 0))); };
     size_t near = 0;
@@ -216,7 +216,7 @@ TEST(Environment, AttractionPointsPullTheirNearestBud) {
     EXPECT_EQ(free.size(), all.size() - near);
     for (const auto& p : free) EXPECT_GT(nearest(p), 3);
     // The same seed, the same points.
-    EXPECT_EQ(dense.freePoints(Geometry{}, 7), all);
+    EXPECT_EQ(freePoints(dense, Geometry{}, 7), all);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "core/expr.hpp"
+#include "core/language/expr.hpp"
 
 namespace sprout::test {
 namespace {

@@ -1,7 +1,7 @@
 // Forest scenes: species by share on a jittered grid, each plant its own specimen.
 #include <gtest/gtest.h>
 
-#include "core/forest.hpp"
+#include "core/scene/forest.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {

@@ -1,7 +1,7 @@
 // Iterated function systems: parsing, the chaos game, tone mapping.
 #include <gtest/gtest.h>
 
-#include "core/ifs.hpp"
+#include "core/scene/ifs.hpp"
 
 namespace sprout {
 namespace {

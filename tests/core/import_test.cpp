@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/import/import.hpp"
-#include "core/turtle.hpp"
+#include "core/language/import/import.hpp"
+#include "core/turtle/turtle.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {

@@ -2,12 +2,12 @@
 // by hand for small grammars of each kind (core/provenance.hpp).
 #include <gtest/gtest.h>
 
-#include "core/file_kind.hpp"
-#include "core/import/import.hpp"
-#include "core/pick.hpp"
-#include "core/provenance.hpp"
-#include "core/step_rewriter.hpp"
-#include "core/turtle.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/language/import/import.hpp"
+#include "core/turtle/pick.hpp"
+#include "core/derive/provenance.hpp"
+#include "core/derive/step_rewriter.hpp"
+#include "core/turtle/turtle.hpp"
 #include "tests/core/test_util.hpp"
 
 namespace sprout {

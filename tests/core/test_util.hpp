@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "core/derive.hpp"
-#include "core/grammar.hpp"
+#include "core/derive/derive.hpp"
+#include "core/language/grammar.hpp"
 
 namespace sprout::test {
 

@@ -4,7 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "core/turtle.hpp"
+#include "core/turtle/turtle.hpp"
 #include "same_drawing.hpp"
 #include "test_util.hpp"
 

@@ -13,10 +13,10 @@
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/render/renderer.hpp"
-#include "core/environment_drawing.hpp"
-#include "core/file_kind.hpp"
-#include "core/forest.hpp"
-#include "core/ifs.hpp"
+#include "core/environment/environment_drawing.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/scene/forest.hpp"
+#include "core/scene/ifs.hpp"
 
 namespace sprout {
 namespace {

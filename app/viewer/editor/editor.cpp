@@ -2,7 +2,7 @@
 #include "app/viewer/text_edit.hpp"
 
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
-#include "core/bounded.hpp"
+#include "core/base/bounded.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>

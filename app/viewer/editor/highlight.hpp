@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/viewer/editor/text_model.hpp"
-#include "core/file_kind.hpp"
+#include "core/language/file_kind.hpp"
 
 namespace sprout::viewer::editor {
 

@@ -1,0 +1,296 @@
+#include "core/derive/derive.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include <glm/geometric.hpp>
+
+#include "core/derive/d0l.hpp"
+#include "core/derive/step_rewriter.hpp"
+#include "core/turtle/turtle.hpp"
+
+namespace sprout {
+namespace {
+
+double millisSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string humanBytes(std::uint64_t b) {
+    char buf[32];
+    if (b >= (1ull << 30)) std::snprintf(buf, sizeof buf, "%.1f GB", double(b) / double(1ull << 30));
+    else std::snprintf(buf, sizeof buf, "%.1f MB", double(b) / double(1ull << 20));
+    return buf;
+}
+
+}  // namespace
+
+std::string withThousands(std::uint64_t v) {
+    std::string digits = std::to_string(v), out;
+    for (size_t i = 0; i < digits.size(); ++i) {
+        if (i && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions options)
+    : m_grammar(std::move(grammar)),
+      m_options(std::move(options)),
+      m_seed(m_options.seed.value_or(m_grammar->settings.seed)) {
+    std::shared_ptr<PodBuffer<std::uint16_t>> axiomAges;
+    if (m_options.trackAges) {
+        axiomAges = std::make_shared<PodBuffer<std::uint16_t>>();
+        axiomAges->resizeUninitialized(m_grammar->axiom.size());
+        std::fill(axiomAges->data(), axiomAges->data() + axiomAges->size(), std::uint16_t(0));
+    }
+    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries && !m_options.trackOrigins) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
+    else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
+    if (!m_grammar->decomposition.productions.empty())
+        m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
+    auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
+    std::shared_ptr<Origins> axiomOrigins;
+    if (m_options.trackOrigins) {
+        axiomOrigins = std::make_shared<Origins>();
+        axiomOrigins->parent.resizeUninitialized(axiom->size());
+        axiomOrigins->rule.resizeUninitialized(axiom->size());
+        for (size_t i = 0; i < axiom->size(); ++i) axiomOrigins->parent.data()[i] = std::uint32_t(i), axiomOrigins->rule.data()[i] = -1;
+    }
+    if (m_decomposer || m_grammar->hasQueries())  // the axiom is decomposed and queried too
+        m_axiomOutcome = finishStep(0, *axiom, axiomAges.get(), axiomOrigins.get());
+    if (axiomOrigins) m_origins.push_back(std::move(axiomOrigins));
+    m_stats.push_back({0, axiom->size(), axiom->params.size(), 0.0});
+    if (m_options.holdQueries) m_last = axiom;
+    m_steps.push_back(std::move(axiom));
+    if (axiomAges) m_ages.push_back(std::move(axiomAges));
+}
+
+DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins) {
+    if (m_decomposer) {
+        // Repeated passes of the (context-free) decomposition rules: pass d rewrites what
+        // pass d-1 produced, which is applying them depth-first to each module (cpfg / lpfg).
+        const int depth = m_grammar->decompositionDepth;
+        for (int pass = 0;; ++pass) {
+            std::uint64_t modules, params;
+            m_decomposer->bound(s, modules, params, true);
+            DeriveOutcome o = checkSize(step, modules, params);
+            if (!o.ok()) return o;
+            ModuleString out;
+            PodBuffer<std::uint16_t> outAges;
+            Origins passOrigins;
+            StepRewriter::Ages ageArgs{};
+            if (ages) ageArgs = {ages->data(), &outAges, std::uint16_t(std::min(step, 65535))};
+            if (origins) ageArgs.parent = &passOrigins.parent, ageArgs.rule = &passOrigins.rule;
+            Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
+            if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages || origins ? &ageArgs : nullptr))
+                return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
+            if (sameString(out, s)) break;
+            if (pass == depth) {
+                DeriveOutcome o;
+                o.status = DeriveStatus::Failed;
+                o.step = step;
+                o.message = "step " + std::to_string(step) + ": the decomposition rules still apply after " +
+                            std::to_string(depth) + " levels (maximum depth): they never end. A decomposition must end "
+                            "in modules no decomposition rule rewrites; raise 'maximum depth:' if it is this deep on purpose";
+                return o;
+            }
+            s = std::move(out);
+            if (ages) *ages = std::move(outAges);
+            if (origins) {
+                // A module the decomposition made comes from the module of the step before that
+                // its source came from; the decomposition rule is what made it.
+                const std::uint32_t* before = origins->parent.data();
+                const std::int32_t* beforeRule = origins->rule.data();
+                std::uint32_t* parent = passOrigins.parent.data();
+                std::int32_t* rule = passOrigins.rule.data();
+                for (size_t j = 0; j < passOrigins.parent.size(); ++j) {
+                    const std::uint32_t src = parent[j];
+                    rule[j] = rule[j] >= 0 ? -(rule[j] + 2) : beforeRule[src];
+                    parent[j] = before[src];
+                }
+                *origins = std::move(passOrigins);
+            }
+        }
+    }
+    if (m_grammar->hasQueries() && !m_options.holdQueries) {
+        std::string error;
+        if (!answerQueries(*m_grammar, s, step, m_seed, &error)) {
+            DeriveOutcome o;
+            o.status = DeriveStatus::Failed;
+            o.step = step;
+            o.message = "step " + std::to_string(step) + ": " + error;
+            return o;
+        }
+    }
+    return {};
+}
+
+Derivation::~Derivation() = default;
+
+DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64_t params) const {
+    DeriveOutcome o;
+    std::uint64_t bytes = modules * sizeof(SymbolId) + params * sizeof(double);
+    std::uint64_t kept = 0;
+    for (const auto& s : m_steps)
+        if (s) kept += s->bytes();
+    for (const auto& a : m_ages)
+        if (a) kept += a->size() * sizeof(std::uint16_t);
+    for (const auto& o : m_origins)
+        if (o) kept += o->parent.size() * (sizeof(std::uint32_t) + sizeof(std::int32_t));
+    if (m_options.trackAges) bytes += modules * sizeof(std::uint16_t);
+    if (m_options.trackOrigins) bytes += modules * (sizeof(std::uint32_t) + sizeof(std::int32_t));
+    o.step = step;
+    o.predictedModules = modules;
+    o.predictedBytes = bytes;
+    const auto& lim = m_options.limits;
+    if (modules > lim.maxModules) {
+        o.status = DeriveStatus::TooBig;
+        o.message = "step " + std::to_string(step) + " would produce " +
+                    (m_d0l ? "" : "up to ") + withThousands(modules) + " modules (" + humanBytes(bytes) +
+                    "), over the limit of " + withThousands(lim.maxModules) +
+                    " modules; lower n or raise the limit (--max-modules)";
+    } else if (bytes + kept > lim.maxBytes) {
+        o.status = DeriveStatus::TooBig;
+        o.message = "step " + std::to_string(step) + " would need " + humanBytes(bytes) + " for " +
+                    withThousands(modules) + " modules on top of " + humanBytes(kept) +
+                    " already kept, over the memory limit of " + humanBytes(lim.maxBytes) +
+                    "; lower n or raise the limit (--max-memory)";
+    }
+    return o;
+}
+
+void Derivation::record(int step, const ModuleString& s, double millis) {
+    if (int(m_stats.size()) <= step) m_stats.resize(size_t(step) + 1);
+    m_stats[size_t(step)] = {step, s.size(), s.params.size(), millis};
+}
+
+DeriveOutcome Derivation::deriveTo(int n) {
+    if (!m_axiomOutcome.ok()) return m_axiomOutcome;
+    if (n <= m_reached) return {};
+    if (!m_d0l) return deriveGeneral(n);
+    std::vector<std::uint64_t> counts = m_d0l->countsUpTo(m_grammar->axiom, n);
+    DeriveOutcome o = checkSize(n, counts[size_t(n)], 0);
+    if (!o.ok()) {
+        // Name the first step over the limit, so the user knows which n still works.
+        for (int k = m_reached + 1; k <= n; ++k) {
+            DeriveOutcome first = checkSize(k, counts[size_t(k)], 0);
+            if (!first.ok()) return first;
+        }
+        return o;
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    auto out = std::make_shared<ModuleString>();
+    std::function<void(double)> progress;
+    if (m_options.progress) progress = [&](double f) { m_options.progress(n, n, f); };
+    if (!m_d0l->expand(m_grammar->axiom, n, *out, m_options.cancel, progress))
+        return {DeriveStatus::Cancelled, n, 0, 0, "cancelled"};
+    m_steps.resize(size_t(n) + 1);
+    m_steps[size_t(n)] = std::move(out);
+    record(n, *m_steps[size_t(n)], millisSince(t0));
+    m_reached = n;
+    return {};
+}
+
+DeriveOutcome Derivation::deriveGeneral(int n) {
+    for (int k = m_reached + 1; k <= n; ++k) {
+        const ModuleString& in = *m_steps[size_t(k - 1)];
+        std::uint64_t modules, params;
+        m_rewriter->bound(in, modules, params, false);
+        DeriveOutcome o = checkSize(k, modules, params);
+        if (!o.ok()) {  // the quick bound is loose: refuse only on the per-symbol one
+            m_rewriter->bound(in, modules, params, true);
+            o = checkSize(k, modules, params);
+            if (!o.ok()) return o;
+        }
+        if (cancelled()) return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
+        auto t0 = std::chrono::steady_clock::now();
+        auto out = std::make_shared<ModuleString>();
+        Rng rng = Rng::forStream(m_seed, std::uint64_t(k));
+        std::function<void(double)> progress;
+        if (m_options.progress) progress = [&](double f) { m_options.progress(k, n, f); };
+        std::shared_ptr<PodBuffer<std::uint16_t>> ages;
+        std::shared_ptr<Origins> origins;
+        StepRewriter::Ages ageArgs{};
+        if (m_options.trackAges) {
+            ages = std::make_shared<PodBuffer<std::uint16_t>>();
+            ageArgs = {m_ages[size_t(k - 1)]->data(), ages.get(), std::uint16_t(std::min(k, 65535))};
+        }
+        if (m_options.trackOrigins) {
+            origins = std::make_shared<Origins>();
+            ageArgs.parent = &origins->parent;
+            ageArgs.rule = &origins->rule;
+        }
+        // cpfg: a '%' of the last step removes the rest of its branch as this step is derived.
+        const ModuleString* src = &in;
+        ModuleString cutCopy;
+        PodBuffer<std::uint16_t> cutAges;
+        PodBuffer<std::uint32_t> cutIndex;  // origins: where each module of the cut copy was
+        PodBuffer<std::int32_t> cutRule;
+        if (m_grammar->cutInNextStep &&
+            std::find(in.symbols.data(), in.symbols.data() + in.size(), Alphabet::kCut) != in.symbols.data() + in.size()) {
+            cutCopy = in;
+            if (ages) {
+                cutAges = *m_ages[size_t(k - 1)];
+                ageArgs.in = cutAges.data();
+            }
+            if (origins) {
+                cutIndex.resizeUninitialized(in.size());
+                cutRule.resizeUninitialized(in.size());
+                for (size_t i = 0; i < in.size(); ++i) cutIndex.data()[i] = std::uint32_t(i), cutRule.data()[i] = -1;
+            }
+            applyCut(cutCopy, m_grammar->alphabet, ages ? &cutAges : nullptr, origins ? &cutIndex : nullptr,
+                     origins ? &cutRule : nullptr);
+            src = &cutCopy;
+        }
+        if (!m_rewriter->rewrite(*src, *out, rng, m_options.cancel, progress, ages || origins ? &ageArgs : nullptr))
+            return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
+        if (origins && src == &cutCopy)
+            for (size_t j = 0; j < origins->parent.size(); ++j) origins->parent.data()[j] = cutIndex.data()[origins->parent.data()[j]];
+        if (m_decomposer || m_grammar->hasQueries()) {
+            DeriveOutcome f = finishStep(k, *out, ages.get(), origins.get());
+            if (!f.ok()) return f;
+        }
+        if (ages) m_ages.push_back(std::move(ages));
+        if (origins) m_origins.push_back(std::move(origins));
+        record(k, *out, millisSince(t0));
+        if (m_options.holdQueries) m_last = out;
+        m_steps.push_back(std::move(out));
+        m_reached = k;
+        if (m_options.progress) m_options.progress(k, n, 1.0);
+    }
+    return {};
+}
+
+std::shared_ptr<const ModuleString> Derivation::step(int k) {
+    if (k < 0 || k > m_reached) return nullptr;
+    if (m_steps.size() <= size_t(k)) m_steps.resize(size_t(k) + 1);
+    if (!m_steps[size_t(k)] && m_d0l) {
+        auto t0 = std::chrono::steady_clock::now();
+        auto out = std::make_shared<ModuleString>();
+        m_d0l->expand(m_grammar->axiom, k, *out, nullptr, {});
+        record(k, *out, millisSince(t0));
+        m_steps[size_t(k)] = std::move(out);
+    }
+    return m_steps[size_t(k)];
+}
+
+std::shared_ptr<const Origins> Derivation::origins(int k) const {
+    if (k < 0 || size_t(k) >= m_origins.size()) return nullptr;
+    return m_origins[size_t(k)];
+}
+
+std::shared_ptr<const PodBuffer<std::uint16_t>> Derivation::ages(int k) const {
+    if (k < 0 || size_t(k) >= m_ages.size()) return nullptr;
+    return m_ages[size_t(k)];
+}
+
+DeriveResult derive(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options) {
+    Derivation d(std::move(grammar), options);
+    DeriveResult r;
+    r.outcome = d.deriveTo(n);
+    if (r.outcome.ok()) r.string = d.step(n);
+    return r;
+}
+
+}  // namespace sprout

@@ -1,0 +1,394 @@
+#include "core/derive/step_rewriter.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sprout {
+namespace {
+constexpr std::uint32_t kUnmatched = UINT32_MAX;
+}
+
+StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_rules(rules) {
+    const size_t A = g.alphabet.size();
+    m_arity.resize(A);
+    m_hasRules.resize(A);
+    m_maxLen.assign(A, 1);
+    m_maxParams.resize(A);
+    size_t slots = 0;
+    for (size_t s = 0; s < A; ++s) {
+        m_arity[s] = g.alphabet[SymbolId(s)].arity;
+        m_maxParams[s] = m_arity[s];
+        m_hasRules[s] = s < rules.bySymbol.size() && !rules.bySymbol[s].empty();
+        if (m_arity[s]) m_parametric = true;
+        for (auto idx : m_hasRules[s] ? rules.bySymbol[s] : std::vector<std::uint32_t>{}) {
+            const Production& p = rules.productions[idx];
+            m_maxLen[s] = std::max<std::uint32_t>(m_maxLen[s], std::uint32_t(p.successor.symbols.size()));
+            m_maxParams[s] = std::max<std::uint32_t>(m_maxParams[s], std::uint32_t(p.successor.paramCount()));
+            slots = std::max(slots, size_t(p.slotCount));
+            if (p.hasContext()) m_needBrackets = true;
+            for (SymbolId t : p.successor.symbols) m_cut |= t == Alphabet::kCut;
+        }
+        m_maxLenAll = std::max(m_maxLenAll, m_maxLen[s]);
+        m_maxParamsAll = std::max(m_maxParamsAll, m_maxParams[s]);
+    }
+    m_slots.assign(std::max<size_t>(slots, 1), 0.0);
+    if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
+    if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
+    for (const Production& p : rules.productions) {
+        int keep = -1;
+        for (size_t j = 0; j < p.successor.symbols.size() && keep < 0; ++j)
+            if (p.successor.symbols[j] == p.pred.symbol) keep = int(j);
+        m_inherit.push_back(keep);
+    }
+    m_always.assign(A, nullptr);
+    for (size_t s = 0; s < A; ++s) {
+        if (!m_hasRules[s]) continue;
+        const Production& first = rules.productions[rules.bySymbol[s].front()];
+        if (!first.hasContext() && !first.condition && !first.stochastic() && !first.hasBlocks()) m_always[s] = &first;
+    }
+}
+
+void StepRewriter::bound(const ModuleString& in, std::uint64_t& modules, std::uint64_t& params,
+                         bool tight) const {
+    if (!tight) {
+        modules = std::uint64_t(in.size()) * m_maxLenAll;
+        params = std::uint64_t(in.size()) * m_maxParamsAll;
+        return;
+    }
+    modules = 0;
+    params = 0;
+    for (SymbolId s : in.symbols) {
+        modules += m_maxLen[s];
+        params += m_maxParams[s];
+    }
+}
+
+void StepRewriter::prepare(const ModuleString& in) {
+    m_in = &in;
+    if (!m_needBrackets) return;
+    const size_t N = in.size();
+    const SymbolId* sym = in.symbols.data();
+    m_match.assign(N, kUnmatched);
+    std::vector<std::uint32_t> open;
+    for (size_t i = 0; i < N; ++i) {
+        if (sym[i] == Alphabet::kPush) {
+            open.push_back(std::uint32_t(i));
+        } else if (sym[i] == Alphabet::kPop && !open.empty()) {
+            m_match[i] = open.back();
+            m_match[open.back()] = std::uint32_t(i);
+            open.pop_back();
+        }
+    }
+    if (m_parametric) {
+        m_offset.resize(N);
+        std::uint64_t off = 0;
+        for (size_t i = 0; i < N; ++i) {
+            m_offset[i] = off;
+            off += m_arity[sym[i]];
+        }
+    }
+}
+
+bool StepRewriter::matches(const PatternModule& pm, SymbolId s) const {
+    if (pm.wildcard) return true;
+    if (pm.arity < 0) return m_g.alphabet[s].nameId == pm.name;
+    return s == pm.symbol;
+}
+
+void StepRewriter::bind(const PatternModule& pm, size_t j) {
+    if (m_bound) m_bound->push_back(j);
+    if (pm.arity > 0)
+        std::memcpy(&m_slots[pm.firstSlot], m_in->params.data() + m_offset[j], size_t(pm.arity) * sizeof(double));
+}
+
+// ABOP 1.8 / cpfg: the left context is found walking back towards the root, skipping
+// completed side branches `[...]` and stepping out of the current branch at its `[`.
+bool StepRewriter::contextOf(const ModuleString& in, size_t i, const Production& p, std::vector<std::size_t>& left,
+                             std::vector<std::size_t>& right) {
+    left.clear();
+    right.clear();
+    if (i >= in.size()) return false;
+    prepare(in);
+    if (!m_needBrackets || m_offset.size() != in.size()) {
+        // Parameter offsets for bind(): computed here when the step did not need them.
+        m_offset.resize(in.size());
+        std::uint64_t o = 0;
+        for (size_t k = 0; k < in.size(); ++k) m_offset[k] = o, o += m_arity[in.symbols.data()[k]];
+    }
+    if (m_match.size() != in.size()) m_match.assign(in.size(), kUnmatched);
+    m_slots.resize(std::max<size_t>(m_slots.size(), size_t(p.slotCount) + 1));
+    m_bound = &left;
+    bool ok = matchLeft(p, i);
+    std::reverse(left.begin(), left.end());
+    m_bound = &right;
+    ok = ok && matchRight(p, i);
+    m_bound = nullptr;
+    return ok;
+}
+
+bool StepRewriter::matchLeft(const Production& p, size_t i) {
+    const SymbolId* sym = m_in->symbols.data();
+    std::ptrdiff_t j = std::ptrdiff_t(i) - 1;
+    for (std::ptrdiff_t k = std::ptrdiff_t(p.left.size()) - 1; k >= 0; --k) {
+        for (;;) {
+            if (j < 0) return false;
+            SymbolId s = sym[j];
+            if (s == Alphabet::kPop) {
+                j = m_match[j] == kUnmatched ? -1 : std::ptrdiff_t(m_match[j]) - 1;
+            } else if (s == Alphabet::kPush || m_g.ignored[m_g.alphabet[s].nameId]) {
+                --j;
+            } else {
+                break;
+            }
+        }
+        const PatternModule& pm = p.left[size_t(k)];
+        if (!matches(pm, sym[j])) return false;
+        bind(pm, size_t(j));
+        --j;
+    }
+    return true;
+}
+
+// The right context skips side branches and fails at the `]` that ends the current
+// branch; `[` and `]` written in the context match a branch start and a branch end.
+bool StepRewriter::matchRight(const Production& p, size_t i) {
+    const SymbolId* sym = m_in->symbols.data();
+    const size_t N = m_in->size();
+    size_t j = i + 1;
+    auto skipIgnored = [&] {
+        while (j < N && sym[j] != Alphabet::kPush && sym[j] != Alphabet::kPop &&
+               m_g.ignored[m_g.alphabet[sym[j]].nameId])
+            ++j;
+    };
+    for (const PatternModule& pm : p.right) {
+        if (!pm.wildcard && pm.symbol == Alphabet::kPush) {
+            skipIgnored();
+            if (j >= N || sym[j] != Alphabet::kPush) return false;
+            ++j;
+            continue;
+        }
+        if (!pm.wildcard && pm.symbol == Alphabet::kPop) {
+            while (j < N && sym[j] != Alphabet::kPop)
+                j = sym[j] == Alphabet::kPush && m_match[j] != kUnmatched ? m_match[j] + 1 : j + 1;
+            if (j >= N) return false;
+            ++j;
+            continue;
+        }
+        for (;;) {
+            if (j >= N) return false;
+            SymbolId s = sym[j];
+            if (s == Alphabet::kPush) {
+                if (m_match[j] == kUnmatched) return false;
+                j = m_match[j] + 1;
+            } else if (s == Alphabet::kPop) {
+                return false;
+            } else if (m_g.ignored[m_g.alphabet[s].nameId]) {
+                ++j;
+            } else {
+                break;
+            }
+        }
+        if (!matches(pm, sym[j])) return false;
+        bind(pm, j);
+        ++j;
+    }
+    return true;
+}
+
+bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
+    if (p.pred.arity > 0)
+        std::memcpy(&m_slots[p.pred.firstSlot], m_in->params.data() + m_paramPos,
+                    size_t(p.pred.arity) * sizeof(double));
+    if (!p.left.empty() && !matchLeft(p, i)) return false;
+    if (!p.right.empty() && !matchRight(p, i)) return false;
+    // cpfg blocks: locals start at 0 each time; the pre-condition block runs before the
+    // condition, the post-condition block only when it holds.
+    for (int k = p.firstLocal; k < p.slotCount; ++k) m_slots[size_t(k)] = 0;
+    if (!p.pre.empty()) runStatements(p.pre, m_slots.data(), rng);
+    if (p.condition && p.condition->eval(m_slots.data(), rng) == 0) return false;
+    if (!p.post.empty()) runStatements(p.post, m_slots.data(), rng);
+    return true;
+}
+
+void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng) {
+    for (const Statement& s : block) {
+        if (s.kind == Statement::Kind::Assign) slots[s.slot] = s.expr.eval(slots, rng);
+        else if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);
+        else runStatements(s.otherwise, slots, rng);
+    }
+}
+
+const Production* StepRewriter::select(size_t i, Rng& rng) {
+    const auto& list = m_rules.bySymbol[m_in->symbols[i]];
+    const auto& prods = m_rules.productions;
+    for (size_t k = 0; k < list.size(); ++k) {
+        const Production& p = prods[list[k]];
+        if (!applicable(p, i, rng)) continue;
+        if (!p.stochastic()) return &p;
+        // Stochastic: choose among the applicable stochastic rules for this module by their
+        // probabilities. If they add up to less than 1, the module stays unchanged for the
+        // rest; more than 1, they are weights.
+        m_candidates.assign(1, list[k]);
+        double total = p.probability;
+        std::uint32_t lastTested = list[k];  // whose parameters the slots hold now
+        for (size_t k2 = k + 1; k2 < list.size(); ++k2) {
+            const Production& q = prods[list[k2]];
+            if (!q.stochastic()) continue;
+            lastTested = list[k2];
+            if (applicable(q, i, rng)) {
+                m_candidates.push_back(list[k2]);
+                total += q.probability;
+            }
+        }
+        double r = rng.uniform() * std::max(total, 1.0);
+        for (auto c : m_candidates) {
+            if (r < prods[c].probability) {
+                if (c != lastTested) applicable(prods[c], i, rng);  // re-bind its slots
+                return &prods[c];
+            }
+            r -= prods[c].probability;
+        }
+        return nullptr;
+    }
+    return nullptr;
+}
+
+bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
+                           const std::atomic<bool>* cancel, const std::function<void(double)>& progress,
+                           const Ages* ages) {
+    prepare(in);
+    const size_t N = in.size();
+    std::uint64_t maxModules, maxParams;
+    bound(in, maxModules, maxParams, false);
+    if (maxModules > (64u << 20) || maxParams > (16u << 20)) bound(in, maxModules, maxParams, true);  // reserve less when big
+    out.symbols.resizeUninitialized(maxModules);
+    out.params.resizeUninitialized(maxParams);
+    std::uint16_t* da = nullptr;
+    std::uint32_t* dParent = nullptr;
+    std::int32_t* dRule = nullptr;
+    if (ages && ages->out) {
+        ages->out->resizeUninitialized(maxModules);
+        da = ages->out->data();
+    }
+    if (ages && ages->parent) {
+        ages->parent->resizeUninitialized(maxModules);
+        ages->rule->resizeUninitialized(maxModules);
+        dParent = ages->parent->data();
+        dRule = ages->rule->data();
+    }
+    SymbolId* ds = out.symbols.data();
+    double* dp = out.params.data();
+    const SymbolId* sym = in.symbols.data();
+    const double* par = in.params.data();
+    const std::uint8_t* hasRules = m_hasRules.data();
+    const std::uint8_t* arity = m_arity.data();
+    size_t pp = 0;
+    size_t nextCheck = 1u << 18;
+    for (size_t i = 0; i < N;) {
+        if (i >= nextCheck) {
+            nextCheck = i + (1u << 18);
+            if (cancel && cancel->load(std::memory_order_relaxed)) return false;
+            if (progress) progress(double(i) / double(N));
+        }
+        if (!hasRules[sym[i]]) {  // a run of modules no rule rewrites: copy it whole
+            size_t j = i, pc = 0;
+            if (m_parametric) {
+                while (j < N && !hasRules[sym[j]]) pc += arity[sym[j++]];
+            } else {
+                while (j < N && !hasRules[sym[j]]) ++j;
+            }
+            std::memcpy(ds, sym + i, (j - i) * sizeof(SymbolId));
+            ds += j - i;
+            if (da) {
+                std::memcpy(da, ages->in + i, (j - i) * sizeof(std::uint16_t));
+                da += j - i;
+            }
+            if (dParent)
+                for (size_t k = i; k < j; ++k) *dParent++ = std::uint32_t(k), *dRule++ = -1;
+            if (pc) std::memcpy(dp, par + pp, pc * sizeof(double));
+            dp += pc;
+            pp += pc;
+            i = j;
+            continue;
+        }
+        m_paramPos = pp;
+        const unsigned a = arity[sym[i]];
+        const Production* p = m_always[sym[i]];
+        if (p) {
+            for (unsigned k = 0; k < a; ++k) m_slots[k] = par[pp + k];
+        } else {
+            p = select(i, rng);
+        }
+        if (p) {
+            const auto& succ = p->successor;
+            const size_t n = succ.symbols.size();
+            if (n) std::memcpy(ds, succ.symbols.data(), n * sizeof(SymbolId));
+            ds += n;
+            if (da) {
+                const int keep = m_inherit[size_t(p - m_rules.productions.data())];
+                for (size_t j = 0; j < n; ++j) da[j] = int(j) == keep ? ages->in[i] : ages->step;
+                da += n;
+            }
+            if (dParent)
+                for (size_t j = 0; j < n; ++j)
+                    *dParent++ = std::uint32_t(i), *dRule++ = std::int32_t(p - m_rules.productions.data());
+            for (const Expr& e : succ.args) *dp++ = e.eval(m_slots.data(), rng);
+        } else {
+            *ds++ = sym[i];
+            for (unsigned k = 0; k < a; ++k) *dp++ = par[pp + k];
+            if (da) *da++ = ages->in[i];
+            if (dParent) *dParent++ = std::uint32_t(i), *dRule++ = -1;
+        }
+        pp += a;
+        ++i;
+    }
+    out.symbols.resizeUninitialized(size_t(ds - out.symbols.data()));
+    out.params.resizeUninitialized(size_t(dp - out.params.data()));
+    if (da) ages->out->resizeUninitialized(size_t(da - ages->out->data()));
+    if (dParent) {
+        ages->parent->resizeUninitialized(size_t(dParent - ages->parent->data()));
+        ages->rule->resizeUninitialized(size_t(dRule - ages->rule->data()));
+    }
+    if (m_cut) applyCut(out, m_g.alphabet, da ? ages->out : nullptr, dParent ? ages->parent : nullptr, dParent ? ages->rule : nullptr);
+    if (out.symbols.capacity() > out.symbols.size() + out.symbols.size() / 4 + 1024) out.symbols.shrinkToFit();
+    if (out.params.capacity() > out.params.size() + out.params.size() / 4 + 1024) out.params.shrinkToFit();
+    return true;
+}
+
+void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages, PodBuffer<std::uint32_t>* parent,
+              PodBuffer<std::int32_t>* rule) {
+    SymbolId* sym = s.symbols.data();
+    double* par = s.params.data();
+    std::uint16_t* age = ages ? ages->data() : nullptr;
+    std::uint32_t* from = parent ? parent->data() : nullptr;
+    std::int32_t* by = rule ? rule->data() : nullptr;
+    const size_t N = s.size();
+    size_t w = 0, pr = 0, pw = 0;
+    for (size_t i = 0; i < N;) {
+        SymbolId id = sym[i];
+        if (id == Alphabet::kCut) {
+            int depth = 0;
+            for (; i < N; ++i) {  // skip to the ']' closing this branch (kept) or the end
+                SymbolId t = sym[i];
+                if (t == Alphabet::kPush) ++depth;
+                else if (t == Alphabet::kPop && depth-- == 0) break;
+                pr += alphabet[t].arity;
+            }
+            continue;
+        }
+        unsigned a = alphabet[id].arity;
+        if (age) age[w] = age[i];
+        if (from) from[w] = from[i];
+        if (by) by[w] = by[i];
+        sym[w++] = id;
+        for (unsigned k = 0; k < a; ++k) par[pw++] = par[pr++];
+        ++i;
+    }
+    s.symbols.resizeUninitialized(w);
+    s.params.resizeUninitialized(pw);
+    if (ages) ages->resizeUninitialized(w);
+    if (parent) parent->resizeUninitialized(w);
+    if (rule) rule->resizeUninitialized(w);
+}
+
+}  // namespace sprout

@@ -1,0 +1,676 @@
+// The cpfg / lpfg / L-Py family read as it is written (cpfg manual; L-Py documentation):
+// C comments, #define (numbers become sliders, function-like macros are expanded in
+// expressions), #include of files beside the grammar, `Lsystem:` ... `endlsystem`,
+// `derivation length:`, `consider:`, the homomorphism and decomposition sections with
+// `maximum depth:`, productions written over several lines (statement blocks, L-Py's
+// `produce`). Settings of other tools are warnings: the file still opens.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/language/parser_impl.hpp"
+
+namespace sprout::detail {
+namespace {
+
+constexpr int kIncludeLineBase = 1'000'000;  // included lines are numbered apart, then reported at the #include
+constexpr int kMaxIncludeDepth = 16;
+constexpr int kMaxJoinedLines = 40;  // a production written over more lines than this is a mistake
+
+std::string lowerCollapsed(std::string_view s) {
+    std::string out;
+    bool space = false;
+    for (char c : s) {
+        if (isSpace(c)) {
+            space = !out.empty();
+            continue;
+        }
+        if (space) out += ' ';
+        space = false;
+        out += char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
+bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The arrow of a production outside parentheses and blocks: cpfg's `-->`, or `->`.
+size_t arrowAt(std::string_view s) {
+    int depth = 0;
+    for (size_t i = 0; i + 1 < s.size(); ++i) {
+        char c = s[i];
+        if (c == '(' || c == '{') ++depth;
+        else if (c == ')' || c == '}') depth = std::max(0, depth - 1);
+        else if (depth == 0 && c == '-' && s[i + 1] == '>') return i;
+    }
+    return std::string_view::npos;
+}
+
+// Open parentheses and braces in `s` (negative when more close than open).
+int openCount(std::string_view s) {
+    int depth = 0;
+    for (char c : s) {
+        if (c == '(' || c == '{') ++depth;
+        else if (c == ')' || c == '}') --depth;
+    }
+    return depth;
+}
+
+bool startsWithWord(std::string_view t, std::string_view word) {
+    return t.starts_with(word) && (t.size() == word.size() || !identChar(t[word.size()]));
+}
+
+// Comments become spaces (newlines kept), so every position in the text stays where it was.
+// Returns the offset of an unterminated `/*`, or npos.
+size_t blankComments(std::string& text) {
+    size_t i = 0;
+    while (i + 1 < text.size()) {
+        if (text[i] == '"') {  // an #include "name" may hold '//'
+            size_t end = text.find_first_of("\"\n", i + 1);
+            i = end == std::string::npos ? text.size() : end + 1;
+            continue;
+        }
+        if (text[i] == '/' && text[i + 1] == '*') {
+            size_t end = text.find("*/", i + 2);
+            size_t stop = end == std::string::npos ? text.size() : end + 2;
+            for (size_t k = i; k < stop; ++k)
+                if (text[k] != '\n') text[k] = ' ';
+            if (end == std::string::npos) return i;
+            i = stop;
+            continue;
+        }
+        if (text[i] == '/' && text[i + 1] == '/') {
+            while (i < text.size() && text[i] != '\n') text[i++] = ' ';
+            continue;
+        }
+        ++i;
+    }
+    return std::string::npos;
+}
+
+// The key of a `key: value` line in canonical form ("derivation length"), or "" when the
+// text before the ':' is not made of words.
+std::string keyOf(std::string_view t, std::string_view& value) {
+    size_t colon = t.find(':');
+    if (colon == std::string_view::npos) return "";
+    std::string_view key = trim(t.substr(0, colon));
+    if (key.empty() || !std::all_of(key.begin(), key.end(), [](char c) { return identChar(c) || isSpace(c); }))
+        return "";
+    value = trim(t.substr(colon + 1));
+    return lowerCollapsed(key);
+}
+
+// The cpfg settings Sprout reads, by their cpfg names, and the .lsys directive they set.
+const std::map<std::string, std::string>& cpfgKeys() {
+    static const std::map<std::string, std::string> k = {
+        {"derivation length", "n"}, {"axiom", "axiom"}, {"ignore", "ignore"},
+        {"angle increment", "angle"},  // from cpfg's view file, when written in the grammar
+    };
+    return k;
+}
+
+// `homomorphism`, `decomposition:`, `endlsystem` ...: a line that opens a section (a remark
+// after its ':' is allowed, as cpfg's `homomorphism: no warnings`).
+std::string sectionWord(std::string_view t) {
+    std::string head = lowerCollapsed(t.substr(0, t.find(':')));
+    static const char* words[] = {"homomorphism", "interpretation", "decomposition", "production", "productions",
+                                  "endlsystem", "group", "endgroup"};
+    for (const char* w : words)
+        if (head == w) return head;
+    return "";
+}
+
+bool knownKey(const std::string& key) {
+    if (cpfgKeys().count(key) || key == "lsystem" || key == "consider" || key == "maximum depth" || key == "surface" ||
+        key == "angle factor" || key == "define")
+        return true;
+    for (const auto& d : directives())
+        if (key == d.name) return true;
+    return false;
+}
+
+void considerHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setConsider(l, v); }
+void surfaceHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setSurface(l, v); }
+void depthHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setMaximumDepth(l, v); }
+void angleFactorHandler(Parser& p, const SourceLine& l, std::string_view v) {
+    auto f = p.constant(l, v);
+    if (!f) return;
+    if (!(*f > 0)) return p.sink().error(l, v, "the angle factor divides 360 degrees: it must be above 0");
+    p.grammar().settings.angle = {360.0 / *f, 0};
+}
+void defineBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
+    // cpfg's `define: { a = 1; b = a * 2; }`: each assignment is a constant (a slider).
+    std::string_view body = trim(v);
+    if (body.starts_with("{")) body.remove_prefix(1);
+    if (body.ends_with("}")) body.remove_suffix(1);
+    size_t start = 0;
+    while (start < body.size()) {
+        size_t end = body.find(';', start);
+        if (end == std::string_view::npos) end = body.size();
+        std::string_view stmt = trim(body.substr(start, end - start));
+        if (stmt.starts_with("array ")) {
+            p.sink().warning(l, stmt, "arrays in 'define:' are not supported: this one is ignored");
+        } else if (!stmt.empty()) {
+            p.define(l, stmt);
+        }
+        start = end + 1;
+    }
+}
+
+const Directive kConsider{"consider", considerHandler};
+const Directive kSurface{"surface", surfaceHandler, 0};  // before rules: it names a module
+const Directive kMaximumDepth{"maximum depth", depthHandler};
+const Directive kAngleFactor{"angle factor", angleFactorHandler};
+const Directive kDefineBlock{"define", defineBlockHandler, 1};
+
+}  // namespace
+
+bool Parser::readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
+                          std::vector<std::string>& stack) {
+    // `text` is m_text itself (comments already blanked) or an included file kept in m_store.
+    const bool top = includeName.empty();
+    const int originBase = top ? 0 : kIncludeLineBase * int(m_origins.size() + 1);
+    if (!top) {
+        Origin o;
+        o.logical = originBase;
+        o.includeName = includeName;
+        o.includeLine = includeLine;
+        m_origins.push_back(o);
+    }
+    struct Physical {
+        SourceLine src;
+    };
+    std::vector<Physical> lines;
+    size_t start = 0;
+    int number = 1;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        SourceLine l;
+        l.number = originBase + number++;
+        l.text = text.substr(start, end - start);
+        if (top) l.original = std::string_view(m_original).substr(start, end - start);
+        if (l.text.ends_with('\r')) l.text.remove_suffix(1);
+        lines.push_back({l});
+        start = end + 1;
+    }
+
+    // Preprocessor lines first, in order: #define and #include.
+    std::vector<SourceLine> body;
+    for (auto& p : lines) {
+        std::string_view t = trim(p.src.text);
+        if (!t.starts_with("#")) {
+            body.push_back(p.src);
+            continue;
+        }
+        std::string_view word = t.substr(0, t.find_first_of(" \t\"<"));
+        std::string_view rest = trim(t.substr(word.size()));
+        if (word == "#define") {
+            size_t nameEnd = 0;
+            while (nameEnd < rest.size() && identChar(rest[nameEnd])) ++nameEnd;
+            std::string name(rest.substr(0, nameEnd));
+            if (name.empty()) {
+                m_sink.error(p.src, rest, "expected '#define NAME value'");
+                continue;
+            }
+            if (nameEnd < rest.size() && rest[nameEnd] == '(') {  // function-like
+                size_t close = rest.find(')', nameEnd);
+                if (close == std::string_view::npos) {
+                    m_sink.error(p.src, rest.substr(nameEnd), "this '(' is never closed");
+                    continue;
+                }
+                ExprMacro m;
+                std::string_view params = rest.substr(nameEnd + 1, close - nameEnd - 1);
+                size_t a = 0;
+                while (a <= params.size()) {
+                    size_t b = params.find(',', a);
+                    if (b == std::string_view::npos) b = params.size();
+                    std::string_view param = trim(params.substr(a, b - a));
+                    if (!param.empty()) m.params.emplace_back(param);
+                    a = b + 1;
+                }
+                m.body = std::string(trim(rest.substr(close + 1)));
+                if (m.body.empty()) {
+                    m_sink.error(p.src, rest, "'#define " + name + "(...)' needs a body");
+                    continue;
+                }
+                m_macros[name] = std::move(m);
+                continue;
+            }
+            std::string_view value = trim(rest.substr(nameEnd));
+            if (value.empty()) {
+                // `#define DEBUG`: a flag for #ifdef, nothing to compute.
+                m_g.defines.emplace(name, 1.0);
+                continue;
+            }
+            // A number (or an expression of numbers) is a constant with a slider; anything
+            // else (`#define LEAF ~l(2)`) is text put in place where its name is used.
+            DiagnosticSink scratch;
+            ExprScope scope{nullptr, &m_g.defines, &m_macros};
+            if (compileExpr(value, p.src, scope, scratch)) {
+                define(p.src, rest);
+                // A slider writes its value back into the text it edits: only the grammar's
+                // own defines get one, not those of an included file.
+                if (!top && !m_g.defineOrder.empty() && m_g.defineOrder.back() == name) m_g.defineOrder.pop_back();
+            } else {
+                m_textMacros.emplace_back(name, std::string(value));
+            }
+        } else if (word == "#include") {
+            std::string_view name = rest;
+            if ((name.starts_with("\"") && name.ends_with("\"") && name.size() >= 2) ||
+                (name.starts_with("<") && name.ends_with(">") && name.size() >= 2))
+                name = name.substr(1, name.size() - 2);
+            else {
+                m_sink.error(p.src, rest.empty() ? t : rest, "expected '#include \"file\"'");
+                continue;
+            }
+            std::string file(name);
+            if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
+                m_sink.error(p.src, rest, "'" + file + "' includes itself" +
+                                              (stack.size() > 1 && file != stack.back() ? " through '" + stack.back() + "'" : ""));
+                continue;
+            }
+            if (depth >= kMaxIncludeDepth) {
+                m_sink.error(p.src, rest, "#include is nested too deeply (more than 16 files)");
+                continue;
+            }
+            if (!m_options.include) {
+                m_sink.error(p.src, rest, "#include \"" + file + "\" needs the grammar's folder: save the grammar beside it first");
+                continue;
+            }
+            std::string error;
+            auto included = m_options.include(file, error);
+            if (!included) {
+                m_sink.error(p.src, rest, "cannot include '" + file + "': " + error);
+                continue;
+            }
+            m_store.push_back(std::move(*included));
+            std::string& stored = m_store.back();
+            for (size_t k = 0; k < stored.size(); ++k)
+                if (stored[k] == '\r' && (k + 1 == stored.size() || stored[k + 1] != '\n')) stored[k] = '\n';
+            if (size_t open = blankComments(stored); open != std::string::npos) {
+                m_sink.error(p.src, rest, "in '" + file + "': a comment '/*' is never closed with '*/'");
+                continue;
+            }
+            stack.push_back(file);
+            // The included lines take their place here: read them now, in order.
+            std::vector<Line> saved = std::move(m_lines);
+            m_lines.clear();
+            readCpfgFile(stored, file, top ? p.src.number : includeLine, depth + 1, stack);
+            std::vector<Line> inner = std::move(m_lines);
+            m_lines = std::move(saved);
+            stack.pop_back();
+            // Keep the order: flush what came before, then the included lines.
+            for (const auto& l : inner) body.push_back(l.src);
+        } else if (word == "#ignore") {
+            body.push_back(p.src);  // read by the `ignore` directive below
+        } else if (word == "#ifdef" || word == "#ifndef" || word == "#if" || word == "#else" || word == "#endif" ||
+                   word == "#undef" || word == "#elif") {
+            m_sink.warning(p.src, word, "'" + std::string(word) + "' is not supported: every line is read");
+        }
+        // Any other '#' line is a comment (L-Py files use Python's '#').
+    }
+
+    // Textual #defines put in place (the line keeps its number; columns after a replacement
+    // are counted in the replaced text). As the C preprocessor does, a macro is not expanded
+    // again inside its own expansion (`#define a &(a) F` would otherwise grow without end),
+    // and an expansion past 64 KB is refused.
+    if (!m_textMacros.empty()) {
+        for (auto& l : body) {
+            std::vector<std::string> active;
+            bool tooLong = false;
+            std::string expanded = expandTextMacros(l.text, active, tooLong);
+            if (tooLong) {
+                m_sink.error(l, l.text, "the #define names on this line expand to more than 64 KB of text");
+                l.text = l.text.substr(0, 0);
+                continue;
+            }
+            if (expanded != l.text) {
+                m_store.push_back(std::move(expanded));
+                l.text = m_store.back();
+                l.original = m_store.back();
+            }
+        }
+    }
+
+    // Productions written over several lines become one logical line.
+    for (size_t i = 0; i < body.size(); ++i) {
+        std::string_view t = trim(body[i].text);
+        Line out;
+        out.src = body[i];
+        std::string_view value;
+        std::string key = keyOf(t, value);
+        const bool directive = (!key.empty() && arrowAt(t) == std::string_view::npos && knownKey(key)) ||
+                               !sectionWord(t).empty() || startsWithWord(t, "module");
+        bool complete = t.empty() || directive || t.starts_with("#") ||
+                        (arrowAt(t) != std::string_view::npos && openCount(t) <= 0);
+        if (!complete) {
+            // Join while a block or parenthesis is open, or no arrow has come yet and the next
+            // line continues the production (a block, the arrow, ':' or L-Py's produce).
+            std::string joined(body[i].text);
+            Origin o;
+            o.pieces.emplace_back(0, body[i].number);
+            o.pieceStart.push_back(0);
+            size_t j = i;
+            bool done = false, python = false;
+            while (j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
+                std::string_view cur = trim(joined);
+                std::string_view next = trim(body[j + 1].text);
+                const bool hasArrow = arrowAt(joined) != std::string_view::npos;
+                const bool open = openCount(joined) > 0;
+                const bool produce = startsWithWord(next, "produce") || startsWithWord(next, "nproduce");
+                if (!open && (hasArrow || next.empty())) break;
+                if (!open && !(cur.ends_with(":") || cur.ends_with("}") || next.starts_with("{") ||
+                               next.starts_with("-->") || next.starts_with("->") || next.starts_with(":") ||
+                               next.starts_with("}") || produce))
+                    break;
+                if (!produce && !open && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
+                                 startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
+                    m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
+                                                    "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
+                    python = true;
+                    break;
+                }
+                ++j;
+                joined += ' ';
+                o.pieces.emplace_back(joined.size(), body[j].number);
+                o.pieceStart.push_back(0);
+                std::string piece(body[j].text);
+                if (produce) {  // L-Py: `A(x) :` then `produce F(x) A(x+1)`
+                    size_t at = piece.find_first_not_of(" \t");
+                    size_t len = piece[at] == 'n' ? 8 : 7;
+                    piece.replace(at, len, std::string("-->") + std::string(len - 3, ' '));
+                }
+                joined += piece;
+                if (arrowAt(joined) != std::string_view::npos && openCount(joined) <= 0) {
+                    done = true;
+                    break;
+                }
+            }
+            if (python) {  // reported once, at the Python line; its rule is not read
+                // The rule's indented body goes with it.
+                for (size_t k = i + 1; k < body.size() && (k <= j + 1 || (!body[k].text.empty() && isSpace(body[k].text[0]))); ++k)
+                    body[k].text = body[k].text.substr(0, 0);
+                out.src.text = out.src.text.substr(0, 0);
+            } else if (done) {
+                m_store.push_back(std::move(joined));
+                out.src.text = m_store.back();
+                out.src.original = m_store.back();
+                o.logical = body[i].number;
+                m_origins.push_back(std::move(o));
+                i = j;
+            }
+        }
+        m_lines.push_back(out);
+    }
+    return true;
+}
+
+std::string Parser::expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const {
+    std::string out;
+    size_t i = 0;
+    while (i < text.size() && !tooLong) {
+        if (!(std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') || (i > 0 && identChar(text[i - 1]))) {
+            out += text[i++];
+            continue;
+        }
+        size_t end = i;
+        while (end < text.size() && identChar(text[end])) ++end;
+        const std::string_view word = text.substr(i, end - i);
+        i = end;
+        const std::string* value = nullptr;
+        for (const auto& [name, v] : m_textMacros)
+            if (name == word) value = &v;
+        if (!value || std::find(active.begin(), active.end(), word) != active.end()) {
+            out += word;
+            continue;
+        }
+        active.emplace_back(word);
+        out += expandTextMacros(*value, active, tooLong);
+        active.pop_back();
+        if (out.size() > (64u << 10)) tooLong = true;
+    }
+    return out;
+}
+
+void Parser::buildCpfgLines() {
+    if (size_t open = blankComments(m_text); open != std::string::npos) {
+        // Report at the '/*' and read the text before it.
+        size_t lineStart = m_text.rfind('\n', open);
+        lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+        size_t lineEnd = m_original.find('\n', open);
+        SourceLine l;
+        l.number = int(std::count(m_text.begin(), m_text.begin() + std::ptrdiff_t(open), '\n')) + 1;
+        l.text = std::string_view(m_text).substr(lineStart, (lineEnd == std::string::npos ? m_text.size() : lineEnd) - lineStart);
+        l.original = std::string_view(m_original).substr(lineStart, l.text.size());
+        m_sink.error(l, l.text.substr(open - lineStart), "this comment '/*' is never closed with '*/'");
+    }
+    std::vector<std::string> stack;
+    if (!m_options.fileName.empty()) stack.push_back(m_options.fileName);
+    readCpfgFile(m_text, "", 0, 0, stack);
+}
+
+void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
+    std::string_view t = trim(l.src.text);
+    l.section = section;
+    if (ended || t.empty()) return;
+    if (t.starts_with("#ignore")) return classify(l, section);
+    if (t.starts_with("#")) return;
+    if (arrowAt(t) != std::string_view::npos) {
+        l.kind = Line::Rule;
+        return;
+    }
+    // Section keywords stand alone (a word after a ':' is a remark of cpfg's: ignored).
+    const std::string head = sectionWord(t);
+    if (head == "homomorphism" || head == "interpretation") {
+        section = Section::Interpretation;
+        return;
+    }
+    if (head == "decomposition") {
+        section = Section::Decomposition;
+        return;
+    }
+    if (head == "production" || head == "productions") {
+        section = Section::Productions;
+        return;
+    }
+    if (head == "endlsystem") {
+        ended = true;  // what follows (another tool's code, a second L-system) is not read
+        return;
+    }
+    if (head == "group" || head == "endgroup") {
+        m_sink.warning(l.src, t, "production groups are not supported: all productions are used");
+        return;
+    }
+    if (startsWithWord(t, "module")) {  // L-Py: `module Apex(x), Internode`
+        std::string names;
+        int depth = 0;
+        for (char c : t.substr(6)) {
+            if (c == '(') ++depth;
+            else if (c == ')') --depth;
+            else if (depth == 0) names += c;
+        }
+        m_store.push_back(std::move(names));
+        l.kind = Line::DirectiveLine;
+        l.value = m_store.back();
+        for (const auto& d : directives())
+            if (std::string_view(d.name) == "module") l.directive = &d;
+        return;
+    }
+    std::string_view value;
+    std::string key = keyOf(t, value);
+    if (key.empty()) {
+        m_sink.error(l.src, t, "expected a production such as 'A --> B' or a setting such as 'derivation length: 5'");
+        return;
+    }
+    l.value = value;
+    if (key == "lsystem") return;
+    std::string name = key;
+    if (auto it = cpfgKeys().find(key); it != cpfgKeys().end()) name = it->second;
+    if (key == "consider") l.directive = &kConsider;
+    else if (key == "surface") l.directive = &kSurface;
+    else if (key == "maximum depth") l.directive = &kMaximumDepth;
+    else if (key == "angle factor") l.directive = &kAngleFactor;
+    else if (key == "define" && value.starts_with("{")) l.directive = &kDefineBlock;
+    else
+        for (const auto& d : directives())
+            if (name == d.name) l.directive = &d;
+    if (!l.directive) {
+        m_sink.warning(l.src, trim(l.src.text.substr(0, l.src.text.find(':'))),
+                       "'" + std::string(trim(t.substr(0, t.find(':')))) + ":' is not a setting Sprout knows (another tool's?): ignored");
+        return;
+    }
+    l.kind = Line::DirectiveLine;
+}
+
+void Parser::setConsider(const SourceLine& line, std::string_view text) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods)) return;
+    m_considerSet = true;
+    for (const auto& m : mods) {
+        if (m.hasParens) {
+            m_sink.error(line, m.name, "list only module names after 'consider:', without parameters");
+            return;
+        }
+        auto id = symbolFor(line, m.name, 0);
+        if (!id) return;
+        m_considered.push_back(m_g.alphabet[*id].nameId);
+    }
+}
+
+void Parser::setSurface(const SourceLine& line, std::string_view text) {
+    // cpfg's view-file line: `surface: NAME FILE.s [scale]` (the scale is not used: the
+    // module's parameter scales the surface).
+    std::istringstream words{std::string(text)};
+    std::string name, file;
+    if (!(words >> name >> file) || name.find_first_of("()[]~") != std::string::npos) {
+        m_sink.error(line, text, "expected 'surface: NAME FILE.s', as in 'surface: s leaf.s'");
+        return;
+    }
+    declareModules(line, "~" + name);
+    if (!m_options.include) {
+        m_sink.error(line, text, "surface '" + file + "' needs the grammar's folder: save the grammar beside it first");
+        return;
+    }
+    std::string error;
+    auto bytes = m_options.include(file, error);
+    if (!bytes) {
+        m_sink.error(line, text, "cannot read the surface '" + file + "': " + error);
+        return;
+    }
+    auto surface = parseSurfaceFile(*bytes, error);
+    if (!surface) {
+        m_sink.error(line, text, "'" + file + "' is not a cpfg surface file: " + error);
+        return;
+    }
+    m_g.surfaceFiles["~" + name] = std::make_shared<const SurfaceFile>(std::move(*surface));
+}
+
+void Parser::loadSurfaceFiles() {
+    if (!m_options.include) return;
+    for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+        const std::string& name = m_g.alphabet[SymbolId(s)].name;
+        if (name.size() < 2 || name[0] != '~' || m_g.surfaceFiles.count(name)) continue;
+        std::string error;
+        auto bytes = m_options.include(name.substr(1) + ".s", error);
+        if (!bytes) continue;  // no file: the built-in leaf and petal, or nothing
+        auto surface = parseSurfaceFile(*bytes, error);
+        if (!surface) {
+            m_sink.add({0, 0, "'" + name.substr(1) + ".s' beside the grammar is not a cpfg surface file (" + error +
+                                  "): '" + name + "' is drawn as the built-in shape", Severity::Warning});
+            continue;
+        }
+        m_g.surfaceFiles[name] = std::make_shared<const SurfaceFile>(std::move(*surface));
+    }
+}
+
+void Parser::setMaximumDepth(const SourceLine& line, std::string_view text) {
+    auto v = constant(line, text);
+    if (!v) return;
+    if (*v != std::floor(*v) || *v < 1 || *v > 1000) {
+        m_sink.error(line, text, "maximum depth must be a whole number from 1 to 1000");
+        return;
+    }
+    if (m_depthSection == Section::Interpretation) m_g.interpretationDepth = int(*v);
+    else if (m_depthSection == Section::Decomposition) m_g.decompositionDepth = int(*v);
+    else m_sink.warning(line, text, "'maximum depth:' belongs in the homomorphism or decomposition section: ignored here");
+}
+
+void Parser::finishCpfg(std::vector<Diagnostic>& diags) {
+    std::map<int, const Origin*> byLine;
+    for (const auto& o : m_origins)
+        if (!o.pieces.empty()) byLine[o.logical] = &o;
+    for (auto& d : diags) {
+        if (auto it = byLine.find(d.line); it != byLine.end()) {  // a joined production
+            const Origin& o = *it->second;
+            const size_t offset = size_t(std::max(0, d.col - 1));
+            size_t k = 0;
+            while (k + 1 < o.pieces.size() && o.pieces[k + 1].first <= offset) ++k;
+            d.line = o.pieces[k].second;
+            d.col = int(offset - o.pieces[k].first + o.pieceStart[k]) + 1;
+        }
+        if (d.line >= kIncludeLineBase) {  // a line of an included file
+            const size_t index = size_t(d.line / kIncludeLineBase) - 1;
+            const int inner = d.line % kIncludeLineBase;
+            for (const auto& o : m_origins) {
+                if (o.logical != kIncludeLineBase * int(index + 1) || o.includeName.empty()) continue;
+                d.message = "in '" + o.includeName + "' line " + std::to_string(inner) + ": " + d.message;
+                d.line = o.includeLine;
+                d.col = 1;
+                break;
+            }
+        }
+    }
+    std::stable_sort(diags.begin(), diags.end(), [](const Diagnostic& a, const Diagnostic& b) {
+        return a.line != b.line ? a.line < b.line : a.col < b.col;
+    });
+}
+
+}  // namespace sprout::detail
+
+namespace sprout {
+
+IncludeReader includeFromFolder(std::string folder) {
+    return [folder = std::move(folder)](const std::string& name, std::string& error) -> std::optional<std::string> {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::path rel(name);
+        if (rel.is_absolute() || name.find("..") != std::string::npos) {
+            error = "only files in the grammar's own folder can be included";
+            return std::nullopt;
+        }
+        const fs::path base = fs::weakly_canonical(fs::path(folder.empty() ? "." : folder), ec);
+        const fs::path target = fs::weakly_canonical(base / rel, ec);
+        if (ec) {
+            error = "no such file beside the grammar";
+            return std::nullopt;
+        }
+        // A symbolic link may not lead out of the folder either.
+        auto b = base.begin(), t = target.begin();
+        for (; b != base.end() && t != target.end() && *b == *t; ++b, ++t) {}
+        if (b != base.end()) {
+            error = "it leads outside the grammar's folder";
+            return std::nullopt;
+        }
+        if (!fs::is_regular_file(target, ec)) {
+            error = "no such file beside the grammar";
+            return std::nullopt;
+        }
+        if (fs::file_size(target, ec) > (4u << 20)) {
+            error = "it is larger than 4 MB";
+            return std::nullopt;
+        }
+        std::ifstream in(target, std::ios::binary);
+        if (!in) {
+            error = "it cannot be read";
+            return std::nullopt;
+        }
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+}
+
+}  // namespace sprout

@@ -1,0 +1,191 @@
+// cpfg statement blocks in productions: `pred : { x = a*2; } x > 1 { y = x+1; } --> F(y)`.
+// The blocks hold assignments and if / else; names they assign are the production's locals
+// (slots after its formal parameters), visible in the condition and the successor.
+#include <cctype>
+
+#include "core/language/parser_impl.hpp"
+
+namespace sprout::detail {
+namespace {
+
+bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Index of the bracket closing the one at `open` (same kind), or npos.
+size_t matching(std::string_view s, size_t open) {
+    const char o = s[open], c = o == '{' ? '}' : o == '(' ? ')' : ']';
+    int depth = 0;
+    for (size_t i = open; i < s.size(); ++i) {
+        if (s[i] == o) ++depth;
+        else if (s[i] == c && --depth == 0) return i;
+    }
+    return std::string_view::npos;
+}
+
+size_t skipSpaces(std::string_view s, size_t i) {
+    while (i < s.size() && isSpace(s[i])) ++i;
+    return i;
+}
+
+class BlockParser {
+public:
+    BlockParser(Parser& parser, const SourceLine& line, const std::vector<std::string>& params,
+                const std::unordered_map<std::string, ExprMacro>& macros)
+        : m_parser(parser), m_line(line), m_params(params), m_scope{&params, &parser.grammar().defines, &macros} {}
+
+    bool statements(std::string_view text, std::vector<Statement>& out) {
+        size_t i = 0;
+        while (true) {
+            i = skipSpaces(text, i);
+            if (i >= text.size()) return true;
+            if (!statement(text, i, out)) return false;
+        }
+    }
+
+private:
+    bool fail(std::string_view at, std::string message) {
+        m_parser.sink().error(m_line, at, std::move(message));
+        return false;
+    }
+
+    // One statement starting at `i` (spaces skipped); `i` moves past it.
+    bool statement(std::string_view text, size_t& i, std::vector<Statement>& out) {
+        if (text[i] == ';') {
+            ++i;
+            return true;
+        }
+        if (text[i] == '{') {
+            size_t close = matching(text, i);
+            if (close == std::string_view::npos) return fail(text.substr(i), "this '{' is never closed with '}'");
+            if (!statements(text.substr(i + 1, close - i - 1), out)) return false;
+            i = close + 1;
+            return true;
+        }
+        if (!identStart(text[i]))
+            return fail(text.substr(i), "expected a statement such as 'x = a * 2;' or 'if (x > 1) y = 2;'");
+        size_t start = i;
+        while (i < text.size() && identChar(text[i])) ++i;
+        std::string_view name = text.substr(start, i - start);
+        i = skipSpaces(text, i);
+        if (name == "if") {
+            if (i >= text.size() || text[i] != '(') return fail(text.substr(i), "expected '(' after 'if', as in 'if (x > 1) y = 2;'");
+            size_t close = matching(text, i);
+            if (close == std::string_view::npos) return fail(text.substr(i), "this '(' is never closed");
+            Statement s;
+            s.kind = Statement::Kind::If;
+            auto test = compileExpr(text.substr(i + 1, close - i - 1), m_line, m_scope, m_parser.sink());
+            if (!test) return false;
+            s.expr = std::move(*test);
+            i = skipSpaces(text, close + 1);
+            if (i >= text.size()) return fail(text.substr(start), "'if (...)' needs a statement after it");
+            if (!statement(text, i, s.then)) return false;
+            size_t j = skipSpaces(text, i);
+            if (text.substr(j, 4) == "else" && (j + 4 >= text.size() || !identChar(text[j + 4]))) {
+                i = skipSpaces(text, j + 4);
+                if (i >= text.size()) return fail(text.substr(j), "'else' needs a statement after it");
+                if (!statement(text, i, s.otherwise)) return false;
+            }
+            out.push_back(std::move(s));
+            return true;
+        }
+        if (name == "while" || name == "for" || name == "do")
+            return fail(name, "'" + std::string(name) + "' loops are not supported in blocks: use a production that repeats");
+        if (name == "else") return fail(name, "'else' without an 'if' before it");
+        if (i < text.size() && text[i] == '(')
+            return fail(name, "'" + std::string(name) + "(...)' is not a statement Sprout runs: blocks hold assignments and if / else");
+        if (i >= text.size() || text[i] != '=' || (i + 1 < text.size() && text[i + 1] == '='))
+            return fail(text.substr(start), "expected '=' after '" + std::string(name) + "', as in '" + std::string(name) + " = 1;'");
+        ++i;
+        // The value runs to the ';' outside parentheses (or to the end of the block).
+        size_t end = i;
+        int depth = 0;
+        for (; end < text.size(); ++end) {
+            if (text[end] == '(') ++depth;
+            else if (text[end] == ')') --depth;
+            else if (text[end] == ';' && depth <= 0) break;
+        }
+        Statement s;
+        s.kind = Statement::Kind::Assign;
+        size_t slot = 0;
+        while (slot < m_params.size() && m_params[slot] != name) ++slot;
+        s.slot = std::uint16_t(slot);
+        auto value = compileExpr(text.substr(i, end - i), m_line, m_scope, m_parser.sink());
+        if (!value) return false;
+        s.expr = std::move(*value);
+        out.push_back(std::move(s));
+        i = end < text.size() ? end + 1 : end;
+        return true;
+    }
+
+    Parser& m_parser;
+    const SourceLine& m_line;
+    const std::vector<std::string>& m_params;
+    ExprScope m_scope;
+};
+
+}  // namespace
+
+bool Parser::parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
+                        std::vector<Statement>& out) {
+    return BlockParser(*this, line, params, m_macros).statements(text, out);
+}
+
+void Parser::collectAssigned(std::string_view text, std::vector<std::string>& names) {
+    for (size_t i = 0; i < text.size();) {
+        if (!identStart(text[i]) || (i > 0 && (identChar(text[i - 1]) || text[i - 1] == '.'))) {
+            ++i;
+            continue;
+        }
+        size_t start = i;
+        while (i < text.size() && identChar(text[i])) ++i;
+        std::string name(text.substr(start, i - start));
+        size_t j = skipSpaces(text, i);
+        if (j < text.size() && text[j] == '=' && (j + 1 >= text.size() || text[j + 1] != '=') && name != "if" &&
+            name != "else" && std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+    }
+}
+
+bool Parser::splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
+                                std::string_view& condition, std::string_view& post) {
+    pre = post = {};
+    std::string_view t = trim(text);
+    if (t.starts_with("{")) {
+        size_t close = matching(t, 0);
+        if (close == std::string_view::npos) {
+            m_sink.error(line, t, "this '{' is never closed with '}'");
+            return false;
+        }
+        pre = t.substr(1, close - 1);
+        if (trim(pre).empty()) pre = t.substr(1, 0);
+        t = trim(t.substr(close + 1));
+    }
+    if (t.ends_with("}")) {
+        int depth = 0;
+        size_t open = std::string_view::npos;
+        for (size_t k = t.size(); k-- > 0;) {
+            if (t[k] == '}') ++depth;
+            else if (t[k] == '{' && --depth == 0) {
+                open = k;
+                break;
+            }
+        }
+        if (open == std::string_view::npos) {
+            m_sink.error(line, t.substr(t.size() - 1), "this '}' closes a block that was never opened with '{'");
+            return false;
+        }
+        post = t.substr(open + 1, t.size() - open - 2);
+        t = trim(t.substr(0, open));
+    }
+    if (size_t brace = t.find_first_of("{}"); brace != std::string_view::npos) {
+        m_sink.error(line, t.substr(brace), "a block '{ ... }' goes before or after the condition, not inside it");
+        return false;
+    }
+    condition = t;
+    // An empty block is still a block: keep a non-null view so the caller sees it.
+    if (pre.data() && trim(pre).empty()) pre = {};
+    if (post.data() && trim(post).empty()) post = {};
+    return true;
+}
+
+}  // namespace sprout::detail

@@ -1,0 +1,99 @@
+#pragma once
+// Arithmetic expressions in parameters, conditions and directive values, compiled once to a
+// small stack-machine program (never re-parsed per application). Constant subtrees are
+// folded; a bare parameter or constant skips the interpreter altogether.
+//
+// Trigonometric functions work in degrees, like the grammar's `angle` and like cpfg.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/base/rng.hpp"
+#include "core/language/source.hpp"
+
+namespace sprout {
+
+enum class Op : std::uint8_t {
+    Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
+    Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select, Call1, Call2, Rand, Normal,
+};
+
+struct Instr {
+    Op op;
+    std::uint8_t fn = 0;     // Call1 / Call2: index into the function table
+    std::uint16_t slot = 0;  // Slot
+    double value = 0;        // Const
+};
+
+class Expr {
+public:
+    // SlotOpConst / ConstOpSlot: `x*0.7`, `t+1`, `2/x`... the shapes most successor
+    // parameters take, evaluated without the interpreter loop (same operation, same rounding).
+    enum class Kind : std::uint8_t { Const, Slot, SlotOpConst, ConstOpSlot, Program };
+
+    static Expr constant(double v) {
+        Expr e;
+        e.m_kind = Kind::Const;
+        e.m_value = v;
+        return e;
+    }
+
+    // `slots` holds the values bound to the formal parameters; `rng` feeds rand()/normal().
+    double eval(const double* slots, Rng& rng) const {
+        switch (m_kind) {
+            case Kind::Const: return m_value;
+            case Kind::Slot: return slots[m_slot];
+            case Kind::SlotOpConst: return binary(m_op, slots[m_slot], m_value);
+            case Kind::ConstOpSlot: return binary(m_op, m_value, slots[m_slot]);
+            default: return run(slots, rng);
+        }
+    }
+    Kind kind() const { return m_kind; }
+    bool isConstant() const { return m_kind == Kind::Const; }
+    double constantValue() const { return m_value; }
+    bool usesRandom() const { return m_usesRandom; }
+
+private:
+    friend class ExprCompiler;
+    double run(const double* slots, Rng& rng) const;
+    static double binary(Op op, double a, double b) {
+        switch (op) {
+            case Op::Add: return a + b;
+            case Op::Sub: return a - b;
+            case Op::Mul: return a * b;
+            default: return a / b;
+        }
+    }
+
+    Kind m_kind = Kind::Const;
+    Op m_op = Op::Add;
+    std::uint16_t m_slot = 0;
+    bool m_usesRandom = false;
+    double m_value = 0;
+    std::vector<Instr> m_code;
+};
+
+// A function-like cpfg `#define in(x, y) (x > 0 && y > 0)`: its body is compiled at each
+// use with the arguments in place of its parameters (as the C preprocessor would).
+struct ExprMacro {
+    std::vector<std::string> params;
+    std::string body;
+};
+
+struct ExprScope {
+    const std::vector<std::string>* params = nullptr;  // slot i is named params[i]
+    const std::unordered_map<std::string, double>* defines = nullptr;
+    const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
+};
+
+// Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.
+std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, const ExprScope& scope,
+                                DiagnosticSink& sink);
+
+// Names of the built-in functions (for suggestions and documentation).
+std::vector<std::string> builtinFunctionNames();
+
+}  // namespace sprout

@@ -1,0 +1,154 @@
+#pragma once
+// A parsed grammar: the alphabet, the axiom, productions indexed by predecessor symbol and
+// the directives' values. Produced by parse(), read by derive() and the turtle.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/language/alphabet.hpp"
+#include "core/language/diagnostic.hpp"
+#include "core/language/environment_spec.hpp"
+#include "core/language/expr.hpp"
+#include "core/language/module_string.hpp"
+#include "core/language/surface_file.hpp"
+
+namespace sprout {
+
+// A value with optional seeded jitter: `angle: 22 ~ 4` is mean 22, sigma 4.
+struct Jittered {
+    double mean = 0;
+    double sigma = 0;
+};
+
+enum class Toggle { Auto, On, Off };
+enum class ViewHint { Auto, Flat, Solid };  // `view: 2d` / `view: 3d`
+
+struct Settings {
+    int iterations = 0;
+    Jittered angle{90, 0};  // degrees
+    Jittered step{1, 0};
+    double width = 0;         // stem diameter in step units; 0: automatic, from the plant's size
+    double widthFactor = 0.7; // `!` multiplies the width by it, `#` divides
+    double branchLength = 1;  // branch_scale: factors applied at each `[`
+    double branchWidth = 1;
+    double stepScale = 1;     // step_scale: length factor per derivation step
+    std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
+    double tropismStrength = 0;
+    std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
+    Toggle gradient = Toggle::Auto;      // colour by branch order (Auto: when no colour modules)
+    std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
+    ViewHint view = ViewHint::Auto;
+    std::uint64_t seed = 1;
+};
+
+// One module of a predecessor or context: a name, and either named formal parameters or
+// (in contexts, when written without parentheses) any parameter count.
+struct PatternModule {
+    SymbolId symbol = 0;  // exact symbol when arity is fixed
+    NameId name = 0;
+    int arity = 0;        // -1: matches the name with any parameters
+    bool wildcard = false;  // `*`: any module
+    std::uint16_t firstSlot = 0;  // where this module's parameters are bound
+};
+
+// A cpfg statement in a production's block: `x = expr;` or `if (c) ... else ...`. Locals
+// are slots after the formal parameters, so the condition and successor read them.
+struct Statement {
+    enum class Kind : std::uint8_t { Assign, If } kind = Kind::Assign;
+    std::uint16_t slot = 0;      // Assign: where the value goes
+    Expr expr;                   // Assign: the value; If: the test
+    std::vector<Statement> then, otherwise;
+};
+
+struct Successor {
+    std::vector<SymbolId> symbols;
+    std::vector<Expr> args;  // one per parameter, in string order
+    size_t paramCount() const { return args.size(); }
+};
+
+struct Production {
+    int line = 0;
+    std::vector<PatternModule> left;   // in text order; matched right to left
+    PatternModule pred;
+    std::vector<PatternModule> right;  // in text order
+    std::optional<Expr> condition;
+    std::vector<Statement> pre, post;  // cpfg blocks: before the condition, after it holds
+    std::uint16_t firstLocal = 0;      // slots from here to slotCount are the blocks' locals
+    Successor successor;
+    double probability = -1;  // < 0: deterministic
+    int slotCount = 0;        // formal parameters across left, pred and right
+    bool hasContext() const { return !left.empty() || !right.empty(); }
+    bool stochastic() const { return probability >= 0; }
+    bool hasBlocks() const { return !pre.empty() || !post.empty(); }
+};
+
+struct RuleSet {
+    std::vector<Production> productions;         // in file order
+    std::vector<std::vector<std::uint32_t>> bySymbol;  // symbol -> indices into productions
+    void index(size_t alphabetSize);
+};
+
+struct Grammar {
+    Alphabet alphabet;
+    ModuleString axiom;
+    RuleSet rules;           // derivation productions
+    RuleSet interpretation;  // cpfg homomorphism: applied when drawing, never stored
+    RuleSet decomposition;   // cpfg decomposition: applied after each step until none applies
+    int interpretationDepth = 1;  // `maximum depth:` of the homomorphism (recursion levels)
+    int decompositionDepth = 32;  // `maximum depth:` of the decomposition
+    // cpfg's cut: a '%' stays in the string of the step that made it and removes the rest of
+    // its branch while the next step is derived. In .lsys it cuts at once (ABOP 1.10.3).
+    bool cutInNextStep = false;
+    Settings settings;
+    std::vector<bool> ignored;  // by NameId: skipped when matching contexts
+    std::unordered_map<std::string, double> defines;
+    Environment environment;  // what ?E modules ask after each step (`environment:` lines)
+    // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
+    std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
+    std::vector<std::string> defineOrder;  // for sliders, in file order
+
+    bool parametric() const;        // any module with parameters in axiom or successors
+    bool hasContext() const;
+    bool stochastic() const;
+    bool usesCut() const;
+    bool hasQueries() const;        // ?P ?H ?U ?L ?E modules: the string is interpreted after each step
+    // Anything the D0L fast path cannot do: decomposition, queries, statement blocks.
+    bool needsGeneralEngine() const;
+};
+
+struct ParseResult {
+    std::shared_ptr<const Grammar> grammar;  // null when there are errors
+    std::vector<Diagnostic> diagnostics;     // errors and warnings, in line order
+    bool ok() const { return grammar != nullptr; }
+};
+
+// What a module asks after each step: 'P' 'H' 'U' 'L' for the turtle's position and frame
+// (cpfg query modules), 'E' for the environment (communication module), 0 for anything else.
+inline char queryKind(std::string_view name) {
+    if (name.size() != 2 || name[0] != '?') return 0;
+    return std::string_view("PHULE").find(name[1]) != std::string_view::npos ? name[1] : 0;
+}
+
+// Reads the file named by an `#include` (cpfg family): its text, or nullopt with `error` set.
+using IncludeReader = std::function<std::optional<std::string>(const std::string& name, std::string& error)>;
+
+struct ParseOptions {
+    bool cpfg = false;       // the cpfg / lpfg / L-Py family instead of .lsys
+    IncludeReader include;   // null: `#include` is an error (text typed with no folder)
+    std::string fileName;    // the grammar's own name, so that it cannot include itself
+};
+
+ParseResult parse(std::string_view text);
+ParseResult parse(std::string_view text, const ParseOptions& options);
+
+// Reads files for `#include` from `folder` only: a name that leads outside it (`..`, an
+// absolute path, a symbolic link out) is refused with a message.
+IncludeReader includeFromFolder(std::string folder);
+
+}  // namespace sprout

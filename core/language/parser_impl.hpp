@@ -1,0 +1,132 @@
+#pragma once
+// Internals of parse(), shared by parser.cpp (lines, rules, module sequences) and
+// directives.cpp (the `key: value` table).
+#include <array>
+#include <deque>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/language/grammar.hpp"
+#include "core/language/source.hpp"
+
+namespace sprout::detail {
+
+constexpr int kMaxIterations = 10000;
+
+class Parser;
+using DirectiveHandler = std::function<void(Parser&, const SourceLine&, std::string_view value)>;
+
+struct Directive {
+    const char* name;
+    DirectiveHandler handler;
+    int phase = 2;  // 0: module names, 1: defines, 2: everything else (in file order with rules)
+};
+
+// The table of `key: value` directives. Adding one is one row here (and a Settings field).
+const std::vector<Directive>& directives();
+
+// A module as written: its name and the raw text of each argument.
+struct RawModule {
+    std::string_view name;
+    std::vector<std::string_view> args;
+    bool hasParens = false;
+};
+
+class Parser {
+public:
+    explicit Parser(std::string_view text, const ParseOptions& options = {});
+    ParseResult run();
+
+    // Used by directive handlers.
+    Grammar& grammar() { return m_g; }
+    DiagnosticSink& sink() { return m_sink; }
+    bool tokenize(const SourceLine& line, std::string_view text, std::vector<RawModule>& out);
+    std::optional<double> constant(const SourceLine& line, std::string_view text);
+    std::optional<Jittered> jittered(const SourceLine& line, std::string_view text);
+    // Values separated by commas, or by spaces when there is no comma ("0 -1 0 0.2").
+    std::optional<std::vector<double>> numbers(const SourceLine& line, std::string_view text,
+                                               size_t minCount, size_t maxCount, const char* example);
+    void declareModules(const SourceLine& line, std::string_view names);
+    void define(const SourceLine& line, std::string_view text);
+    void setAxiom(const SourceLine& line, std::string_view text);
+    bool setPlainAxiom(const SourceLine& line, std::string_view text);  // no parameters: the fast way
+    void setIgnore(const SourceLine& line, std::string_view text);
+    void setConsider(const SourceLine& line, std::string_view text);
+    void declareEnvironment(const SourceLine& line, std::string_view text);
+    void setMaximumDepth(const SourceLine& line, std::string_view text);
+    void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
+    bool cpfg() const { return m_cpfg; }
+
+    enum class Section { Productions, Interpretation, Decomposition };
+
+private:
+    struct Line {
+        SourceLine src;
+        enum Kind { Skip, DirectiveLine, Rule } kind = Skip;
+        const Directive* directive = nullptr;
+        std::string_view value;
+        Section section = Section::Productions;
+    };
+    // Where the pieces of a cpfg logical line came from: a production joined from several
+    // lines, or a line of an #included file (reported at the #include, naming the file).
+    struct Origin {
+        int logical = 0;                  // the line number the parser used
+        std::vector<std::pair<size_t, int>> pieces;  // byte offset in the joined text -> physical line
+        std::vector<size_t> pieceStart;   // offset of each piece's first byte in its physical line
+        std::string includeName;          // non-empty: the line comes from this included file
+        int includeLine = 0;              // the #include's line in the grammar
+    };
+
+    void classify(Line& line, Section& section);
+    void parseRule(const SourceLine& line, Section section);
+    // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
+    void buildCpfgLines();
+    bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
+                      std::vector<std::string>& stack);
+    void classifyCpfg(Line& line, Section& section, bool& ended);
+    std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
+    void finishCpfg(std::vector<Diagnostic>& diags);
+    void loadSurfaceFiles();  // `~s` modules with an `s.s` file beside the grammar
+    // Statement blocks (core/cpfg/statements.cpp).
+    bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
+                    std::vector<Statement>& out);
+    void collectAssigned(std::string_view text, std::vector<std::string>& names);
+    bool splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
+                            std::string_view& condition, std::string_view& post);
+    bool parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
+                      bool allowWildcard, std::vector<std::string>& params,
+                      std::vector<PatternModule>& out);
+    bool parseSuccessor(const SourceLine& line, std::string_view text,
+                        const std::vector<std::string>& params, Successor& out, int net);
+    std::optional<SymbolId> symbolFor(const SourceLine& line, std::string_view name, int arity);
+    bool checkBrackets(const SourceLine& line, std::string_view text,
+                       const std::vector<RawModule>& mods, int net);
+    void lint();
+    size_t nameLength(std::string_view s, size_t pos) const;
+
+    std::string m_text;  // normalised copy; lines view into it
+    std::string m_original;
+    std::vector<Line> m_lines;
+    std::vector<std::string> m_moduleNames;  // declared multi-letter names, longest first
+    std::array<bool, 256> m_nameStart{};      // first bytes of those names: others are one character
+    void indexModuleNames();
+    DiagnosticSink m_sink;
+    Grammar m_g;
+    std::optional<Rng> m_rng;  // rand() outside rules
+    bool m_axiomSet = false;
+    int m_axiomLine = 0;
+
+    bool m_cpfg = false;
+    ParseOptions m_options;
+    std::deque<std::string> m_store;  // texts the cpfg lines view into (joined, included, expanded)
+    std::vector<Origin> m_origins;
+    std::unordered_map<std::string, ExprMacro> m_macros;          // function-like #define
+    std::vector<std::pair<std::string, std::string>> m_textMacros;  // #define NAME text (not a number)
+    Section m_depthSection = Section::Productions;  // where `maximum depth:` applies (cpfg)
+    bool m_considerSet = false;
+    std::vector<NameId> m_considered;
+};
+
+}  // namespace sprout::detail

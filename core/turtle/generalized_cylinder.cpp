@@ -1,0 +1,128 @@
+#include "core/turtle/generalized_cylinder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+namespace sprout {
+namespace {
+
+constexpr int kSides = 12;
+constexpr float kPi = 3.14159265358979f;
+
+glm::vec3 hermite(const glm::vec3& p0, const glm::vec3& t0, const glm::vec3& p1, const glm::vec3& t1, float s) {
+    const float s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * t0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * t1;
+}
+
+glm::vec3 hermiteTangent(const glm::vec3& p0, const glm::vec3& t0, const glm::vec3& p1, const glm::vec3& t1, float s) {
+    const float s2 = s * s;
+    return (6 * s2 - 6 * s) * p0 + (3 * s2 - 4 * s + 1) * t0 + (-6 * s2 + 6 * s) * p1 + (3 * s2 - 2 * s) * t1;
+}
+
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    const float n = glm::length(v);
+    return n > 1e-12f ? v / n : fallback;
+}
+
+}  // namespace
+
+void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh) {
+    const auto& pts = curve.points;
+    if (pts.size() < 2) return;
+    // Samples along the curve: position, tangent, radius, colour.
+    struct Sample {
+        glm::vec3 p, t;
+        float r;
+        std::uint32_t colour;
+    };
+    std::vector<Sample> samples;
+    // Tangent directions: the turtle's heading at the two ends; between, the mean of the
+    // chords in and out (Catmull-Rom style), so the tube bends at the control points as the
+    // turtle does between them, without the wiggle a heading taken before a turn would give.
+    std::vector<glm::vec3> dir(pts.size());
+    dir.front() = pts.front().heading;
+    dir.back() = pts.back().heading;
+    for (size_t i = 1; i + 1 < pts.size(); ++i) {
+        const glm::vec3 in = safeNormalize(pts[i].position - pts[i - 1].position, pts[i].heading);
+        const glm::vec3 out = safeNormalize(pts[i + 1].position - pts[i].position, pts[i].heading);
+        dir[i] = safeNormalize(in + out, pts[i].heading);
+    }
+    // A span takes the colour the turtle had when it drew it (the point at its end).
+    samples.push_back({pts[0].position, dir[0], pts[0].radius, pts[1].colour});
+    for (size_t i = 1; i < pts.size(); ++i) {
+        const CurvePoint& a = pts[i - 1];
+        const CurvePoint& b = pts[i];
+        const float chord = glm::length(b.position - a.position);
+        if (chord < 1e-9f) continue;
+        const glm::vec3 t0 = dir[i - 1] * chord * curve.tangentScale, t1 = dir[i] * chord * curve.tangentScale;
+        const int n = std::clamp(b.subdivisions, 1, 64);
+        for (int k = 1; k <= n; ++k) {
+            const float s = float(k) / float(n);
+            samples.push_back({hermite(a.position, t0, b.position, t1, s),
+                               safeNormalize(hermiteTangent(a.position, t0, b.position, t1, s), dir[i]),
+                               a.radius + (b.radius - a.radius) * s, b.colour});
+        }
+    }
+    if (samples.size() < 2) return;
+    // Rotation-minimising frame (double reflection, Wang et al. 2008), from the turtle's left.
+    glm::vec3 t = safeNormalize(samples[0].t, glm::vec3(0, 1, 0));
+    glm::vec3 u = curve.left - glm::dot(curve.left, t) * t;
+    u = safeNormalize(u, glm::normalize(glm::cross(std::fabs(t.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), t)));
+    const std::uint32_t base = std::uint32_t(mesh.positions.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        const Sample& s = samples[i];
+        if (i > 0) {
+            const glm::vec3 v1 = s.p - samples[i - 1].p;
+            const float c1 = glm::dot(v1, v1);
+            if (c1 > 1e-18f) {
+                const glm::vec3 uL = u - (2 / c1) * glm::dot(v1, u) * v1;
+                const glm::vec3 tL = t - (2 / c1) * glm::dot(v1, t) * v1;
+                const glm::vec3 v2 = s.t - tL;
+                const float c2 = glm::dot(v2, v2);
+                u = c2 > 1e-18f ? uL - (2 / c2) * glm::dot(v2, uL) * v2 : uL;
+            }
+            t = s.t;
+            u = safeNormalize(u - glm::dot(u, t) * t, u);
+        }
+        const glm::vec3 w = glm::cross(t, u);
+        const float r = s.r * radiusScale;
+        for (int k = 0; k < kSides; ++k) {
+            const float a = 2 * kPi * float(k) / kSides;
+            const glm::vec3 n = std::cos(a) * u + std::sin(a) * w;
+            mesh.positions.push_back(s.p + r * n);
+            mesh.normals.push_back(n);
+            mesh.colours.push_back(s.colour);
+        }
+    }
+    const std::uint32_t rings = std::uint32_t(samples.size());
+    for (std::uint32_t i = 0; i + 1 < rings; ++i)
+        for (std::uint32_t k = 0; k < kSides; ++k) {
+            const std::uint32_t a = base + i * kSides + k, b = base + i * kSides + (k + 1) % kSides;
+            const std::uint32_t c = a + kSides, d = b + kSides;
+            mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});
+        }
+    // Caps: a fan at each end, facing out along the curve.
+    for (int end = 0; end < 2; ++end) {
+        const Sample& s = end == 0 ? samples.front() : samples.back();
+        const glm::vec3 n = end == 0 ? -safeNormalize(s.t, glm::vec3(0, 1, 0)) : safeNormalize(s.t, glm::vec3(0, 1, 0));
+        const std::uint32_t centre = std::uint32_t(mesh.positions.size());
+        mesh.positions.push_back(s.p);
+        mesh.normals.push_back(n);
+        mesh.colours.push_back(s.colour);
+        const std::uint32_t ring = base + (end == 0 ? 0 : (rings - 1) * kSides);
+        const std::uint32_t first = std::uint32_t(mesh.positions.size());
+        for (int k = 0; k < kSides; ++k) {
+            mesh.positions.push_back(mesh.positions[ring + std::uint32_t(k)]);
+            mesh.normals.push_back(n);
+            mesh.colours.push_back(s.colour);
+        }
+        for (std::uint32_t k = 0; k < kSides; ++k) {
+            const std::uint32_t a = first + k, b = first + (k + 1) % kSides;
+            if (end == 0) mesh.indices.insert(mesh.indices.end(), {centre, b, a});
+            else mesh.indices.insert(mesh.indices.end(), {centre, a, b});
+        }
+    }
+}
+
+}  // namespace sprout

@@ -1,0 +1,33 @@
+#pragma once
+// cpfg's generalized cylinders (@Gs ... @Gc(n) ... @Ge(n)): a stem drawn as one smooth tube
+// through the turtle's positions instead of a chain of cylinders. The turtle records control
+// points (position, heading, radius, colour); the tube is a cubic Hermite curve through them,
+// its tangents the turtle's headings scaled by the chord, the radius interpolated along it,
+// swept with a rotation-minimising frame (no twist) into a triangle mesh.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "core/turtle/geometry.hpp"
+
+namespace sprout {
+
+struct CurvePoint {
+    glm::vec3 position;
+    glm::vec3 heading;  // unit
+    float radius;
+    std::uint32_t colour;
+    int subdivisions;   // pieces of the span that ends here
+};
+
+struct GeneralizedCylinder {
+    std::vector<CurvePoint> points;
+    glm::vec3 left{-1, 0, 0};   // the turtle's left at the start: the frame's first axis
+    float tangentScale = 1.0f;  // @Gt: the Hermite tangents' length, in chords
+};
+
+// Appends the tube (12 sides, open ends capped) to `mesh`; radii are multiplied by
+// `radiusScale` (the turtle's automatic width). Curves of fewer than 2 points add nothing.
+void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh);
+
+}  // namespace sprout

@@ -1,0 +1,73 @@
+#pragma once
+// What the turtle draws: plain arrays the renderer uploads as they are (instanced cylinders,
+// instanced surfaces, one polygon mesh) plus bounds. No GL here.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "core/base/pod_buffer.hpp"
+
+namespace sprout {
+
+// A tapered stem segment. Its ends carry round caps in the renderer, so consecutive
+// segments join without gaps at any angle.
+struct CylinderInstance {
+    glm::vec3 start;
+    float startRadius;
+    glm::vec3 end;
+    float endRadius;
+    std::uint32_t colour;   // 0xRRGGBBAA
+    std::uint16_t order;    // branch order: 0 for the trunk, +1 inside each [ ]
+    std::uint16_t step;     // derivation step that created the module (0 without ages)
+};
+static_assert(sizeof(CylinderInstance) == 40);
+
+enum class SurfaceKind : std::uint32_t { Leaf = 0, Petal = 1, Sphere = 2 };
+
+// A predefined surface placed in the turtle frame: `heading` is H, `up` is U, `size` scales.
+struct SurfaceInstance {
+    glm::vec3 position;
+    float size;
+    glm::vec3 heading;
+    std::uint32_t colour;
+    glm::vec3 up;
+    SurfaceKind kind;
+};
+static_assert(sizeof(SurfaceInstance) == 48);
+
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> colours;
+    std::vector<std::uint32_t> indices;  // triangles
+    void clear() {
+        positions.clear();
+        normals.clear();
+        colours.clear();
+        indices.clear();
+    }
+};
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    bool empty = true;
+    void add(const glm::vec3& p);
+    void add(const Bounds& b);
+    glm::vec3 centre() const { return (min + max) * 0.5f; }
+    glm::vec3 size() const { return max - min; }
+};
+
+struct Geometry {
+    PodBuffer<CylinderInstance> cylinders;  // written in place, never zeroed first
+    PodBuffer<SurfaceInstance> surfaces;
+    Mesh polygons;
+    Bounds bounds;
+    // A curve in one plane without branches (Koch, Sierpinski, dragon): the renderer draws
+    // it as a crisp 2D line, seen face-on with an orthographic camera.
+    bool planarCurve = false;
+
+    void clear();  // keeps capacity: re-interpretation reuses the buffers
+};
+
+}  // namespace sprout

@@ -1,0 +1,136 @@
+// The string turtle: interprets a module string one module at a time (see turtle_impl.hpp
+// for the files the turtle is made of), and the entry points: a string, or the derivation
+// tree the derivation hands over (core/derive/draw.cpp chooses).
+#include "core/base/bounded.hpp"
+#include "core/turtle/turtle_impl.hpp"
+
+namespace sprout {
+
+namespace turtle_impl {
+
+Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
+    : m_g(g), m_opt(o), m_out(out), m_segments(out.cylinders), m_rng(Rng::forStream(o.seed, 0x7077e)) {
+    const auto& st = g.settings;
+    m_actions.resize(g.alphabet.size());
+    m_arity.resize(g.alphabet.size());
+    for (size_t s = 0; s < g.alphabet.size(); ++s) {
+        m_arity[s] = g.alphabet[SymbolId(s)].arity;
+        m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
+        m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
+        m_hasCurves |= m_actions[s] == Act::CurveStart;
+        if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {
+            m_actions[s] = Act::SurfaceFile;
+            m_surfaceFiles.resize(g.alphabet.size(), nullptr);
+            m_surfaceFiles[s] = f->second.get();
+        }
+    }
+    m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
+    m_autoWidth = st.width <= 0;
+    m_angle = toFloat(st.angle.mean) * kPi / 180.0f;
+    m_cos = std::cos(m_angle);
+    m_sin = std::sin(m_angle);
+    m_angleSigma = toFloat(st.angle.sigma) * kPi / 180.0f;
+    m_stepSigma = toFloat(st.step.sigma);
+    m_tropism = glm::vec3(toFloat(st.tropism[0]), toFloat(st.tropism[1]), toFloat(st.tropism[2]));
+    if (glm::length(m_tropism) > 0) m_tropism = glm::normalize(m_tropism);
+    m_tropismE = toFloat(st.tropismStrength);
+    m_widthFactor = toFloat(st.widthFactor);
+    m_branchLength = toFloat(st.branchLength);
+    // Automatic widths thin each branch order, as real stems do (da Vinci's rule keeps
+    // the total cross-section roughly constant at a fork).
+    m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : toFloat(st.branchWidth);
+    m_palette = st.palette;
+    if (m_palette.empty()) m_palette.assign(std::begin(kDefaultPalette), std::end(kDefaultPalette));
+    if (m_palette.size() > 127) m_palette.resize(127);  // the state keeps the index in a byte
+    // Colour by branch order: bark at the trunk, approaching the tip colour with each
+    // order (t = 1 - 0.55^order), so no pass is needed to find the deepest order first.
+    float t = 0;
+    for (int o = 0; o < kOrderColours; ++o, t = 1 - (1 - t) * 0.55f)
+        m_byOrder[o] = lerpColour(st.barkColour, st.tipColour, t);
+    m_state.length = toFloat(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
+    m_state.width = m_autoWidth ? 1.0f : toFloat(st.width);
+    m_min = m_max = m_state.pos;
+    m_state.stemColour = stemColour(m_state);
+    // Runs of F can be batched when nothing changes from one segment to the next.
+    m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !(o.ages && o.growStep >= 0);
+}
+
+// Strings without parameters (most D0L plants) take a loop with no parameter walk.
+void Turtle::run(const ModuleString& s) {
+    // Strings without parameters (most D0L plants) take a loop with no parameter walk.
+    if (s.params.empty()) runLoop<false>(s);
+    else runLoop<true>(s);
+    finish();
+}
+
+template <bool Parametric>
+void Turtle::runLoop(const ModuleString& s) {
+    const SymbolId* sym = s.symbols.data();
+    const double* par = s.params.data();
+    const size_t N = s.size();
+    const Act* actions = m_actions.data();
+    const std::uint8_t* arities = m_arity.data();
+    // The state lives in a local for the loop so that the compiler keeps it in registers.
+    State t = m_state;
+    for (size_t i = 0; i < N; ++i) {
+        const SymbolId id = sym[i];
+        const double* p = nullptr;
+        int arity = 0;
+        if constexpr (Parametric) {
+            arity = arities[id];
+            p = par;
+            par += arity;
+        }
+        const Act act = actions[id];
+        if (act == Act::None) continue;
+        if (act == Act::SurfaceFile) {  // a cpfg .s surface: its mesh comes from the symbol
+            if constexpr (Parametric) {
+                if (arity && !finite(p, arity)) continue;
+            }
+            placeSurfaceFile(t, id, arity ? p : nullptr);
+            continue;
+        }
+        if (act == Act::Draw && !arity && m_plainRuns && m_polygons.empty() && t.curve < 0) {
+            // A run of plain F (F -> FF makes long ones): collinear segments in a tight loop.
+            size_t j = i + 1;
+            while (j < N && sym[j] == id) ++j;
+            if (j - i > 1) {
+                segmentRun(t, j - i, i);
+                i = j - 1;
+                continue;
+            }
+        }
+        if constexpr (Parametric) {
+            // NaN or infinity: skip, never draw garbage. A query module still reports its frame:
+            // its parameters are answers to be written, whatever they hold now.
+            if (arity && act != Act::Query && !finite(p, arity)) continue;
+        }
+        apply(t, act, arity ? p : nullptr, i, arity);
+    }
+    m_state = t;
+    m_seg->finish();
+}
+
+}  // namespace turtle_impl
+
+using namespace turtle_impl;
+
+std::uint32_t defaultPaletteColour(int index) { return kDefaultPalette[((index % 16) + 16) % 16]; }
+
+TurtleStats drawTree(const DerivationTree& tree, const Grammar& g, const TurtleOptions& options, Geometry& out) {
+    out.clear();
+    Turtle turtle(g, options, out);
+    return turtle.runTree(tree.successors, tree.axiom, tree.n);
+}
+
+void drawString(const ModuleString& s, const Grammar& g, const TurtleOptions& options, Geometry& out) {
+    out.clear();
+    Turtle(g, options, out).run(s);
+}
+
+bool treeDrawable(const Grammar& g, const TurtleOptions& options) {
+    Geometry unused;
+    return Turtle(g, options, unused).treeApplicable();
+}
+
+}  // namespace sprout

@@ -1,0 +1,250 @@
+// The geometry the turtle emits beyond stems: polygons ({ . }, @c discs), predefined
+// surfaces and spheres, cpfg's point and heading commands, generalized cylinders, and the
+// finish of a drawing (automatic widths, bounds, planar curves).
+#include "core/turtle/turtle_impl.hpp"
+
+namespace sprout {
+namespace turtle_impl {
+
+// Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
+// makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
+// tangents' length in chords. Every F in between is a control point too.
+void Turtle::curveCommand(State& t, Act act, const double* p) {
+    if (act == Act::CurveStart) {
+        if (m_curves.size() >= 32767) return;  // the state keeps the index in 16 bits
+        m_curves.emplace_back();
+        m_curves.back().curve.left = toGlm(t.L);
+        t.curve = std::int16_t(m_curves.size() - 1);
+        t.lastSegment = -1;
+        curvePoint(t, 1);
+        return;
+    }
+    if (t.curve < 0) return;
+    auto& c = m_curves[size_t(t.curve)];
+    const int n = p ? int(std::clamp(*p, 1.0, 64.0)) : c.subdivisions;
+    if (act == Act::CurveTangent) {
+        c.curve.tangentScale = p ? float(std::clamp(*p, 0.0, 10.0)) : 1.0f;
+        return;
+    }
+    if (act == Act::CurvePoint) c.subdivisions = n;
+    curvePoint(t, n);
+    if (act == Act::CurveEnd) t.curve = -1;
+}
+
+void Turtle::curvePoint(const State& t, int subdivisions) {
+    auto& c = m_curves[size_t(t.curve)];
+    const glm::vec3 p = toGlm(t.pos);
+    if (!c.curve.points.empty() && glm::length(c.curve.points.back().position - p) < 1e-7f) {
+        c.curve.points.back().radius = t.width * 0.5f;  // the same place: update, do not repeat
+        c.curve.points.back().subdivisions = subdivisions;
+        return;
+    }
+    c.curve.points.push_back({p, glm::normalize(toGlm(t.H)), t.width * 0.5f, t.stemColour, subdivisions});
+}
+
+// cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
+void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
+    if (act == Act::MoveTo) {
+        if (!p || arity < 3) return;
+        t.pos = v4{float(p[0]), float(p[1]), float(p[2]), 0};
+        t.lastSegment = -1;  // the next segment starts a new stem there
+        addBound(t.pos);
+        if (!m_polygons.empty()) vertex(t);
+        return;
+    }
+    if (act == Act::SetHeading) {
+        if (!p || arity < 3) return;
+        glm::vec3 h{float(p[0]), float(p[1]), float(p[2])};
+        if (!(glm::length(h) > 1e-12f)) return;
+        h = glm::normalize(h);
+        glm::vec3 l = toGlm(t.L);
+        if (arity >= 6) {  // with an up vector: L = U x H
+            glm::vec3 u{float(p[3]), float(p[4]), float(p[5])};
+            l = glm::cross(u, h);
+        } else {           // keep the left vector as near as it was
+            l -= glm::dot(l, h) * h;
+        }
+        if (!(glm::length(l) > 1e-6f)) {
+            l = glm::cross(std::fabs(h.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), h);
+        }
+        t.H = fromGlm(h);
+        t.L = fromGlm(glm::normalize(l));
+        return;
+    }
+    // @c(r): a disc of radius r across the heading, as a 24-sided polygon.
+    const float r = p ? float(p[0]) : t.width * 0.5f;
+    if (!(r > 0)) return;
+    const glm::vec3 c = toGlm(t.pos), l = toGlm(t.L), u = toGlm(up(t));
+    std::vector<glm::vec3> pts;
+    for (int k = 0; k < 24; ++k) {
+        const float a = 2 * kPi * float(k) / 24;
+        pts.push_back(c + r * (std::cos(a) * l + std::sin(a) * u));
+        addBound(fromGlm(pts.back()));
+    }
+    emitPolygon(t, pts);
+}
+
+void Turtle::vertex(const State& t) {
+    auto& poly = m_polygons.back();
+    glm::vec3 p = toGlm(t.pos);
+    if (poly.empty() || glm::length(poly.back() - p) > 1e-6f) poly.push_back(p);
+}
+
+void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts) {
+    if (pts.size() > 1 && glm::length(pts.front() - pts.back()) < 1e-6f) pts.pop_back();
+    if (pts.size() < 3) return;
+    Mesh& m = m_out.polygons;
+    // Newell's normal: robust for concave and slightly non-planar outlines.
+    glm::vec3 n(0);
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const glm::vec3& a = pts[i];
+        const glm::vec3& b = pts[(i + 1) % pts.size()];
+        n += glm::vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    float len = glm::length(n);
+    if (len < 1e-12f) return;
+    n /= len;
+    std::uint32_t base = std::uint32_t(m.positions.size());
+    std::uint32_t col = t.colour >= 0 ? colour(t.colour) : colour(kLeafColour);
+    for (const auto& p : pts) {
+        m.positions.push_back(p);
+        m.normals.push_back(n);
+        m.colours.push_back(col);
+        addBound(fromGlm(p));
+    }
+    triangulatePolygon(pts, base, m.indices);
+}
+
+void Turtle::surface(const State& t, Act act, const double* p, float grow) {
+    SurfaceInstance s;
+    s.position = toGlm(t.pos);
+    s.heading = toGlm(t.H);
+    s.up = toGlm(up(t));
+    if (act == Act::Sphere) {
+        s.kind = SurfaceKind::Sphere;
+        s.size = p ? float(*p) : t.width;  // radius
+    } else {
+        s.kind = act == Act::Leaf ? SurfaceKind::Leaf : SurfaceKind::Petal;
+        s.size = p ? float(*p) : t.length;
+    }
+    s.colour = surfaceColour(t, s.kind);
+    s.size *= grow;
+    if (!(s.size > 0)) return;
+    if (m_level) {  // a block being built: resolved when placed
+        s.colour = t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
+        m_scratch[size_t(m_level) - 1].surfaces.push_back(s);  // bounded when placed
+        return;
+    }
+    m_out.surfaces.push_back(s);
+    if (m_opt.surfaceModules) m_opt.surfaceModules->push_back(std::uint32_t(m_surfaceModule));
+    addBound(t.pos);
+    addBound(t.pos + t.H * s.size);
+}
+
+void Turtle::finish() {
+    Geometry& out = m_out;
+    out.bounds.empty = false;
+    out.bounds.min = toGlm(m_min);
+    out.bounds.max = toGlm(m_max);
+    // Automatic width: stems in proportion to the plant, 1/80 of its size at the base.
+    float k = 1.0f;
+    if (m_autoWidth && !m_absoluteWidths) {
+        glm::vec3 size = out.bounds.size();
+        float extent = std::max({size.x, size.y, size.z});
+        if (extent > 0) k = extent / 80.0f;
+        for (auto& s : out.surfaces)
+            if (s.kind == SurfaceKind::Sphere) s.size *= k;
+    }
+    if (k != 1.0f) {
+        for (auto& c : out.cylinders) {
+            c.startRadius *= k;
+            c.endRadius *= k;
+        }
+    }
+    for (const auto& c : m_curves) appendTube(c.curve, k, out.polygons);
+    // A planar curve: every point in the z = 0 plane and no branches or surfaces.
+    const float tol = 1e-4f * (1 + glm::length(out.bounds.size()));
+    bool flat = std::fabs(out.bounds.min.z) < tol && std::fabs(out.bounds.max.z) < tol;
+    auto view = m_g.settings.view;
+    out.planarCurve = flat && view != ViewHint::Solid &&
+                      (view == ViewHint::Flat || (!m_usedBrackets && out.surfaces.empty()));
+}
+
+// A cpfg surface file at the turtle: its frame (heading, left, up) mapped onto the turtle's,
+// scaled by the module's parameter and the step length, coloured like a leaf.
+void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
+    const SurfaceFile& f = *m_surfaceFiles[id];
+    const float scale = (p ? float(*p) : 1.0f) * t.length;
+    const glm::vec3 pos = toGlm(t.pos), h = toGlm(t.H), l = toGlm(t.L), u = toGlm(up(t));
+    Mesh& m = m_out.polygons;
+    const std::uint32_t base = std::uint32_t(m.positions.size());
+    const std::uint32_t col = surfaceColour(t, SurfaceKind::Leaf);
+    for (size_t k = 0; k < f.positions.size(); ++k) {
+        const glm::vec3& q = f.positions[k];
+        const glm::vec3& n = f.normals[k];
+        m.positions.push_back(pos + scale * (q.x * h + q.y * l + q.z * u));
+        m.normals.push_back(n.x * h + n.y * l + n.z * u);
+        m.colours.push_back(col);
+        addBound(fromGlm(m.positions.back()));
+    }
+    for (std::uint32_t i : f.indices) m.indices.push_back(base + i);
+}
+
+}  // namespace turtle_impl
+
+void Bounds::add(const glm::vec3& p) {
+    if (empty) {
+        min = max = p;
+        empty = false;
+        return;
+    }
+    min = glm::min(min, p);
+    max = glm::max(max, p);
+}
+
+void Bounds::add(const Bounds& b) {
+    if (b.empty) return;
+    add(b.min);
+    add(b.max);
+}
+
+void Geometry::clear() {
+    cylinders.clear();
+    surfaces.clear();
+    polygons.clear();
+    bounds = {};
+    planarCurve = false;
+}
+
+
+void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& out) {
+    const float c = std::cos(yaw * 3.14159265f / 180), s = std::sin(yaw * 3.14159265f / 180);
+    auto turn = [&](const glm::vec3& p) { return glm::vec3(c * p.x + s * p.z, p.y, -s * p.x + c * p.z); };
+    auto move = [&](const glm::vec3& p) { return turn(p) + at; };
+    for (const auto& cyl : g.cylinders) {
+        CylinderInstance x = cyl;
+        x.start = move(cyl.start);
+        x.end = move(cyl.end);
+        out.cylinders.push_back(x);
+        out.bounds.add(x.start);
+        out.bounds.add(x.end);
+    }
+    for (const auto& sf : g.surfaces) {
+        SurfaceInstance x = sf;
+        x.position = move(sf.position);
+        x.heading = turn(sf.heading);
+        x.up = turn(sf.up);
+        out.surfaces.push_back(x);
+        out.bounds.add(x.position);
+    }
+    const std::uint32_t base = std::uint32_t(out.polygons.positions.size());
+    for (size_t i = 0; i < g.polygons.positions.size(); ++i) {
+        out.polygons.positions.push_back(move(g.polygons.positions[i]));
+        out.polygons.normals.push_back(turn(g.polygons.normals[i]));
+        out.polygons.colours.push_back(g.polygons.colours[i]);
+        out.bounds.add(out.polygons.positions.back());
+    }
+    for (auto i : g.polygons.indices) out.polygons.indices.push_back(base + i);
+}
+
+}  // namespace sprout
