@@ -1,7 +1,8 @@
 #pragma once
 // The viewer window's state that lives next to the GL context: renderer, camera, view
-// settings, the cached 3D image, status messages. Split by feature: window.cpp (loop,
-// input, screenshots), panel.cpp (the ImGui panel), script.cpp (scripted actions).
+// settings, the cached 3D image, status messages. Split by feature: window.cpp (start-up,
+// loop), window_input.cpp (mouse, keys), app_actions.cpp (files, screenshots, exports),
+// panel*.cpp (the ImGui panel), script.cpp (scripted actions).
 #include <cstdint>
 #include <deque>
 #include <future>

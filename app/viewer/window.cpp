@@ -1,5 +1,5 @@
-// The viewer: a GLFW window with the plant in 3D and the ImGui panel. The same renderer as
-// `sprout render`, with a GLFW context instead of OSMesa.
+// The viewer's start-up and main loop: a GLFW window with the plant in 3D and the ImGui panel.
+// The same renderer as `sprout render`, with a GLFW context instead of OSMesa.
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -9,11 +9,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -24,16 +22,10 @@
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
-#include "core/environment/environment_drawing.hpp"
+#include "app/viewer/window_input.hpp"
 
 namespace sprout::viewer {
 namespace {
-
-std::string cacheDir() {
-    if (const char* c = std::getenv("XDG_CACHE_HOME"); c && *c) return std::string(c) + "/sprout/thumbnails";
-    if (const char* h = std::getenv("HOME"); h && *h) return std::string(h) + "/.cache/sprout/thumbnails";
-    return "/tmp/sprout-thumbnails";
-}
 
 render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
 
@@ -85,175 +77,7 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
 }
 
-struct Mouse {
-    bool rotating = false, panning = false;
-    double x = 0, y = 0;
-    double clickX = 0, clickY = 0;  // where the left button went down
-    bool clickArmed = false;         // released there: a pick, not a drag
-};
-
 }  // namespace
-
-App::App(std::string executable) : thumbnails(executable, cacheDir()), videoJob(executable) {
-    const glm::vec3 d = glm::normalize(view.render.sunDirection);  // left as it is until a slider moves
-    view.sunAzimuth = glm::degrees(std::atan2(d.x, d.z));
-    view.sunElevation = glm::degrees(std::asin(d.y));
-}
-
-void App::recordVideo(const std::string& kind, const std::string& path) {
-    auto plant = state.plant();
-    std::string error;
-    if (!plant || !plant->grammar || !plant->geometry)
-        error = "videos are made of L-system plants (not of an IFS or a forest scene)";
-    else if (videoJob.start(state.text(), kind, path, plant->iterations, plant->seed, 1280, 720, error))
-        say("recording " + path + " ...");
-    if (!error.empty()) say(error);
-}
-
-void App::exportModel(const std::string& path) {
-    std::string error;
-    auto plant = state.plant();
-    if (plant && !plant->geometry) error = "this is an iterated function system: a picture, not a model (use a screenshot)";
-    else if (exportJob.start(plant ? plant->geometry : nullptr, path, error)) say("exporting " + path + " ...");
-    if (!error.empty()) say(error);
-}
-
-void App::say(std::string message) {
-    status = std::move(message);
-    statusTime = glfwGetTime();
-}
-
-void App::openFile(const std::string& path) {
-    if (state.dirty()) state.autosave(true);  // never lose the edits
-    std::string e;
-    if (state.open(path, e)) {
-        frameOnNextPlant = true;
-        say("opened " + path);
-    } else {
-        say(e);
-    }
-}
-
-void App::save() {
-    std::string e;
-    if (state.path().empty()) saveAsPopup = true;
-    else if (!state.save(e)) say(e);
-    else say("saved " + state.path().string());
-}
-
-void App::applySun() {
-    float az = glm::radians(view.sunAzimuth), el = glm::radians(view.sunElevation);
-    view.render.sunDirection = {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
-    needsRedraw = true;
-}
-
-void App::updateEnvironment() {
-    if (environmentJob.valid()) return;  // one at a time
-    auto plant = state.plant();
-    environmentOf = plant;
-    environmentDirty = false;
-    EnvironmentView how;
-    how.lightSlice = view.lightSlice;
-    how.sliceHeight = view.sliceHeight;
-    const bool draw = plant && plant->geometry && plant->environment && !plant->environment->empty() && view.showEnvironment;
-    environmentJob = std::async(draw ? std::launch::async : std::launch::deferred, [plant, how, draw] {
-        EnvironmentDrawing d;
-        d.plant = plant;
-        if (draw && !drawEnvironment(*plant->environment, *plant->geometry, plant->seed, how, d.mesh, &d.error) && d.error.empty())
-            d.error = "the environment could not be drawn";
-        return d;
-    });
-}
-
-void App::showEnvironment() {
-    if (!environmentJob.valid() || renderer.uploading() ||
-        environmentJob.wait_for(std::chrono::seconds(0)) == std::future_status::timeout)
-        return;
-    EnvironmentDrawing d = environmentJob.get();
-    if (d.plant != state.plant()) return;  // the next drawing is for the plant now on screen
-    if (!d.error.empty()) say(d.error);
-    renderer.setOverlay(d.mesh);
-    needsRedraw = true;
-}
-
-void App::frame() {
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
-    const float aspect = float(std::max(1, w - panelWidth)) / float(std::max(1, h));
-    auto plant = state.plant();
-    if (plant && plant->geometry) {
-        float yaw = camera.yaw, pitch = camera.pitch;
-        bool keep = !frameOnNextPlant;
-        camera = render::frameGeometry(*plant->geometry, aspect, render::ViewPreset::Auto);
-        if (keep && !camera.orthographic) {  // re-frame, keep the direction the user chose
-            camera.yaw = yaw;
-            camera.pitch = pitch;
-            camera = render::frameGeometry(*plant->geometry, aspect, render::ViewPreset::Auto);
-            camera.yaw = yaw;
-            camera.pitch = pitch;
-        }
-    }
-    needsRedraw = true;
-}
-
-void App::resetView() {
-    frameOnNextPlant = true;
-    frame();
-    frameOnNextPlant = false;
-}
-
-std::string App::nextScreenshotPath() const {
-    for (int i = 1;; ++i) {
-        std::string p = "sprout-screenshot-" + std::to_string(i) + ".png";
-        if (!std::filesystem::exists(p)) return p;
-    }
-}
-
-bool App::takeScreenshot(const std::string& path, int width, int height) {
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window, &w, &h);
-    if (width <= 0 || height <= 0) {
-        width = std::max(16, w - panelWidth);
-        height = std::max(16, h);
-    }
-    Image img;
-    img.width = width;
-    img.height = height;
-    render::Camera cam = camera;
-    auto plant = state.plant();
-    if (plant && plant->image) {  // an iterated function system: its own image
-        img.width = plant->imageWidth;
-        img.height = plant->imageHeight;
-        img.rgba = *plant->image;
-        img.text.emplace_back("ifs", state.text());
-        std::string error;
-        bool ok = writePng(path, img, error);
-        say(ok ? "saved " + path : path + ": " + error);
-        return ok;
-    }
-    if (bigPlant && plant) {  // a picture gets full detail
-        renderer.setDetail(render::Quality::Still);
-        renderer.upload(*plant->geometry);
-    }
-    img.rgba = renderer.renderImage(cam, width, height, view.render);
-    if (bigPlant && plant) {
-        if (plant->prepared) renderer.upload(*static_cast<const render::PreparedScene*>(plant->prepared.get()));
-        else renderer.upload(*plant->geometry);
-    }
-    img.text.emplace_back("lsys", state.text());
-    if (!cam.orthographic) {  // `sprout render FILE.png` looks from the same direction
-        char view[200];  // and from where: the zoom and pan come back too
-        std::snprintf(view, sizeof view, "--yaw %.2f --pitch %.2f --distance %.6g --target %.6g,%.6g,%.6g", double(cam.yaw),
-                      double(cam.pitch), double(cam.distance), double(cam.target.x), double(cam.target.y), double(cam.target.z));
-        img.text.emplace_back("sprout-view", view);
-    }
-    img.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
-    std::string error;
-    bool ok = writePng(path, img, error);
-    say(ok ? "saved " + path + " (" + std::to_string(width) + "x" + std::to_string(height) + ")" : path + ": " + error);
-    needsRedraw = true;
-    return ok;
-}
 
 }  // namespace sprout::viewer
 
@@ -349,7 +173,7 @@ int runViewer(int argc, char** argv) {
     // A previous session ended without saving: offer its text back.
     bool offerRecovery = app.state.recoverable().has_value() && !screenshot && script.empty();
 
-    Mouse mouse;
+    viewer::detail::Mouse mouse;
     double last = glfwGetTime(), lastDiskCheck = last;
     bool screenshotDone = false;
     int framesWithPlant = 0;
@@ -453,78 +277,8 @@ int runViewer(int argc, char** argv) {
         ImGui::NewFrame();
         drawPanel(app);
 
-        // Camera: drag to orbit (left) or pan (right / middle), wheel to zoom.
-        ImGuiIO& io = ImGui::GetIO();
-        double mx = 0, my = 0;
-        glfwGetCursorPos(window, &mx, &my);
-        const bool overView = !io.WantCaptureMouse;
-        if (overView && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-            mouse.rotating = true;
-            mouse.clickX = mx, mouse.clickY = my, mouse.clickArmed = true;  // a click, unless it drags
-        }
-        if (mouse.clickArmed && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-            mouse.clickArmed = false;
-            if (std::abs(mx - mouse.clickX) + std::abs(my - mouse.clickY) < 4) app.pickAt(mx, my);
-        }
-        if (overView && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
-            mouse.panning = true;
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) mouse.rotating = false;
-        if (!ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle)) mouse.panning = false;
-        const float ddx = float(mx - mouse.x), ddy = float(my - mouse.y);
-        mouse.x = mx;
-        mouse.y = my;
-        app.interacting = mouse.rotating || mouse.panning || app.scriptDragging;
-        if (mouse.rotating && (ddx || ddy)) {
-            app.camera.yaw -= ddx * 0.4f;
-            app.camera.pitch = std::clamp(app.camera.pitch + ddy * 0.4f, -89.0f, 89.0f);
-            app.needsRedraw = true;
-        }
-        if (mouse.panning && (ddx || ddy)) {
-            int fw = 0, fh = 0;
-            glfwGetFramebufferSize(window, &fw, &fh);
-            float scale = (app.camera.orthographic ? app.camera.orthoHeight
-                                                   : 2 * app.camera.distance * std::tan(glm::radians(app.camera.fovY) / 2)) /
-                          float(std::max(fh, 1));
-            glm::vec3 dir = glm::normalize(app.camera.eye() - app.camera.target);
-            glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), dir));
-            glm::vec3 up = glm::cross(dir, right);
-            app.camera.target += (-right * ddx + up * ddy) * scale;
-            app.needsRedraw = true;
-        }
-        if (overView && io.MouseWheel != 0) {
-            app.camera.zoom(std::pow(0.9f, io.MouseWheel));
-            app.needsRedraw = true;
-        }
-        // Keyboard shortcuts (listed in the help window, F1).
-        if (!io.WantTextInput) {
-            if (ImGui::IsKeyPressed(GLFW_KEY_F)) app.frame();
-            if (ImGui::IsKeyPressed(GLFW_KEY_R)) app.resetView();
-            if (ImGui::IsKeyPressed(GLFW_KEY_T)) app.view.turntable = !app.view.turntable;
-            if (ImGui::IsKeyPressed(GLFW_KEY_SPACE)) app.state.setPlaying(!app.state.playing());
-            if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) app.state.stepBy(-1);
-            if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) app.state.stepBy(1);
-            if (ImGui::IsKeyPressed(GLFW_KEY_UP)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 0) + 1);
-            if (ImGui::IsKeyPressed(GLFW_KEY_DOWN)) app.state.setIterations((app.state.plant() ? app.state.plant()->iterations : 1) - 1);
-            if (ImGui::IsKeyPressed(GLFW_KEY_N)) app.state.newSpecimen();
-            // Keyboard orbit and zoom: A / D turn around the plant, W / S tilt, Q / E zoom.
-            const float orbit = 60.0f * float(dt), zoom = std::pow(0.4f, float(dt));
-            if (ImGui::IsKeyDown(GLFW_KEY_A)) app.camera.yaw += orbit, app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_D)) app.camera.yaw -= orbit, app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_W)) app.camera.pitch = std::min(89.0f, app.camera.pitch + orbit), app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_S) && !io.KeyCtrl)
-                app.camera.pitch = std::max(-89.0f, app.camera.pitch - orbit), app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_Q) && !io.KeyCtrl) app.camera.zoom(1 / zoom), app.needsRedraw = true;
-            if (ImGui::IsKeyDown(GLFW_KEY_E) && !io.KeyCtrl) app.camera.zoom(zoom), app.needsRedraw = true;
-            if (ImGui::IsKeyPressed(GLFW_KEY_P)) {
-                const auto& s = kScreenshotSizes[app.view.screenshotSize];
-                app.takeScreenshot(app.nextScreenshotPath(), s.width, s.height);
-            }
-        }
-        if (ImGui::IsKeyPressed(GLFW_KEY_F1)) app.showHelp = !app.showHelp;
-        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) app.save();
-        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_O)) app.openPopup = true;
-        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_E) && !app.exportJob.running()) app.exportPopup = true;
-        if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) app.quitRequested = true;
+        // The camera and the keyboard shortcuts (window_input.cpp).
+        viewer::detail::handleInput(app, window, mouse, dt);
         if (app.quitRequested) {
             app.quitRequested = false;
             if (app.state.dirty()) app.quitPopup = true;

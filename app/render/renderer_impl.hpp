@@ -1,0 +1,135 @@
+#pragma once
+// Private to app/render: the renderer's GL state (Renderer::Impl) and a picture's plan and
+// progress (Renderer::Pass), shared by renderer.cpp and renderer_draw.cpp.
+#include <cstddef>
+#include <cstdint>
+#include <future>
+#include <memory>
+#include <string>
+#include <vector>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "app/render/gl.hpp"
+#include "app/render/renderer.hpp"
+
+namespace sprout::render {
+namespace detail {
+
+inline constexpr int kShadowSize = 2048;
+
+struct Buffers {
+    GLuint vao = 0, vbo = 0, ebo = 0;
+};
+
+}  // namespace detail
+
+struct Renderer::Impl {
+    using Buffers = detail::Buffers;
+    GLuint bakedProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
+           groundProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0;
+    Buffers overlay;  // the environment drawn with the plant (setOverlay)
+    std::size_t overlayIndices = 0;
+    Buffers highlight;  // picked stems, drawn over everything (setHighlight)
+    std::size_t highlightIndices = 0;
+    Buffers proxy, proxyMesh;  // what a moving frame draws (PreparedScene::proxy, proxyBaked)
+    std::size_t proxyCount = 0, proxyIndices = 0;
+    Bounds overlayBounds;
+    std::shared_ptr<const Geometry> rasterCurve;  // a big planar curve, drawn from its segments
+    std::vector<std::uint8_t> coverage;
+    // What the coverage texture holds: a frame with the same curve, view and size (the panel
+    // redrawn, a still window) reuses it instead of rasterising millions of segments again.
+    const Geometry* coverageOf = nullptr;
+    glm::mat4 coverageView{0.0f};
+    int coverageWidth = 0, coverageHeight = 0;
+    Buffers baked, lines, curveQuad, groundQuad;
+    Buffers bakedBack, linesBack;  // filled by a staged upload, then swapped in
+    // A staged upload: the scene, and how many of its bytes (vertices, indices, lines, in that
+    // order) are on the GPU so far.
+    std::shared_ptr<const PreparedScene> staging;
+    std::size_t stagedBytes = 0;
+    GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
+    GLuint shadowFbo = 0, shadowTexture = 0;
+    // The shadow map depends on the scene and the sun, not on the camera: a picture from
+    // another view with the same light uses it as it is (an orbit's still view skips a pass).
+    // A moving frame of a scene that changes every frame (growth playback) may use the map of
+    // an earlier scene, with the light's matrix it was made with, up to kStaleShadowFrames
+    // frames running: fewer shadow updates while it moves.
+    bool shadowMade = false;   // the map holds a scene's shadows
+    bool shadowValid = false;  // of the scene uploaded now
+    glm::mat4 shadowView{0.0f};
+    float shadowTexel = 0;
+    int shadowAge = 0;  // moving frames that used it since it was made
+    // Multisampled images: one for moving frames of big plants (2 samples), one for other
+    // moving frames (4 samples, half size in the window), one for still pictures, so that
+    // starting or letting go of a drag does not allocate them again.
+    struct Msaa {
+        GLuint fbo = 0, colour = 0, depth = 0;
+        int width = 0, height = 0, samples = 0;
+    } msaa[3];
+    GLuint msaaFbo = 0;  // the one in use
+    int samples = 1;
+    int curveBatch = 1;
+
+    // What was uploaded.
+    std::size_t bakedIndices = 0, lineCount = 0, curveCount = 0;
+    Bounds bounds;
+    bool planarCurve = false;
+    Quality detail = Quality::Still;
+
+    // Baked triangles: position, normal, colour (polygon.vert's layout).
+    static void makeBaked(Buffers& b);
+    // Lines: position, colour.
+    static void makeLines(Buffers& b);
+    // The programs, textures, buffers and the shadow map (Renderer::init); false with a message.
+    bool build(std::string& error);
+    // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaFbo is it.
+    void ensureMsaa(int w, int h, int wantSamples, int slot);
+
+    // Baked triangles and lines (numbered after the triangles) [from, to), in order.
+    // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`.
+    void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats,
+                   bool moving = false);
+    // A big curve's raster made on a thread for a progressive draw, and its time.
+    struct Raster {
+        std::vector<std::uint8_t> coverage;
+        double ms = 0;
+    };
+    std::future<Raster> raster;
+    // Units (primitives, rows) a millisecond each part of each phase of a picture in pieces
+    // draws here (Renderer::partOf), learnt from the pieces (continueDrawFor); first guesses
+    // for software GL.
+    double rate[6][3] = {{1, 5000, 8000}, {1, 1, 1}, {40, 40, 40}, {500, 500, 4000}, {50, 50, 50}, {1, 1, 1}};
+
+    void setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj, bool shadows,
+                     float texel);
+};
+
+// One picture: everything worked out from the camera once, then drawn in passes that a
+// progressive draw spreads over frames (beginDraw / continueDraw) and draw() runs at once.
+// The primitives of a scene are numbered: curve ribbons, then baked triangles, then lines;
+// a pass draws a range of them in that order, so a picture drawn in pieces has the pixels
+// of one drawn whole.
+struct Renderer::Pass {
+    glm::mat4 viewProj{1.0f}, lightViewProj{1.0f};
+    glm::vec3 eye{0.0f}, centre{0.0f};
+    float texel = 0, groundRadius = 0;
+    bool shadows = false, ground = false, curve = false, bigInteractive = false;
+    int width = 0, height = 0, x = 0, y = 0;
+    unsigned target = 0;
+    RenderOptions o;
+    // Progress: the phase, and how many of its units (primitives, or rows of the backdrop)
+    // are drawn; the phase and units of the last piece, for pieces sized by time.
+    enum Phase { Shadow, Raster, Backdrop, Scene, Overlay, Finish };
+    int phase = Shadow;
+    std::size_t done = 0;
+    bool started = false;  // the phase's set-up is done
+    int lastPhase = Shadow, lastPart = 0;
+    std::size_t lastUnits = 0;
+    double spentMs = 0;  // the pieces' time (continueDrawFor), and a big curve's raster's
+    bool staleShadows = false;  // a moving frame with an earlier scene's shadow map
+    bool sketch = false;        // a moving frame that draws the scene's proxy
+    RenderStats stats;
+};
+
+}  // namespace sprout::render
