@@ -1,6 +1,7 @@
 #pragma once
-// Internals of parse(), shared by parser.cpp (lines, rules, module sequences) and
-// directives.cpp (the `key: value` table).
+// Internals of parse(), shared by parser.cpp (names, modules, numbers, the axiom),
+// parser_rules.cpp (rules), parser_run.cpp (the whole text, lint) and directives.cpp (the
+// `key: value` table).
 #include <array>
 #include <deque>
 #include <functional>
@@ -14,6 +15,48 @@
 namespace sprout::detail {
 
 constexpr int kMaxIterations = 10000;
+
+// Text helpers of the parser's files.
+
+inline size_t utf8Length(unsigned char c) {
+    if (c < 0x80) return 1;
+    if ((c & 0xE0) == 0xC0) return 2;
+    if ((c & 0xF0) == 0xE0) return 3;
+    if ((c & 0xF8) == 0xF0) return 4;
+    return 1;
+}
+
+// Position of the first `token` outside parentheses (and, with `braces`, outside cpfg's
+// statement blocks `{ }`), or npos.
+inline size_t findTopLevel(std::string_view s, std::string_view token, size_t from = 0, bool braces = false) {
+    int depth = 0;
+    for (size_t i = from; i < s.size(); ++i) {
+        char c = s[i];
+        if (c == '(' || (braces && c == '{')) ++depth;
+        else if (c == ')' || (braces && c == '}')) depth = std::max(0, depth - 1);
+        else if (depth == 0 && s.substr(i, token.size()) == token) return i;
+    }
+    return std::string_view::npos;
+}
+
+inline size_t findLastTopLevel(std::string_view s, char token) {
+    int depth = 0;
+    size_t found = std::string_view::npos;
+    for (size_t i = 0; i < s.size(); ++i) {
+        char c = s[i];
+        if (c == '(') ++depth;
+        else if (c == ')') depth = std::max(0, depth - 1);
+        else if (depth == 0 && c == token) found = i;
+    }
+    return found;
+}
+
+inline bool isIdentifier(std::string_view s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    return std::all_of(s.begin(), s.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+}
 
 class Parser;
 using DirectiveHandler = std::function<void(Parser&, const SourceLine&, std::string_view value)>;

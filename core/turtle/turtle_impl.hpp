@@ -5,8 +5,9 @@
 //                                    tree, each repeated subtree once, placed by a transform
 //   core/turtle/turtle_geometry.cpp  the geometry they emit beyond stems: polygons, surfaces, discs,
 //                                    generalized cylinders, automatic widths and bounds
-// Here: the frame (SIMD vectors), the state pushed at brackets, the segment writer, and the
-// Turtle class with its per-module step (apply), which both readers inline.
+// Here: the segment writer, the tree turtle's workspace, and the Turtle class with its
+// per-module step (apply), which both readers inline; the actions, the frame (SIMD vectors)
+// and the state pushed at brackets are in turtle_state.hpp.
 #include "core/turtle/turtle.hpp"
 
 #include <algorithm>
@@ -21,113 +22,9 @@
 
 #include "core/language/successor_table.hpp"
 #include "core/turtle/generalized_cylinder.hpp"
+#include "core/turtle/turtle_state.hpp"
 
 namespace sprout::turtle_impl {
-
-enum class Act : std::uint8_t {
-    None, Draw, DrawNoVertex, Move, MoveNoVertex, Left, Right, Down, Up, RollLeft, RollRight,
-    Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
-    ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
-    Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
-    SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
-};
-
-inline Act actionOf(const std::string& name) {
-    static const std::pair<const char*, Act> table[] = {
-        {"F", Act::Draw}, {"G", Act::DrawNoVertex}, {"f", Act::Move}, {"g", Act::MoveNoVertex},
-        {"+", Act::Left}, {"-", Act::Right}, {"&", Act::Down}, {"^", Act::Up},
-        {"\\", Act::RollLeft}, {"/", Act::RollRight}, {"|", Act::Around}, {"$", Act::Horizontal},
-        {"[", Act::Push}, {"]", Act::Pop}, {"{", Act::PolyBegin}, {".", Act::PolyVertex},
-        {"}", Act::PolyEnd}, {"!", Act::WidthDec}, {"#", Act::WidthInc}, {";", Act::ColourNext},
-        {"'", Act::ColourNext}, {",", Act::ColourPrev}, {"~leaf", Act::Leaf}, {"~l", Act::Leaf},
-        {"~L", Act::Leaf}, {"~petal", Act::Petal}, {"~p", Act::Petal}, {"~P", Act::Petal},
-        {"@O", Act::Sphere}, {"@o", Act::Sphere},
-        // Extensions for imported grammars (Lparser): scale the step, the angle, the width
-        // by a factor; bend towards gravity now (Lparser's t).
-        {"@L", Act::ScaleLength}, {"@A", Act::ScaleAngle}, {"@W", Act::ScaleWidth}, {"@T", Act::Gravity},
-        // cpfg: query modules (the turtle's frame is written back into them after each
-        // step), move to a point, set the heading, roll L horizontal, a disc.
-        {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query}, {"?E", Act::Query},
-        {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
-        // cpfg's generalized cylinders: start, control point, end, tangent length.
-        {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},
-    };
-    for (const auto& [n, a] : table)
-        if (name == n) return a;
-    return Act::None;
-}
-
-// ABOP's `'` steps through a colour map: index 0 is bark, 1..8 a ramp of greens from dark
-// to light, then flower colours.
-inline constexpr std::uint32_t kDefaultPalette[16] = {
-    0x6B4A2EFF, 0x3F6B25FF, 0x4A7A2AFF, 0x558A30FF, 0x629936FF, 0x70A73DFF, 0x80B448FF, 0x92C056FF,
-    0xA6CB66FF, 0xF2D43DFF, 0xF7F4EAFF, 0xE58FB6FF, 0xD9442EFF, 0x9C6ADEFF, 0xFF9F1CFF, 0x3D7DD8FF,
-};
-constexpr int kLeafColour = 5, kPetalColour = 10, kSphereColour = 12;
-
-constexpr float kPi = 3.14159265358979f;
-
-// Four-float SIMD vectors (GCC vector extension): a frame rotation is four multiplies and
-// two adds, and a segment's start or end with its radius is one 16-byte store. glm::vec3
-// compiled to scalar code with shuffles and ran the turtle 3x slower.
-typedef float v4 __attribute__((vector_size(16)));
-inline v4 splat(float x) { return v4{x, x, x, x}; }
-inline glm::vec3 toGlm(v4 v) { return {v[0], v[1], v[2]}; }
-inline v4 fromGlm(const glm::vec3& v) { return v4{v.x, v.y, v.z, 0}; }
-
-// Pushed and popped at every bracket.
-struct State {
-    v4 pos{0, 0, 0, 0};
-    v4 H{0, 1, 0, 0};
-    v4 L{-1, 0, 0, 0};  // U is H x L, made when a pitch, roll or surface needs it
-    float length = 1;
-    float width = 1;  // diameter
-    std::int32_t lastSegment = -1;  // the segment this branch's next segment continues
-    std::uint16_t order = 0;
-    std::int8_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
-    std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
-    float angleScale = 1;     // @A: factor on the default turning angle
-    // Resolved when the colour or the branch order changes: measured faster than looking it
-    // up at every segment, even though it makes the state 80 bytes instead of 64.
-    std::uint32_t stemColour = 0;
-};
-
-inline v4 cross(v4 a, v4 b) {
-    return v4{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0], 0};
-}
-// U is made unit length: with U = H x L as it is, float rounding in |H| and |L| feeds back
-// through pitches and rolls (|H'|^2 = |H|^2 (c^2 + |L|^2 s^2)) and grows exponentially: a rule
-// with a hundred '&' made stems 10^13 long after 5 steps (found by the fuzzers). With a unit U
-// a pitch or roll pulls |H| and |L| back towards 1 instead.
-inline v4 up(const State& t) {
-    v4 u = cross(t.H, t.L);
-    const float n2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
-    return n2 > 0 ? u * (1.0f / std::sqrt(n2)) : u;
-}
-
-// Rotation of the frame about one of its axes (ABOP 1.5) mixes the other two.
-inline void rotate(v4& a, v4& b, float c, float s) {
-    v4 na = a * c + b * s;
-    b = b * c - a * s;
-    a = na;
-}
-
-inline std::uint32_t lerpColour(std::uint32_t a, std::uint32_t b, float t) {
-    std::uint32_t out = 0;
-    for (int shift = 24; shift >= 0; shift -= 8) {
-        float x = float((a >> shift) & 0xFF), y = float((b >> shift) & 0xFF);
-        out |= std::uint32_t(std::lround(x + (y - x) * t)) << shift;
-    }
-    return out;
-}
-
-// Parameters the turtle can use: finite, and small enough that float positions summed over
-// millions of segments stay finite (beyond 1e30 is treated like infinity: not drawn).
-inline bool finite(const double* p, int n) {
-    for (int k = 0; k < n; ++k)
-        if (!(std::fabs(p[k]) <= 1e30)) return false;
-    return true;
-}
 
 // Segments go through a small staging buffer that is flushed with non-temporal stores: the
 // 40-byte instances of a big plant are far more than the caches hold, and plain stores would

@@ -1,0 +1,236 @@
+// The .lsys parser's rules: predecessor patterns with their contexts and parameters,
+// successors, and one rule line whole (condition, probability, its checks).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/language/parser_impl.hpp"
+
+namespace sprout {
+namespace detail {
+
+bool Parser::parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
+                          bool allowWildcard, std::vector<std::string>& params,
+                          std::vector<PatternModule>& out) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods)) return false;
+    for (const auto& m : mods) {
+        PatternModule p;
+        if (m.name == "*" && !m.hasParens) {
+            if (!allowWildcard) {
+                m_sink.error(line, m.name, "'*' (any module) can only be used in a context");
+                return false;
+            }
+            p.wildcard = true;
+            out.push_back(p);
+            continue;
+        }
+        if ((m.name == "[" || m.name == "]") && !allowBrackets) {
+            m_sink.error(line, m.name, "brackets are not allowed here: a left context is followed "
+                                       "back through parent branches automatically");
+            return false;
+        }
+        p.arity = m.hasParens ? int(m.args.size()) : -1;
+        p.firstSlot = std::uint16_t(params.size());
+        for (auto arg : m.args) {
+            std::string_view name = trim(arg);
+            if (!isIdentifier(name)) {
+                m_sink.error(line, name.empty() ? arg : name,
+                             "a rule's left side names its parameters, e.g. A(x, y); "
+                             "compute values on the right side or in the condition");
+                return false;
+            }
+            if (std::find(params.begin(), params.end(), name) != params.end()) {
+                m_sink.error(line, name, "parameter '" + std::string(name) + "' is named twice in this rule");
+                return false;
+            }
+            params.emplace_back(name);
+        }
+        auto id = symbolFor(line, m.name, std::max(p.arity, 0));
+        if (!id) return false;
+        p.symbol = *id;
+        p.name = m_g.alphabet[*id].nameId;
+        out.push_back(p);
+    }
+    return true;
+}
+
+bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
+                            const std::vector<std::string>& params, Successor& out, int net) {
+    std::vector<RawModule> mods;
+    if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
+    ExprScope scope{&params, &m_g.defines, &m_macros};
+    bool ok = true;
+    for (const auto& m : mods) {
+        auto id = symbolFor(line, m.name, int(m.args.size()));
+        if (!id) return false;
+        out.symbols.push_back(*id);
+        for (auto arg : m.args) {
+            auto e = compileExpr(arg, line, scope, m_sink);
+            if (e) out.args.push_back(std::move(*e));
+            else ok = false;
+        }
+    }
+    return ok;
+}
+
+void Parser::parseRule(const SourceLine& line, Section section) {
+    std::string_view text = line.text;
+    size_t arrow = findTopLevel(text, "->", 0, m_cpfg);
+    size_t arrowEnd = arrow + 2;
+    if (arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's -->
+    std::string_view head = text.substr(0, arrow);
+    std::string_view tail = text.substr(arrowEnd);
+
+    // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF".
+    size_t colon = findTopLevel(head, ":", 0, m_cpfg);
+    if (colon != std::string_view::npos) {
+        std::string_view label = trim(head.substr(0, colon));
+        if (label.size() >= 2 && label[0] == 'p' &&
+            std::all_of(label.begin() + 1, label.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            head = head.substr(colon + 1);
+            colon = findTopLevel(head, ":", 0, m_cpfg);
+        }
+    }
+    std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
+    std::string_view condition = colon == std::string_view::npos ? std::string_view() : head.substr(colon + 1);
+
+    Production prod;
+    prod.line = line.number;
+    std::vector<std::string> params;
+    size_t lt = findTopLevel(patterns, "<");
+    size_t gt = findTopLevel(patterns, ">", lt == std::string_view::npos ? 0 : lt + 1);
+    std::string_view leftText, rightText, predText = patterns;
+    if (lt != std::string_view::npos) {
+        leftText = patterns.substr(0, lt);
+        predText = patterns.substr(lt + 1);
+        gt = findTopLevel(predText, ">");
+    }
+    if (gt != std::string_view::npos) {
+        rightText = predText.substr(gt + 1);
+        predText = predText.substr(0, gt);
+    }
+    if (gt != std::string_view::npos && findTopLevel(rightText, ">") != std::string_view::npos) {
+        m_sink.error(line, rightText.substr(findTopLevel(rightText, ">")),
+                     "a second '>': write contexts as 'left < module > right'");
+        return;
+    }
+    if (findTopLevel(predText, "<") != std::string_view::npos) {
+        m_sink.error(line, predText.substr(findTopLevel(predText, "<")),
+                     "a second '<': write contexts as 'left < module > right'");
+        return;
+    }
+    std::vector<PatternModule> pred;
+    if (lt != std::string_view::npos && trim(leftText).empty()) {
+        m_sink.error(line, patterns.substr(lt), "'<' needs a left context before it (or '*' for any)");
+        return;
+    }
+    if (!parsePattern(line, leftText, false, true, params, prod.left)) return;
+    if (!parsePattern(line, predText, true, false, params, pred)) return;
+    if (gt != std::string_view::npos && trim(rightText).empty()) {
+        m_sink.error(line, predText.substr(gt), "'>' needs a right context after it (or '*' for any)");
+        return;
+    }
+    if (!parsePattern(line, rightText, true, true, params, prod.right)) return;
+    if (pred.size() != 1) {
+        std::string_view p = trim(predText);
+        if (pred.empty()) {
+            m_sink.error(line, p.empty() ? line.text : p, "the rule has no module to rewrite before '->'");
+        } else {
+            std::string msg = "a rule rewrites one module, but '" + std::string(p) + "' is " +
+                              std::to_string(pred.size()) + " modules";
+            if (isIdentifier(p)) msg += "; declare it first with 'module: " + std::string(p) + "'";
+            else msg += "; use contexts for neighbours, as in 'A < B > C -> ...'";
+            m_sink.error(line, p, msg);
+        }
+        return;
+    }
+    prod.pred = pred[0];
+    if (prod.pred.arity < 0) {  // a predecessor without parentheses has no parameters
+        prod.pred.arity = 0;
+    }
+    // Contexts of only '*' mean "any": ABOP's `* < + > * -> -`.
+    auto onlyWildcards = [](const std::vector<PatternModule>& v) {
+        return std::all_of(v.begin(), v.end(), [](const PatternModule& p) { return p.wildcard; });
+    };
+    if (onlyWildcards(prod.left)) prod.left.clear();
+    if (onlyWildcards(prod.right)) prod.right.clear();
+    // cpfg: `pred : {pre} condition {post} --> succ`, `*` for no condition. Names assigned
+    // in the blocks are the production's locals, in slots after its formal parameters.
+    std::string_view preBlock, postBlock;
+    if (m_cpfg && colon != std::string_view::npos) {
+        if (!splitCpfgCondition(line, condition, preBlock, condition, postBlock)) return;
+        if (trim(condition) == "*" || (trim(condition).empty() && (!preBlock.empty() || !postBlock.empty())))
+            condition = {};
+        if (condition.empty()) colon = std::string_view::npos;
+    }
+    prod.firstLocal = std::uint16_t(params.size());
+    if (!preBlock.empty() || !postBlock.empty()) {
+        std::vector<std::string> assigned;
+        collectAssigned(preBlock, assigned);
+        collectAssigned(postBlock, assigned);
+        for (const auto& name : assigned) {
+            if (m_g.defines.count(name)) {
+                m_sink.error(line, line.text.substr(size_t(preBlock.data() - line.text.data())),
+                             "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
+                return;
+            }
+            if (std::find(params.begin(), params.end(), name) == params.end()) params.push_back(name);
+        }
+        if (params.size() > 255) {
+            m_sink.error(line, preBlock, "too many parameters and local variables in one production (the limit is 255)");
+            return;
+        }
+    }
+    prod.slotCount = int(params.size());
+
+    ExprScope scope{&params, &m_g.defines, &m_macros};
+    bool ok = true;
+    if (!preBlock.empty() && !parseBlock(line, preBlock, params, prod.pre)) return;
+    if (!postBlock.empty() && !parseBlock(line, postBlock, params, prod.post)) return;
+    if (colon != std::string_view::npos) {
+        if (trim(condition).empty()) {
+            m_sink.error(line, condition, "expected a condition after ':' (e.g. 'A(t) : t > 1 -> F')");
+            return;
+        }
+        prod.condition = compileExpr(condition, line, scope, m_sink);
+        ok = prod.condition.has_value();
+    }
+    if (size_t second = findTopLevel(tail, "->"); second != std::string_view::npos) {
+        m_sink.error(line, tail.substr(second), "a second '->': a rule has one arrow, one rule per line");
+        return;
+    }
+    size_t probColon = findLastTopLevel(tail, ':');
+    std::string_view succText = tail;
+    if (probColon != std::string_view::npos) {
+        succText = tail.substr(0, probColon);
+        std::string_view probText = trim(tail.substr(probColon + 1));
+        auto p = constant(line, probText);
+        if (!p) return;
+        if (!(*p >= 0)) {
+            m_sink.error(line, probText, "a probability cannot be negative");
+            return;
+        }
+        prod.probability = *p;
+    }
+    if (size_t extra = findTopLevel(succText, ":"); extra != std::string_view::npos) {
+        m_sink.error(line, succText.substr(extra), "a second ':' after '->': a rule has at most one probability");
+        return;
+    }
+    if (m_cpfg && trim(succText) == "*") succText = {};  // cpfg's empty successor
+    if (section == Section::Decomposition && prod.hasContext()) {
+        m_sink.error(line, patterns, "decomposition rules are context-free: move the context to a production");
+        return;
+    }
+    int net = prod.pred.symbol == Alphabet::kPush ? 1 : prod.pred.symbol == Alphabet::kPop ? -1 : 0;
+    if (!parseSuccessor(line, succText, params, prod.successor, net) || !ok) return;
+    RuleSet& target = section == Section::Interpretation   ? m_g.interpretation
+                      : section == Section::Decomposition ? m_g.decomposition
+                                                          : m_g.rules;
+    target.productions.push_back(std::move(prod));
+}
+
+}  // namespace detail
+}  // namespace sprout

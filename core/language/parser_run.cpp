@@ -1,0 +1,321 @@
+// The .lsys parser over a whole text: pasted characters normalized, each line classified
+// (setting, rule, section), the warnings of a finished grammar (lint), and the Grammar's own
+// questions about itself.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/language/parser_impl.hpp"
+
+namespace sprout {
+namespace detail {
+namespace {
+
+// Text copied from PDFs and word processors: same byte length, so positions stay valid.
+void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& replaced) {
+    struct Sub { const char* from; const char* to; const char* what; };
+    static const Sub subs[] = {
+        {"\xE2\x86\x92", "-> ", nullptr},  // → is an accepted arrow, no warning
+        {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'"},
+        {"\xC2\xA0", "  ", nullptr},       // no-break space
+    };
+    // Old Mac line ends (a lone CR) end a line too.
+    for (size_t i = 0; i < text.size(); ++i)
+        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+    for (const Sub& s : subs) {
+        size_t len = std::strlen(s.from);
+        for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
+            text.replace(at, len, s.to);
+            if (s.what) replaced.emplace_back(at, s.what);
+        }
+    }
+}
+
+}  // namespace
+
+void Parser::classify(Line& l, Section& section) {
+    std::string_view t = trim(l.src.text);
+    if (t.empty()) return;
+    // cpfg's preprocessor-style directives, before '#' comments.
+    for (const char* word : {"#define", "#ignore"}) {
+        std::string_view w(word);
+        if (t.starts_with(w) && (t.size() == w.size() || isSpace(t[w.size()]) || t[w.size()] == ':')) {
+            for (const auto& d : directives())
+                if (w.substr(1) == d.name) l.directive = &d;
+            l.kind = Line::DirectiveLine;
+            l.value = t.substr(w.size());
+            if (l.value.starts_with(":")) l.value.remove_prefix(1);  // "#ignore: + -" as well
+            l.value = trim(l.value);
+            return;
+        }
+    }
+    if (t.starts_with("#") || t.starts_with("//")) return;
+    l.section = section;
+    if (size_t arrow = findTopLevel(t, "->"); arrow != std::string_view::npos) {
+        // "axiom: F -> FF": a setting and a rule run together on one line.
+        size_t colon = t.find(':');
+        if (colon != std::string_view::npos && colon < arrow) {
+            std::string k(trim(t.substr(0, colon)));
+            std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+            for (const auto& d : directives())
+                if (k == d.name || (k == "iterations" && std::string_view(d.name) == "n")) {
+                    m_sink.error(l.src, t.substr(arrow), "'" + k + ":' is a setting and '->' makes a rule: put the rule on a line of its own");
+                    return;
+                }
+        }
+        l.kind = Line::Rule;
+        return;
+    }
+    size_t colon = t.find(':');
+    std::string_view key = trim(t.substr(0, colon));
+    if (colon == std::string_view::npos || key.empty() ||
+        !(isIdentifier(key) || key == "\xCF\x89" /* ω */)) {
+        m_sink.error(l.src, t, "expected a rule such as 'F -> F+F' or a setting such as 'angle: 90'");
+        return;
+    }
+    std::string_view value = trim(t.substr(colon + 1));
+    std::string k(key);
+    std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (k == "interpretation" || k == "homomorphism" || k == "productions" || k == "rules" ||
+        k == "derivation") {
+        if (!value.empty()) m_sink.error(l.src, value, "'" + k + ":' starts a section; put its rules on the next lines");
+        section = k == "interpretation" || k == "homomorphism" ? Section::Interpretation : Section::Productions;
+        return;
+    }
+    if (key == "\xCF\x89") k = "axiom";
+    for (const auto& d : directives())
+        if (k == d.name) l.directive = &d;
+    if (!l.directive) {
+        std::vector<std::string> names;
+        for (const auto& d : directives()) names.emplace_back(d.name);
+        std::string msg = "unknown setting '" + std::string(key) + "'";
+        std::string guess = closestMatch(k, names);
+        if (!guess.empty()) msg += " — did you mean '" + guess + "'?";
+        else msg += " (a rule needs '->')";
+        m_sink.error(l.src, key, msg);
+        return;
+    }
+    l.kind = Line::DirectiveLine;
+    l.value = value;
+}
+
+void Parser::lint() {
+    // A deterministic context-free rule without a condition always applies, so later rules
+    // for the same module are dead: say so rather than leave the user wondering.
+    for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation, &m_g.decomposition}) {
+        for (const auto& list : rs->bySymbol) {
+            const Production* total = nullptr;
+            double probSum = 0;
+            int probCount = 0;
+            bool guarded = false;
+            for (auto idx : list) {
+                const Production& p = rs->productions[idx];
+                if (total) {
+                    Diagnostic d{p.line, 1,
+                                 "this rule never applies: the rule on line " + std::to_string(total->line) +
+                                     " always rewrites '" + m_g.alphabet[p.pred.symbol].name +
+                                     "' first (put rules with conditions or contexts before it)",
+                                 Severity::Warning};
+                    m_sink.add(d);
+                    continue;
+                }
+                bool unconditional = !p.condition && !p.hasContext();
+                if (unconditional && p.stochastic()) {
+                    probSum += p.probability;
+                    ++probCount;
+                } else if (p.stochastic()) {
+                    guarded = true;  // the applicable set varies: the sum says nothing
+                } else if (unconditional) {
+                    total = &p;
+                }
+            }
+            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6) {
+                const Production& p = rs->productions[list.front()];
+                std::string sum, rest;
+                appendNumber(sum, probSum);
+                appendNumber(rest, std::round((1 - probSum) * 1e6) / 1e4);
+                m_sink.add({p.line, 1,
+                            "the probabilities of the rules for '" + m_g.alphabet[p.pred.symbol].name +
+                                "' add up to " + sum +
+                                (probSum > 1 ? ", not 1: they are used as weights"
+                                             : ": the module stays unchanged the other " + rest + "% of the time"),
+                            Severity::Warning});
+            }
+        }
+    }
+}
+
+ParseResult Parser::run() {
+    std::vector<std::pair<size_t, const char*>> replaced;
+    normalize(m_text, replaced);
+    if (m_cpfg) {
+        m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
+        m_g.cutInNextStep = true;
+        buildCpfgLines();
+    }
+    // Split into lines; `original` keeps the typed text for column numbers.
+    size_t start = 0;
+    int number = 1;
+    while (!m_cpfg && start <= m_text.size()) {
+        size_t end = m_text.find('\n', start);
+        if (end == std::string::npos) end = m_text.size();
+        Line l;
+        l.src.number = number++;
+        l.src.text = std::string_view(m_text).substr(start, end - start);
+        l.src.original = std::string_view(m_original).substr(start, end - start);
+        if (l.src.text.ends_with('\r')) l.src.text.remove_suffix(1);
+        m_lines.push_back(l);
+        start = end + 1;
+    }
+    for (auto [offset, what] : replaced) {
+        for (const auto& l : m_lines) {
+            if (l.src.text.data() < m_text.data() || l.src.text.data() > m_text.data() + m_text.size()) continue;
+            size_t ls = size_t(l.src.text.data() - m_text.data());
+            if (offset >= ls && offset <= ls + l.src.text.size()) {
+                m_sink.warning(l.src, l.src.text.substr(offset - ls), what);
+                break;
+            }
+        }
+    }
+    // Control characters (a binary file, or a paste gone wrong): one error per line, at the
+    // first one, and the line is not read further.
+    int binaryLines = 0;
+    for (auto& l : m_lines) {
+        // A comment may hold anything but control characters (old files in Latin-1 included).
+        const std::string_view t = trim(l.src.text);
+        const bool comment = t.starts_with("//") || (t.starts_with("#") && !t.starts_with("#define") && !t.starts_with("#ignore"));
+        for (size_t i = 0; i < l.src.text.size(); ++i) {
+            unsigned char c = static_cast<unsigned char>(l.src.text[i]);
+            if (c >= 0x80 && !comment) {  // a UTF-8 sequence: lead byte and the right number of continuations
+                const int len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+                bool valid = len > 0 && i + size_t(len) <= l.src.text.size();
+                for (int k = 1; valid && k < len; ++k) valid = (static_cast<unsigned char>(l.src.text[i + size_t(k)]) & 0xC0) == 0x80;
+                if (!valid) {
+                    char msg[120];
+                    std::snprintf(msg, sizeof msg, "this text is not UTF-8 (byte 0x%02x): save the file as UTF-8", c);
+                    if (++binaryLines <= 5) m_sink.error(l.src, l.src.text.substr(i), msg);
+                    l.src.text = l.src.text.substr(0, 0);
+                    break;
+                }
+                i += size_t(len) - 1;
+                continue;
+            }
+            if ((c < 0x20 && c != '\t' && c != '\r') || c == 0x7f) {
+                char msg[96];
+                std::snprintf(msg, sizeof msg, "unexpected control character (byte 0x%02x): is this a text file?", c);
+                if (++binaryLines <= 5) m_sink.error(l.src, l.src.text.substr(i), msg);
+                l.src.text = l.src.text.substr(0, 0);
+                break;
+            }
+        }
+    }
+    Section section = Section::Productions;
+    bool ended = false;
+    for (auto& l : m_lines) {
+        if (m_cpfg) classifyCpfg(l, section, ended);
+        else classify(l, section);
+    }
+    for (int phase = 0; phase <= 2; ++phase) {
+        for (auto& l : m_lines) {
+            if (l.kind == Line::DirectiveLine && l.directive->phase == phase) {
+                if (m_cpfg) m_depthSection = l.section;
+                l.directive->handler(*this, l.src, l.value);
+            } else if (l.kind == Line::Rule && phase == 2) {
+                parseRule(l.src, l.section);
+            }
+        }
+    }
+    if (!m_axiomSet && m_sink.errorCount() == 0)
+        m_sink.add({1, 1, "the grammar has no axiom: add a line such as 'axiom: F'", Severity::Error});
+
+    m_g.rules.index(m_g.alphabet.size());
+    m_g.interpretation.index(m_g.alphabet.size());
+    m_g.decomposition.index(m_g.alphabet.size());
+    m_g.ignored.resize(m_g.alphabet.nameCount(), false);
+    if (m_considerSet) {  // cpfg `consider:`: only the listed modules count for contexts
+        m_g.ignored.assign(m_g.alphabet.nameCount(), true);
+        for (NameId n : m_considered) m_g.ignored[n] = false;
+        for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+            const auto& sym = m_g.alphabet[SymbolId(s)];
+            if (sym.name == "[" || sym.name == "]") m_g.ignored[sym.nameId] = false;
+        }
+    }
+    if (m_cpfg) loadSurfaceFiles();
+    if (m_g.environment.empty() && m_g.alphabet.findName("?E")) {
+        // Where it is first written, for the message.
+        for (const auto& l : m_lines) {
+            if (size_t at = l.src.text.find("?E"); at != std::string_view::npos && l.kind != Line::Skip) {
+                m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
+                                                            "such as 'environment: sphere 0 10 0 8'");
+                break;
+            }
+        }
+    }
+    lint();
+
+    ParseResult result;
+    result.diagnostics = std::move(m_sink.all());
+    if (m_cpfg) finishCpfg(result.diagnostics);
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                         return a.line != b.line ? a.line < b.line : a.col < b.col;
+                     });
+    if (!hasErrors(result.diagnostics)) result.grammar = std::make_shared<const Grammar>(std::move(m_g));
+    return result;
+}
+
+}  // namespace detail
+
+
+ParseResult parse(std::string_view text) { return detail::Parser(text).run(); }
+ParseResult parse(std::string_view text, const ParseOptions& options) { return detail::Parser(text, options).run(); }
+
+void RuleSet::index(size_t alphabetSize) {
+    bySymbol.assign(alphabetSize, {});
+    for (size_t i = 0; i < productions.size(); ++i)
+        bySymbol[productions[i].pred.symbol].push_back(std::uint32_t(i));
+}
+
+
+bool Grammar::parametric() const {
+    if (!axiom.params.empty()) return true;
+    for (const RuleSet* rs : {&rules, &interpretation})
+        for (const auto& p : rs->productions)
+            if (p.slotCount > 0 || !p.successor.args.empty()) return true;
+    return false;
+}
+
+bool Grammar::hasContext() const {
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.hasContext(); });
+}
+
+bool Grammar::stochastic() const {
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.stochastic(); });
+}
+
+bool Grammar::hasQueries() const {
+    for (size_t s = 0; s < alphabet.size(); ++s)
+        if (queryKind(alphabet[SymbolId(s)].name)) return true;
+    return false;
+}
+
+bool Grammar::needsGeneralEngine() const {
+    if (!decomposition.productions.empty() || hasQueries()) return true;
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [](const Production& p) { return p.hasBlocks(); });
+}
+
+bool Grammar::usesCut() const {
+    auto hasCut = [](const auto& symbols) {
+        return std::find(symbols.begin(), symbols.end(), Alphabet::kCut) != symbols.end();
+    };
+    if (hasCut(axiom.symbols)) return true;
+    return std::any_of(rules.productions.begin(), rules.productions.end(),
+                       [&](const Production& p) { return hasCut(p.successor.symbols); });
+}
+
+}  // namespace sprout
