@@ -9,8 +9,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/base/bounded.hpp"
-
 namespace sprout {
 
 double LightGrid::lightAt(const glm::dvec3& p) const {
@@ -23,12 +21,17 @@ double LightGrid::lightAt(const glm::dvec3& p) const {
 }
 
 std::uint64_t cellKey(const glm::dvec3& p, double cell) {
-    // The cell's indices saturate (bounded.hpp): the environment's own numbers keep its points
-    // within 1e15 cells of the origin (kMaxNumber / kMinDistance), so a plant's node beyond
-    // 2^63 cells (F(1e30)) has no point near it and any cell it shares is only compared by
-    // distance. 21 bits an axis: cells that alias share a bucket, nothing more.
-    const auto index = [&](double v) { return std::uint64_t(floorCell<std::int64_t>(v / cell)) & 0x1fffff; };
-    return (index(p.x) << 42) | (index(p.y) << 21) | index(p.z);
+    // The environment's own numbers keep its points within 1e15 cells of the origin
+    // (kMaxNumber / kMinDistance < 2^50), and so every cell a point looks in. A plant's node
+    // farther than that (F(1e30), or NaN) goes to a bucket of its own that no point asks for:
+    // no point is near it, and far nodes never crowd a near cell's bucket.
+    const glm::dvec3 c = glm::floor(p / cell);
+    constexpr double kFar = 0x1p50;
+    if (!(std::fabs(c.x) < kFar && std::fabs(c.y) < kFar && std::fabs(c.z) < kFar)) return ~std::uint64_t(0);
+    // 21 bits an axis (at most 2^63 - 1, never the far key): cells that alias share a bucket,
+    // nothing more (distances are compared).
+    const auto index = [](double v) { return std::uint64_t(std::int64_t(v)) & 0x1fffff; };
+    return (index(c.x) << 42) | (index(c.y) << 21) | index(c.z);
 }
 
 bool buildLight(const Environment& env, const Geometry& g, LightGrid& grid, std::string& error) {

@@ -22,8 +22,9 @@ struct LightGrid {
     double lightAt(const glm::dvec3& p) const;
 };
 
-// The key of the cell `cell` wide that holds p (a hash key: 21 bits an axis), defined for any p,
-// NaN and 1e30 included.
+// The key of the cell `cell` wide that holds p (a hash key: 21 bits an axis), defined for any p:
+// a point beyond 2^50 cells, or NaN, has the far key, which no cell of an environment's points
+// has.
 std::uint64_t cellKey(const glm::dvec3& p, double cell);
 
 // The light grid for the plant drawn so far; false with `error` when it would be too big

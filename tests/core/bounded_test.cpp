@@ -75,9 +75,15 @@ TEST(Bounded, CellKeysAreDefinedForAnyPointAndSeparateNearCells) {
     EXPECT_NE(cellKey({0.5, 0.5, 0.5}, 1.0), cellKey({1.5, 0.5, 0.5}, 1.0));
     EXPECT_NE(cellKey({0.5, 0.5, 0.5}, 1.0), cellKey({0.5, -0.5, 0.5}, 1.0));
     EXPECT_EQ(cellKey({0.2, 0.3, 0.9}, 1.0), cellKey({0.7, 0.1, 0.4}, 1.0));
-    EXPECT_EQ(cellKey({1e30, 0, 0}, 1.0), cellKey({1e35, 0, 0}, 1.0));
-    EXPECT_EQ(cellKey({kNaN, 0, 0}, 1.0), cellKey({0.5, 0, 0}, 1.0));  // NaN: cell 0
-    (void)cellKey({-kInf, kInf, 1e308}, 1e-6);
+    // Far points (and NaN) share one key that no near cell has: not even the cells that alias
+    // near the origin (index -1 is all ones in 21 bits).
+    const std::uint64_t far = cellKey({1e30, 0, 0}, 1.0);
+    EXPECT_EQ(far, cellKey({1e35, -1e35, 0}, 1.0));
+    EXPECT_EQ(far, cellKey({kNaN, 0, 0}, 1.0));
+    EXPECT_EQ(far, cellKey({-kInf, kInf, 1e308}, 1e-6));
+    EXPECT_EQ(far, cellKey({0, 0, 1.2e15}, 1.0));
+    EXPECT_NE(far, cellKey({-0.5, -0.5, -0.5}, 1.0));
+    EXPECT_NE(far, cellKey({1e9, 1e9, 1e9}, 1e-6));  // the farthest an environment's points reach
 }
 
 TEST(Bounded, TheLightAtAPointFarBeyondTheGridIsTheOpenSky) {
