@@ -1,4 +1,4 @@
-// Conversions of a grammar's numbers to integers (core/bounded.hpp), at and beyond their
+// Conversions of a grammar's numbers to integers (core/base/bounded.hpp), at and beyond their
 // limits, and the places that use them with numbers no plant should reach: each must give a
 // defined answer (the sanitizer build checks there is no undefined cast on the way).
 #include <gtest/gtest.h>

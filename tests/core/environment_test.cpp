@@ -1,5 +1,5 @@
 // Open L-systems: the built-in environments' answers on hand-made cases, and small open
-// L-systems derived step by step (core/environment.hpp).
+// L-systems derived step by step (core/language/environment_spec.hpp, core/environment/environment.hpp).
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>

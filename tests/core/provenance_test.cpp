@@ -1,5 +1,5 @@
 // Which rule made this branch: module -> step -> rule -> ancestors, against lineages derived
-// by hand for small grammars of each kind (core/provenance.hpp).
+// by hand for small grammars of each kind (core/derive/provenance.hpp).
 #include <gtest/gtest.h>
 
 #include "core/language/file_kind.hpp"
