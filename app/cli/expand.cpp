@@ -113,7 +113,7 @@ void printStats(Derivation& d, int n, const std::string& name) {
 }  // namespace
 
 int runExpand(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--stats"}, {"-n", "--seed", "--max-modules", "--max-memory"});
+    Args args(argc, argv, 1, {"--stats", "--no-python"}, {"-n", "--seed", "--max-modules", "--max-memory"});
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
@@ -121,11 +121,20 @@ int runExpand(int argc, char** argv) {
     if (!args.error().empty() || args.positionals().size() != 1) {
         std::cerr << "sprout expand: " << (args.error().empty() ? "expects one FILE or PRESET" : args.error())
                   << "\nusage: sprout expand FILE|PRESET [-n N] [--seed S] [--stats] "
-                     "[--max-modules M] [--max-memory MB]\n";
+                     "[--max-modules M] [--max-memory MB] [--no-python]\n"
+                     "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n";
         return 2;
     }
-    auto loaded = loadGrammar(args.positionals()[0]);
+    LoadOptions lo;
+    lo.steps = n ? int(*n) : -1;
+    lo.python = !args.flag("--no-python");
+    auto loaded = loadGrammar(args.positionals()[0], lo);
     if (!loaded) return 1;
+    if (loaded->ranPython && !args.flag("--stats")) {
+        std::fwrite(loaded->derived.data(), 1, loaded->derived.size(), stdout);
+        std::fputc('\n', stdout);
+        return std::fflush(stdout) == 0 ? 0 : 1;
+    }
 
     DeriveOptions options;
     if (seed) options.seed = std::uint64_t(*seed);

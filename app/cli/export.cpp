@@ -17,7 +17,7 @@
 namespace sprout::cli {
 
 int runExport(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--quiet", "--with-environment"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
+    Args args(argc, argv, 1, {"--quiet", "--with-environment", "--no-python"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto sides = args.integer("--sides", 3, 64);
@@ -38,7 +38,8 @@ int runExport(int argc, char** argv) {
     if (!problem.empty()) {
         std::cerr << "sprout export: " << problem
                   << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg|- [--format glb|obj|ply|svg] [-n N]"
-                     " [--seed S] [--sides K] [--with-environment] [--quiet]\n";
+                     " [--seed S] [--sides K] [--with-environment] [--quiet] [--no-python]\n"
+                     "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n";
         return 2;
     }
     const std::string source = args.positionals()[0], out = *args.value("-o");
@@ -60,10 +61,13 @@ int runExport(int argc, char** argv) {
                               &environment, &usedSeed))
             return 1;
     } else {
-        auto loaded = loadGrammar(source);
+        LoadOptions lo;
+        lo.steps = n ? int(*n) : -1;
+        lo.python = !args.flag("--no-python");
+        auto loaded = loadGrammar(source, lo);
         if (!loaded) return 1;
         const Grammar& g = *loaded->grammar;
-        const int steps = n ? int(*n) : g.settings.iterations;
+        const int steps = n && !loaded->ranPython ? int(*n) : g.settings.iterations;
         DeriveOptions dopts;
         if (seed) dopts.seed = std::uint64_t(*seed);
         dopts.limits = limits;

@@ -9,6 +9,7 @@
 
 #include "app/presets.hpp"
 #include "core/language/import/import.hpp"
+#include "lpy/host.hpp"
 
 namespace sprout::cli {
 namespace {
@@ -44,7 +45,7 @@ FileKind sourceKind(const std::string& source) {
     return FileKind::Lsys;
 }
 
-std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
+std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOptions& options) {
     std::string text, error, includePath;
     LoadedGrammar out;
     out.displayName = source;
@@ -87,12 +88,30 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source) {
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
         out.kind = detectFileKind("", text);
-        out.displayName = std::string(source) + (source.find('.') != std::string::npos ? "" : out.kind == FileKind::Cpfg ? ".l" : ".lsys");
+        out.displayName = std::string(source) + (source.find('.') != std::string::npos ? "" : out.kind == FileKind::Lpy ? ".lpy" : out.kind == FileKind::Cpfg ? ".l" : ".lsys");
     } else {
         std::cerr << source << ": no such file or preset; presets are:";
         for (const auto& n : presetNames()) std::cerr << " " << n;
         std::cerr << "\n";
         return std::nullopt;
+    }
+    if (out.kind == FileKind::Lpy && lpy::pythonAvailable()) {
+        // An L-Py model is a Python program: run as `python3 FILE` would run it.
+        if (!options.python) {
+            std::cerr << out.displayName << ": an L-Py model runs Python; --no-python refuses to run it\n";
+            return std::nullopt;
+        }
+        lpy::RunOptions ro;
+        ro.path = includePath;
+        ro.steps = options.steps;
+        lpy::Model model = lpy::runModel(text, ro);
+        for (const auto& d : model.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
+        if (!model.ok()) return std::nullopt;
+        out.grammar = model.drawable;
+        out.derived = std::move(model.derived);
+        out.ranPython = true;
+        out.text = std::move(text);
+        return out;
     }
     ParseResult r = parse(text, parseOptionsFor(out.kind, includePath));
     for (const auto& d : r.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";

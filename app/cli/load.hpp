@@ -14,12 +14,21 @@ struct LoadedGrammar {
     std::string displayName;  // used in FILE:line:col messages
     std::string text;         // the grammar as written
     std::shared_ptr<const Grammar> grammar;
-    FileKind kind = FileKind::Lsys;  // of `text`: Lsys or Cpfg
+    FileKind kind = FileKind::Lsys;  // of `text`: Lsys, Cpfg or Lpy
+    // An L-Py model run by Python (lpy/): `grammar` is what it derived, to draw (no rules);
+    // `derived` the string as L-Py writes it.
+    bool ranPython = false;
+    std::string derived;
+};
+
+struct LoadOptions {
+    int steps = -1;       // an L-Py model's derivation length (-1: the file's)
+    bool python = true;   // false (--no-python): an L-Py model's Python is refused
 };
 
 // Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors
 // or cannot be read.
-std::optional<LoadedGrammar> loadGrammar(const std::string& source);
+std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOptions& options = {});
 
 // What a source (file, PNG written by Sprout, preset or "-") holds, by detectFileKind():
 // Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).

@@ -173,7 +173,7 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 }  // namespace
 
 int runRender(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats", "--show-environment"},
+    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats", "--show-environment", "--no-python"},
               {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
                "--frames", "--fps", "--light-slice", "--detail"});
     SnapshotOptions o;
@@ -221,7 +221,8 @@ int runRender(int argc, char** argv) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
                      " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H] [--detail full|viewer]\n"
+                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H] [--detail full|viewer] [--no-python]\n"
+                     "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
     }
@@ -252,9 +253,12 @@ int runRender(int argc, char** argv) {
     const FileKind kind = sourceKind(source);
     if (kind == FileKind::Ifs) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
     if (kind == FileKind::Forest) return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
-    auto loaded = loadGrammar(source);
+    LoadOptions lo;
+    lo.steps = n ? int(*n) : -1;
+    lo.python = !args.flag("--no-python");
+    auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
-    if (n) o.iterations = int(*n);
+    if (n && !loaded->ranPython) o.iterations = int(*n);
     if (seed) o.seed = std::uint64_t(*seed);
     if (maxModules) o.limits.maxModules = std::uint64_t(*maxModules);
     o.render.shadows = !args.flag("--no-shadows");
@@ -263,7 +267,7 @@ int runRender(int argc, char** argv) {
     // The grammar travels inside the PNG, so the picture can be opened again: with -n and
     // --seed written into it, it gives this very plant back.
     std::string recipe = loaded->text;
-    if (n) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
+    if (n && !loaded->ranPython) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
     if (seed) recipe = viewer::setDirective(recipe, "seed", std::to_string(*seed));
     if (animate) {
         AnimationOptions ao;

@@ -221,7 +221,7 @@ void ViewerState::openText(std::string text, fs::path path, std::string preset) 
     m_seedOverride.reset();
     m_text = std::move(text);
     m_kind = detectFileKind("", m_text);
-    if (m_kind != FileKind::Ifs && m_kind != FileKind::Forest && m_kind != FileKind::Cpfg) m_kind = FileKind::Lsys;
+    if (m_kind != FileKind::Ifs && m_kind != FileKind::Forest && !cpfgFamily(m_kind)) m_kind = FileKind::Lsys;
     m_dirty = false;
     post();
 }

@@ -125,7 +125,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     // Forest scenes and iterated function systems are opened in the same editor; what the
     // text is comes from core's detectFileKind, and a cpfg file stays cpfg while edited.
     const FileKind detected = detectFileKind("", r.text);
-    const FileKind kind = detected == FileKind::Lsys && r.kind == FileKind::Cpfg ? FileKind::Cpfg : detected;
+    const FileKind kind = detected == FileKind::Lsys && cpfgFamily(r.kind) ? r.kind : detected;
     if (kind == FileKind::Forest) return processScene(r, out);
     if (kind == FileKind::Ifs) return processIfs(r, out);
     auto t0 = std::chrono::steady_clock::now();

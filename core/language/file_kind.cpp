@@ -106,6 +106,20 @@ bool looksLikeCpfg(std::string_view text) {
     return found;
 }
 
+bool looksLikeLpy(std::string_view text) {
+    bool axiom = false, lpy = false, cpfg = false;
+    eachLine(text, [&](std::string_view l) {
+        if (l.starts_with("Axiom:") || l.starts_with("Axiom :") || l.starts_with("axiom:")) axiom = true;
+        if (isKey(l, "lsystem") || l.starts_with("/*")) cpfg = true;
+        if (isKey(l, "production") || l.starts_with("def ") || l.starts_with("import ") || l.starts_with("from ") ||
+            l.starts_with("nproduce ") || l.find("__initialiseContext__") != std::string_view::npos ||
+            l.find("###### INITIALISATION ######") != std::string_view::npos)
+            lpy = true;
+        return true;
+    });
+    return axiom && lpy && !cpfg;
+}
+
 bool looksLikeIfs(std::string_view text) {
     bool result = false;
     eachLine(text, [&](std::string_view l) {
@@ -127,6 +141,7 @@ FileKind detectFileKind(std::string_view path, std::string_view bytes) {
     if (hasExtension(path, ".png")) return FileKind::Png;  // damaged: the PNG reader says how
     if (isForestScene(bytes)) return FileKind::Forest;
     if (looksLikeIfs(bytes)) return FileKind::Ifs;
+    if (hasExtension(path, ".lpy") || looksLikeLpy(bytes)) return FileKind::Lpy;
     if (looksLikeCpfg(bytes)) return FileKind::Cpfg;
     // The extension decides between tools that share it only when the content does not.
     if (hasExtension(path, ".lsys")) return FileKind::Lsys;
@@ -141,7 +156,7 @@ FileKind detectFileKind(std::string_view path, std::string_view bytes) {
 
 ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
     ParseOptions o;
-    o.cpfg = kind == FileKind::Cpfg;
+    o.cpfg = cpfgFamily(kind);
     if (!path.empty()) {  // #include (cpfg) and files an environment names read beside the grammar
         const size_t slash = path.find_last_of('/');
         o.include = includeFromFolder(slash == std::string::npos ? "." : path.substr(0, slash));
@@ -152,13 +167,14 @@ ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
 
 ParseResult parseDetected(std::string_view text, const std::string& path) {
     const FileKind kind = detectFileKind(path, text);
-    return parse(text, parseOptionsFor(kind == FileKind::Cpfg ? kind : FileKind::Lsys, path));
+    return parse(text, parseOptionsFor(cpfgFamily(kind) ? kind : FileKind::Lsys, path));
 }
 
 const char* fileKindName(FileKind kind) {
     switch (kind) {
         case FileKind::Lsys: return ".lsys grammar";
-        case FileKind::Cpfg: return "cpfg / L-Py L-system";
+        case FileKind::Cpfg: return "cpfg L-system";
+        case FileKind::Lpy: return "L-Py model";
         case FileKind::Lparser: return "Lparser file";
         case FileKind::Fractint: return "Fractint L-system file";
         case FileKind::Ifs: return "iterated function system";

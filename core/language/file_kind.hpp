@@ -11,7 +11,9 @@ namespace sprout {
 
 enum class FileKind {
     Lsys,      // Sprout's own grammar language
-    Cpfg,      // the cpfg / lpfg / L-Py family: Lsystem:, derivation length:, -->, /* */ ...
+    Cpfg,      // the cpfg / lpfg family: Lsystem:, derivation length:, -->, /* */ ...
+    Lpy,       // an L-Py model (.lpy): Python with L-system sections (lpy/ runs it; without
+               // Python it is read as the cpfg family)
     Lparser,   // Lparser 5 .ls
     Fractint,  // Fractint .l (several named systems)
     Ifs,       // iterated function system
@@ -32,6 +34,13 @@ ParseResult parseDetected(std::string_view text, const std::string& path = {});
 
 // "cpfg", "Lparser", ... for messages.
 const char* fileKindName(FileKind kind);
+
+// True when a text is an L-Py model: an `Axiom:` line and a `production:` line or L-Py's
+// Python (`def`, `import`, `nproduce`, `__initialiseContext__`), and no cpfg `Lsystem:` line.
+bool looksLikeLpy(std::string_view text);
+
+// The cpfg family: cpfg, lpfg and L-Py read as cpfg (parseOptionsFor gives the cpfg dialect).
+inline bool cpfgFamily(FileKind kind) { return kind == FileKind::Cpfg || kind == FileKind::Lpy; }
 
 // True when the text carries marks only the cpfg / L-Py family uses (an `Lsystem:` or
 // `derivation length:` line, `endlsystem`, `/* */` comments, `#include`, a `decomposition`

@@ -175,7 +175,7 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     const int n = int(line.size());
     int end = n;
     int begin = 0;
-    const bool cpfg = kind == FileKind::Cpfg;
+    const bool cpfg = cpfgFamily(kind);
     if (cpfg) {
         // Block comments carry over lines; // runs to the end.
         if (state.inBlockComment) {
@@ -214,7 +214,8 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     while (begin < end && (line[size_t(begin)] == ' ' || line[size_t(begin)] == '\t')) ++begin;
     const std::string_view body = line.substr(size_t(begin), size_t(end - begin));
     if (!body.empty()) switch (kind) {
-        case FileKind::Cpfg: {
+        case FileKind::Cpfg:
+        case FileKind::Lpy: {
             if (body[0] == '#') {  // #define, #include
                 int j = begin + 1;
                 while (j < end && alpha(line[size_t(j)])) ++j;

@@ -1,0 +1,242 @@
+#include "lpy/draw.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <unordered_map>
+
+namespace sprout::lpy {
+namespace {
+
+enum class Op : std::uint8_t {
+    Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
+    IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
+};
+
+struct Mapping {
+    Op op;
+    const char* sprout = nullptr;  // the Sprout module, for ops that keep their name
+};
+
+const std::unordered_map<std::string, Mapping>& mappings() {
+    static const std::unordered_map<std::string, Mapping> m = {
+        {"F", {Op::Forward, "F"}}, {"f", {Op::Move, "f"}}, {"nF", {Op::StepForward, "F"}},
+        {"+", {Op::Turn, "+"}}, {"-", {Op::Turn, "-"}}, {"^", {Op::Turn, "^"}}, {"&", {Op::Turn, "&"}},
+        {"/", {Op::Turn, "/"}}, {"\\", {Op::Turn, "\\"}}, {"iRollL", {Op::Turn, "/"}}, {"iRollR", {Op::Turn, "\\"}},
+        {"|", {Op::Around, "|"}}, {"@v", {Op::Vertical, "$"}}, {"@R", {Op::SetHead, "@R"}},
+        {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "F"}}, {"OLineTo", {Op::LineTo, "F"}},
+        {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
+        {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
+        {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
+        {"{", {Op::PolyBegin, "{"}}, {".", {Op::PolyVertex, "."}}, {"}", {Op::PolyEnd, "}"}},
+        {"[", {Op::Push, "["}}, {"]", {Op::Pop, "]"}},
+    };
+    return m;
+}
+
+// Modules that draw nothing in L-Py either (no warning when left out).
+bool silent(const std::string& name) {
+    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F", "@Gc", "@Ge", "@Ts", "@Tp",
+                                            "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "EndGuide", "@2D", "@3D",
+                                            "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
+                                            "TextureTransformation", "x", "or", "=]", "?I", "new"};
+    return s.count(name) > 0;
+}
+
+// A parameter as numbers: a number, or a vector/sequence of numbers (Vector3, tuple).
+bool numbers(PyObject* v, std::vector<double>& out) {
+    if (PyFloat_Check(v) || PyLong_Check(v)) {
+        const double d = PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyLong_AsDouble(v);
+        if (PyErr_Occurred()) {
+            PyErr_Clear();
+            return false;
+        }
+        out.push_back(d);
+        return true;
+    }
+    if (PyUnicode_Check(v) || !PySequence_Check(v)) return false;
+    const Py_ssize_t n = PySequence_Size(v);
+    if (n < 0 || n > 16) {
+        PyErr_Clear();
+        return false;
+    }
+    for (Py_ssize_t k = 0; k < n; ++k) {
+        PyObject* item = PySequence_GetItem(v, k);
+        if (!item) {
+            PyErr_Clear();
+            return false;
+        }
+        const bool ok = (PyFloat_Check(item) || PyLong_Check(item)) && numbers(item, out);
+        Py_DECREF(item);
+        if (!ok) return false;
+    }
+    return true;
+}
+
+class Writer {
+public:
+    Writer(Grammar& g) : m_g(g) {}
+    void put(const char* name, std::initializer_list<double> params) { put(name, std::vector<double>(params)); }
+    void put(const char* name, const std::vector<double>& params) {
+        const int arity = int(std::min<size_t>(params.size(), size_t(Alphabet::kMaxArity)));
+        auto id = m_g.alphabet.intern(name, arity);
+        if (!id) return;
+        m_g.axiom.symbols.push_back(*id);
+        for (int k = 0; k < arity; ++k) m_g.axiom.params.push_back(std::isfinite(params[size_t(k)]) ? params[size_t(k)] : 0.0);
+    }
+
+private:
+    Grammar& m_g;
+};
+
+}  // namespace
+
+std::vector<std::uint32_t> defaultMaterials() {
+    // PlantGL's turtle: ambient colours with diffuse 3 (material 0: ambient 80 grey, diffuse 2).
+    auto rgb = [](int r, int g, int b, double diffuse) {
+        auto c = [&](int x) { return std::uint32_t(std::min(255.0, std::floor(x * diffuse))); };
+        return c(r) << 24 | c(g) << 16 | c(b) << 8 | 0xFFu;
+    };
+    return {rgb(80, 80, 80, 2), rgb(65, 45, 15, 3), rgb(30, 60, 10, 3), rgb(60, 0, 0, 3),
+            rgb(60, 60, 15, 3), rgb(0, 0, 60, 3), rgb(60, 0, 60, 3)};
+}
+
+std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings) {
+    auto g = std::make_shared<Grammar>();
+    g->settings.angle = {d.angle, 0};
+    g->settings.step = {1, 0};
+    g->settings.gradient = Toggle::Off;
+    g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
+    const int colours = int(g->settings.palette.size());
+    Writer w(*g);
+    struct State {
+        double width;
+        int colour;
+    };
+    std::vector<State> stack;
+    State st{d.width, std::clamp(d.colour, 0, colours - 1)};
+    w.put("!", {2 * st.width});
+    w.put(";", {double(st.colour)});
+    std::set<std::string> leftOut;
+    const auto& map = mappings();
+    std::vector<double> p;
+    for (const LModule& m : s) {
+        const std::string& name = classes.name(m.cls);
+        auto it = map.find(name);
+        if (it == map.end()) {
+            if (!silent(name) && name.size() > 1) leftOut.insert(name);
+            continue;
+        }
+        p.clear();
+        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+        bool allNumbers = true;
+        for (Py_ssize_t k = 0; k < n; ++k)
+            if (!numbers(PyTuple_GET_ITEM(m.args.ptr(), k), p)) allNumbers = false;
+        const Mapping& mp = it->second;
+        auto setWidth = [&](double width) {
+            if (!(width >= 0)) return;
+            st.width = width;
+            w.put("!", {2 * width});
+        };
+        auto setColour = [&](int index) {
+            if (index < 0 || index >= colours) return;  // L-Py ignores an index past its materials
+            st.colour = index;
+            w.put(";", {double(index)});
+        };
+        switch (mp.op) {
+            case Op::Forward:
+            case Op::Move:
+                if (p.empty()) w.put(mp.sprout, {});
+                else w.put(mp.sprout, {p[0]});
+                if (mp.op == Op::Forward && p.size() >= 2) setWidth(p[1]);  // a frustum up to the top radius
+                break;
+            case Op::StepForward: {  // nF(length, dl): F(dl) repeated, then the rest
+                if (p.size() < 2 || !(p[1] > 0) || !(p[0] >= 0)) break;
+                const double steps = std::min(std::floor(p[0] / p[1]), 100000.0);
+                for (double k = 0; k < steps; ++k) w.put("F", {p[1]});
+                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) w.put("F", {rest});
+                break;
+            }
+            case Op::Turn:
+                if (p.empty()) w.put(mp.sprout, {});
+                else w.put(mp.sprout, {p[0]});
+                break;
+            case Op::Around:
+            case Op::Vertical:
+            case Op::PolyBegin:
+            case Op::PolyVertex:
+            case Op::PolyEnd: w.put(mp.sprout, {}); break;
+            case Op::Push:
+                stack.push_back(st);
+                w.put("[", {});
+                break;
+            case Op::Pop:
+                if (!stack.empty()) {
+                    st = stack.back();
+                    stack.pop_back();
+                }
+                w.put("]", {});
+                break;
+            case Op::SetHead:  // L-Py's x y z are Sprout's z x y
+                if (p.size() >= 6) w.put("@R", {p[1], p[2], p[0], p[4], p[5], p[3]});
+                else if (p.size() >= 3) w.put("@R", {p[1], p[2], p[0]});
+                else if (p.empty()) w.put("@R", {0, 1, 0, 0, 0, 1});
+                break;
+            case Op::MoveTo:
+                if (p.size() >= 3) w.put("@M", {p[1], p[2], p[0]});
+                else if (p.empty()) w.put("@M", {0, 0, 0});
+                break;
+            case Op::LineTo:
+                // Drawn as a turn towards the point and a step of its distance would need the
+                // turtle's position: left out for now (named below).
+                leftOut.insert(name);
+                break;
+            case Op::IncWidth:
+            case Op::DecWidth:
+                if (!p.empty()) setWidth(p[0]);
+                else setWidth(mp.op == Op::IncWidth ? st.width + 1 : st.width - 1 >= 0 ? st.width - 1 : -1);
+                break;
+            case Op::SetWidth:
+                if (!p.empty()) setWidth(p[0]);
+                break;
+            case Op::IncColour:
+            case Op::DecColour:
+                if (!p.empty() && allNumbers) setColour(int(std::lround(std::clamp(p[0], -1e6, 1e6))));
+                else setColour(mp.op == Op::IncColour ? st.colour + 1 : st.colour - 1);
+                break;
+            case Op::SetColour:
+                if (p.size() == 1) setColour(int(std::lround(std::clamp(p[0], -1e6, 1e6))));
+                else if (p.empty() && n == 0) setColour(st.colour);
+                else if (p.size() >= 3) {
+                    auto c = [](double x) { return std::uint32_t(std::clamp(x, 0.0, 255.0)); };
+                    const std::uint32_t rgba = c(p[0]) << 24 | c(p[1]) << 16 | c(p[2]) << 8 | (p.size() >= 4 ? c(p[3]) : 255u);
+                    auto& pal = g->settings.palette;
+                    auto found = std::find(pal.begin(), pal.end(), rgba);
+                    if (found == pal.end() && pal.size() < 250) {
+                        pal.push_back(rgba);
+                        found = pal.end() - 1;
+                    }
+                    if (found != pal.end()) w.put(";", {double(found - pal.begin())});
+                } else {
+                    leftOut.insert(name + " with a Material");
+                }
+                break;
+            case Op::Sphere:
+                w.put("@O", {p.empty() ? st.width : p[0]});
+                break;
+            case Op::Circle:
+                w.put("@c", {p.empty() ? st.width : p[0]});
+                break;
+            case Op::Surface:
+                // `~l(size)`: L-Py's predefined leaf; other names are surfaces a file defines.
+                w.put("~l", {p.empty() ? 1.0 : p[0]});
+                break;
+            case Op::Skip: break;
+        }
+    }
+    if (warnings)
+        for (const auto& name : leftOut) warnings->push_back(name);
+    return g;
+}
+
+}  // namespace sprout::lpy

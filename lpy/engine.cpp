@@ -1,0 +1,513 @@
+#include "lpy/engine.hpp"
+
+#include <algorithm>
+
+#include "core/language/module_string.hpp"
+
+namespace sprout::lpy {
+namespace {
+
+thread_local Engine* g_engine = nullptr;
+
+constexpr int kindIndex(RuleKind k) { return int(k); }
+
+}  // namespace
+
+Engine* currentEngine() { return g_engine; }
+
+Engine::Engine(Translation translation, py::dict ns, const RunOptions& options)
+    : m_tr(std::move(translation)), m_ns(std::move(ns)), m_options(options) {
+    g_engine = this;
+}
+
+Engine::~Engine() {
+    if (g_engine == this) g_engine = nullptr;
+}
+
+void Engine::bind() {
+    g_engine = this;
+    const size_t classes = m_tr.classes.size();
+    m_functions.clear();
+    for (size_t r = 0; r < m_tr.rules.size(); ++r) {
+        const Rule& rule = m_tr.rules[r];
+        m_functions.push_back(m_ns[rule.function.c_str()]);
+        const int k = kindIndex(rule.kind);
+        m_hasKind[k] = true;
+        Index& index = m_index[k][rule.group];
+        index.byClass.resize(classes);
+        const PatternModule& key = rule.kind == RuleKind::Production ? rule.pred.back() : rule.pred.front();
+        const PatternModule& first = rule.pred.front();
+        // Forward steps look rules up by their first module, backward ones by their last:
+        // a production is in both lists (by its first and its last module).
+        auto add = [&](const PatternModule& p, int tag) {
+            if (p.cls == ModuleClasses::kStar) index.any.push_back(int(r) | tag);
+            else if (size_t(p.cls) < classes) index.byClass[size_t(p.cls)].push_back(int(r) | tag);
+        };
+        add(first, 0);
+        if (rule.kind == RuleKind::Production) add(key, 1 << 30);
+        for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
+            for (const auto& p : *part)
+                for (const auto& a : p.args) {
+                    if (a.kind == PatternArg::Kind::Equal)
+                        m_constants[&a] = py::reinterpret_steal<py::object>(
+                            PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+                    else if (a.kind == PatternArg::Kind::Predicate)
+                        m_predicates[&a] = py::reinterpret_steal<py::object>(
+                            PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+                    if (PyErr_Occurred()) throw py::error_already_set();
+                }
+    }
+    auto depth = [&](const char* name, int fallback) {
+        if (!m_ns.contains(name)) return fallback;
+        return std::clamp(py::cast<int>(m_ns[name]), 0, 100000);
+    };
+    m_depth[kindIndex(RuleKind::Decomposition)] = depth("__decomposition_max_depth__", 1);
+    m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
+    if (m_ns.contains("__derivation_length__")) {
+        py::object n = m_ns["__derivation_length__"];
+        derivationLength = int(std::clamp(std::lround(py::cast<double>(n)), -1L, 1000000L));
+    }
+}
+
+LString Engine::parse(std::string_view text) {
+    std::vector<Diagnostic> diags;
+    LString out;
+    for (const auto& w : readLstring(text, m_tr.classes, 0, 1, diags)) {
+        LModule m;
+        m.cls = w.cls;
+        if (!w.args.empty()) {
+            py::list args;
+            for (const auto& a : w.args)
+                args.append(py::reinterpret_steal<py::object>(PyRun_String(a.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr())));
+            if (PyErr_Occurred()) throw py::error_already_set();
+            m.args = py::tuple(args);
+        }
+        if (w.cls >= 0) out.push_back(std::move(m));
+    }
+    if (!diags.empty()) throw py::value_error(diags[0].message);
+    return out;
+}
+
+LString Engine::axiom() {
+    LString out;
+    if (m_tr.axiomIsBlock) {
+        m_buffer.clear();
+        py::object ret = m_ns["__axiom_block__"]();
+        out = std::move(m_buffer);
+        if (!ret.is_none()) append(out, ret);
+        return out;
+    }
+    if (m_ns.contains("__axiom__")) append(out, m_ns["__axiom__"]);
+    return out;
+}
+
+void Engine::append(LString& out, py::handle item) {
+    if (PyLong_Check(item.ptr())) {
+        const long cls = PyLong_AsLong(item.ptr());
+        if (cls < 0 || size_t(cls) >= m_tr.classes.size()) throw py::value_error("produce: not a module");
+        out.push_back({int(cls), py::tuple()});
+        return;
+    }
+    if (PyTuple_Check(item.ptr()) && PyTuple_GET_SIZE(item.ptr()) == 2 && PyLong_Check(PyTuple_GET_ITEM(item.ptr(), 0))) {
+        const long cls = PyLong_AsLong(PyTuple_GET_ITEM(item.ptr(), 0));
+        py::handle args = PyTuple_GET_ITEM(item.ptr(), 1);
+        if (cls < 0 || size_t(cls) >= m_tr.classes.size() || !PyTuple_Check(args.ptr())) throw py::value_error("produce: not a module");
+        // `A(*xs)`: a sequence given last is unpacked (the translation cannot tell).
+        out.push_back({int(cls), py::reinterpret_borrow<py::tuple>(args)});
+        return;
+    }
+    if (PyList_Check(item.ptr())) {
+        for (py::handle h : py::reinterpret_borrow<py::list>(item)) append(out, h);
+        return;
+    }
+    if (item.is_none()) return;
+    // Modules, module classes and Lstrings made in Python.
+    if (py::isinstance<PyModule>(item)) {
+        out.push_back(py::cast<PyModule&>(item).get());
+        return;
+    }
+    if (py::isinstance<PyLstring>(item)) {
+        const LString& s = *py::cast<PyLstring&>(item).s;
+        out.insert(out.end(), s.begin(), s.end());
+        return;
+    }
+    if (py::isinstance<PyModuleClass>(item)) {
+        out.push_back({py::cast<PyModuleClass&>(item).cls, py::tuple()});
+        return;
+    }
+    throw py::type_error(std::string("produce: a ") + Py_TYPE(item.ptr())->tp_name + " is not a module (write a module name, $variable for a module held in a variable)");
+}
+
+void Engine::produce(py::handle items, bool last) {
+    append(m_buffer, items);
+    if (last) m_produced = true;
+}
+
+bool Engine::skipped(int cls, int filter) const {
+    if (filter < 0 || cls == ModuleClasses::kPush || cls == ModuleClasses::kPop) return false;
+    const ContextFilter& f = m_tr.filters[size_t(filter)];
+    const bool listed = std::find(f.classes.begin(), f.classes.end(), cls) != f.classes.end();
+    return f.consider ? !listed : listed;
+}
+
+bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
+    const size_t n = m.args ? size_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
+    if (p.cls == ModuleClasses::kStar) {
+        if (!p.anyName.empty()) bound.push_back(py::str(m_tr.classes.name(m.cls)));
+        if (!p.hasParens || (p.anyName.empty() && p.args.empty())) return true;
+    } else {
+        if (p.cls != m.cls) return false;
+        if (!p.hasParens) return n == 0;
+    }
+    size_t k = 0;
+    for (const PatternArg& a : p.args) {
+        switch (a.kind) {
+            case PatternArg::Kind::Rest: {
+                py::list rest;
+                for (; k < n; ++k) rest.append(py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k)));
+                bound.push_back(rest);
+                continue;
+            }
+            case PatternArg::Kind::Keywords: bound.push_back(py::dict()); continue;
+            default: break;
+        }
+        if (k >= n) return false;
+        py::object v = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k++));
+        switch (a.kind) {
+            case PatternArg::Kind::Skip: break;
+            case PatternArg::Kind::Bind: bound.push_back(std::move(v)); break;
+            case PatternArg::Kind::Equal: {
+                const int eq = PyObject_RichCompareBool(v.ptr(), m_constants[&a].ptr(), Py_EQ);
+                if (eq < 0) throw py::error_already_set();
+                if (!eq) return false;
+                break;
+            }
+            case PatternArg::Kind::Predicate: {
+                py::object ok = m_predicates[&a](v);
+                bound.push_back(std::move(v));
+                if (!ok.cast<bool>()) return false;
+                break;
+            }
+            default: break;
+        }
+    }
+    return k == n;
+}
+
+namespace {
+// The bracket that closes/opens the one at j, by counting (strings not indexed).
+long partner(const LString& s, long j) {
+    const bool open = s[size_t(j)].cls == ModuleClasses::kPush;
+    int depth = 0;
+    for (long k = j; k >= 0 && size_t(k) < s.size(); k += open ? 1 : -1) {
+        const int c = s[size_t(k)].cls;
+        if (c == ModuleClasses::kPush) depth += open ? 1 : -1;
+        else if (c == ModuleClasses::kPop) depth += open ? -1 : 1;
+        if (depth == 0) return k;
+    }
+    return -1;
+}
+}  // namespace
+
+void Engine::matchBrackets(const LString& s) {
+    m_match.assign(s.size(), -1);
+    std::vector<long> stack;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i].cls == ModuleClasses::kPush) stack.push_back(long(i));
+        else if (s[i].cls == ModuleClasses::kPop && !stack.empty()) {
+            m_match[i] = stack.back();
+            m_match[size_t(stack.back())] = long(i);
+            stack.pop_back();
+        }
+    }
+    m_matchOf = &s;
+}
+
+bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound) {
+    std::vector<std::vector<py::object>> per(ps.size());
+    const bool indexed = m_matchOf == &s && m_match.size() == s.size();
+    for (long k = long(ps.size()) - 1; k >= 0; --k) {
+        for (;;) {
+            if (j < 0) return false;
+            const int c = s[size_t(j)].cls;
+            if (c == ModuleClasses::kPop) {  // a whole branch before this one: skipped
+                const long o = indexed ? m_match[size_t(j)] : partner(s, j);
+                if (o < 0) return false;
+                j = o - 1;
+                continue;
+            }
+            if (c == ModuleClasses::kPush || skipped(c, filter)) {
+                --j;
+                continue;
+            }
+            break;
+        }
+        if (!matchModule(ps[size_t(k)], s[size_t(j)], per[size_t(k)])) return false;
+        --j;
+    }
+    for (auto& v : per)
+        for (auto& o : v) bound.push_back(std::move(o));
+    return true;
+}
+
+bool Engine::matchRight(const std::vector<PatternModule>& ps, const LString& s, size_t j, int filter, std::vector<py::object>& bound) {
+    const bool indexed = m_matchOf == &s && m_match.size() == s.size();
+    for (const PatternModule& p : ps) {
+        if (p.cls == ModuleClasses::kPop && !p.exactPop) {
+            // `]` in the pattern: to the end of the branch the match is in.
+            int depth = 0;
+            for (; j < s.size(); ++j) {
+                if (s[j].cls == ModuleClasses::kPush) ++depth;
+                else if (s[j].cls == ModuleClasses::kPop && depth-- == 0) break;
+            }
+            if (j >= s.size()) return false;
+            ++j;
+            continue;
+        }
+        for (;;) {
+            if (j >= s.size()) return false;
+            const int c = s[j].cls;
+            if (c == ModuleClasses::kPush && p.cls != ModuleClasses::kPush) {  // a side branch: skipped
+                const long o = indexed ? m_match[j] : partner(s, long(j));
+                if (o < 0) return false;
+                j = size_t(o) + 1;
+                continue;
+            }
+            if (c == ModuleClasses::kPop && p.cls != ModuleClasses::kPop) return false;
+            if (skipped(c, filter)) {
+                ++j;
+                continue;
+            }
+            break;
+        }
+        if (!matchModule(p, s[j], bound)) return false;
+        ++j;
+    }
+    return true;
+}
+
+bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
+    const size_t len = r.pred.size();
+    if (!forward && at + 1 < len) return false;
+    const size_t start = forward ? at : at + 1 - len;
+    if (start + len > s.size()) return false;
+    std::vector<py::object> left, newLeft, pred, right;
+    for (size_t k = 0; k < len; ++k)
+        if (!matchModule(r.pred[k], s[start + k], pred)) return false;
+    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left)) return false;
+    if (!r.right.empty() && !matchRight(r.right, s, start + len, r.filter, right)) return false;
+    if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
+    if (!r.newRight.empty()) return false;  // `>>`: backward steps over the new string (not read yet)
+    py::tuple args(left.size() + newLeft.size() + pred.size() + right.size());
+    size_t k = 0;
+    for (auto* part : {&left, &newLeft, &pred, &right})
+        for (auto& o : *part) PyTuple_SET_ITEM(args.ptr(), k++, o.release().ptr());
+    m_buffer.clear();
+    m_produced = false;
+    py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
+    if (!ret) throw py::error_already_set();
+    if (!m_produced && m_buffer.empty()) {
+        if (ret.is_none()) return false;  // a body that produced nothing: the next rule is tried
+        append(m_buffer, ret);
+    }
+    result = std::move(m_buffer);
+    m_buffer.clear();
+    // A result that starts with None or '*' inserts nothing: the module is deleted.
+    if (!result.empty() && (result[0].cls == ModuleClasses::kStar || result[0].cls == ModuleClasses::kNone)) result.clear();
+    consumed = len;
+    return true;
+}
+
+bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed) {
+    auto& byGroup = m_index[kindIndex(kind)];
+    const int cls = s[i].cls;
+    const int tag = forward || kind != RuleKind::Production ? 0 : 1 << 30;
+    const int groups[2] = {group, 0};
+    for (int gi = 0; gi < (group == 0 ? 1 : 2); ++gi) {
+        auto it = byGroup.find(groups[gi]);
+        if (it == byGroup.end()) continue;
+        const Index& index = it->second;
+        static const std::vector<int> none;
+        const std::vector<int>& a = size_t(cls) < index.byClass.size() ? index.byClass[size_t(cls)] : none;
+        const std::vector<int>& b = index.any;
+        // Both lists are in declaration order: merged, each rule tried once.
+        size_t ia = 0, ib = 0;
+        while (ia < a.size() || ib < b.size()) {
+            int pick;
+            if (ib >= b.size() || (ia < a.size() && (a[ia] & ~(1 << 30)) < (b[ib] & ~(1 << 30)))) pick = a[ia++];
+            else pick = b[ib++];
+            if ((pick & (1 << 30)) != tag) continue;
+            const Rule& r = m_tr.rules[size_t(pick & ~(1 << 30))];
+            LString result;
+            if (applies(r, s, i, forward, out, consumed, result)) {
+                if (forward) out.insert(out.end(), std::make_move_iterator(result.begin()), std::make_move_iterator(result.end()));
+                else out.insert(out.end(), std::make_move_iterator(result.rbegin()), std::make_move_iterator(result.rend()));
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+void Engine::checkCancel() {
+    if (m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) throw Cancelled{};
+}
+
+void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
+    out.clear();
+    out.reserve(in.size());
+    matchBrackets(in);
+    if (forward) {
+        for (size_t i = 0; i < in.size();) {
+            if ((i & 1023) == 0) checkCancel();
+            if (in[i].cls == ModuleClasses::kCut) {  // the rest of the branch goes; its ']' stays
+                int depth = 0;
+                size_t j = i + 1;
+                for (; j < in.size(); ++j) {
+                    if (in[j].cls == ModuleClasses::kPush) ++depth;
+                    else if (in[j].cls == ModuleClasses::kPop && depth-- == 0) break;
+                }
+                i = j;
+                continue;
+            }
+            size_t consumed = 1;
+            if (tryRules(kind, in, i, true, out, consumed)) {
+                i += std::max<size_t>(consumed, 1);
+                continue;
+            }
+            out.push_back(in[i]);
+            ++i;
+            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+        }
+    } else {
+        for (size_t i = in.size(); i-- > 0;) {
+            if ((i & 1023) == 0) checkCancel();
+            size_t consumed = 1;
+            if (tryRules(kind, in, i, false, out, consumed)) {
+                i -= std::min(i, std::max<size_t>(consumed, 1) - 1);
+                continue;
+            }
+            out.push_back(in[i]);
+        }
+        std::reverse(out.begin(), out.end());
+    }
+}
+
+LString Engine::decompose(LString in, int depth, RuleKind kind) {
+    if (depth <= 0) return in;
+    LString out;
+    out.reserve(in.size());
+    matchBrackets(in);
+    for (size_t i = 0; i < in.size();) {
+        if ((i & 1023) == 0) checkCancel();
+        if (in[i].cls == ModuleClasses::kCut) {
+            int d = 0;
+            size_t j = i + 1;
+            for (; j < in.size(); ++j) {
+                if (in[j].cls == ModuleClasses::kPush) ++d;
+                else if (in[j].cls == ModuleClasses::kPop && d-- == 0) break;
+            }
+            i = j;
+            continue;
+        }
+        LString piece;
+        size_t consumed = 1;
+        if (tryRules(kind, in, i, true, piece, consumed)) {
+            // The piece is decomposed again on its own (its contexts see only it).
+            if (depth > 1) piece = decompose(std::move(piece), depth - 1, kind);
+            out.insert(out.end(), std::make_move_iterator(piece.begin()), std::make_move_iterator(piece.end()));
+            i += std::max<size_t>(consumed, 1);
+            if (m_matchOf != &in) matchBrackets(in);
+            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+            continue;
+        }
+        out.push_back(in[i]);
+        ++i;
+    }
+    return out;
+}
+
+py::object Engine::callHook(const char* name, const LString* s, bool* replaced, LString* out) {
+    if (!m_ns.contains(name)) return py::none();
+    py::object fn = m_ns[name];
+    if (!PyCallable_Check(fn.ptr())) return py::none();
+    int arity = 0;
+    if (py::hasattr(fn, "__code__")) arity = fn.attr("__code__").attr("co_argcount").cast<int>();
+    py::object ret;
+    if (arity == 0 || !s) {
+        ret = fn();
+    } else {
+        auto shared = std::make_shared<LString>(*s);
+        py::object lstring = py::cast(PyLstring{shared});
+        ret = arity == 1 ? fn(lstring) : fn(lstring, py::none());
+        // Changes made through it (lstring[i][k] = v) are kept.
+        if (out) *out = *shared;
+    }
+    if (ret.is_none() || !out) return ret;
+    if (py::isinstance<py::tuple>(ret) && py::len(ret) == 2 && !PyLong_Check(PyTuple_GET_ITEM(ret.ptr(), 0))) ret = ret[py::int_(0)];
+    if (ret.is_none()) return ret;
+    if (py::isinstance<PyLstring>(ret) || py::isinstance<py::list>(ret)) {
+        LString next;
+        append(next, ret);
+        *out = std::move(next);
+        if (replaced) *replaced = true;
+    }
+    return ret;
+}
+
+LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
+    iteration = 0;
+    stopRequested = false;
+    callHook("Start", &s, nullptr, &s);
+    if (everyStep) everyStep->push_back(s);
+    const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
+    int done = 0;
+    for (int i = 0; i < steps; ++i) {
+        checkCancel();
+        iteration = i;
+        callHook("StartEach", &s, nullptr, &s);
+        // Direction and group are read after StartEach (so StartEach may set them).
+        LString next;
+        if (m_hasKind[prod]) {
+            pass(s, next, RuleKind::Production, forwardDirection);
+            s = std::move(next);
+        }
+        if (m_hasKind[dec]) s = decompose(std::move(s), m_depth[dec], RuleKind::Decomposition);
+        callHook("EndEach", &s, nullptr, &s);
+        ++done;
+        if (everyStep) everyStep->push_back(s);
+        if (stopRequested) break;
+    }
+    iteration = std::max(0, done - 1);
+    if (done == steps) callHook("End", &s, nullptr, &s);
+    return s;
+}
+
+LString Engine::interpret(const LString& s) {
+    const int k = kindIndex(RuleKind::Interpretation);
+    if (!m_hasKind[k]) return s;
+    return decompose(s, m_depth[k], RuleKind::Interpretation);
+}
+
+std::string Engine::text(const LString& s) const {
+    std::string out;
+    for (const LModule& m : s) {
+        out += m_tr.classes.name(m.cls);
+        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+        if (n == 0) continue;
+        out += '(';
+        for (Py_ssize_t k = 0; k < n; ++k) {
+            if (k) out += ',';
+            PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), k);
+            if (PyFloat_Check(v) || (PyLong_Check(v) && !PyBool_Check(v))) {
+                appendNumber(out, PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyLong_AsDouble(v));
+            } else {
+                out += py::repr(v).cast<std::string>();
+            }
+        }
+        out += ')';
+    }
+    return out;
+}
+
+}  // namespace sprout::lpy

@@ -1,0 +1,113 @@
+#pragma once
+// L-Py's derivation (L-Py's src/cpp/lsystem.cpp, described in ../shared/lpy-notes.md and the
+// L-Py documentation): a string of modules whose parameters are Python values, rewritten by
+// rules whose bodies are Python functions. Runs with the GIL held.
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+
+#include "lpy/host.hpp"
+#include "lpy/translate.hpp"
+
+namespace sprout::lpy {
+
+namespace py = pybind11;
+
+struct LModule {
+    int cls = 0;
+    py::tuple args;  // empty when the module has none
+};
+using LString = std::vector<LModule>;
+
+// The string as Python sees it (hooks' `lstring`, Lstring(...)), and one module of it: a
+// view into a string (writes go to it) or a module of its own.
+struct PyLstring {
+    std::shared_ptr<LString> s;
+};
+struct PyModule {
+    std::shared_ptr<LString> owner;  // set: a view of (*owner)[index]
+    size_t index = 0;
+    LModule own;
+    LModule& get() { return owner ? (*owner)[index] : own; }
+};
+
+struct PyModuleClass {
+    int cls = 0;
+};
+
+// Thrown when the caller cancels between rule calls.
+struct Cancelled {};
+
+// A Python error raised while running the model: where in the file, and the message.
+struct ModelError {
+    int line = 0, col = 0;
+    std::string message;
+};
+
+class Engine {
+public:
+    Engine(Translation translation, py::dict ns, const RunOptions& options);
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // After the file's code ran: finds the rule functions, evaluates header constants and
+    // predicates, and indexes the rules. Throws py::error_already_set.
+    void bind();
+    LString axiom();
+    // Runs the derivation as L-Py's derive(): Start, then for each step StartEach,
+    // production, decomposition, EndEach, Stop; End after the last step.
+    LString derive(LString s, int steps, std::vector<LString>* everyStep);
+    // The string with the interpretation rules applied (depth from `maximum depth:`).
+    LString interpret(const LString& s);
+    std::string text(const LString& s) const;
+
+    // Called by Python (produce, nproduce and the control functions).
+    void produce(py::handle items, bool last);
+    void append(LString& out, py::handle item);
+    const Translation& translation() const { return m_tr; }
+    int iteration = 0;
+    bool forwardDirection = true;
+    int group = 0;
+    bool stopRequested = false;
+    int derivationLength = 1;
+    LString parse(std::string_view lstring);
+
+private:
+    struct Index {
+        std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
+        std::vector<int> any;                   // rules starting with '*'
+    };
+    void pass(const LString& in, LString& out, RuleKind kind, bool forward);
+    bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
+    bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
+    bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
+    bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound);
+    bool matchRight(const std::vector<PatternModule>& ps, const LString& s, size_t from, int filter, std::vector<py::object>& bound);
+    bool skipped(int cls, int filter) const;
+    LString decompose(LString piece, int depth, RuleKind kind);
+    py::object callHook(const char* name, const LString* s, bool* replaced, LString* out);
+    void checkCancel();
+    void matchBrackets(const LString& s);
+
+    Translation m_tr;
+    py::dict m_ns;
+    const RunOptions& m_options;
+    std::vector<py::object> m_functions;  // per rule
+    std::unordered_map<const PatternArg*, py::object> m_constants, m_predicates;
+    std::unordered_map<int, Index> m_index[3];  // per kind: group -> index
+    bool m_hasKind[3] = {false, false, false};
+    int m_depth[3] = {1, 1, 1};
+    LString m_buffer;
+    bool m_produced = false;
+    std::vector<long> m_match;  // bracket partners of the string being rewritten
+    const LString* m_matchOf = nullptr;
+};
+
+// The engine running on this thread (Python's builtins reach it through this).
+Engine* currentEngine();
+
+}  // namespace sprout::lpy

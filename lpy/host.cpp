@@ -1,0 +1,328 @@
+#include "lpy/host.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <thread>
+
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+
+#include "app/embedded_file.hpp"
+#include "lpy/draw.hpp"
+#include "lpy/engine.hpp"
+
+namespace sprout {
+std::span<const EmbeddedFile> embeddedLpyPython();
+}
+
+namespace py = pybind11;
+using namespace sprout::lpy;
+
+namespace {
+
+Engine& engine() {
+    Engine* e = currentEngine();
+    if (!e) throw py::value_error("no L-Py model is running");
+    return *e;
+}
+
+py::object moduleArg(LModule& m, py::ssize_t k) {
+    const py::ssize_t n = m.args ? py::ssize_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
+    if (k < 0) k += n;
+    if (k < 0 || k >= n) throw py::index_error("module parameter index out of range");
+    return m.args[py::size_t(k)];
+}
+
+PyModule viewOf(const std::shared_ptr<LString>& s, size_t i) {
+    PyModule m;
+    m.owner = s;
+    m.index = i;
+    return m;
+}
+
+}  // namespace
+
+// The functions and classes L-Py's generated code and model files call.
+PYBIND11_EMBEDDED_MODULE(_sprout_lpy, m) {
+    m.def("__lpy_produce", [](py::handle items) { engine().produce(items, true); });
+    m.def("__lpy_nproduce", [](py::handle items) { engine().produce(items, false); });
+    m.def("nsproduce", [](py::handle items) { engine().produce(items, false); });
+    m.def("Stop", [] { engine().stopRequested = true; });
+    m.def("forward", [] { engine().forwardDirection = true; });
+    m.def("backward", [] { engine().forwardDirection = false; });
+    m.def("isForward", [] { return engine().forwardDirection; });
+    m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
+    m.def("getGroup", [] { return engine().group; });
+    m.def("getIterationNb", [] { return engine().iteration; });
+
+    py::class_<PyModuleClass>(m, "ModuleClass")
+        .def_property_readonly("name", [](const PyModuleClass& c) { return engine().translation().classes.name(c.cls); })
+        .def("__call__", [](const PyModuleClass& c, py::args args) {
+            PyModule out;
+            out.own = {c.cls, py::tuple(args)};
+            return out;
+        })
+        .def("__repr__", [](const PyModuleClass& c) { return "ModuleClass(" + engine().translation().classes.name(c.cls) + ")"; });
+    m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
+
+    py::class_<PyModule>(m, "Module")
+        .def(py::init([](const std::string& name, py::args args) {
+            PyModule out;
+            out.own = {const_cast<ModuleClasses&>(engine().translation().classes).intern(name), py::tuple(args)};
+            return out;
+        }))
+        .def_property_readonly("name", [](PyModule& self) { return engine().translation().classes.name(self.get().cls); })
+        .def_property_readonly("args", [](PyModule& self) { return py::list(self.get().args ? self.get().args : py::tuple()); })
+        .def("__len__", [](PyModule& self) { return self.get().args ? py::len(self.get().args) : 0; })
+        .def("__getitem__", [](PyModule& self, py::ssize_t k) { return moduleArg(self.get(), k); })
+        .def("__setitem__", [](PyModule& self, py::ssize_t k, py::object v) {
+            LModule& mod = self.get();
+            moduleArg(mod, k);  // range check
+            const py::ssize_t n = py::ssize_t(PyTuple_GET_SIZE(mod.args.ptr()));
+            if (k < 0) k += n;
+            py::list l(mod.args);
+            l[py::size_t(k)] = v;
+            mod.args = py::tuple(l);
+        })
+        .def("__getattr__", [](PyModule& self, const std::string& attr) -> py::object {
+            LModule& mod = self.get();
+            const auto& names = engine().translation().classes.parameterNames;
+            if (size_t(mod.cls) < names.size())
+                for (size_t k = 0; k < names[size_t(mod.cls)].size(); ++k)
+                    if (names[size_t(mod.cls)][k] == attr) return moduleArg(mod, py::ssize_t(k));
+            throw py::attribute_error("module " + engine().translation().classes.name(mod.cls) + " has no parameter " + attr);
+        })
+        .def("__repr__", [](PyModule& self) { return engine().text({self.get()}); });
+
+    py::class_<PyLstring>(m, "Lstring")
+        .def(py::init([](const std::string& text) { return PyLstring{std::make_shared<LString>(engine().parse(text))}; }))
+        .def("__len__", [](const PyLstring& s) { return s.s->size(); })
+        .def("__getitem__", [](const PyLstring& s, py::ssize_t i) {
+            const py::ssize_t n = py::ssize_t(s.s->size());
+            if (i < 0) i += n;
+            if (i < 0 || i >= n) throw py::index_error("Lstring index out of range");
+            return viewOf(s.s, size_t(i));
+        })
+        .def("__setitem__", [](PyLstring& s, py::ssize_t i, py::object v) {
+            const py::ssize_t n = py::ssize_t(s.s->size());
+            if (i < 0) i += n;
+            if (i < 0 || i >= n) throw py::index_error("Lstring index out of range");
+            LString one;
+            engine().append(one, v);
+            if (one.size() != 1) throw py::value_error("an Lstring item is one module");
+            (*s.s)[size_t(i)] = one[0];
+        })
+        .def("__iter__", [](const PyLstring& s) {
+            py::list l;
+            for (size_t i = 0; i < s.s->size(); ++i) l.append(viewOf(s.s, i));
+            return py::iter(l);
+        })
+        .def("insertAt", [](PyLstring& s, py::ssize_t i, py::object v) {
+            LString items;
+            engine().append(items, v);
+            const size_t at = size_t(std::clamp<py::ssize_t>(i, 0, py::ssize_t(s.s->size())));
+            s.s->insert(s.s->begin() + std::ptrdiff_t(at), items.begin(), items.end());
+        })
+        .def("append", [](PyLstring& s, py::object v) { engine().append(*s.s, v); })
+        .def("__str__", [](const PyLstring& s) { return engine().text(*s.s); })
+        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + engine().text(*s.s) + "')"; });
+}
+
+namespace sprout::lpy {
+namespace {
+
+std::once_flag g_started;
+std::mutex g_run;  // one model runs at a time (the interpreter is shared)
+
+void installModule(const std::string& name, std::string_view source, const std::string& file) {
+    py::module_ types = py::module_::import("types");
+    py::module_ sys = py::module_::import("sys");
+    py::object mod = types.attr("ModuleType")(name);
+    mod.attr("__file__") = file;
+    if (name.find('.') == std::string::npos || name == "openalea.plantgl" || name == "openalea.lpy") mod.attr("__path__") = py::list();
+    sys.attr("modules")[py::str(name)] = mod;
+    py::module_ builtins = py::module_::import("builtins");
+    builtins.attr("exec")(builtins.attr("compile")(std::string(source), file, "exec"), mod.attr("__dict__"));
+}
+
+std::string_view embedded(std::string_view stem) {
+    for (const auto& f : embeddedLpyPython())
+        if (f.stem == stem) return f.data;
+    return {};
+}
+
+void start() {
+    std::call_once(g_started, [] {
+        py::initialize_interpreter(false);
+        {
+            installModule("openalea", "", "<sprout>/openalea/__init__.py");
+            installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
+            installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
+            installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
+            py::module_ sys = py::module_::import("sys");
+            for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph"})
+                sys.attr("modules")[alias] = sys.attr("modules")["openalea.plantgl.all"];
+            py::module_ openalea = py::module_::import("openalea");
+            openalea.attr("lpy") = sys.attr("modules")["openalea.lpy"];
+            openalea.attr("plantgl") = sys.attr("modules")["openalea.plantgl"];
+            sys.attr("modules")["openalea.plantgl"].attr("all") = sys.attr("modules")["openalea.plantgl.all"];
+        }
+        PyEval_SaveThread();  // the GIL is taken by whichever thread runs a model
+    });
+}
+
+// Where a Python error happened in the model file, and what it says.
+Diagnostic describe(py::error_already_set& e, const std::string& file) {
+    Diagnostic d;
+    d.message = std::string(py::str(e.type().attr("__name__"))) + ": " + std::string(py::str(e.value()));
+    if (e.matches(PyExc_SyntaxError)) {
+        py::object v = e.value();
+        if (py::hasattr(v, "lineno") && !v.attr("lineno").is_none()) d.line = v.attr("lineno").cast<int>();
+        if (py::hasattr(v, "offset") && !v.attr("offset").is_none()) d.col = v.attr("offset").cast<int>();
+        if (py::hasattr(v, "msg")) d.message = "SyntaxError: " + std::string(py::str(v.attr("msg")));
+        return d;
+    }
+    if (!e.trace()) return d;
+    py::object frames = py::module_::import("traceback").attr("extract_tb")(e.trace());
+    for (py::handle f : frames) {
+        if (std::string(py::str(f.attr("filename"))) != file) continue;
+        d.line = f.attr("lineno").cast<int>();
+        if (py::hasattr(f, "colno") && !f.attr("colno").is_none()) d.col = f.attr("colno").cast<int>() + 1;
+    }
+    return d;
+}
+
+// Interrupts Python on the running thread when `cancel` is set (an endless loop in a rule).
+class CancelWatch {
+public:
+    CancelWatch(const std::atomic<bool>* cancel) : m_cancel(cancel) {
+        if (!m_cancel) return;
+        m_thread = PyThread_get_thread_ident();
+        m_watch = std::thread([this] {
+            while (!m_done.load()) {
+                if (m_cancel->load()) {
+                    py::gil_scoped_acquire gil;
+                    if (!m_done.load()) PyThreadState_SetAsyncExc(m_thread, PyExc_KeyboardInterrupt);
+                    return;
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            }
+        });
+    }
+    ~CancelWatch() {
+        m_done = true;
+        if (m_watch.joinable()) {
+            py::gil_scoped_release release;  // the watcher may be waiting for the GIL
+            m_watch.join();
+        }
+    }
+
+private:
+    const std::atomic<bool>* m_cancel;
+    unsigned long m_thread = 0;
+    std::atomic<bool> m_done{false};
+    std::thread m_watch;
+};
+
+std::uint32_t materialColour(py::handle m) {
+    try {
+        py::object c = m.attr("diffuseColor")();
+        const double t = m.attr("transparency").cast<double>();
+        auto ch = [](double x) { return std::uint32_t(std::clamp(x, 0.0, 255.0)); };
+        return ch(c[py::int_(0)].cast<double>()) << 24 | ch(c[py::int_(1)].cast<double>()) << 16 |
+               ch(c[py::int_(2)].cast<double>()) << 8 | ch(std::round((1 - t) * 255));
+    } catch (py::error_already_set&) {
+        return 0x808080FF;
+    }
+}
+
+}  // namespace
+
+bool pythonAvailable() { return true; }
+
+Model runModel(std::string_view text, const RunOptions& options) {
+    Model out;
+    Translation tr = translate(text);
+    out.diagnostics = tr.diagnostics;
+    if (!tr.ok()) return out;
+    try {
+        start();
+    } catch (std::exception& e) {
+        out.diagnostics.push_back({0, 0, std::string("Python could not start: ") + e.what(), Severity::Error});
+        return out;
+    }
+    std::lock_guard<std::mutex> lock(g_run);
+    py::gil_scoped_acquire gil;
+    const std::string file = options.path.empty() ? "<model>" : options.path;
+    std::string initCode = tr.initCode, mainCode = tr.mainCode;
+    py::dict ns;
+    ns["__builtins__"] = py::module_::import("builtins");
+    ns["__name__"] = "__lpy__";
+    ns["__file__"] = file;
+    py::module_ lpyModule = py::module_::import("openalea.lpy");
+    py::module_ native = py::module_::import("_sprout_lpy");
+    try {
+        lpyModule.attr("_begin")(ns, file);
+        py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
+        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class"}) ns[name] = native.attr(name);
+        if (!options.path.empty()) {
+            // Imports beside the file (a model's own grid.py), as `python3 FILE` finds them.
+            py::module_ sys = py::module_::import("sys");
+            py::module_ os = py::module_::import("os");
+            py::object folder = os.attr("path").attr("dirname")(os.attr("path").attr("abspath")(options.path));
+            if (!sys.attr("path").contains(folder)) sys.attr("path").attr("insert")(0, folder);
+        }
+    } catch (py::error_already_set& e) {
+        out.diagnostics.push_back(describe(e, file));
+        return out;
+    }
+    Engine engine(std::move(tr), ns, options);
+    CancelWatch watch(options.cancel);
+    auto builtins = py::module_::import("builtins");
+    try {
+        // The INITIALISATION part runs first, then __initialiseContext__, then the model.
+        builtins.attr("exec")(builtins.attr("compile")(initCode, file, "exec"), ns);
+        if (ns.contains("__initialiseContext__")) ns["__initialiseContext__"](lpyModule.attr("context")());
+        builtins.attr("exec")(builtins.attr("compile")(mainCode, file, "exec"), ns);
+        engine.bind();
+        out.derivationLength = engine.derivationLength;
+        const int steps = options.steps >= 0 ? options.steps : engine.derivationLength;
+        std::vector<LString> every;
+        LString s = engine.derive(engine.axiom(), steps, options.keepSteps ? &every : nullptr);
+        out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
+        out.derived = engine.text(s);
+        // What the turtle draws, with the file's turtle settings and materials.
+        TurtleDefaults d;
+        py::dict state = lpyModule.attr("_state");
+        if (!state["angle"].is_none()) d.angle = state["angle"].cast<double>();
+        d.materials = defaultMaterials();
+        for (auto item : py::dict(state["materials"])) {
+            const int i = item.first.cast<int>();
+            if (i < 0 || i > 255) continue;
+            if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
+            d.materials[size_t(i)] = materialColour(item.second);
+        }
+        std::vector<std::string> leftOut;
+        auto g = drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
+        for (const auto& name : leftOut)
+            out.diagnostics.push_back({0, 0, "'" + name + "' is not drawn by Sprout yet", Severity::Warning});
+        for (const LString& step : every) out.steps.push_back(drawable(engine.interpret(step), engine.translation().classes, d));
+        for (auto w : py::list(state["warnings"]))
+            out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});
+        out.drawable = std::move(g);
+    } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_KeyboardInterrupt) && options.cancel && options.cancel->load()) {
+            out.cancelled = true;
+            out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+        } else {
+            out.diagnostics.push_back(describe(e, file));
+        }
+    } catch (Cancelled&) {
+        out.cancelled = true;
+        out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+    }
+    return out;
+}
+
+}  // namespace sprout::lpy

@@ -1,0 +1,50 @@
+#pragma once
+// L-Py models run by an embedded CPython (lpy/README.md): the file is translated
+// (lpy/translate.hpp), its Python runs in a namespace of its own, and the derivation follows
+// L-Py's semantics (L-Py's src/cpp/lsystem.cpp): rules tried in order with their Python
+// bodies, contexts on the axial tree, hooks, groups, direction, decomposition and
+// interpretation. What it derives is handed to Sprout's turtle as a string in Sprout's
+// vocabulary (lpy/draw.hpp), so pictures, exports and the viewer work as for every grammar.
+//
+// Python in a file is a program: callers decide whether a file may run (the viewer asks the
+// user; `sprout render | expand | export` run it as `python3 FILE` would, unless --no-python).
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/language/diagnostic.hpp"
+#include "core/language/grammar.hpp"
+
+namespace sprout::lpy {
+
+struct RunOptions {
+    std::string path;                             // the file (tracebacks, imports beside it); may be empty
+    int steps = -1;                               // -1: the file's derivation length
+    const std::atomic<bool>* cancel = nullptr;    // set by another thread: Python stops within ~100 ms
+    bool keepSteps = false;                       // keep every step's drawable (growth stepping)
+    std::size_t maxModules = 50'000'000;          // a string past this ends the derivation with a message
+};
+
+struct Model {
+    std::vector<Diagnostic> diagnostics;
+    // What the turtle draws: a Grammar with no rules whose axiom is the final string with the
+    // interpretation rules applied, in Sprout's turtle vocabulary, and L-Py's turtle defaults
+    // (60 degree turns, materials as the palette).
+    std::shared_ptr<const Grammar> drawable;
+    std::vector<std::shared_ptr<const Grammar>> steps;  // keepSteps: step 0 (the axiom) .. n
+    std::string derived;         // the final string as L-Py writes it
+    int derivationLength = 0;    // as the file says
+    int stepsDone = 0;
+    bool cancelled = false;
+    bool ok() const { return drawable != nullptr; }
+};
+
+// False when Sprout was built without Python (then .lpy files are read by the cpfg reader).
+bool pythonAvailable();
+
+Model runModel(std::string_view text, const RunOptions& options);
+
+}  // namespace sprout::lpy

@@ -1,0 +1,127 @@
+# openalea.lpy as Sprout provides it to L-Py model files: the control functions of a
+# derivation (from Sprout's engine, _sprout_lpy) and the `context()` that an
+# INITIALISATION block writes its materials, options and parameters into.
+import sys as _sys
+
+from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
+                         getGroup, getIterationNb, nsproduce)
+
+_state = {}
+
+
+def _begin(ns, file):
+    """A new run: the model's namespace and file, nothing remembered from an earlier run."""
+    _state.clear()
+    _state.update(ns=ns, file=file, materials={}, angle=None, warnings=[], options={}, timestep=None)
+
+
+def _warn(message):
+    """A warning at the line of the model file that is running."""
+    f = _sys._getframe(1)
+    while f is not None and f.f_code.co_filename != _state.get('file'):
+        f = f.f_back
+    _state.setdefault('warnings', []).append((f.f_lineno if f is not None else 0, message))
+
+
+class _Options:
+    def setSelection(self, name, index):
+        _state['options'][name] = index
+
+    def __getitem__(self, name):
+        return _state['options'].get(name)
+
+
+class _Turtle:
+    def setAngleIncrement(self, angle):
+        _state['angle'] = float(angle)
+
+    def setMaterial(self, index, material):
+        _state['materials'][int(index)] = material
+
+    def __getattr__(self, name):
+        def ignored(*args, **kwargs):
+            _warn("context().turtle.%s is not provided by Sprout: ignored" % name)
+        return ignored
+
+
+class _Context:
+    def __init__(self):
+        self.turtle = _Turtle()
+        self.options = _Options()
+
+    @property
+    def animation_timestep(self):
+        return _state.get('timestep')
+
+    @animation_timestep.setter
+    def animation_timestep(self, value):
+        _state['timestep'] = value
+
+    def __setitem__(self, name, value):
+        _state['ns'][name] = value
+
+    def __getitem__(self, name):
+        return _state['ns'][name]
+
+    def __contains__(self, name):
+        return name in _state['ns']
+
+    def get(self, name, default=None):
+        return _state['ns'].get(name, default)
+
+    def getIterationNb(self):
+        return getIterationNb()
+
+    def __getattr__(self, name):
+        def ignored(*args, **kwargs):
+            _warn("context().%s is not provided by Sprout: ignored" % name)
+        return ignored
+
+
+_context = _Context()
+
+
+def context():
+    return _context
+
+
+execContext = context
+getContext = context
+
+
+def isAnimationEnabled():
+    return False
+
+
+def frameDisplay(*args):
+    pass
+
+
+def extern(**kwargs):
+    """Names the caller may set before the model runs; the defaults given here otherwise."""
+    ns = _state['ns']
+    for k, v in kwargs.items():
+        if k not in ns:
+            ns[k] = v
+
+
+class ParameterSet:
+    def __init__(self, **kwargs):
+        self.__dict__.update(kwargs)
+
+    def set(self, **kwargs):
+        self.__dict__.update(kwargs)
+
+    def setdefault(self, **kwargs):
+        for k, v in kwargs.items():
+            self.__dict__.setdefault(k, v)
+
+    def hasattr(self, name):
+        return name in self.__dict__
+
+    def __repr__(self):
+        return "ParameterSet(%s)" % ", ".join("%s=%r" % kv for kv in self.__dict__.items())
+
+
+def makestring(text):
+    return Lstring(text)

@@ -1,0 +1,325 @@
+# The part of PlantGL (openalea.plantgl.all) that L-Py model files use, as Sprout provides
+# it: vectors and colours, materials, the 2D curves and the functions made from them
+# (evaluated as PlantGL evaluates them), and a Viewer whose calls do nothing.
+import math as _math
+
+try:
+    from openalea.lpy import _warn
+except ImportError:  # imported on its own
+    def _warn(message):
+        pass
+
+
+class _Vec(tuple):
+    _n = 3
+
+    def __new__(cls, *args):
+        if len(args) == 1 and hasattr(args[0], '__len__'):
+            args = tuple(args[0])
+        args = tuple(float(a) for a in args) + (0.0,) * (cls._n - len(args))
+        return tuple.__new__(cls, args[:cls._n])
+
+    x = property(lambda s: s[0])
+    y = property(lambda s: s[1])
+    z = property(lambda s: s[2] if len(s) > 2 else 0.0)
+    w = property(lambda s: s[3] if len(s) > 3 else 0.0)
+
+    def __add__(self, o):
+        return type(self)(*[a + b for a, b in zip(self, o)])
+
+    def __sub__(self, o):
+        return type(self)(*[a - b for a, b in zip(self, o)])
+
+    def __neg__(self):
+        return type(self)(*[-a for a in self])
+
+    def __mul__(self, k):
+        if isinstance(k, (int, float)):
+            return type(self)(*[a * k for a in self])
+        return sum(a * b for a, b in zip(self, k))  # dot product, as PlantGL's Vector * Vector
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k):
+        return type(self)(*[a / k for a in self])
+
+    def __xor__(self, o):  # cross product
+        return cross(self, o)
+
+    def __abs__(self):
+        return _math.sqrt(sum(a * a for a in self))
+
+    def norm(self):
+        return abs(self)
+
+    def normSquared(self):
+        return sum(a * a for a in self)
+
+    def normed(self):
+        n = abs(self)
+        return self / n if n > 0 else self
+
+    def normalize(self):
+        return abs(self)  # PlantGL normalises in place and returns the old norm; tuples cannot
+
+    def __repr__(self):
+        return "%s(%s)" % (type(self).__name__, ", ".join("%g" % a for a in self))
+
+
+class Vector2(_Vec):
+    _n = 2
+
+
+class Vector3(_Vec):
+    _n = 3
+
+    class Cylindrical:
+        def __init__(self, radius, theta, z):
+            self.radius, self.theta, self.z = radius, theta, z
+
+    class Spherical:
+        def __init__(self, radius, theta, phi):
+            self.radius, self.theta, self.phi = radius, theta, phi
+
+    def __new__(cls, *args):
+        if len(args) == 1 and isinstance(args[0], Vector3.Cylindrical):
+            c = args[0]
+            args = (c.radius * _math.cos(c.theta), c.radius * _math.sin(c.theta), c.z)
+        elif len(args) == 1 and isinstance(args[0], Vector3.Spherical):
+            s = args[0]
+            args = (s.radius * _math.cos(s.theta) * _math.sin(s.phi), s.radius * _math.sin(s.theta) * _math.sin(s.phi),
+                    s.radius * _math.cos(s.phi))
+        return _Vec.__new__(cls, *args)
+
+
+class Vector4(_Vec):
+    _n = 4
+
+
+def cross(a, b):
+    return Vector3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def norm(v):
+    return _math.sqrt(sum(a * a for a in v))
+
+
+def angle(a, b):
+    c = dot(a, b) / (norm(a) * norm(b) or 1.0)
+    return _math.acos(max(-1.0, min(1.0, c)))
+
+
+class Color3(tuple):
+    def __new__(cls, r=0, g=0, b=0):
+        if isinstance(r, (tuple, list)):
+            r, g, b = r[:3]
+        return tuple.__new__(cls, (int(r), int(g), int(b)))
+
+    red = property(lambda s: s[0])
+    green = property(lambda s: s[1])
+    blue = property(lambda s: s[2])
+
+
+class Color4(tuple):
+    def __new__(cls, r=0, g=0, b=0, a=0):
+        if isinstance(r, (tuple, list)):
+            r, g, b, a = (list(r) + [0])[:4]
+        return tuple.__new__(cls, (int(r), int(g), int(b), int(a)))
+
+
+class Material:
+    """PlantGL's Material: the colour a surface shows is ambient x diffuse."""
+
+    def __init__(self, *args, **kwargs):
+        names = ['ambient', 'diffuse', 'specular', 'emission', 'shininess', 'transparency']
+        args = list(args)
+        self.name = args.pop(0) if args and isinstance(args[0], str) else kwargs.pop('name', '')
+        values = dict(ambient=Color3(80, 80, 80), diffuse=2.0, specular=Color3(0, 0, 0), emission=Color3(0, 0, 0),
+                      shininess=0.2, transparency=0.0)
+        for n, v in zip(names, args):
+            values[n] = v
+        values.update(kwargs)
+        self.ambient = Color3(values['ambient'])
+        self.diffuse = float(values['diffuse'])
+        self.specular = Color3(values['specular'])
+        self.emission = Color3(values['emission'])
+        self.shininess = float(values['shininess'])
+        self.transparency = float(values['transparency'])
+
+    def diffuseColor(self):
+        return Color3(*[min(255, int(c * self.diffuse)) for c in self.ambient])
+
+
+class _Points(list):
+    def __init__(self, *args):
+        if len(args) == 1 and not isinstance(args[0], (int, float)):
+            list.__init__(self, [tuple(p) for p in args[0]])
+        else:
+            list.__init__(self, args)
+
+
+class Point2Array(_Points):
+    pass
+
+
+class Point3Array(_Points):
+    pass
+
+
+class Point4Array(_Points):
+    pass
+
+
+class Point4Matrix(list):
+    def __init__(self, rows=()):
+        list.__init__(self, [[tuple(p) for p in row] for row in rows])
+
+
+def _uniform_clamped_knots(n, degree):
+    # n control points: degree+1 zeros, the inner knots evenly spaced, degree+1 ones.
+    inner = n - degree - 1
+    return [0.0] * (degree + 1) + [(i + 1) / (inner + 1) for i in range(inner)] + [1.0] * (degree + 1)
+
+
+class NurbsCurve2D:
+    """A 2D NURBS curve; control points are (x, y, weight)."""
+
+    def __init__(self, ctrlPointList, degree=3, knotList=None, stride=30, width=1, **kwargs):
+        if isinstance(degree, (list, tuple)):  # the form (points, knots, degree, ...)
+            knotList, degree = degree, knotList if isinstance(knotList, int) else 3
+        pts = [tuple(p) for p in ctrlPointList]
+        self.ctrlPointList = [(p[0], p[1], p[2] if len(p) > 2 else 1.0) for p in pts]
+        self.degree = max(1, min(int(degree), len(pts) - 1))
+        self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
+        self.stride = int(kwargs.get('stride', stride))
+        self.width = width
+        self.name = ''
+
+    @property
+    def firstKnot(self):
+        return self.knotList[self.degree]
+
+    @property
+    def lastKnot(self):
+        return self.knotList[len(self.ctrlPointList)]
+
+    def getPointAt(self, u):
+        k, p, pts = self.knotList, self.degree, self.ctrlPointList
+        n = len(pts) - 1
+        u = max(self.firstKnot, min(self.lastKnot, u))
+        span = p
+        while span < n and u >= k[span + 1]:
+            span += 1
+        d = [[pts[j][0] * pts[j][2], pts[j][1] * pts[j][2], pts[j][2]] for j in range(span - p, span + 1)]
+        for r in range(1, p + 1):  # de Boor, on homogeneous points
+            for j in range(p, r - 1, -1):
+                i = j + span - p
+                den = k[i + p - r + 1] - k[i]
+                a = (u - k[i]) / den if den else 0.0
+                d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(3)]
+        w = d[p][2] or 1.0
+        return Vector2(d[p][0] / w, d[p][1] / w)
+
+    def points(self, samples=None):
+        n = samples or max(2, self.stride)
+        a, b = self.firstKnot, self.lastKnot
+        return [self.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n)]
+
+
+class BezierCurve2D(NurbsCurve2D):
+    def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
+        n = len(list(ctrlPointList))
+        NurbsCurve2D.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
+
+
+class Polyline2D:
+    def __init__(self, pointList, width=1, **kwargs):
+        self.pointList = [Vector2(p[0], p[1]) for p in pointList]
+        self.width = width
+        self.name = ''
+        self.firstKnot, self.lastKnot, self.stride = 0.0, 1.0, len(self.pointList)
+
+    @staticmethod
+    def Circle(radius=0.5, slices=8):
+        return Polyline2D([(radius * _math.cos(2 * _math.pi * i / slices), radius * _math.sin(2 * _math.pi * i / slices))
+                           for i in range(slices + 1)])
+
+    def getPointAt(self, u):
+        pts = self.pointList
+        if len(pts) == 1:
+            return pts[0]
+        t = max(0.0, min(1.0, u)) * (len(pts) - 1)
+        i = min(int(t), len(pts) - 2)
+        f = t - i
+        return Vector2(pts[i][0] + (pts[i + 1][0] - pts[i][0]) * f, pts[i][1] + (pts[i + 1][1] - pts[i][1]) * f)
+
+    def points(self, samples=None):
+        return list(self.pointList)
+
+
+class QuantisedFunction:
+    """y = f(x) sampled from a 2D curve over its x range (PlantGL's QuantisedFunction)."""
+
+    def __init__(self, curve, sampling=100, clamped=True):
+        if isinstance(curve, (list, tuple)):
+            curve = Polyline2D(curve)
+        n = max(2, int(sampling))
+        a, b = curve.firstKnot, curve.lastKnot
+        pts = sorted(curve.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n))
+        self._x = [p[0] for p in pts]
+        self._y = [p[1] for p in pts]
+        self.clamped = clamped
+
+    @property
+    def firstx(self):
+        return self._x[0]
+
+    @property
+    def lastx(self):
+        return self._x[-1]
+
+    def __call__(self, x):
+        xs, ys = self._x, self._y
+        if x <= xs[0]:
+            return ys[0]
+        if x >= xs[-1]:
+            return ys[-1]
+        lo, hi = 0, len(xs) - 1
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if xs[mid] <= x:
+                lo = mid
+            else:
+                hi = mid
+        dx = xs[hi] - xs[lo]
+        f = (x - xs[lo]) / dx if dx else 0.0
+        return ys[lo] + (ys[hi] - ys[lo]) * f
+
+    getValue = __call__
+
+
+class NurbsPatch:
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
+        self.ctrlPointMatrix = ctrlPointMatrix
+        self.udegree, self.vdegree = udegree, vdegree
+        self.name = ''
+
+
+class _Viewer:
+    class _Any:
+        def __getattr__(self, name):
+            return _Viewer._Any()
+
+        def __call__(self, *args, **kwargs):
+            _warn("Viewer: Sprout has no PlantGL viewer; the call does nothing")
+            return None
+
+    def __getattr__(self, name):
+        return _Viewer._Any()
+
+
+Viewer = _Viewer()

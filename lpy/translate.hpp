@@ -1,0 +1,120 @@
+#pragma once
+// An L-Py model file read as L-Py reads it (L-Py's src/cpp/lpy_parser.cpp, described in the
+// L-Py documentation): the text becomes one Python program with the same line numbers (so a
+// traceback names the .lpy line) plus what the derivation needs to know at parse time: the
+// module classes, the rules with their headers parsed into patterns, the context filters.
+//
+// Pure C++ (no Python): the fuzz target and the tests drive it without an interpreter; the
+// host (lpy/host.hpp) runs what it makes.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "core/language/diagnostic.hpp"
+
+namespace sprout::lpy {
+
+// Module classes: L-Py's predefined modules (with their aliases) first, then the names a
+// file declares or uses. A name is found by the longest known name at a position; an unknown
+// character becomes a class of its own ("on the fly" declaration, L-Py's default).
+class ModuleClasses {
+public:
+    ModuleClasses();
+    // The class of `name`, adding it when new.
+    int intern(std::string_view name);
+    int find(std::string_view name) const;  // -1 when unknown
+    const std::string& name(int cls) const { return m_names[size_t(cls)]; }
+    size_t size() const { return m_names.size(); }
+    size_t longest() const { return m_longest; }
+    // Declared parameter names (`module A(x, y)`), for `m.x` in Python.
+    std::vector<std::vector<std::string>> parameterNames;
+
+    // Fixed ids of the modules the derivation itself looks at.
+    static constexpr int kPush = 0, kPop = 1, kCut = 2, kStar = 3, kNone = 4, kSurface = 5;
+
+private:
+    std::vector<std::string> m_names;
+    std::unordered_map<std::string, int> m_ids;  // names and aliases
+    size_t m_longest = 1;
+};
+
+// One module of an lstring as written: its class and its argument texts (Python expressions).
+struct WrittenModule {
+    int cls = 0;
+    std::vector<std::string> args;
+    bool hasParens = false;
+    std::string variable;  // `$v`: the module held in Python variable v (cls is -1)
+    int col = 0;           // 1-based column in the line
+};
+
+// Tokenises an lstring as L-Py does (longest known name first, an unknown character a class
+// of its own, `~c` a surface named c, arguments split at top-level commas). Errors (an
+// unbalanced parenthesis, a stray ')') go to `diags` at `line` and the text's columns,
+// counted from `col0`.
+std::vector<WrittenModule> readLstring(std::string_view text, ModuleClasses& classes, int line, int col0,
+                                       std::vector<Diagnostic>& diags);
+
+// One argument of a module in a rule's header.
+struct PatternArg {
+    enum class Kind : std::uint8_t { Bind, Skip, Rest, Keywords, Equal, Predicate } kind = Kind::Bind;
+    std::string name;  // Bind, Rest, Keywords, Predicate: the variable
+    std::string expr;  // Equal: the value; Predicate: the test (Python, reading `name`)
+};
+
+struct PatternModule {
+    int cls = 0;              // ModuleClasses::kStar: any module
+    bool hasParens = false;   // `A` without parentheses matches only an A without arguments
+    std::string anyName;      // `*(name, ...)`: binds the module's name
+    std::vector<PatternArg> args;
+    bool exactPop = false;    // `=]`: an actual ']' (a ']' skips to the end of the branch)
+};
+
+enum class RuleKind : std::uint8_t { Production, Decomposition, Interpretation };
+
+struct Rule {
+    RuleKind kind = RuleKind::Production;
+    int group = 0;
+    int line = 0;
+    std::string header;  // as written, for "why this branch?"
+    std::vector<PatternModule> left, newLeft, pred, newRight, right;
+    std::string function;             // the Python function the body became
+    std::vector<std::string> params;  // its parameters, in binding order
+    int filter = -1;                  // index into Translation::filters; -1: none
+    std::vector<int> equalSlots;      // per Equal argument, in binding order: its constant's index
+    // A `-->` rule whose successor has only literal arguments (and no Python body): the
+    // successor is built once (L-Py's static rules).
+    bool staticSuccessor = false;
+};
+
+// `consider:` (only these classes count in contexts) or `ignore:` (these are skipped).
+struct ContextFilter {
+    bool consider = false;
+    std::vector<int> classes;
+};
+
+struct Translation {
+    std::string initCode;  // the INITIALISATION part, padded so that its lines are the file's
+    std::string mainCode;  // the rest, translated; line i is the file's line i
+    ModuleClasses classes;
+    std::vector<Rule> rules;  // in file order
+    std::vector<ContextFilter> filters;
+    std::vector<std::string> equalValues;  // header constants, evaluated by the host
+    bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
+    bool hasAxiom = false;
+    int axiomLine = 0;
+    std::vector<Diagnostic> diagnostics;
+    bool ok() const { return !hasErrors(diagnostics); }
+};
+
+// True when a text is an L-Py model: an `Axiom:` line together with `production:`,
+// `derivation length:` or L-Py's Python (`def`, `import`, `produce`, `__initialiseContext__`).
+bool looksLikeLpy(std::string_view text);
+
+Translation translate(std::string_view text);
+
+// The names of the Python functions a file may define that the derivation calls.
+inline constexpr const char* kHooks[] = {"Start", "End", "StartEach", "EndEach", "StartInterpretation", "EndInterpretation", "PostDraw"};
+
+}  // namespace sprout::lpy
