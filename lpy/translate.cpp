@@ -286,7 +286,7 @@ private:
         }
     }
 
-    void declareModules(std::string_view rest, int line) {
+    void declareModules(std::string_view rest, int line, size_t index) {
         // `module A, B(x,y), C=D : scale = 2`; keys after ':' are not used by Sprout.
         int depth = 0;
         size_t colon = std::string_view::npos;
@@ -322,7 +322,7 @@ private:
             if (params.size()) m_out.classes.parameterNames[size_t(cls)] = params;
             if (isIdentifier(name)) out += std::string(name) + " = __lpy_module_class(" + std::to_string(cls) + "); ";
         }
-        m_outLines.back() = out.empty() ? "pass" : out;
+        m_outLines[index] = out.empty() ? "pass" : out;
     }
 
     PatternModule pattern(const WrittenModule& w, int line) {
@@ -528,6 +528,8 @@ private:
             for (size_t k = i + 1; k <= last; ++k) m_outLines[k] = "";
         } else {
             std::string inlineBody = std::string(trim(std::string_view(line).substr(end + 1)));
+            // `A : @static` (a body evaluated once in L-Py): run as an ordinary body here.
+            if (inlineBody.rfind("@static", 0) == 0) inlineBody = std::string(trim(std::string_view(inlineBody).substr(7)));
             const std::string headerLine = lines[i];
             lines[i] = inlineBody;  // the body's first line is what follows ':' (columns from there)
             for (size_t k = i; k <= last; ++k)
@@ -617,7 +619,7 @@ private:
                     continue;
                 }
                 if (startsWithWord(t, "group")) {
-                    std::string_view g = trim(t.substr(5));
+                    std::string_view g = trim(t.substr(5, commentStart(t) - 5));
                     if (!g.empty() && g.back() == ':') g = trim(g.substr(0, g.size() - 1));
                     int n = 0;
                     bool okNumber = !g.empty() && std::all_of(g.begin(), g.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
@@ -666,7 +668,7 @@ private:
                     continue;
                 }
                 if (startsWithWord(t, "module") && t.size() > 7 && std::isspace(static_cast<unsigned char>(t[6]))) {
-                    declareModules(t.substr(7), lineNo);
+                    declareModules(t.substr(7), lineNo, i);
                     m_outLines[i] = std::string(size_t(ind), ' ') + m_outLines[i];
                     continue;
                 }

@@ -96,6 +96,46 @@ class Vector4(_Vec):
     _n = 4
 
 
+Vector2.OX, Vector2.OY, Vector2.ORIGIN = Vector2(1, 0), Vector2(0, 1), Vector2(0, 0)
+Vector3.OX, Vector3.OY, Vector3.OZ, Vector3.ORIGIN = Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 1), Vector3(0, 0, 0)
+Vector4.OX, Vector4.OY, Vector4.OZ, Vector4.OW = Vector4(1, 0, 0, 0), Vector4(0, 1, 0, 0), Vector4(0, 0, 1, 0), Vector4(0, 0, 0, 1)
+
+
+class Matrix3:
+    """A 3x3 matrix (rows), with PlantGL's rotations."""
+
+    def __init__(self, *rows):
+        if len(rows) == 9:
+            rows = (rows[0:3], rows[3:6], rows[6:9])
+        self.rows = [list(map(float, r)) for r in rows] if rows else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+
+    @staticmethod
+    def axisRotation(axis, angle):
+        x, y, z = Vector3(axis).normed()
+        c, s, t = _math.cos(angle), _math.sin(angle), 1 - _math.cos(angle)
+        return Matrix3([t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+                       [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+                       [t * x * z - s * y, t * y * z + s * x, t * z * z + c])
+
+    @staticmethod
+    def IDENTITY():
+        return Matrix3()
+
+    def __mul__(self, o):
+        if isinstance(o, Matrix3):
+            return Matrix3(*[[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
+        return Vector3(*[sum(self.rows[i][k] * o[k] for k in range(3)) for i in range(3)])
+
+    def transpose(self):
+        return Matrix3(*[[self.rows[j][i] for j in range(3)] for i in range(3)])
+
+    def getColumn(self, j):
+        return Vector3(*[self.rows[i][j] for i in range(3)])
+
+    def getRow(self, i):
+        return Vector3(*self.rows[i])
+
+
 def cross(a, b):
     return Vector3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
@@ -187,12 +227,15 @@ def _uniform_clamped_knots(n, degree):
 
 class NurbsCurve2D:
     """A 2D NURBS curve; control points are (x, y, weight)."""
+    _dim = 2
 
     def __init__(self, ctrlPointList, degree=3, knotList=None, stride=30, width=1, **kwargs):
         if isinstance(degree, (list, tuple)):  # the form (points, knots, degree, ...)
             knotList, degree = degree, knotList if isinstance(knotList, int) else 3
         pts = [tuple(p) for p in ctrlPointList]
-        self.ctrlPointList = [(p[0], p[1], p[2] if len(p) > 2 else 1.0) for p in pts]
+        d = self._dim
+        self.ctrlPointList = [_Vec.__new__([Vector3, Vector4][d - 2], *(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),)))
+                              for p in pts]
         self.degree = max(1, min(int(degree), len(pts) - 1))
         self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
         self.stride = int(kwargs.get('stride', stride))
@@ -208,26 +251,49 @@ class NurbsCurve2D:
         return self.knotList[len(self.ctrlPointList)]
 
     def getPointAt(self, u):
-        k, p, pts = self.knotList, self.degree, self.ctrlPointList
+        k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
         n = len(pts) - 1
         u = max(self.firstKnot, min(self.lastKnot, u))
         span = p
         while span < n and u >= k[span + 1]:
             span += 1
-        d = [[pts[j][0] * pts[j][2], pts[j][1] * pts[j][2], pts[j][2]] for j in range(span - p, span + 1)]
+        d = [[pts[j][c] * pts[j][dim] for c in range(dim)] + [pts[j][dim]] for j in range(span - p, span + 1)]
         for r in range(1, p + 1):  # de Boor, on homogeneous points
             for j in range(p, r - 1, -1):
                 i = j + span - p
                 den = k[i + p - r + 1] - k[i]
                 a = (u - k[i]) / den if den else 0.0
-                d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(3)]
-        w = d[p][2] or 1.0
-        return Vector2(d[p][0] / w, d[p][1] / w)
+                d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(dim + 1)]
+        w = d[p][dim] or 1.0
+        return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
+
+    def getTangentAt(self, u):
+        a, b = self.firstKnot, self.lastKnot
+        h = (b - a) * 1e-4
+        p0, p1 = self.getPointAt(max(a, u - h)), self.getPointAt(min(b, u + h))
+        return (p1 - p0).normed()
+
+    def getNormalAt(self, u):
+        t = self.getTangentAt(u)
+        return Vector2(-t[1], t[0]) if self._dim == 2 else t
+
+    def getLength(self, begin=None, end=None):
+        pts = self.points(200)
+        return sum(abs(pts[i + 1] - pts[i]) for i in range(len(pts) - 1))
+
+    def deepcopy(self):
+        import copy
+        return copy.deepcopy(self)
 
     def points(self, samples=None):
         n = samples or max(2, self.stride)
         a, b = self.firstKnot, self.lastKnot
         return [self.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n)]
+
+
+class NurbsCurve(NurbsCurve2D):
+    """A 3D NURBS curve; control points are (x, y, z, weight)."""
+    _dim = 3
 
 
 class BezierCurve2D(NurbsCurve2D):
@@ -303,10 +369,43 @@ class QuantisedFunction:
 
 
 class NurbsPatch:
+    """A NURBS surface; control points (x, y, z, w) in rows along u."""
+
     def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
-        self.ctrlPointMatrix = ctrlPointMatrix
-        self.udegree, self.vdegree = udegree, vdegree
+        if isinstance(udegree, (list, tuple)):  # the form (ctrl, uknots, vknots, udegree, vdegree)
+            self.uknotList, self.vknotList = list(udegree), list(vdegree)
+            udegree, vdegree = (list(args) + [3, 3])[:2]
+        else:
+            self.uknotList = kwargs.get('uknotList')
+            self.vknotList = kwargs.get('vknotList')
+        self.ctrlPointMatrix = [[tuple(p) for p in row] for row in ctrlPointMatrix]
+        self.udegree, self.vdegree = int(udegree), int(vdegree)
+        self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
         self.name = ''
+
+    def getPointAt(self, u, v):
+        rows = [NurbsCurve([p for p in row], self.vdegree, self.vknotList) for row in self.ctrlPointMatrix]
+        column = []
+        for c in rows:
+            q = c.getPointAt(c.firstKnot + (c.lastKnot - c.firstKnot) * v)
+            column.append((q[0], q[1], q[2], 1.0))
+        cu = NurbsCurve(column, self.udegree, self.uknotList)
+        return cu.getPointAt(cu.firstKnot + (cu.lastKnot - cu.firstKnot) * u)
+
+
+class _Geometry:
+    """PlantGL scene objects a model may build for @g: kept, not drawn by Sprout (a warning)."""
+
+    def __init__(self, *args, **kwargs):
+        self.args, self.kwargs = args, kwargs
+        self.name = ''
+
+
+for _name in ['Sphere', 'Box', 'Cylinder', 'Cone', 'Frustum', 'Disc', 'Paraboloid', 'Scaled', 'Translated',
+              'AxisRotated', 'EulerRotated', 'Oriented', 'Shape', 'Scene', 'QuadSet', 'TriangleSet', 'Polyline',
+              'BezierPatch', 'Extrusion', 'Revolution', 'Swung', 'Group', 'Text', 'Font', 'Point3Grid',
+              'ImageTexture', 'Texture2D', 'Texture2DTransformation']:
+    globals()[_name] = type(_name, (_Geometry,), {})
 
 
 class _Viewer:

@@ -1,0 +1,189 @@
+// L-Py models run by the embedded Python (lpy/). tests/lpy/models: small models written for
+// Sprout from L-Py's documentation, each carrying what it must derive in comment lines:
+//   # expect N: STRING     the string after N steps, as `sprout expand -n N` prints it
+// and the collection of L-Py's own examples (../shared/corpus/lpy, when it is there).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "core/derive/draw.hpp"
+#include "core/language/file_kind.hpp"
+#include "lpy/host.hpp"
+#include "lpy/translate.hpp"
+
+namespace sprout {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string messages(const lpy::Model& m) {
+    std::string out;
+    for (const auto& d : m.diagnostics) out += formatDiagnostic(d, "model") + "\n";
+    return out;
+}
+
+TEST(LpyTranslate, LinesKeepTheirNumbers) {
+    const std::string text = "def f(x):\n    return x\nAxiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n  produce B(f(x))\nendlsystem\n";
+    lpy::Translation t = lpy::translate(text);
+    ASSERT_TRUE(t.ok());
+    EXPECT_EQ(std::count(t.mainCode.begin(), t.mainCode.end(), '\n'), std::count(text.begin(), text.end(), '\n') + 1);
+    ASSERT_EQ(t.rules.size(), 1u);
+    EXPECT_EQ(t.rules[0].line, 6);
+    EXPECT_EQ(t.rules[0].params, std::vector<std::string>{"x"});
+    EXPECT_EQ(lpy::looksLikeLpy(text), true);
+    EXPECT_EQ(detectFileKind("", text), FileKind::Lpy);
+    EXPECT_EQ(detectFileKind("x.lpy", "Axiom: F\n"), FileKind::Lpy);
+}
+
+TEST(LpyTranslate, LongestKnownNameFirst) {
+    lpy::ModuleClasses classes;
+    std::vector<Diagnostic> diags;
+    auto mods = lpy::readLstring("Leaf @GcI(0.5) ~l(2) $m F (1)", classes, 1, 1, diags);
+    std::vector<std::string> names;
+    for (const auto& m : mods) names.push_back(m.variable.empty() ? classes.name(m.cls) : "$" + m.variable);
+    // An undeclared name splits into letters (L-Py's on-the-fly declaration).
+    EXPECT_EQ(names, (std::vector<std::string>{"L", "e", "a", "f", "@Gc", "I", "~", "$m", "F"}));
+    EXPECT_EQ(mods[5].args, std::vector<std::string>{"0.5"});
+    EXPECT_EQ(mods[6].args, (std::vector<std::string>{"'l'", "2"}));
+    EXPECT_TRUE(diags.empty());
+}
+
+TEST(Lpy, EveryModelDerivesWhatItSays) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(SPROUT_LPY_MODELS))
+        if (e.path().extension() == ".lpy") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    ASSERT_GE(files.size(), 10u);
+    const std::regex expectLine(R"(^# expect (\d+): (.*)$)");
+    int checked = 0;
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.filename().string());
+        const std::string text = slurp(path);
+        EXPECT_EQ(detectFileKind(path.string(), text), FileKind::Lpy);
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);) {
+            std::smatch m;
+            if (!std::regex_match(line, m, expectLine)) continue;
+            lpy::RunOptions o;
+            o.path = path.string();
+            o.steps = std::stoi(m[1]);
+            lpy::Model model = lpy::runModel(text, o);
+            ASSERT_TRUE(model.ok()) << messages(model);
+            EXPECT_EQ(model.derived, m[2].str()) << "after " << m[1] << " steps";
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, int(files.size()));
+}
+
+TEST(Lpy, PythonErrorsSayWhereInTheFile) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::string text = "def grow(x):\n    return x / 0\n\nAxiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n    y = grow(x)\n    produce A(y)\nendlsystem\n";
+    lpy::RunOptions o;
+    o.path = "bad.lpy";
+    lpy::Model m = lpy::runModel(text, o);
+    ASSERT_FALSE(m.ok());
+    ASSERT_FALSE(m.diagnostics.empty());
+    const Diagnostic& d = m.diagnostics.back();
+    EXPECT_EQ(d.line, 2);  // the frame that raised, in the model's own function
+    EXPECT_NE(d.message.find("ZeroDivisionError"), std::string::npos) << d.message;
+    // A syntax error in the Python of a rule: its line.
+    lpy::Model s = lpy::runModel("Axiom: A\nderivation length: 1\nproduction:\nA :\n    if True\n        produce B\nendlsystem\n", o);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.diagnostics.back().line, 5) << messages(s);
+    EXPECT_NE(s.diagnostics.back().message.find("SyntaxError"), std::string::npos);
+    // An import that is missing.
+    lpy::Model i = lpy::runModel("import no_such_module_here\nAxiom: A\nproduction:\nA --> B\n", o);
+    ASSERT_FALSE(i.ok());
+    EXPECT_EQ(i.diagnostics.back().line, 1);
+    EXPECT_NE(i.diagnostics.back().message.find("no_such_module_here"), std::string::npos);
+}
+
+TEST(Lpy, CancelStopsAnEndlessLoopInARule) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::string text = "Axiom: A\nderivation length: 1\nproduction:\nA :\n    while True:\n        pass\nendlsystem\n";
+    std::atomic<bool> cancel{false};
+    lpy::RunOptions o;
+    o.cancel = &cancel;
+    std::chrono::steady_clock::time_point cancelledAt;
+    std::thread stopper([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        cancelledAt = std::chrono::steady_clock::now();
+        cancel = true;
+    });
+    lpy::Model m = lpy::runModel(text, o);
+    const auto stopped = std::chrono::steady_clock::now();
+    stopper.join();
+    EXPECT_TRUE(m.cancelled) << messages(m);
+    EXPECT_FALSE(m.ok());
+    const double ms = std::chrono::duration<double, std::milli>(stopped - cancelledAt).count();
+    std::printf("cancel: Python stopped %.1f ms after Cancel\n", ms);
+    EXPECT_LT(ms, 2000) << "Cancel must stop a rule's endless loop (the bar is 100 ms on an idle machine)";
+    // The interpreter is usable again after a cancel.
+    lpy::Model again = lpy::runModel("Axiom: A\nderivation length: 1\nproduction:\nA --> B\n", {});
+    EXPECT_EQ(again.derived, "B") << messages(again);
+}
+
+TEST(Lpy, TheModelIsDrawnInLpysFrame) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    // L-Py's turtle heads up (+Z, Sprout's +Y), turns 60 degrees by default, and `_(w)` sets a radius.
+    lpy::Model m = lpy::runModel("Axiom: _(0.5) F(2) + F(1)\nderivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    Geometry geo;
+    TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+    ASSERT_EQ(geo.cylinders.size(), 2u);
+    EXPECT_NEAR(geo.cylinders[0].end.y, 2.0f, 1e-5f);
+    EXPECT_NEAR(geo.cylinders[0].startRadius, 0.5f, 1e-5f);
+    EXPECT_NEAR(std::hypot(geo.cylinders[1].end.x, geo.cylinders[1].end.z), std::sin(60 * 3.14159265 / 180), 1e-4);
+    EXPECT_NEAR(geo.cylinders[1].end.y, 2 + 0.5, 1e-4);
+}
+
+// L-Py's own examples: each opens and draws, or names what it needs at its line.
+TEST(Lpy, CorpusOpensAndDraws) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = fs::path(SPROUT_SHARED_DIR) / "corpus" / "lpy";
+    if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " is not here";
+    int total = 0, drawn = 0;
+    std::string failures;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) {
+        if (e.path().extension() != ".lpy") continue;
+        ++total;
+        lpy::RunOptions o;
+        o.path = e.path().string();
+        lpy::Model m = lpy::runModel(slurp(e.path()), o);
+        bool ok = m.ok();
+        if (ok) {
+            Geometry geo;
+            TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+            ok = !geo.cylinders.empty() || !geo.surfaces.empty() || !geo.polygons.indices.empty();
+            if (!ok) failures += e.path().filename().string() + ": draws nothing\n";
+        } else {
+            const Diagnostic* err = nullptr;
+            for (const auto& d : m.diagnostics)
+                if (d.severity == Severity::Error) err = &d;
+            ASSERT_NE(err, nullptr) << e.path() << " failed without an error";
+            failures += formatDiagnostic(*err, e.path().filename().string()) + "\n";
+        }
+        drawn += ok;
+    }
+    std::printf("L-Py corpus: %d of %d models open and draw\n%s", drawn, total, failures.c_str());
+    EXPECT_EQ(total, 127);
+    EXPECT_GE(drawn, SPROUT_LPY_CORPUS_BAR) << failures;
+}
+
+}  // namespace
+}  // namespace sprout
