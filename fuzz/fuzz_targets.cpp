@@ -17,6 +17,7 @@
 #include "core/language/import/import.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/turtle.hpp"
+#include "lpy/translate.hpp"
 
 namespace {
 
@@ -120,6 +121,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);
+#elif defined(SPROUT_FUZZ_LPY)
+    // An L-Py model's translation (no Python runs): every line keeps its number.
+    const std::string& text = input;
+    lpy::Translation t = lpy::translate(text);
+    size_t lines = 1, mainLines = 0, tag = text.find("###### INITIALISATION ######");
+    for (size_t k = 0; k < std::min(tag, text.size()); ++k) lines += text[k] == '\n';
+    for (char c : t.mainCode) mainLines += c == '\n';
+    if (tag == std::string::npos && mainLines != lines) __builtin_trap();
+    (void)detectFileKind("model.lpy", text);
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
 #endif

@@ -24,7 +24,7 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         {"+", {Op::Turn, "+"}}, {"-", {Op::Turn, "-"}}, {"^", {Op::Turn, "^"}}, {"&", {Op::Turn, "&"}},
         {"/", {Op::Turn, "/"}}, {"\\", {Op::Turn, "\\"}}, {"iRollL", {Op::Turn, "/"}}, {"iRollR", {Op::Turn, "\\"}},
         {"|", {Op::Around, "|"}}, {"@v", {Op::Vertical, "$"}}, {"@R", {Op::SetHead, "@R"}},
-        {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "F"}}, {"OLineTo", {Op::LineTo, "F"}},
+        {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "LineTo"}}, {"OLineTo", {Op::LineTo, "OLineTo"}},
         {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
         {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
         {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
@@ -186,10 +186,9 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
                 if (p.size() >= 3) w.put("@M", {p[1], p[2], p[0]});
                 else if (p.empty()) w.put("@M", {0, 0, 0});
                 break;
-            case Op::LineTo:
-                // Drawn as a turn towards the point and a step of its distance would need the
-                // turtle's position: left out for now (named below).
-                leftOut.insert(name);
+            case Op::LineTo:  // L-Py's x y z are Sprout's z x y
+                if (p.size() >= 3) w.put(mp.sprout, {p[1], p[2], p[0]});
+                if (p.size() >= 4) setWidth(p[3]);
                 break;
             case Op::IncWidth:
             case Op::DecWidth:

@@ -1,6 +1,7 @@
 #include "lpy/engine.hpp"
 
 #include <algorithm>
+#include <functional>
 
 #include "core/language/module_string.hpp"
 
@@ -250,9 +251,48 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
     return true;
 }
 
-bool Engine::matchRight(const std::vector<PatternModule>& ps, const LString& s, size_t j, int filter, std::vector<py::object>& bound) {
-    const bool indexed = m_matchOf == &s && m_match.size() == s.size();
+long Engine::partnerIn(const View& s, size_t j) {
+    if (!s.reversed && m_matchOf == s.s && m_match.size() == s.size()) return m_match[j];
+    int depth = 0;
+    for (size_t k = j; k < s.size(); ++k) {
+        const int c = s[k].cls;
+        if (c == ModuleClasses::kPush) ++depth;
+        else if (c == ModuleClasses::kPop && --depth == 0) return long(k);
+    }
+    return -1;
+}
+
+size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound) {
+    constexpr size_t npos = size_t(-1);
     for (const PatternModule& p : ps) {
+        if (p.isRepeat()) {
+            // Greedy: as many repetitions as match, each variable a list of its values.
+            std::vector<py::list> lists;
+            int count = 0;
+            for (; count < p.repeatMax; ++count) {
+                std::vector<py::object> one;
+                const size_t end = matchRight(p.repeat, s, j, filter, one);
+                if (end == npos || end == j) break;
+                if (lists.empty()) lists.resize(one.size());
+                for (size_t k = 0; k < one.size() && k < lists.size(); ++k) lists[k].append(one[k]);
+                j = end;
+            }
+            if (count < p.repeatMin) return npos;
+            if (lists.empty()) {  // no repetition: each variable an empty list
+                std::vector<py::object> probe;
+                size_t vars = 0;
+                std::function<void(const PatternModule&)> countVars = [&](const PatternModule& q) {
+                    for (const auto& inner : q.repeat) countVars(inner);
+                    if (!q.anyName.empty()) ++vars;
+                    for (const auto& a : q.args)
+                        if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) ++vars;
+                };
+                for (const auto& q : p.repeat) countVars(q);
+                lists.resize(vars);
+            }
+            for (auto& l : lists) bound.push_back(std::move(l));
+            continue;
+        }
         if (p.cls == ModuleClasses::kPop && !p.exactPop) {
             // `]` in the pattern: to the end of the branch the match is in.
             int depth = 0;
@@ -260,30 +300,30 @@ bool Engine::matchRight(const std::vector<PatternModule>& ps, const LString& s, 
                 if (s[j].cls == ModuleClasses::kPush) ++depth;
                 else if (s[j].cls == ModuleClasses::kPop && depth-- == 0) break;
             }
-            if (j >= s.size()) return false;
+            if (j >= s.size()) return npos;
             ++j;
             continue;
         }
         for (;;) {
-            if (j >= s.size()) return false;
+            if (j >= s.size()) return npos;
             const int c = s[j].cls;
             if (c == ModuleClasses::kPush && p.cls != ModuleClasses::kPush) {  // a side branch: skipped
-                const long o = indexed ? m_match[j] : partner(s, long(j));
-                if (o < 0) return false;
+                const long o = partnerIn(s, j);
+                if (o < 0) return npos;
                 j = size_t(o) + 1;
                 continue;
             }
-            if (c == ModuleClasses::kPop && p.cls != ModuleClasses::kPop) return false;
+            if (c == ModuleClasses::kPop && p.cls != ModuleClasses::kPop) return npos;
             if (skipped(c, filter)) {
                 ++j;
                 continue;
             }
             break;
         }
-        if (!matchModule(p, s[j], bound)) return false;
+        if (!matchModule(p, s[j], bound)) return npos;
         ++j;
     }
-    return true;
+    return j;
 }
 
 bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
@@ -291,16 +331,17 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     if (!forward && at + 1 < len) return false;
     const size_t start = forward ? at : at + 1 - len;
     if (start + len > s.size()) return false;
-    std::vector<py::object> left, newLeft, pred, right;
+    std::vector<py::object> left, newLeft, pred, newRight, right;
     for (size_t k = 0; k < len; ++k)
         if (!matchModule(r.pred[k], s[start + k], pred)) return false;
     if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left)) return false;
-    if (!r.right.empty() && !matchRight(r.right, s, start + len, r.filter, right)) return false;
+    if (!r.right.empty() && matchRight(r.right, View{&s}, start + len, r.filter, right) == size_t(-1)) return false;
     if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
-    if (!r.newRight.empty()) return false;  // `>>`: backward steps over the new string (not read yet)
-    py::tuple args(left.size() + newLeft.size() + pred.size() + right.size());
+    // `>>`: a backward step reads the new string already made to its right (built from the end).
+    if (!r.newRight.empty() && (forward || matchRight(r.newRight, View{&built, true}, 0, r.filter, newRight) == size_t(-1))) return false;
+    py::tuple args(left.size() + newLeft.size() + pred.size() + newRight.size() + right.size());
     size_t k = 0;
-    for (auto* part : {&left, &newLeft, &pred, &right})
+    for (auto* part : {&left, &newLeft, &pred, &newRight, &right})
         for (auto& o : *part) PyTuple_SET_ITEM(args.ptr(), k++, o.release().ptr());
     m_buffer.clear();
     m_produced = false;

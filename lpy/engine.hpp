@@ -86,7 +86,17 @@ private:
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
     bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound);
-    bool matchRight(const std::vector<PatternModule>& ps, const LString& s, size_t from, int filter, std::vector<py::object>& bound);
+    // A string read left to right, or (the new string of a backward step, built from its
+    // end) right to left.
+    struct View {
+        const LString* s;
+        bool reversed = false;
+        size_t size() const { return s->size(); }
+        const LModule& operator[](size_t j) const { return reversed ? (*s)[s->size() - 1 - j] : (*s)[j]; }
+    };
+    // Matches `ps` from position j; the position after the match, or npos.
+    size_t matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound);
+    long partnerIn(const View& s, size_t j);
     bool skipped(int cls, int filter) const;
     LString decompose(LString piece, int depth, RuleKind kind);
     py::object callHook(const char* name, const LString* s, bool* replaced, LString* out);

@@ -161,7 +161,8 @@ void start() {
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
             py::module_ sys = py::module_::import("sys");
-            for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph"})
+            for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph", "openalea.plantgl.light",
+                                      "openalea.plantgl.light.light"})
                 sys.attr("modules")[alias] = sys.attr("modules")["openalea.plantgl.all"];
             py::module_ openalea = py::module_::import("openalea");
             openalea.attr("lpy") = sys.attr("modules")["openalea.lpy"];
@@ -277,6 +278,16 @@ Model runModel(std::string_view text, const RunOptions& options) {
         out.diagnostics.push_back(describe(e, file));
         return out;
     }
+    // What the model prints goes to standard error: standard output carries Sprout's results
+    // (`sprout expand` writes the string there).
+    py::module_ sys = py::module_::import("sys");
+    py::object savedStdout = sys.attr("stdout");
+    sys.attr("stdout") = sys.attr("stderr");
+    struct Restore {
+        py::module_& sys;
+        py::object& saved;
+        ~Restore() { sys.attr("stdout") = saved; }
+    } restore{sys, savedStdout};
     Engine engine(std::move(tr), ns, options);
     CancelWatch watch(options.cancel);
     auto builtins = py::module_::import("builtins");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <functional>
 #include <initializer_list>
 
 namespace sprout::lpy {
@@ -375,8 +376,32 @@ private:
         std::vector<PatternModule> out;
         for (const auto& w : readLstring(text, m_out.classes, line, col, m_out.diagnostics)) {
             const std::string& n = m_out.classes.name(size_t(w.cls) < m_out.classes.size() && w.cls >= 0 ? w.cls : 0);
-            if (w.cls >= 0 && (n == "x" || n == "or")) {
-                error(line, w.col, "the pattern '" + n + "(...)' (repetition, alternatives) is not read by Sprout yet");
+            if (w.cls >= 0 && n == "or") {
+                error(line, w.col, "the pattern 'or(...)' (alternatives) is not read by Sprout yet");
+                continue;
+            }
+            if (w.cls >= 0 && n == "x") {
+                PatternModule p;
+                p.cls = w.cls;
+                if (w.args.empty()) {
+                    error(line, w.col, "x(...) repeats a pattern: write the pattern inside, e.g. x([I(c)])");
+                    continue;
+                }
+                p.repeat = patterns(w.args[0], line, w.col);
+                auto count = [&](const std::string& a, int& v) {
+                    if (!isNumberLiteral(a) || a.find('.') != std::string::npos || a.size() > 5) {
+                        error(line, w.col, "the counts of x(...) are whole numbers");
+                        return;
+                    }
+                    v = std::stoi(a);
+                };
+                if (w.args.size() >= 2) {
+                    count(w.args[1], p.repeatMin);
+                    p.repeatMax = p.repeatMin;
+                }
+                if (w.args.size() >= 3) count(w.args[2], p.repeatMax);
+                if (p.repeat.empty()) continue;
+                out.push_back(std::move(p));
                 continue;
             }
             if (w.cls >= 0 && n == "=]") {
@@ -452,18 +477,14 @@ private:
             }
             r.params.push_back(n);
         };
+        std::function<void(const PatternModule&)> bind = [&](const PatternModule& pm) {
+            for (const auto& inner : pm.repeat) bind(inner);
+            if (!pm.anyName.empty()) add(pm.anyName);
+            for (auto& a : pm.args)
+                if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
+        };
         for (auto* part2 : {&r.left, &r.newLeft, &r.pred, &r.newRight, &r.right})
-            for (auto& pm : *part2) {
-                if (!pm.anyName.empty()) add(pm.anyName);
-                for (auto& a : pm.args) {
-                    if (a.kind == PatternArg::Kind::Equal) {
-                        r.equalSlots.push_back(int(m_out.equalValues.size()));
-                        m_out.equalValues.push_back(a.expr);
-                    } else if (a.kind != PatternArg::Kind::Skip) {
-                        add(a.name);
-                    }
-                }
-            }
+            for (auto& pm : *part2) bind(pm);
     }
 
     // A rule starts at lines[i] (column 0). Returns the index of its last line.

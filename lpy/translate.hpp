@@ -69,6 +69,11 @@ struct PatternModule {
     std::string anyName;      // `*(name, ...)`: binds the module's name
     std::vector<PatternArg> args;
     bool exactPop = false;    // `=]`: an actual ']' (a ']' skips to the end of the branch)
+    // `x(p, min, max)`: the pattern p repeated greedily (0 to 1000 times; exactly min when
+    // only min is given); its variables are bound as lists.
+    std::vector<PatternModule> repeat;
+    int repeatMin = 0, repeatMax = 1000;
+    bool isRepeat() const { return !repeat.empty(); }
 };
 
 enum class RuleKind : std::uint8_t { Production, Decomposition, Interpretation };
@@ -82,7 +87,6 @@ struct Rule {
     std::string function;             // the Python function the body became
     std::vector<std::string> params;  // its parameters, in binding order
     int filter = -1;                  // index into Translation::filters; -1: none
-    std::vector<int> equalSlots;      // per Equal argument, in binding order: its constant's index
     // A `-->` rule whose successor has only literal arguments (and no Python body): the
     // successor is built once (L-Py's static rules).
     bool staticSuccessor = false;
@@ -100,7 +104,6 @@ struct Translation {
     ModuleClasses classes;
     std::vector<Rule> rules;  // in file order
     std::vector<ContextFilter> filters;
-    std::vector<std::string> equalValues;  // header constants, evaluated by the host
     bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
     bool hasAxiom = false;
     int axiomLine = 0;

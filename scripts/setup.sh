@@ -13,6 +13,7 @@ packages=(
   libglm-dev libglfw3-dev libimgui-dev libgl1-mesa-dev libosmesa6-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   libtinyobjloader-dev libxml2-utils
+  python3-dev pybind11-dev
 )
 # The test suite checks exports with the Khronos glTF validator, from the npm registry.
 if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm); fi

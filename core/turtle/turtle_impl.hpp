@@ -358,6 +358,8 @@ private:
             case Act::MoveTo:
             case Act::SetHeading:
             case Act::Disc: cpfgCommand(t, act, p, arity); break;
+            case Act::LineTo:
+            case Act::OLineTo: lineTo(t, act, p, arity, i); break;
             case Act::CurveStart:
             case Act::CurvePoint:
             case Act::CurveEnd:
@@ -394,6 +396,37 @@ private:
     std::uint32_t colour(int index) const {
         int n = int(m_palette.size());
         return m_palette[size_t(((index % n) + n) % n)];
+    }
+
+    // A stem from the turtle to (x, y, z); OLineTo also turns the heading towards it.
+    void lineTo(State& t, Act act, const double* p, int arity, size_t i) {
+        if (!p || arity < 3) return;
+        const v4 target{float(p[0]), float(p[1]), float(p[2]), 0};
+        const v4 d = target - t.pos;
+        const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (!(len > 0)) return;
+        if (act == Act::OLineTo) {
+            const v4 h = d * (1.0f / len);
+            v4 l = t.L - h * (t.L[0] * h[0] + t.L[1] * h[1] + t.L[2] * h[2]);
+            const float ln = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+            if (ln > 1e-6f) {
+                t.H = h;
+                t.L = l * (1.0f / ln);
+            }
+        }
+        t.lastSegment = std::int32_t(m_seg->count());
+        CylinderInstance& c = m_seg->next();
+        v4 a = t.pos, b = target;
+        a[3] = b[3] = t.width * 0.5f;
+        std::memcpy(&c.start, &a, 16);
+        std::memcpy(&c.end, &b, 16);
+        c.colour = t.stemColour;
+        c.order = t.order;
+        c.step = m_opt.ages ? m_opt.ages[i] : 0;
+        if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(i));
+        t.pos = target;
+        addBound(t.pos);
+        if (!m_polygons.empty()) vertex(t);
     }
 
     [[gnu::always_inline]] inline void segment(State& t, float len, size_t i) {

@@ -21,6 +21,7 @@ enum class Act : std::uint8_t {
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
+    LineTo, OLineTo,
     SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
 };
 
@@ -41,6 +42,9 @@ inline Act actionOf(const std::string& name) {
         // step), move to a point, set the heading, roll L horizontal, a disc.
         {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query}, {"?E", Act::Query},
         {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
+        // L-Py's (PlantGL's turtle): a stem straight to a point, the heading kept (LineTo) or
+        // turned towards it (OLineTo).
+        {"LineTo", Act::LineTo}, {"OLineTo", Act::OLineTo},
         // cpfg's generalized cylinders: start, control point, end, tangent length.
         {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},
     };

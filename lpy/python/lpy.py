@@ -119,6 +119,9 @@ class ParameterSet:
     def hasattr(self, name):
         return name in self.__dict__
 
+    def get(self, name, default=None):
+        return self.__dict__.get(name, default)
+
     def __repr__(self):
         return "ParameterSet(%s)" % ", ".join("%s=%r" % kv for kv in self.__dict__.items())
 

@@ -10,60 +10,100 @@ except ImportError:  # imported on its own
         pass
 
 
-class _Vec(tuple):
+class _Vec:
+    """PlantGL's vectors: mutable (v.z *= -1), indexable, with +, -, * (by a number, or a dot
+    product), / and ^ (cross)."""
     _n = 3
+    __slots__ = ('_v',)
 
-    def __new__(cls, *args):
+    def __init__(self, *args):
         if len(args) == 1 and hasattr(args[0], '__len__'):
             args = tuple(args[0])
-        args = tuple(float(a) for a in args) + (0.0,) * (cls._n - len(args))
-        return tuple.__new__(cls, args[:cls._n])
+        v = [float(a) for a in args[:self._n]]
+        self._v = v + [0.0] * (self._n - len(v))
 
-    x = property(lambda s: s[0])
-    y = property(lambda s: s[1])
-    z = property(lambda s: s[2] if len(s) > 2 else 0.0)
-    w = property(lambda s: s[3] if len(s) > 3 else 0.0)
+    def __len__(self):
+        return self._n
+
+    def __getitem__(self, i):
+        return self._v[i]
+
+    def __setitem__(self, i, value):
+        self._v[i] = float(value)
+
+    def __iter__(self):
+        return iter(self._v)
+
+    def __eq__(self, o):
+        try:
+            return len(o) == self._n and all(a == b for a, b in zip(self._v, o))
+        except TypeError:
+            return False
+
+    def __hash__(self):
+        return hash(tuple(self._v))
+
+    def _get(i):
+        return property(lambda s: s._v[i] if i < s._n else 0.0, lambda s, value: s.__setitem__(i, value))
+
+    x, y, z, w = _get(0), _get(1), _get(2), _get(3)
 
     def __add__(self, o):
-        return type(self)(*[a + b for a, b in zip(self, o)])
+        return type(self)(*[a + b for a, b in zip(self._v, o)])
+
+    __radd__ = __add__
 
     def __sub__(self, o):
-        return type(self)(*[a - b for a, b in zip(self, o)])
+        return type(self)(*[a - b for a, b in zip(self._v, o)])
+
+    def __rsub__(self, o):
+        return type(self)(*[b - a for a, b in zip(self._v, o)])
 
     def __neg__(self):
-        return type(self)(*[-a for a in self])
+        return type(self)(*[-a for a in self._v])
 
     def __mul__(self, k):
         if isinstance(k, (int, float)):
-            return type(self)(*[a * k for a in self])
-        return sum(a * b for a, b in zip(self, k))  # dot product, as PlantGL's Vector * Vector
+            return type(self)(*[a * k for a in self._v])
+        return sum(a * b for a, b in zip(self._v, k))  # dot product, as PlantGL's Vector * Vector
 
     __rmul__ = __mul__
 
     def __truediv__(self, k):
-        return type(self)(*[a / k for a in self])
+        return type(self)(*[a / k for a in self._v])
 
     def __xor__(self, o):  # cross product
         return cross(self, o)
 
     def __abs__(self):
-        return _math.sqrt(sum(a * a for a in self))
+        return _math.sqrt(sum(a * a for a in self._v))
 
     def norm(self):
         return abs(self)
 
     def normSquared(self):
-        return sum(a * a for a in self)
+        return sum(a * a for a in self._v)
 
     def normed(self):
         n = abs(self)
-        return self / n if n > 0 else self
+        return self / n if n > 0 else type(self)(*self._v)
+
+    def anOrthogonalVector(self):
+        x, y, z = (list(self._v) + [0.0, 0.0])[:3]
+        v = Vector3(-y, x, 0) if abs(x) > 1e-9 or abs(y) > 1e-9 else Vector3(0, -z, y)
+        return v.normed()
 
     def normalize(self):
-        return abs(self)  # PlantGL normalises in place and returns the old norm; tuples cannot
+        n = abs(self)
+        if n > 0:
+            self._v = [a / n for a in self._v]
+        return n
 
     def __repr__(self):
-        return "%s(%s)" % (type(self).__name__, ", ".join("%g" % a for a in self))
+        return "%s(%s)" % (type(self).__name__, ", ".join("%g" % a for a in self._v))
+
+    def __reduce__(self):
+        return (type(self), tuple(self._v))
 
 
 class Vector2(_Vec):
@@ -81,7 +121,7 @@ class Vector3(_Vec):
         def __init__(self, radius, theta, phi):
             self.radius, self.theta, self.phi = radius, theta, phi
 
-    def __new__(cls, *args):
+    def __init__(self, *args):
         if len(args) == 1 and isinstance(args[0], Vector3.Cylindrical):
             c = args[0]
             args = (c.radius * _math.cos(c.theta), c.radius * _math.sin(c.theta), c.z)
@@ -89,7 +129,7 @@ class Vector3(_Vec):
             s = args[0]
             args = (s.radius * _math.cos(s.theta) * _math.sin(s.phi), s.radius * _math.sin(s.theta) * _math.sin(s.phi),
                     s.radius * _math.cos(s.phi))
-        return _Vec.__new__(cls, *args)
+        _Vec.__init__(self, *args)
 
 
 class Vector4(_Vec):
@@ -137,6 +177,8 @@ class Matrix3:
 
 
 def cross(a, b):
+    if len(a) == 2 and len(b) == 2:  # PlantGL: the z of the 3D cross product
+        return a[0] * b[1] - a[1] * b[0]
     return Vector3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
@@ -148,9 +190,18 @@ def norm(v):
     return _math.sqrt(sum(a * a for a in v))
 
 
-def angle(a, b):
+def angle(a, b, axis=None):
+    """The angle from a to b; signed about `axis` when one is given (PlantGL)."""
     c = dot(a, b) / (norm(a) * norm(b) or 1.0)
-    return _math.acos(max(-1.0, min(1.0, c)))
+    result = _math.acos(max(-1.0, min(1.0, c)))
+    if axis is not None and dot(cross(a, b), axis) < 0:
+        result = -result
+    return result
+
+
+def direction(v):
+    n = norm(v)
+    return type(v)(*[a / n for a in v]) if n > 0 else v
 
 
 class Color3(tuple):
@@ -234,8 +285,7 @@ class NurbsCurve2D:
             knotList, degree = degree, knotList if isinstance(knotList, int) else 3
         pts = [tuple(p) for p in ctrlPointList]
         d = self._dim
-        self.ctrlPointList = [_Vec.__new__([Vector3, Vector4][d - 2], *(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),)))
-                              for p in pts]
+        self.ctrlPointList = [[Vector3, Vector4][d - 2](*(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),))) for p in pts]
         self.degree = max(1, min(int(degree), len(pts) - 1))
         self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
         self.stride = int(kwargs.get('stride', stride))
@@ -280,6 +330,27 @@ class NurbsCurve2D:
     def getLength(self, begin=None, end=None):
         pts = self.points(200)
         return sum(abs(pts[i + 1] - pts[i]) for i in range(len(pts) - 1))
+
+    def getArcLengthToUMapping(self):
+        """A function from the fraction of the curve's length to the parameter u."""
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / 199 for i in range(200)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for i in range(199):
+            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
+        total = lengths[-1] or 1.0
+        return QuantisedFunction(Polyline2D([(l / total, u) for l, u in zip(lengths, us)]), 200)
+
+    def getUToArcLengthMapping(self):
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / 199 for i in range(200)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for i in range(199):
+            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
+        total = lengths[-1] or 1.0
+        return QuantisedFunction(Polyline2D([(u, l / total) for l, u in zip(lengths, us)]), 200)
 
     def deepcopy(self):
         import copy
@@ -335,7 +406,7 @@ class QuantisedFunction:
             curve = Polyline2D(curve)
         n = max(2, int(sampling))
         a, b = curve.firstKnot, curve.lastKnot
-        pts = sorted(curve.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n))
+        pts = sorted((tuple(curve.getPointAt(a + (b - a) * i / (n - 1))) for i in range(n)))
         self._x = [p[0] for p in pts]
         self._y = [p[1] for p in pts]
         self.clamped = clamped
@@ -392,20 +463,145 @@ class NurbsPatch:
         cu = NurbsCurve(column, self.udegree, self.uknotList)
         return cu.getPointAt(cu.firstKnot + (cu.lastKnot - cu.firstKnot) * u)
 
+    def getUTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(min(1.0, u + h), v) - self.getPointAt(max(0.0, u - h), v)).normed()
+
+    def getVTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(u, min(1.0, v + h)) - self.getPointAt(u, max(0.0, v - h))).normed()
+
+    def getNormalAt(self, u, v):
+        return cross(self.getUTangentAt(u, v), self.getVTangentAt(u, v)).normed()
+
+    def getIsoUSectionAt(self, u):
+        return NurbsCurve([tuple(self.getPointAt(u, i / 20.0)) + (1.0,) for i in range(21)], 1)
+
+    def getIsoVSectionAt(self, v):
+        return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
+
 
 class _Geometry:
-    """PlantGL scene objects a model may build for @g: kept, not drawn by Sprout (a warning)."""
+    """PlantGL scene objects a model may build for @g: kept (with PlantGL's field names), not
+    drawn by Sprout (a warning names the module that carries them)."""
+    _fields = ()
 
     def __init__(self, *args, **kwargs):
         self.args, self.kwargs = args, kwargs
         self.name = ''
+        for field, value in zip(self._fields, args):
+            setattr(self, field, value)
+        for field, value in kwargs.items():
+            setattr(self, field, value)
 
 
-for _name in ['Sphere', 'Box', 'Cylinder', 'Cone', 'Frustum', 'Disc', 'Paraboloid', 'Scaled', 'Translated',
-              'AxisRotated', 'EulerRotated', 'Oriented', 'Shape', 'Scene', 'QuadSet', 'TriangleSet', 'Polyline',
-              'BezierPatch', 'Extrusion', 'Revolution', 'Swung', 'Group', 'Text', 'Font', 'Point3Grid',
-              'ImageTexture', 'Texture2D', 'Texture2DTransformation']:
-    globals()[_name] = type(_name, (_Geometry,), {})
+_geometry_fields = {
+    'Sphere': ('radius', 'slices', 'stacks'), 'Box': ('size',), 'Cylinder': ('radius', 'height', 'solid', 'slices'),
+    'Cone': ('radius', 'height', 'solid', 'slices'), 'Frustum': ('radius', 'height', 'taper', 'solid', 'slices'),
+    'Disc': ('radius', 'slices'), 'Paraboloid': ('radius', 'height', 'shape', 'solid', 'slices', 'stacks'),
+    'Scaled': ('scale', 'geometry'), 'Translated': ('translation', 'geometry'),
+    'AxisRotated': ('axis', 'angle', 'geometry'), 'EulerRotated': ('azimuth', 'elevation', 'roll', 'geometry'),
+    'Oriented': ('primary', 'secondary', 'geometry'), 'Shape': ('geometry', 'appearance', 'id'), 'Scene': (),
+    'QuadSet': ('pointList', 'indexList'), 'TriangleSet': ('pointList', 'indexList'), 'Polyline': ('pointList',),
+    'BezierPatch': ('ctrlPointMatrix',), 'Extrusion': ('axis', 'crossSection', 'scale'), 'Revolution': ('profile',),
+    'Swung': ('profileList', 'angleList'), 'Group': ('geometryList',), 'Text': ('string', 'position'), 'Font': (),
+    'ImageTexture': ('name', 'filename'), 'Texture2D': ('image', 'transformation'), 'Texture2DTransformation': (),
+    'Discretizer': (), 'PointSet': ('pointList', 'colorList'),
+}
+for _name, _f in _geometry_fields.items():
+    globals()[_name] = type(_name, (_Geometry,), {'_fields': _f})
+
+
+class Point3Grid:
+    """Points with the queries of PlantGL's Point3Grid (space colonisation): indices of the
+    enabled points in a ball or a cone, found through a grid of cells; points can be disabled."""
+
+    def __init__(self, a, b=None, *args):
+        if b is not None and not isinstance(b, (int, float)):  # (voxel size, points)
+            pts, size = b, a
+        else:  # (points, points per voxel)
+            pts, size = a, None
+        self.points = [tuple(float(c) for c in tuple(p)[:3]) for p in pts]
+        self.enabled = [True] * len(self.points)
+        if size is None:
+            lo = [min(p[k] for p in self.points) for k in range(3)] if self.points else [0, 0, 0]
+            hi = [max(p[k] for p in self.points) for k in range(3)] if self.points else [1, 1, 1]
+            per = max(1, int(b or 10))
+            cells = max(1.0, len(self.points) / per)
+            extent = max(hi[k] - lo[k] for k in range(3)) or 1.0
+            self._size = max(extent / max(1.0, cells ** (1 / 3.0)), 1e-9)
+        else:
+            self._size = max(float(tuple(size)[0]) if hasattr(size, '__len__') else float(size), 1e-9)
+        self._cells = {}
+        for i, p in enumerate(self.points):
+            self._cells.setdefault(self._cell(p), []).append(i)
+
+    def _cell(self, p):
+        s = self._size
+        return (int(_math.floor(p[0] / s)), int(_math.floor(p[1] / s)), int(_math.floor(p[2] / s)))
+
+    def _near(self, centre, radius):
+        c = tuple(float(v) for v in tuple(centre)[:3])
+        r2 = radius * radius
+        lo, hi = self._cell([v - radius for v in c]), self._cell([v + radius for v in c])
+        out = []
+        pts, enabled = self.points, self.enabled
+        for x in range(lo[0], hi[0] + 1):
+            for y in range(lo[1], hi[1] + 1):
+                for z in range(lo[2], hi[2] + 1):
+                    for i in self._cells.get((x, y, z), ()):
+                        p = pts[i]
+                        if enabled[i] and (p[0] - c[0]) ** 2 + (p[1] - c[1]) ** 2 + (p[2] - c[2]) ** 2 <= r2:
+                            out.append(i)
+        out.sort()
+        return out
+
+    def query_ball_point(self, centre, radius):
+        return self._near(centre, radius)
+
+    def query_points_in_cone(self, centre, direction, radius, angle):
+        c, d = Vector3(centre), Vector3(direction).normed()
+        cos_a = _math.cos(angle)
+        out = []
+        for i in self._near(centre, radius):
+            v = Vector3(self.points[i]) - c
+            n = abs(v)
+            if n == 0 or dot(v, d) / n >= cos_a:
+                out.append(i)
+        return out
+
+    def disable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = False
+
+    def disable_point(self, i):
+        self.enabled[i] = False
+
+    def enable_points(self, indices):
+        for i in indices:
+            self.enabled[i] = True
+
+    def is_point_enabled(self, i):
+        return self.enabled[i]
+
+    def get_enabled_points(self):
+        return [i for i, e in enumerate(self.enabled) if e]
+
+    def nbPoints(self):
+        return len(self.points)
+
+
+def pointset_mean_direction(origin, points, indices=None):
+    """The unit mean of the directions from origin to the points (those of `indices`)."""
+    o = Vector3(origin)
+    chosen = [points[i] for i in indices] if indices is not None else list(points)
+    total = Vector3(0, 0, 0)
+    for p in chosen:
+        total = total + (Vector3(p) - o).normed()
+    return total.normed()
+
+
+eStatic, eAnimatedPrimitives, eAnimatedScene = 0, 1, 2
 
 
 class _Viewer:
@@ -422,3 +618,9 @@ class _Viewer:
 
 
 Viewer = _Viewer()
+
+
+def diffuseInterception(scene, *args, **kwargs):
+    """PlantGL's light model is not in Sprout: no shape receives light (a warning)."""
+    _warn("diffuseInterception (openalea.plantgl.light) is not provided by Sprout: every shape gets no light")
+    return {}
