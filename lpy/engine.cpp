@@ -46,28 +46,35 @@ void Engine::bind() {
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
+        // Header constants and predicates, evaluated once (in repetitions too).
+        std::function<void(const PatternModule&)> compile = [&](const PatternModule& p) {
+            for (const auto& inner : p.repeat) compile(inner);
+            for (const auto& a : p.args) {
+                if (a.kind == PatternArg::Kind::Equal)
+                    m_constants[&a] = py::reinterpret_steal<py::object>(
+                        PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+                else if (a.kind == PatternArg::Kind::Predicate)
+                    m_predicates[&a] = py::reinterpret_steal<py::object>(
+                        PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+                if (PyErr_Occurred()) throw py::error_already_set();
+            }
+        };
         for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
-            for (const auto& p : *part)
-                for (const auto& a : p.args) {
-                    if (a.kind == PatternArg::Kind::Equal)
-                        m_constants[&a] = py::reinterpret_steal<py::object>(
-                            PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-                    else if (a.kind == PatternArg::Kind::Predicate)
-                        m_predicates[&a] = py::reinterpret_steal<py::object>(
-                            PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-                    if (PyErr_Occurred()) throw py::error_already_set();
-                }
+            for (const auto& p : *part) compile(p);
     }
-    auto depth = [&](const char* name, int fallback) {
-        if (!m_ns.contains(name)) return fallback;
-        return std::clamp(py::cast<int>(m_ns[name]), 0, 100000);
+    // Depths and the derivation length are whole numbers in range (a float is rounded, as
+    // L-Py does; NaN or a huge value is an error, never a cast out of range).
+    auto whole = [&](const char* name, double lo, double hi) {
+        const double v = py::cast<double>(m_ns[name]);
+        if (!(v >= lo && v <= hi))
+            throw py::value_error(std::string(name) + " is " + std::to_string(v) + ": Sprout reads " + std::to_string(long(lo)) + " to " +
+                                  std::to_string(long(hi)));
+        return int(std::lround(v));
     };
+    auto depth = [&](const char* name, int fallback) { return m_ns.contains(name) ? whole(name, 0, 100000) : fallback; };
     m_depth[kindIndex(RuleKind::Decomposition)] = depth("__decomposition_max_depth__", 1);
     m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
-    if (m_ns.contains("__derivation_length__")) {
-        py::object n = m_ns["__derivation_length__"];
-        derivationLength = int(std::clamp(std::lround(py::cast<double>(n)), -1L, 1000000L));
-    }
+    if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
 }
 
 LString Engine::parse(std::string_view text) {

@@ -214,8 +214,12 @@ public:
     ~CancelWatch() {
         m_done = true;
         if (m_watch.joinable()) {
-            py::gil_scoped_release release;  // the watcher may be waiting for the GIL
-            m_watch.join();
+            {
+                py::gil_scoped_release release;  // the watcher may be waiting for the GIL
+                m_watch.join();
+            }
+            // An interrupt that arrived as the run ended must not hit the next run.
+            PyThreadState_SetAsyncExc(m_thread, nullptr);
         }
     }
 
@@ -332,6 +336,8 @@ Model runModel(std::string_view text, const RunOptions& options) {
     } catch (Cancelled&) {
         out.cancelled = true;
         out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+    } catch (std::exception& e) {  // a value Python gave that C++ cannot take (pybind11's cast errors)
+        out.diagnostics.push_back({0, 0, e.what(), Severity::Error});
     }
     return out;
 }
