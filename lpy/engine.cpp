@@ -401,6 +401,19 @@ void Engine::checkCancel() {
     if (m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) throw Cancelled{};
 }
 
+namespace {
+// `%` at i: the rest of its branch goes, its ']' stays (the index of that ']', or the end).
+size_t afterCut(const LString& in, size_t i) {
+    int depth = 0;
+    size_t j = i + 1;
+    for (; j < in.size(); ++j) {
+        if (in[j].cls == ModuleClasses::kPush) ++depth;
+        else if (in[j].cls == ModuleClasses::kPop && depth-- == 0) break;
+    }
+    return j;
+}
+}  // namespace
+
 void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
     out.clear();
     out.reserve(in.size());
@@ -408,14 +421,8 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
     if (forward) {
         for (size_t i = 0; i < in.size();) {
             if ((i & 1023) == 0) checkCancel();
-            if (in[i].cls == ModuleClasses::kCut) {  // the rest of the branch goes; its ']' stays
-                int depth = 0;
-                size_t j = i + 1;
-                for (; j < in.size(); ++j) {
-                    if (in[j].cls == ModuleClasses::kPush) ++depth;
-                    else if (in[j].cls == ModuleClasses::kPop && depth-- == 0) break;
-                }
-                i = j;
+            if (in[i].cls == ModuleClasses::kCut) {
+                i = afterCut(in, i);
                 continue;
             }
             size_t consumed = 1;
@@ -449,13 +456,7 @@ LString Engine::decompose(LString in, int depth, RuleKind kind) {
     for (size_t i = 0; i < in.size();) {
         if ((i & 1023) == 0) checkCancel();
         if (in[i].cls == ModuleClasses::kCut) {
-            int d = 0;
-            size_t j = i + 1;
-            for (; j < in.size(); ++j) {
-                if (in[j].cls == ModuleClasses::kPush) ++d;
-                else if (in[j].cls == ModuleClasses::kPop && d-- == 0) break;
-            }
-            i = j;
+            i = afterCut(in, i);
             continue;
         }
         LString piece;

@@ -331,26 +331,25 @@ class NurbsCurve2D:
         pts = self.points(200)
         return sum(abs(pts[i + 1] - pts[i]) for i in range(len(pts) - 1))
 
+    def _arc_lengths(self):
+        """200 parameters u along the curve and the fraction of its length at each."""
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / 199 for i in range(200)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for i in range(199):
+            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
+        total = lengths[-1] or 1.0
+        return us, [l / total for l in lengths]
+
     def getArcLengthToUMapping(self):
         """A function from the fraction of the curve's length to the parameter u."""
-        a, b = self.firstKnot, self.lastKnot
-        us = [a + (b - a) * i / 199 for i in range(200)]
-        pts = [self.getPointAt(u) for u in us]
-        lengths = [0.0]
-        for i in range(199):
-            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
-        total = lengths[-1] or 1.0
-        return QuantisedFunction(Polyline2D([(l / total, u) for l, u in zip(lengths, us)]), 200)
+        us, fractions = self._arc_lengths()
+        return QuantisedFunction(Polyline2D(list(zip(fractions, us))), 200)
 
     def getUToArcLengthMapping(self):
-        a, b = self.firstKnot, self.lastKnot
-        us = [a + (b - a) * i / 199 for i in range(200)]
-        pts = [self.getPointAt(u) for u in us]
-        lengths = [0.0]
-        for i in range(199):
-            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
-        total = lengths[-1] or 1.0
-        return QuantisedFunction(Polyline2D([(u, l / total) for l, u in zip(lengths, us)]), 200)
+        us, fractions = self._arc_lengths()
+        return QuantisedFunction(Polyline2D(list(zip(us, fractions))), 200)
 
     def deepcopy(self):
         import copy
