@@ -265,9 +265,10 @@ Model runModel(std::string_view text, const RunOptions& options) {
     ns["__builtins__"] = py::module_::import("builtins");
     ns["__name__"] = "__lpy__";
     ns["__file__"] = file;
-    py::module_ lpyModule = py::module_::import("openalea.lpy");
-    py::module_ native = py::module_::import("_sprout_lpy");
+    py::module_ lpyModule, native;
     try {
+        lpyModule = py::module_::import("openalea.lpy");
+        native = py::module_::import("_sprout_lpy");
         lpyModule.attr("_begin")(ns, file);
         py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
         for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class"}) ns[name] = native.attr(name);
