@@ -274,29 +274,16 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
     for (const PatternModule& p : ps) {
         if (p.isRepeat()) {
             // Greedy: as many repetitions as match, each variable a list of its values.
-            std::vector<py::list> lists;
+            std::vector<py::list> lists(size_t(p.repeatVariables));
             int count = 0;
             for (; count < p.repeatMax; ++count) {
                 std::vector<py::object> one;
                 const size_t end = matchRight(p.repeat, s, j, filter, one);
                 if (end == npos || end == j) break;
-                if (lists.empty()) lists.resize(one.size());
                 for (size_t k = 0; k < one.size() && k < lists.size(); ++k) lists[k].append(one[k]);
                 j = end;
             }
             if (count < p.repeatMin) return npos;
-            if (lists.empty()) {  // no repetition: each variable an empty list
-                std::vector<py::object> probe;
-                size_t vars = 0;
-                std::function<void(const PatternModule&)> countVars = [&](const PatternModule& q) {
-                    for (const auto& inner : q.repeat) countVars(inner);
-                    if (!q.anyName.empty()) ++vars;
-                    for (const auto& a : q.args)
-                        if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) ++vars;
-                };
-                for (const auto& q : p.repeat) countVars(q);
-                lists.resize(vars);
-            }
             for (auto& l : lists) bound.push_back(std::move(l));
             continue;
         }

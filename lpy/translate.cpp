@@ -306,9 +306,9 @@ private:
             std::string_view name = d;
             std::vector<std::string> params;
             if (size_t eq = d.find('='); eq != std::string_view::npos && d.find('(') > eq) {
-                name = trim(d.substr(0, eq));  // an alias: the same class under two names
-                int cls = m_out.classes.intern(trim(d.substr(eq + 1)));
-                (void)cls;
+                // `C=D`: C is another name of D's class.
+                m_out.classes.alias(trim(d.substr(0, eq)), m_out.classes.intern(trim(d.substr(eq + 1))));
+                continue;
             }
             if (size_t open = name.find('('); open != std::string_view::npos) {
                 size_t close = closeParen(name, open);
@@ -441,7 +441,6 @@ private:
             ++i;
         }
         size_t start = 0;
-        int part = -1;  // what the text before the next cut is, decided by the cut
         std::vector<std::pair<std::string_view, size_t>> pieces;
         std::vector<int> kinds;
         for (const auto& c : cuts) {
@@ -450,7 +449,6 @@ private:
             start = c.at + c.len;
         }
         pieces.push_back({h.substr(start), start});
-        (void)part;
         // Assign pieces: everything before the last '<'/'<<' is left context(s); after the
         // first '>'/'>>' is right context(s).
         size_t predIndex = 0;
@@ -477,8 +475,10 @@ private:
             }
             r.params.push_back(n);
         };
-        std::function<void(const PatternModule&)> bind = [&](const PatternModule& pm) {
-            for (const auto& inner : pm.repeat) bind(inner);
+        std::function<void(PatternModule&)> bind = [&](PatternModule& pm) {
+            const size_t before = r.params.size();
+            for (auto& inner : pm.repeat) bind(inner);
+            if (pm.isRepeat()) pm.repeatVariables = int(r.params.size() - before);
             if (!pm.anyName.empty()) add(pm.anyName);
             for (auto& a : pm.args)
                 if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
@@ -541,9 +541,6 @@ private:
             std::string successor = line.substr(end + 3);
             successor = successor.substr(0, commentStart(successor));
             auto mods = readLstring(successor, m_out.classes, lineNo, int(end) + 4, m_out.diagnostics);
-            r.staticSuccessor = last == i && std::all_of(mods.begin(), mods.end(), [](const WrittenModule& w) {
-                return w.variable.empty() && std::all_of(w.args.begin(), w.args.end(), [](const std::string& a) { return isNumberLiteral(a); });
-            });
             m_outLines[i] = def + " return __lpy_produce(" + pythonLstring(mods) + ")";
             if (last > i) warning(lineNo, int(end) + 1, "indented lines after a '-->' rule are ignored");
             for (size_t k = i + 1; k <= last; ++k) m_outLines[k] = "";
@@ -676,7 +673,6 @@ private:
             if (mode == Mode::Python) {
                 if (ind == 0 && (keyword(t, "Axiom", rest) || keyword(t, "axiom", rest))) {
                     m_out.hasAxiom = true;
-                    m_out.axiomLine = lineNo;
                     if (rest.empty() && i + 1 < lines.size() && indentOf(lines[i + 1]) > 0) {
                         m_out.axiomIsBlock = true;
                         m_outLines[i] = "def __axiom_block__():";
@@ -743,6 +739,12 @@ ModuleClasses::ModuleClasses() {
 int ModuleClasses::find(std::string_view name) const {
     auto it = m_ids.find(std::string(name));
     return it == m_ids.end() ? -1 : it->second;
+}
+
+void ModuleClasses::alias(std::string_view name, int cls) {
+    if (name.empty() || find(name) >= 0) return;
+    m_ids.emplace(std::string(name), cls);
+    m_longest = std::max(m_longest, name.size());
 }
 
 int ModuleClasses::intern(std::string_view name) {
@@ -814,25 +816,6 @@ std::vector<WrittenModule> readLstring(std::string_view s, ModuleClasses& classe
         out.push_back(std::move(m));
     }
     return out;
-}
-
-bool looksLikeLpy(std::string_view text) {
-    bool axiom = false, lpy = false;
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(start, end - start);
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        if (line.rfind("Axiom:", 0) == 0 || line.rfind("Axiom :", 0) == 0) axiom = true;
-        std::string_view t = trim(line);
-        if (t.rfind("production:", 0) == 0 || t.rfind("derivation length", 0) == 0 || t.rfind("def ", 0) == 0 ||
-            t.rfind("import ", 0) == 0 || t.rfind("from ", 0) == 0 || t.find("__initialiseContext__") != std::string_view::npos ||
-            findKeyword(t, "nproduce") != std::string_view::npos || t.find("###### INITIALISATION ######") != std::string_view::npos)
-            lpy = true;
-        start = end + 1;
-    }
-    return axiom && lpy;
 }
 
 Translation translate(std::string_view text) { return Translator(text).run(); }

@@ -22,6 +22,8 @@ namespace sprout::lpy {
 class ModuleClasses {
 public:
     ModuleClasses();
+    // `name` becomes another name of `cls` (`module C=D`); a name already known is kept.
+    void alias(std::string_view name, int cls);
     // The class of `name`, adding it when new.
     int intern(std::string_view name);
     int find(std::string_view name) const;  // -1 when unknown
@@ -73,6 +75,7 @@ struct PatternModule {
     // only min is given); its variables are bound as lists.
     std::vector<PatternModule> repeat;
     int repeatMin = 0, repeatMax = 1000;
+    int repeatVariables = 0;  // how many variables the repeated pattern binds (each a list)
     bool isRepeat() const { return !repeat.empty(); }
 };
 
@@ -87,9 +90,6 @@ struct Rule {
     std::string function;             // the Python function the body became
     std::vector<std::string> params;  // its parameters, in binding order
     int filter = -1;                  // index into Translation::filters; -1: none
-    // A `-->` rule whose successor has only literal arguments (and no Python body): the
-    // successor is built once (L-Py's static rules).
-    bool staticSuccessor = false;
 };
 
 // `consider:` (only these classes count in contexts) or `ignore:` (these are skipped).
@@ -106,18 +106,10 @@ struct Translation {
     std::vector<ContextFilter> filters;
     bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
     bool hasAxiom = false;
-    int axiomLine = 0;
     std::vector<Diagnostic> diagnostics;
     bool ok() const { return !hasErrors(diagnostics); }
 };
 
-// True when a text is an L-Py model: an `Axiom:` line together with `production:`,
-// `derivation length:` or L-Py's Python (`def`, `import`, `produce`, `__initialiseContext__`).
-bool looksLikeLpy(std::string_view text);
-
 Translation translate(std::string_view text);
-
-// The names of the Python functions a file may define that the derivation calls.
-inline constexpr const char* kHooks[] = {"Start", "End", "StartEach", "EndEach", "StartInterpretation", "EndInterpretation", "PostDraw"};
 
 }  // namespace sprout::lpy

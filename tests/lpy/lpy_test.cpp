@@ -41,7 +41,7 @@ TEST(LpyTranslate, LinesKeepTheirNumbers) {
     ASSERT_EQ(t.rules.size(), 1u);
     EXPECT_EQ(t.rules[0].line, 6);
     EXPECT_EQ(t.rules[0].params, std::vector<std::string>{"x"});
-    EXPECT_EQ(lpy::looksLikeLpy(text), true);
+    EXPECT_TRUE(looksLikeLpy(text));
     EXPECT_EQ(detectFileKind("", text), FileKind::Lpy);
     EXPECT_EQ(detectFileKind("x.lpy", "Axiom: F\n"), FileKind::Lpy);
 }
