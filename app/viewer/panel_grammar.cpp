@@ -65,6 +65,29 @@ std::vector<std::string> completionsFor(App& app) {
 
 }  // namespace
 
+// Trust before code runs (app/viewer/trust.hpp): an L-Py model from outside shows its text
+// and what it imports, and runs its Python only once the user says so.
+static void trustBar(App& app) {
+    if (!app.state.pythonBlocked()) return;
+    const bool asking = app.state.pythonQuestion();
+    ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
+    ImGui::TextWrapped("%s", asking ? "This L-Py model is a Python program. Sprout runs its Python only if you trust where it came from."
+                                    : "Python not run: you chose not to trust this model. Its text is shown as it is.");
+    ImGui::PopStyleColor();
+    std::string imports;
+    for (const PythonImport& i : app.state.imports()) {
+        if (!imports.empty()) imports += ", ";
+        imports += i.module + " (line " + std::to_string(i.line) + ")";
+    }
+    ImGui::TextWrapped("It imports: %s", imports.empty() ? "nothing" : imports.c_str());
+    if (ImGui::Button("Trust and run")) app.state.answerTrust(true);
+    if (asking) {
+        ImGui::SameLine();
+        if (ImGui::Button("Don't run")) app.state.answerTrust(false);
+    }
+    ImGui::Separator();
+}
+
 void grammarSection(App& app) {
     // The editor follows the text the rest of the viewer changes (sliders, a file opened).
     const std::string document = app.state.title() + "|" + app.state.path().string();
@@ -88,6 +111,7 @@ void grammarSection(App& app) {
         app.completions = completionsFor(app);
         app.completionsOf = app.state.plant();
     }
+    trustBar(app);
     if (app.editor.draw("grammar", h, kind, markers, app.completions)) app.state.setText(app.editor.text());
     auto latest = app.state.latest();
     if (latest) {

@@ -99,7 +99,15 @@ bool Script::step(App& app) {
         if (cmd == "quit") return false;
         if (cmd == "crash") std::raise(SIGKILL);
         if (cmd == "recover") {
-            if (auto text = app.state.recoverable()) app.state.setText(*text);
+            app.state.restoreRecovered();
+            return true;
+        }
+        if (cmd == "trust") {  // as the trust bar's buttons: yes, no; "trust ?" prints the state
+            std::string v;
+            in >> v;
+            if (v == "yes" || v == "no") app.state.answerTrust(v == "yes");
+            std::printf("python=%s\n", app.state.pythonQuestion() ? "asking" : app.state.pythonBlocked() ? "refused" : "allowed");
+            std::fflush(stdout);
             return true;
         }
         if (cmd == "saveas") {

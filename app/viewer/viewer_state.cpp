@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "app/viewer/text_edit.hpp"
+#include "lpy/host.hpp"
 #include "core/language/import/import.hpp"
 #include "core/base/atomic_file.hpp"
 
@@ -41,8 +42,9 @@ std::optional<std::string> readText(const fs::path& p) {
 
 }  // namespace
 
-ViewerState::ViewerState(fs::path autosaveDir)
-    : m_autosaveDir(autosaveDir.empty() ? defaultAutosaveDir() : std::move(autosaveDir)) {
+ViewerState::ViewerState(fs::path autosaveDir, fs::path trustFile)
+    : m_autosaveDir(autosaveDir.empty() ? defaultAutosaveDir() : autosaveDir),
+      m_trustStore(!trustFile.empty() ? trustFile : autosaveDir.empty() ? fs::path() : autosaveDir / "trusted-models") {
     std::error_code ec;
     fs::create_directories(m_autosaveDir, ec);
     // A session marker: present at start means the last session did not end cleanly.
@@ -70,8 +72,37 @@ void ViewerState::post() {
     r.trackAges = m_playing && smoothGrowth;
     r.growFraction = r.trackAges ? m_growFraction : 1.0f;
     r.trackOrigins = m_picking;
+    r.python = m_trust == TrustAnswer::Trusted;
     r.generation = ++m_generation;
     m_worker.post(std::move(r));
+}
+
+bool ViewerState::pythonBlocked() const {
+    return m_kind == FileKind::Lpy && lpy::pythonAvailable() && m_trust != TrustAnswer::Trusted;
+}
+
+void ViewerState::lookUpTrust() {
+    // Only an L-Py text asks; any other kind keeps no answer (it has no Python to run).
+    m_trust = detectFileKind("", m_text) == FileKind::Lpy ? m_trustStore.answer(m_text) : TrustAnswer::Trusted;
+}
+
+void ViewerState::answerTrust(bool trusted) {
+    m_trust = trusted ? TrustAnswer::Trusted : TrustAnswer::Refused;
+    std::string error;
+    m_trustStore.remember(m_text, m_trust, error);  // unkept, the answer holds for this session
+    post();
+}
+
+void ViewerState::restoreRecovered() {
+    if (auto text = recoverable()) {
+        m_text = std::move(*text);
+        m_dirty = true;
+        m_kind = detectFileKind("", m_text);
+        if (m_kind != FileKind::Ifs && m_kind != FileKind::Forest && !cpfgFamily(m_kind)) m_kind = FileKind::Lsys;
+        lookUpTrust();
+        post();
+    }
+    discardRecovery();
 }
 
 void ViewerState::setPicking(bool on) {
@@ -223,6 +254,8 @@ void ViewerState::openText(std::string text, fs::path path, std::string preset) 
     m_kind = detectFileKind("", m_text);
     if (m_kind != FileKind::Ifs && m_kind != FileKind::Forest && !cpfgFamily(m_kind)) m_kind = FileKind::Lsys;
     m_dirty = false;
+    if (m_preset.empty()) lookUpTrust();  // a file, a PNG, an import: from outside
+    else m_trust = TrustAnswer::Trusted;  // Sprout's own
     post();
 }
 
@@ -249,6 +282,9 @@ bool ViewerState::saveAs(const fs::path& path, std::string& error) {
     std::error_code ec;
     m_fileTime = fs::last_write_time(m_path, ec);
     m_dirty = false;
+    // What the user saves from a model they trust (or typed) opens again without asking.
+    if (m_trust == TrustAnswer::Trusted && m_kind == FileKind::Lpy) m_trustStore.remember(m_text, m_trust, error);
+    error.clear();
     return true;
 }
 
@@ -262,6 +298,7 @@ bool ViewerState::reloadIfChangedOnDisk() {
     m_fileTime = t;
     if (*text == m_text) return false;
     m_text = std::move(*text);
+    lookUpTrust();  // another program wrote it: the new text is asked about
     post();
     return true;
 }

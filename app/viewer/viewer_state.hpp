@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/viewer/trust.hpp"
 #include "app/viewer/worker.hpp"
 
 namespace sprout::viewer {
@@ -21,7 +22,9 @@ bool saveTextAtomically(const std::filesystem::path& path, const std::string& te
 
 class ViewerState {
 public:
-    explicit ViewerState(std::filesystem::path autosaveDir = {});
+    // `autosaveDir` empty: $XDG_STATE_HOME/sprout. `trustFile` empty: beside the autosave when
+    // `autosaveDir` is given (tests keep to their folder), else TrustStore's default.
+    explicit ViewerState(std::filesystem::path autosaveDir = {}, std::filesystem::path trustFile = {});
     ~ViewerState();
 
     // --- the grammar text
@@ -50,6 +53,19 @@ public:
     bool loop = true;
     bool smoothGrowth = true;  // new segments grow from nothing while their step plays
     void tick(double seconds);  // advances the animation
+
+    // --- trust before code runs (app/viewer/trust.hpp): an L-Py text from outside runs its
+    // Python only once the user said so; presets and typed text need no answer.
+    // True when the text is an L-Py model whose Python is not run (the panel's bar).
+    bool pythonBlocked() const;
+    // True when no answer is kept for it yet: the panel asks.
+    bool pythonQuestion() const { return pythonBlocked() && m_trust == TrustAnswer::None; }
+    std::vector<PythonImport> imports() const { return pythonImports(m_text); }
+    // The user's answer, kept by the text's hash; Trusted runs the model.
+    void answerTrust(bool trusted);
+    const TrustStore& trustStore() const { return m_trustStore; }
+    // A recovered text is text from outside: restored with its trust looked up.
+    void restoreRecovered();
 
     // --- results: call once per frame; true when a new plant arrived
     bool update();
@@ -88,6 +104,8 @@ public:
 
 private:
     void post();
+    void lookUpTrust();  // the text came from outside
+
 
     Worker m_worker;
     std::string m_text;
@@ -111,6 +129,8 @@ private:
     std::string m_autosaved;
     std::string m_recovered;  // the text autosaved by a session that did not end cleanly
     bool m_crashedBefore = false;
+    TrustStore m_trustStore;
+    TrustAnswer m_trust = TrustAnswer::Trusted;
 };
 
 }  // namespace sprout::viewer

@@ -317,7 +317,7 @@ int runViewer(int argc, char** argv) {
         if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
             ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
             if (ImGui::Button("Restore it")) {
-                if (auto text = app.state.recoverable()) app.state.setText(*text);
+                app.state.restoreRecovered();
                 app.state.discardRecovery();
                 ImGui::CloseCurrentPopup();
             }
@@ -443,6 +443,9 @@ int runViewer(int argc, char** argv) {
         glViewport(0, 0, fw, fh);
         if (present) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+        // A text that makes no plant (errors, an L-Py model not trusted) is on screen as it
+        // is: screenshots and scripts go on once its result is in.
+        if (!app.state.plant() && app.state.latest() && !app.state.worker().busy()) ++framesWithPlant;
         if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && app.viewSettled()) {
             // The whole window as the user sees it: panel and plant.
             glFinish();

@@ -119,6 +119,66 @@ std::shared_ptr<Result> Worker::processIfs(const Request& r, std::shared_ptr<Res
     return out;
 }
 
+std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Result> out) {
+    if (!r.python) {
+        out->message = "this L-Py model's Python has not been run: trust it (the bar above the text) to run it";
+        return out;
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    const int steps = r.iterations.value_or(-1);
+    if (!m_lpy || r.text != m_lpyText || r.path != m_lpyPath || steps != m_lpySteps) {
+        m_lpy.reset();
+        lpy::RunOptions o;
+        o.path = r.path;
+        o.steps = steps;
+        o.cancel = &m_cancel;
+        o.keepSteps = true;
+        o.maxModules = std::size_t(std::min<std::uint64_t>(limits.maxModules, 50'000'000));
+        auto model = std::make_shared<lpy::Model>(lpy::runModel(r.text, o));
+        out->deriveMs = millisSince(t0);
+        if (model->cancelled || m_cancel) {
+            out->cancelled = true;
+            return out;
+        }
+        m_lpy = std::move(model);
+        m_lpyText = r.text;
+        m_lpyPath = r.path;
+        m_lpySteps = steps;
+    }
+    out->diagnostics = m_lpy->diagnostics;
+    if (!m_lpy->ok() || m_lpy->steps.empty()) return out;  // the diagnostics say why
+    const int n = int(m_lpy->steps.size()) - 1;
+    out->iterations = n;
+    out->displayStep = r.displayStep < 0 ? n : std::min(r.displayStep, n);
+    out->grammar = m_lpy->steps[size_t(out->displayStep)];
+    out->environment = std::shared_ptr<const Environment>(out->grammar, &out->grammar->environment);
+    out->seed = r.seed.value_or(out->grammar->settings.seed);
+    // The kept step is a grammar with no rules whose axiom is the string to draw.
+    t0 = std::chrono::steady_clock::now();
+    DeriveOptions opts;
+    opts.limits = limits;
+    opts.cancel = &m_cancel;
+    opts.seed = out->seed;
+    Derivation d(out->grammar, opts);
+    if (!d.deriveTo(0).ok()) {
+        out->cancelled = m_cancel;
+        return out;
+    }
+    auto string = d.step(0);
+    out->modules = string->size();
+    auto geometry = std::make_shared<Geometry>();
+    TurtleOptions t{0, out->seed, nullptr};
+    interpret(*string, *out->grammar, t, *geometry);
+    out->interpretMs = millisSince(t0);
+    if (m_cancel) {
+        out->cancelled = true;
+        return out;
+    }
+    if (prepare) out->prepared = prepare(geometry);
+    out->geometry = std::move(geometry);
+    return out;
+}
+
 std::shared_ptr<Result> Worker::process(const Request& r) {
     auto out = std::make_shared<Result>();
     out->generation = r.generation;
@@ -128,6 +188,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     const FileKind kind = detected == FileKind::Lsys && cpfgFamily(r.kind) ? r.kind : detected;
     if (kind == FileKind::Forest) return processScene(r, out);
     if (kind == FileKind::Ifs) return processIfs(r, out);
+    if (kind == FileKind::Lpy && lpy::pythonAvailable()) return processLpy(r, out);
     auto t0 = std::chrono::steady_clock::now();
     if (r.text != m_cachedText || kind != m_cachedKind || r.path != m_cachedPath || !m_cachedGrammar) {
         ParseResult parsed = parse(r.text, parseOptionsFor(kind, r.path));

@@ -18,6 +18,7 @@
 #include "core/scene/forest.hpp"
 #include "core/derive/provenance.hpp"
 #include "core/turtle/turtle.hpp"
+#include "lpy/host.hpp"
 
 namespace sprout::viewer {
 
@@ -34,6 +35,8 @@ struct Request {
     bool trackAges = false;
     // Picking: keep where every module came from, and which module drew each segment.
     bool trackOrigins = false;
+    // An L-Py model's Python may run (the user trusted it: app/viewer/trust.hpp).
+    bool python = false;
     std::uint64_t generation = 0;
 };
 
@@ -102,6 +105,7 @@ private:
     std::shared_ptr<Result> process(const Request& r);
     std::shared_ptr<Result> processScene(const Request& r, std::shared_ptr<Result> out);
     std::shared_ptr<Result> processIfs(const Request& r, std::shared_ptr<Result> out);
+    std::shared_ptr<Result> processLpy(const Request& r, std::shared_ptr<Result> out);
 
     std::mutex m_mutex;
     std::condition_variable m_wake, m_done;
@@ -123,6 +127,11 @@ private:
     std::shared_ptr<const Grammar> m_cachedGrammar;
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;
+    // An L-Py model run by Python (lpy/host.hpp), every step kept: stepping through it draws
+    // the kept steps, and only a change of text, file or length runs the Python again.
+    std::shared_ptr<const lpy::Model> m_lpy;
+    std::string m_lpyText, m_lpyPath;
+    int m_lpySteps = -1;
     // Last: the thread starts once every member it uses exists.
     std::thread m_thread;
 };

@@ -9,6 +9,7 @@
 
 #include "app/viewer/text_edit.hpp"
 #include "app/viewer/viewer_state.hpp"
+#include "lpy/host.hpp"
 
 namespace sprout::viewer {
 namespace {
@@ -309,6 +310,120 @@ TEST(ViewerState, IteratedFunctionSystemsAndForestsOpenInTheSameEditor) {
     s.setText("scene: forest\ngrid: 2 2\nspecies: oak 1\n");
     s.waitForPlant();
     EXPECT_EQ(s.latest()->message, "no preset or file named 'oak'");
+}
+
+
+// A PNG as Sprout writes one, reduced to what the viewer reads: a tEXt chunk "lsys".
+void writePngCarrying(const fs::path& path, const std::string& text) {
+    std::string png("\x89PNG\r\n\x1a\n", 8);
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        const std::uint32_t n = std::uint32_t(data.size());
+        for (int s = 24; s >= 0; s -= 8) png += char((n >> s) & 0xFF);
+        png += type + data + std::string(4, '\0');  // the reader checks no CRC
+    };
+    chunk("tEXt", std::string("lsys") + '\0' + text);
+    chunk("IEND", "");
+    std::ofstream(path, std::ios::binary) << png;
+}
+
+TEST(Trust, ImportsAreListedWithTheirLines) {
+    auto imports = pythonImports("import random, os.path as p\n# import no\nfrom math import *\n  import numpy as np  # a comment\n"
+                                 "x = 'import nothing'\nfrom . import here\n");
+    std::vector<std::string> seen;
+    for (const auto& i : imports) seen.push_back(std::to_string(i.line) + ":" + i.module);
+    EXPECT_EQ(seen, (std::vector<std::string>{"1:random", "1:os.path", "3:math", "4:numpy", "6:."}));
+}
+
+TEST(Trust, AnswersAreKeptByTheTextsHash) {
+    const fs::path dir = tempDir("trust_store");
+    TrustStore store(dir / "config" / "trusted-models");
+    std::string error;
+    EXPECT_EQ(store.answer("a"), TrustAnswer::None);
+    ASSERT_TRUE(store.remember("a", TrustAnswer::Trusted, error)) << error;
+    ASSERT_TRUE(store.remember("b", TrustAnswer::Refused, error)) << error;
+    EXPECT_EQ(TrustStore(store.file()).answer("a"), TrustAnswer::Trusted);
+    EXPECT_EQ(TrustStore(store.file()).answer("b"), TrustAnswer::Refused);
+    EXPECT_EQ(TrustStore(store.file()).answer("a "), TrustAnswer::None);  // another text
+    ASSERT_TRUE(store.remember("b", TrustAnswer::Trusted, error));  // a changed mind replaces the answer
+    EXPECT_EQ(store.answer("b"), TrustAnswer::Trusted);
+    std::ifstream in(store.file());
+    const std::string kept((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_EQ(std::count(kept.begin(), kept.end(), '\n'), 3) << kept;  // a comment and two answers
+    EXPECT_EQ(kept.find("\na\n"), std::string::npos) << "hashes are kept, never texts";
+}
+
+// Trust before code runs: a PNG carrying an L-Py model whose preamble writes a file. Opened
+// without trust, the file is not written; trusted, it is; the answer is remembered.
+TEST(Trust, AModelFromOutsideRunsItsPythonOnlyOnceTrusted) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = tempDir("trust");
+    const fs::path marker = dir / "written-by-the-model";
+    const std::string model = "import os\nopen('" + marker.string() + "', 'w').write('ran')\n"
+                              "Axiom: F\nderivation length: 2\nproduction:\nF --> F F\nendlsystem\n";
+    const fs::path png = dir / "plant.png";
+    writePngCarrying(png, model);
+    const fs::path trustFile = dir / "config" / "trusted-models";
+    std::string error;
+    {
+        ViewerState s(dir / "state", trustFile);
+        ASSERT_TRUE(s.open(png, error)) << error;
+        EXPECT_EQ(s.kind(), FileKind::Lpy);
+        EXPECT_TRUE(s.pythonQuestion());
+        ASSERT_EQ(s.imports().size(), 1u);
+        EXPECT_EQ(s.imports()[0].module, "os");
+        s.waitForPlant();
+        EXPECT_FALSE(fs::exists(marker)) << "the model's Python ran without trust";
+        ASSERT_TRUE(s.latest());
+        EXPECT_NE(s.latest()->message.find("trust"), std::string::npos) << s.latest()->message;
+        EXPECT_FALSE(s.latest()->ok());
+        s.answerTrust(false);
+        s.waitForPlant();
+        EXPECT_FALSE(fs::exists(marker));
+        EXPECT_TRUE(s.pythonBlocked());
+        EXPECT_FALSE(s.pythonQuestion());
+    }
+    {
+        ViewerState s(dir / "state", trustFile);  // reopened: the refusal is remembered
+        ASSERT_TRUE(s.open(png, error)) << error;
+        EXPECT_FALSE(s.pythonQuestion());
+        EXPECT_TRUE(s.pythonBlocked());
+        s.waitForPlant();
+        EXPECT_FALSE(fs::exists(marker));
+        s.answerTrust(true);  // the bar's "Trust and run"
+        s.waitForPlant();
+        EXPECT_TRUE(fs::exists(marker)) << "trusted, the model runs";
+        ASSERT_TRUE(s.plant());
+        EXPECT_EQ(s.plant()->geometry->cylinders.size(), 4u);  // F F F F
+        EXPECT_EQ(s.plant()->iterations, 2);
+        s.setDisplayStep(1);  // stepping draws the kept steps, no second run
+        fs::remove(marker);
+        s.waitForPlant();
+        EXPECT_EQ(s.plant()->geometry->cylinders.size(), 2u);
+        EXPECT_FALSE(fs::exists(marker));
+    }
+    {
+        ViewerState s(dir / "state", trustFile);  // trusted once: opens and runs
+        ASSERT_TRUE(s.open(png, error)) << error;
+        EXPECT_FALSE(s.pythonBlocked());
+        s.waitForPlant();
+        EXPECT_TRUE(fs::exists(marker));
+    }
+    fs::remove(marker);
+    writePngCarrying(png, model + "# changed\n");
+    {
+        ViewerState s(dir / "state", trustFile);  // another text is asked about again
+        ASSERT_TRUE(s.open(png, error)) << error;
+        EXPECT_TRUE(s.pythonQuestion());
+        s.waitForPlant();
+        EXPECT_FALSE(fs::exists(marker));
+        // Recovered text is from outside too.
+        s.openText("n: 1\naxiom: F\n", {}, "koch");
+        EXPECT_FALSE(s.pythonBlocked());  // a preset: Sprout's own
+        s.setText(model);                 // typed (or pasted) by the user: runs
+        EXPECT_FALSE(s.pythonBlocked());
+        s.waitForPlant();
+        EXPECT_TRUE(fs::exists(marker));
+    }
 }
 
 }  // namespace

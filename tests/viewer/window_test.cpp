@@ -23,7 +23,7 @@ bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0
 int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null") {
     fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
     fs::create_directories(home);
-    std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" +
+    std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CONFIG_HOME=" + home.string() + "/config XDG_CACHE_HOME=" +
                       home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
                       args + " >" + stdoutFile + " 2>/dev/null";
     return std::system(cmd.c_str());
@@ -477,7 +477,7 @@ TEST(Window, FirstStartAfterACrashAsksAndKeepsRunning) {
     std::ofstream(dir / "crash.txt") << "text n: 2\\naxiom: F\\nF -> F[+F]F\\n\nwait\nsleep 3\ncrash\n";
     EXPECT_NE(runUnderXvfb("koch --script " + (dir / "crash.txt").string()), 0) << "the viewer was killed";
     const std::string rc = (dir / "rc.txt").string();
-    const std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CACHE_HOME=" + home.string() +
+    const std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CONFIG_HOME=" + home.string() + "/config XDG_CACHE_HOME=" + home.string() +
                             "/cache xvfb-run -a -s '-screen 0 1600x1000x24' sh -c 'timeout 4 " SPROUT_BINARY " koch; echo $? >" + rc +
                             "' >/dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0);
