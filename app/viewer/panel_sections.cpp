@@ -74,6 +74,31 @@ void ifsMaps(App& app) {
 
 }  // namespace
 
+// An L-Py model's parameters: its derivation length and the scalars of its INITIALISATION
+// part (L-Py's own parameter panel), each written back where the file sets it. The turtle's
+// settings are Python's there, not lines Sprout may add.
+static void lpyParameters(App& app) {
+    auto plant = app.state.plant();
+    int n = plant->iterations;
+    if (ImGui::SliderInt("derivation length", &n, 0, std::max(12, plant->iterations + 2))) app.state.setIterations(n);
+    const std::string& text = app.state.text();
+    int id = 0;
+    for (const LpyScalar& s : lpyScalars(text)) {
+        ImGui::PushID(id++);
+        if (s.kind == LpyScalar::Kind::Bool) {
+            bool on = s.value != 0;
+            if (ImGui::Checkbox(s.name.c_str(), &on)) app.state.setText(setLpyScalar(text, s, on ? 1 : 0));
+        } else if (s.kind == LpyScalar::Kind::Integer) {
+            int v = saturate<int>(s.value);
+            if (ImGui::SliderInt(s.name.c_str(), &v, saturate<int>(s.min), saturate<int>(s.max))) app.state.setText(setLpyScalar(text, s, v));
+        } else {
+            float v = toFloat(s.value);
+            if (ImGui::SliderFloat(s.name.c_str(), &v, toFloat(s.min), toFloat(s.max), "%.3g")) app.state.setText(setLpyScalar(text, s, v));
+        }
+        ImGui::PopID();
+    }
+}
+
 void parameterSection(App& app) {
     auto plant = app.state.plant();
     if (plant && plant->image) {
@@ -81,6 +106,10 @@ void parameterSection(App& app) {
         return;
     }
     if (!plant || !plant->grammar) return;
+    if (app.state.kind() == FileKind::Lpy) {
+        lpyParameters(app);
+        return;
+    }
     const Settings& s = plant->grammar->settings;
     int n = plant->iterations;
     if (ImGui::SliderInt("n (iterations)", &n, 0, std::max(12, plant->iterations + 2))) app.state.setIterations(n);

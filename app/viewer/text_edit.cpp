@@ -257,3 +257,104 @@ std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber&
 }
 
 }  // namespace sprout::viewer
+
+namespace sprout::viewer {
+namespace {
+
+// A Python number or bool literal: its value, or nullopt.
+std::optional<double> pyLiteral(std::string_view t) {
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
+    while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
+    if (t == "True") return 1.0;
+    if (t == "False") return 0.0;
+    if (t.empty() || t.size() > 40) return std::nullopt;
+    std::string s(t);
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+std::vector<LpyScalar> lpyScalars(std::string_view text) {
+    std::vector<LpyScalar> out;
+    // `scalars = [` in the INITIALISATION part.
+    size_t list = text.find("__initialiseContext__");
+    for (list = list == std::string_view::npos ? 0 : list; (list = text.find("scalars", list)) != std::string_view::npos; list += 7) {
+        size_t k = list + 7;
+        while (k < text.size() && text[k] == ' ') ++k;
+        if (k < text.size() && text[k] == '=') break;
+    }
+    if (list == std::string_view::npos) return out;
+    const size_t open = text.find('[', list), close = text.find(']', list);
+    if (open == std::string_view::npos || close == std::string_view::npos || close < open) return out;
+    for (size_t at = open; (at = text.find('(', at)) != std::string_view::npos && at < close;) {
+        const size_t end = text.find(')', at);
+        if (end == std::string_view::npos || end > close) break;
+        // The tuple's fields with their offsets.
+        std::vector<std::pair<size_t, size_t>> fields;
+        for (size_t b = at + 1;;) {
+            size_t comma = text.find(',', b);
+            if (comma == std::string_view::npos || comma > end) comma = end;
+            fields.emplace_back(b, comma);
+            if (comma == end) break;
+            b = comma + 1;
+        }
+        at = end + 1;
+        auto field = [&](size_t k) { return text.substr(fields[k].first, fields[k].second - fields[k].first); };
+        auto unquote = [](std::string_view f) -> std::optional<std::string> {
+            while (!f.empty() && f.front() == ' ') f.remove_prefix(1);
+            while (!f.empty() && f.back() == ' ') f.remove_suffix(1);
+            if (f.size() < 2 || (f.front() != '\'' && f.front() != '"') || f.back() != f.front()) return std::nullopt;
+            return std::string(f.substr(1, f.size() - 2));
+        };
+        if (fields.size() < 2) continue;
+        auto name = unquote(field(0));
+        if (!name) continue;
+        LpyScalar s;
+        s.name = *name;
+        size_t v = 1;
+        if (auto type = unquote(field(1))) {  // ('NAME', 'Type', value, min, max[, decimals])
+            if (*type == "Integer") s.kind = LpyScalar::Kind::Integer;
+            else if (*type == "Float") s.kind = LpyScalar::Kind::Float;
+            else if (*type == "Bool") s.kind = LpyScalar::Kind::Bool;
+            else continue;  // a Category heading
+            v = 2;
+        }
+        if (fields.size() <= v) continue;
+        auto value = pyLiteral(field(v));
+        if (!value) continue;
+        s.value = *value;
+        const std::string_view raw = field(v);
+        if (v == 1) s.kind = raw.find("True") != std::string_view::npos || raw.find("False") != std::string_view::npos ? LpyScalar::Kind::Bool
+                             : raw.find('.') != std::string_view::npos                                                  ? LpyScalar::Kind::Float
+                                                                                                                        : LpyScalar::Kind::Integer;
+        if (s.kind != LpyScalar::Kind::Bool) {
+            auto lo = fields.size() > v + 1 ? pyLiteral(field(v + 1)) : std::nullopt;
+            auto hi = fields.size() > v + 2 ? pyLiteral(field(v + 2)) : std::nullopt;
+            s.min = lo ? *lo : std::min(0.0, s.value);
+            s.max = hi ? *hi : std::max(1.0, std::fabs(s.value) * 2);
+            if (s.max < s.min) std::swap(s.min, s.max);
+        }
+        // The value's bytes, without the spaces around it.
+        s.begin = fields[v].first;
+        s.end = fields[v].second;
+        while (s.begin < s.end && text[s.begin] == ' ') ++s.begin;
+        while (s.end > s.begin && text[s.end - 1] == ' ') --s.end;
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+std::string setLpyScalar(std::string_view text, const LpyScalar& scalar, double v) {
+    std::string value = scalar.kind == LpyScalar::Kind::Bool      ? (v != 0 ? "True" : "False")
+                        : scalar.kind == LpyScalar::Kind::Integer ? std::to_string(std::llround(std::clamp(v, -1e15, 1e15)))
+                                                                  : formatValue(v);
+    if (scalar.kind == LpyScalar::Kind::Float && value.find_first_of(".e") == std::string::npos) value += ".0";
+    std::string out(text);
+    if (scalar.end <= out.size() && scalar.begin <= scalar.end) out.replace(scalar.begin, scalar.end - scalar.begin, value);
+    return out;
+}
+
+}  // namespace sprout::viewer

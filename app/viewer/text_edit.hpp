@@ -34,6 +34,19 @@ std::vector<EnvironmentNumber> environmentNumbers(std::string_view text);
 // The text with that number set to `v` (for a light with no sun: " sun AZIMUTH ELEVATION" added).
 std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber& number, double v);
 
+// An L-Py model's scalar parameter (its INITIALISATION part: `scalars = [('NAME', 'Integer',
+// 3, 1, 20), ('K', 'Float', 0.5, 0, 1, 2), ('ON', 'Bool', True)]`, or L-Py's older form
+// without the type, `('NAME', 3, 1, 20)`): one slider or checkbox each, written back there.
+struct LpyScalar {
+    enum class Kind { Integer, Float, Bool };
+    std::string name;
+    Kind kind = Kind::Float;
+    double value = 0, min = 0, max = 1;
+    size_t begin = 0, end = 0;  // the value's bytes in the text
+};
+std::vector<LpyScalar> lpyScalars(std::string_view text);
+std::string setLpyScalar(std::string_view text, const LpyScalar& scalar, double v);
+
 // Whether `s` starts with `prefix`, letters compared without case.
 bool startsWithNoCase(std::string_view s, std::string_view prefix);
 

@@ -128,7 +128,8 @@ void ViewerState::setDefineValue(const std::string& name, double value) {
 
 void ViewerState::setIterations(int n) {
     m_displayStep = -1;
-    setText(setDirective(m_text, "n", std::to_string(std::max(0, n))));
+    // L-Py's is `derivation length:` (a line `n:` would be Python there).
+    setText(setDirective(m_text, m_kind == FileKind::Lpy ? "derivation length" : "n", std::to_string(std::max(0, n))));
 }
 
 void ViewerState::setSeed(std::uint64_t seed) { setText(setDirective(m_text, "seed", std::to_string(seed))); }

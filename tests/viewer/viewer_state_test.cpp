@@ -68,6 +68,38 @@ TEST(TextEdit, SliderValuesGoBackIntoTheText) {
     EXPECT_EQ(directiveValue(kPlant, "angle"), "25");
 }
 
+// An L-Py model's scalars (its INITIALISATION part) are sliders written back in place.
+TEST(TextEdit, LpyScalarsAreSlidersWrittenBackInPlace) {
+    const std::string text =
+        "# scalars = nothing here\nAxiom: A\nderivation length: N\n###### INITIALISATION ######\n"
+        "def __initialiseContext__(context):\n"
+        "\tscalars = [('N', 'Integer', 3, 1, 20), ('ANGLE', 'Float', 22.5, 0, 90, 2), ('LEAVES', 'Bool', True),\n"
+        "\t           ('Shape', 'Category'), ('OLD', 0.25, 0, 1)]\n"
+        "\tcontext[\"__scalars__\"] = scalars\n";
+    auto scalars = lpyScalars(text);
+    ASSERT_EQ(scalars.size(), 4u);
+    EXPECT_EQ(scalars[0].name, "N");
+    EXPECT_EQ(scalars[0].kind, LpyScalar::Kind::Integer);
+    EXPECT_EQ(scalars[0].value, 3);
+    EXPECT_EQ(scalars[0].max, 20);
+    EXPECT_EQ(scalars[1].kind, LpyScalar::Kind::Float);
+    EXPECT_EQ(scalars[1].min, 0);
+    EXPECT_EQ(scalars[1].max, 90);
+    EXPECT_EQ(scalars[2].kind, LpyScalar::Kind::Bool);
+    EXPECT_EQ(scalars[2].value, 1);
+    EXPECT_EQ(scalars[3].name, "OLD");
+    EXPECT_EQ(scalars[3].kind, LpyScalar::Kind::Float);
+    EXPECT_EQ(scalars[3].value, 0.25);
+    std::string moved = setLpyScalar(text, scalars[0], 7.4);
+    EXPECT_NE(moved.find("('N', 'Integer', 7, 1, 20)"), std::string::npos) << moved;
+    moved = setLpyScalar(text, scalars[1], 30);
+    EXPECT_NE(moved.find("('ANGLE', 'Float', 30.0, 0, 90, 2)"), std::string::npos) << moved;
+    moved = setLpyScalar(text, scalars[2], 0);
+    EXPECT_NE(moved.find("('LEAVES', 'Bool', False)"), std::string::npos) << moved;
+    EXPECT_EQ(setDirective(text, "derivation length", "5").find("derivation length: 5\n"), text.find("derivation length: N"));
+    EXPECT_TRUE(lpyScalars("Axiom: A\n").empty());
+}
+
 TEST(ViewerState, EditBecomesAPlant) {
     ViewerState s(tempDir("edit"));
     s.openText(kPlant);
