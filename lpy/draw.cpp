@@ -124,7 +124,7 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
         const std::string& name = classes.name(m.cls);
         auto it = map.find(name);
         if (it == map.end()) {
-            if (!silent(name) && name.size() > 1) leftOut.insert(name);
+            if (!silent(name) && classes.isPredefined(m.cls)) leftOut.insert(name);
             continue;
         }
         p.clear();

@@ -734,6 +734,7 @@ ModuleClasses::ModuleClasses() {
         }
     }
     parameterNames.resize(m_names.size());
+    m_predefined = m_names.size();
 }
 
 int ModuleClasses::find(std::string_view name) const {

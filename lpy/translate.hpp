@@ -30,6 +30,8 @@ public:
     const std::string& name(int cls) const { return m_names[size_t(cls)]; }
     size_t size() const { return m_names.size(); }
     size_t longest() const { return m_longest; }
+    // One of L-Py's predefined modules (a file's own modules draw nothing, as in L-Py).
+    bool isPredefined(int cls) const { return cls >= 0 && size_t(cls) < m_predefined; }
     // Declared parameter names (`module A(x, y)`), for `m.x` in Python.
     std::vector<std::vector<std::string>> parameterNames;
 
@@ -40,6 +42,7 @@ private:
     std::vector<std::string> m_names;
     std::unordered_map<std::string, int> m_ids;  // names and aliases
     size_t m_longest = 1;
+    size_t m_predefined = 0;
 };
 
 // One module of an lstring as written: its class and its argument texts (Python expressions).

@@ -6,6 +6,7 @@
 #include "core/language/file_kind.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/turtle.hpp"
+#include "lpy/host.hpp"
 #include "tests/core/same_drawing.hpp"
 
 namespace sprout {
@@ -13,17 +14,29 @@ namespace {
 
 TEST(Presets, EveryPresetParsesWithoutWarningsAndDerives) {
     ASSERT_FALSE(presetNames().empty());
+    int lpyPresets = 0;
     for (const auto& name : presetNames()) {
         auto text = presetText(name);
         ASSERT_TRUE(text) << name;
+        EXPECT_TRUE(text->starts_with("#") || text->starts_with("/*")) << name << " should start with a comment naming its source";
+        if (detectFileKind("", *text) == FileKind::Lpy) {  // an L-Py model: its Python runs
+            if (!lpy::pythonAvailable()) continue;
+            lpy::Model m = lpy::runModel(*text, {});
+            for (const auto& d : m.diagnostics) ADD_FAILURE() << formatDiagnostic(d, name + ".lpy");
+            ASSERT_TRUE(m.ok()) << name;
+            EXPECT_GT(m.drawable->axiom.size(), 100u) << name;
+            EXPECT_GE(m.stepsDone, 4) << name;
+            ++lpyPresets;
+            continue;
+        }
         ParseResult r = parseDetected(*text);
         for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, name + ".lsys");
         ASSERT_TRUE(r.ok()) << name;
-        EXPECT_TRUE(text->starts_with("#") || text->starts_with("/*")) << name << " should start with a comment naming its source";
         DeriveResult d = derive(r.grammar, r.grammar->settings.iterations);
         EXPECT_TRUE(d.outcome.ok()) << name << ": " << d.outcome.message;
         EXPECT_GT(d.string->size(), 0u) << name;
     }
+    if (lpy::pythonAvailable()) EXPECT_GE(lpyPresets, 4);
 }
 
 // Every D0L preset, at the first step with 40,000 modules or more, draws the same from its
