@@ -101,7 +101,8 @@ std::vector<std::uint32_t> defaultMaterials() {
             rgb(60, 60, 15, 3), rgb(0, 0, 60, 3), rgb(60, 0, 60, 3)};
 }
 
-std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings) {
+std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings,
+                                  bool queries) {
     auto g = std::make_shared<Grammar>();
     g->settings.angle = {d.angle, 0};
     g->settings.step = {1, 0};
@@ -122,6 +123,10 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
     std::vector<double> p;
     for (const LModule& m : s) {
         const std::string& name = classes.name(m.cls);
+        if (queries && Engine::isQuery(name)) {
+            w.put("?P", {});
+            continue;
+        }
         auto it = map.find(name);
         if (it == map.end()) {
             if (!silent(name) && classes.isPredefined(m.cls)) leftOut.insert(name);

@@ -27,7 +27,8 @@ std::vector<std::uint32_t> defaultMaterials();
 
 // The drawable grammar (no rules; the axiom is the string). Modules Sprout does not draw are
 // left out; `warnings` receives one line per kind of module it left out that L-Py would draw.
+// `queries`: L-Py's query modules become Sprout's `?P`, whose frames the turtle reports in order.
 std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d,
-                                  std::vector<std::string>* warnings = nullptr);
+                                  std::vector<std::string>* warnings = nullptr, bool queries = false);
 
 }  // namespace sprout::lpy

@@ -1,6 +1,9 @@
 #include "lpy/engine.hpp"
 
 #include <algorithm>
+#include <cstring>
+
+#include <algorithm>
 #include <functional>
 
 #include "core/language/module_string.hpp"
@@ -46,6 +49,14 @@ void Engine::bind() {
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
+        if (rule.kind == RuleKind::Production) {
+            std::function<bool(const PatternModule&)> query = [&](const PatternModule& p) {
+                if (p.cls >= 0 && size_t(p.cls) < classes && isQuery(m_tr.classes.name(p.cls))) return true;
+                return std::any_of(p.repeat.begin(), p.repeat.end(), query);
+            };
+            for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
+                m_queryRules = m_queryRules || std::any_of(part->begin(), part->end(), query);
+        }
         // Header constants and predicates, evaluated once (in repetitions too).
         std::function<void(const PatternModule&)> compile = [&](const PatternModule& p) {
             for (const auto& inner : p.repeat) compile(inner);
@@ -504,6 +515,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
         callHook("StartEach", &s, nullptr, &s);
         // Direction and group are read after StartEach (so StartEach may set them).
         LString next;
+        if (m_hasKind[prod] && m_queryRules && fillQueries) fillQueries(s);
         if (m_hasKind[prod]) {
             pass(s, next, RuleKind::Production, forwardDirection);
             s = std::move(next);
@@ -517,6 +529,10 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
     iteration = std::max(0, done - 1);
     if (done == steps) callHook("End", &s, nullptr, &s);
     return s;
+}
+
+bool Engine::isQuery(const std::string& name) {
+    return name.size() == 2 && name[0] == '?' && std::strchr("PHULRF", name[1]) != nullptr;
 }
 
 LString Engine::interpret(const LString& s) {

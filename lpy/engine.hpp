@@ -2,6 +2,7 @@
 // L-Py's derivation (L-Py's src/cpp/lsystem.cpp, described in ../shared/lpy-notes.md and the
 // L-Py documentation): a string of modules whose parameters are Python values, rewritten by
 // rules whose bodies are Python functions. Runs with the GIL held.
+#include <functional>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -74,6 +75,11 @@ public:
     int group = 0;
     bool stopRequested = false;
     int derivationLength = 1;
+    // L-Py's query modules (?P ?H ?U ?L ?R ?F): when a production's header has one, each step
+    // first interprets the string with a turtle that makes no picture and writes the turtle's
+    // state into them (set by the host, which knows the turtle's settings).
+    std::function<void(LString&)> fillQueries;
+    static bool isQuery(const std::string& name);
     LString parse(std::string_view lstring);
 
 private:
@@ -110,6 +116,7 @@ private:
     std::unordered_map<const PatternArg*, py::object> m_constants, m_predicates;
     std::unordered_map<int, Index> m_index[3];  // per kind: group -> index
     bool m_hasKind[3] = {false, false, false};
+    bool m_queryRules = false;  // a production's header has a query module
     int m_depth[3] = {1, 1, 1};
     LString m_buffer;
     bool m_produced = false;

@@ -11,6 +11,7 @@
 #include "app/embedded_file.hpp"
 #include "lpy/draw.hpp"
 #include "lpy/engine.hpp"
+#include "core/derive/draw.hpp"
 
 namespace sprout {
 std::span<const EmbeddedFile> embeddedLpyPython();
@@ -242,6 +243,53 @@ std::uint32_t materialColour(py::handle m) {
     }
 }
 
+// The file's turtle settings and materials as they stand (the INITIALISATION part sets them).
+TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
+    TurtleDefaults d;
+    py::dict state = lpyModule.attr("_state");
+    if (!state["angle"].is_none()) d.angle = state["angle"].cast<double>();
+    d.materials = defaultMaterials();
+    for (auto item : py::dict(state["materials"])) {
+        const int i = item.first.cast<int>();
+        if (i < 0 || i > 255) continue;
+        if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
+        d.materials[size_t(i)] = materialColour(item.second);
+    }
+    return d;
+}
+
+// L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string
+// with its interpretation rules drawn by a turtle that keeps no picture, and each query
+// module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
+// The k-th query module of the interpreted string is the k-th of the string.
+void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
+    const ModuleClasses& classes = engine.translation().classes;
+    auto g = drawable(engine.interpret(s), classes, d, nullptr, true);
+    Geometry geo;
+    TurtleOptions t;
+    t.fromTree = false;
+    std::vector<QueryFrame> frames;
+    t.queries = &frames;
+    interpret(g->axiom, *g, t, geo);
+    py::object vector3 = py::module_::import("openalea.plantgl.all").attr("Vector3");
+    auto lpyVector = [&](const glm::vec3& v) { return vector3(double(v.z), double(v.x), double(v.y)); };
+    size_t k = 0;
+    for (LModule& m : s) {
+        const std::string& name = classes.name(m.cls);
+        if (!Engine::isQuery(name)) continue;
+        if (k >= frames.size()) break;
+        const QueryFrame& f = frames[k++];
+        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+        if (name[1] == 'F') {
+            m.args = py::make_tuple(lpyVector(f.position), lpyVector(f.heading), lpyVector(f.up), lpyVector(f.left));
+            continue;
+        }
+        const glm::vec3 v = name[1] == 'P' ? f.position : name[1] == 'H' ? f.heading : name[1] == 'U' ? f.up : name[1] == 'L' ? f.left : -f.left;
+        if (n == 3) m.args = py::make_tuple(double(v.z), double(v.x), double(v.y));
+        else m.args = py::make_tuple(lpyVector(v));
+    }
+}
+
 }  // namespace
 
 bool pythonAvailable() { return true; }
@@ -305,20 +353,13 @@ Model runModel(std::string_view text, const RunOptions& options) {
         out.derivationLength = engine.derivationLength;
         const int steps = options.steps >= 0 ? options.steps : engine.derivationLength;
         std::vector<LString> every;
+        engine.fillQueries = [&](LString& s) { fillQueries(engine, s, turtleDefaults(lpyModule)); };
         LString s = engine.derive(engine.axiom(), steps, options.keepSteps ? &every : nullptr);
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
         out.derived = engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
-        TurtleDefaults d;
+        TurtleDefaults d = turtleDefaults(lpyModule);
         py::dict state = lpyModule.attr("_state");
-        if (!state["angle"].is_none()) d.angle = state["angle"].cast<double>();
-        d.materials = defaultMaterials();
-        for (auto item : py::dict(state["materials"])) {
-            const int i = item.first.cast<int>();
-            if (i < 0 || i > 255) continue;
-            if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
-            d.materials[size_t(i)] = materialColour(item.second);
-        }
         std::vector<std::string> leftOut;
         auto g = drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
         for (const auto& name : leftOut)

@@ -500,15 +500,127 @@ _geometry_fields = {
     'Disc': ('radius', 'slices'), 'Paraboloid': ('radius', 'height', 'shape', 'solid', 'slices', 'stacks'),
     'Scaled': ('scale', 'geometry'), 'Translated': ('translation', 'geometry'),
     'AxisRotated': ('axis', 'angle', 'geometry'), 'EulerRotated': ('azimuth', 'elevation', 'roll', 'geometry'),
-    'Oriented': ('primary', 'secondary', 'geometry'), 'Shape': ('geometry', 'appearance', 'id'), 'Scene': (),
+    'Oriented': ('primary', 'secondary', 'geometry'), 'Shape': ('geometry', 'appearance', 'id'),
     'QuadSet': ('pointList', 'indexList'), 'TriangleSet': ('pointList', 'indexList'), 'Polyline': ('pointList',),
     'BezierPatch': ('ctrlPointMatrix',), 'Extrusion': ('axis', 'crossSection', 'scale'), 'Revolution': ('profile',),
     'Swung': ('profileList', 'angleList'), 'Group': ('geometryList',), 'Text': ('string', 'position'), 'Font': (),
     'ImageTexture': ('name', 'filename'), 'Texture2D': ('image', 'transformation'), 'Texture2DTransformation': (),
     'Discretizer': (), 'PointSet': ('pointList', 'colorList'),
+    'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
+                       'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
 }
 for _name, _f in _geometry_fields.items():
     globals()[_name] = type(_name, (_Geometry,), {'_fields': _f})
+
+
+class Scene(list):
+    """PlantGL's Scene: a list of shapes (`sc += Shape(...)`), kept, not drawn by Sprout."""
+
+    def __init__(self, shapes=()):
+        list.__init__(self, shapes if isinstance(shapes, (list, tuple)) else [])
+
+    def __iadd__(self, o):
+        if isinstance(o, (list, tuple)):
+            self.extend(o)
+        else:
+            self.append(o)
+        return self
+
+    def add(self, shape):
+        self.append(shape)
+
+
+class BoundingBox:
+    def __init__(self, lower=(0, 0, 0), upper=(0, 0, 0)):
+        self.lowerLeftCorner, self.upperRightCorner = Vector3(*tuple(lower)[:3]), Vector3(*tuple(upper)[:3])
+
+    def getXMin(self):
+        return self.lowerLeftCorner.x
+
+    def getCenter(self):
+        return (self.lowerLeftCorner + self.upperRightCorner) / 2
+
+    def getSize(self):
+        return (self.upperRightCorner - self.lowerLeftCorner) / 2
+
+    def contains(self, p):
+        p = tuple(p)
+        return all(self.lowerLeftCorner[k] <= p[k] <= self.upperRightCorner[k] for k in range(3))
+
+
+class Grid3Indexing:
+    """PlantGL's regular 3D grid of voxels (voxel size, lower and upper corners): cell ids,
+    indices (i, j, k), centres, and the voxels in a ball or a cone. Id = i + nx * (j + ny * k)."""
+
+    def __init__(self, voxelsize=(1, 1, 1), origin=(0, 0, 0), upper=(10, 10, 10)):
+        self._size = [max(float(v), 1e-9) for v in (tuple(voxelsize) if hasattr(voxelsize, '__len__') else (voxelsize,) * 3)[:3]]
+        self._lo = [float(v) for v in tuple(origin)[:3]]
+        hi = [float(v) for v in tuple(upper)[:3]]
+        self._dims = [max(1, int(_math.ceil((hi[k] - self._lo[k]) / self._size[k] - 1e-9))) for k in range(3)]
+
+    def size(self):
+        return self._dims[0] * self._dims[1] * self._dims[2]
+
+    def dimensions(self):
+        return Vector3(*self._dims)
+
+    getGridSize = dimensions
+
+    def getVoxelSize(self):
+        return Vector3(*self._size)
+
+    def getLowerCorner(self):
+        return Vector3(*self._lo)
+
+    def getUpperCorner(self):
+        return Vector3(*[self._lo[k] + self._dims[k] * self._size[k] for k in range(3)])
+
+    def cellId(self, index):
+        i, j, k = (int(v) for v in tuple(index)[:3])
+        return i + self._dims[0] * (j + self._dims[1] * k)
+
+    def index(self, cid):
+        cid = int(cid)
+        nx, ny = self._dims[0], self._dims[1]
+        return (cid % nx, (cid // nx) % ny, cid // (nx * ny))
+
+    def indexFromPoint(self, p):
+        p = tuple(p)
+        return tuple(min(self._dims[k] - 1, max(0, int(_math.floor((float(p[k]) - self._lo[k]) / self._size[k])))) for k in range(3))
+
+    def cellIdFromPoint(self, p):
+        return self.cellId(self.indexFromPoint(p))
+
+    def getVoxelCenter(self, index):
+        return Vector3(*[self._lo[k] + (int(index[k]) + 0.5) * self._size[k] for k in range(3)])
+
+    def getVoxelCenterFromId(self, cid):
+        return self.getVoxelCenter(self.index(cid))
+
+    def query_voxels_in_ball(self, centre, radius):
+        c = [float(v) for v in tuple(centre)[:3]]
+        lo = self.indexFromPoint([c[k] - radius for k in range(3)])
+        hi = self.indexFromPoint([c[k] + radius for k in range(3)])
+        out = []
+        for k in range(lo[2], hi[2] + 1):
+            for j in range(lo[1], hi[1] + 1):
+                for i in range(lo[0], hi[0] + 1):
+                    v = self.getVoxelCenter((i, j, k))
+                    if sum((v[a] - c[a]) ** 2 for a in range(3)) <= radius * radius:
+                        out.append(self.cellId((i, j, k)))
+        return out
+
+    def query_voxels_in_cone(self, centre, direction, radius, angle):
+        c = Vector3(*tuple(centre)[:3])
+        d = Vector3(*tuple(direction)[:3]).normed()
+        cosmax = _math.cos(angle)
+        out = []
+        for cid in self.query_voxels_in_ball(centre, radius):
+            v = self.getVoxelCenterFromId(cid) - c
+            n = v.norm()
+            if n > 1e-12 and (v * d) / n >= cosmax:
+                out.append(cid)
+        return out
 
 
 class Point3Grid:
