@@ -11,6 +11,7 @@ namespace {
 enum class Op : std::uint8_t {
     Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
     IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
+    Bare,  // the Sprout module, without parameters
 };
 
 struct Mapping {
@@ -30,13 +31,16 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
         {"{", {Op::PolyBegin, "{"}}, {".", {Op::PolyVertex, "."}}, {"}", {Op::PolyEnd, "}"}},
         {"[", {Op::Push, "["}}, {"]", {Op::Pop, "]"}},
+        // Generalized cylinders: the stems between StartGC and EndGC are one smooth tube
+        // (Sprout's cpfg @Gs ... @Ge: each F a control point).
+        {"@Gc", {Op::Bare, "@Gs"}}, {"@Ge", {Op::Bare, "@Ge"}},
     };
     return m;
 }
 
 // Modules that draw nothing in L-Py either (no warning when left out).
 bool silent(const std::string& name) {
-    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F", "@Gc", "@Ge", "@Ts", "@Tp",
+    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F", "@Ts", "@Tp",
                                             "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "EndGuide", "@2D", "@3D",
                                             "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
                                             "TextureTransformation", "x", "or", "=]", "?I", "new"};
@@ -170,7 +174,8 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
             case Op::Vertical:
             case Op::PolyBegin:
             case Op::PolyVertex:
-            case Op::PolyEnd: w.put(mp.sprout, {}); break;
+            case Op::PolyEnd:
+            case Op::Bare: w.put(mp.sprout, {}); break;
             case Op::Push:
                 stack.push_back(st);
                 w.put("[", {});

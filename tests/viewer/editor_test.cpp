@@ -90,7 +90,7 @@ std::string spans(FileKind kind, std::string_view line, LineState& state) {
     std::vector<Span> out;
     highlightLine(kind, line, state, out);
     static const char* names[] = {"plain", "comment", "setting", "keyword", "module", "bracket", "number",
-                                  "parameter", "operator", "arrow", "probability"};
+                                  "parameter", "operator", "arrow", "probability", "string"};
     std::string s;
     for (const Span& sp : out)
         s += std::string(s.empty() ? "" : " ") + names[int(sp.token)] + ":" +
@@ -125,6 +125,20 @@ TEST(Highlight, CpfgCommentsOverLinesDefinesAndKeywords) {
     EXPECT_EQ(spans(FileKind::Cpfg, "A(x) : {y = x+1;} x > 0 --> F(y)", state),
               "module:A bracket:( parameter:x bracket:) operator:: bracket:{ parameter:y operator:= parameter:x operator:+ number:1 "
               "operator:; bracket:} parameter:x operator:> number:0 arrow:--> module:F bracket:( parameter:y bracket:)");
+}
+
+// An L-Py model: its L-system lines as the cpfg family's, the rest as Python.
+TEST(Highlight, LpyPythonAroundTheLsystem) {
+    EXPECT_EQ(spans(FileKind::Lpy, "def grow(x):  # a # comment"),
+              "keyword:def parameter:grow bracket:( parameter:x bracket:) operator:: comment:# a # comment");
+    EXPECT_EQ(spans(FileKind::Lpy, "name = 'a#b' if x // 2 else None"),
+              "parameter:name operator:= string:'a#b' keyword:if parameter:x operator:/ operator:/ number:2 keyword:else keyword:None");
+    EXPECT_EQ(spans(FileKind::Lpy, "    nproduce F(l) [ +A ]"),
+              "keyword:nproduce module:F bracket:( parameter:l bracket:) bracket:[ module:+ module:A bracket:]");
+    EXPECT_EQ(spans(FileKind::Lpy, "Axiom: A(1)"), "setting:Axiom: module:A bracket:( number:1 bracket:)");
+    EXPECT_EQ(spans(FileKind::Lpy, "derivation length: N + 1"), "setting:derivation length: parameter:N operator:+ number:1");
+    EXPECT_EQ(spans(FileKind::Lpy, "A(x) --> B(x)"), "module:A bracket:( parameter:x bracket:) arrow:--> module:B bracket:( parameter:x bracket:)");
+    EXPECT_EQ(spans(FileKind::Lpy, "production:"), "keyword:production operator::");
 }
 
 TEST(Highlight, LparserFractintIfsForest) {

@@ -13,6 +13,7 @@
 #include <array>
 
 #include "app/image.hpp"
+#include "lpy/host.hpp"
 
 namespace sprout {
 namespace {
@@ -236,6 +237,36 @@ TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
     EXPECT_EQ(printed[0].rfind("plant=", 0), 0u) << printed[0];
     EXPECT_NE(printed[0].find(" species=env_light_tree "), std::string::npos) << printed[0];
     EXPECT_EQ(printed[1], "module=none");
+}
+
+// Trust before code runs, in the window: an L-Py file whose preamble writes a file is shown
+// with the trust bar and runs nothing until "Trust and run"; the answer is remembered.
+TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("trust_window");
+    const fs::path marker = dir / "written-by-the-model", model = dir / "model.lpy";
+    fs::remove(marker);
+    std::ofstream(model) << "import os\nopen('" << marker.string() << "', 'w').write('ran')\n"
+                         << "Axiom: _(0.3) F(3) [ + F(2) ] [ - F(2) ] F(2)\nderivation length: 0\nproduction:\nendlsystem\n";
+    const std::string before = (dir / "before.png").string(), after = (dir / "after.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1200x800",
+                                   "wait\ntrust ?\nscreenshot " + before + " 400x300\ntrust yes\nwait\nscreenshot " + after +
+                                       " 400x300\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=asking", "python=allowed"}));
+    EXPECT_TRUE(fs::exists(marker)) << "trusted, the model ran";
+    auto stems = [](const Image& img) {  // L-Py's default material 1, brown
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < img.rgba.size(); i += 4)
+            n += img.rgba[i] > 90 && img.rgba[i] < 220 && img.rgba[i + 1] < 150 && img.rgba[i + 2] < 80 && img.rgba[i] > img.rgba[i + 2] + 50;
+        return n;
+    };
+    EXPECT_LT(stems(load(before)), 20u) << "nothing is drawn before the model is trusted";
+    EXPECT_GT(stems(load(after)), 500u) << "the trusted model is drawn";
+    // Opened again: remembered by its text's hash, it runs without asking.
+    fs::remove(marker);
+    EXPECT_EQ(runScript(dir, model.string(), "wait\ntrust ?\nquit\n"), std::vector<std::string>{"python=allowed"});
+    EXPECT_TRUE(fs::exists(marker));
 }
 
 // The derivation inspector of the context-sensitive signal (step 2 is F [ + F B F ] F): the

@@ -48,6 +48,7 @@ std::uint32_t Editor::colour(Token t) {
         case Token::Operator: return IM_COL32(200, 200, 200, 255);
         case Token::Arrow: return IM_COL32(255, 120, 120, 255);
         case Token::Probability: return IM_COL32(255, 200, 120, 255);
+        case Token::String: return IM_COL32(230, 205, 150, 255);
     }
     return IM_COL32_WHITE;
 }

@@ -1,5 +1,6 @@
 #include "app/viewer/editor/highlight.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <string>
 
@@ -44,6 +45,55 @@ struct Lexer {
                 int j = i;
                 while (j < end && alnum(s[size_t(j)])) ++j;
                 add(i, j, Token::Parameter);
+                i = j;
+            } else if (c == '(' || c == ')' || c == '{' || c == '}' || c == '[' || c == ']') {
+                add(i, i + 1, Token::Bracket);
+                ++i;
+            } else {
+                add(i, i + 1, Token::Operator);
+                ++i;
+            }
+        }
+    }
+    // A quoted string from i (at its quote) to its closing quote or the end; its end.
+    int quoted(int i, int end) {
+        const char q = s[size_t(i)];
+        int j = i + 1;
+        for (; j < end && s[size_t(j)] != q; ++j)
+            if (s[size_t(j)] == '\\') ++j;
+        j = std::min(end, j + 1);
+        add(i, j, Token::String);
+        return j;
+    }
+    // Python (an L-Py model's preamble, rule bodies, INITIALISATION part): keywords, names,
+    // numbers, strings; `produce` / `nproduce` followed by the lstring they make.
+    void python(int i, int end) {
+        static const std::string_view keywords[] = {
+            "def", "class", "import", "from", "as", "return", "if", "elif", "else", "for", "while", "in", "not", "and", "or",
+            "is", "global", "nonlocal", "lambda", "True", "False", "None", "pass", "break", "continue", "with", "try", "except",
+            "finally", "raise", "assert", "yield", "del"};
+        while (i < end) {
+            const char c = s[size_t(i)];
+            if (c == ' ' || c == '\t') {
+                ++i;
+            } else if (c == '\'' || c == '"') {
+                i = quoted(i, end);
+            } else if (digit(c) || (c == '.' && i + 1 < end && digit(s[size_t(i + 1)]))) {
+                const int j = number(i);
+                add(i, j, Token::Number);
+                i = j;
+            } else if (alpha(c)) {
+                int j = i;
+                while (j < end && alnum(s[size_t(j)])) ++j;
+                const std::string_view word = s.substr(size_t(i), size_t(j - i));
+                if (word == "produce" || word == "nproduce" || word == "nsproduce") {
+                    add(i, j, Token::Keyword);
+                    modules(j, end);
+                    return;
+                }
+                bool keyword = false;
+                for (std::string_view k : keywords) keyword = keyword || k == word;
+                add(i, j, keyword ? Token::Keyword : Token::Parameter);
                 i = j;
             } else if (c == '(' || c == ')' || c == '{' || c == '}' || c == '[' || c == ']') {
                 add(i, i + 1, Token::Bracket);
@@ -175,8 +225,23 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     const int n = int(line.size());
     int end = n;
     int begin = 0;
-    const bool cpfg = cpfgFamily(kind);
-    if (cpfg) {
+    const bool cpfg = cpfgFamily(kind) && kind != FileKind::Lpy;
+    if (kind == FileKind::Lpy) {
+        // Python's comments: '#' outside a string.
+        char quote = 0;
+        for (int i = 0; i < n; ++i) {
+            const char c = line[size_t(i)];
+            if (quote) {
+                if (c == '\\') ++i;
+                else if (c == quote) quote = 0;
+            } else if (c == '\'' || c == '"') {
+                quote = c;
+            } else if (c == '#') {
+                end = i;
+                break;
+            }
+        }
+    } else if (cpfg) {
         // Block comments carry over lines; // runs to the end.
         if (state.inBlockComment) {
             const size_t close = line.find("*/");
@@ -214,8 +279,43 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     while (begin < end && (line[size_t(begin)] == ' ' || line[size_t(begin)] == '\t')) ++begin;
     const std::string_view body = line.substr(size_t(begin), size_t(end - begin));
     if (!body.empty()) switch (kind) {
-        case FileKind::Cpfg:
         case FileKind::Lpy: {
+            // The L-system's lines (sections, settings, rules written with an arrow, module
+            // declarations) as the cpfg family's; everything else is Python.
+            static const char* words[] = {"endlsystem", "decomposition", "homomorphism", "production", "interpretation",
+                                          "module", "endgroup", "group", "consider", "ignore"};
+            bool keyword = false;
+            for (const char* w : words) {
+                const std::string_view ws(w);
+                if (body.compare(0, ws.size(), ws) == 0 && (body.size() == ws.size() || !alnum(body[ws.size()]))) {
+                    lx.add(begin, begin + int(ws.size()), Token::Keyword);
+                    int j = begin + int(ws.size());
+                    while (j < end && line[size_t(j)] == ' ') ++j;
+                    if (j < end && line[size_t(j)] == ':') lx.add(j, j + 1, Token::Operator), ++j;
+                    lx.modules(j, end);
+                    keyword = true;
+                    break;
+                }
+            }
+            if (keyword) break;
+            static const char* settings[] = {"Axiom:", "derivation length:", "maximum depth:", "decomposition maximum depth:"};
+            bool isSetting = false;
+            for (const char* w : settings) isSetting = isSetting || body.rfind(w, 0) == 0;
+            size_t len = 0;
+            const size_t at = arrow(body, len);
+            if (isSetting) {
+                const int colon = begin + int(body.find(':'));
+                lx.add(begin, colon + 1, Token::Setting);
+                if (body.rfind("Axiom:", 0) == 0) lx.modules(colon + 1, end);
+                else lx.python(colon + 1, end);
+            } else if (at != std::string_view::npos && line.substr(size_t(begin) + at, len) == "-->") {
+                rule(lx, begin, end, size_t(begin) + at, len);
+            } else {
+                lx.python(begin, end);
+            }
+            break;
+        }
+        case FileKind::Cpfg: {
             if (body[0] == '#') {  // #define, #include
                 int j = begin + 1;
                 while (j < end && alpha(line[size_t(j)])) ++j;

@@ -24,6 +24,7 @@ enum class Token : std::uint8_t {
     Operator,     // < > : and the operators of expressions
     Arrow,        // -> --> = (Lparser, Fractint)
     Probability,  // the ": 0.5" after a successor
+    String,       // a quoted string (an L-Py model's Python)
 };
 
 struct Span {

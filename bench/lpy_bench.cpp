@@ -1,0 +1,81 @@
+// L-Py rules run by Python (lpy/): rule applications per second of the same doubling model
+//   A(x) --> A(x + 1) A(x * 0.5)          (every module matches; 2^n - 1 matches in n steps)
+// written three ways, measured in the same run:
+//   - L-Py, a produce-only rule (one Python call per match today: no native path yet);
+//   - L-Py, the same rule with a Python statement in its body;
+//   - Sprout's own grammar (.lsys) with the same rule: the native derivation, the baseline
+//     a compiled produce-only rule would run at.
+// Prints matches per second for each and the ratio of the native one to the Python ones.
+// The best of three runs each.
+//
+//   build/bench/lpy_bench [STEPS]      (default 18: 262,143 matches)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "lpy/host.hpp"
+
+namespace {
+
+using namespace sprout;
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double lpyRun(const std::string& text, int steps) {
+    double best = 1e18;
+    for (int run = 0; run < 3; ++run) {
+        lpy::RunOptions o;
+        o.steps = steps;
+        const auto t0 = std::chrono::steady_clock::now();
+        lpy::Model m = lpy::runModel(text, o);
+        const double s = seconds(t0);
+        if (!m.ok()) {
+            for (const auto& d : m.diagnostics) std::fprintf(stderr, "%s\n", formatDiagnostic(d, "bench.lpy").c_str());
+            std::exit(1);
+        }
+        best = std::min(best, s);
+    }
+    return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (!lpy::pythonAvailable()) {
+        std::printf("built without Python: nothing to measure\n");
+        return 0;
+    }
+    const int steps = argc > 1 ? std::clamp(std::atoi(argv[1]), 1, 24) : 18;
+    const double matches = double((1ull << steps) - 1);
+    const std::string produceOnly = "Axiom: A(1)\nderivation length: 1\nproduction:\nA(x) --> A(x + 1) A(x * 0.5)\nendlsystem\n";
+    const std::string pythonBody =
+        "Axiom: A(1)\nderivation length: 1\nproduction:\nA(x) :\n    y = x + 1\n    produce A(y) A(x * 0.5)\nendlsystem\n";
+    const double produceS = lpyRun(produceOnly, steps);
+    const double bodyS = lpyRun(pythonBody, steps);
+
+    auto g = parse("axiom: A(1)\nA(x) -> A(x + 1) A(x * 0.5)\n", parseOptionsFor(FileKind::Lsys, "")).grammar;
+    if (!g) {
+        std::fprintf(stderr, "the native grammar does not parse\n");
+        return 1;
+    }
+    double nativeS = 1e18;
+    for (int run = 0; run < 3; ++run) {
+        Derivation d(g);
+        const auto t0 = std::chrono::steady_clock::now();
+        if (!d.deriveTo(steps).ok()) return 1;
+        nativeS = std::min(nativeS, seconds(t0));
+    }
+    std::printf("lpy_bench: %d steps, %.0f rule applications each way (best of 3)\n", steps, matches);
+    std::printf("  L-Py, produce-only rule (Python call per match):  %8.3f s  %12.0f matches/s\n", produceS, matches / produceS);
+    std::printf("  L-Py, rule with a Python statement in its body:   %8.3f s  %12.0f matches/s\n", bodyS, matches / bodyS);
+    std::printf("  Sprout native derivation of the same rule (.lsys): %8.3f s  %12.0f matches/s\n", nativeS, matches / nativeS);
+    std::printf("  ratio native / produce-only Python path: %.0fx (goal: 100x once produce-only rules are compiled)\n", produceS / nativeS);
+    std::printf("  ratio native / Python-body path:         %.0fx\n", bodyS / nativeS);
+    return 0;
+}
