@@ -12,6 +12,7 @@ enum class Op : std::uint8_t {
     Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
     IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
     Bare,  // the Sprout module, without parameters
+    Tropism, Elasticity,
 };
 
 struct Mapping {
@@ -34,13 +35,16 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         // Generalized cylinders: the stems between StartGC and EndGC are one smooth tube
         // (Sprout's cpfg @Gs ... @Ge: each F a control point).
         {"@Gc", {Op::Bare, "@Gs"}}, {"@Ge", {Op::Bare, "@Ge"}},
+        // Tropism: before each F and f, H turns towards the tropism vector by the elasticity
+        // times the angle between them (Sprout's @T with a direction).
+        {"@Tp", {Op::Tropism}}, {"@Ts", {Op::Elasticity}},
     };
     return m;
 }
 
 // Modules that draw nothing in L-Py either (no warning when left out).
 bool silent(const std::string& name) {
-    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F", "@Ts", "@Tp",
+    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F",
                                             "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "EndGuide", "@2D", "@3D",
                                             "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
                                             "TextureTransformation", "x", "or", "=]", "?I", "new"};
@@ -117,9 +121,14 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
     struct State {
         double width;
         int colour;
+        double tropism[3] = {0, 0, 1};  // L-Py's axes
+        double elasticity = 0;
     };
     std::vector<State> stack;
     State st{d.width, std::clamp(d.colour, 0, colours - 1)};
+    auto bend = [&] {  // L-Py's x y z are Sprout's z x y
+        if (st.elasticity > 0) w.put("@T", {st.elasticity, st.tropism[1], st.tropism[2], st.tropism[0], 1});
+    };
     w.put("!", {2 * st.width});
     w.put(";", {double(st.colour)});
     std::set<std::string> leftOut;
@@ -155,6 +164,7 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
         switch (mp.op) {
             case Op::Forward:
             case Op::Move:
+                bend();
                 if (p.empty()) w.put(mp.sprout, {});
                 else w.put(mp.sprout, {p[0]});
                 if (mp.op == Op::Forward && p.size() >= 2) setWidth(p[1]);  // a frustum up to the top radius
@@ -162,8 +172,8 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
             case Op::StepForward: {  // nF(length, dl): F(dl) repeated, then the rest
                 if (p.size() < 2 || !(p[1] > 0) || !(p[0] >= 0)) break;
                 const double steps = std::min(std::floor(p[0] / p[1]), 100000.0);
-                for (double k = 0; k < steps; ++k) w.put("F", {p[1]});
-                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) w.put("F", {rest});
+                for (double k = 0; k < steps; ++k) bend(), w.put("F", {p[1]});
+                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) bend(), w.put("F", {rest});
                 break;
             }
             case Op::Turn:
@@ -230,7 +240,14 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
                     leftOut.insert(name + " with a Material");
                 }
                 break;
-            case Op::Sphere:
+            case Op::Tropism:
+                if (p.size() >= 3) st.tropism[0] = p[0], st.tropism[1] = p[1], st.tropism[2] = p[2];
+                else if (p.empty()) st.tropism[0] = 0, st.tropism[1] = 0, st.tropism[2] = 1;
+                break;
+            case Op::Elasticity:
+                st.elasticity = p.empty() ? 0.0 : std::clamp(p[0], 0.0, 1.0);
+                break;
+                        case Op::Sphere:
                 w.put("@O", {p.empty() ? st.width : p[0]});
                 break;
             case Op::Circle:

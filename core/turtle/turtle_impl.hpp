@@ -345,7 +345,12 @@ private:
                 t.width *= p ? float(*p) : 1.0f;
                 if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
                 break;
-            case Act::Gravity: bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f); break;
+            case Act::Gravity:
+                // @T(e): Lparser's bend towards gravity now; @T(e, x, y, z, 1): L-Py's tropism
+                // before a step, H turned towards (x, y, z) by e times the angle between them.
+                if (p && arity >= 5 && p[4] != 0) bendByFraction(t, glm::vec3(float(p[1]), float(p[2]), float(p[3])), float(p[0]));
+                else bendTowards(t, glm::vec3(0, -1, 0), p ? float(*p) : 0.2f);
+                break;
             case Act::Leaf:
             case Act::Petal:
             case Act::Sphere:
@@ -482,6 +487,22 @@ private:
         if (mag < 1e-6f) return;
         axis /= mag;
         float a = e * mag;
+        t.H = fromGlm(rodrigues(h, axis, a));
+        t.L = fromGlm(rodrigues(toGlm(t.L), axis, a));
+    }
+
+    // L-Py's elasticity (PlantGL's turtle): H turns towards `towards` by e times the angle
+    // between them.
+    void bendByFraction(State& t, glm::vec3 towards, float e) {
+        const float n = glm::length(towards);
+        if (!(n > 1e-9f) || !(e > 0)) return;
+        towards /= n;
+        glm::vec3 h = toGlm(t.H);
+        glm::vec3 axis = glm::cross(h, towards);
+        const float mag = glm::length(axis);
+        if (mag < 1e-6f) return;
+        axis /= mag;
+        const float a = std::min(e, 1.0f) * std::atan2(mag, glm::dot(h, towards));
         t.H = fromGlm(rodrigues(h, axis, a));
         t.L = fromGlm(rodrigues(toGlm(t.L), axis, a));
     }

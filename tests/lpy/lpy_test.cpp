@@ -151,6 +151,26 @@ TEST(Lpy, TheModelIsDrawnInLpysFrame) {
     EXPECT_NEAR(geo.cylinders[1].end.y, 2 + 0.5, 1e-4);
 }
 
+// Elasticity and tropism: before each step H turns towards the tropism vector by e times the
+// angle between them (L-Py's x is Sprout's z, its z Sprout's y).
+TEST(Lpy, TropismBendsBeforeEachStep) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::Model m = lpy::runModel("Axiom: @Tp(1, 0, 0) @Ts(0.5) F [ Elasticity(0) F ] F\nderivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    Geometry geo;
+    TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+    ASSERT_EQ(geo.cylinders.size(), 3u);
+    const float s45 = std::sqrt(0.5f);
+    EXPECT_NEAR(geo.cylinders[0].end.z, s45, 1e-4f);  // 45 degrees: half of 90
+    EXPECT_NEAR(geo.cylinders[0].end.y, s45, 1e-4f);
+    // In the branch, no elasticity: straight on at 45 degrees.
+    EXPECT_NEAR(geo.cylinders[1].end.z - geo.cylinders[1].start.z, s45, 1e-4f);
+    // After it, elasticity 0.5 again: half of the 45 degrees left, at 67.5 degrees.
+    EXPECT_NEAR(geo.cylinders[2].end.z - geo.cylinders[2].start.z, std::sin(67.5f * 3.14159265f / 180), 1e-4f);
+    EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+}
+
 // L-Py's own examples: each opens and draws, or names what it needs at its line.
 TEST(Lpy, CorpusOpensAndDraws) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
