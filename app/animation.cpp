@@ -146,13 +146,14 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     }
     const std::string target = wantsVideo && !result.video ? out.substr(0, out.find_last_of('.')) + ".png" : out;
 
-    const int n = o.iterations.value_or(grammar->settings.iterations);
+    const bool kept = !ao.steps.empty();
+    const int n = kept ? int(ao.steps.size()) - 1 : o.iterations.value_or(grammar->settings.iterations);
     DeriveOptions dopts;
     dopts.seed = o.seed;
     dopts.limits = o.limits;
     dopts.trackAges = ao.kind == AnimationKind::Growth;
     Derivation derivation(grammar, dopts);
-    DeriveOutcome outcome = derivation.deriveTo(n);
+    DeriveOutcome outcome = derivation.deriveTo(kept ? 0 : n);
     if (!outcome.ok()) {
         error = outcome.message;
         return false;
@@ -168,6 +169,12 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     // The camera stays where the grown plant is framed.
     Geometry geometry;
     auto interpretStep = [&](int step, float fraction) {
+        if (kept) {  // a kept step is drawn as it is
+            const Grammar& g = *ao.steps[size_t(step)];
+            TurtleOptions t{0, derivation.seed(), nullptr};
+            interpret(g.axiom, g, t, geometry);
+            return;
+        }
         auto ages = derivation.ages(step);
         TurtleOptions t{step, derivation.seed(), ages ? ages->data() : nullptr};
         if (ages && fraction < 1.0f) {

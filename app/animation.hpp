@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/snapshot.hpp"
 
@@ -16,6 +17,9 @@ struct AnimationOptions {
     int frames = 0;  // 0: growth half a second per step, turntable 5 seconds
     int fps = 24;
     std::string recipe;  // grammar text each PNG frame carries
+    // An L-Py model's kept steps (step 0 .. n, each a grammar whose axiom is the string to
+    // draw): growth shows them in turn instead of deriving `grammar`.
+    std::vector<std::shared_ptr<const Grammar>> steps;
     std::function<void(int frame, int frames)> progress;
 };
 

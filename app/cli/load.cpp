@@ -104,11 +104,13 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOp
         lpy::RunOptions ro;
         ro.path = includePath;
         ro.steps = options.steps;
+        ro.keepSteps = options.keepSteps;
         lpy::Model model = lpy::runModel(text, ro);
         for (const auto& d : model.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
         if (!model.ok()) return std::nullopt;
         out.grammar = model.drawable;
         out.derived = std::move(model.derived);
+        out.steps = std::move(model.steps);
         out.ranPython = true;
         out.text = std::move(text);
         return out;

@@ -2,6 +2,7 @@
 // Loading a grammar for a subcommand: a file path, "-" for standard input, or a preset name.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/derive/derive.hpp"
 #include "core/language/file_kind.hpp"
@@ -19,11 +20,13 @@ struct LoadedGrammar {
     // `derived` the string as L-Py writes it.
     bool ranPython = false;
     std::string derived;
+    std::vector<std::shared_ptr<const Grammar>> steps;  // LoadOptions::keepSteps: step 0 .. n, each to draw
 };
 
 struct LoadOptions {
     int steps = -1;       // an L-Py model's derivation length (-1: the file's)
     bool python = true;   // false (--no-python): an L-Py model's Python is refused
+    bool keepSteps = false;  // an L-Py model: keep every step's drawing (growth videos)
 };
 
 // Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors

@@ -256,6 +256,7 @@ int runRender(int argc, char** argv) {
     LoadOptions lo;
     lo.steps = n ? int(*n) : -1;
     lo.python = !args.flag("--no-python");
+    lo.keepSteps = animate == AnimationKind::Growth;
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);
@@ -275,6 +276,7 @@ int runRender(int argc, char** argv) {
         if (frames) ao.frames = int(*frames);
         if (fps) ao.fps = int(*fps);
         ao.recipe = recipe;
+        ao.steps = loaded->steps;
         const bool tty = isatty(2);
         if (tty)
             ao.progress = [&](int k, int total) {

@@ -337,4 +337,26 @@ TEST(Animation, PngFramesWithoutFfmpegShowThePlantGrowing) {
     EXPECT_GT(plant[4], 300);
 }
 
+// An L-Py model grows through the steps its run kept (its Python runs once, not per frame).
+TEST(Animation, AnLpyModelGrowsThroughItsSteps) {
+    std::string base = temp("lpy_growth");
+    Result r = runSprout("render lpy_flowering_plant --animate growth --frames 4 --size 160x120 -o " + base + ".png");
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::vector<::sprout::Image> frames(4);
+    for (int k = 0; k < 4; ++k) {
+        std::string frame = base + "_000" + std::to_string(k + 1) + ".png", error;
+        ASSERT_TRUE(::sprout::readPng(frame, frames[size_t(k)], error)) << frame << ": " << error;
+        std::filesystem::remove(frame);
+    }
+    std::vector<long> grown;
+    for (const auto& f : frames) {
+        long differ = 0;
+        for (size_t i = 0; i < f.rgba.size(); i += 4)
+            differ += std::abs(int(f.rgba[i]) - int(frames[0].rgba[i])) + std::abs(int(f.rgba[i + 1]) - int(frames[0].rgba[i + 1])) > 30;
+        grown.push_back(differ);
+    }
+    for (int k = 1; k < 4; ++k) EXPECT_GT(grown[size_t(k)], grown[size_t(k - 1)]) << "frame " << k + 1;
+    EXPECT_GT(grown[3], 300);
+}
+
 }  // namespace
