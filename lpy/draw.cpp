@@ -110,7 +110,7 @@ std::vector<std::uint32_t> defaultMaterials() {
 }
 
 std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings,
-                                  bool queries) {
+                                  bool queries, std::vector<std::uint32_t>* sourceOf) {
     auto g = std::make_shared<Grammar>();
     g->settings.angle = {d.angle, 0};
     g->settings.step = {1, 0};
@@ -134,7 +134,10 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
     std::set<std::string> leftOut;
     const auto& map = mappings();
     std::vector<double> p;
-    for (const LModule& m : s) {
+    for (size_t k = 0; k < s.size(); ++k) {
+        // What the module before wrote (the first pieces, width and colour: the first module).
+        if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(k == 0 ? 0 : k - 1));
+        const LModule& m = s[k];
         const std::string& name = classes.name(m.cls);
         if (queries && Engine::isQuery(name)) {
             w.put("?P", {});
@@ -260,6 +263,7 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
             case Op::Skip: break;
         }
     }
+    if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(s.empty() ? 0 : s.size() - 1));
     if (warnings)
         for (const auto& name : leftOut) warnings->push_back(name);
     return g;

@@ -386,6 +386,10 @@ bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, L
             const Rule& r = m_tr.rules[size_t(pick & ~(1 << 30))];
             LString result;
             if (applies(r, s, i, forward, out, consumed, result)) {
+                // A production's modules come from the module it rewrote; a decomposition's or
+                // an interpretation's from where that module came from (the same step's string).
+                const std::uint32_t parent = kind == RuleKind::Production ? std::uint32_t(i) : s[i].parent;
+                for (LModule& m : result) m.rule = pick & ~(1 << 30), m.parent = parent;
                 if (forward) out.insert(out.end(), std::make_move_iterator(result.begin()), std::make_move_iterator(result.end()));
                 else out.insert(out.end(), std::make_move_iterator(result.rbegin()), std::make_move_iterator(result.rend()));
                 return true;
@@ -429,6 +433,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
                 continue;
             }
             out.push_back(in[i]);
+            out.back().rule = -1, out.back().parent = std::uint32_t(i);
             ++i;
             if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
         }
@@ -441,6 +446,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
                 continue;
             }
             out.push_back(in[i]);
+            out.back().rule = -1, out.back().parent = std::uint32_t(i);
         }
         std::reverse(out.begin(), out.end());
     }
@@ -536,9 +542,12 @@ bool Engine::isQuery(const std::string& name) {
 }
 
 LString Engine::interpret(const LString& s) {
+    // Each module of the result knows its module in `s` (parent), and the rule that drew it.
+    LString in = s;
+    for (size_t i = 0; i < in.size(); ++i) in[i].parent = std::uint32_t(i), in[i].rule = -1;
     const int k = kindIndex(RuleKind::Interpretation);
-    if (!m_hasKind[k]) return s;
-    return decompose(s, m_depth[k], RuleKind::Interpretation);
+    if (!m_hasKind[k]) return in;
+    return decompose(std::move(in), m_depth[k], RuleKind::Interpretation);
 }
 
 std::string Engine::text(const LString& s) const {

@@ -2,6 +2,7 @@
 // L-Py's derivation (L-Py's src/cpp/lsystem.cpp, described in ../shared/lpy-notes.md and the
 // L-Py documentation): a string of modules whose parameters are Python values, rewritten by
 // rules whose bodies are Python functions. Runs with the GIL held.
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -20,6 +21,11 @@ namespace py = pybind11;
 struct LModule {
     int cls = 0;
     py::tuple args;  // empty when the module has none
+    // Where it came from ("why this branch?"): the rule that made it at this step (an index
+    // of Translation::rules; -1 copied unchanged or made by Python), and its module in the
+    // step before (in the string an interpretation read, for an interpreted module).
+    std::int32_t rule = -1;
+    std::uint32_t parent = 0;
 };
 using LString = std::vector<LModule>;
 

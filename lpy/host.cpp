@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -278,6 +279,45 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
     return d;
 }
 
+// The kept steps as Sprout's derivation record: module names with their numbers, and each
+// module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
+DerivationRecord recordOf(const std::vector<LString>& every, const Translation& tr) {
+    auto g = std::make_shared<Grammar>();
+    for (const Rule& r : tr.rules) {
+        Production p;
+        p.line = r.line;
+        g->rules.productions.push_back(std::move(p));
+    }
+    DerivationRecord record;
+    for (size_t k = 0; k < every.size(); ++k) {
+        auto string = std::make_shared<ModuleString>();
+        auto origins = std::make_shared<Origins>();
+        for (size_t i = 0; i < every[k].size(); ++i) {
+            const LModule& m = every[k][i];
+            const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+            const int arity = int(std::min<Py_ssize_t>(n, Alphabet::kMaxArity));
+            auto id = g->alphabet.intern(tr.classes.name(m.cls), arity);
+            if (!id) id = g->alphabet.intern("?", 0);
+            if (!id) break;
+            string->symbols.push_back(*id);
+            for (int a = 0; a < int(g->alphabet[*id].arity); ++a) {
+                PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), a);
+                double x = std::numeric_limits<double>::quiet_NaN();
+                if (PyFloat_Check(v)) x = PyFloat_AS_DOUBLE(v);
+                else if (PyLong_Check(v)) x = PyLong_AsDouble(v);
+                if (PyErr_Occurred()) PyErr_Clear(), x = std::numeric_limits<double>::quiet_NaN();
+                string->params.push_back(x);
+            }
+            origins->parent.push_back(k == 0 ? std::uint32_t(i) : m.parent);
+            origins->rule.push_back(k == 0 || m.rule < 0 || size_t(m.rule) >= tr.rules.size() ? -1 : m.rule);
+        }
+        record.steps.push_back(std::move(string));
+        record.origins.push_back(std::move(origins));
+    }
+    record.grammar = std::move(g);
+    return record;
+}
+
 // L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string
 // with its interpretation rules drawn by a turtle that keeps no picture, and each query
 // module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
@@ -384,7 +424,14 @@ Model runModel(std::string_view text, const RunOptions& options) {
         auto g = drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
         for (const auto& name : leftOut)
             out.diagnostics.push_back({0, 0, "'" + name + "' is not drawn by Sprout yet", Severity::Warning});
-        for (const LString& step : every) out.steps.push_back(drawable(engine.interpret(step), engine.translation().classes, d));
+        for (const LString& step : every) {
+            const LString shown = engine.interpret(step);
+            auto from = std::make_shared<std::vector<std::uint32_t>>();
+            out.steps.push_back(drawable(shown, engine.translation().classes, d, nullptr, false, from.get()));
+            for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
+            out.drawnFrom.push_back(std::move(from));
+        }
+        if (options.keepSteps) out.record = recordOf(every, engine.translation());
         for (auto w : py::list(state["warnings"]))
             out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});
         out.drawable = std::move(g);

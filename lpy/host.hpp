@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/language/diagnostic.hpp"
+#include "core/derive/provenance.hpp"
 #include "core/language/grammar.hpp"
 
 namespace sprout::lpy {
@@ -35,6 +36,12 @@ struct Model {
     // (60 degree turns, materials as the palette).
     std::shared_ptr<const Grammar> drawable;
     std::vector<std::shared_ptr<const Grammar>> steps;  // keepSteps: step 0 (the axiom) .. n
+    // keepSteps, for "why this branch?" and the derivation inspector: each step's modules (by
+    // name, their numbers; NaN for other Python values) and where each came from (the rule,
+    // whose line the record's grammar keeps; its module in the step before), and per step,
+    // for each module of its drawing's axiom, the module of that step it draws.
+    DerivationRecord record;
+    std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> drawnFrom;
     std::string derived;         // the final string as L-Py writes it
     int derivationLength = 0;    // as the file says
     int stepsDone = 0;

@@ -168,8 +168,24 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
     out->modules = string->size();
     auto geometry = std::make_shared<Geometry>();
     TurtleOptions t{0, out->seed, nullptr};
+    // Picking: the model's run kept where each module came from (its rule and line).
+    std::shared_ptr<PickData> pick;
+    const std::size_t step = std::size_t(out->displayStep);
+    if (r.trackOrigins && step < m_lpy->record.steps.size() && step < m_lpy->drawnFrom.size()) {
+        pick = std::make_shared<PickData>();
+        t.segmentModules = &pick->segmentModules;
+        t.surfaceModules = &pick->surfaceModules;
+    }
     interpret(*string, *out->grammar, t, *geometry);
     out->interpretMs = millisSince(t0);
+    if (pick) {  // drawn modules -> the modules of the step that they draw
+        const std::vector<std::uint32_t>& from = *m_lpy->drawnFrom[step];
+        for (auto* list : {&pick->segmentModules, &pick->surfaceModules})
+            for (std::uint32_t& k : *list) k = k < from.size() ? from[k] : 0;
+        pick->record = m_lpy->record;
+        pick->step = out->displayStep;
+        out->pick = std::move(pick);
+    }
     if (m_cancel) {
         out->cancelled = true;
         return out;

@@ -269,6 +269,21 @@ TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
     EXPECT_TRUE(fs::exists(marker));
 }
 
+// "Why this branch?" on an L-Py model: a click names the module, the step that made it and
+// the line of the production; the inspector and the rule highlight work on it too.
+TEST(Window, PickingAnLpyModelNamesItsProductionAndLine) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("pick_lpy");
+    std::ofstream(dir / "model.lpy") << "# picking test\nAxiom: _(0.4) A\nderivation length: 3\nproduction:\n"
+                                        "A --> F(2) [ + B ] A\nB --> F(1) B\nendlsystem\n";
+    // The string: _(0.4) F(2) [ + F(1) F(1) B ] F(2) [ + F(1) B ] F(2) [ + B ] A
+    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1300x860",
+                                   "wait\ntrust yes\nwait\npick 980 750\npick 980 100\ninspect 3 5\nhighlight-rule 6\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "module=F index=1 step=1 rule_line=5", "module=F index=14 step=3 rule_line=5",
+                                                 "inspect: F(1)", "inspect: made at step 3 by line 6", "highlighted=3"}));
+}
+
 // The derivation inspector of the context-sensitive signal (step 2 is F [ + F B F ] F): the
 // '+' was made at step 2 by A > T -> [+FBF] (line 6), whose context matched step 1's T.
 TEST(Window, InspectorSaysWhichContextMatched) {
