@@ -86,6 +86,7 @@ void Engine::bind() {
     m_depth[kindIndex(RuleKind::Decomposition)] = depth("__decomposition_max_depth__", 1);
     m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
+    prepareNative();
 }
 
 LString Engine::parse(std::string_view text) {
@@ -511,6 +512,15 @@ py::object Engine::callHook(const char* name, const LString* s, bool* replaced, 
 LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
     iteration = 0;
     stopRequested = false;
+    if (m_nativeOk) {
+        LString result;
+        if (deriveNative(s, steps, everyStep, result)) {
+            ranNative = true;
+            return result;
+        }
+        if (everyStep) everyStep->clear();  // a value Python would not take: Python from the start
+        iteration = 0;
+    }
     callHook("Start", &s, nullptr, &s);
     if (everyStep) everyStep->push_back(s);
     const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);

@@ -11,6 +11,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "core/language/expr.hpp"
 #include "lpy/host.hpp"
 #include "lpy/translate.hpp"
 
@@ -88,6 +89,11 @@ public:
     static bool isQuery(const std::string& name);
     LString parse(std::string_view lstring);
 
+    // The native path: a model whose rules are all `-->` productions with arithmetic on
+    // their numbers (no contexts, hooks, groups, queries, cuts or Python values) derives
+    // without a Python call per match (lpy/native.cpp). Decided by bind().
+    bool native() const { return m_nativeOk; }
+    bool ranNative = false;  // the last derive() took the native path
 private:
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
@@ -123,6 +129,25 @@ private:
     std::unordered_map<int, Index> m_index[3];  // per kind: group -> index
     bool m_hasKind[3] = {false, false, false};
     bool m_queryRules = false;  // a production's header has a query module
+    // The native path's rules: the class and arity they match, the modules they make with
+    // their arguments compiled (Sprout's expressions on the matched numbers).
+    struct NativeOut {
+        int cls = 0;
+        std::vector<Expr> args;
+        std::vector<bool> isFloat;           // per argument: a float whatever its inputs
+        std::vector<std::vector<int>> used;  // per argument: the parameters it reads
+    };
+    struct NativeRule {
+        int cls = 0, arity = 0, index = 0;
+        std::vector<NativeOut> outs;
+    };
+    std::vector<NativeRule> m_native;
+    std::vector<std::vector<int>> m_nativeByClass;
+    bool m_nativeOk = false;
+    void prepareNative();
+    // Derives `steps` steps natively; false when a value is not a finite number (Python would
+    // have raised, or the axiom holds other values): then nothing is derived.
+    bool deriveNative(const LString& axiom, int steps, std::vector<LString>* everyStep, LString& result);
     int m_depth[3] = {1, 1, 1};
     LString m_buffer;
     bool m_produced = false;

@@ -195,8 +195,26 @@ void start() {
     });
 }
 
+// A column Python counted on the translated line (a `-->` rule became a longer function on
+// its line) that lies past the end of the line as written: the successor's first column.
+void fitColumn(Diagnostic& d, std::string_view text) {
+    if (d.line <= 0 || d.col <= 0) return;
+    size_t start = 0;
+    for (int n = 1; n < d.line && start != std::string_view::npos; ++n) {
+        start = text.find('\n', start);
+        if (start != std::string_view::npos) ++start;
+    }
+    if (start == std::string_view::npos) return;
+    std::string_view line = text.substr(start, text.find('\n', start) - start);
+    if (size_t(d.col) <= line.size()) return;
+    const size_t arrow = line.find("-->");
+    size_t at = arrow == std::string_view::npos ? 0 : arrow + 3;
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+    d.col = int(std::min(at, line.size())) + 1;
+}
+
 // Where a Python error happened in the model file, and what it says.
-Diagnostic describe(py::error_already_set& e, const std::string& file) {
+Diagnostic describe(py::error_already_set& e, const std::string& file, std::string_view text) {
     Diagnostic d;
     d.message = std::string(py::str(e.type().attr("__name__"))) + ": " + std::string(py::str(e.value()));
     if (e.matches(PyExc_SyntaxError)) {
@@ -204,6 +222,7 @@ Diagnostic describe(py::error_already_set& e, const std::string& file) {
         if (py::hasattr(v, "lineno") && !v.attr("lineno").is_none()) d.line = v.attr("lineno").cast<int>();
         if (py::hasattr(v, "offset") && !v.attr("offset").is_none()) d.col = v.attr("offset").cast<int>();
         if (py::hasattr(v, "msg")) d.message = "SyntaxError: " + std::string(py::str(v.attr("msg")));
+        fitColumn(d, text);
         return d;
     }
     if (!e.trace()) return d;
@@ -213,6 +232,7 @@ Diagnostic describe(py::error_already_set& e, const std::string& file) {
         d.line = f.attr("lineno").cast<int>();
         if (py::hasattr(f, "colno") && !f.attr("colno").is_none()) d.col = f.attr("colno").cast<int>() + 1;
     }
+    fitColumn(d, text);
     return d;
 }
 
@@ -388,7 +408,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
             if (!sys.attr("path").contains(folder)) sys.attr("path").attr("insert")(0, folder);
         }
     } catch (py::error_already_set& e) {
-        out.diagnostics.push_back(describe(e, file));
+        out.diagnostics.push_back(describe(e, file, text));
         return out;
     }
     // What the model prints goes to standard error: standard output carries Sprout's results
@@ -414,8 +434,24 @@ Model runModel(std::string_view text, const RunOptions& options) {
         const int steps = options.steps >= 0 ? options.steps : engine.derivationLength;
         std::vector<LString> every;
         engine.fillQueries = [&](LString& s) { fillQueries(engine, s, turtleDefaults(lpyModule)); };
-        LString s = engine.derive(engine.axiom(), steps, options.keepSteps ? &every : nullptr);
+        LString axiom = engine.axiom();
+        const auto deriveStart = std::chrono::steady_clock::now();
+        LString s;
+        {
+            // Python's cycle collector walks every live object each time enough new ones were
+            // made: with a string of a million parameter tuples alive it runs again and again
+            // over all of them. The derivation makes no cycles of its own; it runs once after.
+            struct Collector {
+                int was = PyGC_Disable();
+                ~Collector() {
+                    if (was) PyGC_Enable();
+                }
+            } paused;
+            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr);
+        }
+        out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
+        out.ranNative = engine.ranNative;
         out.derived = engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
         TurtleDefaults d = turtleDefaults(lpyModule);
@@ -440,7 +476,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
             out.cancelled = true;
             out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
         } else {
-            out.diagnostics.push_back(describe(e, file));
+            out.diagnostics.push_back(describe(e, file, text));
         }
     } catch (Cancelled&) {
         out.cancelled = true;

@@ -27,6 +27,7 @@ struct RunOptions {
     const std::atomic<bool>* cancel = nullptr;    // set by another thread: Python stops within ~100 ms
     bool keepSteps = false;                       // keep every step's drawable (growth stepping)
     std::size_t maxModules = 50'000'000;          // a string past this ends the derivation with a message
+    bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
 };
 
 struct Model {
@@ -46,6 +47,8 @@ struct Model {
     int derivationLength = 0;    // as the file says
     int stepsDone = 0;
     bool cancelled = false;
+    bool ranNative = false;  // derived by the native path (lpy/native.cpp)
+    double deriveSeconds = 0;  // the derivation alone (its rules), without setup and drawing
     bool ok() const { return drawable != nullptr; }
 };
 

@@ -542,6 +542,8 @@ private:
             successor = successor.substr(0, commentStart(successor));
             auto mods = readLstring(successor, m_out.classes, lineNo, int(end) + 4, m_out.diagnostics);
             m_outLines[i] = def + " return __lpy_produce(" + pythonLstring(mods) + ")";
+            r.arrow = true;
+            r.successor = mods;
             if (last > i) warning(lineNo, int(end) + 1, "indented lines after a '-->' rule are ignored");
             for (size_t k = i + 1; k <= last; ++k) m_outLines[k] = "";
         } else {

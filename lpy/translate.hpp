@@ -93,6 +93,10 @@ struct Rule {
     std::string function;             // the Python function the body became
     std::vector<std::string> params;  // its parameters, in binding order
     int filter = -1;                  // index into Translation::filters; -1: none
+    // A `-->` rule: its successor as written (the native path derives it without Python
+    // when every rule of the model is this simple: lpy/engine.cpp).
+    bool arrow = false;
+    std::vector<WrittenModule> successor;
 };
 
 // `consider:` (only these classes count in contexts) or `ignore:` (these are skipped).

@@ -14,6 +14,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   libtinyobjloader-dev libxml2-utils
   python3-dev pybind11-dev
+  # L-Py models import numpy as often as math (the corpus test counts on it)
+  python3-numpy
 )
 # The test suite checks exports with the Khronos glTF validator, from the npm registry.
 if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm); fi

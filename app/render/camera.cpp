@@ -85,20 +85,29 @@ Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool pla
 Camera frameGeometry(const Geometry& g, float aspect, ViewPreset view) {
     Camera c = frameBounds(g.bounds, aspect, view, g.planarCurve);
     if (c.orthographic || g.bounds.empty) return c;
-    // Sample the plant's points (at most ~40 k).
-    std::vector<glm::vec3> pts;
+    // Sample the plant's points (at most ~40 k), each with how far the drawing reaches around
+    // it: a stem's radius (a thick trunk is not cut at the frame's bottom), a sphere's.
+    struct Reach {
+        glm::vec3 p;
+        float r;
+    };
+    std::vector<Reach> pts;
     const std::size_t n = g.cylinders.size() + g.surfaces.size() + g.polygons.positions.size();
     const std::size_t stride = std::max<std::size_t>(1, n / 40000);
     for (std::size_t i = 0; i < g.cylinders.size(); i += stride) {
-        pts.push_back(g.cylinders[i].start);
-        pts.push_back(g.cylinders[i].end);
+        pts.push_back({g.cylinders[i].start, g.cylinders[i].startRadius});
+        pts.push_back({g.cylinders[i].end, g.cylinders[i].endRadius});
     }
     for (std::size_t i = 0; i < g.surfaces.size(); i += stride) {
         const auto& s = g.surfaces[i];
-        pts.push_back(s.position);
-        pts.push_back(s.position + s.heading * s.size);
+        if (s.kind == SurfaceKind::Sphere) {
+            pts.push_back({s.position, s.size});
+            continue;
+        }
+        pts.push_back({s.position, 0});  // a blade: its base and tip
+        pts.push_back({s.position + s.heading * s.size, 0});
     }
-    for (std::size_t i = 0; i < g.polygons.positions.size(); i += stride) pts.push_back(g.polygons.positions[i]);
+    for (std::size_t i = 0; i < g.polygons.positions.size(); i += stride) pts.push_back({g.polygons.positions[i], 0});
     if (pts.empty()) return c;
     const glm::vec3 dir = glm::normalize(c.eye() - c.target);
     const glm::vec3 up = std::fabs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
@@ -107,22 +116,22 @@ Camera frameGeometry(const Geometry& g, float aspect, ViewPreset view) {
     // Centre the target on the points' extent across the view, then find the nearest
     // distance at which every point is inside the frustum.
     float minR = 1e30f, maxR = -1e30f, minU = 1e30f, maxU = -1e30f;
-    for (const auto& p : pts) {
+    for (const auto& [p, r] : pts) {
         glm::vec3 q = p - c.target;
-        minR = std::min(minR, glm::dot(q, right));
-        maxR = std::max(maxR, glm::dot(q, right));
-        minU = std::min(minU, glm::dot(q, camUp));
-        maxU = std::max(maxU, glm::dot(q, camUp));
+        minR = std::min(minR, glm::dot(q, right) - r);
+        maxR = std::max(maxR, glm::dot(q, right) + r);
+        minU = std::min(minU, glm::dot(q, camUp) - r);
+        maxU = std::max(maxU, glm::dot(q, camUp) + r);
     }
     c.target += right * ((minR + maxR) / 2) + camUp * ((minU + maxU) / 2);
     const float margin = 1.08f;
     const float tanY = std::tan(glm::radians(c.fovY) / 2), tanX = tanY * aspect;
     float need = 1e-3f;
-    for (const auto& p : pts) {
+    for (const auto& [p, r] : pts) {
         glm::vec3 q = p - c.target;
-        float depth = glm::dot(q, dir);
-        need = std::max({need, depth + std::fabs(glm::dot(q, right)) * margin / tanX,
-                         depth + std::fabs(glm::dot(q, camUp)) * margin / tanY});
+        float depth = glm::dot(q, dir) + r;  // the near side of a stem is nearer the camera
+        need = std::max({need, depth + (std::fabs(glm::dot(q, right)) + r) * margin / tanX,
+                         depth + (std::fabs(glm::dot(q, camUp)) + r) * margin / tanY});
     }
     c.distance = need;
     return c;

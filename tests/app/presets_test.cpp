@@ -36,7 +36,9 @@ TEST(Presets, EveryPresetParsesWithoutWarningsAndDerives) {
         EXPECT_TRUE(d.outcome.ok()) << name << ": " << d.outcome.message;
         EXPECT_GT(d.string->size(), 0u) << name;
     }
-    if (lpy::pythonAvailable()) EXPECT_GE(lpyPresets, 4);
+    if (lpy::pythonAvailable()) {
+        EXPECT_GE(lpyPresets, 4);
+    }
 }
 
 // Every D0L preset, at the first step with 40,000 modules or more, draws the same from its

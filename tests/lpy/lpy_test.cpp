@@ -67,7 +67,7 @@ TEST(Lpy, EveryModelDerivesWhatItSays) {
     std::sort(files.begin(), files.end());
     ASSERT_GE(files.size(), 10u);
     const std::regex expectLine(R"(^# expect (\d+): (.*)$)");
-    int checked = 0;
+    int checked = 0, native = 0;
     for (const auto& path : files) {
         SCOPED_TRACE(path.filename().string());
         const std::string text = slurp(path);
@@ -83,9 +83,19 @@ TEST(Lpy, EveryModelDerivesWhatItSays) {
             ASSERT_TRUE(model.ok()) << messages(model);
             EXPECT_EQ(model.derived, m[2].str()) << "after " << m[1] << " steps";
             ++checked;
+            // A model the native path takes derives the same with every match in Python.
+            if (model.ranNative) {
+                ++native;
+                o.native = false;
+                lpy::Model python = lpy::runModel(text, o);
+                ASSERT_TRUE(python.ok()) << messages(python);
+                EXPECT_FALSE(python.ranNative);
+                EXPECT_EQ(python.derived, model.derived) << "the Python path, after " << m[1] << " steps";
+            }
         }
     }
     EXPECT_GE(checked, int(files.size()));
+    EXPECT_GE(native, 3);  // native_*.lpy at least
 }
 
 TEST(Lpy, PythonErrorsSayWhereInTheFile) {
@@ -99,6 +109,13 @@ TEST(Lpy, PythonErrorsSayWhereInTheFile) {
     const Diagnostic& d = m.diagnostics.back();
     EXPECT_EQ(d.line, 2);  // the frame that raised, in the model's own function
     EXPECT_NE(d.message.find("ZeroDivisionError"), std::string::npos) << d.message;
+    // A division by zero in a produce-only rule (the native path gives the model back to
+    // Python, which raises): the rule's line, the column of its successor.
+    lpy::Model z = lpy::runModel("Axiom: A(1) A(0)\nderivation length: 1\nproduction:\nA(x) --> A(1 / x)\nendlsystem\n", o);
+    ASSERT_FALSE(z.ok());
+    EXPECT_EQ(z.diagnostics.back().line, 4) << messages(z);
+    EXPECT_EQ(z.diagnostics.back().col, 10) << messages(z);
+    EXPECT_NE(z.diagnostics.back().message.find("ZeroDivisionError"), std::string::npos);
     // A syntax error in the Python of a rule: its line.
     lpy::Model s = lpy::runModel("Axiom: A\nderivation length: 1\nproduction:\nA :\n    if True\n        produce B\nendlsystem\n", o);
     ASSERT_FALSE(s.ok());

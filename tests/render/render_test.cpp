@@ -8,6 +8,7 @@
 #include <set>
 #include <thread>
 
+#include "app/cli/load.hpp"
 #include "app/headless.hpp"
 #include "app/image.hpp"
 #include "app/presets.hpp"
@@ -138,7 +139,10 @@ TEST(Render, EveryPresetIsFramedAndNotClipped) {
     SnapshotOptions o = plain();
     Image empty = emptyScene(o);
     for (const auto& name : presetNames()) {
-        Image img = render(grammarOf(*presetText(name)), o);
+        // Loaded as `sprout render PRESET` loads it (an L-Py preset runs its Python).
+        auto loaded = cli::loadGrammar(name);
+        ASSERT_TRUE(loaded && loaded->grammar) << name;
+        Image img = render(loaded->grammar, o);
         Mask m = plantMask(img, empty);
         double cover = double(m.count) / (kW * kH);
         EXPECT_GT(cover, 0.004) << name << " covers too little of the frame";
