@@ -93,6 +93,22 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
     return out.flush();
 }
 
+// How the text was read: its dialect and each setting taken from it, with its line (a user
+// who pasted text sees how Sprout understood it).
+void printReadAs(const LoadedGrammar& loaded) {
+    const Grammar& g = *loaded.grammar;
+    std::printf("read as: %s\n", loaded.dialect.c_str());
+    for (const auto& s : g.settingsRead) {
+        if (s.name == "define") std::printf("  line %d: constant %s", s.line, s.value.c_str());
+        else std::printf("  line %d: %s = %s", s.line, s.name.c_str(), s.value.c_str());
+        if (!s.written.empty()) std::printf("  (written '%s')", s.written.c_str());
+        std::printf("\n");
+    }
+    for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
+        for (const auto& p : rs->productions)
+            if (!p.label.empty()) std::printf("  line %d: rule %s\n", p.line, p.label.c_str());
+}
+
 void printStats(Derivation& d, int n, const std::string& name) {
     const Grammar& g = d.grammar();
     std::printf("%s: %s%s%s, seed %llu\n", name.c_str(), g.parametric() ? "parametric" : "non-parametric",
@@ -130,6 +146,7 @@ int runExpand(int argc, char** argv) {
     lo.python = !args.flag("--no-python");
     auto loaded = loadGrammar(args.positionals()[0], lo);
     if (!loaded) return 1;
+    if (args.flag("--stats")) printReadAs(*loaded);
     if (loaded->ranPython && !args.flag("--stats")) {
         std::fwrite(loaded->derived.data(), 1, loaded->derived.size(), stdout);
         std::fputc('\n', stdout);

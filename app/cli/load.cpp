@@ -84,6 +84,8 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOp
         if (imported.text != *t) out.displayName = path + " (as .lsys)";
         text = std::move(imported.text);
         out.kind = imported.kind;
+        if (imported.source == FileKind::Lparser) out.dialect = "Lparser";
+        if (imported.source == FileKind::Fractint) out.dialect = "Fractint";
         if (imported.source != FileKind::Png) includePath = path;
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
@@ -112,6 +114,7 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOp
         out.derived = std::move(model.derived);
         out.steps = std::move(model.steps);
         out.ranPython = true;
+        out.dialect = "L-Py";
         out.text = std::move(text);
         return out;
     }
@@ -119,6 +122,7 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOp
     for (const auto& d : r.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
     if (!r.ok()) return std::nullopt;
     out.grammar = r.grammar;
+    if (out.dialect.empty()) out.dialect = r.grammar->dialect;
     out.text = std::move(text);
     return out;
 }

@@ -16,6 +16,7 @@ struct LoadedGrammar {
     std::string text;         // the grammar as written
     std::shared_ptr<const Grammar> grammar;
     FileKind kind = FileKind::Lsys;  // of `text`: Lsys, Cpfg or Lpy
+    std::string dialect;             // what the text was read as: ".lsys", "ABOP notation", "cpfg", "L-Py", "Lparser", "Fractint"
     // An L-Py model run by Python (lpy/): `grammar` is what it derived, to draw (no rules);
     // `derived` the string as L-Py writes it.
     bool ranPython = false;

@@ -246,17 +246,31 @@ private:
         return n;
     }
 
+    // `and`, `or`, `not` as words (Python's and ABOP's notes), not the start of a longer name.
+    bool acceptWord(std::string_view word) {
+        if (!peek(word)) return false;
+        const size_t end = m_pos + word.size();
+        if (end < m_text.size() && (std::isalnum(static_cast<unsigned char>(m_text[end])) || m_text[end] == '_')) return false;
+        m_pos = end;
+        return true;
+    }
     NodePtr parseOr(int depth) {
         NodePtr a = parseAnd(depth);
-        while (!m_failed && (accept("||") || (peek("|") && accept("|"))))
+        while (!m_failed && (accept("||") || (peek("|") && accept("|")) || acceptWord("or")))
             a = binary(Op::Or, std::move(a), parseAnd(depth));
         return a;
     }
     NodePtr parseAnd(int depth) {
-        NodePtr a = parseEquality(depth);
-        while (!m_failed && (accept("&&") || (peek("&") && accept("&"))))
-            a = binary(Op::And, std::move(a), parseEquality(depth));
+        NodePtr a = parseNot(depth);
+        while (!m_failed && (accept("&&") || (peek("&") && accept("&")) || acceptWord("and")))
+            a = binary(Op::And, std::move(a), parseNot(depth));
         return a;
+    }
+    // Python's `not` binds looser than comparisons: `not x > 1` is `!(x > 1)`.
+    NodePtr parseNot(int depth) {
+        if (auto g = guard(depth)) return g;
+        if (acceptWord("not")) return unary(Op::Not, parseNot(depth + 1));
+        return parseEquality(depth);
     }
     NodePtr parseEquality(int depth) {
         NodePtr a = parseRelational(depth);

@@ -79,6 +79,8 @@ bool looksLikeLparser(std::string_view text) {
     eachLine(text, [&](std::string_view l) {
         if (l.empty() || l.starts_with("#")) return true;
         std::string w = lower(l.substr(0, l.find_first_of(" \t")));
+        // "angle = 90", "angle: 90": the settings of the .lsys family, not Lparser's "angle 90".
+        if (l.find('=') != std::string_view::npos || l.find(':') != std::string_view::npos) return false;
         found = w == "recursion" || w == "angle" || w == "thickness" || w == "color" || w == "min_thickness" ||
                 w == "shape" || w == "switch_yz" ||
                 (!w.empty() && std::all_of(w.begin(), w.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '.'; }));
@@ -91,6 +93,14 @@ bool looksLikeLparser(std::string_view text) {
 
 bool looksLikeCpfg(std::string_view text) {
     bool found = false;
+    // ABOP's printed notation ("ω:", "δ = 25.7°", "→") names cpfg's `derivation length:` too:
+    // it is read by the .lsys parser.
+    bool notation = false;
+    eachLine(text, [&](std::string_view l) {
+        notation |= l.starts_with("\xCF\x89") || l.starts_with("\xCE\xB4") || l.find("\xE2\x86\x92") != std::string_view::npos;
+        return !notation;
+    });
+    if (notation) return false;
     eachLine(text, [&](std::string_view l) {
         std::string low = lower(l.substr(0, 24));
         if (isKey(l, "lsystem") || isKey(l, "derivation length") || isKey(l, "maximum depth") ||

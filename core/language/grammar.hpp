@@ -74,6 +74,7 @@ struct Successor {
 
 struct Production {
     int line = 0;
+    std::string label;  // ABOP's "p1:" before the rule, as written (empty: none)
     std::vector<PatternModule> left;   // in text order; matched right to left
     PatternModule pred;
     std::vector<PatternModule> right;  // in text order
@@ -112,6 +113,16 @@ struct Grammar {
     // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
     std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
     std::vector<std::string> defineOrder;  // for sliders, in file order
+    // How the text was read, for a user who pasted it: the dialect (".lsys", "ABOP notation",
+    // "cpfg"; the loader names Lparser, Fractint and L-Py) and each setting taken from it.
+    struct ReadSetting {
+        int line = 0;
+        std::string name;     // the setting it became: "angle", "n", "axiom", "define"
+        std::string value;    // as written after the key
+        std::string written;  // the key as written ("δ", "delta", "w"), when not the name
+    };
+    std::string dialect = ".lsys";
+    std::vector<ReadSetting> settingsRead;
 
     bool parametric() const;        // any module with parameters in axiom or successors
     bool hasContext() const;

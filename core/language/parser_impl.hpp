@@ -58,6 +58,20 @@ inline bool isIdentifier(std::string_view s) {
     });
 }
 
+// ABOP's notation and the web's dialects (notation.cpp).
+// The directive a setting's key names ("δ", "delta", "w", "ω", "start", "dlength",
+// "derivation length" ...), or nullptr.
+const char* settingAlias(std::string_view key);
+// Another tool's view or camera setting ("stemsize", "zpos" ...): a warning, never an error.
+bool isForeignSetting(std::string_view key);
+// The length of a rule label at the start of `s` ("p1", "P2"; subscripts are digits by then), or 0.
+size_t ruleLabelLength(std::string_view s);
+// Characters pasted from PDFs and web pages (dashes, spaces, quotes, arrows, subscripts, LaTeX)
+// replaced in place, keeping every byte position; `replaced` gets the warnings to give,
+// `notation` is set when the text used ABOP's printed notation.
+void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
+                     bool& notation);
+
 class Parser;
 using DirectiveHandler = std::function<void(Parser&, const SourceLine&, std::string_view value)>;
 
@@ -111,6 +125,14 @@ private:
         const Directive* directive = nullptr;
         std::string_view value;
         Section section = Section::Productions;
+        std::string_view key;  // the setting's key as written, when another name than the directive's
+        // A figure caption "n=5, δ=25.7°": the settings after the first, with their keys.
+        struct More {
+            const Directive* directive;
+            std::string_view value, key;
+        };
+        std::vector<More> more;
+        size_t equalsArrow = std::string_view::npos;  // a rule written "F = FF": where its '=' is
     };
     // Where the pieces of a cpfg logical line came from: a production joined from several
     // lines, or a line of an #included file (reported at the #include, naming the file).
@@ -123,7 +145,10 @@ private:
     };
 
     void classify(Line& line, Section& section);
-    void parseRule(const SourceLine& line, Section section);
+    void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
+    // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
+    bool classifyNotation(Line& l, std::string_view t);
+    void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
     // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
     void buildCpfgLines();
     bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
@@ -160,6 +185,9 @@ private:
     std::optional<Rng> m_rng;  // rand() outside rules
     bool m_axiomSet = false;
     int m_axiomLine = 0;
+    bool m_notation = false;  // the text used ABOP's printed notation (Grammar::dialect)
+    bool m_assignedScanned = false;
+    std::unordered_map<std::string, double> m_assignedNames;  // names given a value with '=' (notation.cpp)
 
     bool m_cpfg = false;
     ParseOptions m_options;

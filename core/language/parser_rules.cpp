@@ -76,22 +76,56 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
     return ok;
 }
 
-void Parser::parseRule(const SourceLine& line, Section section) {
+void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArrow) {
     std::string_view text = line.text;
-    size_t arrow = findTopLevel(text, "->", 0, m_cpfg);
-    size_t arrowEnd = arrow + 2;
-    if (arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's -->
+    size_t arrow = equalsArrow != std::string_view::npos ? equalsArrow : findTopLevel(text, "->", 0, m_cpfg);
+    size_t arrowEnd = arrow + (equalsArrow != std::string_view::npos ? 1 : 2);
+    if (equalsArrow == std::string_view::npos && arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's and ABOP's -->
     std::string_view head = text.substr(0, arrow);
     std::string_view tail = text.substr(arrowEnd);
+    if (!m_cpfg) {
+        // Tutorials' "Production: 'F' -> 'F-F++F-F'": the word before the rule, and quotes
+        // around both sides (a quote alone is ABOP's colour step, so both sides must have them).
+        const size_t c = findTopLevel(head, ":");
+        if (c != std::string_view::npos) {
+            std::string word(trim(head.substr(0, c)));
+            std::transform(word.begin(), word.end(), word.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+            if (word == "production" || word == "productions" || word == "rule" || word == "rules") {
+                head = head.substr(c + 1);
+                m_notation = true;
+            }
+        }
+        auto quoted = [](std::string_view s) {
+            s = trim(s);
+            return s.size() >= 3 && (s.front() == '\'' || s.front() == '"') && s.back() == s.front() &&
+                   s.find(s.front(), 1) == s.size() - 1;
+        };
+        const size_t lc = findTopLevel(head, ":");
+        std::string_view headRule = lc == std::string_view::npos ? head : head.substr(lc + 1);
+        if (quoted(headRule) && quoted(tail) && lc == std::string_view::npos) {
+            head = trim(head);
+            head = head.substr(1, head.size() - 2);
+            tail = trim(tail);
+            tail = tail.substr(1, tail.size() - 2);
+            m_notation = true;
+        }
+    }
 
-    // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF".
+    // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF", "P2 :", "p₃:".
+    std::string label;
     size_t colon = findTopLevel(head, ":", 0, m_cpfg);
     if (colon != std::string_view::npos) {
-        std::string_view label = trim(head.substr(0, colon));
-        if (label.size() >= 2 && label[0] == 'p' &&
-            std::all_of(label.begin() + 1, label.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+        std::string_view written = trim(head.substr(0, colon));
+        if (!written.empty() && ruleLabelLength(written) == written.size()) {
+            // The label as typed (p₃ with its subscript), up to the colon.
+            const size_t from = size_t(written.data() - line.text.data());
+            const size_t to = size_t(head.data() - line.text.data()) + colon;
+            const std::string_view typed = line.original.size() == line.text.size() ? line.original : line.text;
+            label = std::string(trim(typed.substr(from, to - from)));
+            label.erase(std::remove(label.begin(), label.end(), '$'), label.end());  // LaTeX's $p1$
             head = head.substr(colon + 1);
             colon = findTopLevel(head, ":", 0, m_cpfg);
+            m_notation = true;
         }
     }
     std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
@@ -99,6 +133,7 @@ void Parser::parseRule(const SourceLine& line, Section section) {
 
     Production prod;
     prod.line = line.number;
+    prod.label = std::move(label);
     std::vector<std::string> params;
     size_t lt = findTopLevel(patterns, "<");
     size_t gt = findTopLevel(patterns, ">", lt == std::string_view::npos ? 0 : lt + 1);
@@ -160,6 +195,7 @@ void Parser::parseRule(const SourceLine& line, Section section) {
     // cpfg: `pred : {pre} condition {post} --> succ`, `*` for no condition. Names assigned
     // in the blocks are the production's locals, in slots after its formal parameters.
     std::string_view preBlock, postBlock;
+    if (!m_cpfg && colon != std::string_view::npos && trim(condition) == "*") colon = std::string_view::npos;  // ABOP's "A(l) : * -> ..."
     if (m_cpfg && colon != std::string_view::npos) {
         if (!splitCpfgCondition(line, condition, preBlock, condition, postBlock)) return;
         if (trim(condition) == "*" || (trim(condition).empty() && (!preBlock.empty() || !postBlock.empty())))
@@ -204,6 +240,21 @@ void Parser::parseRule(const SourceLine& line, Section section) {
     }
     size_t probColon = findLastTopLevel(tail, ':');
     std::string_view succText = tail;
+    if (!m_cpfg && probColon == std::string_view::npos) {
+        // "F -> F+F {0.33}": a probability in braces at the end (a polygon holds turtle moves).
+        std::string_view t = trim(tail);
+        const size_t open = t.rfind('{');
+        if (!t.empty() && t.back() == '}' && open != std::string_view::npos) {
+            std::string_view inside = trim(t.substr(open + 1, t.size() - open - 2));
+            if (!inside.empty() && inside.find_first_not_of("0123456789.eE+-") == std::string_view::npos) {
+                auto p = constant(line, inside);
+                if (!p) return;
+                prod.probability = *p;
+                succText = t.substr(0, open);
+                m_notation = true;
+            }
+        }
+    }
     if (probColon != std::string_view::npos) {
         succText = tail.substr(0, probColon);
         std::string_view probText = trim(tail.substr(probColon + 1));

@@ -11,30 +11,6 @@
 
 namespace sprout {
 namespace detail {
-namespace {
-
-// Text copied from PDFs and word processors: same byte length, so positions stay valid.
-void normalize(std::string& text, std::vector<std::pair<size_t, const char*>>& replaced) {
-    struct Sub { const char* from; const char* to; const char* what; };
-    static const Sub subs[] = {
-        {"\xE2\x86\x92", "-> ", nullptr},  // → is an accepted arrow, no warning
-        {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'"},
-        {"\xC2\xA0", "  ", nullptr},       // no-break space
-    };
-    // Old Mac line ends (a lone CR) end a line too.
-    for (size_t i = 0; i < text.size(); ++i)
-        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
-    for (const Sub& s : subs) {
-        size_t len = std::strlen(s.from);
-        for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
-            text.replace(at, len, s.to);
-            if (s.what) replaced.emplace_back(at, s.what);
-        }
-    }
-}
-
-}  // namespace
-
 void Parser::classify(Line& l, Section& section) {
     std::string_view t = trim(l.src.text);
     if (t.empty()) return;
@@ -68,10 +44,16 @@ void Parser::classify(Line& l, Section& section) {
         l.kind = Line::Rule;
         return;
     }
+    if (classifyNotation(l, t)) return;
     size_t colon = t.find(':');
     std::string_view key = trim(t.substr(0, colon));
-    if (colon == std::string_view::npos || key.empty() ||
-        !(isIdentifier(key) || key == "\xCF\x89" /* ω */)) {
+    if (colon != std::string_view::npos && !key.empty() && ruleLabelLength(key) == key.size()) {
+        m_sink.error(l.src, key, "the label '" + std::string(key) + "' has no rule after it: write the rule on the label's line, as in '" +
+                                     std::string(key) + ": F -> F[+F]F'");
+        return;
+    }
+    const char* alias = colon == std::string_view::npos ? nullptr : settingAlias(key);
+    if (colon == std::string_view::npos || key.empty() || !(isIdentifier(key) || alias)) {
         m_sink.error(l.src, t, "expected a rule such as 'F -> F+F' or a setting such as 'angle: 90'");
         return;
     }
@@ -84,9 +66,18 @@ void Parser::classify(Line& l, Section& section) {
         section = k == "interpretation" || k == "homomorphism" ? Section::Interpretation : Section::Productions;
         return;
     }
-    if (key == "\xCF\x89") k = "axiom";
+    if (alias && k != alias) {
+        k = alias;
+        l.key = key;
+        m_notation = true;
+    }
     for (const auto& d : directives())
         if (k == d.name) l.directive = &d;
+    if (!l.directive && isForeignSetting(key)) {
+        m_sink.warning(l.src, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
+        m_notation = true;
+        return;
+    }
     if (!l.directive) {
         std::vector<std::string> names;
         for (const auto& d : directives()) names.emplace_back(d.name);
@@ -148,8 +139,11 @@ void Parser::lint() {
 }
 
 ParseResult Parser::run() {
-    std::vector<std::pair<size_t, const char*>> replaced;
-    normalize(m_text, replaced);
+    std::vector<std::pair<size_t, std::string>> replaced;
+    // Old Mac line ends (a lone CR) end a line too.
+    for (size_t i = 0; i < m_text.size(); ++i)
+        if (m_text[i] == '\r' && (i + 1 == m_text.size() || m_text[i + 1] != '\n')) m_text[i] = '\n';
+    normalizePasted(m_text, replaced, m_cpfg, m_notation);
     if (m_cpfg) {
         m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
         m_g.cutInNextStep = true;
@@ -169,7 +163,7 @@ ParseResult Parser::run() {
         m_lines.push_back(l);
         start = end + 1;
     }
-    for (auto [offset, what] : replaced) {
+    for (const auto& [offset, what] : replaced) {
         for (const auto& l : m_lines) {
             if (l.src.text.data() < m_text.data() || l.src.text.data() > m_text.data() + m_text.size()) continue;
             size_t ls = size_t(l.src.text.data() - m_text.data());
@@ -221,10 +215,12 @@ ParseResult Parser::run() {
         for (auto& l : m_lines) {
             if (l.kind == Line::DirectiveLine && l.directive->phase == phase) {
                 if (m_cpfg) m_depthSection = l.section;
-                l.directive->handler(*this, l.src, l.value);
+                applyDirective(*l.directive, l.src, l.value, l.key);
             } else if (l.kind == Line::Rule && phase == 2) {
-                parseRule(l.src, l.section);
+                parseRule(l.src, l.section, l.equalsArrow);
             }
+            for (const auto& m : l.more)
+                if (m.directive->phase == phase) applyDirective(*m.directive, l.src, m.value, m.key);
         }
     }
     if (!m_axiomSet && m_sink.errorCount() == 0)
@@ -254,6 +250,9 @@ ParseResult Parser::run() {
         }
     }
     lint();
+    m_g.dialect = m_cpfg ? "cpfg" : m_notation ? "ABOP notation" : ".lsys";
+    std::stable_sort(m_g.settingsRead.begin(), m_g.settingsRead.end(),
+                     [](const Grammar::ReadSetting& a, const Grammar::ReadSetting& b) { return a.line < b.line; });
 
     ParseResult result;
     result.diagnostics = std::move(m_sink.all());

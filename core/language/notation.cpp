@@ -1,0 +1,365 @@
+// Grammars as people write them (issue 22): ABOP's printed notation, the web's L-system
+// dialects and text pasted from a PDF or a web page, read by the .lsys parser. This file holds
+// the words of those notations (setting aliases, rule labels, other tools' settings) and the
+// pasted characters' replacements; parser_run.cpp's classify() uses them line by line.
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
+#include "core/language/parser_impl.hpp"
+
+namespace sprout::detail {
+namespace {
+
+std::string lowerCollapsed(std::string_view key) {
+    std::string k;
+    for (char c : key) {
+        if (isSpace(c)) {
+            if (!k.empty() && k.back() != ' ') k += ' ';
+            continue;
+        }
+        k += char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    while (!k.empty() && k.back() == ' ') k.pop_back();
+    return k;
+}
+
+}  // namespace
+
+const char* settingAlias(std::string_view key) {
+    static const std::pair<const char*, const char*> aliases[] = {
+        {"\xCE\xB4", "angle"},  // δ
+        {"\xCE\x94", "angle"},  // Δ (a capital in some transcriptions)
+        {"delta", "angle"},
+        {"angle", "angle"},
+        {"\xCF\x89", "axiom"},  // ω
+        {"w", "axiom"},
+        {"axiom", "axiom"},
+        {"start", "axiom"},
+        {"initiator", "axiom"},
+        {"n", "n"},
+        {"iterations", "iterations"},
+        {"dlength", "n"},
+        {"derivation length", "n"},
+        {"generations", "n"},
+        {"seed", "seed"},
+        {"step", "step"},
+        {"stepsize", "step"},
+        {"step size", "step"},
+    };
+    const std::string k = lowerCollapsed(key);
+    for (const auto& [from, to] : aliases)
+        if (k == from) return to;
+    return nullptr;
+}
+
+bool isForeignSetting(std::string_view key) {
+    static const char* const names[] = {"stemsize", "xpos", "ypos", "zpos", "zoom", "camera", "rotation", "rotate",
+                                        "scale", "linewidth", "linelength", "background", "bgcolor", "color",
+                                        "colour", "thickness", "leafsize", "renderer", "canvas", "view"};
+    const std::string k = lowerCollapsed(key);
+    return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return k == n; });
+}
+
+size_t ruleLabelLength(std::string_view s) {
+    // After normalizePasted, subscript digits are plain digits: p1, P2, p3 (from p₃).
+    // ABOP writes a lone production "p : F -> ..." too.
+    if (s.empty() || (s[0] != 'p' && s[0] != 'P')) return 0;
+    size_t i = 1;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    return i;
+}
+
+void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
+                     bool& notation) {
+    // Every replacement keeps the byte length (padded with spaces): columns stay those of the
+    // text as written. `what` (when set) is a warning at the place; `abop` marks ABOP's
+    // printed notation.
+    struct Sub {
+        const char* from;
+        const char* to;
+        const char* what;
+        bool abop;
+        bool lsysOnly;  // not in cpfg files, where the characters mean something else
+    };
+    static const Sub subs[] = {
+        {"\xE2\x86\x92", "-> ", nullptr, true, false},  // → (an accepted arrow, no warning)
+        {"\xE2\x9F\xB6", "-> ", nullptr, true, false},  // ⟶
+        {"\xE2\x87\x92", "-> ", nullptr, true, false},  // ⇒
+        {"\xE2\x9F\xB9", "-> ", nullptr, true, false},  // ⟹
+        {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'", false, false},
+        {"\xE2\x80\x93", "-  ", "the dash '\xE2\x80\x93' was read as '-'", false, false},
+        {"\xC2\xA0", "  ", nullptr, false, false},  // no-break space
+        {"\xE2\x80\x82", "   ", nullptr, false, false},  // en space .. hair space, zero width
+        {"\xE2\x80\x83", "   ", nullptr, false, false},
+        {"\xE2\x80\x84", "   ", nullptr, false, false},
+        {"\xE2\x80\x85", "   ", nullptr, false, false},
+        {"\xE2\x80\x86", "   ", nullptr, false, false},
+        {"\xE2\x80\x87", "   ", nullptr, false, false},
+        {"\xE2\x80\x88", "   ", nullptr, false, false},
+        {"\xE2\x80\x89", "   ", nullptr, false, false},  // thin space
+        {"\xE2\x80\x8A", "   ", nullptr, false, false},
+        {"\xE2\x80\x8B", "   ", nullptr, false, false},
+        {"\xE2\x80\xAF", "   ", nullptr, false, false},  // narrow no-break space
+        {"\xEF\xBB\xBF", "   ", nullptr, false, false},  // a byte order mark inside the text
+        {"\xE2\x80\x98", "'  ", nullptr, false, false},  // smart quotes
+        {"\xE2\x80\x99", "'  ", nullptr, false, false},
+        {"\xE2\x80\x9C", "\"  ", nullptr, false, false},
+        {"\xE2\x80\x9D", "\"  ", nullptr, false, false},
+        {"\xE2\x80\xB2", "'  ", nullptr, false, false},   // prime
+        {"\xE2\x80\xB3", "'' ", nullptr, false, false},   // double prime
+        {"\xC2\xB0", "  ", nullptr, true, false},         // degree sign
+        {"\xC3\x97", "* ", nullptr, false, false},        // ×
+        {"\xC2\xB7", "* ", nullptr, false, false},        // ·
+        {"\xE2\x8B\x85", "*  ", nullptr, false, false},   // ⋅
+        {"\xE2\x89\xA5", ">= ", nullptr, false, false},   // ≥
+        {"\xE2\x89\xA4", "<= ", nullptr, false, false},   // ≤
+        {"\xE2\x89\xA0", "!= ", nullptr, false, false},   // ≠
+        {"\xE2\x88\xA7", "^  ", nullptr, true, false},    // ∧: ABOP's pitch up, printed as a wedge
+        {"\xE2\x88\xA8", "&  ", nullptr, true, false},    // ∨: pitch down in some printings
+        {"\xE2\x82\x80", "0  ", nullptr, true, false},    // subscript digits (p₃)
+        {"\xE2\x82\x81", "1  ", nullptr, true, false},
+        {"\xE2\x82\x82", "2  ", nullptr, true, false},
+        {"\xE2\x82\x83", "3  ", nullptr, true, false},
+        {"\xE2\x82\x84", "4  ", nullptr, true, false},
+        {"\xE2\x82\x85", "5  ", nullptr, true, false},
+        {"\xE2\x82\x86", "6  ", nullptr, true, false},
+        {"\xE2\x82\x87", "7  ", nullptr, true, false},
+        {"\xE2\x82\x88", "8  ", nullptr, true, false},
+        {"\xE2\x82\x89", "9  ", nullptr, true, false},
+        // LaTeX as lecture notes and converted PDFs write it.
+        {"\\longrightarrow", "->             ", nullptr, true, true},
+        {"\\rightarrow", "->         ", nullptr, true, true},
+        {"\\Rightarrow", "->         ", nullptr, true, true},
+        {"\\mapsto", "->     ", nullptr, true, true},
+        {"\\to ", "->  ", nullptr, true, true},
+        {"\\delta", "delta ", nullptr, true, true},
+        {"\\omega", "axiom ", nullptr, true, true},
+        {"^{\\circ}", "        ", nullptr, true, true},
+        {"^\\circ", "      ", nullptr, true, true},
+        {"\\circ", "     ", nullptr, true, true},
+        {"\\wedge", "^     ", nullptr, true, true},
+        {"\\land", "^    ", nullptr, true, true},
+        {"\\cdot", "*    ", nullptr, true, true},
+        {"\\times", "*     ", nullptr, true, true},
+        {"\\&", "& ", nullptr, true, true},
+        {"\\{", "{ ", nullptr, true, true},
+        {"\\}", "} ", nullptr, true, true},
+        {"\\,", "  ", nullptr, true, true},
+        {"\\;", "  ", nullptr, true, true},
+        {"=>", "->", nullptr, true, true},
+    };
+    for (const Sub& s : subs) {
+        if (s.lsysOnly && cpfg) continue;
+        const size_t len = std::strlen(s.from);
+        size_t first = std::string::npos, count = 0;
+        for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
+            if (s.from[0] == '=' && at > 0 && (text[at - 1] == '=' || text[at - 1] == '<' || text[at - 1] == '>' || text[at - 1] == '!'))
+                continue;  // "==>"? leave comparisons alone
+            text.replace(at, len, s.to);
+            if (first == std::string::npos) first = at;
+            ++count;
+            notation |= s.abop;
+            if (s.from[0] == '\\') {
+                // The math delimiters around a LaTeX arrow: 'F'  $\rightarrow$  'FF'.
+                size_t b = at;
+                while (b > 0 && isSpace(text[b - 1])) --b;
+                if (b > 0 && text[b - 1] == '$') text[b - 1] = ' ';
+                size_t f = at + len;
+                while (f < text.size() && isSpace(text[f])) ++f;
+                if (f < text.size() && text[f] == '$') text[f] = ' ';
+            }
+        }
+        // One warning for a character replaced all over a pasted text: at its first place.
+        if (s.what && count)
+            replaced.emplace_back(first, std::string(s.what) + (count > 1 ? " (and in " + std::to_string(count - 1) + (count == 2 ? " more place)" : " more places)") : ""));
+    }
+    if (cpfg) return;
+    // C comments on one line, as ABOP prints its #define lines ("#define r1 0.9 /* ratio */").
+    for (size_t at = text.find("/*"); at != std::string::npos; at = text.find("/*", at + 2)) {
+        const size_t close = text.find("*/", at + 2), eol = text.find('\n', at);
+        if (close == std::string::npos || (eol != std::string::npos && close > eol)) continue;
+        for (size_t i = at; i < close + 2; ++i) text[i] = ' ';
+        notation = true;
+    }
+    // Inline LaTeX math: a line that starts with '$' ("$n=5, \delta=18^\circ$", "$p1$: ...")
+    // loses its dollar signs. Elsewhere '$' is ABOP's roll to the horizontal and stays.
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        size_t first = start;
+        while (first < end && isSpace(text[first])) ++first;
+        if (first < end && text[first] == '$') {
+            notation = true;
+            for (size_t i = first; i < end; ++i)
+                if (text[i] == '$') text[i] = ' ';
+        }
+        start = end + 1;
+    }
+}
+
+namespace {
+
+// The first top-level '=' of `t` that is an assignment, not part of == <= >= != or =>.
+size_t assignment(std::string_view t) {
+    int depth = 0;
+    for (size_t i = 0; i < t.size(); ++i) {
+        const char c = t[i];
+        if (c == '(' || c == '{' || c == '[') ++depth;
+        else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
+        else if (c == '=' && depth == 0) {
+            const bool before = i > 0 && std::strchr("=<>!", t[i - 1]) != nullptr;
+            const bool after = i + 1 < t.size() && (t[i + 1] == '=' || t[i + 1] == '>');
+            if (!before && !after) return i;
+        }
+    }
+    return std::string_view::npos;
+}
+
+std::vector<std::string_view> topLevelParts(std::string_view t) {
+    std::vector<std::string_view> parts;
+    int depth = 0;
+    size_t start = 0;
+    for (size_t i = 0; i <= t.size(); ++i) {
+        const char c = i < t.size() ? t[i] : ',';
+        if (c == '(' || c == '{' || c == '[') ++depth;
+        else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
+        else if (c == ',' && depth == 0) {
+            parts.push_back(t.substr(start, i - start));
+            start = i + 1;
+        }
+    }
+    return parts;
+}
+
+// Whether the one-letter `key` is written as a module (outside parentheses) in a rule's line.
+bool usedAsModuleIn(std::string_view key, std::string_view line) {
+    if (key.size() != 1) return false;
+    int depth = 0;
+    for (char c : line) {
+        if (c == '(') ++depth;
+        else if (c == ')') depth = std::max(0, depth - 1);
+        else if (depth == 0 && c == key[0]) return true;
+    }
+    return false;
+}
+
+const Directive* directiveNamed(std::string_view name) {
+    for (const auto& d : directives())
+        if (name == d.name) return &d;
+    return nullptr;
+}
+
+}  // namespace
+
+bool Parser::classifyNotation(Line& l, std::string_view t) {
+    const size_t eq = assignment(t);
+    if (eq == std::string_view::npos) return false;
+    const size_t colon = t.find(':');
+    if (colon != std::string_view::npos && colon < eq) return false;  // "define: x = 1", a label
+    // Every name given a value with '=' in the text: a value naming them is a constant.
+    // Found in passes: a name whose value is a number or uses names found before (R = 1.456,
+    // L = 2 * R); "F = F+F" names itself and stays a rule.
+    if (!m_assignedScanned) {
+        m_assignedScanned = true;
+        std::vector<std::pair<std::string_view, std::string_view>> pending;
+        for (const auto& other : m_lines) {
+            std::string_view o = trim(other.src.text);
+            const size_t e = assignment(o);
+            if (e == std::string_view::npos || o.find("->") != std::string_view::npos) continue;
+            if (const size_t c = o.find(':'); c != std::string_view::npos && c < e) continue;
+            for (auto part : topLevelParts(o)) {
+                const size_t pe = assignment(part);
+                if (pe == std::string_view::npos) continue;
+                std::string_view name = trim(part.substr(0, pe));
+                if (isIdentifier(name) && !settingAlias(name)) pending.emplace_back(name, trim(part.substr(pe + 1)));
+            }
+        }
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (auto& [name, value] : pending) {
+                if (name.empty() || value.empty()) continue;
+                DiagnosticSink scratch;
+                ExprScope scope{nullptr, &m_assignedNames, &m_macros};
+                if (compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0) {
+                    m_assignedNames.emplace(std::string(name), 1.0);
+                    name = {};
+                    grew = true;
+                }
+            }
+        }
+    }
+    auto usedAsModule = [&](std::string_view key) {
+        for (const auto& other : m_lines)
+            if (other.src.text.find("->") != std::string_view::npos && usedAsModuleIn(key, other.src.text)) return true;
+        return false;
+    };
+    auto isConstant = [&](std::string_view value) {
+        if (trim(value).empty()) return false;
+        DiagnosticSink scratch;
+        ExprScope scope{nullptr, &m_assignedNames, &m_macros};
+        return compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0;
+    };
+    // "n=5, δ=25.7°" (a caption) is several settings; otherwise the whole line is one.
+    std::vector<std::string_view> parts = topLevelParts(t);
+    bool caption = parts.size() > 1;
+    for (auto part : parts) {
+        const size_t pe = assignment(part);
+        if (pe == std::string_view::npos || !(settingAlias(trim(part.substr(0, pe))) || isIdentifier(trim(part.substr(0, pe))))) {
+            caption = false;
+            break;
+        }
+    }
+    if (!caption) parts = {t};
+    m_notation = true;
+    bool first = true;
+    for (auto part : parts) {
+        const size_t pe = assignment(part);
+        const std::string_view key = trim(part.substr(0, pe));
+        const std::string_view value = trim(part.substr(pe + 1));
+        const Directive* d = nullptr;
+        std::string_view directiveValue = value, writtenKey = key;
+        if (const char* alias = settingAlias(key); alias && !(std::string_view(alias) == "axiom" && key.size() == 1 && isConstant(value))) {
+            d = directiveNamed(alias);
+            if (key == alias) writtenKey = {};
+        } else if (isForeignSetting(key)) {
+            m_sink.warning(l.src, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
+            continue;
+        } else if (isIdentifier(key) && isConstant(value)) {
+            d = directiveNamed("define");
+            directiveValue = part;
+            writtenKey = {};
+            if (usedAsModule(key))
+                m_sink.warning(l.src, key, "'" + std::string(trim(part)) + "' was read as the constant " + std::string(key) +
+                                               " (a slider); for a rule that rewrites the module " + std::string(key) +
+                                               ", write '" + std::string(key) + " -> " + std::string(value) + "'");
+        } else if (!caption && !key.empty() && value.find("->") == std::string_view::npos) {
+            // A rule in the dialects that write them with '=' (F = FF, X = F[+X]F).
+            l.kind = Line::Rule;
+            l.equalsArrow = size_t(t.data() - l.src.text.data()) + eq;
+            return true;
+        } else {
+            m_sink.error(l.src, part, "expected a setting such as 'n = 5', a constant such as 'R = 1.456' or a rule such as 'F -> F+F'");
+            return true;
+        }
+        if (!d) continue;
+        if (first) {
+            l.kind = Line::DirectiveLine;
+            l.directive = d;
+            l.value = directiveValue;
+            l.key = writtenKey;
+            first = false;
+        } else {
+            l.more.push_back({d, directiveValue, writtenKey});
+        }
+    }
+    return true;
+}
+
+void Parser::applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key) {
+    m_g.settingsRead.push_back({src.number, d.name, std::string(trim(value)), std::string(key)});
+    d.handler(*this, src, value);
+}
+
+}  // namespace sprout::detail
