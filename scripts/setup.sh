@@ -16,6 +16,8 @@ packages=(
   python3-dev pybind11-dev
   # L-Py models import numpy as often as math (the corpus test counts on it)
   python3-numpy
+  # the editor shows pasted notation (δ ω → − p₁) with DejaVu Sans Mono's glyphs
+  fonts-dejavu-core
 )
 # The test suite checks exports with the Khronos glTF validator, from the npm registry.
 if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm); fi

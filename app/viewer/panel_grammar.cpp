@@ -139,6 +139,28 @@ void grammarSection(App& app) {
             ImGui::PopStyleColor();
         }
     }
+    if (latest && latest->grammar) {
+        // How the text was read (a pasted grammar: which notation, which settings it gave).
+        const Grammar& g = *latest->grammar;
+        const FileKind k = app.state.kind();
+        const std::string dialect = k == FileKind::Lpy        ? "L-Py"
+                                    : k == FileKind::Lparser  ? "Lparser"
+                                    : k == FileKind::Fractint ? "Fractint"
+                                                              : g.dialect;
+        ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+        if (ImGui::TreeNode("readas", "read as %s", dialect.c_str())) {
+            for (const auto& r : g.settingsRead) {
+                if (r.name == "define") ImGui::Text("line %d: constant %s", r.line, ascii(r.value).c_str());
+                else ImGui::Text("line %d: %s = %s%s%s%s", r.line, r.name.c_str(), ascii(r.value).c_str(), r.written.empty() ? "" : " (written '",
+                                 ascii(r.written).c_str(), r.written.empty() ? "" : "')");
+            }
+            for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
+                for (const auto& p : rs->productions)
+                    if (!p.label.empty()) ImGui::Text("line %d: rule %s", p.line, ascii(p.label).c_str());
+            ImGui::TreePop();
+        }
+        ImGui::PopStyleColor();
+    }
     const Worker& w = app.state.worker();
     if (w.busy()) {
         char label[64];
@@ -228,7 +250,12 @@ void whySection(App& app) {
         ImGui::PushID(int(k));
         const std::string name = g.alphabet[l.symbol].name;
         if (l.ruleLine > 0) {
-            if (ImGui::SmallButton(("line " + std::to_string(l.ruleLine)).c_str())) {
+            // ABOP's label when the rule has one: "p2, line 5".
+            std::string label;
+            for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
+                for (const auto& p : rs->productions)
+                    if (p.line == l.ruleLine && !p.label.empty()) label = ascii(p.label) + ", ";
+            if (ImGui::SmallButton((label + "line " + std::to_string(l.ruleLine)).c_str())) {
                 app.jumpTo = offsetOf(text, l.ruleLine, 1);
                 app.setHighlightLine(l.ruleLine);
             }

@@ -42,16 +42,30 @@ size_t keyValueStart(std::string_view line, std::string_view key) {
     std::string_view t = trimLeft(line);
     if (!startsWithNoCase(t, key)) return std::string_view::npos;
     std::string_view rest = trimLeft(t.substr(key.size()));
-    if (!rest.starts_with(":") || line.find("->") != std::string_view::npos) return std::string_view::npos;
+    // ABOP's notation and the web's dialects write `n = 5`, `δ = 25.7` as well.
+    const bool assigns = rest.starts_with("=") && !rest.starts_with("==");
+    if (!(rest.starts_with(":") || assigns) || line.find("->") != std::string_view::npos) return std::string_view::npos;
     size_t off = size_t(rest.data() - line.data()) + 1;
     while (off < line.size() && line[off] == ' ') ++off;
     return off;
 }
 
-size_t valueStart(std::string_view line, std::string_view key) {
-    if (key != "n" && key != "iterations") return keyValueStart(line, key);
-    for (std::string_view alias : {"n", "iterations", "derivation length"})
+size_t valueStartOfPart(std::string_view line, std::string_view key) {
+    static const std::vector<std::string_view> n{"n", "iterations", "derivation length", "dlength"},
+        angle{"angle", "\xCE\xB4", "delta"}, axiom{"axiom", "\xCF\x89", "start"};
+    const std::vector<std::string_view>* aliases = key == "n" || key == "iterations" ? &n : key == "angle" ? &angle : key == "axiom" ? &axiom : nullptr;
+    if (!aliases) return keyValueStart(line, key);
+    for (std::string_view alias : *aliases)
         if (size_t off = keyValueStart(line, alias); off != std::string_view::npos) return off;
+    return std::string_view::npos;
+}
+
+// Also inside a figure caption "n=5, δ=25.7°", after a comma.
+size_t valueStart(std::string_view line, std::string_view key) {
+    if (size_t off = valueStartOfPart(line, key); off != std::string_view::npos) return off;
+    if (key != "n" && key != "iterations" && key != "angle") return std::string_view::npos;
+    for (size_t comma = line.find(','); comma != std::string_view::npos; comma = line.find(',', comma + 1))
+        if (size_t off = valueStartOfPart(line.substr(comma + 1), key); off != std::string_view::npos) return comma + 1 + off;
     return std::string_view::npos;
 }
 
@@ -94,8 +108,15 @@ std::string setDirective(std::string_view text, std::string_view key, std::strin
         std::string_view line = text.substr(l.begin, l.end - l.begin);
         size_t v = valueStart(line, key);
         if (v == std::string_view::npos) continue;
-        // Keep a jitter (`angle: 22 ~ 4`) and a trailing carriage return.
+        // Keep a jitter (`angle: 22 ~ 4`) and a trailing carriage return; in a caption, the
+        // settings after this one.
         std::string_view old = line.substr(v);
+        if (size_t comma = old.find(','); comma != std::string_view::npos && (key == "n" || key == "iterations" || key == "angle")) {
+            std::string out(text.substr(0, l.begin + v));
+            out += value;
+            out += text.substr(l.begin + v + comma);
+            return out;
+        }
         size_t tilde = old.find('~');
         std::string keep = tilde == std::string_view::npos ? "" : " " + std::string(old.substr(tilde));
         if (tilde == std::string_view::npos && old.ends_with('\r')) keep = "\r";
@@ -123,15 +144,17 @@ std::string setDefine(std::string_view text, std::string_view name, std::string_
         std::string_view line = text.substr(l.begin, l.end - l.begin);
         std::string_view t = trimLeft(line);
         std::string_view rest;
+        bool bare = false;  // ABOP's notation and the web's: `R = 1.456`
         if (t.starts_with("#define")) rest = trimLeft(t.substr(7));
         else if (size_t v = valueStart(line, "define"); v != std::string_view::npos) rest = line.substr(v);
-        else continue;
+        else rest = t, bare = true;
         if (rest.starts_with(":")) rest = trimLeft(rest.substr(1));
         if (!rest.starts_with(name)) continue;
         std::string_view after = rest.substr(name.size());
         if (!after.empty() && (std::isalnum(static_cast<unsigned char>(after[0])) || after[0] == '_')) continue;
         size_t valueAt = size_t(after.data() - line.data());
         std::string_view a = trimLeft(after);
+        if (bare && (!a.starts_with("=") || a.starts_with("=="))) continue;
         if (a.starts_with("=")) valueAt = size_t(a.data() - line.data()) + 1;
         while (valueAt < line.size() && line[valueAt] == ' ') ++valueAt;
         std::string out(text.substr(0, l.begin + valueAt));

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <glm/geometric.hpp>
@@ -26,6 +27,33 @@
 
 namespace sprout::viewer {
 namespace {
+
+// ImGui's own font has ASCII and Latin-1 only: text pasted from ABOP, a PDF or a web page
+// (δ ω → − ≥ p₁ ’) would show as '?'. Those blocks are merged in from Debian's DejaVu Sans
+// Mono (fonts-dejavu-core) when it is installed; ASCII keeps ImGui's font and layout.
+void addNotationGlyphs() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->AddFontDefault();
+    for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf", "/usr/share/fonts/TTF/DejaVuSansMono.ttf"}) {
+        if (FILE* f = std::fopen(path, "rb")) {
+            std::fclose(f);
+            static const ImWchar ranges[] = {0x0370, 0x03FF,   // Greek
+                                             0x2000, 0x206F,   // punctuation: dashes, quotes, primes, spaces
+                                             0x2070, 0x209F,   // super- and subscripts
+                                             0x2190, 0x21FF,   // arrows
+                                             0x2200, 0x22FF,   // mathematical operators
+                                             0x27F0, 0x27FF,   // long arrows
+                                             0};
+            ImFontConfig config;
+            config.MergeMode = true;
+            config.GlyphMinAdvanceX = 7.0f;  // ImGui's font is 7 pixels a character
+            config.GlyphMaxAdvanceX = 7.0f;
+            io.Fonts->AddFontFromFileTTF(path, 13.0f, &config, ranges);
+            return;
+        }
+    }
+}
+
 
 render::ProcAddress glfwProc(const char* name) { return reinterpret_cast<render::ProcAddress>(glfwGetProcAddress(name)); }
 
@@ -136,6 +164,7 @@ int runViewer(int argc, char** argv) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed: no imgui.ini files left around
+    addNotationGlyphs();
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 0;
     ImGui_ImplGlfw_InitForOpenGL(window, true);

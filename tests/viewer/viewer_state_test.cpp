@@ -68,6 +68,23 @@ TEST(TextEdit, SliderValuesGoBackIntoTheText) {
     EXPECT_EQ(directiveValue(kPlant, "angle"), "25");
 }
 
+// ABOP's notation: sliders write back into the lines as they are written (a caption, δ, n =,
+// a constant `R = 1.456`), and the text still reads the same way.
+TEST(TextEdit, NotationSlidersWriteBackInPlace) {
+    const std::string caption = "n=5, \xCE\xB4=25.7\xC2\xB0\n\xCF\x89: F\np1: F \xE2\x86\x92 F[+F]F\n";
+    EXPECT_EQ(setDirective(caption, "angle", "30"), "n=5, \xCE\xB4=30\n\xCF\x89: F\np1: F \xE2\x86\x92 F[+F]F\n");
+    EXPECT_EQ(setDirective(caption, "n", "3"), "n=3, \xCE\xB4=25.7\xC2\xB0\n\xCF\x89: F\np1: F \xE2\x86\x92 F[+F]F\n");
+    EXPECT_EQ(directiveValue(caption, "angle"), "25.7\xC2\xB0");
+    EXPECT_EQ(setDirective("delta = 22.5\nn = 4\naxiom = F\n", "angle", "40"), "delta = 40\nn = 4\naxiom = F\n");
+    EXPECT_EQ(setDirective("delta = 22.5\nn = 4\naxiom = F\n", "n", "6"), "delta = 22.5\nn = 6\naxiom = F\n");
+    const std::string constant = "R = 1.456\n\xCF\x89: A(1)\nA(s) -> F(s)A(s/R)\n";
+    EXPECT_EQ(setDefine(constant, "R", "2"), "R = 2\n\xCF\x89: A(1)\nA(s) -> F(s)A(s/R)\n");
+    auto g = parse(setDirective(caption, "angle", "30")).grammar;
+    ASSERT_TRUE(g);
+    EXPECT_DOUBLE_EQ(g->settings.angle.mean, 30);
+    EXPECT_EQ(g->settings.iterations, 5);
+}
+
 // An L-Py model's scalars (its INITIALISATION part) are sliders written back in place.
 TEST(TextEdit, LpyScalarsAreSlidersWrittenBackInPlace) {
     const std::string text =

@@ -238,7 +238,15 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
         }
         // Text, a span at a time.
         int at = 0;
+        // A span that ends inside a UTF-8 character (the highlighter reads bytes: δ, →, p₁)
+        // ends after it, and the next one starts there: each character is drawn whole.
+        auto whole = [&](int p) {
+            while (p > 0 && p < int(line.size()) && (static_cast<unsigned char>(line[size_t(p)]) & 0xC0) == 0x80) ++p;
+            return p;
+        };
         auto text = [&](int b, int e, std::uint32_t col) {
+            b = whole(b);
+            e = whole(e);
             if (e > b) dl->AddText(ImVec2(textX + xOf(line, b), y), col, line.data() + b, line.data() + e);
         };
         if (size_t(i) < m_spans.size())
