@@ -361,6 +361,11 @@ class NurbsCurve2D:
         return [self.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n)]
 
 
+    def apply(self, action):
+        """PlantGL's actions on a curve: a Discretizer gets its polyline (the curve's stride)."""
+        return action.process(self)
+
+
 class NurbsCurve(NurbsCurve2D):
     """A 3D NURBS curve; control points are (x, y, z, weight)."""
     _dim = 3
@@ -395,6 +400,28 @@ class Polyline2D:
 
     def points(self, samples=None):
         return list(self.pointList)
+
+    def apply(self, action):
+        return action.process(self)
+
+
+class Discretizer:
+    """PlantGL's Discretizer: `curve.apply(d)` leaves the curve's points in `d.result` (a
+    Polyline2D for a 2D curve, a Polyline for a 3D one), sampled at the curve's stride."""
+
+    def __init__(self):
+        self.result = None
+
+    def process(self, obj):
+        pts = obj.points()
+        if pts and len(tuple(pts[0])) >= 3:
+            self.result = Polyline([Vector3(*tuple(p)[:3]) for p in pts])
+        else:
+            self.result = Polyline2D(pts)
+        return True
+
+    def clear(self):
+        self.result = None
 
 
 class QuantisedFunction:
@@ -505,7 +532,7 @@ _geometry_fields = {
     'BezierPatch': ('ctrlPointMatrix',), 'Extrusion': ('axis', 'crossSection', 'scale'), 'Revolution': ('profile',),
     'Swung': ('profileList', 'angleList'), 'Group': ('geometryList',), 'Text': ('string', 'position'), 'Font': (),
     'ImageTexture': ('name', 'filename'), 'Texture2D': ('image', 'transformation'), 'Texture2DTransformation': (),
-    'Discretizer': (), 'PointSet': ('pointList', 'colorList'),
+    'PointSet': ('pointList', 'colorList'),
     'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
                        'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
 }
