@@ -175,6 +175,25 @@ void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::strin
             replaced.emplace_back(first, std::string(s.what) + (count > 1 ? " (and in " + std::to_string(count - 1) + (count == 2 ? " more place)" : " more places)") : ""));
     }
     if (cpfg) return;
+    // Markdown's italics around words, as PDF converters write ABOP's module names
+    // (`*plant* -> *internode* + [*leaf*]`), in a text already in ABOP's notation: a '*' that
+    // opens or closes a word, outside parentheses. `* < + > *` and `x*2` stay.
+    if (notation) {
+        auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+        auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ')' || c == '('; };
+        int depth = 0;
+        for (size_t i = 0; i < text.size(); ++i) {
+            const char c = text[i];
+            if (c == '\n') depth = 0;
+            else if (c == '(') ++depth;
+            else if (c == ')') depth = std::max(0, depth - 1);
+            if (c != '*' || depth > 0) continue;
+            const char before = i > 0 ? text[i - 1] : ' ', after = i + 1 < text.size() ? text[i + 1] : ' ';
+            const bool opens = letter(after) && !word(before) && before != '*';
+            const bool closes = letter(before) && !word(after) && after != '*';
+            if (opens || closes) text[i] = ' ';
+        }
+    }
     // C comments on one line, as ABOP prints its #define lines ("#define r1 0.9 /* ratio */").
     for (size_t at = text.find("/*"); at != std::string::npos; at = text.find("/*", at + 2)) {
         const size_t close = text.find("*/", at + 2), eol = text.find('\n', at);
@@ -355,6 +374,56 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
         }
     }
     return true;
+}
+
+void Parser::joinNotationLines() {
+    auto blank = [](std::string_view t) {
+        t = trim(t);
+        return t.empty() || t.starts_with("#") || t.starts_with("//");
+    };
+    Line* rule = nullptr;  // the rule the lines after it may go on
+    for (auto& l : m_lines) {
+        std::string_view t = trim(l.src.text);
+        if (blank(t)) {
+            if (t.starts_with("#define") || t.starts_with("#ignore")) rule = nullptr;
+            continue;
+        }
+        if (findTopLevel(t, "->") != std::string_view::npos) {
+            rule = &l;
+            continue;
+        }
+        const bool setting = t.find(':') != std::string_view::npos || assignment(t) != std::string_view::npos;
+        if (rule && !setting) {
+            // The successor goes on: one logical line, reported at the rule's line.
+            m_store.push_back(std::string(rule->src.text) + " " + std::string(t));
+            rule->src.text = m_store.back();
+            rule->src.original = m_store.back();
+            l.src.text = l.src.text.substr(0, 0);
+            continue;
+        }
+        rule = nullptr;
+    }
+    // Words as modules: a predecessor written as a word of several letters ("plant", "seg")
+    // is one module wherever it is written, as ABOP's fig. 1.26 declares them.
+    std::vector<std::string> words;
+    for (const auto& l : m_lines) {
+        std::string_view t = trim(l.src.text);
+        const size_t arrow = findTopLevel(t, "->");
+        if (arrow == std::string_view::npos) continue;
+        std::string_view head = t.substr(0, arrow);
+        if (head.ends_with("-")) head.remove_suffix(1);
+        if (const size_t colon = findTopLevel(head, ":"); colon != std::string_view::npos) {
+            std::string_view label = trim(head.substr(0, colon));
+            if (!label.empty() && ruleLabelLength(label) == label.size()) head = head.substr(colon + 1);
+        }
+        head = trim(head);
+        if (head.size() > 1 && isIdentifier(head) && ruleLabelLength(head) != head.size()) words.emplace_back(head);
+    }
+    if (!words.empty()) {
+        std::string names;
+        for (const auto& w : words) names += w + " ";
+        declareModules(SourceLine{}, names);
+    }
 }
 
 void Parser::applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key) {

@@ -148,6 +148,9 @@ private:
     void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
+    // ABOP's notation as a PDF gives it: a successor that goes on over the next lines, and
+    // words as modules (`plant -> internode [+ leaf] ...`), declared from the predecessors.
+    void joinNotationLines();
     void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
     // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
     void buildCpfgLines();

@@ -205,6 +205,7 @@ ParseResult Parser::run() {
             }
         }
     }
+    if (!m_cpfg && m_notation) joinNotationLines();
     Section section = Section::Productions;
     bool ended = false;
     for (auto& l : m_lines) {
