@@ -71,6 +71,14 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
         const double* p = s.params.data();
         for (std::size_t i = 0; i < N; ++i) {
             const SymbolInfo& info = alphabet[sym[i]];
+            if (info.nameArgs) {  // a parameter written as a quoted name prints as that name
+                std::string m;
+                appendModule(m, info, p, &alphabet);
+                std::memcpy(out.reserve(m.size()), m.data(), m.size());
+                out.commit(m.size());
+                p += info.arity;
+                continue;
+            }
             // Name, '(', up to 32 numbers of at most 24 characters, ',' and ')'.
             char* dst = out.reserve(info.name.size() + 2 + std::size_t(info.arity) * 26);
             char* at = dst;

@@ -45,7 +45,7 @@ std::string moduleAt(const ModuleString& s, const Alphabet& a, const std::vector
     std::uint64_t p = checkpoints[size_t(i / kCheckpoint)];
     for (std::uint64_t k = i / kCheckpoint * kCheckpoint; k < i; ++k) p += a[s.symbols.data()[k]].arity;
     std::string out;
-    appendModule(out, a[s.symbols.data()[i]], s.params.data() + p);
+    appendModule(out, a[s.symbols.data()[i]], s.params.data() + p, &a);
     return out;
 }
 

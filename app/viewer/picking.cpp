@@ -135,7 +135,7 @@ App::Selection App::selectionOf(std::shared_ptr<const Result> plant, std::uint32
         const Alphabet& alphabet = pick.record.grammar->alphabet;
         std::size_t p = 0;
         for (std::uint32_t i = 0; i < module; ++i) p += alphabet[drawn->symbols.data()[i]].arity;
-        appendModule(s.text, alphabet[drawn->symbols.data()[module]], drawn->params.data() + p);
+        appendModule(s.text, alphabet[drawn->symbols.data()[module]], drawn->params.data() + p, &alphabet);
     }
     return s;
 }

@@ -39,4 +39,11 @@ std::optional<SymbolId> Alphabet::intern(std::string_view name, int arity) {
     return id;
 }
 
+double Alphabet::internString(std::string_view text) {
+    for (size_t i = 0; i < m_strings.size(); ++i)
+        if (m_strings[i] == text) return double(i);
+    m_strings.emplace_back(text);
+    return double(m_strings.size() - 1);
+}
+
 }  // namespace sprout

@@ -18,6 +18,9 @@ struct SymbolInfo {
     std::string name;
     NameId nameId = 0;  // shared by all arities of one name (contexts and `ignore` match names)
     std::uint8_t arity = 0;
+    // Parameters written as quoted names (`SetContour("leaf")`): bit k for parameter k, whose
+    // number is an index into Alphabet::strings(); printed back as the name.
+    std::uint32_t nameArgs = 0;
 };
 
 class Alphabet {
@@ -39,12 +42,17 @@ public:
     size_t size() const { return m_symbols.size(); }
     size_t nameCount() const { return m_names.size(); }
     const std::string& name(NameId id) const { return m_names[id]; }
+    // Quoted names given as parameters: the number that stands for `text`, and its text back.
+    double internString(std::string_view text);
+    const std::vector<std::string>& strings() const { return m_strings; }
+    void markNameArg(SymbolId id, int k) { m_symbols[id].nameArgs |= std::uint32_t(1) << k; }
 
 private:
     std::vector<SymbolInfo> m_symbols;
     std::vector<std::string> m_names;
     std::unordered_map<std::string, NameId> m_nameIds;
     std::unordered_map<std::uint64_t, SymbolId> m_ids;  // (nameId << 8 | arity) -> symbol
+    std::vector<std::string> m_strings;
 };
 
 }  // namespace sprout

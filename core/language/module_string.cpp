@@ -11,13 +11,20 @@ void appendNumber(std::string& out, double v) {
     out.append(buf, r.ptr);
 }
 
-void appendModule(std::string& out, const SymbolInfo& symbol, const double* params) {
+void appendModule(std::string& out, const SymbolInfo& symbol, const double* params, const Alphabet* alphabet) {
     out += symbol.name;
     if (symbol.arity == 0) return;
     out += '(';
     for (int k = 0; k < symbol.arity; ++k) {
         if (k) out += ',';
-        appendNumber(out, params[k]);
+        const double v = params[k];
+        if (alphabet && (symbol.nameArgs >> k & 1) && v >= 0 && v < double(alphabet->strings().size()) && v == double(size_t(v))) {
+            out += '\'';  // a quoted name, as written
+            out += alphabet->strings()[size_t(v)];
+            out += '\'';
+        } else {
+            appendNumber(out, v);
+        }
     }
     out += ')';
 }
@@ -28,7 +35,7 @@ std::string toString(const ModuleString& s, const Alphabet& alphabet) {
     const double* p = s.params.data();
     for (SymbolId id : s.symbols) {
         const SymbolInfo& info = alphabet[id];
-        appendModule(out, info, p);
+        appendModule(out, info, p, &alphabet);
         p += info.arity;
     }
     return out;

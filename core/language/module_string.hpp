@@ -20,7 +20,8 @@ struct ModuleString {
 
 // Module names concatenated, parameters as name(p1,p2) in shortest round-trip decimal form.
 std::string toString(const ModuleString& s, const Alphabet& alphabet);
-void appendModule(std::string& out, const SymbolInfo& symbol, const double* params);
+// With `alphabet`, a parameter written as a quoted name prints as that name.
+void appendModule(std::string& out, const SymbolInfo& symbol, const double* params, const Alphabet* alphabet = nullptr);
 void appendNumber(std::string& out, double v);
 
 // A rewriting's fixed point, bit for bit: a NaN parameter is the same NaN, not a change.

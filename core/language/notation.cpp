@@ -426,6 +426,23 @@ void Parser::joinNotationLines() {
     }
 }
 
+void Parser::declareNamedModules() {
+    // `SetContour("leaf")`, `SetGuide('axis')`: a word before a quoted name is one module (as
+    // L-Py's vocabulary is), where it would otherwise be a letter each.
+    std::string names;
+    const std::string_view t = m_text;
+    for (size_t i = 0; i < t.size(); ++i) {
+        if (t[i] != '(') continue;
+        size_t q = i + 1;
+        while (q < t.size() && isSpace(t[q])) ++q;
+        if (q >= t.size() || (t[q] != '\'' && t[q] != '"')) continue;
+        size_t b = i;
+        while (b > 0 && (std::isalnum(static_cast<unsigned char>(t[b - 1])) || t[b - 1] == '_')) --b;
+        if (i - b > 1 && std::isalpha(static_cast<unsigned char>(t[b]))) names += std::string(t.substr(b, i - b)) + " ";
+    }
+    if (!names.empty()) declareModules(SourceLine{}, names);
+}
+
 void Parser::applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key) {
     m_g.settingsRead.push_back({src.number, d.name, std::string(trim(value)), std::string(key)});
     d.handler(*this, src, value);

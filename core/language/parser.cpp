@@ -66,6 +66,13 @@ bool Parser::tokenize(const SourceLine& line, std::string_view text, std::vector
             int depth = 0;
             size_t argStart = j + 1, k = j;
             for (; k < text.size(); ++k) {
+                if ((text[k] == '\'' || text[k] == '"') && depth == 1) {  // a quoted name: its commas and parentheses are text
+                    const size_t close = text.find(text[k], k + 1);
+                    if (close != std::string_view::npos) {
+                        k = close;
+                        continue;
+                    }
+                }
                 if (text[k] == '(') ++depth;
                 else if (text[k] == ')' && --depth == 0) break;
                 else if (text[k] == ',' && depth == 1) {
@@ -268,8 +275,13 @@ void Parser::setAxiom(const SourceLine& line, std::string_view text) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
         if (!id) return;
         axiom.symbols.push_back(*id);
-        for (auto arg : m.args) {
-            auto v = constant(line, arg);
+        for (size_t k = 0; k < m.args.size(); ++k) {
+            if (auto name = quotedName(m.args[k])) {
+                axiom.params.push_back(m_g.alphabet.internString(*name));
+                m_g.alphabet.markNameArg(*id, int(k));
+                continue;
+            }
+            auto v = constant(line, m.args[k]);
             if (!v) return;
             axiom.params.push_back(*v);
         }
@@ -319,6 +331,14 @@ bool Parser::setPlainAxiom(const SourceLine& line, std::string_view text) {
     if (axiom.size() == 0) return false;
     m_g.axiom = std::move(axiom);
     return true;
+}
+
+std::optional<std::string_view> Parser::quotedName(std::string_view arg) {
+    arg = trim(arg);
+    if (arg.size() < 2 || (arg.front() != '\'' && arg.front() != '"') || arg.back() != arg.front() ||
+        arg.find(arg.front(), 1) != arg.size() - 1)
+        return std::nullopt;
+    return trim(arg.substr(1, arg.size() - 2));
 }
 
 void Parser::setIgnore(const SourceLine& line, std::string_view text) {

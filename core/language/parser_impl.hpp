@@ -109,6 +109,8 @@ public:
     void define(const SourceLine& line, std::string_view text);
     void setAxiom(const SourceLine& line, std::string_view text);
     bool setPlainAxiom(const SourceLine& line, std::string_view text);  // no parameters: the fast way
+    // A parameter written as a quoted name ('ctr', "leaf"): the name, without its quotes.
+    static std::optional<std::string_view> quotedName(std::string_view arg);
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
     void declareEnvironment(const SourceLine& line, std::string_view text);
@@ -151,6 +153,7 @@ private:
     // ABOP's notation as a PDF gives it: a successor that goes on over the next lines, and
     // words as modules (`plant -> internode [+ leaf] ...`), declared from the predecessors.
     void joinNotationLines();
+    void declareNamedModules();  // `SetContour("leaf")`: a word before a quoted name is one module
     void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
     // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
     void buildCpfgLines();

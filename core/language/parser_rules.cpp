@@ -67,7 +67,14 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
         auto id = symbolFor(line, m.name, int(m.args.size()));
         if (!id) return false;
         out.symbols.push_back(*id);
-        for (auto arg : m.args) {
+        for (size_t k = 0; k < m.args.size(); ++k) {
+            std::string_view arg = m.args[k];
+            std::string number;
+            if (auto name = quotedName(arg)) {  // `SetContour("leaf")`: the name's number, printed back as the name
+                appendNumber(number, m_g.alphabet.internString(*name));
+                m_g.alphabet.markNameArg(*id, int(k));
+                arg = number;
+            }
             auto e = compileExpr(arg, line, scope, m_sink);
             if (e) out.args.push_back(std::move(*e));
             else ok = false;

@@ -206,6 +206,7 @@ ParseResult Parser::run() {
         }
     }
     if (!m_cpfg && m_notation) joinNotationLines();
+    if (!m_cpfg) declareNamedModules();
     Section section = Section::Productions;
     bool ended = false;
     for (auto& l : m_lines) {

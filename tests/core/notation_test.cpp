@@ -142,6 +142,19 @@ TEST(Notation, BadInputSaysWhereAndWhat) {
     EXPECT_EQ(d[0], "1:1: warning: 'X = 2' was read as the constant X (a slider); for a rule that rewrites the module X, write 'X -> 2'");
 }
 
+// Quoted string parameters are kept as names, for the modules that take one: printed back
+// as written, the same name the same number, a word before one a module of its own.
+TEST(Notation, QuotedParametersAreNames) {
+    const std::string text = "n: 2\naxiom: SetContour(\"leaf\") A\nA -> F(1) @Gc('ctr, 2') SetContour(\u2018leaf\u2019) A\n";
+    EXPECT_EQ(test::expand(text, 1), "SetContour('leaf')F(1)@Gc('ctr, 2')SetContour('leaf')A");
+    auto g = test::grammarOf(text);
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->alphabet.strings(), (std::vector<std::string>{"leaf", "ctr, 2"}));
+    const auto id = g->alphabet.find("SetContour", 1);
+    ASSERT_TRUE(id);
+    EXPECT_EQ(g->alphabet[*id].nameArgs, 1u);
+}
+
 TEST(Notation, PastedTextKeepsItsColumns) {
     // A thin space and a Unicode minus before an error: the column is counted in the text as typed.
     auto d = test::diagnosticsOf("\xCF\x89:\xE2\x80\x89" "F\nF \xE2\x86\x92 F\xE2\x88\x92(F\n");
