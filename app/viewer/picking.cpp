@@ -78,8 +78,13 @@ std::string App::describeSelection() const {
     if (size_t(drawn) < steps.size() && steps[size_t(drawn)] && selection->module < steps[size_t(drawn)]->size())
         name = g.alphabet[steps[size_t(drawn)]->symbols.data()[selection->module]].name;
     std::string out = "module=" + name + " index=" + std::to_string(selection->module);
-    if (!selection->links.empty())
-        out += " step=" + std::to_string(selection->links[0].step) + " rule_line=" + std::to_string(selection->links[0].ruleLine);
+    if (!selection->links.empty()) {
+        const LineageLink& l = selection->links[0];
+        out += " step=" + std::to_string(l.step) + " rule_line=" + std::to_string(l.ruleLine);
+        // ABOP's label of that rule, when it has one ("p2").
+        if (l.rule >= 0 && size_t(l.rule) < g.rules.productions.size() && !g.rules.productions[size_t(l.rule)].label.empty())
+            out += " rule_label=" + g.rules.productions[size_t(l.rule)].label;
+    }
     return out;
 }
 

@@ -6,7 +6,8 @@
 //   environment <k> <value>   the k-th (from 0) environment slider, as the panel's would
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
-//                         "module=NAME index=I step=S rule_line=L" (or "module=none")
+//                         "module=NAME index=I step=S rule_line=L" (with " rule_label=p2" for
+//                         a rule labelled in ABOP's notation; "module=none" for nothing)
 //   highlight-rule <line> every stem and leaf the rule on that line made: prints "highlighted=N"
 //   inspect <step> <module>   the derivation inspector on that step, that module chosen; prints
 //                         what it says of the module, a line each ("inspect: ...")

@@ -229,6 +229,25 @@ TEST(Window, PickingNamesTheModuleAndRuleAndHighlightsWhatARuleMade) {
     EXPECT_GT(differ, 1000u) << "another rule lights up other stems";
 }
 
+// ABOP's notation pasted into the viewer: the same plant as the preset written in .lsys (the
+// same pixel picks the same module), the rule named by its label, and the angle slider writes
+// back into the 'δ=' of the caption line.
+TEST(Window, AbopNotationIsReadAsTheSamePlantWithItsLabels) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("notation_window");
+    const std::string saved = (dir / "saved.txt").string();
+    const auto printed = runScript(dir, "fractal_plant --size 1300x860",
+                                   "text # ABOP fig. 1.24f\\nn=5, \xCE\xB4=22.5\xC2\xB0\\n\xCF\x89: X\\n"
+                                   "p\xE2\x82\x81: X \xE2\x86\x92 F\xE2\x88\x92[[X]+X]+F[+FX]\xE2\x88\x92X\\n"
+                                   "p\xE2\x82\x82: F \xE2\x86\x92 FF\\n\n"
+                                   "wait\npick 946 720\nset angle 30\nwait\nsaveas " + saved + "\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"module=F index=9 step=5 rule_line=5 rule_label=p\xE2\x82\x82"}));
+    std::ifstream in(saved);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("n=5, \xCE\xB4=30\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("p\xE2\x82\x81: X \xE2\x86\x92 F\xE2\x88\x92[[X]"), std::string::npos) << "the text stays as pasted";
+}
+
 // Picking in a forest names the plant and its species (the shaded row: six light trees).
 TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
