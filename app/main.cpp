@@ -21,7 +21,7 @@ int printUsage(bool toStderr) {
                  "  sprout expand FILE|PRESET [-n N] [--seed S] [--stats] [--max-modules M] [--max-memory MB]\n"
                  "                                  print the derived string of step N\n"
                  "  sprout render FILE|PRESET -o out.png [--size WxH] [-n N] [--seed S] [--view front|side|top|iso]\n"
-                 "                [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--stats] [--detail full|viewer]\n"
+                 "                [--yaw DEG] [--pitch DEG] [--no-shadows] [--no-ground] [--transparent] [--stats] [--detail full|viewer]\n"
                  "                                  render a picture with no display (OSMesa)\n"
                  "  sprout render FILE|PRESET --animate growth|turntable -o out.mp4 [--frames N] [--fps F]\n"
                  "                                  a growth or turntable video (ffmpeg), or PNG frames\n"

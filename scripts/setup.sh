@@ -24,6 +24,8 @@ if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm
 # Growth and turntable videos are encoded by ffmpeg (without it Sprout writes PNG frames);
 # the tests check the videos with ffprobe.
 if [ "$mode" = test ]; then packages+=(ffmpeg); fi
+# The install and package tests read what they check with the tools that use it.
+if [ "$mode" = test ]; then packages+=(lintian desktop-file-utils shared-mime-info man-db dpkg-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

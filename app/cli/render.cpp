@@ -173,7 +173,7 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 }  // namespace
 
 int runRender(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--stats", "--show-environment", "--no-python"},
+    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--transparent", "--stats", "--show-environment", "--no-python"},
               {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
                "--frames", "--fps", "--light-slice", "--detail"});
     SnapshotOptions o;
@@ -221,7 +221,7 @@ int runRender(int argc, char** argv) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
                      " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground] [--show-environment] [--light-slice H] [--detail full|viewer] [--no-python]\n"
+                     " [--no-shadows] [--no-ground] [--transparent] [--show-environment] [--light-slice H] [--detail full|viewer] [--no-python]\n"
                      "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
@@ -302,6 +302,29 @@ int runRender(int argc, char** argv) {
     if (!renderSnapshot(loaded->grammar, o, shot, error)) {
         std::cerr << loaded->displayName << ": " << error << "\n";
         return 1;
+    }
+    if (args.flag("--transparent")) {
+        // The sky (and ground, unless --no-ground) left out: each pixel the plant does not
+        // change from the empty scene seen by the same camera is transparent (icons, overlays).
+        const render::Camera c = snapshotCamera(shot.geometry, o);
+        SnapshotOptions e = o;
+        e.yaw = c.yaw;
+        e.pitch = c.pitch;
+        e.distance = c.distance;
+        e.target = c.target;
+        e.showEnvironment = false;
+        Snapshot empty;
+        if (!renderGeometry(e, empty, error)) {
+            std::cerr << loaded->displayName << ": " << error << "\n";
+            return 1;
+        }
+        auto& px = shot.image.rgba;
+        const auto& bg = empty.image.rgba;
+        for (std::size_t i = 0; i + 3 < px.size() && i + 3 < bg.size(); i += 4) {
+            const int d = std::max({std::abs(int(px[i]) - int(bg[i])), std::abs(int(px[i + 1]) - int(bg[i + 1])),
+                                    std::abs(int(px[i + 2]) - int(bg[i + 2]))});
+            px[i + 3] = std::uint8_t(d <= 2 ? 0 : d >= 24 ? 255 : d * 255 / 24);  // soft edges where the plant meets the sky
+        }
     }
     shot.image.text.emplace_back("lsys", recipe);
     if (!view.empty()) shot.image.text.emplace_back("sprout-view", view);
