@@ -25,7 +25,7 @@ if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm
 # the tests check the videos with ffprobe.
 if [ "$mode" = test ]; then packages+=(ffmpeg); fi
 # The install and package tests read what they check with the tools that use it.
-if [ "$mode" = test ]; then packages+=(lintian desktop-file-utils shared-mime-info man-db dpkg-dev); fi
+if [ "$mode" = test ]; then packages+=(lintian desktop-file-utils shared-mime-info man-db dpkg-dev file); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
