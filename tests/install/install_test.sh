@@ -85,4 +85,14 @@ complete_line() {
 "$prefix/bin/sprout" --version | grep -q '^sprout ' || fail "--version"
 "$prefix/bin/sprout" render koch -o "$root/koch.png" --size 160x120 >/dev/null 2>&1 || fail "render"
 [ -s "$root/koch.png" ] || fail "no picture rendered"
+# The C++ library: a ten-line project of someone else's builds against the installed tree
+# (find_package(Sprout), Sprout::core) and derives a plant.
+here="$(cd "$(dirname "$0")" && pwd)"
+cmake -S "$here/consumer" -B "$root/consumer" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release >"$root/consumer.log" 2>&1 \
+  || { cat "$root/consumer.log"; fail "find_package(Sprout)"; }
+cmake --build "$root/consumer" >>"$root/consumer.log" 2>&1 || { cat "$root/consumer.log"; fail "the consumer project does not build"; }
+got="$("$root/consumer/consumer")"
+want="$(printf 'F[+F]F[-F]F[+F[+F]F[-F]F]F[+F]F[-F]F[-F[+F]F[-F]F]F[+F]F[-F]F\n25 segments')"
+[ "$got" = "$want" ] || fail "the consumer derived '$got'"
+[ -s "$prefix/lib/cmake/Sprout/SproutConfig.cmake" ] || fail "no CMake package"
 echo "install: ok ($prefix)"
