@@ -62,8 +62,14 @@ PyObject* rawProduce(PyObject*, PyObject* items) {
 
 }  // namespace
 
-// The functions and classes L-Py's generated code and model files call.
-PYBIND11_EMBEDDED_MODULE(_sprout_lpy, m) {
+// The functions and classes L-Py's generated code and model files call: a module built into the
+// program's embedded interpreter, or made by start() inside a Python process (the `sprout`
+// Python module, compiled with SPROUT_LPY_IN_EXTENSION: that interpreter is already running).
+static void defineSproutLpy(py::module_& m);
+#ifndef SPROUT_LPY_IN_EXTENSION
+PYBIND11_EMBEDDED_MODULE(_sprout_lpy, m) { defineSproutLpy(m); }
+#endif
+static void defineSproutLpy(py::module_& m) {
     // produce and nproduce run once a match: plain CPython functions, without pybind11's
     // dispatch (a third of a produce-only rule's cost).
     static PyMethodDef produceDefs[] = {{"__lpy_produce", rawProduce<true>, METH_O, nullptr},
@@ -176,7 +182,15 @@ std::string_view embedded(std::string_view stem) {
 
 void start() {
     std::call_once(g_started, [] {
+#ifdef SPROUT_LPY_IN_EXTENSION
+        py::gil_scoped_acquire gil;
+        static py::module_::module_def def;
+        py::module_ native = py::module_::create_extension_module("_sprout_lpy", nullptr, &def);
+        defineSproutLpy(native);
+        py::module_::import("sys").attr("modules")["_sprout_lpy"] = native;
+#else
         py::initialize_interpreter(false);
+#endif
         {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
@@ -191,7 +205,9 @@ void start() {
             openalea.attr("plantgl") = sys.attr("modules")["openalea.plantgl"];
             sys.attr("modules")["openalea.plantgl"].attr("all") = sys.attr("modules")["openalea.plantgl.all"];
         }
+#ifndef SPROUT_LPY_IN_EXTENSION
         PyEval_SaveThread();  // the GIL is taken by whichever thread runs a model
+#endif
     });
 }
 

@@ -95,4 +95,10 @@ got="$("$root/consumer/consumer")"
 want="$(printf 'F[+F]F[-F]F[+F[+F]F[-F]F]F[+F]F[-F]F[-F[+F]F[-F]F]F[+F]F[-F]F\n25 segments')"
 [ "$got" = "$want" ] || fail "the consumer derived '$got'"
 [ -s "$prefix/lib/cmake/Sprout/SproutConfig.cmake" ] || fail "no CMake package"
+# The Python module, installed into the prefix's Python path.
+pydir="$(ls -d "$prefix"/lib/python3*/dist-packages 2>/dev/null | head -1)"
+if [ -n "$pydir" ]; then
+  got="$(cd "$root" && PYTHONPATH="$pydir" /usr/bin/python3 -c 'import sprout; print(sprout.__file__.startswith("'"$pydir"'"), str(sprout.open("koch").derive(1)))')"
+  [ "$got" = "True -(90)F-F++F-F++F-F++F-F++F-F++F-F" ] || fail "the installed Python module: '$got'"
+fi
 echo "install: ok ($prefix)"

@@ -1,0 +1,445 @@
+// `import sprout` (issue 23): Sprout's engine for Python programs and notebooks, on pybind11
+// like the L-Py host. This is the native part, `sprout._sprout`; python/sprout/__init__.py
+// adds the notebook's picture and slider. It runs inside the Python process: L-Py models use
+// that interpreter (lpy/ built as sprout_lpy_ext), not an embedded one.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <sys/stat.h>
+
+#include "app/export/export.hpp"
+#include "app/image.hpp"
+#include "app/presets.hpp"
+#include "app/snapshot.hpp"
+#include "core/derive/derive.hpp"
+#include "core/derive/draw.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/language/grammar.hpp"
+#include "core/language/import/import.hpp"
+#include "core/language/module_string.hpp"
+#include "lpy/host.hpp"
+
+namespace py = pybind11;
+using namespace sprout;
+
+namespace {
+
+// A grammar error as Python sees it: sprout.GrammarError(message, line, col, diagnostics).
+[[noreturn]] void raiseDiagnostics(const std::vector<Diagnostic>& diags, const std::string& name) {
+    const Diagnostic* first = nullptr;
+    py::list all;
+    for (const auto& d : diags) {
+        all.append(py::make_tuple(d.line, d.col, d.severity == Severity::Error ? "error" : "warning", d.message));
+        if (!first && d.severity == Severity::Error) first = &d;
+    }
+    py::object cls = py::module_::import("sprout").attr("GrammarError");
+    const std::string message = first ? formatDiagnostic(*first, name) : name + ": cannot be read";
+    PyErr_SetObject(cls.ptr(), cls(message, first ? first->line : 0, first ? first->col : 0, all).ptr());
+    throw py::error_already_set();
+}
+
+// A string of modules, read-only and shared with the derivation (never copied): its length,
+// its modules by index, its symbols and parameters as numpy arrays over the same memory.
+class LString {
+public:
+    LString(std::shared_ptr<const ModuleString> s, std::shared_ptr<const Grammar> g) : m_s(std::move(s)), m_g(std::move(g)) {}
+    size_t size() const { return m_s->size(); }
+    py::tuple module(py::ssize_t i) {
+        const py::ssize_t n = py::ssize_t(size());
+        if (i < 0) i += n;
+        if (i < 0 || i >= n) throw py::index_error("module index out of range");
+        const SymbolInfo& info = m_g->alphabet[m_s->symbols.data()[i]];
+        const double* p = m_s->params.data() + paramOffset(size_t(i));
+        py::tuple params(info.arity);
+        for (int k = 0; k < info.arity; ++k) {
+            if (info.nameArgs >> k & 1 && p[k] >= 0 && p[k] < double(m_g->alphabet.strings().size()))
+                params[size_t(k)] = py::str(m_g->alphabet.strings()[size_t(p[k])]);
+            else
+                params[size_t(k)] = py::float_(p[k]);
+        }
+        return py::make_tuple(info.name, params);
+    }
+    std::string text() const { return toString(*m_s, m_g->alphabet); }
+    size_t count(const std::string& name) const {
+        std::vector<bool> match(m_g->alphabet.size());
+        for (size_t k = 0; k < match.size(); ++k) match[k] = m_g->alphabet[SymbolId(k)].name == name;
+        size_t n = 0;
+        for (size_t i = 0; i < size(); ++i) n += match[m_s->symbols.data()[i]];
+        return n;
+    }
+    // Views of the derivation's own memory (kept alive by this object), read-only.
+    py::array symbols(py::handle self) const {
+        return readOnly(py::array(py::dtype::of<std::uint16_t>(), {py::ssize_t(size())}, {py::ssize_t(sizeof(SymbolId))},
+                                  m_s->symbols.data(), self));
+    }
+    py::array params(py::handle self) const {
+        return readOnly(py::array(py::dtype::of<double>(), {py::ssize_t(m_s->params.size())}, {py::ssize_t(sizeof(double))},
+                                  m_s->params.data(), self));
+    }
+    static py::array readOnly(py::array a) {
+        a.attr("setflags")(py::arg("write") = false);
+        return a;
+    }
+    py::list alphabet() const {
+        py::list out;
+        for (size_t k = 0; k < m_g->alphabet.size(); ++k) out.append(py::make_tuple(m_g->alphabet[SymbolId(k)].name, m_g->alphabet[SymbolId(k)].arity));
+        return out;
+    }
+
+private:
+    // Where module i's parameters start: a checkpoint every 64 modules, then a short walk.
+    size_t paramOffset(size_t i) {
+        if (m_s->params.size() == 0) return 0;
+        if (m_marks.empty()) {
+            m_marks.reserve(size() / 64 + 1);
+            size_t at = 0;
+            for (size_t k = 0; k < size(); ++k) {
+                if (k % 64 == 0) m_marks.push_back(at);
+                at += m_g->alphabet[m_s->symbols.data()[k]].arity;
+            }
+        }
+        size_t at = m_marks[i / 64];
+        for (size_t k = i / 64 * 64; k < i; ++k) at += m_g->alphabet[m_s->symbols.data()[k]].arity;
+        return at;
+    }
+    std::shared_ptr<const ModuleString> m_s;
+    std::shared_ptr<const Grammar> m_g;
+    std::vector<size_t> m_marks;
+};
+
+// One plant: a grammar (any kind Sprout opens) and its derivation, step by step.
+class Plant {
+public:
+    std::string name, text, dialect;
+    FileKind kind = FileKind::Lsys;
+    std::shared_ptr<const Grammar> grammar;
+    std::vector<std::shared_ptr<const Grammar>> lpySteps;  // an L-Py model: each step, drawn as it is
+    std::vector<Diagnostic> warnings;
+    std::string lpyString;  // an L-Py model: its last string as L-Py writes it
+
+    int iterations() const { return lpySteps.empty() ? grammar->settings.iterations : int(lpySteps.size()) - 1; }
+
+    // Step n's string (derived as far as needed, the steps before it kept).
+    LString derive(std::optional<int> n, std::optional<std::uint64_t> seed) {
+        const int k = n.value_or(iterations());
+        if (k < 0) throw py::value_error("the step must be 0 or more");
+        if (!lpySteps.empty()) {
+            if (k >= int(lpySteps.size()))
+                throw py::value_error("this L-Py model was run for " + std::to_string(lpySteps.size() - 1) +
+                                      " steps: open it with steps=" + std::to_string(k));
+            return LString(std::make_shared<const ModuleString>(lpySteps[size_t(k)]->axiom), lpySteps[size_t(k)]);
+        }
+        if (!m_derivation || m_seed != seed) {
+            DeriveOptions o;
+            o.seed = seed;
+            m_derivation = std::make_unique<Derivation>(grammar, o);
+            m_seed = seed;
+        }
+        DeriveOutcome outcome;
+        std::shared_ptr<const ModuleString> s;
+        {
+            py::gil_scoped_release release;
+            outcome = m_derivation->deriveTo(k);
+            if (outcome.ok()) s = m_derivation->step(k);
+        }
+        if (!outcome.ok()) throw py::value_error(name + ": " + outcome.message);
+        return LString(s, grammar);
+    }
+
+    // The grammar to draw for step n (an L-Py step is its own) and the options that draw it.
+    std::shared_ptr<const Grammar> drawn(std::optional<int> n, std::optional<std::uint64_t> seed, SnapshotOptions& o) const {
+        const int k = n.value_or(iterations());
+        if (!lpySteps.empty()) {
+            if (k < 0 || k >= int(lpySteps.size())) throw py::value_error("no step " + std::to_string(k) + " in this L-Py model's run");
+            return lpySteps[size_t(k)];
+        }
+        o.iterations = k;
+        o.seed = seed;
+        return grammar;
+    }
+
+    Geometry geometry(std::optional<int> n, std::optional<std::uint64_t> seed) {
+        SnapshotOptions o;
+        auto g = drawn(n, seed, o);
+        Geometry out;
+        const int k = o.iterations.value_or(0);
+        DeriveOptions d;
+        d.seed = seed;
+        std::string error;
+        {
+            py::gil_scoped_release release;
+            DeriveResult r = sprout::derive(g, k, d);
+            if (!r.outcome.ok()) error = r.outcome.message;
+            else interpret(*r.string, *g, {k, seed.value_or(g->settings.seed)}, out);
+        }
+        if (!error.empty()) throw py::value_error(name + ": " + error);
+        return out;
+    }
+
+private:
+    std::unique_ptr<Derivation> m_derivation;
+    std::optional<std::uint64_t> m_seed;
+};
+
+Plant parsed(std::string text, FileKind kind, const std::string& path, const std::string& name, bool python, int steps) {
+    Plant p;
+    p.name = name;
+    p.kind = kind;
+    if (kind == FileKind::Ifs || kind == FileKind::Forest)
+        throw py::value_error(name + ": holds " + (kind == FileKind::Ifs ? "an iterated function system" : "a forest scene") +
+                              ", not one grammar: `sprout render` draws it");
+    if (kind == FileKind::Lpy && lpy::pythonAvailable()) {
+        if (!python) throw py::value_error(name + ": an L-Py model runs Python; python=False refuses to run it");
+        lpy::RunOptions ro;
+        ro.path = path;
+        ro.steps = steps;
+        ro.keepSteps = true;
+        lpy::Model m;
+        {
+            py::gil_scoped_release release;  // the model takes the GIL itself, and can be cancelled
+            m = lpy::runModel(text, ro);
+        }
+        if (!m.ok()) raiseDiagnostics(m.diagnostics, name);
+        p.grammar = m.drawable;
+        p.lpySteps = std::move(m.steps);
+        if (p.lpySteps.empty()) p.lpySteps.push_back(m.drawable);
+        p.dialect = "L-Py";
+        p.lpyString = std::move(m.derived);
+        p.warnings = m.diagnostics;
+        p.text = std::move(text);
+        return p;
+    }
+    ParseResult r = parse(text, parseOptionsFor(kind, path));
+    if (!r.ok()) raiseDiagnostics(r.diagnostics, name);
+    p.grammar = r.grammar;
+    p.dialect = r.grammar->dialect;
+    p.warnings = r.diagnostics;
+    p.text = std::move(text);
+    return p;
+}
+
+FileKind kindNamed(const std::string& kind) {
+    static const std::pair<const char*, FileKind> kinds[] = {
+        {"lsys", FileKind::Lsys}, {"abop", FileKind::Lsys}, {"cpfg", FileKind::Cpfg}, {"lpy", FileKind::Lpy},
+        {"lparser", FileKind::Lparser}, {"fractint", FileKind::Fractint}};
+    for (const auto& [n, k] : kinds)
+        if (kind == n) return k;
+    throw py::value_error("kind must be one of lsys, abop, cpfg, lpy, lparser, fractint (or None to detect it)");
+}
+
+// sprout.parse(text, kind=None)
+Plant parseText(const std::string& text, std::optional<std::string> kind, bool python, int steps) {
+    FileKind k = kind ? kindNamed(*kind) : detectFileKind("", text);
+    std::string t = text;
+    std::string dialect;
+    if (k == FileKind::Lparser || k == FileKind::Fractint) {
+        ImportResult imported = k == FileKind::Lparser ? importLparser(text, "text") : importFractint(text, "");
+        if (!imported.ok()) raiseDiagnostics(imported.diagnostics, "<text>");
+        dialect = k == FileKind::Lparser ? "Lparser" : "Fractint";
+        t = imported.text;
+        k = imported.kind;
+    }
+    Plant p = parsed(t, k, "", "<text>", python, steps);
+    if (!dialect.empty()) p.dialect = dialect;
+    return p;
+}
+
+// sprout.open(source): a file of any kind Sprout opens (FILE.l:System picks a Fractint system),
+// a PNG written by Sprout, or a preset's name.
+Plant openSource(const std::string& source, bool python, int steps) {
+    struct stat st{};
+    std::string path = source, system;
+    if (::stat(source.c_str(), &st) != 0)
+        if (size_t colon = source.rfind(':'); colon != std::string::npos && colon > 0 && ::stat(source.substr(0, colon).c_str(), &st) == 0) {
+            path = source.substr(0, colon);
+            system = source.substr(colon + 1);
+        }
+    if (::stat(path.c_str(), &st) == 0) {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) throw py::value_error(path + ": cannot be read");
+        const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+        ImportResult imported = importFile(path, bytes, system);
+        if (!imported.ok()) raiseDiagnostics(imported.diagnostics, path);
+        Plant p = parsed(imported.text, imported.kind, imported.source == FileKind::Png ? "" : path, path, python, steps);
+        if (imported.source == FileKind::Lparser) p.dialect = "Lparser";
+        if (imported.source == FileKind::Fractint) p.dialect = "Fractint";
+        return p;
+    }
+    if (auto preset = presetText(source)) {
+        const std::string text(*preset);
+        return parsed(text, detectFileKind("", text), "", source, python, steps);
+    }
+    throw py::value_error(source + ": no such file or preset (sprout.presets() lists them)");
+}
+
+render::ViewPreset viewNamed(const std::optional<std::string>& view) {
+    if (!view || *view == "auto") return render::ViewPreset::Auto;
+    if (*view == "front") return render::ViewPreset::Front;
+    if (*view == "side") return render::ViewPreset::Side;
+    if (*view == "top") return render::ViewPreset::Top;
+    if (*view == "iso") return render::ViewPreset::Iso;
+    throw py::value_error("view must be auto, front, side, top or iso");
+}
+
+template <class T>
+py::array_t<T> owned(std::vector<T>&& data, std::vector<py::ssize_t> shape) {
+    auto* v = new std::vector<T>(std::move(data));
+    py::capsule free(v, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+    return py::array_t<T>(shape, v->data(), free);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_sprout, m) {
+    m.doc() = "Sprout's L-system engine: grammars of every kind Sprout opens, derivation, the turtle, pictures and models";
+    m.attr("__version__") = SPROUT_VERSION;
+
+    py::class_<LString>(m, "LString", "A derived string: a read-only sequence of (name, params) modules, shared with the derivation")
+        .def("__len__", &LString::size)
+        .def("__getitem__", &LString::module)
+        .def("__str__", &LString::text)
+        .def("__repr__", [](const LString& s) { return "<sprout.LString of " + std::to_string(s.size()) + " modules>"; })
+        .def("count", &LString::count, py::arg("name"), "How many modules of this name the string holds")
+        .def_property_readonly("symbols", [](py::object self) { return self.cast<const LString&>().symbols(self); },
+                               "Each module's symbol (numpy uint16, no copy): an index into `alphabet`")
+        .def_property_readonly("params", [](py::object self) { return self.cast<const LString&>().params(self); },
+                               "Every parameter, module after module (numpy float64, no copy)")
+        .def_property_readonly("alphabet", &LString::alphabet, "(name, parameter count) of each symbol");
+
+    py::class_<Plant>(m, "Plant", "A grammar of any kind Sprout opens, ready to derive, draw, render and export")
+        .def_readonly("name", &Plant::name)
+        .def_readonly("text", &Plant::text)
+        .def_readonly("dialect", &Plant::dialect, "What the text was read as: .lsys, ABOP notation, cpfg, L-Py, Lparser, Fractint")
+        .def_property_readonly("n", &Plant::iterations, "The derivation length the grammar sets")
+        .def_readonly("lpy_string", &Plant::lpyString, "An L-Py model: its last string as L-Py writes it (derive() gives what is drawn)")
+        .def_property_readonly("angle", [](const Plant& p) { return p.grammar->settings.angle.mean; })
+        .def_property_readonly("seed", [](const Plant& p) { return p.grammar->settings.seed; })
+        .def_property_readonly("defines", [](const Plant& p) { return p.grammar->defines; }, "The grammar's named constants")
+        .def_property_readonly("warnings", [](const Plant& p) {
+            py::list out;
+            for (const auto& d : p.warnings) out.append(py::make_tuple(d.line, d.col, d.message));
+            return out;
+        })
+        .def("derive", &Plant::derive, py::arg("n") = py::none(), py::arg("seed") = py::none(),
+             "The string of step n (default: the grammar's n); the steps before it are kept, so stepping is cheap")
+        .def(
+            "geometry",
+            [](Plant& p, std::optional<int> n, std::optional<std::uint64_t> seed) {
+                Geometry g = p.geometry(n, seed);
+                const size_t c = g.cylinders.size();
+                std::vector<float> seg(c * 6), radii(c * 2);
+                std::vector<std::uint8_t> col(c * 4);
+                for (size_t i = 0; i < c; ++i) {
+                    const auto& s = g.cylinders[i];
+                    for (int k = 0; k < 3; ++k) seg[i * 6 + size_t(k)] = s.start[k], seg[i * 6 + 3 + size_t(k)] = s.end[k];
+                    radii[i * 2] = s.startRadius, radii[i * 2 + 1] = s.endRadius;
+                    for (int k = 0; k < 4; ++k) col[i * 4 + size_t(k)] = std::uint8_t(s.colour >> (24 - 8 * k));
+                }
+                const size_t t = g.polygons.indices.size() / 3;
+                std::vector<float> tri(t * 9);
+                std::vector<std::uint8_t> tcol(t * 4);
+                for (size_t i = 0; i < t; ++i) {
+                    for (int v = 0; v < 3; ++v) {
+                        const glm::vec3& q = g.polygons.positions[g.polygons.indices[i * 3 + size_t(v)]];
+                        for (int k = 0; k < 3; ++k) tri[i * 9 + size_t(v) * 3 + size_t(k)] = q[k];
+                    }
+                    const std::uint32_t cc = g.polygons.colours.empty() ? 0xffffffffu : g.polygons.colours[g.polygons.indices[i * 3]];
+                    for (int k = 0; k < 4; ++k) tcol[i * 4 + size_t(k)] = std::uint8_t(cc >> (24 - 8 * k));
+                }
+                const size_t l = g.surfaces.size();
+                std::vector<float> leaves(l * 10);
+                std::vector<std::uint8_t> lcol(l * 4);
+                for (size_t i = 0; i < l; ++i) {
+                    const auto& s = g.surfaces[i];
+                    for (int k = 0; k < 3; ++k)
+                        leaves[i * 10 + size_t(k)] = s.position[k], leaves[i * 10 + 3 + size_t(k)] = s.heading[k],
+                                    leaves[i * 10 + 6 + size_t(k)] = s.up[k];
+                    leaves[i * 10 + 9] = s.size;
+                    for (int k = 0; k < 4; ++k) lcol[i * 4 + size_t(k)] = std::uint8_t(s.colour >> (24 - 8 * k));
+                }
+                py::dict out;
+                out["segments"] = owned(std::move(seg), {py::ssize_t(c), 2, 3});
+                out["radii"] = owned(std::move(radii), {py::ssize_t(c), 2});
+                out["colors"] = owned(std::move(col), {py::ssize_t(c), 4});
+                out["triangles"] = owned(std::move(tri), {py::ssize_t(t), 3, 3});
+                out["triangle_colors"] = owned(std::move(tcol), {py::ssize_t(t), 4});
+                out["leaves"] = owned(std::move(leaves), {py::ssize_t(l), 10});
+                out["leaf_colors"] = owned(std::move(lcol), {py::ssize_t(l), 4});
+                out["bounds"] = py::make_tuple(py::make_tuple(g.bounds.min.x, g.bounds.min.y, g.bounds.min.z),
+                                               py::make_tuple(g.bounds.max.x, g.bounds.max.y, g.bounds.max.z));
+                return out;
+            },
+            py::arg("n") = py::none(), py::arg("seed") = py::none(),
+            "The turtle's drawing as numpy arrays: segments (N,2,3) with radii (N,2) and colors (N,4 RGBA), "
+            "polygon triangles (M,3,3) with triangle_colors, leaves (K,10: position, heading, up, size) with leaf_colors")
+        .def(
+            "render",
+            [](Plant& p, std::optional<int> n, int width, int height, std::optional<std::uint64_t> seed, std::optional<std::string> view,
+               std::optional<float> yaw, std::optional<float> pitch, bool ground, bool shadows, std::optional<std::string> path) {
+                SnapshotOptions o;
+                o.width = width;
+                o.height = height;
+                o.view = viewNamed(view);
+                o.yaw = yaw;
+                o.pitch = pitch;
+                o.render.ground = ground;
+                o.render.shadows = shadows;
+                auto g = p.drawn(n, seed, o);
+                if (width < 1 || height < 1 || width > 16384 || height > 16384) throw py::value_error("width and height must be 1 to 16384");
+                Snapshot shot;
+                std::string error;
+                bool ok;
+                {
+                    py::gil_scoped_release release;
+                    ok = renderSnapshot(g, o, shot, error);
+                }
+                if (!ok) throw std::runtime_error(p.name + ": " + error);
+                if (path) {
+                    shot.image.text.emplace_back("lsys", p.text);
+                    shot.image.text.emplace_back("Software", "Sprout " SPROUT_VERSION);
+                    if (!writePng(*path, shot.image, error)) throw std::runtime_error(*path + ": " + error);
+                }
+                return owned(std::move(shot.image.rgba), {height, width, 4});
+            },
+            py::arg("n") = py::none(), py::arg("width") = 640, py::arg("height") = 480, py::arg("seed") = py::none(),
+            py::arg("view") = py::none(), py::arg("yaw") = py::none(), py::arg("pitch") = py::none(), py::arg("ground") = true,
+            py::arg("shadows") = true, py::arg("path") = py::none(),
+            "A headless picture (OSMesa) as a numpy array (height, width, 4 RGBA); with path=, also a PNG carrying the grammar")
+        .def(
+            "export",
+            [](Plant& p, const std::string& path, std::optional<int> n, std::optional<std::uint64_t> seed, int sides) {
+                auto format = exporter::formatFromPath(path);
+                if (!format) throw py::value_error(path + ": the extension must be .glb, .obj, .ply or .svg");
+                Geometry g = p.geometry(n, seed);
+                exporter::ExportOptions eo;
+                eo.sides = sides;
+                eo.generator = "Sprout " SPROUT_VERSION;
+                exporter::ExportStats stats;
+                std::string error;
+                bool ok;
+                {
+                    py::gil_scoped_release release;
+                    ok = exporter::exportGeometry(g, path, *format, eo, stats, error);
+                }
+                if (!ok) throw std::runtime_error(path + ": " + error);
+                py::dict out;
+                out["vertices"] = stats.vertices;
+                out["triangles"] = stats.triangles;
+                out["bytes"] = stats.bytes;
+                return out;
+            },
+            py::arg("path"), py::arg("n") = py::none(), py::arg("seed") = py::none(), py::arg("sides") = 0,
+            "Writes a glTF binary, OBJ + MTL, PLY or SVG of step n");
+
+    m.def("open", &openSource, py::arg("source"), py::arg("python") = true, py::arg("steps") = -1,
+          "A file of any kind Sprout opens (.lsys, ABOP notation, cpfg .l, .lpy, Lparser .ls, Fractint .l or FILE.l:System, "
+          "a PNG written by Sprout) or a preset's name. An L-Py model is a Python program: it runs here as `python3 FILE` "
+          "would (python=False refuses); steps= sets its derivation length");
+    m.def("parse", &parseText, py::arg("text"), py::arg("kind") = py::none(), py::arg("python") = true, py::arg("steps") = -1,
+          "A grammar from text; kind is lsys, abop, cpfg, lpy, lparser or fractint (None: detected from the text)");
+    m.def("presets", &presetNames, "The built-in presets' names");
+}

@@ -1,0 +1,138 @@
+"""`import sprout`: every kind of file, the derivation as a read-only sequence, the turtle's
+geometry as numpy arrays, headless pictures, exports, and the notebook's picture and slider.
+Run by ctest (Python.Pytest) with PYTHONPATH=build/python."""
+import os
+import struct
+
+import numpy as np
+import pytest
+
+import sprout
+
+ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
+
+
+def test_preset_derives_the_fractal_plant():
+    p = sprout.open("fractal_plant")
+    assert (p.n, p.angle, p.dialect) == (5, 22.5, ".lsys")
+    s = p.derive(1)
+    assert str(s) == "F-[[X]+X]+F[+FX]-X"
+    assert len(s) == 18
+    assert s[0] == ("F", ()) and s[-1] == ("X", ())
+    assert [m[0] for m in s][:4] == ["F", "-", "[", "["]
+    with pytest.raises(IndexError):
+        s[18]
+    assert s.count("F") == 3
+
+
+def test_steps_one_after_another():
+    p = sprout.parse("n: 4\naxiom: A\nA -> AB\nB -> A\n")
+    lengths = [len(s) for s in p.steps()]
+    assert lengths == [1, 2, 3, 5, 8]  # Fibonacci, as ABOP's algae
+
+
+def test_parameters_and_names_come_back():
+    p = sprout.parse("n: 2\naxiom: A(1)\nA(x) -> F(x) SetContour('leaf') A(x * 2)\n")
+    s = p.derive()
+    assert s[0] == ("F", (1.0,))
+    assert s[1] == ("SetContour", ("leaf",))
+    assert s[-1] == ("A", (4.0,))
+    assert list(s.params) == [1.0, 0.0, 2.0, 0.0, 4.0]
+
+
+def test_the_string_is_a_view_not_a_copy():
+    p = sprout.parse("n: 20\naxiom: A\nA -> AB\nB -> A\n")
+    s = p.derive()
+    assert len(s) == 17711
+    a, b = s.symbols, s.symbols
+    assert a.ctypes.data == b.ctypes.data  # the same memory each time: the derivation's own
+    assert not a.flags.writeable
+    names = [n for n, _ in s.alphabet]
+    assert int((a == names.index("A")).sum()) == s.count("A") == 10946
+
+
+def test_every_kind_of_file(tmp_path):
+    cpfg = sprout.open(os.path.join(ROOT, "tests", "cpfg", sorted(f for f in os.listdir(os.path.join(ROOT, "tests", "cpfg")) if f.endswith(".l"))[0]))
+    assert cpfg.dialect == "cpfg"
+    notation = sprout.open(os.path.join(ROOT, "tests", "notation", "abop_1_24a.txt"))
+    assert notation.dialect == "ABOP notation" and str(notation.derive(1)) == "F[+F]F[-F]F"
+    lparser = sprout.parse("recursion 2\nangle 30\naxiom F\nF=F+F\n", kind="lparser")
+    assert lparser.dialect == "Lparser" and lparser.n == 2
+    fractint = tmp_path / "two.l"
+    fractint.write_text("Koch {\n  Angle 6\n  Axiom F--F--F\n  F=F+F--F+F\n}\nOther {\n  Angle 4\n  Axiom F\n  F=FF\n}\n")
+    k = sprout.open(str(fractint) + ":Koch")
+    assert k.dialect == "Fractint" and str(k.derive(1)).startswith("F+F--F+F")
+    lpy = sprout.open(os.path.join(ROOT, "tests", "lpy", "models", "native_branches.lpy"))
+    assert lpy.dialect == "L-Py" and lpy.lpy_string == "F(2)[+F(1)[+X(2)][-X(2)]][-F(1)[+X(2)][-X(2)]]"
+    with pytest.raises(ValueError, match="refuses"):
+        sprout.open(os.path.join(ROOT, "tests", "lpy", "models", "native_branches.lpy"), python=False)
+    png = tmp_path / "plant.png"
+    sprout.open("fractal_plant").render(n=2, width=80, height=60, path=str(png))
+    again = sprout.open(str(png))  # a picture Sprout wrote carries its grammar
+    assert str(again.derive(2)) == str(sprout.open("fractal_plant").derive(2))
+
+
+def test_errors_carry_line_and_column():
+    with pytest.raises(sprout.GrammarError) as e:
+        sprout.parse("n: 2\naxiom: F\nF -> F[+F\n")
+    assert (e.value.line, e.value.col) == (3, 7)
+    assert "never closed" in str(e.value)
+    assert e.value.diagnostics[0][:3] == (3, 7, "error")
+    with pytest.raises(ValueError):
+        sprout.open("no_such_plant_anywhere")
+    with pytest.raises(sprout.GrammarError) as e:
+        sprout.parse("def f(:\n    pass\nAxiom: A\nproduction:\nA --> B\nendlsystem\n", kind="lpy")
+    assert e.value.line == 1 and "SyntaxError" in str(e.value)
+
+
+def test_geometry_as_numpy_arrays():
+    p = sprout.open("fractal_plant")
+    g = p.geometry(3)
+    n = p.derive(3).count("F")
+    assert g["segments"].shape == (n, 2, 3) and g["segments"].dtype == np.float32
+    assert g["radii"].shape == (n, 2) and g["colors"].shape == (n, 4)
+    # The first segment starts at the origin and goes up (+Y) one step.
+    assert np.allclose(g["segments"][0], [[0, 0, 0], [0, 1, 0]], atol=1e-5)
+    lo, hi = np.array(g["bounds"][0]), np.array(g["bounds"][1])
+    assert np.all(g["segments"].reshape(-1, 3) >= lo - 1e-4) and np.all(g["segments"].reshape(-1, 3) <= hi + 1e-4)
+    leafy = sprout.open("abop_1_26_flower_plant").geometry(3)
+    assert leafy["triangles"].shape[1:] == (3, 3) and len(leafy["triangles"]) > 0
+
+
+def test_render_to_numpy_and_png(tmp_path):
+    p = sprout.open("fractal_plant")
+    img = p.render(width=160, height=120, ground=False, shadows=False)
+    assert img.shape == (120, 160, 4) and img.dtype == np.uint8
+    empty = sprout.parse("axiom: X\n").render(width=160, height=120, ground=False, shadows=False)
+    plant_pixels = int((np.abs(img.astype(int) - empty.astype(int)).max(axis=2) > 30).sum())
+    assert plant_pixels > 200  # the plant is drawn over the sky
+    green = img[..., 1].astype(int) - img[..., 2].astype(int)
+    assert (green > 20).sum() > 50  # and it is green
+    out = tmp_path / "p.png"
+    p.render(width=64, height=48, path=str(out))
+    data = out.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n" and struct.unpack(">II", data[16:24]) == (64, 48)
+
+
+def test_exports(tmp_path):
+    p = sprout.open("fractal_plant")
+    for ext in ("glb", "obj", "ply", "svg"):
+        path = tmp_path / ("plant." + ext)
+        stats = p.export(str(path), n=3)
+        assert path.stat().st_size > 100 and stats["bytes"] > 0
+    assert (tmp_path / "plant.glb").read_bytes()[:4] == b"glTF"
+    assert (tmp_path / "plant.svg").read_text().lstrip().startswith("<?xml")
+    with pytest.raises(ValueError, match="extension"):
+        p.export(str(tmp_path / "plant.xyz"))
+
+
+def test_notebook_picture_and_slider():
+    p = sprout.open("koch")
+    png = p._repr_png_()
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    widgets = pytest.importorskip("ipywidgets")
+    box = sprout.slider(p, width=120, height=90)
+    before = box.image.value
+    box.step.value = 1
+    assert box.image.value != before and box.image.value[:4] == b"\x89PNG"
+    assert box.step.max == p.n
