@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace sprout::render {
 
@@ -33,7 +35,21 @@ void stamp(glm::vec2 a, glm::vec2 b, float half, int w, int h, std::uint8_t* mas
     const int y1 = std::min(h - 1, floorCell<int>(std::max(a.y, b.y) + half));
     for (int y = y0; y <= y1; ++y) {
         std::uint8_t* row = mask + std::size_t(y) * std::size_t(w);
-        for (int x = x0; x <= x1; ++x) {
+        // Only the pixels of this row near the segment: the part of it within half a width
+        // (and a pixel) of the row, widened by as much, not the whole bounding box (a long
+        // diagonal chord costs its length, not its length squared).
+        int rx0 = x0, rx1 = x1;
+        if (std::fabs(d.y) > 1e-6f) {
+            const float reach = half + 1.0f;
+            float t0 = (float(y) - reach - a.y) / d.y, t1 = (float(y) + 1.0f + reach - a.y) / d.y;
+            if (t0 > t1) std::swap(t0, t1);
+            t0 = std::clamp(t0, 0.0f, 1.0f);
+            t1 = std::clamp(t1, 0.0f, 1.0f);
+            const float xa = a.x + d.x * t0, xb = a.x + d.x * t1;
+            rx0 = std::max(x0, floorCell<int>(std::min(xa, xb) - reach));
+            rx1 = std::min(x1, floorCell<int>(std::max(xa, xb) + reach));
+        }
+        for (int x = rx0; x <= rx1; ++x) {
             if (row[x] == 15) continue;  // every sample already inked: dense curves fill up early
             std::uint8_t bits = 0;
             for (int k = 0; k < 4; ++k) {
@@ -85,6 +101,58 @@ private:
     std::uint8_t m_table[8][8][5][5];
 };
 
+// The long chords drawn so far, by the pixels of their ends (either direction): an
+// open-addressing set of 64-bit keys, at most 2^20 of them (past that a chord is drawn again
+// rather than remembered: the set never costs more than 16 MB).
+class ChordSet {
+public:
+    // False when the chord was there already.
+    bool insert(glm::vec2 a, glm::vec2 b) {
+        if (!(std::fabs(a.x) < 1e8f && std::fabs(a.y) < 1e8f && std::fabs(b.x) < 1e8f && std::fabs(b.y) < 1e8f)) return true;
+        auto q = [](float v) {  // its pixel (one instruction, not floor's call)
+            return std::uint64_t(std::uint32_t(std::int32_t(v >= 0 ? v : v - 1.0f)));
+        };
+        std::uint64_t ka = q(a.x) << 32 | q(a.y), kb = q(b.x) << 32 | q(b.y);
+        if (ka > kb) std::swap(ka, kb);
+        std::uint64_t key = mix(ka * 0x9E3779B97F4A7C15ull ^ mix(kb));
+        key |= 1;  // 0 marks an empty slot
+        if (m_slots.empty()) m_slots.assign(1u << 12, 0);
+        const std::size_t mask = m_slots.size() - 1;
+        for (std::size_t i = key & mask;; i = (i + 1) & mask) {
+            if (m_slots[i] == key) return false;
+            if (m_slots[i] == 0) {
+                if (m_count >= kMax) return true;
+                m_slots[i] = key;
+                if (++m_count * 2 > m_slots.size()) grow();
+                return true;
+            }
+        }
+    }
+
+private:
+    static constexpr std::size_t kMax = std::size_t(1) << 20;
+    static std::uint64_t mix(std::uint64_t x) {
+        x ^= x >> 33;
+        x *= 0xff51afd7ed558ccdull;
+        x ^= x >> 33;
+        x *= 0xc4ceb9fe1a85ec53ull;
+        return x ^ (x >> 33);
+    }
+    void grow() {
+        std::vector<std::uint64_t> old(m_slots.size() * 2, 0);
+        old.swap(m_slots);
+        const std::size_t mask = m_slots.size() - 1;
+        for (std::uint64_t k : old)
+            if (k) {
+                std::size_t i = k & mask;
+                while (m_slots[i]) i = (i + 1) & mask;
+                m_slots[i] = k;
+            }
+    }
+    std::vector<std::uint64_t> m_slots;
+    std::size_t m_count = 0;
+};
+
 }  // namespace
 
 void rasterizeCurve(const CylinderInstance* segs, std::size_t count, const glm::mat4& viewProj, int w, int h,
@@ -100,9 +168,15 @@ void rasterizeCurve(const CylinderInstance* segs, std::size_t count, const glm::
     constexpr float kMerge2 = 0.75f * 0.75f;
     // A dot for a chord of about a pixel: half the width, and half the chord on each side.
     const DotStamps dots(std::min(half + 0.25f, 2.4f));
+    // A long chord that falls on the pixels of one drawn before, from the same pixel to the same
+    // pixel (a curve going over the same edges again and again, its float positions drifting a
+    // little each round), is skipped in constant time: those pixels are inked.
+    ChordSet drawn;
     auto chord = [&](glm::vec2 a, glm::vec2 b) {
         const glm::vec2 d = b - a;
-        if (d.x * d.x + d.y * d.y <= 1.25f * 1.25f && dots.stamp((a + b) * 0.5f, w, h, coverage.data())) return;
+        const float len2 = d.x * d.x + d.y * d.y;
+        if (len2 <= 1.25f * 1.25f && dots.stamp((a + b) * 0.5f, w, h, coverage.data())) return;
+        if (len2 >= 4.0f * 4.0f && !drawn.insert(a, b)) return;
         stamp(a, b, half, w, h, coverage.data());
     };  // merge what is shorter than three quarters of a pixel
     glm::vec2 kept(0), pending(0);

@@ -27,8 +27,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
     m_autoWidth = st.width <= 0;
     m_angle = toFloat(st.angle.mean) * kPi / 180.0f;
-    m_cos = std::cos(m_angle);
-    m_sin = std::sin(m_angle);
+    cosSinDegrees(std::isfinite(st.angle.mean) ? st.angle.mean : 0.0, m_cos, m_sin);
     m_angleSigma = toFloat(st.angle.sigma) * kPi / 180.0f;
     m_stepSigma = toFloat(st.step.sigma);
     m_tropism = glm::vec3(toFloat(st.tropism[0]), toFloat(st.tropism[1]), toFloat(st.tropism[2]));

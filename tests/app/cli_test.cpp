@@ -1,6 +1,8 @@
 // `sprout expand`, run as a user runs it: output, exit codes and error messages.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -146,3 +148,42 @@ TEST(Cli, ExportCarriesTheEnvironmentWhenAsked) {
 }
 
 }  // namespace
+
+// Overdraw is bounded (issue 24): a curve of 10 M segments going round and round the edges of
+// one square (`axiom:` of 5 M F, `F -> F+F`) rendered at 640x480 took minutes (29 s at 160x120:
+// every segment's full length stamped again); a chord that falls on the pixels of one drawn
+// before is now skipped in constant time. The bound is generous (a loaded machine, a sanitizer
+// build); the picture is the square's outline.
+TEST(Cli, CurveGoingRoundOneSquareTenMillionTimesRendersInTime) {
+    const std::string grammar = "angle: 90\naxiom: " + std::string(5'000'000, 'F') + "\nF -> F+F\n";
+    const std::string file = writeTemp("square.lsys", grammar), png = testing::TempDir() + std::to_string(getpid()) + "_square.png";
+    const auto t0 = std::chrono::steady_clock::now();
+    Result r = runSprout("render " + file + " -n 1 --size 640x480 --stats -o " + png);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE((r.out + r.err).find("10000000 segments (2D curve)"), std::string::npos) << r.out << r.err;
+    EXPECT_LT(seconds, 60.0) << "overdraw is not bounded";
+    sprout::Image image;
+    std::string error;
+    ASSERT_TRUE(sprout::readPng(png, image, error)) << error;
+    std::remove(png.c_str());
+    // Ink is dark: rows and columns of it at the square's edges, none inside.
+    auto dark = [&](int x, int y) {
+        const std::uint8_t* p = &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+        return p[0] + p[1] + p[2] < 200;
+    };
+    int minX = image.width, maxX = -1, minY = image.height, maxY = -1, count = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            if (dark(x, y)) {
+                minX = std::min(minX, x), maxX = std::max(maxX, x), minY = std::min(minY, y), maxY = std::max(maxY, y);
+                ++count;
+            }
+    ASSERT_GT(count, 0);
+    const int side = maxX - minX;
+    EXPECT_NEAR(side, maxY - minY, 3) << "a square";
+    EXPECT_GT(side, 200);
+    EXPECT_LT(count, 4 * (side + 1) * 4) << "an outline, not a filled square";
+    EXPECT_FALSE(dark((minX + maxX) / 2, (minY + maxY) / 2)) << "nothing inside";
+    EXPECT_TRUE(dark(minX + side / 2, minY) || dark(minX + side / 2, minY + 1)) << "its edge is inked";
+}
