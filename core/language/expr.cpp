@@ -190,6 +190,12 @@ private:
         size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 1;
         return std::string(m_text.substr(at, n));
     }
+    // A Greek letter (U+0391..U+03C9) at `i`: its two bytes, else 0 (names such as α).
+    size_t greekLetter(size_t i) const {
+        if (i + 1 >= m_text.size()) return 0;
+        const unsigned char a = static_cast<unsigned char>(m_text[i]), b = static_cast<unsigned char>(m_text[i + 1]);
+        return (a == 0xCE && b >= 0x91) || (a == 0xCF && b <= 0x89) ? 2 : 0;
+    }
     void skipSpace() {
         while (m_pos < m_text.size() && isSpace(m_text[m_pos])) ++m_pos;
     }
@@ -351,7 +357,7 @@ private:
             return inner;
         }
         if ((c >= '0' && c <= '9') || c == '.') return parseNumber();
-        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') return parseName(depth);
+        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_' || greekLetter(m_pos)) return parseName(depth);
         fail(m_pos, "expected a number, a name or '(' but found '" + codePointAt(m_pos) + "'");
         return makeConst(0);
     }
@@ -376,9 +382,11 @@ private:
 
     NodePtr parseName(int depth) {
         size_t start = m_pos;
-        while (m_pos < m_text.size() &&
-               (std::isalnum(static_cast<unsigned char>(m_text[m_pos])) || m_text[m_pos] == '_'))
-            ++m_pos;
+        while (m_pos < m_text.size()) {
+            if (const size_t g = greekLetter(m_pos)) m_pos += g;  // α, β, θ ...
+            else if (std::isalnum(static_cast<unsigned char>(m_text[m_pos])) || m_text[m_pos] == '_') ++m_pos;
+            else break;
+        }
         std::string name(m_text.substr(start, m_pos - start));
         if (peek("(")) return parseCall(name, start, depth);
         if (auto arg = m_args.find(name); arg != m_args.end()) return clone(arg->second);

@@ -51,11 +51,22 @@ inline size_t findLastTopLevel(std::string_view s, char token) {
     return found;
 }
 
+// A Greek letter (U+0391..U+03C9, two bytes in UTF-8) at `i`: ABOP and lecture notes name
+// their constants so (α = 30). 2, or 0 for anything else.
+inline size_t greekLetterAt(std::string_view s, size_t i) {
+    if (i + 1 >= s.size()) return 0;
+    const unsigned char a = static_cast<unsigned char>(s[i]), b = static_cast<unsigned char>(s[i + 1]);
+    return (a == 0xCE && b >= 0x91) || (a == 0xCF && b <= 0x89) ? 2 : 0;
+}
+
 inline bool isIdentifier(std::string_view s) {
-    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-    return std::all_of(s.begin(), s.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-    });
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_' || greekLetterAt(s, 0))) return false;
+    for (size_t i = 0; i < s.size();) {
+        if (const size_t g = greekLetterAt(s, i)) i += g;
+        else if (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_') ++i;
+        else return false;
+    }
+    return true;
 }
 
 // ABOP's notation and the web's dialects (notation.cpp).
