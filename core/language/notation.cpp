@@ -345,6 +345,9 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
         } else if (isForeignSetting(key)) {
             m_sink.warning(l.src, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
             continue;
+        } else if (const Directive* own = directiveNamed(key); own && key != "define" && key != "module") {
+            d = own;  // Sprout's own settings written with '=' (width = 2, tropism = 0 -1 0 0.2)
+            writtenKey = {};
         } else if (isIdentifier(key) && isConstant(value)) {
             d = directiveNamed("define");
             directiveValue = part;
@@ -393,7 +396,14 @@ void Parser::joinNotationLines() {
             continue;
         }
         const bool setting = t.find(':') != std::string_view::npos || assignment(t) != std::string_view::npos;
-        if (rule && !setting) {
+        // Only a successor left open goes on: empty after its arrow, or ending with a turn, a
+        // roll or a bracket ("... - - //"); a rule ending with a module is whole, and a line
+        // after it that is no setting and no rule is an error to show, not more successor.
+        std::string_view ruleText = trim(rule ? rule->src.text : std::string_view());
+        const size_t arrow = findTopLevel(ruleText, "->");
+        const std::string_view succ = arrow == std::string_view::npos ? std::string_view() : trim(ruleText.substr(arrow + 2));
+        const bool open = rule && (succ.empty() || std::strchr("+-/\\&^|[{", succ.back()) != nullptr);
+        if (open && !setting) {
             // The successor goes on: one logical line, reported at the rule's line.
             m_store.push_back(std::string(rule->src.text) + " " + std::string(t));
             rule->src.text = m_store.back();

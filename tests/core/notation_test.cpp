@@ -136,6 +136,10 @@ TEST(Notation, BadInputSaysWhereAndWhat) {
     d = test::diagnosticsOf("n = 5, \xCE\xB4 = 25.7 degrees\n\xCF\x89: F\n");
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d[0].substr(0, 2), "1:") << d[0];
+    // A line after a whole rule is not more successor: a typo is an error at its line.
+    d = test::diagnosticsOf("n=2, \xCE\xB4=90\xC2\xB0\n\xCF\x89: F\np1: F \xE2\x86\x92 FF\nangel 30\n");
+    ASSERT_EQ(d.size(), 1u);
+    EXPECT_EQ(d[0].substr(0, 4), "4:1:") << d[0];
     // A constant that could be a rule: which way it was read, and how to write the other.
     d = test::diagnosticsOf("X = 2\n\xCF\x89: X\nX -> FX\n");
     ASSERT_EQ(d.size(), 1u);
