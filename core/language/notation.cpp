@@ -252,18 +252,6 @@ std::vector<std::string_view> topLevelParts(std::string_view t) {
     return parts;
 }
 
-// Whether the one-letter `key` is written as a module (outside parentheses) in a rule's line.
-bool usedAsModuleIn(std::string_view key, std::string_view line) {
-    if (key.size() != 1) return false;
-    int depth = 0;
-    for (char c : line) {
-        if (c == '(') ++depth;
-        else if (c == ')') depth = std::max(0, depth - 1);
-        else if (depth == 0 && c == key[0]) return true;
-    }
-    return false;
-}
-
 const Directive* directiveNamed(std::string_view name) {
     for (const auto& d : directives())
         if (name == d.name) return &d;
@@ -295,24 +283,27 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
                 if (isIdentifier(name) && !settingAlias(name)) pending.emplace_back(name, trim(part.substr(pe + 1)));
             }
         }
-        for (bool grew = true; grew;) {
-            grew = false;
-            for (auto& [name, value] : pending) {
-                if (name.empty() || value.empty()) continue;
-                DiagnosticSink scratch;
-                ExprScope scope{nullptr, &m_assignedNames, &m_macros};
-                if (compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0) {
-                    m_assignedNames.emplace(std::string(name), 1.0);
-                    name = {};
-                    grew = true;
-                }
+        // One pass in file order (a constant uses the ones above it): linear in the text.
+        for (auto& [name, value] : pending) {
+            if (value.empty()) continue;
+            DiagnosticSink scratch;
+            ExprScope scope{nullptr, &m_assignedNames, &m_macros};
+            if (compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0)
+                m_assignedNames.emplace(std::string(name), 1.0);
+        }
+        // The one-letter modules written in rules (outside parentheses), for the warning below.
+        for (const auto& other : m_lines) {
+            if (other.src.text.find("->") == std::string_view::npos) continue;
+            int depth = 0;
+            for (char c : other.src.text) {
+                if (c == '(') ++depth;
+                else if (c == ')') depth = std::max(0, depth - 1);
+                else if (depth == 0 && static_cast<unsigned char>(c) < 128) m_moduleLetters[static_cast<unsigned char>(c)] = true;
             }
         }
     }
     auto usedAsModule = [&](std::string_view key) {
-        for (const auto& other : m_lines)
-            if (other.src.text.find("->") != std::string_view::npos && usedAsModuleIn(key, other.src.text)) return true;
-        return false;
+        return key.size() == 1 && static_cast<unsigned char>(key[0]) < 128 && m_moduleLetters[static_cast<unsigned char>(key[0])];
     };
     auto isConstant = [&](std::string_view value) {
         if (trim(value).empty()) return false;
@@ -384,35 +375,45 @@ void Parser::joinNotationLines() {
         t = trim(t);
         return t.empty() || t.starts_with("#") || t.starts_with("//");
     };
+    // Only a successor left open goes on: empty after its arrow, or ending with a turn, a roll
+    // or a bracket ("... - - //"); a rule ending with a module is whole, and a line after it
+    // that is no setting and no rule is an error to show, not more successor.
     Line* rule = nullptr;  // the rule the lines after it may go on
+    std::string joined;    // its text with the lines that went on it
+    char last = 0;         // the last character of its successor so far (0: none yet)
+    auto finish = [&] {
+        if (rule && joined.size() > rule->src.text.size()) {
+            m_store.push_back(std::move(joined));  // one logical line, reported at the rule's line
+            rule->src.text = rule->src.original = m_store.back();
+        }
+        rule = nullptr;
+    };
     for (auto& l : m_lines) {
         std::string_view t = trim(l.src.text);
         if (blank(t)) {
-            if (t.starts_with("#define") || t.starts_with("#ignore")) rule = nullptr;
+            if (t.starts_with("#define") || t.starts_with("#ignore")) finish();
             continue;
         }
-        if (findTopLevel(t, "->") != std::string_view::npos) {
+        if (const size_t arrow = findTopLevel(t, "->"); arrow != std::string_view::npos) {
+            finish();
             rule = &l;
+            joined = std::string(l.src.text);
+            const std::string_view succ = trim(t.substr(arrow + 2));
+            last = succ.empty() ? 0 : succ.back();
             continue;
         }
         const bool setting = t.find(':') != std::string_view::npos || assignment(t) != std::string_view::npos;
-        // Only a successor left open goes on: empty after its arrow, or ending with a turn, a
-        // roll or a bracket ("... - - //"); a rule ending with a module is whole, and a line
-        // after it that is no setting and no rule is an error to show, not more successor.
-        std::string_view ruleText = trim(rule ? rule->src.text : std::string_view());
-        const size_t arrow = findTopLevel(ruleText, "->");
-        const std::string_view succ = arrow == std::string_view::npos ? std::string_view() : trim(ruleText.substr(arrow + 2));
-        const bool open = rule && (succ.empty() || std::strchr("+-/\\&^|[{", succ.back()) != nullptr);
+        const bool open = rule && (last == 0 || std::strchr("+-/\\&^|[{", last) != nullptr);
         if (open && !setting) {
-            // The successor goes on: one logical line, reported at the rule's line.
-            m_store.push_back(std::string(rule->src.text) + " " + std::string(t));
-            rule->src.text = m_store.back();
-            rule->src.original = m_store.back();
+            joined += ' ';
+            joined += t;
+            last = t.back();
             l.src.text = l.src.text.substr(0, 0);
             continue;
         }
-        rule = nullptr;
+        finish();
     }
+    finish();
     // Words as modules: a predecessor written as a word of several letters ("plant", "seg")
     // is one module wherever it is written, as ABOP's fig. 1.26 declares them.
     std::vector<std::string> words;

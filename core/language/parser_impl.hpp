@@ -205,6 +205,7 @@ private:
     bool m_notation = false;  // the text used ABOP's printed notation (Grammar::dialect)
     bool m_assignedScanned = false;
     std::unordered_map<std::string, double> m_assignedNames;  // names given a value with '=' (notation.cpp)
+    std::array<bool, 128> m_moduleLetters{};                   // one-letter modules written in rules
 
     bool m_cpfg = false;
     ParseOptions m_options;

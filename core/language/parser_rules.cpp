@@ -256,6 +256,10 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
             if (!inside.empty() && inside.find_first_not_of("0123456789.eE+-") == std::string_view::npos) {
                 auto p = constant(line, inside);
                 if (!p) return;
+                if (!(*p >= 0)) {
+                    m_sink.error(line, inside, "a probability cannot be negative");
+                    return;
+                }
                 prod.probability = *p;
                 succText = t.substr(0, open);
                 m_notation = true;
