@@ -246,29 +246,24 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         return;
     }
     size_t probColon = findLastTopLevel(tail, ':');
-    std::string_view succText = tail;
-    if (!m_cpfg && probColon == std::string_view::npos) {
+    std::string_view succText = tail, probText;
+    if (probColon != std::string_view::npos) {
+        succText = tail.substr(0, probColon);
+        probText = trim(tail.substr(probColon + 1));
+    } else if (!m_cpfg) {
         // "F -> F+F {0.33}": a probability in braces at the end (a polygon holds turtle moves).
         std::string_view t = trim(tail);
         const size_t open = t.rfind('{');
         if (!t.empty() && t.back() == '}' && open != std::string_view::npos) {
             std::string_view inside = trim(t.substr(open + 1, t.size() - open - 2));
             if (!inside.empty() && inside.find_first_not_of("0123456789.eE+-") == std::string_view::npos) {
-                auto p = constant(line, inside);
-                if (!p) return;
-                if (!(*p >= 0)) {
-                    m_sink.error(line, inside, "a probability cannot be negative");
-                    return;
-                }
-                prod.probability = *p;
+                probText = inside;
                 succText = t.substr(0, open);
                 m_notation = true;
             }
         }
     }
-    if (probColon != std::string_view::npos) {
-        succText = tail.substr(0, probColon);
-        std::string_view probText = trim(tail.substr(probColon + 1));
+    if (!probText.empty() || probColon != std::string_view::npos) {
         auto p = constant(line, probText);
         if (!p) return;
         if (!(*p >= 0)) {

@@ -17,16 +17,14 @@
 #include "core/derive/derive.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/turtle/turtle.hpp"
+#include "tests/core/test_util.hpp"
 
 namespace sprout {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test::slurp;
 
 std::vector<fs::path> cpfgFiles() {
     std::vector<fs::path> out;

@@ -2,12 +2,21 @@
 // Helpers for core tests: parse (failing the test on errors) and derive to a string.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/derive/derive.hpp"
 #include "core/language/grammar.hpp"
 
 namespace sprout::test {
+
+// A file's bytes, as they are.
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 inline std::shared_ptr<const Grammar> grammarOf(const std::string& text) {
     ParseResult r = parse(text);
