@@ -6,15 +6,14 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <fstream>
 #include <memory>
 #include <sstream>
-#include <sys/stat.h>
 
 #include "app/export/export.hpp"
 #include "app/image.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
+#include "app/source.hpp"
 #include "core/derive/derive.hpp"
 #include "core/derive/draw.hpp"
 #include "core/language/file_kind.hpp"
@@ -84,6 +83,8 @@ public:
         a.attr("setflags")(py::arg("write") = false);
         return a;
     }
+    const ModuleString& string() const { return *m_s; }
+    const Grammar& grammar() const { return *m_g; }
     py::list alphabet() const {
         py::list out;
         for (size_t k = 0; k < m_g->alphabet.size(); ++k) out.append(py::make_tuple(m_g->alphabet[SymbolId(k)].name, m_g->alphabet[SymbolId(k)].arity));
@@ -162,21 +163,13 @@ public:
         return grammar;
     }
 
+    // The turtle's drawing of step n, from the string derive() keeps (not derived again).
     Geometry geometry(std::optional<int> n, std::optional<std::uint64_t> seed) {
-        SnapshotOptions o;
-        auto g = drawn(n, seed, o);
+        LString s = derive(n, seed);
+        const int k = lpySteps.empty() ? n.value_or(iterations()) : 0;  // an L-Py step is drawn as it is
         Geometry out;
-        const int k = o.iterations.value_or(0);
-        DeriveOptions d;
-        d.seed = seed;
-        std::string error;
-        {
-            py::gil_scoped_release release;
-            DeriveResult r = sprout::derive(g, k, d);
-            if (!r.outcome.ok()) error = r.outcome.message;
-            else interpret(*r.string, *g, {k, seed.value_or(g->settings.seed)}, out);
-        }
-        if (!error.empty()) throw py::value_error(name + ": " + error);
+        py::gil_scoped_release release;
+        interpret(s.string(), s.grammar(), {k, seed.value_or(s.grammar().settings.seed)}, out);
         return out;
     }
 
@@ -249,31 +242,14 @@ Plant parseText(const std::string& text, std::optional<std::string> kind, bool p
 }
 
 // sprout.open(source): a file of any kind Sprout opens (FILE.l:System picks a Fractint system),
-// a PNG written by Sprout, or a preset's name.
+// a PNG written by Sprout, or a preset's name, read as the CLI reads it (app/source.hpp).
 Plant openSource(const std::string& source, bool python, int steps) {
-    struct stat st{};
-    std::string path = source, system;
-    if (::stat(source.c_str(), &st) != 0)
-        if (size_t colon = source.rfind(':'); colon != std::string::npos && colon > 0 && ::stat(source.substr(0, colon).c_str(), &st) == 0) {
-            path = source.substr(0, colon);
-            system = source.substr(colon + 1);
-        }
-    if (::stat(path.c_str(), &st) == 0) {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) throw py::value_error(path + ": cannot be read");
-        const std::string bytes((std::istreambuf_iterator<char>(in)), {});
-        ImportResult imported = importFile(path, bytes, system);
-        if (!imported.ok()) raiseDiagnostics(imported.diagnostics, path);
-        Plant p = parsed(imported.text, imported.kind, imported.source == FileKind::Png ? "" : path, path, python, steps);
-        if (imported.source == FileKind::Lparser) p.dialect = "Lparser";
-        if (imported.source == FileKind::Fractint) p.dialect = "Fractint";
-        return p;
-    }
-    if (auto preset = presetText(source)) {
-        const std::string text(*preset);
-        return parsed(text, detectFileKind("", text), "", source, python, steps);
-    }
-    throw py::value_error(source + ": no such file or preset (sprout.presets() lists them)");
+    SourceText read = readSource(source);
+    if (hasErrors(read.diagnostics)) raiseDiagnostics(read.diagnostics, read.diagnosticsName);
+    if (!read.error.empty()) throw py::value_error(read.error + " (sprout.presets() lists the presets)");
+    Plant p = parsed(std::move(read.text), read.kind, read.includePath, read.displayName, python, steps);
+    if (!read.dialect.empty()) p.dialect = read.dialect;
+    return p;
 }
 
 render::ViewPreset viewNamed(const std::optional<std::string>& view) {

@@ -104,17 +104,8 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
 // How the text was read: its dialect and each setting taken from it, with its line (a user
 // who pasted text sees how Sprout understood it).
 void printReadAs(const LoadedGrammar& loaded) {
-    const Grammar& g = *loaded.grammar;
     std::printf("read as: %s\n", loaded.dialect.c_str());
-    for (const auto& s : g.settingsRead) {
-        if (s.name == "define") std::printf("  line %d: constant %s", s.line, s.value.c_str());
-        else std::printf("  line %d: %s = %s", s.line, s.name.c_str(), s.value.c_str());
-        if (!s.written.empty()) std::printf("  (written '%s')", s.written.c_str());
-        std::printf("\n");
-    }
-    for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
-        for (const auto& p : rs->productions)
-            if (!p.label.empty()) std::printf("  line %d: rule %s\n", p.line, p.label.c_str());
+    for (const auto& line : settingsReadLines(*loaded.grammar)) std::printf("  %s\n", line.c_str());
 }
 
 void printStats(Derivation& d, int n, const std::string& name) {

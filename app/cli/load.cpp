@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "app/presets.hpp"
+#include "app/source.hpp"
 #include "core/language/import/import.hpp"
 #include "lpy/host.hpp"
 
@@ -46,57 +47,15 @@ FileKind sourceKind(const std::string& source) {
 }
 
 std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOptions& options) {
-    std::string text, error, includePath;
+    SourceText read = readSource(source);
+    for (const auto& d : read.diagnostics) std::cerr << formatDiagnostic(d, read.diagnosticsName) << "\n";
+    if (!read.error.empty()) std::cerr << read.error << "\n";
+    if (!read.ok()) return std::nullopt;
     LoadedGrammar out;
-    out.displayName = source;
-    struct stat st{};
-    // FILE.l:System picks one system of a Fractint file.
-    std::string path = source, system;
-    if (::stat(source.c_str(), &st) != 0) {
-        if (size_t colon = source.rfind(':'); colon != std::string::npos && colon > 0) {
-            struct stat st2{};
-            if (::stat(source.substr(0, colon).c_str(), &st2) == 0) {
-                path = source.substr(0, colon);
-                system = source.substr(colon + 1);
-            }
-        }
-    }
-    if (source == "-") {
-        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-        out.displayName = "<stdin>";
-        out.kind = detectFileKind("", text);
-    } else if (::stat(path.c_str(), &st) == 0) {
-        auto t = readFile(path, error);
-        if (!t) {
-            std::cerr << path << ": " << error << "\n";
-            return std::nullopt;
-        }
-        // What the file is, from its content: Lparser .ls and Fractint .l files are
-        // translated to .lsys; cpfg-family files are read as they are written.
-        ImportResult imported = importFile(path, *t, system);
-        for (const auto& d : imported.diagnostics) std::cerr << formatDiagnostic(d, path) << "\n";
-        if (!imported.ok()) return std::nullopt;
-        if (imported.kind == FileKind::Ifs || imported.kind == FileKind::Forest) {
-            std::cerr << path << ": holds " << (imported.kind == FileKind::Ifs ? "an iterated function system" : "a forest scene")
-                      << ", not one grammar: `sprout render` draws it\n";
-            return std::nullopt;
-        }
-        if (imported.text != *t) out.displayName = path + " (as .lsys)";
-        text = std::move(imported.text);
-        out.kind = imported.kind;
-        if (imported.source == FileKind::Lparser) out.dialect = "Lparser";
-        if (imported.source == FileKind::Fractint) out.dialect = "Fractint";
-        if (imported.source != FileKind::Png) includePath = path;
-    } else if (auto preset = presetText(source)) {
-        text = std::string(*preset);
-        out.kind = detectFileKind("", text);
-        out.displayName = std::string(source) + (source.find('.') != std::string::npos ? "" : out.kind == FileKind::Lpy ? ".lpy" : out.kind == FileKind::Cpfg ? ".l" : ".lsys");
-    } else {
-        std::cerr << source << ": no such file or preset; presets are:";
-        for (const auto& n : presetNames()) std::cerr << " " << n;
-        std::cerr << "\n";
-        return std::nullopt;
-    }
+    out.displayName = std::move(read.displayName);
+    out.kind = read.kind;
+    out.dialect = std::move(read.dialect);
+    std::string text = std::move(read.text), includePath = std::move(read.includePath);
     if (out.kind == FileKind::Lpy && lpy::pythonAvailable()) {
         // An L-Py model is a Python program: run as `python3 FILE` would run it.
         if (!options.python) {

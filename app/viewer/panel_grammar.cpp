@@ -149,14 +149,7 @@ void grammarSection(App& app) {
                                                               : g.dialect;
         ImGui::PushStyleColor(ImGuiCol_Text, kDim);
         if (ImGui::TreeNode("readas", "read as %s", dialect.c_str())) {
-            for (const auto& r : g.settingsRead) {
-                if (r.name == "define") ImGui::Text("line %d: constant %s", r.line, ascii(r.value).c_str());
-                else ImGui::Text("line %d: %s = %s%s%s%s", r.line, r.name.c_str(), ascii(r.value).c_str(), r.written.empty() ? "" : " (written '",
-                                 ascii(r.written).c_str(), r.written.empty() ? "" : "')");
-            }
-            for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
-                for (const auto& p : rs->productions)
-                    if (!p.label.empty()) ImGui::Text("line %d: rule %s", p.line, ascii(p.label).c_str());
+            for (const auto& line : settingsReadLines(g)) ImGui::TextUnformatted(ascii(line).c_str());
             ImGui::TreePop();
         }
         ImGui::PopStyleColor();
@@ -251,10 +244,8 @@ void whySection(App& app) {
         const std::string name = g.alphabet[l.symbol].name;
         if (l.ruleLine > 0) {
             // ABOP's label when the rule has one: "p2, line 5".
-            std::string label;
-            for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
-                for (const auto& p : rs->productions)
-                    if (p.line == l.ruleLine && !p.label.empty()) label = ascii(p.label) + ", ";
+            const Production* rule = ruleOf(g, l.rule);
+            const std::string label = rule && !rule->label.empty() ? ascii(rule->label) + ", " : "";
             if (ImGui::SmallButton((label + "line " + std::to_string(l.ruleLine)).c_str())) {
                 app.jumpTo = offsetOf(text, l.ruleLine, 1);
                 app.setHighlightLine(l.ruleLine);

@@ -82,8 +82,7 @@ std::string App::describeSelection() const {
         const LineageLink& l = selection->links[0];
         out += " step=" + std::to_string(l.step) + " rule_line=" + std::to_string(l.ruleLine);
         // ABOP's label of that rule, when it has one ("p2").
-        if (l.rule >= 0 && size_t(l.rule) < g.rules.productions.size() && !g.rules.productions[size_t(l.rule)].label.empty())
-            out += " rule_label=" + g.rules.productions[size_t(l.rule)].label;
+        if (const Production* rule = ruleOf(g, l.rule); rule && !rule->label.empty()) out += " rule_label=" + rule->label;
     }
     return out;
 }

@@ -1,6 +1,7 @@
 #include "app/viewer/text_edit.hpp"
 
 #include "core/language/environment_spec.hpp"
+#include "core/language/grammar.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -36,28 +37,28 @@ std::string_view trimLeft(std::string_view s) {
 }
 
 
-// The offset of the value after "key:" on this line (any case: cpfg writes `Axiom:`), or npos.
-// `n` is also `iterations` and cpfg's `derivation length`.
-size_t keyValueStart(std::string_view line, std::string_view key) {
-    std::string_view t = trimLeft(line);
-    if (!startsWithNoCase(t, key)) return std::string_view::npos;
-    std::string_view rest = trimLeft(t.substr(key.size()));
-    // ABOP's notation and the web's dialects write `n = 5`, `δ = 25.7` as well.
-    const bool assigns = rest.starts_with("=") && !rest.starts_with("==");
-    if (!(rest.starts_with(":") || assigns) || line.find("->") != std::string_view::npos) return std::string_view::npos;
-    size_t off = size_t(rest.data() - line.data()) + 1;
-    while (off < line.size() && line[off] == ' ') ++off;
-    return off;
+// The setting a key names, in whatever notation it is written ("δ" and "delta" are "angle",
+// "dlength" and cpfg's "derivation length" are "n", as the parser reads them).
+std::string settingOf(std::string_view key) {
+    if (const char* named = settingNamed(key)) return std::string_view(named) == "iterations" ? "n" : named;
+    std::string k(key);
+    std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return k == "iterations" ? "n" : k;
 }
 
+// The offset of the value after "key:" or "key =" on this line, the key written any way the
+// parser reads it (any case: cpfg writes `Axiom:`), or npos.
 size_t valueStartOfPart(std::string_view line, std::string_view key) {
-    static const std::vector<std::string_view> n{"n", "iterations", "derivation length", "dlength"},
-        angle{"angle", "\xCE\xB4", "delta"}, axiom{"axiom", "\xCF\x89", "start"};
-    const std::vector<std::string_view>* aliases = key == "n" || key == "iterations" ? &n : key == "angle" ? &angle : key == "axiom" ? &axiom : nullptr;
-    if (!aliases) return keyValueStart(line, key);
-    for (std::string_view alias : *aliases)
-        if (size_t off = keyValueStart(line, alias); off != std::string_view::npos) return off;
-    return std::string_view::npos;
+    if (line.find("->") != std::string_view::npos) return std::string_view::npos;
+    const std::string_view t = trimLeft(line);
+    const size_t sep = t.find_first_of(":=");
+    if (sep == std::string_view::npos || (t[sep] == '=' && t.substr(sep, 2) == "==")) return std::string_view::npos;
+    std::string_view written = t.substr(0, sep);
+    while (!written.empty() && (written.back() == ' ' || written.back() == '\t')) written.remove_suffix(1);
+    if (written.empty() || settingOf(written) != settingOf(key)) return std::string_view::npos;
+    size_t off = size_t(t.data() - line.data()) + sep + 1;
+    while (off < line.size() && line[off] == ' ') ++off;
+    return off;
 }
 
 // Also inside a figure caption "n=5, δ=25.7°", after a comma.

@@ -2,11 +2,15 @@
 
 namespace sprout {
 
+const Production* ruleOf(const Grammar& g, int rule) {
+    if (rule >= 0 && size_t(rule) < g.rules.productions.size()) return &g.rules.productions[size_t(rule)];
+    if (rule <= -2 && size_t(-(rule + 2)) < g.decomposition.productions.size()) return &g.decomposition.productions[size_t(-(rule + 2))];
+    return nullptr;
+}
+
 int ruleLine(const Grammar& g, int rule) {
-    if (rule >= 0 && size_t(rule) < g.rules.productions.size()) return g.rules.productions[size_t(rule)].line;
-    if (rule <= -2 && size_t(-(rule + 2)) < g.decomposition.productions.size())
-        return g.decomposition.productions[size_t(-(rule + 2))].line;
-    return 0;
+    const Production* p = ruleOf(g, rule);
+    return p ? p->line : 0;
 }
 
 DerivationRecord DerivationRecord::of(Derivation& d) {

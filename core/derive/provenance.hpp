@@ -40,6 +40,8 @@ std::vector<std::int32_t> madeBy(const DerivationRecord& record, int step);
 
 // The line of an encoded rule in the grammar's file (0: none).
 int ruleLine(const Grammar& grammar, int rule);
+// The production an Origins rule index names (as ruleLine), or nullptr.
+const Production* ruleOf(const Grammar& grammar, int rule);
 
 // "A(1.5) made at step 3 by line 7 <- B at step 2 by line 5 <- A (axiom)", for the panel and tests.
 std::string describeLineage(const Grammar& grammar, const std::vector<LineageLink>& links);

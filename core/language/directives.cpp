@@ -205,4 +205,10 @@ const std::vector<Directive>& directives() {
     return k;
 }
 
+const Directive* directiveNamed(std::string_view name) {
+    for (const auto& d : directives())
+        if (name == d.name) return &d;
+    return nullptr;
+}
+
 }  // namespace sprout::detail

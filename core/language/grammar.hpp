@@ -133,6 +133,13 @@ struct Grammar {
     bool needsGeneralEngine() const;
 };
 
+// The setting a key names in any notation Sprout reads ("δ", "delta", "w", "ω", "start",
+// "dlength", "derivation length" ...): the directive's name ("angle", "axiom", "n"), or nullptr.
+const char* settingNamed(std::string_view key);
+// How a text was read, a line each: each setting taken from it ("line 2: angle = 25.7
+// (written 'δ')"), each constant, each labelled rule; for `sprout expand --stats` and the panel.
+std::vector<std::string> settingsReadLines(const Grammar& g);
+
 struct ParseResult {
     std::shared_ptr<const Grammar> grammar;  // null when there are errors
     std::vector<Diagnostic> diagnostics;     // errors and warnings, in line order

@@ -3,7 +3,9 @@
 // the words of those notations (setting aliases, rule labels, other tools' settings) and the
 // pasted characters' replacements; parser_run.cpp's classify() uses them line by line.
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstdint>
 #include <cstring>
 
 #include "core/language/parser_impl.hpp"
@@ -61,13 +63,24 @@ bool isForeignSetting(std::string_view key) {
     return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return k == n; });
 }
 
-size_t ruleLabelLength(std::string_view s) {
+bool isRuleLabel(std::string_view s) {
     // After normalizePasted, subscript digits are plain digits: p1, P2, p3 (from p₃).
     // ABOP writes a lone production "p : F -> ..." too.
-    if (s.empty() || (s[0] != 'p' && s[0] != 'P')) return 0;
-    size_t i = 1;
-    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
-    return i;
+    if (s.empty() || (s[0] != 'p' && s[0] != 'P')) return false;
+    return std::all_of(s.begin() + 1, s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+}
+
+void Parser::warnForeign(const SourceLine& line, std::string_view key) {
+    m_sink.warning(line, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
+    m_notation = true;
+}
+
+// Whether `value` is an expression of numbers and the constants known so far (no parameters).
+bool Parser::isConstantExpr(const SourceLine& line, std::string_view value) {
+    if (trim(value).empty()) return false;
+    DiagnosticSink scratch;
+    ExprScope scope{nullptr, &m_assignedNames, &m_macros};
+    return compileExpr(value, line, scope, scratch).has_value() && scratch.errorCount() == 0;
 }
 
 void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
@@ -149,31 +162,53 @@ void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::strin
         {"\\;", "  ", nullptr, true, true},
         {"=>", "->", nullptr, true, true},
     };
-    for (const Sub& s : subs) {
-        if (s.lsysOnly && cpfg) continue;
-        const size_t len = std::strlen(s.from);
-        size_t first = std::string::npos, count = 0;
-        for (size_t at = text.find(s.from); at != std::string::npos; at = text.find(s.from, at + len)) {
-            if (s.from[0] == '=' && at > 0 && (text[at - 1] == '=' || text[at - 1] == '<' || text[at - 1] == '>' || text[at - 1] == '!'))
-                continue;  // "==>"? leave comparisons alone
-            text.replace(at, len, s.to);
-            if (first == std::string::npos) first = at;
-            ++count;
-            notation |= s.abop;
-            if (s.from[0] == '\\') {
-                // The math delimiters around a LaTeX arrow: 'F'  $\rightarrow$  'FF'.
-                size_t b = at;
-                while (b > 0 && isSpace(text[b - 1])) --b;
-                if (b > 0 && text[b - 1] == '$') text[b - 1] = ' ';
-                size_t f = at + len;
-                while (f < text.size() && isSpace(text[f])) ++f;
-                if (f < text.size() && text[f] == '$') text[f] = ' ';
-            }
+    // One pass over the text (it may be a written-out axiom of millions of modules, parsed again
+    // at each edit): only the bytes that start a replacement look further.
+    constexpr size_t kSubs = std::size(subs);
+    static const std::array<std::vector<std::uint8_t>, 256> byFirstByte = [] {
+        std::array<std::vector<std::uint8_t>, 256> t;
+        for (size_t k = 0; k < kSubs; ++k) t[static_cast<unsigned char>(subs[k].from[0])].push_back(std::uint8_t(k));
+        return t;
+    }();
+    std::array<size_t, kSubs> first, count{};
+    first.fill(std::string::npos);
+    for (size_t at = 0; at < text.size();) {
+        const auto& candidates = byFirstByte[static_cast<unsigned char>(text[at])];
+        const Sub* hit = nullptr;
+        size_t k = 0;
+        for (std::uint8_t c : candidates) {
+            const Sub& s = subs[c];
+            if ((s.lsysOnly && cpfg) || text.compare(at, std::strlen(s.from), s.from) != 0) continue;
+            if (s.from[0] == '=' && at > 0 && std::strchr("=<>!", text[at - 1])) continue;  // "==>"? leave comparisons alone
+            hit = &s;
+            k = c;
+            break;
         }
-        // One warning for a character replaced all over a pasted text: at its first place.
-        if (s.what && count)
-            replaced.emplace_back(first, std::string(s.what) + (count > 1 ? " (and in " + std::to_string(count - 1) + (count == 2 ? " more place)" : " more places)") : ""));
+        if (!hit) {
+            ++at;
+            continue;
+        }
+        const size_t len = std::strlen(hit->from);
+        text.replace(at, len, hit->to);
+        if (first[k] == std::string::npos) first[k] = at;
+        ++count[k];
+        notation |= hit->abop;
+        if (hit->from[0] == '\\') {
+            // The math delimiters around a LaTeX arrow: 'F'  $\rightarrow$  'FF'.
+            size_t b = at;
+            while (b > 0 && isSpace(text[b - 1])) --b;
+            if (b > 0 && text[b - 1] == '$') text[b - 1] = ' ';
+            size_t f = at + len;
+            while (f < text.size() && isSpace(text[f])) ++f;
+            if (f < text.size() && text[f] == '$') text[f] = ' ';
+        }
+        at += len;
     }
+    // One warning for a character replaced all over a pasted text: at its first place.
+    for (size_t k = 0; k < kSubs; ++k)
+        if (subs[k].what && count[k])
+            replaced.emplace_back(first[k], std::string(subs[k].what) +
+                                                (count[k] > 1 ? " (and in " + std::to_string(count[k] - 1) + (count[k] == 2 ? " more place)" : " more places)") : ""));
     if (cpfg) return;
     // Markdown's italics around words, as PDF converters write ABOP's module names
     // (`*plant* -> *internode* + [*leaf*]`), in a text already in ABOP's notation: a '*' that
@@ -252,12 +287,6 @@ std::vector<std::string_view> topLevelParts(std::string_view t) {
     return parts;
 }
 
-const Directive* directiveNamed(std::string_view name) {
-    for (const auto& d : directives())
-        if (name == d.name) return &d;
-    return nullptr;
-}
-
 }  // namespace
 
 bool Parser::classifyNotation(Line& l, std::string_view t) {
@@ -284,13 +313,8 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
             }
         }
         // One pass in file order (a constant uses the ones above it): linear in the text.
-        for (auto& [name, value] : pending) {
-            if (value.empty()) continue;
-            DiagnosticSink scratch;
-            ExprScope scope{nullptr, &m_assignedNames, &m_macros};
-            if (compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0)
-                m_assignedNames.emplace(std::string(name), 1.0);
-        }
+        for (auto& [name, value] : pending)
+            if (isConstantExpr(l.src, value)) m_assignedNames.emplace(std::string(name), 1.0);
         // The one-letter modules written in rules (outside parentheses), for the warning below.
         for (const auto& other : m_lines) {
             if (other.src.text.find("->") == std::string_view::npos) continue;
@@ -305,12 +329,7 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
     auto usedAsModule = [&](std::string_view key) {
         return key.size() == 1 && static_cast<unsigned char>(key[0]) < 128 && m_moduleLetters[static_cast<unsigned char>(key[0])];
     };
-    auto isConstant = [&](std::string_view value) {
-        if (trim(value).empty()) return false;
-        DiagnosticSink scratch;
-        ExprScope scope{nullptr, &m_assignedNames, &m_macros};
-        return compileExpr(value, l.src, scope, scratch).has_value() && scratch.errorCount() == 0;
-    };
+    auto isConstant = [&](std::string_view value) { return isConstantExpr(l.src, value); };
     // "n=5, δ=25.7°" (a caption) is several settings; otherwise the whole line is one.
     std::vector<std::string_view> parts = topLevelParts(t);
     bool caption = parts.size() > 1;
@@ -334,7 +353,7 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
             d = directiveNamed(alias);
             if (key == alias) writtenKey = {};
         } else if (isForeignSetting(key)) {
-            m_sink.warning(l.src, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
+            warnForeign(l.src, key);
             continue;
         } else if (const Directive* own = directiveNamed(key); own && key != "define" && key != "module") {
             d = own;  // Sprout's own settings written with '=' (width = 2, tropism = 0 -1 0 0.2)
@@ -425,10 +444,10 @@ void Parser::joinNotationLines() {
         if (head.ends_with("-")) head.remove_suffix(1);
         if (const size_t colon = findTopLevel(head, ":"); colon != std::string_view::npos) {
             std::string_view label = trim(head.substr(0, colon));
-            if (!label.empty() && ruleLabelLength(label) == label.size()) head = head.substr(colon + 1);
+            if (isRuleLabel(label)) head = head.substr(colon + 1);
         }
         head = trim(head);
-        if (head.size() > 1 && isIdentifier(head) && ruleLabelLength(head) != head.size()) words.emplace_back(head);
+        if (head.size() > 1 && isIdentifier(head) && !isRuleLabel(head)) words.emplace_back(head);
     }
     if (!words.empty()) {
         std::string names;
@@ -460,3 +479,23 @@ void Parser::applyDirective(const Directive& d, const SourceLine& src, std::stri
 }
 
 }  // namespace sprout::detail
+
+namespace sprout {
+
+const char* settingNamed(std::string_view key) { return detail::settingAlias(key); }
+
+std::vector<std::string> settingsReadLines(const Grammar& g) {
+    std::vector<std::string> out;
+    for (const auto& s : g.settingsRead) {
+        std::string line = "line " + std::to_string(s.line) + ": ";
+        line += s.name == "define" ? "constant " + s.value : s.name + " = " + s.value;
+        if (!s.written.empty()) line += "  (written '" + s.written + "')";
+        out.push_back(std::move(line));
+    }
+    for (const RuleSet* rs : {&g.rules, &g.interpretation, &g.decomposition})
+        for (const auto& p : rs->productions)
+            if (!p.label.empty()) out.push_back("line " + std::to_string(p.line) + ": rule " + p.label);
+    return out;
+}
+
+}  // namespace sprout

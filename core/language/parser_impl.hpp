@@ -75,8 +75,8 @@ inline bool isIdentifier(std::string_view s) {
 const char* settingAlias(std::string_view key);
 // Another tool's view or camera setting ("stemsize", "zpos" ...): a warning, never an error.
 bool isForeignSetting(std::string_view key);
-// The length of a rule label at the start of `s` ("p1", "P2"; subscripts are digits by then), or 0.
-size_t ruleLabelLength(std::string_view s);
+// A rule label: "p1", "P2", "p" (subscripts are digits by then).
+bool isRuleLabel(std::string_view s);
 // Characters pasted from PDFs and web pages (dashes, spaces, quotes, arrows, subscripts, LaTeX)
 // replaced in place, keeping every byte position; `replaced` gets the warnings to give,
 // `notation` is set when the text used ABOP's printed notation.
@@ -94,6 +94,7 @@ struct Directive {
 
 // The table of `key: value` directives. Adding one is one row here (and a Settings field).
 const std::vector<Directive>& directives();
+const Directive* directiveNamed(std::string_view name);  // nullptr: no such directive
 
 // A module as written: its name and the raw text of each argument.
 struct RawModule {
@@ -164,6 +165,8 @@ private:
     // ABOP's notation as a PDF gives it: a successor that goes on over the next lines, and
     // words as modules (`plant -> internode [+ leaf] ...`), declared from the predecessors.
     void joinNotationLines();
+    void warnForeign(const SourceLine& line, std::string_view key);  // another tool's setting, left out
+    bool isConstantExpr(const SourceLine& line, std::string_view value);
     void declareNamedModules();  // `SetContour("leaf")`: a word before a quoted name is one module
     void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
     // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.

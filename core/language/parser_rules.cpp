@@ -123,7 +123,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     size_t colon = findTopLevel(head, ":", 0, m_cpfg);
     if (colon != std::string_view::npos) {
         std::string_view written = trim(head.substr(0, colon));
-        if (!written.empty() && ruleLabelLength(written) == written.size()) {
+        if (isRuleLabel(written)) {
             // The label as typed (p₃ with its subscript), up to the colon.
             const size_t from = size_t(written.data() - line.text.data());
             const size_t to = size_t(head.data() - line.text.data()) + colon;

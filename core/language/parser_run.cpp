@@ -47,7 +47,7 @@ void Parser::classify(Line& l, Section& section) {
     if (classifyNotation(l, t)) return;
     size_t colon = t.find(':');
     std::string_view key = trim(t.substr(0, colon));
-    if (colon != std::string_view::npos && !key.empty() && ruleLabelLength(key) == key.size()) {
+    if (colon != std::string_view::npos && isRuleLabel(key)) {
         m_sink.error(l.src, key, "the label '" + std::string(key) + "' has no rule after it: write the rule on the label's line, as in '" +
                                      std::string(key) + ": F -> F[+F]F'");
         return;
@@ -71,11 +71,9 @@ void Parser::classify(Line& l, Section& section) {
         l.key = key;
         m_notation = true;
     }
-    for (const auto& d : directives())
-        if (k == d.name) l.directive = &d;
+    l.directive = directiveNamed(k);
     if (!l.directive && isForeignSetting(key)) {
-        m_sink.warning(l.src, key, "'" + std::string(key) + "' is another L-system tool's view setting: Sprout leaves it out");
-        m_notation = true;
+        warnForeign(l.src, key);
         return;
     }
     if (!l.directive) {
