@@ -205,16 +205,20 @@ private:
     void place(const Block& b, State& t);
 
 
-    // cos and sin of an angle in degrees, computed in double and exact where they are 0 or
-    // +-1: a float pi/2 has a cosine of -4.4e-8, and a 90-degree curve turned 5 M times drifted
-    // 12 degrees round (a square drawn as a smeared band).
+    // cos and sin of an angle in degrees, exact for a quarter turn: a float pi/2 has a cosine
+    // of -4.4e-8, and a 90-degree curve turned 5 M times drifted 12 degrees round (a square
+    // drawn as a smeared band).
     static void cosSinDegrees(double degrees, float& c, float& s) {
         const double r = std::remainder(degrees, 360.0);  // -180 .. 180
-        if (r == 0) c = 1, s = 0;
-        else if (r == 90) c = 0, s = 1;
+        // Only the quarter turns are snapped; every other angle is turned as before, in float
+        // (a polygon turned back exactly on itself triangulates by rounding, and the tree
+        // turtle's placed blocks reproduce the float values: the fuzzer compares the two).
+        if (r == 90) c = 0, s = 1;
         else if (r == -90) c = 0, s = -1;
-        else if (r == 180 || r == -180) c = -1, s = 0;
-        else c = float(std::cos(r * (3.14159265358979323846 / 180))), s = float(std::sin(r * (3.14159265358979323846 / 180)));
+        else {
+            const float a = float(degrees) * kPi / 180.0f;
+            c = std::cos(a), s = std::sin(a);
+        }
     }
 
     [[gnu::always_inline]] inline void turn(const State& t, v4& a, v4& b, const double* p, float sign) {
