@@ -74,7 +74,9 @@ bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error,
     renderer.upload(out.geometry);
     if (!overlayEnvironment(renderer, o, out.geometry, seed, error)) return false;
     render::Camera camera = snapshotCamera(out.geometry, o);
-    renderer.draw(camera, o.width, o.height, o.render, 0);
+    render::RenderOptions options = o.render;
+    options.quickLines = o.viewerDetail && renderer.software();  // the viewer's view, as it draws it
+    renderer.draw(camera, o.width, o.height, options, 0);
     out.image.width = o.width;
     out.image.height = o.height;
     out.image.rgba = renderer.readPixels(o.width, o.height, 0);

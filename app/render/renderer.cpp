@@ -189,6 +189,9 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
         error = "OpenGL 3.3 core is required";
         return false;
     }
+    const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string renderer = name ? name : "";
+    m_software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
     return m->build(error);
 }
 

@@ -17,6 +17,8 @@ namespace sprout::render {
 namespace detail {
 
 inline constexpr int kShadowSize = 2048;
+// RenderOptions::quickLines: from this many lines in a draw on.
+inline constexpr std::size_t kQuickLines = 100'000;
 
 struct Buffers {
     GLuint vao = 0, vbo = 0, ebo = 0;
@@ -60,7 +62,8 @@ struct Renderer::Impl {
     glm::mat4 shadowView{0.0f};
     float shadowTexel = 0;
     int shadowAge = 0;  // moving frames that used it since it was made
-    // Multisampled images: one for moving frames of big plants (2 samples), one for other
+    // Multisampled images: one for moving frames of big plants (2 samples) and for big curves
+    // (1 sample, still and moving), one for other
     // moving frames (4 samples, half size in the window), one for still pictures, so that
     // starting or letting go of a drag does not allocate them again.
     struct Msaa {
@@ -87,9 +90,10 @@ struct Renderer::Impl {
     void ensureMsaa(int w, int h, int wantSamples, int slot);
 
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
-    // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`.
+    // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`; lines
+    // without multisampling when `quickLines` and there are many (RenderOptions::quickLines).
     void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats,
-                   bool moving = false);
+                   bool moving = false, bool quickLines = false);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;
@@ -127,6 +131,7 @@ struct Renderer::Pass {
     int lastPhase = Shadow, lastPart = 0;
     std::size_t lastUnits = 0;
     double spentMs = 0;  // the pieces' time (continueDrawFor), and a big curve's raster's
+    double waitMs = 0;   // how long a piece may wait for the raster's thread (continueDrawFor)
     bool staleShadows = false;  // a moving frame with an earlier scene's shadow map
     bool sketch = false;        // a moving frame that draws the scene's proxy
     RenderStats stats;

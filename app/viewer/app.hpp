@@ -86,6 +86,14 @@ struct App {
     glm::mat4 drawnCamera{0.0f};  // the camera (projection and view) the view was last drawn from
     double refineStart = 0;             // when the picture in pieces was begun (glfwGetTime)
     double refineWorstMs = 0;           // the longest frame while the last picture was refined
+    int refineFrames = 0;               // and the frames it took
+    // The last moving picture as shown (stretched to the view's size), kept when a script
+    // measures how close it is to the still view that follows (frame-stats' moving_differ_pct:
+    // the share of pixels that differ by more than 30 of 765).
+    bool measureMoving = false;
+    bool viewMoving = false;  // the view's picture is a moving one
+    std::vector<std::uint8_t> movingPicture;
+    double movingDifferPct = -1;
     // Frames that drew the moving view (script frame-stats): the longest, their sum and count.
     double movingWorstMs = 0, movingTotalMs = 0;
     std::uint64_t movingFrames = 0;

@@ -17,10 +17,14 @@
 //                         whose still picture takes a few ms: a GPU, a small plant)
 //   wait-thumbnails       until the presets' thumbnails are made (benchmarks)
 //   frame-stats           prints "moving_worst_ms=A moving_mean_ms=B refine_ms=T
-//                         refine_worst_frame_ms=W peak_mb=M": the longest and mean frame that
-//                         moved the view since the last frame-stats, the time the last still
-//                         view took to draw whole (a piece a frame) and its longest frame, and
-//                         the process's peak memory
+//                         refine_worst_frame_ms=W peak_mb=M refine_frames=F refine_drawing_ms=D
+//                         moving_differ_pct=P": the longest and mean frame that moved the view
+//                         since the last frame-stats, the time the last still view took to
+//                         draw whole (a piece a frame), its longest frame, the process's peak
+//                         memory, the frames the still view took and the time its pieces drew,
+//                         and the share of pixels (%) that differ by more than 30 of 765 between
+//                         the last moving picture as shown and the still view after it (-1:
+//                         none measured)
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
@@ -187,9 +191,9 @@ bool Script::step(App& app) {
                     if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
                 std::fclose(f);
             }
-            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f\n",
+            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f\n",
                         app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
-                        app.refineWorstMs, double(peakKb) / 1024);
+                        app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct);
             std::fflush(stdout);
             app.movingWorstMs = app.movingTotalMs = 0;
             app.movingFrames = 0;

@@ -66,7 +66,37 @@ constexpr double kRefineMs = 8.0;
 // A scene whose still picture took at most this long is drawn at full quality while it moves.
 constexpr double kFullWhileMovingMs = 10.0;
 // The frame time the moving view's resolution is fitted to (App::movingScale).
-constexpr double kMovingFrameMs = 26.0;
+constexpr double kMovingFrameMs = 12.0;
+
+// The view's picture as the window shows it: stretched from the size it was drawn at to
+// w x h, as the blit to the window does (top row first).
+std::vector<std::uint8_t> shownView(const App& app, int w, int h) {
+    GLuint fbo = 0, colour = 0;
+    glGenFramebuffers(1, &fbo);
+    glGenRenderbuffers(1, &colour);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
+    glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                      app.drawWidth == w ? GL_NEAREST : GL_LINEAR);
+    std::vector<std::uint8_t> pixels = app.renderer.readPixels(w, h, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteRenderbuffers(1, &colour);
+    glDeleteFramebuffers(1, &fbo);
+    return pixels;
+}
+
+// The share of pixels (in percent) whose colours differ by more than 30 of 765 (the summed
+// differences of red, green and blue).
+double differingPct(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+    if (a.size() != b.size() || a.empty()) return -1;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.size(); i += 4)
+        n += std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
+    return 100.0 * double(n) / double(a.size() / 4);
+}
 
 // A hash of what ImGui draws in a frame (vertices, indices, commands): equal hashes, the
 // same panel on screen.
@@ -156,6 +186,7 @@ int runViewer(int argc, char** argv) {
 
     App app(std::filesystem::read_symlink("/proc/self/exe").string());
     app.window = window;
+    app.measureMoving = !script.empty();
     std::string error;
     if (!app.renderer.init(glfwProc, error)) {
         std::cerr << "sprout: " << error << "\n";
@@ -229,6 +260,7 @@ int runViewer(int argc, char** argv) {
         bool viewUpdated = false;   // the view's picture changed in this frame
         bool previewed = false;     // a new scene's moving-quality picture drawn in this frame
         bool present = true;        // the frame is shown (see below)
+        double measuringMs = 0;     // spent measuring for a script (not the frame's own time)
 
         auto previous = app.state.plant();
         if (app.state.update() && app.state.plant()->image) {
@@ -361,6 +393,7 @@ int runViewer(int argc, char** argv) {
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
             render::RenderOptions o = app.view.render;  // still quality; drawMoving picks the moving frames'
             o.quality = render::Quality::Still;
+            o.quickLines = app.renderer.software();
             const bool interactive = app.interacting || app.state.playing() || app.view.turntable;
             if (!app.viewFbo) {
                 glGenFramebuffers(1, &app.viewFbo);
@@ -410,19 +443,28 @@ int runViewer(int argc, char** argv) {
             const bool slow = app.lastStillMs > kRefineMs;
             const bool cameraMoved = cameraKey != app.drawnCamera;
             const bool arrived = app.sceneArrived;
-            const bool preview = app.needsRedraw && !interactive &&
+            // Not for a big curve: its moving picture is its raster, which the still one makes on
+            // a thread (made here, it held the window 130 ms when the Gosper curve n=5 arrived).
+            const bool preview = app.needsRedraw && !interactive && !app.renderer.rasterCurve() &&
                                  ((arrived && (app.bigPlant || slow || !app.movingWarm)) || (cameraMoved && slow));
             app.sceneArrived = false;
             if (app.needsRedraw) app.drawnCamera = cameraKey;
             if (app.needsRedraw && interactive) {
                 drawMoving();
                 moved = true;
+                app.viewMoving = true;
             } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
+                if (app.measureMoving && app.viewMoving) {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    app.movingPicture = shownView(app, vw, vh);
+                    measuringMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                }
                 if (preview) drawMoving(), moved = cameraMoved && !arrived, previewed = true;  // moving: the wheel or keys
                 app.renderer.beginDraw(app.camera, vw, vh, o, app.viewFbo, 0, 0);
                 app.refining = true;
                 app.refineStart = glfwGetTime();
                 app.refineWorstMs = 0;
+                app.refineFrames = 0;
             }
             app.needsRedraw = false;
             if (app.refining) {
@@ -430,11 +472,19 @@ int runViewer(int argc, char** argv) {
                 const bool whole = app.renderer.continueDrawFor(kRefineMs);
                 if (whole) {
                     app.refining = false;
+
                     app.lastStillMs = app.renderer.lastPictureMs();
                     app.drawWidth = vw, app.drawHeight = vh;
                     app.drawMs = (glfwGetTime() - app.refineStart) * 1000;
+                    if (!app.movingPicture.empty()) {
+                        const auto t0 = std::chrono::steady_clock::now();
+                        app.movingDifferPct = differingPct(app.movingPicture, app.renderer.readPixels(vw, vh, app.viewFbo));
+                        app.movingPicture.clear();
+                        measuringMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+                    }
                     ++app.viewDraws;
                     viewUpdated = true;
+                    app.viewMoving = false;
                 }
             }
             // A frame in which nothing on screen changes is not shown: while the still view is
@@ -494,9 +544,9 @@ int runViewer(int argc, char** argv) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
-        app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+        app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count() - measuringMs;
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
-        if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs);
+        if (refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs), ++app.refineFrames;
         if (moved || previewed) {
             // The moving view's share of the pixels follows its frames' time (which goes with
             // the pixels drawn): fewer while a frame takes longer than kMovingFrameMs, back

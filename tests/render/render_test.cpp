@@ -381,6 +381,46 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
     EXPECT_FALSE(renderer.drawing());
 }
 
+// Many lines drawn without multisampling (RenderOptions::quickLines, the window's view on
+// software GL) are the same plant: the thinnest stems lose their smoothed edges only. A plant
+// with fewer lines than that is drawn as it always is.
+TEST(Render, ManyLinesDrawnQuickAreTheSamePlant) {
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    for (int n : {9, 5}) {
+        SCOPED_TRACE("fractal_plant n=" + std::to_string(n));
+        auto g = grammarOf(std::string(*presetText("fractal_plant")));
+        DeriveResult d = derive(g, n);
+        ASSERT_TRUE(d.outcome.ok());
+        auto geometry = std::make_shared<Geometry>();
+        interpret(*d.string, *g, {n, 1, nullptr}, *geometry);
+        render::PreparedScene scene;
+        render::Renderer::prepareForViewer(*geometry, scene, geometry);
+        renderer.upload(scene);
+        SnapshotOptions o;
+        o.width = kW, o.height = kH;
+        const render::Camera camera = snapshotCamera(*geometry, o);
+        const std::vector<std::uint8_t> smooth = renderer.renderImage(camera, kW, kH, o.render);
+        o.render.quickLines = true;
+        const std::vector<std::uint8_t> quick = renderer.renderImage(camera, kW, kH, o.render);
+        ASSERT_EQ(quick.size(), smooth.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < quick.size(); i += 4)
+            differ += std::abs(int(quick[i]) - int(smooth[i])) + std::abs(int(quick[i + 1]) - int(smooth[i + 1])) +
+                          std::abs(int(quick[i + 2]) - int(smooth[i + 2])) >
+                      30;
+        if (n == 9) {
+            ASSERT_GT(scene.lines.size() / 8, 100'000u) << "many lines";
+            EXPECT_GT(differ, 0u) << "drawn another way";
+            EXPECT_LT(differ, std::size_t(kW * kH) / 20) << "the same plant";
+        } else {
+            ASSERT_LT(scene.lines.size() / 8, 100'000u);
+            EXPECT_EQ(differ, 0u) << "few lines: drawn as always";
+        }
+    }
+}
+
 // A plant of a few thousand stems at full detail has many long thin triangles, which a
 // software rasteriser pays for: while the view moves it is drawn from its interactive bake
 // (far fewer triangles, thin stems as lines), in the same place; still, whole.
