@@ -3,6 +3,7 @@
 #include "app/render/renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -154,9 +155,9 @@ void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     msaaFbo = t.fbo;
     if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
     // Moving frames change size with the window's resolution scale: a larger image is
-    // drawn into in part (the picture's at the lower-left corner) rather than made again.
-    if (slot < 2 && t.fbo && w <= t.width && h <= t.height && 4 * w * h >= t.width * t.height && wantSamples == t.samples)
-        return;
+    // drawn into in part (the picture's at the lower-left corner) rather than made again
+    // (a new image's memory is first touched by its first frame: one slow frame a drag).
+    if (slot < 2 && t.fbo && w <= t.width && h <= t.height && wantSamples == t.samples) return;
     if (!t.fbo) {
         glGenFramebuffers(1, &t.fbo);
         glGenRenderbuffers(1, &t.colour);
@@ -348,6 +349,45 @@ std::vector<std::uint8_t> Renderer::renderImage(const Camera& camera, int width,
     glDeleteRenderbuffers(1, &colour);
     glDeleteFramebuffers(1, &fbo);
     return pixels;
+}
+
+void Renderer::warmUp(int width, int height) {
+    // A stem for each level of detail, leaves, and past 4000 primitives in all (so that moving
+    // frames take the big scene's path) twigs of lines; then a curve of ribbons.
+    Geometry plant;
+    auto stem = [&](glm::vec3 a, glm::vec3 b, float r) {
+        plant.cylinders.push_back({a, r, b, r, 0x6B4F2AFFu, 0, 0});
+        plant.bounds.add(a), plant.bounds.add(b);
+    };
+    stem({0, 0, 0}, {0, 4, 0}, 0.2f);
+    stem({0, 4, 0}, {1, 6, 0}, 0.02f);
+    stem({0, 4, 0}, {-1, 6, 0}, 0.006f);
+    for (int i = 0; i < 4500; ++i) {
+        const float a = float(i) * 0.0137f, h = 2.0f + float(i % 100) * 0.04f;
+        stem({0, h, 0}, {0.5f * std::cos(a), h + 0.3f, 0.5f * std::sin(a)}, 1e-4f);
+    }
+    plant.surfaces.push_back({{1, 6, 0}, 0.8f, {1, 0.5f, 0}, 0x4C8C3AFFu, {0, 0, 1}, SurfaceKind::Leaf});
+    Geometry curve;
+    curve.planarCurve = true;
+    for (int i = 0; i < 64; ++i) {
+        const glm::vec3 a(float(i), float(i % 2), 0), b(float(i + 1), float((i + 1) % 2), 0);
+        curve.cylinders.push_back({a, 0.1f, b, 0.1f, 0x000000FFu, 0, 0});
+        curve.bounds.add(a), curve.bounds.add(b);
+    }
+    for (const Geometry* g : {&plant, &curve}) {
+        upload(*g);
+        const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
+        RenderOptions o;
+        for (Quality q : {Quality::Still, Quality::Interactive}) {
+            o.quality = q;
+            // At the sizes the window draws (its moving frames at half size each way): the
+            // images are made, and their memory first touched, here.
+            const int k = q == Quality::Still ? 1 : 2;
+            renderImage(camera, std::max(width / k, 16), std::max(height / k, 16), o);
+        }
+    }
+    upload(Geometry());
+    m_lastPictureMs = 1e9;
 }
 
 std::vector<std::uint8_t> Renderer::readPixels(int width, int height, unsigned source) const {

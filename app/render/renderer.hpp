@@ -153,6 +153,11 @@ public:
     double lastPictureMs() const { return m_lastPictureMs; }
     // The scene is a big planar curve, drawn from a raster made at the picture's size.
     bool rasterCurve() const;
+    // Draws a small scene once in every way the window draws (still and moving, stems,
+    // lines and leaves, shadows and ground, a curve: a software rasteriser compiles each
+    // way on its first use, which made the first piece of the first picture take 20-50 ms),
+    // at width x height (the still view's size) and half that. Leaves no scene uploaded.
+    void warmUp(int width, int height);
     // Draws into an offscreen image of any size (screenshots larger than the window).
     std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // RGBA pixels of framebuffer `source`, top row first.
