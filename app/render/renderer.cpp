@@ -367,23 +367,30 @@ void Renderer::warmUp(int width, int height) {
         stem({0, h, 0}, {0.5f * std::cos(a), h + 0.3f, 0.5f * std::sin(a)}, 1e-4f);
     }
     plant.surfaces.push_back({{1, 6, 0}, 0.8f, {1, 0.5f, 0}, 0x4C8C3AFFu, {0, 0, 1}, SurfaceKind::Leaf});
-    Geometry curve;
-    curve.planarCurve = true;
-    for (int i = 0; i < 64; ++i) {
-        const glm::vec3 a(float(i), float(i % 2), 0), b(float(i + 1), float((i + 1) % 2), 0);
-        curve.cylinders.push_back({a, 0.1f, b, 0.1f, 0x000000FFu, 0, 0});
-        curve.bounds.add(a), curve.bounds.add(b);
+    // Curves: one of ribbons, and one past 200 k segments, rasterised on the CPU, whose moving
+    // frames move its last raster (drawn again from another view).
+    Geometry curve, bigCurve;
+    curve.planarCurve = bigCurve.planarCurve = true;
+    for (int i = 0; i < 200'001; ++i) {
+        const glm::vec3 a(float(i % 1000), float(i / 1000 + i % 2), 0), b(float(i % 1000 + 1), float(i / 1000 + (i + 1) % 2), 0);
+        for (Geometry* c : {&curve, &bigCurve}) {
+            if (c == &curve && i >= 64) continue;
+            c->cylinders.push_back({a, 0.1f, b, 0.1f, 0x000000FFu, 0, 0});
+            c->bounds.add(a), c->bounds.add(b);
+        }
     }
-    for (const Geometry* g : {&plant, &curve}) {
+    for (const Geometry* g : {&plant, &curve, &bigCurve}) {
         upload(*g);
         const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
+        Camera moved = camera;
+        moved.yaw += 10, moved.target.x += 0.05f * moved.orthoHeight;
         RenderOptions o;
         for (Quality q : {Quality::Still, Quality::Interactive}) {
             o.quality = q;
-            // At the sizes the window draws (its moving frames at half size each way): the
-            // images are made, and their memory first touched, here.
-            const int k = q == Quality::Still ? 1 : 2;
-            renderImage(camera, std::max(width / k, 16), std::max(height / k, 16), o);
+            // At the sizes the window draws (its moving frames at half size each way, a big
+            // curve's at full size): the images are made, and their memory first touched, here.
+            const int k = q == Quality::Still || g == &bigCurve ? 1 : 2;
+            renderImage(q == Quality::Still ? camera : moved, std::max(width / k, 16), std::max(height / k, 16), o);
         }
     }
     upload(Geometry());

@@ -19,8 +19,8 @@ public:
     // and `start` allows (the window holds them back while the view moves or refines: on two
     // cores a thumbnail's render would take one from the software rasteriser).
     void poll(const std::vector<std::string>& names, bool start = true);
-    // A thumbnail is being made.
-    bool making() const { return m_child > 0; }
+    // A thumbnail is being made, or cached ones are still being read.
+    bool making() const { return m_child > 0 || m_reading; }
     // The image, once made (nullptr until then).
     const Image* get(const std::string& name) const;
     // Set when the window uploaded the image to a texture.
@@ -34,6 +34,7 @@ private:
     std::map<std::string, Image> m_images;
     std::map<std::string, bool> m_failed;
     pid_t m_child = -1;
+    bool m_reading = false;
     std::string m_childName;
 };
 

@@ -192,33 +192,6 @@ int runViewer(int argc, char** argv) {
         std::cerr << "sprout: " << error << "\n";
         return 1;
     }
-    {
-        // The ways of drawing compiled, and the images made, before the first frame (the
-        // view beside the panel): the first moving picture took 37 ms, then 11.
-        int fw = 0, fh = 0;
-        glfwGetFramebufferSize(window, &fw, &fh);
-        const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
-        app.renderer.warmUp(vw, vh);
-        // And the copies of the view into the window, stretched (moving frames) and not, at
-        // the view's place: the first stretched one took 30 ms (with a copy of a few pixels
-        // as a warm-up still 24).
-        GLuint fbo = 0, colour = 0;
-        glGenFramebuffers(1, &fbo);
-        glGenRenderbuffers(1, &colour);
-        glBindRenderbuffer(GL_RENDERBUFFER, colour);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glFinish();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteRenderbuffers(1, &colour);
-        glDeleteFramebuffers(1, &fbo);
-    }
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed: no imgui.ini files left around
@@ -256,6 +229,42 @@ int runViewer(int argc, char** argv) {
     } else {
         std::cerr << source << ": no such file or preset\n";
         return 1;
+    }
+    if (!screenshot) {
+        // The ways of drawing compiled, and the images made, before the first frame (the
+        // view beside the panel), while the worker derives the plant: the first moving
+        // picture took 37 ms, then 11. About 200 ms here, once (not for a screenshot).
+        int fw = 0, fh = 0;
+        glfwGetFramebufferSize(window, &fw, &fh);
+        const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
+        app.renderer.warmUp(vw, vh);
+        // And the copies of the view into the window, stretched (moving frames) and not, at
+        // the view's place: the first stretched one took 30 ms (with a copy of a few pixels
+        // as a warm-up still 24).
+        GLuint fbo = 0, colour = 0;
+        glGenFramebuffers(1, &fbo);
+        glGenRenderbuffers(1, &colour);
+        glBindRenderbuffer(GL_RENDERBUFFER, colour);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glFinish();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteRenderbuffers(1, &colour);
+        glDeleteFramebuffers(1, &fbo);
+        // And the panel's: its font atlas and its drawing (the first frame took 37 ms).
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        ImGui::GetForegroundDrawList()->AddText(ImVec2(0, 0), IM_COL32_WHITE, "Sprout");
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        glFinish();
     }
     // A previous session ended without saving: offer its text back.
     bool offerRecovery = app.state.recoverable().has_value() && !screenshot && script.empty();
