@@ -55,6 +55,7 @@ struct RenderStats {
     bool curve = false;                 // drawn as a 2D curve
     bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
     bool proxy = false;                 // a big scene drawn as its sketch while the view moves
+    bool shadowPass = false;            // the shadow map was drawn for this picture
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread

@@ -57,6 +57,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.stats = m_stats;
     p.stats.curveMoved = false;
     p.stats.proxy = false;
+    p.stats.shadowPass = false;
     p.stats.triangles = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
@@ -186,6 +187,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, 0);  // never sample the map while writing it
         if (!p.started) glClear(GL_DEPTH_BUFFER_BIT), p.started = true, s.shadowValid = s.shadowMade = false;
+        p.stats.shadowPass = true;
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(1.5f, 2.0f);
         const std::size_t n = take(sceneCount);

@@ -94,6 +94,7 @@ struct App {
     bool viewMoving = false;  // the view's picture is a moving one
     std::vector<std::uint8_t> movingPicture;
     double movingDifferPct = -1;
+    std::string movingWorstWhat;  // what the longest moving frame did (frame-stats)
     // Frames that drew the moving view (script frame-stats): the longest, their sum and count.
     double movingWorstMs = 0, movingTotalMs = 0;
     std::uint64_t movingFrames = 0;

@@ -24,7 +24,9 @@
 //                         memory, the frames the still view took and the time its pieces drew,
 //                         and the share of pixels (%) that differ by more than 30 of 765 between
 //                         the last moving picture as shown and the still view after it (-1:
-//                         none measured)
+//                         none measured), and what the longest moving frame drew (its view's
+//                         size and time, and whether it drew the shadow map, the sketch, or
+//                         took a new plant)
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
@@ -191,11 +193,13 @@ bool Script::step(App& app) {
                     if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
                 std::fclose(f);
             }
-            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f\n",
+            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s\n",
                         app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
-                        app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct);
+                        app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct,
+                        app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str());
             std::fflush(stdout);
             app.movingWorstMs = app.movingTotalMs = 0;
+            app.movingWorstWhat.clear();
             app.movingFrames = 0;
             return true;
         }

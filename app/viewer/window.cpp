@@ -299,6 +299,7 @@ int runViewer(int argc, char** argv) {
         double measuringMs = 0;     // spent measuring for a script (not the frame's own time)
 
         auto previous = app.state.plant();
+        bool uploadedNow = false;  // a new plant went to the GPU (or began to) in this frame
         if (app.state.update() && app.state.plant()->image) {
             // An iterated function system: its density image goes to a texture.
             auto p = app.state.plant();
@@ -330,6 +331,7 @@ int runViewer(int argc, char** argv) {
                                                             kUploadBytesPerFrame);
             else app.renderer.upload(g), app.sceneArrived = true;
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            uploadedNow = true;
             if (app.frameOnNextPlant) {
                 app.frame();
                 app.frameOnNextPlant = false;
@@ -343,7 +345,10 @@ int runViewer(int argc, char** argv) {
         if (app.environmentDirty || app.environmentOf != app.state.plant()) app.updateEnvironment();
         app.showEnvironment();
         // The plant on screen is drawn until the new one is whole (its picture is kept meanwhile).
-        if (app.renderer.uploading() && app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = app.sceneArrived = true;
+        if (app.renderer.uploading()) {
+            uploadedNow = true;
+            if (app.renderer.continueUpload(kUploadBytesPerFrame)) app.needsRedraw = app.sceneArrived = true;
+        }
         app.state.tick(dt);
         app.state.autosave();
         if (now - lastDiskCheck > 1.0) {
@@ -592,6 +597,13 @@ int runViewer(int argc, char** argv) {
             app.movingScale = std::clamp(app.movingScale * std::clamp(k, 0.6f, 1.1f), 0.25f, 0.5f);
         }
         if (moved) {
+            if (app.frameMs > app.movingWorstMs) {
+                char what[160];
+                std::snprintf(what, sizeof what, "view_%dx%d_in_%.1fms%s%s%s", app.drawWidth, app.drawHeight, app.drawMs,
+                              app.renderer.stats().shadowPass ? "_shadow_pass" : "", app.renderer.stats().proxy ? "_sketch" : "",
+                              uploadedNow ? "_new_plant" : "");
+                app.movingWorstWhat = what;
+            }
             app.movingWorstMs = std::max(app.movingWorstMs, app.frameMs);
             app.movingTotalMs += app.frameMs;
             ++app.movingFrames;
