@@ -50,7 +50,7 @@ for scene in "fractal plant n=2|fractal_plant|set n 2" "fractal plant n=10|fract
 done
 # Growth playback of mid-size plants: 4 s of play from the axiom on (every step a new plant,
 # derived, baked and uploaded while frames go on). Bars: mean <= 20 ms, none over 33 ms.
-printf 'wait\nsleep 0.5\nframe-stats\nplay\nsleep 4\nframe-stats\npause\nquit\n' >"$work/play.txt"
+printf 'wait\nsleep 2\nframe-stats\nplay\nsleep 4\nframe-stats\npause\nquit\n' >"$work/play.txt"
 for scene in "fractal plant n=8|fractal_plant|set n 8" "ABOP 2.8 tree|abop_2_8_tree|" "bush 3D|bush_3d|" \
              "stochastic flower|stochastic_flower_plant|"; do
   IFS='|' read -r name source set <<<"$scene"
@@ -59,8 +59,8 @@ for scene in "fractal plant n=8|fractal_plant|set n 8" "ABOP 2.8 tree|abop_2_8_t
           grep '^moving_worst_ms=' | tail -1)"
   [ -n "$line" ] || { echo "window_bench: $name: the viewer printed no frame-stats" >&2; exit 1; }
   eval "$(echo "$line" | tr ' ' '\n' | grep . | sed 's/^/local_/')"
-  awk -v n="$name" -v w="$local_moving_worst_ms" -v m="$local_moving_mean_ms" 'BEGIN {
-    printf "window_bench: playback %-19s frames mean %5.1f ms (bar 20), worst %5.1f ms (bar 33)\n", n, m, w }'
+  awk -v n="$name" -v w="$local_moving_worst_ms" -v m="$local_moving_mean_ms" -v x="$local_moving_worst_was" 'BEGIN {
+    printf "window_bench: playback %-19s frames mean %5.1f ms (bar 20), worst %5.1f ms (bar 33; it drew %s)\n", n, m, w, x }'
   awk -v w="$local_moving_worst_ms" -v m="$local_moving_mean_ms" 'BEGIN { exit !(w <= 33 && m <= 20) }' || ok=0
 done
 # With --presets: every built-in preset, each dragged for 20 frames and let go; the five

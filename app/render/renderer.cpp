@@ -353,7 +353,7 @@ std::vector<std::uint8_t> Renderer::renderImage(const Camera& camera, int width,
 
 void Renderer::warmUp(int width, int height) {
     // A stem for each level of detail, leaves, and past 4000 primitives in all (so that moving
-    // frames take the big scene's path) twigs of lines; then a curve of ribbons.
+    // frames take the big scene's path) twigs of lines.
     Geometry plant;
     auto stem = [&](glm::vec3 a, glm::vec3 b, float r) {
         plant.cylinders.push_back({a, r, b, r, 0x6B4F2AFFu, 0, 0});
@@ -367,6 +367,12 @@ void Renderer::warmUp(int width, int height) {
         stem({0, h, 0}, {0.5f * std::cos(a), h + 0.3f, 0.5f * std::sin(a)}, 1e-4f);
     }
     plant.surfaces.push_back({{1, 6, 0}, 0.8f, {1, 0.5f, 0}, 0x4C8C3AFFu, {0, 0, 1}, SurfaceKind::Leaf});
+    // And a small one (its moving frames keep 4 samples and the shadows).
+    Geometry small;
+    small.cylinders.push_back(plant.cylinders[0]);
+    small.cylinders.push_back(plant.cylinders[2]);
+    small.surfaces.push_back(plant.surfaces[0]);
+    small.bounds = plant.bounds;
     // Curves: one of ribbons, and one past 200 k segments, rasterised on the CPU, whose moving
     // frames move its last raster (drawn again from another view).
     Geometry curve, bigCurve;
@@ -379,19 +385,25 @@ void Renderer::warmUp(int width, int height) {
             c->bounds.add(a), c->bounds.add(b);
         }
     }
-    for (const Geometry* g : {&plant, &curve, &bigCurve}) {
+    for (const Geometry* g : {&plant, &small, &curve, &bigCurve}) {
         upload(*g);
         const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
         Camera moved = camera;
         moved.yaw += 10, moved.target.x += 0.05f * moved.orthoHeight;
         RenderOptions o;
-        for (Quality q : {Quality::Still, Quality::Interactive}) {
-            o.quality = q;
-            // At the sizes the window draws (its moving frames at half size each way, a big
-            // curve's at full size): the images are made, and their memory first touched, here.
-            const int k = q == Quality::Still || g == &bigCurve ? 1 : 2;
-            renderImage(q == Quality::Still ? camera : moved, std::max(width / k, 16), std::max(height / k, 16), o);
+        for (bool quick : {false, true}) {  // lines with multisampling and without (any number of them here)
+            if (quick && !m_software) continue;
+            o.quickLines = quick;
+            m->quickLinesFrom = quick ? 0 : detail::kQuickLines;
+            for (Quality q : {Quality::Still, Quality::Interactive}) {
+                o.quality = q;
+                // At the sizes the window draws (its moving frames at half size each way, a big
+                // curve's at full size): the images are made, and their memory first touched, here.
+                const int k = q == Quality::Still || g == &bigCurve ? 1 : 2;
+                renderImage(q == Quality::Still ? camera : moved, std::max(width / k, 16), std::max(height / k, 16), o);
+            }
         }
+        m->quickLinesFrom = detail::kQuickLines;
     }
     upload(Geometry());
     m_lastPictureMs = 1e9;

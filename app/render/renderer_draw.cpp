@@ -123,7 +123,7 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::s
             glUseProgram(lineProgram);
             setUniform(lineProgram, "uViewProj", viewProj);
             glBindVertexArray(thin.vao);
-            const bool single = quickLines && (moving || lineCount > detail::kQuickLines);
+            const bool single = quickLines && (moving || lineCount > quickLinesFrom);
             if (single) glDisable(GL_MULTISAMPLE);
             glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
             if (single) glEnable(GL_MULTISAMPLE);

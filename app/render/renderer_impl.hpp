@@ -71,6 +71,7 @@ struct Renderer::Impl {
         int width = 0, height = 0, samples = 0;
     } msaa[3];
     GLuint msaaFbo = 0;  // the one in use
+    std::size_t quickLinesFrom = detail::kQuickLines;  // RenderOptions::quickLines (0 while warming up)
     int samples = 1;
     int curveBatch = 1;
 

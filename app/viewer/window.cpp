@@ -599,7 +599,7 @@ int runViewer(int argc, char** argv) {
         if (moved) {
             if (app.frameMs > app.movingWorstMs) {
                 char what[160];
-                std::snprintf(what, sizeof what, "view_%dx%d_in_%.1fms%s%s%s", app.drawWidth, app.drawHeight, app.drawMs,
+                std::snprintf(what, sizeof what, "frame_%d_step_%d_tris_%zu_view_%dx%d_in_%.1fms%s%s%s", app.movingFrames + 1, app.state.plant() ? app.state.plant()->displayStep : -1, app.renderer.stats().triangles, app.drawWidth, app.drawHeight, app.drawMs,
                               app.renderer.stats().shadowPass ? "_shadow_pass" : "", app.renderer.stats().proxy ? "_sketch" : "",
                               uploadedNow ? "_new_plant" : "");
                 app.movingWorstWhat = what;
