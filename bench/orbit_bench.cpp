@@ -59,6 +59,7 @@ Result orbit(render::Renderer& renderer, const Geometry& g, int vw, int vh) {
     render::Camera camera = render::frameGeometry(g, float(vw) / float(vh), render::ViewPreset::Auto);
     render::RenderOptions o;
     o.quality = render::Quality::Interactive;
+    o.quickLines = renderer.software();  // as the window draws on software GL
     const bool half = !g.planarCurve;
     const int dw = half ? vw / 2 : vw, dh = half ? vh / 2 : vh;
     renderer.draw(camera, dw, dh, o, 0);  // warm: shaders, buffers
