@@ -56,8 +56,10 @@ bool Renderer::Impl::build(std::string& error) {
         const char *vs, *fs;
     } programs[] = {
         {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
+        {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"},
         {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
         {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
+        {&groundPlainProgram, "ground.vert", "ground_plain.frag"},
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
         {&overlayProgram, "polygon.vert", "overlay.frag"},

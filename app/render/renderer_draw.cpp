@@ -102,13 +102,13 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
 
 // Baked triangles [from, to) and then lines, numbered after the triangles.
 void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to,
-                               RenderStats& stats, bool moving, bool quickLines) {
+                               RenderStats& stats, bool moving, bool quickLines, bool shadows) {
     const Buffers& mesh = moving ? proxyMesh : baked;
     const Buffers& thin = moving ? proxy : lines;
     const std::size_t tris = (moving ? proxyIndices : bakedIndices) / 3, lineCount = moving ? proxyCount : this->lineCount;
     if (from < tris && from < to) {
         const std::size_t b = std::min(to, tris);
-        GLuint p = depthOnly ? bakedDepth : bakedProgram;
+        GLuint p = depthOnly ? bakedDepth : shadows ? bakedProgram : bakedPlainProgram;
         glUseProgram(p);
         setUniform(p, "uViewProj", viewProj);
         setUniform(p, "uSpecular", 0.1f);
@@ -283,11 +283,12 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
             glEnable(GL_BLEND);
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
-            s.setLighting(s.groundProgram, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
-            setUniform(s.groundProgram, "uViewProj", p.viewProj);
-            setUniform(s.groundProgram, "uCentre", glm::vec3(p.centre.x, s.bounds.min.y, p.centre.z));
-            setUniform(s.groundProgram, "uRadius", p.groundRadius);
-            setUniform(s.groundProgram, "uGroundColour", p.o.groundColour);
+            const GLuint ground = p.shadows ? s.groundProgram : s.groundPlainProgram;
+            s.setLighting(ground, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+            setUniform(ground, "uViewProj", p.viewProj);
+            setUniform(ground, "uCentre", glm::vec3(p.centre.x, s.bounds.min.y, p.centre.z));
+            setUniform(ground, "uRadius", p.groundRadius);
+            setUniform(ground, "uGroundColour", p.o.groundColour);
             glBindVertexArray(s.groundQuad.vao);
             glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
             glDepthMask(GL_TRUE);
@@ -363,8 +364,9 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         }
         if (to > curveCount) {
             const std::size_t a = std::max(from, curveCount) - curveCount, b = to - curveCount;
-            for (GLuint prog : {s.bakedProgram, s.lineProgram}) s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
-            s.drawRange(p.viewProj, false, a, b, p.stats, p.sketch, p.o.quickLines);
+            for (GLuint prog : {p.shadows ? s.bakedProgram : s.bakedPlainProgram, s.lineProgram})
+                s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+            s.drawRange(p.viewProj, false, a, b, p.stats, p.sketch, p.o.quickLines, p.shadows);
             p.stats.proxy = p.sketch;
         }
         p.done = to;
