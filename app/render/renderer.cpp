@@ -387,7 +387,13 @@ void Renderer::warmUp(int width, int height) {
             c->bounds.add(a), c->bounds.add(b);
         }
     }
-    for (const Geometry* g : {&plant, &small, &curve, &bigCurve}) {
+    // And a curve of one segment, fewer than a batch of ribbons (a plant's first step can be
+    // one: it took 30 ms to draw the first time).
+    Geometry segment;
+    segment.planarCurve = true;
+    segment.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
+    segment.bounds.add({0, 0, 0}), segment.bounds.add({0, 10, 0});
+    for (const Geometry* g : {&plant, &small, &curve, &segment, &bigCurve}) {
         upload(*g);
         const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
         Camera moved = camera;
@@ -401,8 +407,8 @@ void Renderer::warmUp(int width, int height) {
                 o.quality = q;
                 // At the sizes the window draws (its moving frames at half size each way, a big
                 // curve's at full size): the images are made, and their memory first touched, here.
-                const int k = q == Quality::Still || g == &bigCurve ? 1 : 2;
-                renderImage(q == Quality::Still ? camera : moved, std::max(width / k, 16), std::max(height / k, 16), o);
+                const int k = q == Quality::Still || g == &bigCurve ? 1 : 2, w = std::max(width / k, 16), h = std::max(height / k, 16);
+                renderImage(q == Quality::Still ? camera : moved, w, h, o);
             }
         }
         m->quickLinesFrom = detail::kQuickLines;
