@@ -98,6 +98,44 @@ double differingPct(const std::vector<std::uint8_t>& a, const std::vector<std::u
     return 100.0 * double(n) / double(a.size() / 4);
 }
 
+// Every way the window draws, done once before the first frame (renderer, the copy of the view
+// into the window, the panel), at the view's size, while the worker derives the plant.
+void warmUp(App& app, GLFWwindow* window) {
+    // The renderer's ways compiled and its images made: the first moving picture took 37 ms,
+    // then 11. About 0.1-0.2 s here, once (not for a screenshot).
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(window, &fw, &fh);
+    const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
+    app.renderer.warmUp(vw, vh);
+    // And the copies of the view into the window, stretched (moving frames) and not, at
+    // the view's place: the first stretched one took 30 ms (with a copy of a few pixels
+    // as a warm-up still 24).
+    GLuint fbo = 0, colour = 0;
+    glGenFramebuffers(1, &fbo);
+    glGenRenderbuffers(1, &colour);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glFinish();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteRenderbuffers(1, &colour);
+    glDeleteFramebuffers(1, &fbo);
+    // And the panel's: its font atlas and its drawing (the first frame took 37 ms).
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(0, 0), IM_COL32_WHITE, "Sprout");
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glFinish();
+}
+
 // A hash of what ImGui draws in a frame (vertices, indices, commands): equal hashes, the
 // same panel on screen.
 std::uint64_t drawDataHash(const ImDrawData* d) {
@@ -230,42 +268,7 @@ int runViewer(int argc, char** argv) {
         std::cerr << source << ": no such file or preset\n";
         return 1;
     }
-    if (!screenshot) {
-        // The ways of drawing compiled, and the images made, before the first frame (the
-        // view beside the panel), while the worker derives the plant: the first moving
-        // picture took 37 ms, then 11. About 200 ms here, once (not for a screenshot).
-        int fw = 0, fh = 0;
-        glfwGetFramebufferSize(window, &fw, &fh);
-        const int vw = std::max(1, fw - app.panelWidth), vh = std::max(1, fh);
-        app.renderer.warmUp(vw, vh);
-        // And the copies of the view into the window, stretched (moving frames) and not, at
-        // the view's place: the first stretched one took 30 ms (with a copy of a few pixels
-        // as a warm-up still 24).
-        GLuint fbo = 0, colour = 0;
-        glGenFramebuffers(1, &fbo);
-        glGenRenderbuffers(1, &colour);
-        glBindRenderbuffer(GL_RENDERBUFFER, colour);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glFinish();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteRenderbuffers(1, &colour);
-        glDeleteFramebuffers(1, &fbo);
-        // And the panel's: its font atlas and its drawing (the first frame took 37 ms).
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        ImGui::GetForegroundDrawList()->AddText(ImVec2(0, 0), IM_COL32_WHITE, "Sprout");
-        ImGui::Render();
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        glFinish();
-    }
+    if (!screenshot) warmUp(app, window);
     // A previous session ended without saving: offer its text back.
     bool offerRecovery = app.state.recoverable().has_value() && !screenshot && script.empty();
 
@@ -599,8 +602,11 @@ int runViewer(int argc, char** argv) {
         if (moved) {
             if (app.frameMs > app.movingWorstMs) {
                 char what[160];
-                std::snprintf(what, sizeof what, "frame_%d_step_%d_tris_%zu_view_%dx%d_in_%.1fms%s%s%s", app.movingFrames + 1, app.state.plant() ? app.state.plant()->displayStep : -1, app.renderer.stats().triangles, app.drawWidth, app.drawHeight, app.drawMs,
-                              app.renderer.stats().shadowPass ? "_shadow_pass" : "", app.renderer.stats().proxy ? "_sketch" : "",
+                const render::RenderStats& drawn = app.renderer.stats();
+                std::snprintf(what, sizeof what, "frame_%llu_step_%d_tris_%zu_view_%dx%d_in_%.1fms%s%s%s",
+                              static_cast<unsigned long long>(app.movingFrames + 1),
+                              app.state.plant() ? app.state.plant()->displayStep : -1, drawn.triangles, app.drawWidth,
+                              app.drawHeight, app.drawMs, drawn.shadowPass ? "_shadow_pass" : "", drawn.proxy ? "_sketch" : "",
                               uploadedNow ? "_new_plant" : "");
                 app.movingWorstWhat = what;
             }

@@ -400,6 +400,29 @@ TEST(Window, DraggedBigPlantKeepsDrawingAndSettlesOnTheHeadlessPicture) {
     EXPECT_LT(differ, std::size_t(h.width) * std::size_t(h.height) / 1000) << "the still view is the headless picture";
 }
 
+// frame-stats after a drag of a big plant says how far its last moving picture (the sketch,
+// at a fraction of the pixels) was from the still view after it, and what its longest moving
+// frame drew; before any drag there is nothing to say.
+TEST(Window, DragSaysHowFarTheMovingPictureWasFromTheStillOne) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const auto printed = runScript(testDir("moving_differ"), "fractal_plant --size 1100x700",
+                                   "set n 9\nwait\nframe-stats\ndrag 200 30 10\nrelease\nwait\nframe-stats\nquit\n");
+    ASSERT_EQ(printed.size(), 2u);
+    auto value = [](const std::string& line, const std::string& key) {
+        const auto at = line.find(key + "=");
+        return at == std::string::npos ? std::string() : line.substr(at + key.size() + 1, line.find(' ', at) - at - key.size() - 1);
+    };
+    EXPECT_EQ(value(printed[0], "moving_differ_pct"), "-1.00") << printed[0];
+    EXPECT_EQ(value(printed[0], "moving_worst_was"), "none") << printed[0];
+    const double differ = std::stod(value(printed[1], "moving_differ_pct"));
+    EXPECT_GT(differ, 0.5) << "the sketch is not the plant: " << printed[1];
+    EXPECT_LT(differ, 30.0) << "but it is in its place: " << printed[1];
+    const std::string worst = value(printed[1], "moving_worst_was");
+    EXPECT_EQ(worst.rfind("frame_", 0), 0u) << printed[1];
+    EXPECT_NE(worst.find("_sketch"), std::string::npos) << "a big plant moves as its sketch: " << printed[1];
+    EXPECT_GE(std::stoi(value(printed[1], "refine_frames")), 2) << "the still view in pieces";
+}
+
 // Save as through the viewer script: a symlinked grammar updates the file the link names
 // (the link stays a link), and someone else's file named like a temporary is left alone.
 TEST(Window, SaveAsThroughASymlinkUpdatesTheRealFile) {
