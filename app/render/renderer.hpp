@@ -42,12 +42,11 @@ struct RenderOptions {
     glm::vec3 groundColour{0.58f, 0.55f, 0.45f};
     glm::vec3 curveInk{0.13f, 0.27f, 0.16f};
     // Lines drawn without multisampling, in moving frames and past kQuickLines lines in still
-    // ones: a software rasteriser pays
-    // twice for a multisampled line (the n=10 fractal plant's 650 k lines: 142 ms against 66
-    // on llvmpipe at 1440x860). The picture differs only along the thinnest stems, stepped
-    // instead of smoothed (1.8% of its pixels by more than 30 of 765). The window's view on
-    // software GL sets it, and `sprout render --detail viewer`; other pictures rendered to files
-    // do not.
+    // ones: a software rasteriser pays twice for a multisampled line (the n=10 fractal plant's
+    // 650 k lines: 142 ms against 66 on llvmpipe at 1440x860). The picture differs only along
+    // the thinnest stems, stepped instead of smoothed (1.8% of its pixels by more than 30 of
+    // 765). The window's view on software GL sets it, and `sprout render --detail viewer`;
+    // other pictures rendered to files do not.
     bool quickLines = false;
 };
 
