@@ -58,6 +58,7 @@ bool Renderer::Impl::build(std::string& error) {
         {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
         {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"},
         {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
+        {&inkLineProgram, "line.vert", "curve.frag"},
         {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
         {&groundPlainProgram, "ground.vert", "ground_plain.frag"},
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
@@ -375,14 +376,15 @@ void Renderer::warmUp(int width, int height) {
     small.cylinders.push_back(plant.cylinders[2]);
     small.surfaces.push_back(plant.surfaces[0]);
     small.bounds = plant.bounds;
-    // Curves: one of ribbons, and one past 200 k segments, rasterised on the CPU, whose moving
-    // frames move its last raster (drawn again from another view).
+    // Curves: one of ribbons (whose moving frames draw its sketch of lines), and one past 200 k
+    // segments, rasterised on the CPU, whose moving frames move its last raster (drawn again
+    // from another view).
     Geometry curve, bigCurve;
     curve.planarCurve = bigCurve.planarCurve = true;
     for (int i = 0; i < 200'001; ++i) {
         const glm::vec3 a(float(i % 1000), float(i / 1000 + i % 2), 0), b(float(i % 1000 + 1), float(i / 1000 + (i + 1) % 2), 0);
         for (Geometry* c : {&curve, &bigCurve}) {
-            if (c == &curve && i >= 64) continue;
+            if (c == &curve && i > int(PreparedScene::kCurveSketch)) continue;  // moves as its sketch
             c->cylinders.push_back({a, 0.1f, b, 0.1f, 0x000000FFu, 0, 0});
             c->bounds.add(a), c->bounds.add(b);
         }
@@ -394,7 +396,10 @@ void Renderer::warmUp(int width, int height) {
     segment.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
     segment.bounds.add({0, 0, 0}), segment.bounds.add({0, 10, 0});
     for (const Geometry* g : {&plant, &small, &curve, &segment, &bigCurve}) {
-        upload(*g);
+        PreparedScene scene;  // as the window's worker prepares a scene, with what moving frames draw
+        prepare(*g, m->detail, scene);
+        prepareMoving(*g, scene);
+        upload(scene);
         const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
         Camera moved = camera;
         moved.yaw += 10, moved.target.x += 0.05f * moved.orthoHeight;

@@ -81,10 +81,14 @@ struct PreparedScene {
     // that. A scene of full detail with many triangles (over kProxyTriangles): its bake at
     // interactive detail, triangles and lines (a software rasteriser pays for long thin
     // triangles: a 6 k-stem plant moved at 25-35 ms a frame, 10 ms so), or that bake's sketch.
+    // A curve of ribbons past kCurveSketch segments: a line for each segment, drawn in ink (a
+    // ribbon is two triangles from a buffer texture: 16-32 k of them took 10 ms a moving frame
+    // on llvmpipe at a quarter of the pixels each way).
     std::vector<float> proxy;
     BakedMesh proxyBaked;
     static constexpr std::size_t kProxyLines = 30000;
     static constexpr std::size_t kProxyTriangles = 4000;
+    static constexpr std::size_t kCurveSketch = 4000;
 };
 
 class Renderer {

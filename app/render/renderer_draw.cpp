@@ -102,7 +102,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
 
 // Baked triangles [from, to) and then lines, numbered after the triangles.
 void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to,
-                               RenderStats& stats, bool moving, bool quickLines, bool shadows) {
+                               RenderStats& stats, bool moving, bool quickLines, bool shadows, const glm::vec3* ink) {
     const Buffers& mesh = moving ? proxyMesh : baked;
     const Buffers& thin = moving ? proxy : lines;
     const std::size_t tris = (moving ? proxyIndices : bakedIndices) / 3, lineCount = moving ? proxyCount : this->lineCount;
@@ -120,8 +120,10 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::s
     if (to > tris && lineCount) {  // depth pass and colour pass alike: a line has no surface to shade
         const std::size_t a = std::max(from, tris) - tris, b = std::min(to - tris, lineCount);
         if (a < b) {
-            glUseProgram(lineProgram);
-            setUniform(lineProgram, "uViewProj", viewProj);
+            const GLuint program = ink ? inkLineProgram : lineProgram;
+            glUseProgram(program);
+            setUniform(program, "uViewProj", viewProj);
+            if (ink) setUniform(program, "uInk", *ink);
             glBindVertexArray(thin.vao);
             const bool single = quickLines && (moving || lineCount > quickLinesFrom);
             if (single) glDisable(GL_MULTISAMPLE);
@@ -135,7 +137,7 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, bool depthOnly, std::s
 // The parts of a phase, by cost: the shadow map's triangles, then its lines; the scene's
 // curve ribbons, triangles, lines.
 int Renderer::partOf(const Pass& p) const {
-    const std::size_t curves = p.curve ? m->curveCount : 0,
+    const std::size_t curves = p.curve && !p.sketch ? m->curveCount : 0,
                       tris = (p.sketch && p.phase == Pass::Scene ? m->proxyIndices : m->bakedIndices) / 3;
     if (p.phase == Pass::Shadow) return p.done < tris ? 1 : 2;
     if (p.phase == Pass::Scene) return p.done < curves ? 0 : p.done < curves + tris ? 1 : 2;
@@ -144,7 +146,7 @@ int Renderer::partOf(const Pass& p) const {
 }
 
 std::size_t Renderer::partEnd(const Pass& p) const {
-    const std::size_t curves = p.curve ? m->curveCount : 0,
+    const std::size_t curves = p.curve && !p.sketch ? m->curveCount : 0,
                       tris = (p.sketch && p.phase == Pass::Scene ? m->proxyIndices : m->bakedIndices) / 3;
     const int part = partOf(p);
     if (p.phase == Pass::Shadow && part == 1) return tris;
@@ -335,7 +337,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         if (p.curve && s.rasterCurve) p.stats.triangles += 2;
         if (!next(Pass::Scene)) return false;
     }
-    const std::size_t curveCount = p.curve ? s.curveCount : 0;
+    const std::size_t curveCount = p.curve && !p.sketch ? s.curveCount : 0;  // a curve's sketch: its lines instead
     if (p.phase == Pass::Scene) {
         // The primitives: curve ribbons, triangles, lines (or a big scene's sketch while the
         // view moves: the still view draws it whole again).
@@ -366,7 +368,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
             const std::size_t a = std::max(from, curveCount) - curveCount, b = to - curveCount;
             for (GLuint prog : {p.shadows ? s.bakedProgram : s.bakedPlainProgram, s.lineProgram})
                 s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
-            s.drawRange(p.viewProj, false, a, b, p.stats, p.sketch, p.o.quickLines, p.shadows);
+            s.drawRange(p.viewProj, false, a, b, p.stats, p.sketch, p.o.quickLines, p.shadows, p.curve ? &p.o.curveInk : nullptr);
             p.stats.proxy = p.sketch;
         }
         p.done = to;

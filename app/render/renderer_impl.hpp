@@ -28,7 +28,7 @@ struct Buffers {
 
 struct Renderer::Impl {
     using Buffers = detail::Buffers;
-    GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedDepth = 0, lineProgram = 0, curveProgram = 0, backgroundProgram = 0,
+    GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedDepth = 0, lineProgram = 0, inkLineProgram = 0, curveProgram = 0, backgroundProgram = 0,
            groundProgram = 0, groundPlainProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
     std::size_t overlayIndices = 0;
@@ -93,9 +93,10 @@ struct Renderer::Impl {
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
     // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`; lines
     // without multisampling when `quickLines` and there are many (RenderOptions::quickLines);
-    // triangles lit by a program with no shadow lookups unless `shadows`.
+    // triangles lit by a program with no shadow lookups unless `shadows`; lines in `ink` when
+    // given (a curve's sketch).
     void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats,
-                   bool moving = false, bool quickLines = false, bool shadows = true);
+                   bool moving = false, bool quickLines = false, bool shadows = true, const glm::vec3* ink = nullptr);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;

@@ -182,7 +182,17 @@ void Renderer::prepareForViewer(const Geometry& g, PreparedScene& out, std::shar
 void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     out.proxy.clear();
     out.proxyBaked = BakedMesh();
-    if (g.planarCurve) return;  // a big curve moves its raster
+    if (g.planarCurve) {  // a big curve moves its raster; one of many ribbons moves as lines
+        if (out.curve.size() > PreparedScene::kCurveSketch) {
+            out.proxy.reserve(out.curve.size() * 8);
+            for (const CylinderInstance& c : out.curve) {
+                float cf;
+                std::memcpy(&cf, &c.colour, 4);
+                out.proxy.insert(out.proxy.end(), {c.start.x, c.start.y, c.start.z, cf, c.end.x, c.end.y, c.end.z, cf});
+            }
+        }
+        return;
+    }
     const std::size_t budget = PreparedScene::kProxyLines;
     const std::size_t triangles = out.baked.indices.size() / 3, primitives = triangles + out.lines.size() / 8;
     // A sketch: every stem of the lowest branch orders (up to half the budget: the trunk and

@@ -301,6 +301,31 @@ TEST(Render, BigPlantIsSketchedWhileMoving) {
     expectMovingFrameOnThePlant(geometry, scene, 20, 5, "the sketch");
 }
 
+// A curve of many ribbons (past kCurveSketch segments, short of the raster's 200 k) moves as a
+// line for each segment, in ink, where its ribbons are; still, as its ribbons. A short curve
+// keeps its ribbons while it moves.
+TEST(Render, CurveOfManyRibbonsMovesAsItsLines) {
+    for (int n : {4, 2}) {
+        SCOPED_TRACE("koch_curve_1_9a n=" + std::to_string(n));
+        auto g = grammarOf(std::string(*presetText("koch_curve_1_9a")));
+        DeriveResult d = derive(g, n);
+        ASSERT_TRUE(d.outcome.ok());
+        Geometry geometry;
+        interpret(*d.string, *g, {n, 1, nullptr}, geometry);
+        ASSERT_TRUE(geometry.planarCurve);
+        render::PreparedScene scene;
+        render::Renderer::prepareForViewer(geometry, scene);
+        if (n == 4) {
+            ASSERT_GT(geometry.cylinders.size(), render::PreparedScene::kCurveSketch);
+            EXPECT_EQ(scene.proxy.size(), 8 * scene.curve.size()) << "a line for each segment";
+            EXPECT_EQ(expectMovingFrameOnThePlant(geometry, scene, 200, 3, "the curve's lines"), 0u) << "no ribbons";
+        } else {
+            ASSERT_LT(geometry.cylinders.size(), render::PreparedScene::kCurveSketch);
+            EXPECT_TRUE(scene.proxy.empty()) << "a short curve moves as its ribbons";
+        }
+    }
+}
+
 // The window's still view of a big scene is drawn a piece per frame (beginDraw /
 // continueDraw): the pieces make the very pixels of one draw, for a plant with shadows and
 // leaves (also with its environment drawn: glass, and a slice of its light), a curve of
