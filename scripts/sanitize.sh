@@ -38,8 +38,12 @@ if [ "$what" = asan ] || [ "$what" = all ]; then
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPROUT_SANITIZE=address,undefined,float-cast-overflow -DSPROUT_BUILD_BENCH=OFF >/dev/null
   cmake --build build-asan -j"$jobs"
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  # Leaks inside Mesa and the X stack are theirs (see the suppressions file).
-  LSAN_OPTIONS="suppressions=$supp:print_suppressions=0" ctest_once_more_for_lsan_crash build-asan --output-on-failure -j"$jobs" -E '^Window\.'
+  # Leaks inside Mesa and the X stack are theirs (see the suppressions file). Thread-local
+  # storage is not scanned (use_tls=0): GCC 12's LeakSanitizer crashed scanning it in a
+  # `sprout render` whose output is a pipe (__lsan::ScanRangeForPointers reading address
+  # 0xb68, every run of one build: the thread-local blocks of the GL driver and Python it
+  # loads), and no leak here is held only from thread-local storage (the suite passes with it).
+  LSAN_OPTIONS="suppressions=$supp:print_suppressions=0:use_tls=0" ctest_once_more_for_lsan_crash build-asan --output-on-failure -j"$jobs" -E '^Window\.'
   # The window under Xvfb loads and unloads GL drivers whose leaks cannot be attributed:
   # memory errors and undefined behaviour are still checked there.
   ASAN_OPTIONS=detect_leaks=0 ctest --test-dir build-asan --output-on-failure -R '^Window\.'
