@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "app/render/bake.hpp"
+#include "app/render/colour_target.hpp"
 #include "app/render/gl.hpp"
 #include "app/render/renderer_impl.hpp"
 #include "app/render/shader.hpp"
@@ -339,19 +340,9 @@ void Renderer::setOverlay(const Mesh& mesh) {
 }
 
 std::vector<std::uint8_t> Renderer::renderImage(const Camera& camera, int width, int height, const RenderOptions& o) {
-    GLuint fbo = 0, colour = 0;
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-    draw(camera, width, height, o, fbo);
-    std::vector<std::uint8_t> pixels = readPixels(width, height, fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteRenderbuffers(1, &colour);
-    glDeleteFramebuffers(1, &fbo);
-    return pixels;
+    ColourTarget target(width, height);
+    draw(camera, width, height, o, target.fbo);
+    return readPixels(width, height, target.fbo);
 }
 
 void Renderer::warmUp(int width, int height) {

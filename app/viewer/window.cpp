@@ -1,6 +1,7 @@
 // The viewer's start-up and main loop: a GLFW window with the plant in 3D and the ImGui panel.
 // The same renderer as `sprout render`, with a GLFW context instead of OSMesa.
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
+#include "app/render/colour_target.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -71,21 +72,11 @@ constexpr double kMovingFrameMs = 12.0;
 // The view's picture as the window shows it: stretched from the size it was drawn at to
 // w x h, as the blit to the window does (top row first).
 std::vector<std::uint8_t> shownView(const App& app, int w, int h) {
-    GLuint fbo = 0, colour = 0;
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+    render::ColourTarget shown(w, h);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
     glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
                       app.drawWidth == w ? GL_NEAREST : GL_LINEAR);
-    std::vector<std::uint8_t> pixels = app.renderer.readPixels(w, h, fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteRenderbuffers(1, &colour);
-    glDeleteFramebuffers(1, &fbo);
-    return pixels;
+    return app.renderer.readPixels(w, h, shown.fbo);
 }
 
 // The share of pixels (in percent) whose colours differ by more than 30 of 765 (the summed
@@ -110,22 +101,15 @@ void warmUp(App& app, GLFWwindow* window) {
     // And the copies of the view into the window, stretched (moving frames) and not, at
     // the view's place: the first stretched one took 30 ms (with a copy of a few pixels
     // as a warm-up still 24).
-    GLuint fbo = 0, colour = 0;
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glFinish();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteRenderbuffers(1, &colour);
-    glDeleteFramebuffers(1, &fbo);
+    {
+        render::ColourTarget view(vw, vh);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, view.fbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+        glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glFinish();
+    }
     // And the panel's: its font atlas and its drawing (the first frame took 37 ms).
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
