@@ -84,14 +84,26 @@ void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
     emitPolygon(t, pts);
 }
 
+namespace {
+// Two outline points are one when they are apart by no more than float rounding can put
+// them at their distance from the origin: a few hundred ulps, relative. An absolute 1e-6 was
+// one ulp at 10 units, so whether an outline's closing point was dropped depended on how its
+// frames were multiplied, and the tree and the string turtle drew different polygons.
+bool samePoint(const glm::vec3& a, const glm::vec3& b) {
+    const glm::vec3 m = glm::max(glm::abs(a), glm::abs(b));
+    const float scale = 1 + std::max({m.x, m.y, m.z});
+    return !(glm::length(a - b) > 2e-5f * scale);
+}
+}  // namespace
+
 void Turtle::vertex(const State& t) {
     auto& poly = m_polygons.back();
     glm::vec3 p = toGlm(t.pos);
-    if (poly.empty() || glm::length(poly.back() - p) > 1e-6f) poly.push_back(p);
+    if (poly.empty() || !samePoint(poly.back(), p)) poly.push_back(p);
 }
 
 void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts) {
-    if (pts.size() > 1 && glm::length(pts.front() - pts.back()) < 1e-6f) pts.pop_back();
+    if (pts.size() > 1 && samePoint(pts.front(), pts.back())) pts.pop_back();
     if (pts.size() < 3) return;
     Mesh& m = m_out.polygons;
     // Newell's normal: robust for concave and slightly non-planar outlines.
