@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -84,17 +86,22 @@ bool numbers(PyObject* v, std::vector<double>& out) {
 class Writer {
 public:
     Writer(Grammar& g) : m_g(g) {}
-    void put(const char* name, std::initializer_list<double> params) { put(name, std::vector<double>(params)); }
-    void put(const char* name, const std::vector<double>& params) {
+    void put(const char* name, std::initializer_list<double> params) {
         const int arity = int(std::min<size_t>(params.size(), size_t(Alphabet::kMaxArity)));
-        auto id = m_g.alphabet.intern(name, arity);
+        // Names are the mapping's literals: each (name, arity) is interned once.
+        std::optional<SymbolId>& id = m_ids[{name, arity}];
+        if (!id) id = m_g.alphabet.intern(name, arity);
         if (!id) return;
         m_g.axiom.symbols.push_back(*id);
-        for (int k = 0; k < arity; ++k) m_g.axiom.params.push_back(std::isfinite(params[size_t(k)]) ? params[size_t(k)] : 0.0);
+        for (int k = 0; k < arity; ++k) {
+            const double v = params.begin()[k];
+            m_g.axiom.params.push_back(std::isfinite(v) ? v : 0.0);
+        }
     }
 
 private:
     Grammar& m_g;
+    std::map<std::pair<const char*, int>, std::optional<SymbolId>> m_ids;
 };
 
 }  // namespace
@@ -109,8 +116,36 @@ std::vector<std::uint32_t> defaultMaterials() {
             rgb(60, 60, 15, 3), rgb(0, 0, 60, 3), rgb(60, 0, 60, 3)};
 }
 
-std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings,
-                                  bool queries, std::vector<std::uint32_t>* sourceOf) {
+namespace {
+
+// The two kinds of string, read alike: a module's class, and its numbers appended to `p`
+// (false when one of its values is not a number); the count of its values.
+struct FromPython {
+    const LString& s;
+    size_t size() const { return s.size(); }
+    int cls(size_t k) const { return s[k].cls; }
+    size_t values(size_t k, std::vector<double>& p, bool& allNumbers) const {
+        const LModule& m = s[k];
+        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+        for (Py_ssize_t a = 0; a < n; ++a)
+            if (!numbers(PyTuple_GET_ITEM(m.args.ptr(), a), p)) allNumbers = false;
+        return size_t(n);
+    }
+};
+struct FromNumbers {
+    const NumString& s;
+    size_t size() const { return s.size(); }
+    int cls(size_t k) const { return s.modules[k].cls; }
+    size_t values(size_t k, std::vector<double>& p, bool&) const {
+        const NumString::Module& m = s.modules[k];
+        p.insert(p.end(), s.params.data() + m.first, s.params.data() + m.first + m.n);
+        return m.n;
+    }
+};
+
+template <class Source>
+std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classes, const TurtleDefaults& d,
+                                    std::vector<std::string>* warnings, bool queries, std::vector<std::uint32_t>* sourceOf) {
     auto g = std::make_shared<Grammar>();
     g->settings.angle = {d.angle, 0};
     g->settings.step = {1, 0};
@@ -132,28 +167,40 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
     w.put("!", {2 * st.width});
     w.put(";", {double(st.colour)});
     std::set<std::string> leftOut;
+    // Each class's mapping, looked up by name once.
     const auto& map = mappings();
+    enum : std::uint8_t { kUnseen, kQuery, kMapped, kLeftOut };
+    std::vector<std::uint8_t> kindOf(classes.size(), kUnseen);
+    std::vector<const Mapping*> mappingOf(classes.size(), nullptr);
     std::vector<double> p;
     for (size_t k = 0; k < s.size(); ++k) {
         // What the module before wrote (the first pieces, width and colour: the first module).
         if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(k == 0 ? 0 : k - 1));
-        const LModule& m = s[k];
-        const std::string& name = classes.name(m.cls);
-        if (queries && Engine::isQuery(name)) {
+        const int cls = s.cls(k);
+        if (cls < 0 || size_t(cls) >= kindOf.size()) continue;
+        std::uint8_t& kind = kindOf[size_t(cls)];
+        const std::string& name = classes.name(cls);
+        if (kind == kUnseen) {
+            auto it = map.find(name);
+            if (queries && Engine::isQuery(name)) {
+                kind = kQuery;
+            } else if (it != map.end()) {
+                kind = kMapped;
+                mappingOf[size_t(cls)] = &it->second;
+            } else {
+                kind = kLeftOut;
+                if (!silent(name) && classes.isPredefined(cls)) leftOut.insert(name);
+            }
+        }
+        if (kind == kQuery) {
             w.put("?P", {});
             continue;
         }
-        auto it = map.find(name);
-        if (it == map.end()) {
-            if (!silent(name) && classes.isPredefined(m.cls)) leftOut.insert(name);
-            continue;
-        }
+        if (kind != kMapped) continue;
         p.clear();
-        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
         bool allNumbers = true;
-        for (Py_ssize_t k = 0; k < n; ++k)
-            if (!numbers(PyTuple_GET_ITEM(m.args.ptr(), k), p)) allNumbers = false;
-        const Mapping& mp = it->second;
+        const size_t n = s.values(k, p, allNumbers);
+        const Mapping& mp = *mappingOf[size_t(cls)];
         auto setWidth = [&](double width) {
             if (!(width >= 0)) return;
             st.width = width;
@@ -263,10 +310,22 @@ std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes
             case Op::Skip: break;
         }
     }
-    if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(s.empty() ? 0 : s.size() - 1));
+    if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(s.size() == 0 ? 0 : s.size() - 1));
     if (warnings)
         for (const auto& name : leftOut) warnings->push_back(name);
     return g;
+}
+
+}  // namespace
+
+std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d, std::vector<std::string>* warnings,
+                                  bool queries, std::vector<std::uint32_t>* sourceOf) {
+    return drawableOf(FromPython{s}, classes, d, warnings, queries, sourceOf);
+}
+
+std::shared_ptr<Grammar> drawable(const NumString& s, const ModuleClasses& classes, const TurtleDefaults& d,
+                                  std::vector<std::string>* warnings) {
+    return drawableOf(FromNumbers{s}, classes, d, warnings, false, nullptr);
 }
 
 }  // namespace sprout::lpy

@@ -32,5 +32,8 @@ std::vector<std::uint32_t> defaultMaterials();
 std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d,
                                   std::vector<std::string>* warnings = nullptr, bool queries = false,
                                   std::vector<std::uint32_t>* sourceOf = nullptr);
+// The same for a string of the native path (no interpretation rules ran on it).
+std::shared_ptr<Grammar> drawable(const NumString& s, const ModuleClasses& classes, const TurtleDefaults& d,
+                                  std::vector<std::string>* warnings = nullptr);
 
 }  // namespace sprout::lpy

@@ -513,13 +513,14 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
     iteration = 0;
     stopRequested = false;
     if (m_nativeOk) {
-        LString result;
-        if (deriveNative(s, steps, everyStep, result)) {
-            ranNative = true;
-            return result;
+        NumString result;
+        std::vector<NumString> every;
+        if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result)) {
+            if (everyStep)
+                for (const NumString& step : every) everyStep->push_back(toL(step));
+            return toL(result);
         }
-        if (everyStep) everyStep->clear();  // a value Python would not take: Python from the start
-        iteration = 0;
+        iteration = 0;  // a value Python would not take: Python from the start
     }
     callHook("Start", &s, nullptr, &s);
     if (everyStep) everyStep->push_back(s);
@@ -551,6 +552,8 @@ bool Engine::isQuery(const std::string& name) {
     return name.size() == 2 && name[0] == '?' && std::strchr("PHULRF", name[1]) != nullptr;
 }
 
+bool Engine::interprets() const { return m_hasKind[kindIndex(RuleKind::Interpretation)]; }
+
 LString Engine::interpret(const LString& s) {
     // Each module of the result knows its module in `s` (parent), and the rule that drew it.
     LString in = s;
@@ -558,6 +561,21 @@ LString Engine::interpret(const LString& s) {
     const int k = kindIndex(RuleKind::Interpretation);
     if (!m_hasKind[k]) return in;
     return decompose(std::move(in), m_depth[k], RuleKind::Interpretation);
+}
+
+std::string Engine::text(const NumString& s) const {
+    std::string out;
+    for (const NumString::Module& m : s.modules) {
+        out += m_tr.classes.name(m.cls);
+        if (m.n == 0) continue;
+        out += '(';
+        for (std::uint32_t k = 0; k < m.n; ++k) {
+            if (k) out += ',';
+            appendNumber(out, s.params[m.first + k]);
+        }
+        out += ')';
+    }
+    return out;
 }
 
 std::string Engine::text(const LString& s) const {

@@ -11,6 +11,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "core/base/pod_buffer.hpp"
 #include "core/language/expr.hpp"
 #include "lpy/host.hpp"
 #include "lpy/translate.hpp"
@@ -29,6 +30,27 @@ struct LModule {
     std::uint32_t parent = 0;
 };
 using LString = std::vector<LModule>;
+
+// A string of the native path (lpy/native.cpp): module classes and their numbers in one
+// array, no Python objects. `ints` has bit a set when Python holds parameter a as an int.
+// Drawn and written as it is; made into an LString only where Python reads it (the
+// interpretation rules, growth stepping).
+struct NumString {
+    struct Module {
+        int cls = 0;
+        std::uint32_t first = 0, n = 0;  // its numbers: params[first, first + n)
+        std::uint32_t ints = 0;
+        std::int32_t rule = -1;          // as LModule::rule and LModule::parent
+        std::uint32_t parent = 0;
+    };
+    PodBuffer<Module> modules;  // no zeroing, huge pages: written once per step
+    PodBuffer<double> params;
+    size_t size() const { return modules.size(); }
+    void swap(NumString& o) noexcept {
+        modules.swap(o.modules);
+        params.swap(o.params);
+    }
+};
 
 // The string as Python sees it (hooks' `lstring`, Lstring(...)), and one module of it: a
 // view into a string (writes go to it) or a module of its own.
@@ -71,7 +93,9 @@ public:
     LString derive(LString s, int steps, std::vector<LString>* everyStep);
     // The string with the interpretation rules applied (depth from `maximum depth:`).
     LString interpret(const LString& s);
+    bool interprets() const;  // the model has interpretation rules
     std::string text(const LString& s) const;
+    std::string text(const NumString& s) const;
 
     // Called by Python (produce, nproduce and the control functions).
     void produce(py::handle items, bool last);
@@ -94,6 +118,12 @@ public:
     // without a Python call per match (lpy/native.cpp). Decided by bind().
     bool native() const { return m_nativeOk; }
     bool ranNative = false;  // the last derive() took the native path
+    // Derives `steps` steps natively; false when a value is not a finite number (Python would
+    // have raised, or the axiom holds other values): then nothing is derived, and the native
+    // path is off for this model.
+    bool deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result);
+    // The same string as Python holds it (integral numbers as ints where Python has ints).
+    static LString toL(const NumString& s);
 private:
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
@@ -131,23 +161,25 @@ private:
     bool m_queryRules = false;  // a production's header has a query module
     // The native path's rules: the class and arity they match, the modules they make with
     // their arguments compiled (Sprout's expressions on the matched numbers).
+    struct NativeArg {
+        Expr expr;
+        bool isFloat = false;    // a float whatever its inputs
+        std::uint32_t used = 0;  // the parameters it reads, as bits: an int when all of them are
+    };
     struct NativeOut {
         int cls = 0;
-        std::vector<Expr> args;
-        std::vector<bool> isFloat;           // per argument: a float whatever its inputs
-        std::vector<std::vector<int>> used;  // per argument: the parameters it reads
+        std::vector<NativeArg> args;
     };
     struct NativeRule {
         int cls = 0, arity = 0, index = 0;
+        std::uint32_t params = 0;  // the numbers its successor holds
         std::vector<NativeOut> outs;
     };
+    const NativeRule* nativeRule(int cls, std::uint32_t arity) const;
     std::vector<NativeRule> m_native;
     std::vector<std::vector<int>> m_nativeByClass;
     bool m_nativeOk = false;
     void prepareNative();
-    // Derives `steps` steps natively; false when a value is not a finite number (Python would
-    // have raised, or the axiom holds other values): then nothing is derived.
-    bool deriveNative(const LString& axiom, int steps, std::vector<LString>* everyStep, LString& result);
     int m_depth[3] = {1, 1, 1};
     LString m_buffer;
     bool m_produced = false;

@@ -453,7 +453,12 @@ Model runModel(std::string_view text, const RunOptions& options) {
         LString axiom = engine.axiom();
         const auto deriveStart = std::chrono::steady_clock::now();
         LString s;
-        {
+        // A model of the native path whose string no Python reads afterwards (no
+        // interpretation rules, no growth stepping) keeps its string as numbers to the end.
+        NumString numbers;
+        const bool numeric = engine.native() && !engine.interprets() && !options.keepSteps &&
+                             engine.deriveNumbers(axiom, steps, nullptr, numbers);
+        if (!numeric) {
             // Python's cycle collector walks every live object each time enough new ones were
             // made: with a string of a million parameter tuples alive it runs again and again
             // over all of them. The derivation makes no cycles of its own; it runs once after.
@@ -468,12 +473,13 @@ Model runModel(std::string_view text, const RunOptions& options) {
         out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
         out.ranNative = engine.ranNative;
-        out.derived = engine.text(s);
+        out.derived = numeric ? engine.text(numbers) : engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
         TurtleDefaults d = turtleDefaults(lpyModule);
         py::dict state = lpyModule.attr("_state");
         std::vector<std::string> leftOut;
-        auto g = drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
+        auto g = numeric ? drawable(numbers, engine.translation().classes, d, &leftOut)
+                         : drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
         for (const auto& name : leftOut)
             out.diagnostics.push_back({0, 0, "'" + name + "' is not drawn by Sprout yet", Severity::Warning});
         for (const LString& step : every) {

@@ -2,13 +2,16 @@
 // bodies are only a successor with arithmetic, are compiled to Sprout's expressions and the
 // model derives on plain numbers, without a Python call per match. A model takes this path
 // only when every production is that simple and nothing else can see the string while it
-// grows (no hooks, contexts, groups, queries, cuts, decomposition); its strings are handed
-// back as L-Py strings (integral numbers as Python ints) for the interpretation rules, the
-// drawing and `sprout expand`. A value that is not finite (a division by zero, which Python
-// would raise) drops the native run: the model runs in Python from the start instead.
+// grows (no hooks, contexts, groups, queries, cuts, decomposition). Its string is a
+// NumString: numbers in one array, drawn and written as they are (lpy/draw.hpp, `sprout
+// expand`), and made into Python values (integral numbers as Python ints where Python has
+// ints) only for a model whose interpretation rules or growth stepping read it in Python. A
+// value that is not finite (a division by zero, which Python would raise) drops the native
+// run: the model runs in Python from the start instead.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include "core/base/rng.hpp"
 #include "core/language/source.hpp"
@@ -59,6 +62,7 @@ bool plainArithmetic(std::string_view a, const std::vector<std::string>& names, 
     return any;
 }
 
+constexpr int kMaxNativeArity = 32;  // NumString::Module::ints holds a bit per parameter
 constexpr double kExactInts = 9007199254740992.0;  // 2^53: past it a double is not Python's int
 
 // A Python number (not a bool), or nothing; `isInt` for an int (exact in a double).
@@ -103,26 +107,29 @@ void Engine::prepareNative() {
         nr.cls = p.cls;
         nr.arity = p.hasParens ? int(p.args.size()) : 0;
         nr.index = int(r);
+        if (nr.arity > kMaxNativeArity) return;
         for (const WrittenModule& w : rule.successor) {
             if (!w.variable.empty() || w.cls < 0 || w.cls == ModuleClasses::kCut || w.cls == ModuleClasses::kStar ||
-                w.cls == ModuleClasses::kNone || Engine::isQuery(m_tr.classes.name(w.cls)))
+                w.cls == ModuleClasses::kNone || Engine::isQuery(m_tr.classes.name(w.cls)) ||
+                int(w.args.size()) > kMaxNativeArity)
                 return;
             NativeOut out;
             out.cls = w.cls;
             for (const std::string& a : w.args) {
-                bool isFloat = false;
+                NativeArg arg;
                 std::vector<int> used;
-                if (!plainArithmetic(a, names, isFloat, used)) return;
-                out.isFloat.push_back(isFloat);
-                out.used.push_back(std::move(used));
+                if (!plainArithmetic(a, names, arg.isFloat, used)) return;
+                for (int u : used) arg.used |= 1u << u;
                 SourceLine line{rule.line, a, {}};
                 DiagnosticSink sink;
                 ExprScope scope;
                 scope.params = &names;
                 auto e = compileExpr(a, line, scope, sink);
                 if (!e || e->usesRandom()) return;
-                out.args.push_back(std::move(*e));
+                arg.expr = std::move(*e);
+                out.args.push_back(std::move(arg));
             }
+            nr.params += std::uint32_t(out.args.size());
             nr.outs.push_back(std::move(out));
         }
         m_native.push_back(std::move(nr));
@@ -131,96 +138,112 @@ void Engine::prepareNative() {
     m_nativeOk = true;
 }
 
-bool Engine::deriveNative(const LString& axiom, int steps, std::vector<LString>* everyStep, LString& result) {
-    struct M {
-        int cls;
-        std::uint32_t first;
-        std::uint32_t n;
-        std::int32_t rule;
-        std::uint32_t parent;
-    };
-    std::vector<M> cur, next;
-    // Each number with whether Python holds it as an int (ints stay ints through + - *).
-    std::vector<double> par, npar;
-    std::vector<std::uint8_t> ints, nints;
+LString Engine::toL(const NumString& s) {
+    LString out;
+    out.reserve(s.size());
+    for (const NumString::Module& m : s.modules) {
+        py::tuple args(m.n);
+        for (std::uint32_t a = 0; a < m.n; ++a) {
+            const double v = s.params[m.first + a];
+            PyObject* o = m.ints >> a & 1 ? PyLong_FromDouble(v) : PyFloat_FromDouble(v);
+            if (!o) throw py::error_already_set();
+            PyTuple_SET_ITEM(args.ptr(), a, o);
+        }
+        LModule lm{m.cls, m.n ? std::move(args) : py::tuple()};
+        lm.rule = m.rule;
+        lm.parent = m.parent;
+        out.push_back(std::move(lm));
+    }
+    return out;
+}
+
+const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const {
+    if (size_t(cls) >= m_nativeByClass.size()) return nullptr;
+    for (int r : m_nativeByClass[size_t(cls)])
+        if (std::uint32_t(m_native[size_t(r)].arity) == arity) return &m_native[size_t(r)];
+    return nullptr;
+}
+
+bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result) {
+    NumString cur, next;
     for (size_t k = 0; k < axiom.size(); ++k) {
         const LModule& m = axiom[k];
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
-        cur.push_back({m.cls, std::uint32_t(par.size()), std::uint32_t(n), -1, std::uint32_t(k)});
+        NumString::Module nm{m.cls, std::uint32_t(cur.params.size()), std::uint32_t(n), 0, -1, std::uint32_t(k)};
         for (Py_ssize_t a = 0; a < n; ++a) {
             double v = 0;
             bool isInt = false;
-            if (!numberOf(PyTuple_GET_ITEM(m.args.ptr(), a), v, isInt)) return false;
-            par.push_back(v);
-            ints.push_back(isInt);
-        }
-    }
-    // Back to an L-Py string, each number as the int or float Python would hold.
-    auto toL = [&](const std::vector<M>& s, const std::vector<double>& p, const std::vector<std::uint8_t>& isInt) {
-        LString out;
-        out.reserve(s.size());
-        for (const M& m : s) {
-            py::tuple args(m.n);
-            for (std::uint32_t a = 0; a < m.n; ++a) {
-                const double v = p[m.first + a];
-                PyObject* o = isInt[m.first + a] ? PyLong_FromDouble(v) : PyFloat_FromDouble(v);
-                if (!o) throw py::error_already_set();
-                PyTuple_SET_ITEM(args.ptr(), a, o);
+            if (a >= kMaxNativeArity || !numberOf(PyTuple_GET_ITEM(m.args.ptr(), a), v, isInt)) {
+                m_nativeOk = false;
+                return false;
             }
-            LModule lm{m.cls, m.n ? std::move(args) : py::tuple()};
-            lm.rule = m.rule;
-            lm.parent = m.parent;
-            out.push_back(std::move(lm));
+            cur.params.push_back(v);
+            nm.ints |= std::uint32_t(isInt) << a;
         }
-        return out;
-    };
-    std::vector<LString> kept;
-    if (everyStep) kept.push_back(axiom);
+        cur.modules.push_back(nm);
+    }
+    if (everyStep) everyStep->push_back(cur);
     Rng rng(0);
     for (int i = 0; i < steps; ++i) {
         checkCancel();
         iteration = i;
-        next.clear();
-        npar.clear();
-        nints.clear();
-        for (size_t j = 0; j < cur.size(); ++j) {
-            if ((j & 4095) == 0) checkCancel();
-            const M& m = cur[j];
-            const NativeRule* hit = nullptr;
-            for (int r : m_nativeByClass[size_t(m.cls)])
-                if (std::uint32_t(m_native[size_t(r)].arity) == m.n) {
-                    hit = &m_native[size_t(r)];
-                    break;
-                }
+        const size_t count = cur.size();
+        const NumString::Module* from = cur.modules.data();
+        // The new string's size first, so that it is written in place once.
+        size_t modules = 0, params = 0;
+        for (size_t j = 0; j < count; ++j) {
+            if (const NativeRule* hit = nativeRule(from[j].cls, from[j].n)) {
+                modules += hit->outs.size();
+                params += hit->params;
+            } else {
+                modules += 1;
+                params += from[j].n;
+            }
+        }
+        if (modules > m_options.maxModules)
+            throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+        if (params > std::numeric_limits<std::uint32_t>::max()) throw py::value_error("the string holds too many numbers");
+        next.modules.clear();  // nothing of it is kept: not copied when it grows
+        next.params.clear();
+        next.modules.resizeUninitialized(modules);
+        next.params.resizeUninitialized(params);
+        NumString::Module* out = next.modules.data();
+        double* values = next.params.data();
+        std::uint32_t at = 0;
+        for (size_t j = 0; j < count; ++j) {
+            if ((j & 16383) == 0) checkCancel();
+            const NumString::Module m = from[j];
+            const double* in = cur.params.data() + m.first;
+            const NativeRule* hit = nativeRule(m.cls, m.n);
             if (!hit) {
-                next.push_back({m.cls, std::uint32_t(npar.size()), m.n, -1, std::uint32_t(j)});
-                npar.insert(npar.end(), par.begin() + m.first, par.begin() + m.first + m.n);
-                nints.insert(nints.end(), ints.begin() + m.first, ints.begin() + m.first + m.n);
+                *out++ = {m.cls, at, m.n, m.ints, -1, std::uint32_t(j)};
+                for (std::uint32_t a = 0; a < m.n; ++a) values[at++] = in[a];
                 continue;
             }
             for (const NativeOut& o : hit->outs) {
-                const std::uint32_t first = std::uint32_t(npar.size());
+                NumString::Module made{o.cls, at, std::uint32_t(o.args.size()), 0, hit->index, std::uint32_t(j)};
                 for (size_t a = 0; a < o.args.size(); ++a) {
-                    const double v = o.args[a].eval(par.data() + m.first, rng);
-                    bool isInt = !o.isFloat[a];
-                    for (int u : o.used[a]) isInt = isInt && ints[m.first + std::uint32_t(u)];
+                    const NativeArg& arg = o.args[a];
+                    const double v = arg.expr.eval(in, rng);
+                    const bool isInt = !arg.isFloat && (arg.used & ~m.ints) == 0;
                     // Python raises on a division by zero; its ints do not round past 2^53.
-                    if (!std::isfinite(v) || (isInt && std::fabs(v) >= kExactInts)) return false;
-                    npar.push_back(v);
-                    nints.push_back(isInt);
+                    if (!std::isfinite(v) || (isInt && std::fabs(v) >= kExactInts)) {
+                        m_nativeOk = false;
+                        if (everyStep) everyStep->clear();
+                        return false;
+                    }
+                    values[at++] = v;
+                    made.ints |= std::uint32_t(isInt) << a;
                 }
-                next.push_back({o.cls, first, std::uint32_t(o.args.size()), hit->index, std::uint32_t(j)});
+                *out++ = made;
             }
-            if (next.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
         }
-        std::swap(cur, next);
-        std::swap(par, npar);
-        std::swap(ints, nints);
-        if (everyStep) kept.push_back(toL(cur, par, ints));
+        cur.swap(next);
+        if (everyStep) everyStep->push_back(cur);
     }
     iteration = std::max(0, steps - 1);
-    result = everyStep ? kept.back() : toL(cur, par, ints);
-    if (everyStep) *everyStep = std::move(kept);
+    ranNative = true;
+    result = std::move(cur);
     return true;
 }
 

@@ -91,6 +91,11 @@ TEST(Lpy, EveryModelDerivesWhatItSays) {
                 ASSERT_TRUE(python.ok()) << messages(python);
                 EXPECT_FALSE(python.ranNative);
                 EXPECT_EQ(python.derived, model.derived) << "the Python path, after " << m[1] << " steps";
+                // The native string is drawn from its numbers, the Python one from its values:
+                // the same modules for the turtle.
+                EXPECT_TRUE(python.drawable->axiom.symbols == model.drawable->axiom.symbols &&
+                            python.drawable->axiom.params == model.drawable->axiom.params)
+                    << "the drawing after " << m[1] << " steps";
             }
         }
     }
