@@ -78,6 +78,8 @@ struct App {
     // about kRefineMs each, and the view shows its last picture until the new one is whole.
     bool refining = false;
     std::uint64_t presentedUi = 0;  // the panel last shown (a hash of ImGui's draw data)
+    // Frames whose panel was copied from the one drawn before (unchanged), and drawn anew.
+    std::uint64_t panelCopies = 0, panelDraws = 0;
     int presentedWidth = 0, presentedHeight = 0;
     float movingScale = 0.5f;  // the moving view's share of the pixels each way (0.25 to 0.5)
     bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big

@@ -165,9 +165,13 @@ void drawPanel(App& app) {
     glfwGetFramebufferSize(app.window, &fw, &fh);
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(float(app.panelWidth), float(fh)));
+    // No border: the panel ends at its strip's edge (a border's line is a pixel past it), so
+    // the window can copy the strip when nothing in it changed.
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
     ImGui::Begin("Sprout", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_MenuBar |
                      ImGuiWindowFlags_NoTitleBar);
+    ImGui::PopStyleVar();
     fileMenu(app);
     const std::string title = app.state.title();
     ImGui::Text("%s%s", title.c_str(), app.state.dirty() ? " *" : "");

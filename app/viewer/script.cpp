@@ -193,10 +193,11 @@ bool Script::step(App& app) {
                     if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
                 std::fclose(f);
             }
-            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s\n",
+            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s panel_copied_frames=%llu panel_drawn_frames=%llu\n",
                         app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
                         app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct,
-                        app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str());
+                        app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str(),
+                        static_cast<unsigned long long>(app.panelCopies), static_cast<unsigned long long>(app.panelDraws));
             std::fflush(stdout);
             app.movingWorstMs = app.movingTotalMs = 0;
             app.movingWorstWhat.clear();

@@ -402,7 +402,7 @@ TEST(Window, DraggedBigPlantKeepsDrawingAndSettlesOnTheHeadlessPicture) {
 
 // frame-stats after a drag of a big plant says how far its last moving picture (the sketch,
 // at a fraction of the pixels) was from the still view after it, and what its longest moving
-// frame drew; before any drag there is nothing to say.
+// frame drew; before any drag there is nothing to say. And how many frames copied the panel.
 TEST(Window, DragSaysHowFarTheMovingPictureWasFromTheStillOne) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     const auto printed = runScript(testDir("moving_differ"), "fractal_plant --size 1100x700",
@@ -421,6 +421,9 @@ TEST(Window, DragSaysHowFarTheMovingPictureWasFromTheStillOne) {
     EXPECT_EQ(worst.rfind("frame_", 0), 0u) << printed[1];
     EXPECT_NE(worst.find("_sketch"), std::string::npos) << "a big plant moves as its sketch: " << printed[1];
     EXPECT_GE(std::stoi(value(printed[1], "refine_frames")), 2) << "the still view in pieces";
+    // While the view moves the panel stays as it was: copied from its last drawing.
+    EXPECT_GE(std::stoi(value(printed[1], "panel_copied_frames")), 5) << printed[1];
+    EXPECT_GE(std::stoi(value(printed[1], "panel_drawn_frames")), 1) << printed[1];
 }
 
 // Save as through the viewer script: a symlinked grammar updates the file the link names
