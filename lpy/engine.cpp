@@ -515,7 +515,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
     if (m_nativeOk) {
         NumString result;
         std::vector<NumString> every;
-        if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result)) {
+        if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result, true)) {
             if (everyStep)
                 for (const NumString& step : every) everyStep->push_back(toL(step));
             return toL(result);

@@ -40,15 +40,21 @@ struct NumString {
         int cls = 0;
         std::uint32_t first = 0, n = 0;  // its numbers: params[first, first + n)
         std::uint32_t ints = 0;
-        std::int32_t rule = -1;          // as LModule::rule and LModule::parent
+    };
+    struct Origin {  // as LModule::rule and LModule::parent
+        std::int32_t rule = -1;
         std::uint32_t parent = 0;
     };
-    PodBuffer<Module> modules;  // no zeroing, huge pages: written once per step
-    PodBuffer<double> params;
+    // No zeroing, and huge pages from 2 MB: a step writes its string once, into fresh
+    // memory, and with 4 KB pages the kernel's page faults took more than half of it.
+    PodBuffer<Module, (2u << 20)> modules;
+    PodBuffer<double, (2u << 20)> params;
+    PodBuffer<Origin, (2u << 20)> origins;  // one per module when kept, else none
     size_t size() const { return modules.size(); }
     void swap(NumString& o) noexcept {
         modules.swap(o.modules);
         params.swap(o.params);
+        origins.swap(o.origins);
     }
 };
 
@@ -120,8 +126,9 @@ public:
     bool ranNative = false;  // the last derive() took the native path
     // Derives `steps` steps natively; false when a value is not a finite number (Python would
     // have raised, or the axiom holds other values): then nothing is derived, and the native
-    // path is off for this model.
-    bool deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result);
+    // path is off for this model. `origins`: keep where each module came from (for toL).
+    bool deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
+                       bool origins);
     // The same string as Python holds it (integral numbers as ints where Python has ints).
     static LString toL(const NumString& s);
 private:

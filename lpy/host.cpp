@@ -457,7 +457,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
         // interpretation rules, no growth stepping) keeps its string as numbers to the end.
         NumString numbers;
         const bool numeric = engine.native() && !engine.interprets() && !options.keepSteps &&
-                             engine.deriveNumbers(axiom, steps, nullptr, numbers);
+                             engine.deriveNumbers(axiom, steps, nullptr, numbers, false);
         if (!numeric) {
             // Python's cycle collector walks every live object each time enough new ones were
             // made: with a string of a million parameter tuples alive it runs again and again

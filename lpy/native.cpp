@@ -141,7 +141,8 @@ void Engine::prepareNative() {
 LString Engine::toL(const NumString& s) {
     LString out;
     out.reserve(s.size());
-    for (const NumString::Module& m : s.modules) {
+    for (size_t k = 0; k < s.size(); ++k) {
+        const NumString::Module& m = s.modules[k];
         py::tuple args(m.n);
         for (std::uint32_t a = 0; a < m.n; ++a) {
             const double v = s.params[m.first + a];
@@ -150,8 +151,7 @@ LString Engine::toL(const NumString& s) {
             PyTuple_SET_ITEM(args.ptr(), a, o);
         }
         LModule lm{m.cls, m.n ? std::move(args) : py::tuple()};
-        lm.rule = m.rule;
-        lm.parent = m.parent;
+        if (k < s.origins.size()) lm.rule = s.origins[k].rule, lm.parent = s.origins[k].parent;
         out.push_back(std::move(lm));
     }
     return out;
@@ -164,12 +164,14 @@ const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const
     return nullptr;
 }
 
-bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result) {
+bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
+                           bool origins) {
     NumString cur, next;
     for (size_t k = 0; k < axiom.size(); ++k) {
         const LModule& m = axiom[k];
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
-        NumString::Module nm{m.cls, std::uint32_t(cur.params.size()), std::uint32_t(n), 0, -1, std::uint32_t(k)};
+        NumString::Module nm{m.cls, std::uint32_t(cur.params.size()), std::uint32_t(n), 0};
+        if (origins) cur.origins.push_back({-1, std::uint32_t(k)});
         for (Py_ssize_t a = 0; a < n; ++a) {
             double v = 0;
             bool isInt = false;
@@ -205,8 +207,11 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         if (params > std::numeric_limits<std::uint32_t>::max()) throw py::value_error("the string holds too many numbers");
         next.modules.clear();  // nothing of it is kept: not copied when it grows
         next.params.clear();
+        next.origins.clear();
         next.modules.resizeUninitialized(modules);
         next.params.resizeUninitialized(params);
+        if (origins) next.origins.resizeUninitialized(modules);
+        NumString::Origin* origin = next.origins.data();
         NumString::Module* out = next.modules.data();
         double* values = next.params.data();
         std::uint32_t at = 0;
@@ -216,12 +221,14 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
             const double* in = cur.params.data() + m.first;
             const NativeRule* hit = nativeRule(m.cls, m.n);
             if (!hit) {
-                *out++ = {m.cls, at, m.n, m.ints, -1, std::uint32_t(j)};
+                *out++ = {m.cls, at, m.n, m.ints};
+                if (origins) *origin++ = {-1, std::uint32_t(j)};
                 for (std::uint32_t a = 0; a < m.n; ++a) values[at++] = in[a];
                 continue;
             }
             for (const NativeOut& o : hit->outs) {
-                NumString::Module made{o.cls, at, std::uint32_t(o.args.size()), 0, hit->index, std::uint32_t(j)};
+                NumString::Module made{o.cls, at, std::uint32_t(o.args.size()), 0};
+                if (origins) *origin++ = {hit->index, std::uint32_t(j)};
                 for (size_t a = 0; a < o.args.size(); ++a) {
                     const NativeArg& arg = o.args[a];
                     const double v = arg.expr.eval(in, rng);

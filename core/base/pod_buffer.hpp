@@ -19,7 +19,8 @@
 
 namespace sprout {
 
-template <class T>
+// `HugeFrom`: the size in bytes from which a buffer is mapped with huge pages.
+template <class T, size_t HugeFrom = (8u << 20)>
 class PodBuffer {
     static_assert(std::is_trivially_copyable_v<T>);
 
@@ -134,7 +135,7 @@ public:
     }
 
 private:
-    static constexpr size_t kHugeThreshold = 8u << 20;
+    static constexpr size_t kHugeThreshold = HugeFrom;
     static constexpr size_t kHugePage = 2u << 20;
     static size_t roundUp(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "core/derive/draw.hpp"
+#include "core/derive/provenance.hpp"
 #include "core/language/file_kind.hpp"
 #include "lpy/host.hpp"
 #include "lpy/translate.hpp"
@@ -96,6 +97,21 @@ TEST(Lpy, EveryModelDerivesWhatItSays) {
                 EXPECT_TRUE(python.drawable->axiom.symbols == model.drawable->axiom.symbols &&
                             python.drawable->axiom.params == model.drawable->axiom.params)
                     << "the drawing after " << m[1] << " steps";
+                // Growth stepping keeps where each module came from, natively as in Python.
+                o.keepSteps = true;
+                lpy::Model pythonSteps = lpy::runModel(text, o);
+                o.native = true;
+                lpy::Model nativeSteps = lpy::runModel(text, o);
+                ASSERT_TRUE(pythonSteps.ok() && nativeSteps.ok()) << messages(nativeSteps) << messages(pythonSteps);
+                EXPECT_TRUE(nativeSteps.ranNative);
+                const auto& rn = nativeSteps.record;
+                const auto& rp = pythonSteps.record;
+                ASSERT_EQ(rn.steps.size(), rp.steps.size());
+                const int last = int(rn.steps.size()) - 1;
+                ASSERT_EQ(rn.steps[size_t(last)]->size(), rp.steps[size_t(last)]->size());
+                for (std::uint32_t i = 0; i < rn.steps[size_t(last)]->size(); ++i)
+                    EXPECT_EQ(describeLineage(*rn.grammar, lineage(rn, last, i)), describeLineage(*rp.grammar, lineage(rp, last, i)))
+                        << "module " << i << " after " << m[1] << " steps";
             }
         }
     }
