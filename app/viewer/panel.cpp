@@ -222,12 +222,15 @@ void drawPanel(App& app) {
         }
         ImGui::TextColored(kDim, "%s modules, %zu segments, %zu leaves, %zu polygons", withThousands(p->modules).c_str(),
                            p->geometry->cylinders.size(), leaves, p->geometry->polygons.indices.size() / 3);
-        // The frame's time is read twice a second: a number that changes every frame would
-        // make every frame one to show (the window skips frames in which nothing changes).
-        static double shownFrameMs = 0, shownAt = -1;
-        if (glfwGetTime() - shownAt > 0.5) shownFrameMs = app.frameMs, shownAt = glfwGetTime();
+        // The frame's and the view's times are read twice a second, and not while the view
+        // moves: a number that changes every frame would make every frame one to show (the
+        // window skips frames in which nothing changes) and one whose panel is drawn anew
+        // (the window copies an unchanged panel).
+        static double shownFrameMs = 0, shownDrawMs = 0, shownAt = -1;
+        if (glfwGetTime() - shownAt > 0.5 && !app.interacting && !app.state.playing())
+            shownFrameMs = app.frameMs, shownDrawMs = app.drawMs, shownAt = glfwGetTime();
         ImGui::TextColored(kDim, "derive %.1f ms, interpret %.1f ms, upload %.1f ms, draw %.1f ms, frame %.1f ms",
-                           p->deriveMs, p->interpretMs, app.uploadMs, app.drawMs, shownFrameMs);
+                           p->deriveMs, p->interpretMs, app.uploadMs, shownDrawMs, shownFrameMs);
     }
     if (!app.status.empty() && glfwGetTime() - app.statusTime < 6) ImGui::TextWrapped("%s", app.status.c_str());
     ImGui::End();
