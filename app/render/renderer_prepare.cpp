@@ -18,6 +18,14 @@
 namespace sprout::render {
 namespace {
 
+// A line from a to b in its colour, as the line programs read it: x y z and the colour's
+// 0xRRGGBBAA bits as a float, for each end.
+void appendLine(std::vector<float>& out, const glm::vec3& a, const glm::vec3& b, std::uint32_t colour) {
+    float cf;
+    std::memcpy(&cf, &colour, 4);
+    out.insert(out.end(), {a.x, a.y, a.z, cf, b.x, b.y, b.z, cf});
+}
+
 // Levels of detail for stems, chosen by the stem's radius relative to the plant's size (the
 // plant is framed whole, so that says how many pixels it covers at 720p): a round mesh with
 // caps that close the joints, a coarser one, an open three-sided prism, and plain lines for
@@ -105,10 +113,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
             if (runLevel < 3) {
                 bakeCylinder(run, meshes.stems[runLevel], b);
             } else {
-                std::uint32_t col = run.colour;
-                float cf;
-                std::memcpy(&cf, &col, 4);
-                out.lines.insert(out.lines.end(), {run.start.x, run.start.y, run.start.z, cf, run.end.x, run.end.y, run.end.z, cf});
+                appendLine(out.lines, run.start, run.end, run.colour);
             }
             runLevel = -1;
         };
@@ -185,11 +190,7 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     if (g.planarCurve) {  // a big curve moves its raster; one of many ribbons moves as lines
         if (out.curve.size() > PreparedScene::kCurveSketch) {
             out.proxy.reserve(out.curve.size() * 8);
-            for (const CylinderInstance& c : out.curve) {
-                float cf;
-                std::memcpy(&cf, &c.colour, 4);
-                out.proxy.insert(out.proxy.end(), {c.start.x, c.start.y, c.start.z, cf, c.end.x, c.end.y, c.end.z, cf});
-            }
+            for (const CylinderInstance& c : out.curve) appendLine(out.proxy, c.start, c.end, c.colour);
         }
         return;
     }
@@ -207,16 +208,11 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         for (int k = 0; k <= whole; ++k) main += perOrder[size_t(k)];
         const std::size_t stride = count > budget ? (count - main) / (budget - main) + 1 : 1;
         out.proxy.reserve(std::min(count, budget) * 8 + 64);
-        auto line = [&](const glm::vec3& a, const glm::vec3& e, std::uint32_t colour) {
-            float cf;
-            std::memcpy(&cf, &colour, 4);
-            out.proxy.insert(out.proxy.end(), {a.x, a.y, a.z, cf, e.x, e.y, e.z, cf});
-        };
         std::size_t k = 0;
         for (const auto& c : g.cylinders)
-            if (int(c.order) <= whole || ++k % stride == 0) line(c.start, c.end, c.colour);
+            if (int(c.order) <= whole || ++k % stride == 0) appendLine(out.proxy, c.start, c.end, c.colour);
         for (const auto& x : g.surfaces)
-            if (++k % stride == 0) line(x.position, x.position + x.heading * x.size, x.colour);
+            if (++k % stride == 0) appendLine(out.proxy, x.position, x.position + x.heading * x.size, x.colour);
     };
     if (g.polygons.indices.size() / 3 > budget / 2 && triangles > budget) {
         // Mostly polygons (generalized cylinders, surfaces): no stems to sketch, so the mesh

@@ -164,7 +164,8 @@ struct PanelCache {
     std::uint64_t hash = 0;
 };
 
-void drawPanel(App& app, PanelCache& cache, int fw, int fh) {
+// `hash`: drawDataHash of this frame's draw data when the frame already made it, else 0.
+void drawPanel(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash) {
     ImDrawData* d = ImGui::GetDrawData();
     // Whether everything ImGui draws lies in the strip: each command's clip rectangle, or
     // where its triangles are when it is clipped to more (a window's background is clipped
@@ -198,7 +199,7 @@ void drawPanel(App& app, PanelCache& cache, int fw, int fh) {
         cache.image = std::make_unique<render::ColourTarget>(fw, fh);
         cache.width = fw, cache.height = fh, cache.hash = 0;
     }
-    const std::uint64_t h = drawDataHash(d);
+    const std::uint64_t h = hash ? hash : drawDataHash(d);
     if (h != cache.hash || h == 0) {
         glBindFramebuffer(GL_FRAMEBUFFER, cache.image->fbo);
         const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
@@ -348,6 +349,7 @@ int runViewer(int argc, char** argv) {
         bool moved = false;         // the moving view drawn in this frame
         bool viewUpdated = false;   // the view's picture changed in this frame
         bool previewed = false;     // a new scene's moving-quality picture drawn in this frame
+        std::uint64_t uiHash = 0;   // drawDataHash of this frame's panel, when made
         bool present = true;        // the frame is shown (see below)
         double measuringMs = 0;     // spent measuring for a script (not the frame's own time)
 
@@ -587,7 +589,7 @@ int runViewer(int argc, char** argv) {
             // (hover, typing, the caret), its pieces follow each other without the copy of
             // the view and the panel's drawing (~7 ms a frame on software GL).
             const bool refiningOn = app.refining && !viewUpdated;  // only then can a frame be left out
-            const std::uint64_t ui = refiningOn ? drawDataHash(ImGui::GetDrawData()) : 0;
+            const std::uint64_t ui = uiHash = refiningOn ? drawDataHash(ImGui::GetDrawData()) : 0;
             present = !refiningOn || ui != app.presentedUi || fw != app.presentedWidth || fh != app.presentedHeight;
             if (present) {
                 app.presentedUi = ui;  // 0 after a frame that was not hashed: the next one is shown
@@ -615,7 +617,7 @@ int runViewer(int argc, char** argv) {
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
-        if (present) drawPanel(app, panelCache, fw, fh);
+        if (present) drawPanel(app, panelCache, fw, fh, uiHash);
 
         // A text that makes no plant (errors, an L-Py model not trusted) is on screen as it
         // is: screenshots and scripts go on once its result is in.
