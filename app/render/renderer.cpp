@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <memory>
 #include <utility>
 
@@ -49,6 +50,15 @@ void Renderer::Impl::makeLines(Buffers& b) {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, 16, reinterpret_cast<void*>(12));
     glBindVertexArray(0);
+}
+
+void Renderer::Impl::mutableAgain(Buffers& b, bool lines) {
+    if (!b.immutable) return;
+    const GLuint buffers[] = {b.vbo, b.ebo};
+    glDeleteVertexArrays(1, &b.vao);
+    glDeleteBuffers(2, buffers);  // a mapping goes with its buffer; 0 is ignored
+    b = {};
+    lines ? makeLines(b) : makeBaked(b);
 }
 
 bool Renderer::Impl::build(std::string& error) {
@@ -196,6 +206,7 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
     }
     const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const std::string renderer = name ? name : "";
+    m->bufferStorage = m->persistentUploads = GLAD_GL_ARB_buffer_storage;
     m_software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
     return m->build(error);
 }
@@ -209,6 +220,9 @@ void Renderer::upload(const Geometry& g) {
 void Renderer::upload(const PreparedScene& p) {
     Impl& s = *m;
     s.staging.reset();  // a whole upload replaces any staged one
+    std::fill(std::begin(s.stagedMaps), std::end(s.stagedMaps), nullptr);
+    s.mutableAgain(s.baked, false);
+    s.mutableAgain(s.lines, true);
     glBindVertexArray(s.baked.vao);
     glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
@@ -262,6 +276,39 @@ bool Renderer::beginUpload(std::shared_ptr<const PreparedScene> p, std::size_t b
     }
     // The back buffers get their size now and their bytes a piece per frame; the scene on
     // screen is drawn meanwhile.
+    std::fill(std::begin(s.stagedMaps), std::end(s.stagedMaps), nullptr);
+    if (s.persistentUploads) {
+        // Storage mapped for writing once: each piece a copy into it. Storage is immutable, so
+        // the back buffers are made anew for each scene (the driver frees the old ones once no
+        // drawing uses them: no wait here).
+        s.bakedBack.immutable = s.linesBack.immutable = true;
+        s.mutableAgain(s.bakedBack, false);
+        s.mutableAgain(s.linesBack, true);
+        const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+        auto storage = [flags](GLenum target, std::size_t size) {
+            const auto n = GLsizeiptr(std::max<std::size_t>(size, 1));
+            glBufferStorage(target, n, nullptr, flags);
+            return glMapBufferRange(target, 0, n, flags);
+        };
+        glBindVertexArray(s.bakedBack.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, s.bakedBack.vbo);
+        s.stagedMaps[0] = storage(GL_ARRAY_BUFFER, vb);
+        s.stagedMaps[1] = storage(GL_ELEMENT_ARRAY_BUFFER, ib);
+        glBindVertexArray(0);
+        glBindBuffer(GL_ARRAY_BUFFER, s.linesBack.vbo);
+        s.stagedMaps[2] = storage(GL_ARRAY_BUFFER, lb);
+        s.bakedBack.immutable = s.linesBack.immutable = true;
+        if (s.stagedMaps[0] && s.stagedMaps[1] && s.stagedMaps[2]) {
+            s.staging = std::move(p);
+            s.stagedBytes = 0;
+            return false;
+        }
+        // Not mapped (out of address space): by glBufferSubData from now on.
+        std::fill(std::begin(s.stagedMaps), std::end(s.stagedMaps), nullptr);
+        s.persistentUploads = false;
+    }
+    s.mutableAgain(s.bakedBack, false);
+    s.mutableAgain(s.linesBack, true);
     glBindVertexArray(s.bakedBack.vao);
     glBindBuffer(GL_ARRAY_BUFFER, s.bakedBack.vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vb), nullptr, GL_STATIC_DRAW);
@@ -275,6 +322,10 @@ bool Renderer::beginUpload(std::shared_ptr<const PreparedScene> p, std::size_t b
 }
 
 bool Renderer::uploading() const { return m->staging != nullptr; }
+
+bool Renderer::persistentUploads() const { return m->persistentUploads; }
+
+void Renderer::setPersistentUploads(bool on) { m->persistentUploads = on && m->bufferStorage; }
 
 bool Renderer::continueUpload(std::size_t bytes) {
     Impl& s = *m;
@@ -291,20 +342,34 @@ bool Renderer::continueUpload(std::size_t bytes) {
         {GL_ARRAY_BUFFER, 0, s.linesBack.vbo, p.lines.data(), p.lines.size() * 4},
     };
     std::size_t base = 0;
-    for (const Part& part : parts) {
+    for (std::size_t i = 0; i < std::size(parts); ++i) {
+        const Part& part = parts[i];
         const std::size_t from = s.stagedBytes > base ? s.stagedBytes - base : 0;
         if (bytes > 0 && from < part.size) {
             const std::size_t n = std::min(bytes, part.size - from);
-            glBindVertexArray(part.vao);  // the element buffer is the vertex array's
-            glBindBuffer(part.target, part.buffer);
-            glBufferSubData(part.target, GLintptr(from), GLsizeiptr(n), static_cast<const char*>(part.data) + from);
-            glBindVertexArray(0);
+            if (s.stagedMaps[i]) {
+                std::memcpy(static_cast<char*>(s.stagedMaps[i]) + from, static_cast<const char*>(part.data) + from, n);
+            } else {
+                glBindVertexArray(part.vao);  // the element buffer is the vertex array's
+                glBindBuffer(part.target, part.buffer);
+                glBufferSubData(part.target, GLintptr(from), GLsizeiptr(n), static_cast<const char*>(part.data) + from);
+                glBindVertexArray(0);
+            }
             s.stagedBytes += n;
             bytes -= n;
         }
         base += part.size;
     }
     if (s.stagedBytes < base) return false;
+    if (s.stagedMaps[0]) {  // whole: unmapped before it is drawn
+        for (std::size_t i = 0; i < std::size(parts); ++i) {
+            glBindVertexArray(parts[i].vao);
+            glBindBuffer(parts[i].target, parts[i].buffer);
+            glUnmapBuffer(parts[i].target);
+            glBindVertexArray(0);
+        }
+        std::fill(std::begin(s.stagedMaps), std::end(s.stagedMaps), nullptr);
+    }
     std::swap(s.baked, s.bakedBack);
     std::swap(s.lines, s.linesBack);
     adopt(p);

@@ -116,6 +116,12 @@ public:
     bool beginUpload(std::shared_ptr<const PreparedScene> scene, std::size_t bytesPerFrame);
     bool continueUpload(std::size_t bytes);
     bool uploading() const;
+    // Whether a staged upload writes into buffers mapped once, persistently (GL 4.4's or
+    // ARB_buffer_storage's immutable storage): a piece is then a copy into the mapping, with
+    // no call into GL and no copy or wait of the driver's. On where the context has it (Mesa's
+    // llvmpipe and GPU drivers do); switched off, the pieces go by glBufferSubData.
+    bool persistentUploads() const;
+    void setPersistentUploads(bool on);
     // What is drawn with the plant, translucent, after it: the environment
     // (core/environment/environment_drawing.hpp). An empty mesh draws nothing.
     void setOverlay(const Mesh& mesh);

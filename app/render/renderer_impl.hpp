@@ -22,6 +22,7 @@ inline constexpr std::size_t kQuickLines = 100'000;
 
 struct Buffers {
     GLuint vao = 0, vbo = 0, ebo = 0;
+    bool immutable = false;  // storage of glBufferStorage: made anew to take another size
 };
 
 }  // namespace detail
@@ -50,6 +51,11 @@ struct Renderer::Impl {
     // order) are on the GPU so far.
     std::shared_ptr<const PreparedScene> staging;
     std::size_t stagedBytes = 0;
+    // Staged uploads into persistently mapped storage (Renderer::persistentUploads): whether the
+    // context has it and it is on, and the back buffers' mappings (vertices, indices, lines)
+    // while one is filled.
+    bool bufferStorage = false, persistentUploads = false;
+    void* stagedMaps[3] = {};
     GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;
     // The shadow map depends on the scene and the sun, not on the camera: a picture from
@@ -85,6 +91,9 @@ struct Renderer::Impl {
     static void makeBaked(Buffers& b);
     // Lines: position, colour.
     static void makeLines(Buffers& b);
+    // `b` (of makeBaked, or makeLines when `lines`) with buffers whose size can be set again:
+    // made anew when they have immutable storage.
+    static void mutableAgain(Buffers& b, bool lines);
     // The programs, textures, buffers and the shadow map (Renderer::init); false with a message.
     bool build(std::string& error);
     // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaFbo is it.

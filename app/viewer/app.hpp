@@ -73,6 +73,7 @@ struct App {
     std::uint64_t viewDraws = 0;  // how many times the 3D view was drawn
     std::uint64_t sketchDraws = 0;  // of those, moving frames of a big scene drawn as its sketch
     std::uint64_t fullMovingDraws = 0;  // and moving frames drawn at full quality (a fast scene)
+    std::uint64_t stagedUploads = 0;    // plants that went to the GPU a piece per frame
     // The still view is drawn a piece per frame (Renderer::beginDraw), so that no frame of the
     // panel waits for a whole big plant on a software rasteriser: the pieces are sized to take
     // about kRefineMs each, and the view shows its last picture until the new one is whole.

@@ -14,7 +14,9 @@
 //   view-draws            prints "view_draws=N sketched=M full_moving=F": how many times the 3D
 //                         view has been drawn, how many of those were a big scene's sketch
 //                         (moving) and how many moving frames were at full quality (a scene
-//                         whose still picture takes a few ms: a GPU, a small plant)
+//                         whose still picture takes a few ms: a GPU, a small plant), then
+//                         "staged_uploads=U mapped_uploads=0|1": how many plants went to the
+//                         GPU a piece per frame, and whether into persistently mapped buffers
 //   wait-thumbnails       until the presets' thumbnails are made (benchmarks)
 //   frame-stats           prints "moving_worst_ms=A moving_mean_ms=B refine_ms=T
 //                         refine_worst_frame_ms=W peak_mb=M refine_frames=F refine_drawing_ms=D
@@ -205,8 +207,10 @@ bool Script::step(App& app) {
             return true;
         }
         if (cmd == "view-draws") {
-            std::printf("view_draws=%llu sketched=%llu full_moving=%llu\n", static_cast<unsigned long long>(app.viewDraws),
-                        static_cast<unsigned long long>(app.sketchDraws), static_cast<unsigned long long>(app.fullMovingDraws));
+            std::printf("view_draws=%llu sketched=%llu full_moving=%llu staged_uploads=%llu mapped_uploads=%d\n",
+                        static_cast<unsigned long long>(app.viewDraws), static_cast<unsigned long long>(app.sketchDraws),
+                        static_cast<unsigned long long>(app.fullMovingDraws), static_cast<unsigned long long>(app.stagedUploads),
+                        app.renderer.persistentUploads() ? 1 : 0);
             std::fflush(stdout);
             return true;
         }

@@ -383,7 +383,8 @@ int runViewer(int argc, char** argv) {
             // the new one is whole), so that its arrival does not cost one long frame.
             if (auto prepared = app.state.plant()->prepared)
                 app.sceneArrived = app.renderer.beginUpload(std::static_pointer_cast<const render::PreparedScene>(prepared),
-                                                            kUploadBytesPerFrame);
+                                                            kUploadBytesPerFrame),
+                app.stagedUploads += !app.sceneArrived;
             else app.renderer.upload(g), app.sceneArrived = true;
             app.uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             uploadedNow = true;

@@ -406,6 +406,71 @@ TEST(Render, PictureDrawnInPiecesIsThePictureDrawnWhole) {
     EXPECT_FALSE(renderer.drawing());
 }
 
+// A scene uploaded a piece per frame (as the window uploads a big plant) draws what the same
+// scene uploaded at once draws: through buffers mapped once, persistently (the path taken where
+// the context has GL_ARB_buffer_storage, as llvmpipe and GPU drivers do), and through
+// glBufferSubData. The scene on screen is drawn until the new one is whole; a second staged
+// upload goes into the buffers the first one left, and a whole upload after them replaces
+// their immutable storage.
+TEST(Render, SceneUploadedInPiecesDrawsAsUploadedWhole) {
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    EXPECT_TRUE(renderer.persistentUploads()) << "llvmpipe has GL_ARB_buffer_storage: the mapped path is the one tested";
+    std::shared_ptr<Geometry> geometry[2];
+    std::shared_ptr<render::PreparedScene> scene[2];
+    for (int k = 0; k < 2; ++k) {
+        auto g = grammarOf(std::string(*presetText(k ? "bush_3d" : "fractal_plant")));
+        DeriveResult d = derive(g, k ? 3 : 5);
+        ASSERT_TRUE(d.outcome.ok());
+        geometry[k] = std::make_shared<Geometry>();
+        interpret(*d.string, *g, {k ? 3 : 5, 1, nullptr}, *geometry[k]);
+        scene[k] = std::make_shared<render::PreparedScene>();
+        render::Renderer::prepareForViewer(*geometry[k], *scene[k], geometry[k]);
+        ASSERT_GT(scene[k]->baked.indices.size() + scene[k]->lines.size(), 5000u);
+    }
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(*geometry[0], o);
+    std::vector<std::uint8_t> whole[2];
+    for (int k = 0; k < 2; ++k) {
+        renderer.upload(*scene[k]);
+        whole[k] = renderer.renderImage(camera, kW, kH, o.render);
+    }
+    ASSERT_NE(whole[0], whole[1]);
+    auto staged = [&](int k) {
+        SCOPED_TRACE(k ? "the second scene, staged" : "the first scene, staged");
+        ASSERT_FALSE(renderer.beginUpload(scene[k], 4096)) << "too big for one piece";
+        int pieces = 0;
+        while (!renderer.continueUpload(4096)) {
+            ASSERT_LT(++pieces, 1'000'000);
+            if (pieces == 1) {
+                EXPECT_EQ(renderer.renderImage(camera, kW, kH, o.render), whole[1 - k]) << "the scene on screen meanwhile";
+            }
+        }
+        EXPECT_GT(pieces, 3);
+        EXPECT_FALSE(renderer.uploading());
+        EXPECT_EQ(renderer.renderImage(camera, kW, kH, o.render), whole[k]);
+    };
+    for (bool persistent : {true, false}) {
+        SCOPED_TRACE(persistent ? "mapped persistently" : "by glBufferSubData");
+        renderer.setPersistentUploads(persistent);
+        EXPECT_EQ(renderer.persistentUploads(), persistent);
+        renderer.upload(*scene[1]);
+        staged(0);
+        staged(1);
+        renderer.upload(*scene[0]);
+        EXPECT_EQ(renderer.renderImage(camera, kW, kH, o.render), whole[0]) << "a whole upload after staged ones";
+        // A staged upload left half way and replaced by a whole one.
+        ASSERT_FALSE(renderer.beginUpload(scene[1], 4096));
+        EXPECT_FALSE(renderer.continueUpload(4096));
+        renderer.upload(*scene[1]);
+        EXPECT_FALSE(renderer.uploading());
+        EXPECT_EQ(renderer.renderImage(camera, kW, kH, o.render), whole[1]);
+        staged(0);
+    }
+}
+
 // Many lines drawn without multisampling (RenderOptions::quickLines, the window's view on
 // software GL) are the same plant: the thinnest stems lose their smoothed edges only. A plant
 // with fewer lines than that is drawn as it always is.

@@ -400,6 +400,34 @@ TEST(Window, DraggedBigPlantKeepsDrawingAndSettlesOnTheHeadlessPicture) {
     EXPECT_LT(differ, std::size_t(h.width) * std::size_t(h.height) / 1000) << "the still view is the headless picture";
 }
 
+// A plant of more than a frame's share of upload (the n=10 plant: 22 MB of buffers at the
+// viewer's detail) goes to the GPU a piece per frame, into persistently mapped buffers where
+// the GL has them (llvmpipe has GL_ARB_buffer_storage, as GPU drivers do), and is then on
+// screen: the view shows the plant's green. (Render.SceneUploadedInPiecesDrawsAsUploadedWhole
+// checks the pixels of both ways of uploading.)
+TEST(Window, BigPlantGoesToTheGpuAPiecePerFrame) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("staged_upload");
+    const std::string window = (dir / "window.png").string();
+    const auto printed = runScript(dir, "fractal_plant --size 900x600 --screenshot " + window, "set n 10\nwait\nview-draws\n");
+    ASSERT_EQ(printed.size(), 1u);
+    auto count = [&](const std::string& key) {
+        const auto at = printed[0].find(key + "=");
+        return at == std::string::npos ? -1L : std::stol(printed[0].substr(at + key.size() + 1));
+    };
+    EXPECT_EQ(count("staged_uploads"), 1) << printed[0];
+    EXPECT_EQ(count("mapped_uploads"), 1) << printed[0];
+    Image w = load(window);
+    ASSERT_EQ(w.width, 900);
+    std::size_t green = 0;
+    for (int y = 0; y < w.height; ++y)
+        for (int x = 430; x < w.width; ++x) {
+            const std::uint8_t* p = &w.rgba[(std::size_t(y) * std::size_t(w.width) + std::size_t(x)) * 4];
+            green += p[1] > p[0] + 20 && p[1] > p[2] + 20;
+        }
+    EXPECT_GT(green, std::size_t(w.width - 430) * std::size_t(w.height) / 50) << "the plant is on screen";
+}
+
 // frame-stats after a drag of a big plant says how far its last moving picture (the sketch,
 // at a fraction of the pixels) was from the still view after it, and what its longest moving
 // frame drew; before any drag there is nothing to say. And how many frames copied the panel.
