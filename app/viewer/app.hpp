@@ -30,6 +30,9 @@ struct ViewSettings {
     float sunElevation = 0;  // degrees above the horizon
     bool turntable = false;
     float turntableSpeed = 20;  // degrees per second
+    // Every moving frame the still picture, however long it takes; otherwise only where the
+    // still picture takes a few ms (a GPU, a small plant), and a lighter one elsewhere.
+    bool fullWhileMoving = false;
     int screenshotSize = 0;     // index into kScreenshotSizes
     // The environment an open L-system grows in, drawn with it; a slice of its light grid.
     bool showEnvironment = true;

@@ -219,6 +219,12 @@ void viewSection(App& app) {
     if (ImGui::Checkbox("shadows", &v.render.shadows)) app.needsRedraw = true;
     ImGui::SameLine();
     if (ImGui::Checkbox("ground", &v.render.ground)) app.needsRedraw = true;
+    ImGui::SameLine();
+    ImGui::Checkbox("full quality moving", &v.fullWhileMoving);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Draws the still picture in every frame while the view moves, however long it takes.\n"
+                          "Off, a plant whose picture takes a few ms (a GPU, a small plant) moves at full\n"
+                          "quality anyway, and others as a lighter picture, to keep sixty frames a second.");
     if (ImGui::ColorEdit3("sky", &v.render.backgroundTop.x, ImGuiColorEditFlags_NoInputs)) app.needsRedraw = true;
     ImGui::SameLine();
     if (ImGui::ColorEdit3("horizon", &v.render.backgroundBottom.x, ImGuiColorEditFlags_NoInputs)) app.needsRedraw = true;

@@ -32,6 +32,7 @@
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
+//   moving full|auto      the View section's "full quality moving" on or off
 //   screenshot <path> [WxH]
 //   export <path>         as File > Export model (waits until the file is written)
 //   record growth|turntable <path>   as Record video (waits until it is written)
@@ -285,7 +286,12 @@ bool Script::step(App& app) {
         if (cmd == "play") app.state.setPlaying(true);
         else if (cmd == "pause") app.state.setPlaying(false);
         else if (cmd == "frame") app.frame();
-        else if (cmd == "yaw" || cmd == "pitch") {
+        else if (cmd == "moving") {
+            std::string how;
+            in >> how;
+            if (how != "full" && how != "auto") std::fprintf(stderr, "script: moving: full or auto, not '%s'\n", how.c_str());
+            else app.view.fullWhileMoving = how == "full";
+        } else if (cmd == "yaw" || cmd == "pitch") {
             float v = 0;
             in >> v;
             (cmd == "yaw" ? app.camera.yaw : app.camera.pitch) = v;

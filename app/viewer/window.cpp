@@ -515,7 +515,7 @@ int runViewer(int argc, char** argv) {
                 // less while frames take too long (a big 2D curve keeps its full-size raster,
                 // which moves as a picture while dragged), and big ones as their sketch or a
                 // coarser bake with no shadow pass.
-                const bool full = app.renderer.lastPictureMs() <= kFullWhileMovingMs;
+                const bool full = app.view.fullWhileMoving || app.renderer.lastPictureMs() <= kFullWhileMovingMs;
                 render::RenderOptions m = o;
                 m.quality = full ? render::Quality::Still : render::Quality::Interactive;
                 const bool scaled = !full && !app.renderer.rasterCurve();

@@ -428,6 +428,28 @@ TEST(Window, BigPlantGoesToTheGpuAPiecePerFrame) {
     EXPECT_GT(green, std::size_t(w.width - 430) * std::size_t(w.height) / 50) << "the plant is on screen";
 }
 
+// "full quality moving" (View section; the script's `moving full`): every moving frame is the
+// still picture, at the view's full size, where a plant would otherwise move as a lighter
+// picture (the path a GPU takes by itself, kept tested here on software GL). The last moving
+// picture is then the still view's pixels.
+TEST(Window, FullQualityMovingDrawsTheStillPictureInEveryMovingFrame) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const auto printed = runScript(testDir("full_moving"), "fractal_plant --size 900x600",
+                                   "set n 7\nwait\nview-draws\ndrag 100 20 6\nview-draws\nrelease\nwait\nframe-stats\n"
+                                   "moving full\ndrag 100 20 6\nview-draws\nrelease\nwait\nframe-stats\nquit\n");
+    ASSERT_EQ(printed.size(), 5u);
+    auto value = [&](std::size_t k, const std::string& key) {
+        const auto at = printed[k].find(key + "=");
+        return at == std::string::npos ? -1.0 : std::stod(printed[k].substr(at + key.size() + 1));
+    };
+    EXPECT_EQ(value(1, "full_moving"), value(0, "full_moving")) << "a lighter picture while it moves: " << printed[1];
+    EXPECT_GT(value(2, "moving_differ_pct"), 0.5) << printed[2];
+    EXPECT_GE(value(3, "full_moving") - value(1, "full_moving"), 6) << printed[3];
+    EXPECT_EQ(value(3, "sketched"), value(1, "sketched")) << printed[3];
+    EXPECT_LT(value(4, "moving_differ_pct"), 0.1) << "the moving picture is the still one: " << printed[4];
+    EXPECT_GE(value(4, "moving_differ_pct"), 0.0) << printed[4];
+}
+
 // frame-stats after a drag of a big plant says how far its last moving picture (the sketch,
 // at a fraction of the pixels) was from the still view after it, and what its longest moving
 // frame drew; before any drag there is nothing to say. And how many frames copied the panel.
