@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <map>
 #include <optional>
 #include <set>
@@ -14,7 +16,7 @@ enum class Op : std::uint8_t {
     Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
     IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
     Bare,  // the Sprout module, without parameters
-    Tropism, Elasticity,
+    Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide,
 };
 
 struct Mapping {
@@ -26,7 +28,9 @@ const std::unordered_map<std::string, Mapping>& mappings() {
     static const std::unordered_map<std::string, Mapping> m = {
         {"F", {Op::Forward, "F"}}, {"f", {Op::Move, "f"}}, {"nF", {Op::StepForward, "F"}},
         {"+", {Op::Turn, "+"}}, {"-", {Op::Turn, "-"}}, {"^", {Op::Turn, "^"}}, {"&", {Op::Turn, "&"}},
-        {"/", {Op::Turn, "/"}}, {"\\", {Op::Turn, "\\"}}, {"iRollL", {Op::Turn, "/"}}, {"iRollR", {Op::Turn, "\\"}},
+        // L-Py's / is RollL, about H by +angle (PlantGL: left towards up), which is Sprout's
+        // (ABOP's) \ ; its \ is Sprout's /.
+        {"/", {Op::Turn, "\\"}}, {"\\", {Op::Turn, "/"}}, {"iRollL", {Op::Turn, "\\"}}, {"iRollR", {Op::Turn, "/"}},
         {"|", {Op::Around, "|"}}, {"@v", {Op::Vertical, "$"}}, {"@R", {Op::SetHead, "@R"}},
         {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "LineTo"}}, {"OLineTo", {Op::LineTo, "OLineTo"}},
         {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
@@ -40,6 +44,8 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         // Tropism: before each F and f, H turns towards the tropism vector by the elasticity
         // times the angle between them (Sprout's @T with a direction).
         {"@Tp", {Op::Tropism}}, {"@Ts", {Op::Elasticity}},
+        // Guides: the F and f that follow go along a curve (PlantGL's Turtle2DPath).
+        {"SetGuide", {Op::SetGuide}}, {"EndGuide", {Op::EndGuide}}, {"PositionOnGuide", {Op::PositionOnGuide}},
     };
     return m;
 }
@@ -47,7 +53,7 @@ const std::unordered_map<std::string, Mapping>& mappings() {
 // Modules that draw nothing in L-Py either (no warning when left out).
 bool silent(const std::string& name) {
     static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F",
-                                            "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "EndGuide", "@2D", "@3D",
+                                            "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "@2D", "@3D",
                                             "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
                                             "TextureTransformation", "x", "or", "=]", "?I", "new"};
     return s.count(name) > 0;
@@ -118,12 +124,92 @@ std::vector<std::uint32_t> defaultMaterials() {
 
 namespace {
 
+// A curve that F and f follow (SetGuide), 2D or 3D: sampled once, by the fraction of its
+// length (2D curves have z = 0).
+struct GuideCurve {
+    std::vector<glm::dvec3> points;
+    std::vector<double> at;  // the fraction of the curve's length at each point
+    double length = 0;
+    bool is3D = false;
+    glm::dvec3 pointAt(double t) const {
+        const size_t i = segment(t);
+        const double span = at[i + 1] - at[i], f = span > 0 ? (t - at[i]) / span : 0;
+        return points[i] + (points[i + 1] - points[i]) * std::clamp(f, 0.0, 1.0);
+    }
+    glm::dvec3 tangentAt(double t) const {
+        const size_t i = segment(t);
+        const glm::dvec3 d = points[i + 1] - points[i];
+        const double n = glm::length(d);
+        return n > 0 ? d / n : glm::dvec3(is3D ? 0 : 1, 0, is3D ? 1 : 0);
+    }
+    size_t segment(double t) const {  // the span that holds t (the last one at the end)
+        const auto it = std::upper_bound(at.begin(), at.end(), t);
+        return std::min(size_t(std::max<std::ptrdiff_t>(it - at.begin() - 1, 0)), points.size() - 2);
+    }
+};
+
+// A guide on its way (PlantGL's Turtle2DPath and Turtle3DPath): the curve scaled to `total`
+// turtle units; how far along it the turtle is (a fraction of its length), where on the curve
+// it was and the curve's frame there, which the turtle's frame follows. A 2D curve lies in the
+// plane of the turtle's heading and up (x, y), or of heading and left with `yOrientation`;
+// `ccw` mirrors it. A 3D curve's z is the turtle's heading at the start, its x the up.
+struct Guide {
+    std::shared_ptr<const GuideCurve> curve;
+    double total = 0, scale = 1, t = 0;
+    glm::dvec3 lastPosition{0}, lastHeading{1, 0, 0}, lastLeft{0, -1, 0}, lastUp{1, 0, 0};
+    bool yOrientation = false, ccw = false;
+};
+
+// The rotation by `angle` about unit `axis` (Rodrigues).
+glm::dvec3 rotated(glm::dvec3 v, glm::dvec3 axis, double angle) {
+    return v * std::cos(angle) + glm::cross(axis, v) * std::sin(angle) + axis * glm::dot(axis, v) * (1 - std::cos(angle));
+}
+
+// A curve object's points, sampled as PlantGL's shapes sample it (`points(n)`): 2D or 3D; null
+// for a value that is not a curve.
+std::shared_ptr<GuideCurve> sampledCurve(PyObject* curve) {
+    if (!curve || !PyObject_HasAttrString(curve, "points")) return nullptr;
+    PyObject* pts = PyObject_CallMethod(curve, "points", "i", 200);
+    if (!pts) {
+        PyErr_Clear();
+        return nullptr;
+    }
+    auto c = std::make_shared<GuideCurve>();
+    PyObject* seq = PySequence_Fast(pts, "points");
+    Py_DECREF(pts);
+    if (!seq) {
+        PyErr_Clear();
+        return nullptr;
+    }
+    bool ok = true;
+    for (Py_ssize_t i = 0, n = PySequence_Fast_GET_SIZE(seq); i < n && ok; ++i) {
+        std::vector<double> xyz;
+        ok = numbers(PySequence_Fast_GET_ITEM(seq, i), xyz) && (xyz.size() == 2 || xyz.size() == 3) &&
+             (i == 0 || (xyz.size() == 3) == c->is3D);
+        if (!ok) break;
+        c->is3D = xyz.size() == 3;
+        c->points.emplace_back(xyz[0], xyz[1], c->is3D ? xyz[2] : 0.0);
+    }
+    Py_DECREF(seq);
+    if (!ok || c->points.size() < 2) return nullptr;
+    c->at.push_back(0);
+    for (size_t i = 1; i < c->points.size(); ++i) c->at.push_back(c->at.back() + glm::length(c->points[i] - c->points[i - 1]));
+    c->length = c->at.back();
+    if (!(c->length > 0)) return nullptr;
+    for (double& a : c->at) a /= c->length;
+    return c;
+}
+
 // The two kinds of string, read alike: a module's class, and its numbers appended to `p`
 // (false when one of its values is not a number); the count of its values.
 struct FromPython {
     const LString& s;
     size_t size() const { return s.size(); }
     int cls(size_t k) const { return s[k].cls; }
+    PyObject* object(size_t k, size_t a) const {  // the module's a-th value, borrowed
+        const LModule& m = s[k];
+        return m.args && Py_ssize_t(a) < PyTuple_GET_SIZE(m.args.ptr()) ? PyTuple_GET_ITEM(m.args.ptr(), Py_ssize_t(a)) : nullptr;
+    }
     size_t values(size_t k, std::vector<double>& p, bool& allNumbers) const {
         const LModule& m = s[k];
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
@@ -136,6 +222,7 @@ struct FromNumbers {
     const NumString& s;
     size_t size() const { return s.size(); }
     int cls(size_t k) const { return s.modules[k].cls; }
+    PyObject* object(size_t, size_t) const { return nullptr; }  // numbers only
     size_t values(size_t k, std::vector<double>& p, bool&) const {
         const NumString::Module& m = s.modules[k];
         p.insert(p.end(), s.params.data() + m.first, s.params.data() + m.first + m.n);
@@ -154,16 +241,73 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
     const int colours = int(g->settings.palette.size());
     Writer w(*g);
     struct State {
-        double width;
-        int colour;
+        double width = 0;
+        int colour = 0;
         double tropism[3] = {0, 0, 1};  // L-Py's axes
         double elasticity = 0;
+        std::optional<Guide> guide;  // a branch takes its own copy, as PlantGL's turtle does
     };
     std::vector<State> stack;
-    State st{d.width, std::clamp(d.colour, 0, colours - 1)};
+    State st;
+    st.width = d.width;
+    st.colour = std::clamp(d.colour, 0, colours - 1);
     auto bend = [&] {  // L-Py's x y z are Sprout's z x y
         if (st.elasticity > 0) w.put("@T", {st.elasticity, st.tropism[1], st.tropism[2], st.tropism[0], 1});
     };
+    // PlantGL's Turtle::_applyGuide: before a move of `length`, the heading turns to the chord
+    // to the point that far along the curve, and the move's length becomes the chord's (in
+    // turtle units); after it (length 0), the heading turns to the curve's own direction there.
+    // A guide is done once a move starts at its end. The turns are written as L-Py's turns.
+    auto degrees = [](double radians) { return radians * 180 / M_PI; };
+    auto turnTo = [&](Guide& g, glm::dvec3 direction) {
+        if (!g.curve->is3D) {
+            double deviation = std::atan2(g.lastHeading.x * direction.y - g.lastHeading.y * direction.x,
+                                          g.lastHeading.x * direction.x + g.lastHeading.y * direction.y);
+            if (g.ccw) deviation = -deviation;
+            // About the left axis (PlantGL: by -deviation, L-Py's ^), or the up axis (its +).
+            if (std::fabs(deviation) > 1e-12) w.put(g.yOrientation ? "+" : "^", {degrees(deviation)});
+            g.lastHeading = direction;
+            return;
+        }
+        // 3D: the direction in the curve's last frame is the new heading in the turtle's frame
+        // (heading, left, up); the turtle turns to it about their common normal: a roll taking
+        // the left axis to that normal, a turn about it (&), and the roll back. The curve's
+        // frame turns alike.
+        const glm::dvec3 local(glm::dot(direction, g.lastHeading), glm::dot(direction, g.lastLeft), glm::dot(direction, g.lastUp));
+        const double sine = std::hypot(local.y, local.z), angle = std::atan2(sine, local.x);
+        if (sine > 1e-12) {
+            const double roll = std::atan2(local.y, -local.z);  // the normal (0, -up, left) from the left axis
+            w.put("\\", {degrees(roll)});  // Sprout's \: about H by +roll (L-Py's /)
+            w.put("&", {degrees(angle)});
+            w.put("/", {degrees(roll)});
+            const glm::dvec3 axis = glm::normalize(glm::cross(g.lastHeading, direction));
+            g.lastLeft = glm::normalize(rotated(g.lastLeft, axis, angle));
+            g.lastUp = glm::normalize(rotated(g.lastUp, axis, angle));
+        }
+        g.lastHeading = direction;
+    };
+    auto guideBefore = [&](double& length) {
+        if (!st.guide || !(length > 0)) return;
+        Guide& g = *st.guide;
+        if (g.t >= 1.0) {
+            st.guide.reset();
+            return;
+        }
+        const double next = g.t + length / g.total, rest = next - 1.0;
+        const glm::dvec3 at = g.curve->pointAt(std::min(next, 1.0));
+        glm::dvec3 chord = at - g.lastPosition;
+        if (rest > 1e-12) chord += g.curve->tangentAt(1.0) * (rest * g.curve->length);  // past its end: straight on
+        const double n = glm::length(chord);
+        if (!(n > 0)) return;
+        length = n * g.scale;
+        g.t = std::min(next, 1.0);
+        g.lastPosition = at;
+        turnTo(g, chord / n);
+    };
+    auto guideAfter = [&] {
+        if (st.guide) turnTo(*st.guide, st.guide->curve->tangentAt(st.guide->t));
+    };
+    std::unordered_map<PyObject*, std::shared_ptr<const GuideCurve>> curves;  // sampled once a drawing
     w.put("!", {2 * st.width});
     w.put(";", {double(st.colour)});
     std::set<std::string> leftOut;
@@ -214,21 +358,89 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         switch (mp.op) {
             case Op::Forward:
             case Op::Move:
-                bend();
-                if (p.empty()) w.put(mp.sprout, {});
-                else w.put(mp.sprout, {p[0]});
+                if (st.guide) {  // L-Py's default step is 1
+                    double length = p.empty() ? 1.0 : p[0];
+                    guideBefore(length);
+                    bend();
+                    w.put(mp.sprout, {length});
+                    guideAfter();
+                } else {
+                    bend();
+                    if (p.empty()) w.put(mp.sprout, {});
+                    else w.put(mp.sprout, {p[0]});
+                }
                 if (mp.op == Op::Forward && p.size() >= 2) setWidth(p[1]);  // a frustum up to the top radius
                 break;
             case Op::StepForward: {  // nF(length, dl): F(dl) repeated, then the rest
                 if (p.size() < 2 || !(p[1] > 0) || !(p[0] >= 0)) break;
                 const double steps = std::min(std::floor(p[0] / p[1]), 100000.0);
-                for (double k = 0; k < steps; ++k) bend(), w.put("F", {p[1]});
-                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) bend(), w.put("F", {rest});
+                auto forward = [&](double length) {
+                    guideBefore(length);
+                    bend();
+                    w.put("F", {length});
+                    guideAfter();
+                };
+                for (double k = 0; k < steps; ++k) forward(p[1]);
+                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) forward(rest);
                 break;
             }
+            case Op::SetGuide: {  // SetGuide(curve, length[, yOrientation[, ccw]]); none: cleared
+                PyObject* curve = s.object(k, 0);
+                if (!curve) {
+                    st.guide.reset();
+                    break;
+                }
+                std::shared_ptr<const GuideCurve>& c = curves[curve];
+                if (!c) c = sampledCurve(curve);
+                if (!c) {
+                    leftOut.insert(name + " with a value that is not a curve");
+                    break;
+                }
+                auto number = [&](size_t a, double otherwise) {
+                    PyObject* v = s.object(k, a);
+                    const double d = v ? PyFloat_AsDouble(v) : otherwise;
+                    if (PyErr_Occurred()) PyErr_Clear();
+                    return v && std::isfinite(d) ? d : otherwise;
+                };
+                Guide g;
+                g.curve = c;
+                g.total = number(1, c->length);
+                if (!(g.total > 0)) break;
+                g.scale = g.total / c->length;
+                g.yOrientation = number(2, 0) != 0;
+                g.ccw = number(3, 0) != 0;
+                g.lastPosition = c->points.front();
+                if (c->is3D) g.lastHeading = {0, 0, 1};
+                else g.lastHeading = g.yOrientation ? glm::dvec3(0, g.ccw ? -1 : 1, 0) : glm::dvec3(g.ccw ? -1 : 1, 0, 0);
+                st.guide = g;
+                break;
+            }
+            case Op::EndGuide: st.guide.reset(); break;
+            case Op::PositionOnGuide:  // PositionOnGuide(t): t turtle units along it
+                if (st.guide && !p.empty()) {
+                    Guide& g = *st.guide;
+                    g.t = std::clamp(p[0] / g.total, 0.0, 1.0);
+                    g.lastPosition = g.curve->pointAt(g.t);
+                    g.lastHeading = g.curve->tangentAt(g.t);
+                    if (g.curve->is3D) {  // PlantGL: the curve's normal as up (here: the frame kept upright)
+                        const glm::dvec3 left = glm::cross(g.lastUp, g.lastHeading);
+                        if (glm::length(left) > 1e-9) {
+                            g.lastLeft = glm::normalize(left);
+                            g.lastUp = glm::normalize(glm::cross(g.lastHeading, g.lastLeft));
+                        }
+                    }
+                }
+                break;
             case Op::Turn:
                 if (p.empty()) w.put(mp.sprout, {});
                 else w.put(mp.sprout, {p[0]});
+                // An intrinsic roll turns a 3D guide's frame with the turtle's (PlantGL's iRollL).
+                if (st.guide && st.guide->curve->is3D && (name == "iRollL" || name == "iRollR")) {
+                    Guide& g = *st.guide;
+                    const double a = (p.empty() ? d.angle : p[0]) * M_PI / 180 * (name == "iRollL" ? 1 : -1);
+                    g.lastUp = rotated(g.lastUp, g.lastHeading, a);
+                    g.lastLeft = rotated(g.lastLeft, g.lastHeading, a);
+                }
                 break;
             case Op::Around:
             case Op::Vertical:

@@ -189,6 +189,27 @@ TEST(Lpy, TheModelIsDrawnInLpysFrame) {
     EXPECT_NEAR(geo.cylinders[1].end.y, 2 + 0.5, 1e-4);
 }
 
+// L-Py's rolls: `/` is RollL, about the heading by +angle, which takes the left axis towards
+// up (PlantGL's rollL); `\` is RollR. So /(90) then +(90) heads along the first up (L-Py's
+// +x, Sprout's +z), and \(90) then +(90) the other way; iRollL and iRollR turn alike.
+TEST(Lpy, RollsTurnAsInLpy) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::pair<const char*, float> cases[] = {{"/(90) +(90) F", 1}, {"\\(90) +(90) F", -1},
+                                                   {"iRollL(90) +(90) F", 1}, {"iRollR(90) +(90) F", -1}};
+    for (const auto& [axiom, z] : cases) {
+        SCOPED_TRACE(axiom);
+        lpy::Model m = lpy::runModel(std::string("Axiom: ") + axiom + "\nderivation length: 0\nproduction:\nendlsystem\n", {});
+        ASSERT_TRUE(m.ok()) << messages(m);
+        Geometry geo;
+        TurtleOptions to;
+        interpret(m.drawable->axiom, *m.drawable, to, geo);
+        ASSERT_EQ(geo.cylinders.size(), 1u);
+        EXPECT_NEAR(geo.cylinders[0].end.z, z, 1e-5f);
+        EXPECT_NEAR(geo.cylinders[0].end.x, 0, 1e-5f);
+        EXPECT_NEAR(geo.cylinders[0].end.y, 0, 1e-5f);
+    }
+}
+
 // Elasticity and tropism: before each step H turns towards the tropism vector by e times the
 // angle between them (L-Py's x is Sprout's z, its z Sprout's y).
 TEST(Lpy, TropismBendsBeforeEachStep) {
@@ -207,6 +228,45 @@ TEST(Lpy, TropismBendsBeforeEachStep) {
     // After it, elasticity 0.5 again: half of the 45 degrees left, at 67.5 degrees.
     EXPECT_NEAR(geo.cylinders[2].end.z - geo.cylinders[2].start.z, std::sin(67.5f * 3.14159265f / 180), 1e-4f);
     EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+}
+
+// SetGuide: the F and f after it follow the curve, scaled to the length given (PlantGL's
+// Turtle2DPath and Turtle3DPath). A 2D curve's x is the heading at the start and its y the up;
+// with its third argument (yOrientation) its y is the heading and its x the right. A 3D curve's
+// z is the heading at the start, its x the up and its y the right, and intrinsic rolls (iRollL,
+// iRollR) turn the curve's frame with the turtle's, so the stem still traces the curve. L-Py's
+// x, y, z are Sprout's z, x, y; the turtle starts with heading +z, up +x and left -y (L-Py's).
+TEST(Lpy, AGuideIsFollowed) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::string models[] = {
+        "from openalea.plantgl.all import *\npath = Polyline2D([(0, 0), (1, 0), (1, 1)])\n"
+        "Axiom: SetGuide(path, 4) nF(4, 0.25)\nderivation length: 0\nproduction:\nendlsystem\n",
+        "from openalea.plantgl.all import *\npath = Polyline2D([(0, 0), (1, 0), (1, 1)])\n"
+        "Axiom: SetGuide(path, 2, True) nF(2, 0.25)\nderivation length: 0\nproduction:\nendlsystem\n",
+        "from openalea.plantgl.all import *\npath = NurbsCurve([(0, 0, 0, 1), (0, 0, 1, 1), (1, 0, 1, 1), (1, 2, 1, 1)], degree=1)\n"
+        "Axiom: SetGuide(path, 4) F(.5) iRollL(37) F(.5) iRollR(80) F(.5) F(.5) iRollL(10) F(.5) F(.5) iRollR(33) F(.5) F(.5)\n"
+        "derivation length: 0\nproduction:\nendlsystem\n",
+    };
+    // Where the stem is after half its steps and at its end, in Sprout's axes.
+    const glm::vec3 expected[][2] = {{{0, 2, 0}, {0, 2, 2}}, {{1, 0, 0}, {1, 1, 0}}, {{0, 1, 1}, {2, 1, 1}}};
+    for (int c = 0; c < 3; ++c) {
+        SCOPED_TRACE(models[c]);
+        lpy::Model m = lpy::runModel(models[c], {});
+        ASSERT_TRUE(m.ok()) << messages(m);
+        EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+        Geometry geo;
+        TurtleOptions to;
+        interpret(m.drawable->axiom, *m.drawable, to, geo);
+        const size_t n = c == 0 ? 16 : 8;
+        ASSERT_EQ(geo.cylinders.size(), n);
+        const float tolerance = c == 2 ? 0.03f : 1e-3f;  // the 3D curve's corners sampled 200 times along it
+        for (int k = 0; k < 2; ++k) {
+            const glm::vec3 at = geo.cylinders[k ? n - 1 : n / 2 - 1].end;
+            EXPECT_NEAR(at.x, expected[c][k].x, tolerance) << k;
+            EXPECT_NEAR(at.y, expected[c][k].y, tolerance) << k;
+            EXPECT_NEAR(at.z, expected[c][k].z, tolerance) << k;
+        }
+    }
 }
 
 // L-Py's own examples: each opens and draws, or names what it needs at its line.
