@@ -16,7 +16,7 @@ enum class Op : std::uint8_t {
     Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
     IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
     Bare,  // the Sprout module, without parameters
-    Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide,
+    Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
 };
 
 struct Mapping {
@@ -46,6 +46,10 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         {"@Tp", {Op::Tropism}}, {"@Ts", {Op::Elasticity}},
         // Guides: the F and f that follow go along a curve (PlantGL's Turtle2DPath).
         {"SetGuide", {Op::SetGuide}}, {"EndGuide", {Op::EndGuide}}, {"PositionOnGuide", {Op::PositionOnGuide}},
+        // Cross-sections: the tubes after SetContour(curve) are swept with that curve's shape
+        // (an open curve: a surface, such as a leaf blade); Sweep(path, section, length, dl,
+        // radius, radiusFunction) is SetGuide, SetContour and nF together (PlantGL's sweep).
+        {"SetContour", {Op::SetContour}}, {"Sweep", {Op::Sweep}},
     };
     return m;
 }
@@ -53,7 +57,7 @@ const std::unordered_map<std::string, Mapping>& mappings() {
 // Modules that draw nothing in L-Py either (no warning when left out).
 bool silent(const std::string& name) {
     static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F",
-                                            "@D", "@Di", "@Dd", "SectionResolution", "SetContour", "@2D", "@3D",
+                                            "@D", "@Di", "@Dd", "SectionResolution", "@2D", "@3D",
                                             "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
                                             "TextureTransformation", "x", "or", "=]", "?I", "new"};
     return s.count(name) > 0;
@@ -165,11 +169,11 @@ glm::dvec3 rotated(glm::dvec3 v, glm::dvec3 axis, double angle) {
     return v * std::cos(angle) + glm::cross(axis, v) * std::sin(angle) + axis * glm::dot(axis, v) * (1 - std::cos(angle));
 }
 
-// A curve object's points, sampled as PlantGL's shapes sample it (`points(n)`): 2D or 3D; null
-// for a value that is not a curve.
-std::shared_ptr<GuideCurve> sampledCurve(PyObject* curve) {
+// A curve object's points, sampled as PlantGL's shapes sample it (`points(n)`; `points()`, at
+// the curve's own stride, for n = 0): 2D or 3D; null for a value that is not a curve.
+std::shared_ptr<GuideCurve> sampledCurve(PyObject* curve, int n = 200) {
     if (!curve || !PyObject_HasAttrString(curve, "points")) return nullptr;
-    PyObject* pts = PyObject_CallMethod(curve, "points", "i", 200);
+    PyObject* pts = n > 0 ? PyObject_CallMethod(curve, "points", "i", n) : PyObject_CallMethod(curve, "points", nullptr);
     if (!pts) {
         PyErr_Clear();
         return nullptr;
@@ -246,6 +250,8 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         double tropism[3] = {0, 0, 1};  // L-Py's axes
         double elasticity = 0;
         std::optional<Guide> guide;  // a branch takes its own copy, as PlantGL's turtle does
+        int section = -1;            // Settings::sections index (SetContour); -1: round
+        bool inCurve = false;        // between @Gc and @Ge
     };
     std::vector<State> stack;
     State st;
@@ -308,6 +314,36 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         if (st.guide) turnTo(*st.guide, st.guide->curve->tangentAt(st.guide->t));
     };
     std::unordered_map<PyObject*, std::shared_ptr<const GuideCurve>> curves;  // sampled once a drawing
+    std::unordered_map<PyObject*, int> sections;  // each section curve's Settings::sections index
+    auto sectionOf = [&](PyObject* curve) {
+        if (auto it = sections.find(curve); it != sections.end()) return it->second;
+        int index = -1;
+        auto c = sampledCurve(curve, 0);
+        if (c && !c->is3D && g->settings.sections.size() < 10000) {
+            std::vector<float> xy;
+            for (const glm::dvec3& q : c->points) xy.push_back(float(q.x)), xy.push_back(float(q.y));
+            g->settings.sections.push_back(std::move(xy));
+            index = int(g->settings.sections.size()) - 1;
+        }
+        sections[curve] = index;
+        return index;
+    };
+    auto setGuide = [&](PyObject* curve, double total, bool yOrientation, bool ccw) {
+        std::shared_ptr<const GuideCurve>& c = curves[curve];
+        if (!c) c = sampledCurve(curve);
+        if (!c) return false;
+        Guide g;
+        g.curve = c;
+        g.total = total > 0 ? total : c->length;
+        g.scale = g.total / c->length;
+        g.yOrientation = yOrientation;
+        g.ccw = ccw;
+        g.lastPosition = c->points.front();
+        if (c->is3D) g.lastHeading = {0, 0, 1};
+        else g.lastHeading = yOrientation ? glm::dvec3(0, ccw ? -1 : 1, 0) : glm::dvec3(ccw ? -1 : 1, 0, 0);
+        st.guide = g;
+        return true;
+    };
     w.put("!", {2 * st.width});
     w.put(";", {double(st.colour)});
     std::set<std::string> leftOut;
@@ -317,6 +353,83 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
     std::vector<std::uint8_t> kindOf(classes.size(), kUnseen);
     std::vector<const Mapping*> mappingOf(classes.size(), nullptr);
     std::vector<double> p;
+    // The module's a-th value as a number (a Python value read as PlantGL reads it).
+    auto number = [&](size_t k, size_t a, double otherwise) {
+        PyObject* v = s.object(k, a);
+        if (!v) {  // the native path's strings: numbers only
+            std::vector<double> q;
+            bool all = true;
+            s.values(k, q, all);
+            return a < q.size() && std::isfinite(q[a]) ? q[a] : otherwise;
+        }
+        const double d = PyFloat_AsDouble(v);
+        if (PyErr_Occurred()) PyErr_Clear();
+        return std::isfinite(d) ? d : otherwise;
+    };
+    auto setWidth = [&](double width) {
+        if (!(width >= 0)) return;
+        st.width = width;
+        w.put("!", {2 * width});
+    };
+    // F(length[, top]): a frustum to the top radius. In a generalized cylinder the width is
+    // set first (the point it adds takes it); with a cross-section outside one, the step is a
+    // swept piece of its own (PlantGL's _sweep).
+    auto forward = [&](double length, double top) {
+        const bool piece = st.section >= 0 && !st.inCurve;
+        guideBefore(length);
+        bend();
+        if (piece) w.put("@Gs", {});
+        if ((piece || st.inCurve) && top >= 0) setWidth(top);
+        w.put("F", {length});
+        if (piece) w.put("@Ge", {});
+        if (!piece && !st.inCurve && top >= 0) setWidth(top);
+        guideAfter();
+    };
+    // nF(length, dl[, radius[, radiusFunction]]) as PlantGL's turtle draws it: F(dl) repeated,
+    // then the rest; the radius ramps to `radius`, or is radius times the function, read from
+    // its first x to its last. A run with a cross-section is one swept surface.
+    auto stepForward = [&](double length, double dl, double radius, PyObject* function) {
+        if (!(dl > 0) || !(length >= 0)) return;
+        const double steps = std::min(std::floor(length / dl), 100000.0), rest = length - steps * dl;
+        const bool swept = st.section >= 0 && !st.inCurve;
+        auto begin = [&] {  // the swept surface starts at the first width
+            if (swept) st.inCurve = true, w.put("@Gs", {});
+        };
+        double fx = 0, lx = 1;
+        auto valueAt = [&](double x) {
+            PyObject* r = PyObject_CallFunction(function, "d", x);
+            const double v = r ? PyFloat_AsDouble(r) : 1.0;
+            Py_XDECREF(r);
+            if (PyErr_Occurred()) PyErr_Clear(), leftOut.insert("a radius function that gives no number");
+            return std::isfinite(v) ? v : 1.0;
+        };
+        if (function && function != Py_None) {
+            for (auto [attr, out] : {std::pair{"firstx", &fx}, std::pair{"lastx", &lx}}) {
+                PyObject* v = PyObject_GetAttrString(function, attr);
+                if (v && PyCallable_Check(v)) Py_SETREF(v, PyObject_CallNoArgs(v));
+                if (v) *out = PyFloat_AsDouble(v);
+                Py_XDECREF(v);
+                if (PyErr_Occurred()) PyErr_Clear();
+            }
+            const double du = (dl / std::max(length, 1e-12)) * (lx - fx);
+            double u = fx;
+            setWidth(valueAt(u) * radius);
+            begin();
+            for (double i = 0; i < steps; ++i) u += du, forward(dl, valueAt(u) * radius);
+            if (rest > 1e-9) forward(rest, radius * valueAt(lx));
+        } else if (radius >= 0) {
+            begin();
+            const double dw = (radius - st.width) / std::max(length, 1e-12);
+            double cw = st.width;
+            for (double i = 0; i < steps; ++i) cw += dw * dl, forward(dl, cw);
+            if (rest > 1e-9) forward(rest, radius);
+        } else {
+            begin();
+            for (double i = 0; i < steps; ++i) forward(dl, -1);
+            if (rest > 1e-9) forward(rest, -1);
+        }
+        if (swept) st.inCurve = false, w.put("@Ge", {});
+    };
     for (size_t k = 0; k < s.size(); ++k) {
         // What the module before wrote (the first pieces, width and colour: the first module).
         if (sourceOf) sourceOf->resize(g->axiom.size(), std::uint32_t(k == 0 ? 0 : k - 1));
@@ -345,11 +458,6 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         bool allNumbers = true;
         const size_t n = s.values(k, p, allNumbers);
         const Mapping& mp = *mappingOf[size_t(cls)];
-        auto setWidth = [&](double width) {
-            if (!(width >= 0)) return;
-            st.width = width;
-            w.put("!", {2 * width});
-        };
         auto setColour = [&](int index) {
             if (index < 0 || index >= colours) return;  // L-Py ignores an index past its materials
             st.colour = index;
@@ -357,8 +465,10 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         };
         switch (mp.op) {
             case Op::Forward:
+                forward(p.empty() ? 1.0 : p[0], p.size() >= 2 ? p[1] : -1);  // L-Py's default step is 1
+                break;
             case Op::Move:
-                if (st.guide) {  // L-Py's default step is 1
+                if (st.guide) {
                     double length = p.empty() ? 1.0 : p[0];
                     guideBefore(length);
                     bend();
@@ -369,50 +479,37 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                     if (p.empty()) w.put(mp.sprout, {});
                     else w.put(mp.sprout, {p[0]});
                 }
-                if (mp.op == Op::Forward && p.size() >= 2) setWidth(p[1]);  // a frustum up to the top radius
                 break;
-            case Op::StepForward: {  // nF(length, dl): F(dl) repeated, then the rest
-                if (p.size() < 2 || !(p[1] > 0) || !(p[0] >= 0)) break;
-                const double steps = std::min(std::floor(p[0] / p[1]), 100000.0);
-                auto forward = [&](double length) {
-                    guideBefore(length);
-                    bend();
-                    w.put("F", {length});
-                    guideAfter();
-                };
-                for (double k = 0; k < steps; ++k) forward(p[1]);
-                if (const double rest = p[0] - steps * p[1]; rest > 1e-9) forward(rest);
+            case Op::StepForward:  // nF(length, dl[, radius[, radiusFunction]])
+                if (p.size() >= 2) stepForward(p[0], p[1], n >= 3 ? number(k, 2, -1) : -1, s.object(k, 3));
                 break;
-            }
             case Op::SetGuide: {  // SetGuide(curve, length[, yOrientation[, ccw]]); none: cleared
                 PyObject* curve = s.object(k, 0);
-                if (!curve) {
-                    st.guide.reset();
-                    break;
-                }
-                std::shared_ptr<const GuideCurve>& c = curves[curve];
-                if (!c) c = sampledCurve(curve);
-                if (!c) {
+                if (!curve) st.guide.reset();
+                else if (!setGuide(curve, number(k, 1, 0), number(k, 2, 0) != 0, number(k, 3, 0) != 0))
                     leftOut.insert(name + " with a value that is not a curve");
+                break;
+            }
+            case Op::SetContour: {  // SetContour(curve); none: round again
+                PyObject* curve = s.object(k, 0);
+                st.section = curve ? sectionOf(curve) : -1;
+                if (curve && st.section < 0) leftOut.insert(name + " with a value that is not a 2D curve");
+                w.put("SetContour", {double(st.section)});
+                break;
+            }
+            case Op::Sweep: {  // Sweep(path, section, length, dl[, radius = 1[, radiusFunction]])
+                PyObject* path = s.object(k, 0);
+                PyObject* section = s.object(k, 1);
+                const double length = number(k, 2, 0), dl = number(k, 3, 0);
+                if (!path || !section || !(length > 0) || !(dl > 0)) {
+                    leftOut.insert(name + " without a path, a section, a length and a step");
                     break;
                 }
-                auto number = [&](size_t a, double otherwise) {
-                    PyObject* v = s.object(k, a);
-                    const double d = v ? PyFloat_AsDouble(v) : otherwise;
-                    if (PyErr_Occurred()) PyErr_Clear();
-                    return v && std::isfinite(d) ? d : otherwise;
-                };
-                Guide g;
-                g.curve = c;
-                g.total = number(1, c->length);
-                if (!(g.total > 0)) break;
-                g.scale = g.total / c->length;
-                g.yOrientation = number(2, 0) != 0;
-                g.ccw = number(3, 0) != 0;
-                g.lastPosition = c->points.front();
-                if (c->is3D) g.lastHeading = {0, 0, 1};
-                else g.lastHeading = g.yOrientation ? glm::dvec3(0, g.ccw ? -1 : 1, 0) : glm::dvec3(g.ccw ? -1 : 1, 0, 0);
-                st.guide = g;
+                if (!setGuide(path, length, false, false)) leftOut.insert(name + " with a path that is not a curve");
+                st.section = sectionOf(section);
+                if (st.section < 0) leftOut.insert(name + " with a section that is not a 2D curve");
+                w.put("SetContour", {double(st.section)});
+                stepForward(length, dl, number(k, 4, 1.0), s.object(k, 5));
                 break;
             }
             case Op::EndGuide: st.guide.reset(); break;
@@ -447,7 +544,11 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             case Op::PolyBegin:
             case Op::PolyVertex:
             case Op::PolyEnd:
-            case Op::Bare: w.put(mp.sprout, {}); break;
+            case Op::Bare:
+                w.put(mp.sprout, {});
+                if (mp.sprout == std::string_view("@Gs")) st.inCurve = true;
+                if (mp.sprout == std::string_view("@Ge")) st.inCurve = false;
+                break;
             case Op::Push:
                 stack.push_back(st);
                 w.put("[", {});

@@ -41,6 +41,10 @@ struct Settings {
     std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
     double tropismStrength = 0;
     std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
+    // Cross-sections for generalized cylinders, by SetContour(k): x y pairs, the stem's radius
+    // one unit (x along the turtle's left, y along its up); closed when the last point is the
+    // first. Made by the L-Py drawing (PlantGL's SetContour and Sweep curves).
+    std::vector<std::vector<float>> sections;
     Toggle gradient = Toggle::Auto;      // colour by branch order (Auto: when no colour modules)
     std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
     ViewHint view = ViewHint::Auto;

@@ -69,6 +69,24 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
     glm::vec3 t = safeNormalize(samples[0].t, glm::vec3(0, 1, 0));
     glm::vec3 u = curve.left - glm::dot(curve.left, t) * t;
     u = safeNormalize(u, glm::normalize(glm::cross(std::fabs(t.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0), t)));
+    // The section: a circle, or the given one (a closed one without its repeated last point).
+    std::vector<glm::vec2> ring = curve.section;
+    bool closed = ring.empty() || (ring.size() > 2 && glm::length(ring.front() - ring.back()) < 1e-6f);
+    if (ring.empty())
+        for (int k = 0; k < kSides; ++k) ring.emplace_back(std::cos(2 * kPi * float(k) / kSides), std::sin(2 * kPi * float(k) / kSides));
+    else if (closed) ring.pop_back();
+    if (ring.size() < 2) return;
+    const std::uint32_t sides = std::uint32_t(ring.size());
+    // Each point's normal in the section's plane: across the section's outline there (for a
+    // circle, the point itself).
+    std::vector<glm::vec2> across(sides);
+    for (std::uint32_t k = 0; k < sides; ++k) {
+        const glm::vec2 prev = ring[k > 0 ? k - 1 : closed ? sides - 1 : 0], next = ring[k + 1 < sides ? k + 1 : closed ? 0 : sides - 1];
+        const glm::vec2 d = next - prev;
+        const float n = glm::length(d);
+        across[k] = n > 1e-12f ? glm::vec2(d.y, -d.x) / n : glm::vec2(0, 1);
+        if (curve.section.empty()) across[k] = ring[k];
+    }
     const std::uint32_t base = std::uint32_t(mesh.positions.size());
     for (size_t i = 0; i < samples.size(); ++i) {
         const Sample& s = samples[i];
@@ -87,21 +105,20 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         }
         const glm::vec3 w = glm::cross(t, u);
         const float r = s.r * radiusScale;
-        for (int k = 0; k < kSides; ++k) {
-            const float a = 2 * kPi * float(k) / kSides;
-            const glm::vec3 n = std::cos(a) * u + std::sin(a) * w;
-            mesh.positions.push_back(s.p + r * n);
-            mesh.normals.push_back(n);
+        for (std::uint32_t k = 0; k < sides; ++k) {
+            mesh.positions.push_back(s.p + r * (ring[k].x * u + ring[k].y * w));
+            mesh.normals.push_back(safeNormalize(across[k].x * u + across[k].y * w, w));
             mesh.colours.push_back(s.colour);
         }
     }
     const std::uint32_t rings = std::uint32_t(samples.size());
     for (std::uint32_t i = 0; i + 1 < rings; ++i)
-        for (std::uint32_t k = 0; k < kSides; ++k) {
-            const std::uint32_t a = base + i * kSides + k, b = base + i * kSides + (k + 1) % kSides;
-            const std::uint32_t c = a + kSides, d = b + kSides;
+        for (std::uint32_t k = 0; k < (closed ? sides : sides - 1); ++k) {
+            const std::uint32_t a = base + i * sides + k, b = base + i * sides + (k + 1) % sides;
+            const std::uint32_t c = a + sides, d = b + sides;
             mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});
         }
+    if (!closed) return;  // an open surface has no ends to cap
     // Caps: a fan at each end, facing out along the curve.
     for (int end = 0; end < 2; ++end) {
         const Sample& s = end == 0 ? samples.front() : samples.back();
@@ -110,15 +127,15 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         mesh.positions.push_back(s.p);
         mesh.normals.push_back(n);
         mesh.colours.push_back(s.colour);
-        const std::uint32_t ring = base + (end == 0 ? 0 : (rings - 1) * kSides);
+        const std::uint32_t ringStart = base + (end == 0 ? 0 : (rings - 1) * sides);
         const std::uint32_t first = std::uint32_t(mesh.positions.size());
-        for (int k = 0; k < kSides; ++k) {
-            mesh.positions.push_back(mesh.positions[ring + std::uint32_t(k)]);
+        for (std::uint32_t k = 0; k < sides; ++k) {
+            mesh.positions.push_back(mesh.positions[ringStart + k]);
             mesh.normals.push_back(n);
             mesh.colours.push_back(s.colour);
         }
-        for (std::uint32_t k = 0; k < kSides; ++k) {
-            const std::uint32_t a = first + k, b = first + (k + 1) % kSides;
+        for (std::uint32_t k = 0; k < sides; ++k) {
+            const std::uint32_t a = first + k, b = first + (k + 1) % sides;
             if (end == 0) mesh.indices.insert(mesh.indices.end(), {centre, b, a});
             else mesh.indices.insert(mesh.indices.end(), {centre, a, b});
         }

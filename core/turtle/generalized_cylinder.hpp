@@ -5,6 +5,7 @@
 // its tangents the turtle's headings scaled by the chord, the radius interpolated along it,
 // swept with a rotation-minimising frame (no twist) into a triangle mesh.
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -24,10 +25,14 @@ struct GeneralizedCylinder {
     std::vector<CurvePoint> points;
     glm::vec3 left{-1, 0, 0};   // the turtle's left at the start: the frame's first axis
     float tangentScale = 1.0f;  // @Gt: the Hermite tangents' length, in chords
+    // The cross-section (SetContour), the radius one unit, x along the frame's left and y
+    // along its up; empty: a circle of 12 sides. Closed when its last point is its first
+    // (then capped), else an open surface (a leaf blade swept along its midrib).
+    std::vector<glm::vec2> section;
 };
 
-// Appends the tube (12 sides, open ends capped) to `mesh`; radii are multiplied by
-// `radiusScale` (the turtle's automatic width). Curves of fewer than 2 points add nothing.
+// Appends the tube (open ends capped) to `mesh`; radii are multiplied by `radiusScale` (the
+// turtle's automatic width). Curves of fewer than 2 points add nothing.
 void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh);
 
 }  // namespace sprout

@@ -17,7 +17,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
         m_arity[s] = g.alphabet[SymbolId(s)].arity;
         m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
-        m_hasCurves |= m_actions[s] == Act::CurveStart;
+        m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section;
         if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {
             m_actions[s] = Act::SurfaceFile;
             m_surfaceFiles.resize(g.alphabet.size(), nullptr);

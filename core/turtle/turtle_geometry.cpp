@@ -14,6 +14,10 @@ void Turtle::curveCommand(State& t, Act act, const double* p) {
         if (m_curves.size() >= 32767) return;  // the state keeps the index in 16 bits
         m_curves.emplace_back();
         m_curves.back().curve.left = toGlm(t.L);
+        if (t.section >= 0) {
+            const std::vector<float>& xy = m_g.settings.sections[size_t(t.section)];
+            for (size_t k = 0; k + 1 < xy.size(); k += 2) m_curves.back().curve.section.emplace_back(xy[k], xy[k + 1]);
+        }
         t.curve = std::int16_t(m_curves.size() - 1);
         t.lastSegment = -1;
         curvePoint(t, 1);

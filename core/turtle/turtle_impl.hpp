@@ -386,6 +386,9 @@ private:
             case Act::CurvePoint:
             case Act::CurveEnd:
             case Act::CurveTangent: curveCommand(t, act, p); break;
+            case Act::Section:
+                t.section = p && *p >= 0 && *p < double(m_g.settings.sections.size()) ? std::int16_t(*p) : std::int16_t(-1);
+                break;
             default: break;
         }
     }

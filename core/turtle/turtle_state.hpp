@@ -21,7 +21,7 @@ enum class Act : std::uint8_t {
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
-    LineTo, OLineTo,
+    LineTo, OLineTo, Section,
     SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
 };
 
@@ -47,6 +47,9 @@ inline Act actionOf(const std::string& name) {
         {"LineTo", Act::LineTo}, {"OLineTo", Act::OLineTo},
         // cpfg's generalized cylinders: start, control point, end, tangent length.
         {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},
+        // The cross-section of the generalized cylinders started after it (Settings::sections;
+        // none or -1: round).
+        {"SetContour", Act::Section},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;
@@ -82,6 +85,7 @@ struct State {
     std::uint16_t order = 0;
     std::int8_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
     std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
+    std::int16_t section = -1;  // Settings::sections index of the next @Gs's cross-section; -1: round
     float angleScale = 1;     // @A: factor on the default turning angle
     // Resolved when the colour or the branch order changes: measured faster than looking it
     // up at every segment, even though it makes the state 80 bytes instead of 64.

@@ -3,6 +3,7 @@
 //   # expect N: STRING     the string after N steps, as `sprout expand -n N` prints it
 // and the collection of L-Py's own examples (../shared/corpus/lpy, when it is there).
 #include <gtest/gtest.h>
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -187,6 +188,73 @@ TEST(Lpy, TheModelIsDrawnInLpysFrame) {
     EXPECT_NEAR(geo.cylinders[0].startRadius, 0.5f, 1e-5f);
     EXPECT_NEAR(std::hypot(geo.cylinders[1].end.x, geo.cylinders[1].end.z), std::sin(60 * 3.14159265 / 180), 1e-4);
     EXPECT_NEAR(geo.cylinders[1].end.y, 2 + 0.5, 1e-4);
+}
+
+// Cross-sections (PlantGL's SetContour and Sweep): a tube after SetContour(curve) has that
+// curve's shape, scaled by the width; an open curve sweeps a surface (a leaf blade), a closed
+// one a capped tube. Sweep(path, section, length, dl, radius, function) is SetGuide, SetContour
+// and nF together, its width radius times the function from its first x to its last. And nF
+// with a radius ramps the width to it.
+TEST(Lpy, SectionsAndSweepsAreSweptAsInPlantGL) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    auto draw = [](const std::string& axiom, Geometry& geo) {
+        lpy::Model m = lpy::runModel("from openalea.plantgl.all import *\n"
+                                     "blade = Polyline2D([(-1, 0), (1, 0)])\nstraight = Polyline2D([(0, 0), (1, 0)])\n"
+                                     "ramp = QuantisedFunction([(0, 0), (1, 1)])\n"
+                                     "Axiom: " + axiom + "\nderivation length: 0\nproduction:\nendlsystem\n", {});
+        ASSERT_TRUE(m.ok()) << messages(m);
+        EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+        TurtleOptions to;
+        interpret(m.drawable->axiom, *m.drawable, to, geo);
+    };
+    {
+        SCOPED_TRACE("a blade swept straight up, 2 long, 0.3 either side at the top, 0 at the foot");
+        Geometry geo;
+        draw("Sweep(straight, blade, 2, 0.5, 0.3, ramp)", geo);
+        EXPECT_TRUE(geo.cylinders.empty());
+        const Mesh& m = geo.polygons;
+        ASSERT_FALSE(m.positions.empty());
+        glm::vec3 lo(1e9f), hi(-1e9f);
+        for (const glm::vec3& q : m.positions) lo = glm::min(lo, q), hi = glm::max(hi, q);
+        EXPECT_NEAR(lo.y, 0, 1e-4f);  // along the heading (L-Py's z)
+        EXPECT_NEAR(hi.y, 2, 1e-4f);
+        EXPECT_NEAR(lo.x, -0.3f, 1e-3f);  // across, along the left (L-Py's y)
+        EXPECT_NEAR(hi.x, 0.3f, 1e-3f);
+        EXPECT_NEAR(lo.z, 0, 1e-5f);  // no thickness: an open section is a surface
+        EXPECT_NEAR(hi.z, 0, 1e-5f);
+        // Two points a ring: a strip of two triangles between rings, no caps.
+        EXPECT_EQ(m.indices.size() / 3, 2 * (m.positions.size() / 2 - 1));
+        // The foot is a point (the ramp's 0), the top full width.
+        float footWidth = 0, topWidth = 0;
+        for (const glm::vec3& q : m.positions) {
+            if (q.y < 1e-4f) footWidth = std::max(footWidth, std::fabs(q.x));
+            if (q.y > 2 - 1e-4f) topWidth = std::max(topWidth, std::fabs(q.x));
+        }
+        EXPECT_NEAR(footWidth, 0, 1e-4f);
+        EXPECT_NEAR(topWidth, 0.3f, 1e-3f);
+    }
+    {
+        SCOPED_TRACE("a closed section in a generalized cylinder: a square tube, capped");
+        Geometry geo;
+        draw("_(0.5) SetContour(Polyline2D([(1, 1), (-1, 1), (-1, -1), (1, -1), (1, 1)])) @Gc F(1) F(1) @Ge", geo);
+        const Mesh& m = geo.polygons;
+        ASSERT_FALSE(m.positions.empty());
+        float corner = 0;
+        for (const glm::vec3& q : m.positions) corner = std::max(corner, std::hypot(q.x, q.z));
+        EXPECT_NEAR(corner, 0.5f * std::sqrt(2.0f), 1e-3f) << "the square's corners, 0.5 from the axis each way";
+        // Rings of 4 (the repeated last point dropped); 8 triangles between two rings; caps.
+        const size_t capVertices = 2 * 5, rings = (m.positions.size() - capVertices) / 4;
+        EXPECT_EQ(m.indices.size() / 3, 8 * (rings - 1) + 2 * 4);
+    }
+    {
+        SCOPED_TRACE("nF with a radius: the width ramps from 0.1 to it");
+        Geometry geo;
+        draw("nF(2, 0.5, 0.4)", geo);
+        ASSERT_EQ(geo.cylinders.size(), 4u);
+        EXPECT_NEAR(geo.cylinders[0].startRadius, 0.1f, 1e-5f);
+        EXPECT_NEAR(geo.cylinders[3].endRadius, 0.4f, 1e-5f);
+        EXPECT_NEAR(geo.cylinders[1].endRadius, 0.25f, 1e-5f);
+    }
 }
 
 // L-Py's rolls: `/` is RollL, about the heading by +angle, which takes the left axis towards
