@@ -17,6 +17,8 @@ enum class Op : std::uint8_t {
     IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
     Bare,  // the Sprout module, without parameters
     Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
+    Point,  // the Sprout module with L-Py's x y z as Sprout's
+    Frame, InterpolateColours,
 };
 
 struct Mapping {
@@ -33,6 +35,11 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         {"/", {Op::Turn, "\\"}}, {"\\", {Op::Turn, "/"}}, {"iRollL", {Op::Turn, "\\"}}, {"iRollR", {Op::Turn, "/"}},
         {"|", {Op::Around, "|"}}, {"@v", {Op::Vertical, "$"}}, {"@R", {Op::SetHead, "@R"}},
         {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "LineTo"}}, {"OLineTo", {Op::LineTo, "OLineTo"}},
+        {"LineRel", {Op::LineTo, "LineRel"}}, {"OLineRel", {Op::LineTo, "OLineRel"}}, {"MoveRel", {Op::Point, "MoveRel"}},
+        {"Pinpoint", {Op::Point, "Pinpoint"}}, {"PinpointRel", {Op::Point, "PinpointRel"}},
+        // The turtle's frame as three arrows (heading red, up blue, left green), and a colour
+        // between two materials.
+        {"Frame", {Op::Frame}}, {"InterpolateColors", {Op::InterpolateColours}},
         {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
         {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
         {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
@@ -328,6 +335,24 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         sections[curve] = index;
         return index;
     };
+    // The palette entry of a colour, added when it is new (up to 250 entries; else the nearest).
+    auto paletteIndex = [&](std::uint32_t rgba) {
+        auto& pal = g->settings.palette;
+        auto found = std::find(pal.begin(), pal.end(), rgba);
+        if (found != pal.end()) return int(found - pal.begin());
+        if (pal.size() < 250) {
+            pal.push_back(rgba);
+            return int(pal.size()) - 1;
+        }
+        int best = 0;
+        long bestD = -1;
+        for (size_t i = 0; i < pal.size(); ++i) {
+            long d = 0;
+            for (int shift = 8; shift <= 24; shift += 8) d += std::labs(long((pal[i] >> shift) & 0xFF) - long((rgba >> shift) & 0xFF));
+            if (bestD < 0 || d < bestD) bestD = d, best = int(i);
+        }
+        return best;
+    };
     auto setGuide = [&](PyObject* curve, double total, bool yOrientation, bool ccw) {
         std::shared_ptr<const GuideCurve>& c = curves[curve];
         if (!c) c = sampledCurve(curve);
@@ -569,6 +594,41 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 if (p.size() >= 3) w.put("@M", {p[1], p[2], p[0]});
                 else if (p.empty()) w.put("@M", {0, 0, 0});
                 break;
+            case Op::Point:  // L-Py's x y z are Sprout's z x y
+                if (p.size() >= 3) w.put(mp.sprout, {p[1], p[2], p[0]});
+                break;
+            case Op::Frame: {  // Frame(size = 1, capHeightRatio = 0.2, capRadiusRatio = 2): PlantGL's _frame
+                const double size = p.size() >= 1 ? p[0] : 1.0, capHeight = p.size() >= 2 ? std::clamp(p[1], 0.0, 1.0) : 0.2,
+                             capRadius = p.size() >= 3 ? std::max(p[2], 0.0) : 2.0;
+                if (!(size > 0)) break;
+                const std::pair<const char*, std::uint32_t> arrows[] = {
+                    {nullptr, 0xFA3232FFu}, {"^", 0x3232FAFFu}, {"+", 0x32FA32FFu}};  // heading, up, left
+                for (const auto& [turn, rgba] : arrows) {
+                    w.put("[", {});
+                    if (turn) w.put(turn, {90});
+                    w.put(";", {double(paletteIndex(rgba))});
+                    w.put("!", {2 * st.width});
+                    if (capHeight < 1) w.put("F", {size * (1 - capHeight)});
+                    w.put("f", {0});  // the stick keeps its width: the cap's starts anew
+                    w.put("!", {2 * st.width * capRadius});
+                    if (capHeight > 0) w.put("F", {size * capHeight});
+                    w.put("!", {0});  // a cone
+                    w.put("]", {});
+                }
+                break;
+            }
+            case Op::InterpolateColours: {  // InterpolateColors(i, j, alpha): PlantGL mixes the two materials
+                if (p.size() < 2) break;
+                const auto& pal = g->settings.palette;
+                auto at = [&](double x) { return pal[size_t(std::clamp(int(std::lround(std::clamp(x, -1e6, 1e6))), 0, int(pal.size()) - 1))]; };
+                const std::uint32_t a = at(p[0]), b = at(p[1]);
+                const double f = p.size() >= 3 ? std::clamp(p[2], 0.0, 1.0) : 0.5;
+                std::uint32_t mixed = 0;
+                for (int shift = 24; shift >= 0; shift -= 8)
+                    mixed |= std::uint32_t(std::lround(double((a >> shift) & 0xFF) * (1 - f) + double((b >> shift) & 0xFF) * f)) << shift;
+                w.put(";", {double(paletteIndex(mixed))});
+                break;
+            }
             case Op::LineTo:  // L-Py's x y z are Sprout's z x y
                 if (p.size() >= 3) w.put(mp.sprout, {p[1], p[2], p[0]});
                 if (p.size() >= 4) setWidth(p[3]);

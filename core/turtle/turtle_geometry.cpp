@@ -48,9 +48,18 @@ void Turtle::curvePoint(const State& t, int subdivisions) {
 
 // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
 void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
-    if (act == Act::MoveTo) {
+    if (act == Act::Pinpoint || act == Act::PinpointRel) {
         if (!p || arity < 3) return;
-        t.pos = v4{float(p[0]), float(p[1]), float(p[2]), 0};
+        glm::vec3 to{float(p[0]), float(p[1]), float(p[2])};
+        if (act == Act::Pinpoint) to -= toGlm(t.pos);
+        tendTo(t, to);
+        return;
+    }
+    if (act == Act::MoveTo || act == Act::MoveRel) {
+        if (!p || arity < 3) return;
+        const v4 by{float(p[0]), float(p[1]), float(p[2]), 0};
+        t.pos = act == Act::MoveRel ? t.pos + by : by;
+        t.pos[3] = 0;
         t.lastSegment = -1;  // the next segment starts a new stem there
         addBound(t.pos);
         if (!m_polygons.empty()) vertex(t);

@@ -378,10 +378,15 @@ private:
                 if (m_opt.queries) m_opt.queries->push_back({toGlm(t.pos), toGlm(t.H), toGlm(up(t)), toGlm(t.L)});
                 break;
             case Act::MoveTo:
+            case Act::MoveRel:
+            case Act::Pinpoint:
+            case Act::PinpointRel:
             case Act::SetHeading:
             case Act::Disc: cpfgCommand(t, act, p, arity); break;
             case Act::LineTo:
-            case Act::OLineTo: lineTo(t, act, p, arity, i); break;
+            case Act::OLineTo:
+            case Act::LineRel:
+            case Act::OLineRel: lineTo(t, act, p, arity, i); break;
             case Act::CurveStart:
             case Act::CurvePoint:
             case Act::CurveEnd:
@@ -423,22 +428,19 @@ private:
         return m_palette[size_t(((index % n) + n) % n)];
     }
 
-    // A stem from the turtle to (x, y, z); OLineTo also turns the heading towards it.
+    // A stem from the turtle to (x, y, z), or by it (LineRel, OLineRel); OLineTo and OLineRel
+    // also turn the heading towards it.
     void lineTo(State& t, Act act, const double* p, int arity, size_t i) {
         if (!p || arity < 3) return;
-        const v4 target{float(p[0]), float(p[1]), float(p[2]), 0};
+        v4 target{float(p[0]), float(p[1]), float(p[2]), 0};
+        if (act == Act::LineRel || act == Act::OLineRel) target += t.pos, target[3] = 0;
         const v4 d = target - t.pos;
         const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         if (!(len > 0)) return;
-        if (act == Act::OLineTo) {
-            const v4 h = d * (1.0f / len);
-            v4 l = t.L - h * (t.L[0] * h[0] + t.L[1] * h[1] + t.L[2] * h[2]);
-            const float ln = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
-            if (ln > 1e-6f) {
-                t.H = h;
-                t.L = l * (1.0f / ln);
-            }
-        }
+        // The heading turned towards it by the least rotation (PlantGL's _tendTo), which turns
+        // left and up with it (projecting left onto the new normal plane failed for a point
+        // straight to the left).
+        if (act == Act::OLineTo || act == Act::OLineRel) tendTo(t, toGlm(d));
         t.lastSegment = std::int32_t(m_seg->count());
         CylinderInstance& c = m_seg->next();
         v4 a = t.pos, b = target;
@@ -525,6 +527,13 @@ private:
         const float a = std::min(e, 1.0f) * std::atan2(mag, glm::dot(h, towards));
         t.H = fromGlm(rodrigues(h, axis, a));
         t.L = fromGlm(rodrigues(toGlm(t.L), axis, a));
+    }
+
+    // H turned to `to` by the least rotation; straight behind, half a turn about up (PlantGL).
+    void tendTo(State& t, glm::vec3 to) {
+        const glm::vec3 h = toGlm(t.H);
+        if (glm::dot(to, h) < 0 && glm::length(glm::cross(to, h)) < 1e-6f * glm::length(to)) rotate(t.H, t.L, -1.0f, 0.0f);
+        else bendByFraction(t, to, 1.0f);
     }
 
     static glm::vec3 rodrigues(const glm::vec3& v, const glm::vec3& k, float a) {

@@ -21,7 +21,7 @@ enum class Act : std::uint8_t {
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
-    LineTo, OLineTo, Section,
+    LineTo, OLineTo, LineRel, OLineRel, MoveRel, Pinpoint, PinpointRel, Section,
     SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
 };
 
@@ -45,6 +45,11 @@ inline Act actionOf(const std::string& name) {
         // L-Py's (PlantGL's turtle): a stem straight to a point, the heading kept (LineTo) or
         // turned towards it (OLineTo).
         {"LineTo", Act::LineTo}, {"OLineTo", Act::OLineTo},
+        // And the same by a vector from the turtle (LineRel, OLineRel), a move by one
+        // (MoveRel), and the heading turned towards a point or along a vector (Pinpoint,
+        // PinpointRel: the least rotation, PlantGL's _tendTo).
+        {"LineRel", Act::LineRel}, {"OLineRel", Act::OLineRel}, {"MoveRel", Act::MoveRel},
+        {"Pinpoint", Act::Pinpoint}, {"PinpointRel", Act::PinpointRel},
         // cpfg's generalized cylinders: start, control point, end, tangent length.
         {"@Gs", Act::CurveStart}, {"@Gc", Act::CurvePoint}, {"@Ge", Act::CurveEnd}, {"@Gt", Act::CurveTangent},
         // The cross-section of the generalized cylinders started after it (Settings::sections;

@@ -4,6 +4,7 @@
 // and the collection of L-Py's own examples (../shared/corpus/lpy, when it is there).
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -254,6 +255,62 @@ TEST(Lpy, SectionsAndSweepsAreSweptAsInPlantGL) {
         EXPECT_NEAR(geo.cylinders[0].startRadius, 0.1f, 1e-5f);
         EXPECT_NEAR(geo.cylinders[3].endRadius, 0.4f, 1e-5f);
         EXPECT_NEAR(geo.cylinders[1].endRadius, 0.25f, 1e-5f);
+    }
+}
+
+// The rest of PlantGL's turtle that moves or points it: MoveRel, LineRel and OLineRel by a
+// vector, Pinpoint and PinpointRel (the heading turned to a point or a direction by the least
+// rotation, as OLineTo's and OLineRel's), Frame (three arrows: heading red, up blue, left
+// green) and InterpolateColors (a colour between two materials). L-Py's x, y, z are Sprout's
+// z, x, y.
+TEST(Lpy, RelativeMovesPinpointsFramesAndMixedColours) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    auto draw = [](const std::string& axiom, Geometry& geo, std::shared_ptr<const Grammar>* drawn = nullptr) {
+        lpy::Model m = lpy::runModel("Axiom: " + axiom + "\nderivation length: 0\nproduction:\nendlsystem\n", {});
+        ASSERT_TRUE(m.ok()) << messages(m);
+        EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+        TurtleOptions to;
+        interpret(m.drawable->axiom, *m.drawable, to, geo);
+        if (drawn) *drawn = m.drawable;
+    };
+    auto near = [](glm::vec3 a, glm::vec3 b) { return glm::length(a - b) < 1e-4f; };
+    {
+        Geometry geo;
+        draw("MoveRel(0, 0, 3) F(1) LineRel(1, 0, 0) OLineRel(0, 1, 0) F(1)", geo);
+        ASSERT_EQ(geo.cylinders.size(), 4u);
+        EXPECT_TRUE(near(geo.cylinders[0].start, {0, 3, 0})) << "moved up 3 without drawing";
+        EXPECT_TRUE(near(geo.cylinders[1].end, {0, 4, 1})) << "a line by L-Py's +x, heading kept";
+        EXPECT_TRUE(near(geo.cylinders[2].end, {1, 4, 1})) << "a line by L-Py's +y";
+        EXPECT_TRUE(near(geo.cylinders[3].end, {2, 4, 1})) << "and the heading turned along it";
+    }
+    {
+        Geometry geo;
+        draw("[Pinpoint(1, 0, 1) F(1)] [PinpointRel(0, 0, -1) F(1)] f(1) Pinpoint(0, 0, 0) F(1)", geo);
+        ASSERT_EQ(geo.cylinders.size(), 3u);
+        const float h = std::sqrt(0.5f);
+        EXPECT_TRUE(near(geo.cylinders[0].end, {0, h, h})) << "towards the point (1, 0, 1)";
+        EXPECT_TRUE(near(geo.cylinders[1].end, {0, -1, 0})) << "straight behind: half a turn";
+        EXPECT_TRUE(near(geo.cylinders[2].end, {0, 0, 0})) << "back to the origin from 1 above it";
+    }
+    {
+        Geometry geo;
+        std::shared_ptr<const Grammar> g;
+        draw("_(0.05) Frame(2) InterpolateColors(3, 5, 0.5) F(1)", geo, &g);
+        // Three arrows (a stick and a cone each), then the stem.
+        ASSERT_EQ(geo.cylinders.size(), 7u);
+        const std::uint32_t red = 0xFA3232FFu, blue = 0x3232FAFFu, green = 0x32FA32FFu;
+        EXPECT_EQ(geo.cylinders[0].colour, red);
+        EXPECT_TRUE(near(geo.cylinders[1].end, {0, 2, 0})) << "the heading's arrow";
+        EXPECT_NEAR(geo.cylinders[1].startRadius, 0.1f, 1e-5f) << "its cone twice the width";
+        EXPECT_NEAR(geo.cylinders[1].endRadius, 0, 1e-5f);
+        EXPECT_NEAR(geo.cylinders[0].endRadius, 0.05f, 1e-5f) << "its stick the width";
+        EXPECT_EQ(geo.cylinders[2].colour, blue);
+        EXPECT_TRUE(near(geo.cylinders[3].end, {0, 0, 2})) << "the up arrow (L-Py's +x)";
+        EXPECT_EQ(geo.cylinders[4].colour, green);
+        EXPECT_TRUE(near(geo.cylinders[5].end, {-2, 0, 0})) << "the left arrow (L-Py's -y)";
+        // Materials 3 (red 60,0,0) and 5 (blue 0,0,60), each times 3: half of each.
+        const std::uint32_t c = geo.cylinders[6].colour;
+        EXPECT_EQ(c, 0x5A005AFFu) << std::hex << c;
     }
 }
 
