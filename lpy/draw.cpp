@@ -9,6 +9,8 @@
 #include <set>
 #include <unordered_map>
 
+#include "core/language/surface_file.hpp"
+
 namespace sprout::lpy {
 namespace {
 
@@ -18,7 +20,7 @@ enum class Op : std::uint8_t {
     Bare,  // the Sprout module, without parameters
     Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
     Point,  // the Sprout module with L-Py's x y z as Sprout's
-    Frame, InterpolateColours,
+    Frame, InterpolateColours, Shape,
 };
 
 struct Mapping {
@@ -40,6 +42,8 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         // The turtle's frame as three arrows (heading red, up blue, left green), and a colour
         // between two materials.
         {"Frame", {Op::Frame}}, {"InterpolateColors", {Op::InterpolateColours}},
+        // A PlantGL shape at the turtle (@g(shape[, scale])), as triangles in its frame.
+        {"@g", {Op::Shape}},
         {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
         {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
         {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
@@ -335,6 +339,53 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         sections[curve] = index;
         return index;
     };
+    // @g's shapes: each shape object made into triangles once (by the PlantGL module's
+    // _sprout_triangles), a surface of the drawing named after it; "" for one with no surface.
+    std::unordered_map<PyObject*, std::string> shapes;
+    auto shapeSurface = [&](PyObject* shape) -> const std::string& {
+        auto [it, fresh] = shapes.try_emplace(shape);
+        if (!fresh || !shape) return it->second;
+        PyObject* pgl = PyImport_ImportModule("openalea.plantgl.all");
+        PyObject* r = pgl ? PyObject_CallMethod(pgl, "_sprout_triangles", "O", shape) : nullptr;
+        Py_XDECREF(pgl);
+        PyObject *points = nullptr, *triangles = nullptr;
+        auto sf = std::make_shared<SurfaceFile>();
+        if (r && PyTuple_Check(r) && PyTuple_GET_SIZE(r) == 2 && (points = PySequence_Fast(PyTuple_GET_ITEM(r, 0), "points")) &&
+            (triangles = PySequence_Fast(PyTuple_GET_ITEM(r, 1), "triangles"))) {
+            const Py_ssize_t np = PySequence_Fast_GET_SIZE(points), nt = PySequence_Fast_GET_SIZE(triangles);
+            bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000;
+            for (Py_ssize_t i = 0; i < np && ok; ++i) {
+                std::vector<double> q;
+                ok = numbers(PySequence_Fast_GET_ITEM(points, i), q) && q.size() == 3;
+                // PlantGL's x, y, z (left, up, heading) as the surface's heading, left, up.
+                if (ok) sf->positions.emplace_back(float(q[2]), float(q[0]), float(q[1]));
+            }
+            for (Py_ssize_t i = 0; i < nt && ok; ++i) {
+                std::vector<double> t;
+                ok = numbers(PySequence_Fast_GET_ITEM(triangles, i), t) && t.size() == 3;
+                for (double v : t) ok = ok && v >= 0 && v < double(np);
+                if (ok)
+                    for (double v : t) sf->indices.push_back(std::uint32_t(v));
+            }
+            if (ok && !sf->indices.empty()) {  // normals: the faces' around each point, by area
+                sf->normals.assign(sf->positions.size(), glm::vec3(0));
+                for (size_t i = 0; i + 2 < sf->indices.size(); i += 3) {
+                    const glm::vec3 &a = sf->positions[sf->indices[i]], &b = sf->positions[sf->indices[i + 1]],
+                                    &c = sf->positions[sf->indices[i + 2]];
+                    const glm::vec3 n = glm::cross(b - a, c - a);
+                    for (int j = 0; j < 3; ++j) sf->normals[sf->indices[i + size_t(j)]] += n;
+                }
+                for (glm::vec3& n : sf->normals) n = glm::length(n) > 0 ? glm::normalize(n) : glm::vec3(0, 0, 1);
+                it->second = "@g#" + std::to_string(g->surfaceFiles.size());
+                g->surfaceFiles[it->second] = std::move(sf);
+            }
+        }
+        Py_XDECREF(points);
+        Py_XDECREF(triangles);
+        Py_XDECREF(r);
+        if (PyErr_Occurred()) PyErr_Clear();
+        return it->second;
+    };
     // The palette entry of a colour, added when it is new (up to 250 entries; else the nearest).
     auto paletteIndex = [&](std::uint32_t rgba) {
         auto& pal = g->settings.palette;
@@ -594,6 +645,12 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 if (p.size() >= 3) w.put("@M", {p[1], p[2], p[0]});
                 else if (p.empty()) w.put("@M", {0, 0, 0});
                 break;
+            case Op::Shape: {  // @g(shape[, scale])
+                const std::string& surface = shapeSurface(s.object(k, 0));
+                if (surface.empty()) leftOut.insert(name + " with a curve, points, text or what is not a PlantGL shape");
+                else w.put(surface.c_str(), {number(k, 1, 1.0)});
+                break;
+            }
             case Op::Point:  // L-Py's x y z are Sprout's z x y
                 if (p.size() >= 3) w.put(mp.sprout, {p[1], p[2], p[0]});
                 break;

@@ -314,6 +314,42 @@ TEST(Lpy, RelativeMovesPinpointsFramesAndMixedColours) {
     }
 }
 
+// @g(shape[, scale]): a PlantGL shape at the turtle, in its frame (the shape's x along the
+// turtle's left, y along its up, z along its heading), with the turtle's colour; wrappers
+// (Scaled, Translated, AxisRotated, ...) applied. A curve has no surface: a warning names it.
+TEST(Lpy, PlantGLShapesAreDrawnAtTheTurtle) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::Model m = lpy::runModel("from openalea.plantgl.all import *\n"
+                                 "Axiom: [@M(0, 2, 1) @g(Box(1, 0.2, 0.5))] [@M(0, 0, 5) @g(Scaled(2, Sphere(1)), 0.5)]"
+                                 " @g(Polyline([(0, 0, 0), (1, 1, 1)]))\nderivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    ASSERT_EQ(m.diagnostics.size(), 1u) << messages(m);
+    EXPECT_NE(m.diagnostics[0].message.find("@g with a curve"), std::string::npos) << messages(m);
+    Geometry geo;
+    TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+    const Mesh& mesh = geo.polygons;
+    ASSERT_FALSE(mesh.indices.empty());
+    // The box at L-Py (0, 2, 1), Sprout (2, 1, 0): half sizes 1 along the left (Sprout x),
+    // 0.2 along the up (Sprout z), 0.5 along the heading (Sprout y).
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& q : mesh.positions)
+        if (q.y < 3) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    EXPECT_NEAR(lo.x, 1, 1e-4f);
+    EXPECT_NEAR(hi.x, 3, 1e-4f);
+    EXPECT_NEAR(lo.y, 0.5f, 1e-4f);
+    EXPECT_NEAR(hi.y, 1.5f, 1e-4f);
+    EXPECT_NEAR(lo.z, -0.2f, 1e-4f);
+    EXPECT_NEAR(hi.z, 0.2f, 1e-4f);
+    // The sphere at L-Py (0, 0, 5), Sprout (0, 5, 0): radius 1, scaled by 2, then by @g's 0.5.
+    float r = 0;
+    for (const glm::vec3& q : mesh.positions)
+        if (q.y > 3) r = std::max(r, glm::length(q - glm::vec3(0, 5, 0)));
+    EXPECT_NEAR(r, 1, 1e-3f);
+    // The turtle's colour: L-Py's material 1.
+    EXPECT_EQ(mesh.colours[0], 0xC3872DFFu);  // (65, 45, 15) times its diffuse, 3
+}
+
 // L-Py's rolls: `/` is RollL, about the heading by +angle, which takes the left axis towards
 // up (PlantGL's rollL); `\` is RollR. So /(90) then +(90) heads along the first up (L-Py's
 // +x, Sprout's +z), and \(90) then +(90) the other way; iRollL and iRollR turn alike.
