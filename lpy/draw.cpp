@@ -20,7 +20,7 @@ enum class Op : std::uint8_t {
     Bare,  // the Sprout module, without parameters
     Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
     Point,  // the Sprout module with L-Py's x y z as Sprout's
-    Frame, InterpolateColours, Shape,
+    Frame, InterpolateColours, Shape, Label,
 };
 
 struct Mapping {
@@ -44,6 +44,8 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         {"Frame", {Op::Frame}}, {"InterpolateColors", {Op::InterpolateColours}},
         // A PlantGL shape at the turtle (@g(shape[, scale])), as triangles in its frame.
         {"@g", {Op::Shape}},
+        // A text at the turtle (@L(text[, size]): PlantGL's label, facing the viewer).
+        {"@L", {Op::Label}},
         {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
         {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
         {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
@@ -342,6 +344,7 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
     // @g's shapes: each shape object made into triangles once (by the PlantGL module's
     // _sprout_triangles), a surface of the drawing named after it; "" for one with no surface.
     std::unordered_map<PyObject*, std::string> shapes;
+    std::unordered_map<std::string, int> labelIndex;  // each text's Settings::labels index
     auto shapeSurface = [&](PyObject* shape) -> const std::string& {
         auto [it, fresh] = shapes.try_emplace(shape);
         if (!fresh || !shape) return it->second;
@@ -645,6 +648,25 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 if (p.size() >= 3) w.put("@M", {p[1], p[2], p[0]});
                 else if (p.empty()) w.put("@M", {0, 0, 0});
                 break;
+            case Op::Label: {  // @L(text[, size])
+                PyObject* text = s.object(k, 0);
+                PyObject* str = text ? PyObject_Str(text) : nullptr;
+                Py_ssize_t length = 0;
+                const char* utf8 = str ? PyUnicode_AsUTF8AndSize(str, &length) : nullptr;
+                if (utf8 && length > 0) {
+                    auto& labels = g->settings.labels;
+                    std::string t(utf8, size_t(std::min<Py_ssize_t>(length, 200)));
+                    auto found = labelIndex.find(t);
+                    if (found == labelIndex.end() && labels.size() < 100000) {
+                        found = labelIndex.emplace(t, int(labels.size())).first;
+                        labels.push_back(t);
+                    }
+                    if (found != labelIndex.end()) w.put("Label", {double(found->second), number(k, 1, 13)});
+                }
+                Py_XDECREF(str);
+                if (PyErr_Occurred()) PyErr_Clear();
+                break;
+            }
             case Op::Shape: {  // @g(shape[, scale])
                 const std::string& surface = shapeSurface(s.object(k, 0));
                 if (surface.empty()) leftOut.insert(name + " with a curve, points, text or what is not a PlantGL shape");

@@ -7,6 +7,7 @@
 
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
+#include "app/labels.hpp"
 #include "app/animation.hpp"
 #include "app/cli/load.hpp"
 #include "app/presets.hpp"
@@ -303,6 +304,7 @@ int runRender(int argc, char** argv) {
         std::cerr << loaded->displayName << ": " << error << "\n";
         return 1;
     }
+    paintLabels(shot.image, shot.geometry, snapshotCamera(shot.geometry, o));
     if (args.flag("--transparent")) {
         // The sky (and ground, unless --no-ground) left out: each pixel the plant does not
         // change from the empty scene seen by the same camera is transparent (icons, overlays).

@@ -15,6 +15,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "app/image.hpp"
+#include "app/labels.hpp"
 #include "app/viewer/app.hpp"
 #include "core/environment/environment_drawing.hpp"
 
@@ -171,6 +172,7 @@ bool App::takeScreenshot(const std::string& path, int width, int height) {
         renderer.upload(*plant->geometry);
     }
     img.rgba = renderer.renderImage(cam, width, height, view.render);
+    if (plant && plant->geometry) paintLabels(img, *plant->geometry, cam);
     if (bigPlant && plant) {
         if (plant->prepared) renderer.upload(*static_cast<const render::PreparedScene*>(plant->prepared.get()));
         else renderer.upload(*plant->geometry);

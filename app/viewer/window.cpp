@@ -23,6 +23,7 @@
 #include "app/cli/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/image.hpp"
+#include "app/labels.hpp"
 #include "app/presets.hpp"
 #include "app/viewer/app.hpp"
 #include "app/viewer/window_input.hpp"
@@ -119,6 +120,26 @@ void warmUp(App& app, GLFWwindow* window) {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     glFinish();
+}
+
+// Labels (L-Py's @L) over the 3D view, where the camera shows their points, in the panel's font
+// with a dark outline (as `paintLabels` paints them into pictures).
+void drawLabels(App& app, int fw, int fh) {
+    auto plant = app.state.plant();
+    const int vw = fw - app.panelWidth, vh = fh;
+    if (!plant || !plant->geometry || plant->geometry->labels.empty() || vw <= 0 || vh <= 0) return;
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    for (const Geometry::Label& label : plant->geometry->labels) {
+        float x = 0, y = 0;
+        if (!labelPosition(app.camera, vw, vh, label.position, x, y) || x < 0 || x >= float(vw) || y < 0 || y >= float(vh)) continue;
+        const ImVec2 at((float(app.panelWidth) + x + 3) / std::max(scale.x, 1e-3f), (y - label.size - 1) / std::max(scale.y, 1e-3f));
+        const std::uint32_t c = label.colour;
+        const char* text = label.text.c_str();
+        for (const ImVec2 d : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1)})
+            list->AddText(nullptr, label.size, ImVec2(at.x + d.x, at.y + d.y), IM_COL32(20, 20, 20, 160), text);
+        list->AddText(nullptr, label.size, at, IM_COL32(c >> 24, (c >> 16) & 0xFF, (c >> 8) & 0xFF, 255), text);
+    }
 }
 
 // A hash of what ImGui draws in a frame (vertices, indices, commands): equal hashes, the
@@ -486,6 +507,7 @@ int runViewer(int argc, char** argv) {
             }
             ImGui::EndPopup();
         }
+        drawLabels(app, fw, fh);
         ImGui::Render();
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
             render::RenderOptions o = app.view.render;  // still quality; drawMoving picks the moving frames'

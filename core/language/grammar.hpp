@@ -45,6 +45,8 @@ struct Settings {
     // one unit (x along the turtle's left, y along its up); closed when the last point is the
     // first. Made by the L-Py drawing (PlantGL's SetContour and Sweep curves).
     std::vector<std::vector<float>> sections;
+    // The texts of Label(k[, size]) (made by the L-Py drawing: its @L and Label).
+    std::vector<std::string> labels;
     Toggle gradient = Toggle::Auto;      // colour by branch order (Auto: when no colour modules)
     std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
     ViewHint view = ViewHint::Auto;

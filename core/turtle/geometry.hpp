@@ -3,6 +3,7 @@
 // instanced surfaces, one polygon mesh) plus bounds. No GL here.
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 #include "core/base/pod_buffer.hpp"
@@ -66,6 +67,14 @@ struct Geometry {
     // A curve in one plane without branches (Koch, Sierpinski, dragon): the renderer draws
     // it as a crisp 2D line, seen face-on with an orthographic camera.
     bool planarCurve = false;
+    // Texts at points (Label(k[, size]): Settings::labels), drawn facing the viewer.
+    struct Label {
+        glm::vec3 position;
+        std::string text;
+        float size;            // pixels
+        std::uint32_t colour;  // 0xRRGGBBAA
+    };
+    std::vector<Label> labels;
 
     void clear();  // keeps capacity: re-interpretation reuses the buffers
 };

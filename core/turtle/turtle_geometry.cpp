@@ -237,6 +237,7 @@ void Geometry::clear() {
     cylinders.clear();
     surfaces.clear();
     polygons.clear();
+    labels.clear();
     bounds = {};
     planarCurve = false;
 }

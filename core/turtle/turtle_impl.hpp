@@ -391,6 +391,11 @@ private:
             case Act::CurvePoint:
             case Act::CurveEnd:
             case Act::CurveTangent: curveCommand(t, act, p); break;
+            case Act::Label:
+                if (p && *p >= 0 && *p < double(m_g.settings.labels.size()) && m_out.labels.size() < 100000)
+                    m_out.labels.push_back({toGlm(t.pos), m_g.settings.labels[size_t(*p)],
+                                            arity >= 2 && p[1] > 0 && p[1] < 200 ? float(p[1]) : 13.0f, t.stemColour});
+                break;
             case Act::Section:
                 t.section = p && *p >= 0 && *p < double(m_g.settings.sections.size()) ? std::int16_t(*p) : std::int16_t(-1);
                 break;

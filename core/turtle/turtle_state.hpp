@@ -21,7 +21,7 @@ enum class Act : std::uint8_t {
     Around, Horizontal, Push, Pop, PolyBegin, PolyVertex, PolyEnd, WidthDec, WidthInc,
     ColourNext, ColourPrev, Leaf, Petal, Sphere, ScaleLength, ScaleAngle, ScaleWidth, Gravity,
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
-    LineTo, OLineTo, LineRel, OLineRel, MoveRel, Pinpoint, PinpointRel, Section,
+    LineTo, OLineTo, LineRel, OLineRel, MoveRel, Pinpoint, PinpointRel, Section, Label,
     SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
 };
 
@@ -55,6 +55,8 @@ inline Act actionOf(const std::string& name) {
         // The cross-section of the generalized cylinders started after it (Settings::sections;
         // none or -1: round).
         {"SetContour", Act::Section},
+        // A text at the turtle (Settings::labels; its size in pixels, 13 by default).
+        {"Label", Act::Label},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;

@@ -350,6 +350,27 @@ TEST(Lpy, PlantGLShapesAreDrawnAtTheTurtle) {
     EXPECT_EQ(mesh.colours[0], 0xC3872DFFu);  // (65, 45, 15) times its diffuse, 3
 }
 
+// @L(text[, size]): a text at the turtle (its str() for a number), kept with the drawing.
+TEST(Lpy, LabelsAreKeptAtTheTurtle) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::Model m = lpy::runModel("Axiom: F(2) @L('top') [+(90) F(1) @L(3.5, 26)] @L('top')\n"
+                                 "derivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+    EXPECT_EQ(m.drawable->settings.labels.size(), 2u) << "each text once";
+    Geometry geo;
+    TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+    ASSERT_EQ(geo.labels.size(), 3u);
+    EXPECT_EQ(geo.labels[0].text, "top");
+    EXPECT_NEAR(geo.labels[0].position.y, 2, 1e-5f);
+    EXPECT_NEAR(geo.labels[0].size, 13, 1e-5f);
+    EXPECT_EQ(geo.labels[1].text, "3.5");
+    EXPECT_NEAR(geo.labels[1].size, 26, 1e-5f);
+    EXPECT_NEAR(geo.labels[1].position.x, -1, 1e-5f);  // turned left: L-Py's -y
+    EXPECT_EQ(geo.labels[2].text, "top");
+}
+
 // L-Py's rolls: `/` is RollL, about the heading by +angle, which takes the left axis towards
 // up (PlantGL's rollL); `\` is RollR. So /(90) then +(90) heads along the first up (L-Py's
 // +x, Sprout's +z), and \(90) then +(90) the other way; iRollL and iRollR turn alike.

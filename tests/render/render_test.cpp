@@ -11,6 +11,7 @@
 #include "app/cli/load.hpp"
 #include "app/headless.hpp"
 #include "app/image.hpp"
+#include "app/labels.hpp"
 #include "app/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/render/renderer.hpp"
@@ -469,6 +470,34 @@ TEST(Render, SceneUploadedInPiecesDrawsAsUploadedWhole) {
         EXPECT_EQ(renderer.renderImage(camera, kW, kH, o.render), whole[1]);
         staged(0);
     }
+}
+
+// Labels (L-Py's @L) are painted into pictures where the camera shows their points: the text
+// just right of and above the point, and nothing elsewhere.
+TEST(Render, LabelsArePaintedAtTheirPoints) {
+    auto g = grammarOf("axiom: F\n");
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    Snapshot shot;
+    std::string error;
+    ASSERT_TRUE(renderSnapshot(g, o, shot, error)) << error;
+    const Image before = shot.image;
+    shot.geometry.labels.push_back({{0, 0.5f, 0}, "Label 42", 13, 0xFFFFFFFFu});
+    const render::Camera camera = snapshotCamera(shot.geometry, o);
+    float x = 0, y = 0;
+    ASSERT_TRUE(labelPosition(camera, kW, kH, {0, 0.5f, 0}, x, y));
+    EXPECT_NEAR(x, kW / 2.0f, kW / 10.0f) << "the stem's middle is near the picture's";
+    paintLabels(shot.image, shot.geometry, camera);
+    int inside = 0, outside = 0;
+    for (int py = 0; py < kH; ++py)
+        for (int px = 0; px < kW; ++px) {
+            const std::size_t i = (std::size_t(py) * kW + std::size_t(px)) * 4;
+            const bool changed = before.rgba[i] != shot.image.rgba[i] || before.rgba[i + 1] != shot.image.rgba[i + 1];
+            const bool inBox = px >= int(x) && px < int(x) + 8 * 8 + 8 && py >= int(y) - 18 && py <= int(y) + 2;
+            (inBox ? inside : outside) += changed;
+        }
+    EXPECT_GT(inside, 60) << "the text's pixels";
+    EXPECT_EQ(outside, 0) << "nothing painted elsewhere";
 }
 
 // Many lines drawn without multisampling (RenderOptions::quickLines, the window's view on
