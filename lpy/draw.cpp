@@ -42,7 +42,9 @@ const std::unordered_map<std::string, Mapping>& mappings() {
         // The turtle's frame as three arrows (heading red, up blue, left green), and a colour
         // between two materials.
         {"Frame", {Op::Frame}}, {"InterpolateColors", {Op::InterpolateColours}},
-        // A PlantGL shape at the turtle (@g(shape[, scale])), as triangles in its frame.
+        // A PlantGL shape at the turtle (@g(shape[, scale])): its x along the turtle's up, its y
+        // to the right, its z along the heading (so a shape's coordinates are L-Py's world ones
+        // for a turtle that has not turned, as a guide's are).
         {"@g", {Op::Shape}},
         // A text at the turtle (@L(text[, size]): PlantGL's label, facing the viewer).
         {"@L", {Op::Label}},
@@ -351,17 +353,21 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         PyObject* pgl = PyImport_ImportModule("openalea.plantgl.all");
         PyObject* r = pgl ? PyObject_CallMethod(pgl, "_sprout_triangles", "O", shape) : nullptr;
         Py_XDECREF(pgl);
-        PyObject *points = nullptr, *triangles = nullptr;
+        PyObject *points = nullptr, *triangles = nullptr, *segments = nullptr;
         auto sf = std::make_shared<SurfaceFile>();
-        if (r && PyTuple_Check(r) && PyTuple_GET_SIZE(r) == 2 && (points = PySequence_Fast(PyTuple_GET_ITEM(r, 0), "points")) &&
-            (triangles = PySequence_Fast(PyTuple_GET_ITEM(r, 1), "triangles"))) {
-            const Py_ssize_t np = PySequence_Fast_GET_SIZE(points), nt = PySequence_Fast_GET_SIZE(triangles);
-            bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000;
+        const Py_ssize_t parts = r && PyTuple_Check(r) ? PyTuple_GET_SIZE(r) : 0;  // (points, triangles[, segments])
+        if ((parts == 2 || parts == 3) && (points = PySequence_Fast(PyTuple_GET_ITEM(r, 0), "points")) &&
+            (triangles = PySequence_Fast(PyTuple_GET_ITEM(r, 1), "triangles")) &&
+            (segments = PySequence_Fast(parts == 3 ? PyTuple_GET_ITEM(r, 2) : PyTuple_GET_ITEM(r, 1), "segments"))) {
+            const Py_ssize_t np = PySequence_Fast_GET_SIZE(points), nt = PySequence_Fast_GET_SIZE(triangles),
+                             ns = parts == 3 ? PySequence_Fast_GET_SIZE(segments) : 0;
+            bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
             for (Py_ssize_t i = 0; i < np && ok; ++i) {
                 std::vector<double> q;
                 ok = numbers(PySequence_Fast_GET_ITEM(points, i), q) && q.size() == 3;
-                // PlantGL's x, y, z (left, up, heading) as the surface's heading, left, up.
-                if (ok) sf->positions.emplace_back(float(q[2]), float(q[0]), float(q[1]));
+                // PlantGL's shape frame is the turtle's up, right (-left) and heading (PglTurtle::
+                // transform: Oriented(up, -left)); the surface's is heading, left, up.
+                if (ok) sf->positions.emplace_back(float(q[2]), -float(q[1]), float(q[0]));
             }
             for (Py_ssize_t i = 0; i < nt && ok; ++i) {
                 std::vector<double> t;
@@ -370,7 +376,14 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 if (ok)
                     for (double v : t) sf->indices.push_back(std::uint32_t(v));
             }
-            if (ok && !sf->indices.empty()) {  // normals: the faces' around each point, by area
+            for (Py_ssize_t i = 0; i < ns && ok; ++i) {
+                std::vector<double> e;
+                ok = numbers(PySequence_Fast_GET_ITEM(segments, i), e) && e.size() == 2 && e[0] >= 0 && e[0] < double(np) &&
+                     e[1] >= 0 && e[1] < double(np);
+                if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
+            }
+            if (ok && sf->indices.empty()) sf->positions.clear();  // a curve: its stems only
+            if (ok && (!sf->indices.empty() || !sf->lines.empty())) {  // normals: the faces' around each point, by area
                 sf->normals.assign(sf->positions.size(), glm::vec3(0));
                 for (size_t i = 0; i + 2 < sf->indices.size(); i += 3) {
                     const glm::vec3 &a = sf->positions[sf->indices[i]], &b = sf->positions[sf->indices[i + 1]],
@@ -385,6 +398,7 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
         }
         Py_XDECREF(points);
         Py_XDECREF(triangles);
+        Py_XDECREF(segments);
         Py_XDECREF(r);
         if (PyErr_Occurred()) PyErr_Clear();
         return it->second;
@@ -669,7 +683,7 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             }
             case Op::Shape: {  // @g(shape[, scale])
                 const std::string& surface = shapeSurface(s.object(k, 0));
-                if (surface.empty()) leftOut.insert(name + " with a curve, points, text or what is not a PlantGL shape");
+                if (surface.empty()) leftOut.insert(name + " with text or what is not a PlantGL shape");
                 else w.put(surface.c_str(), {number(k, 1, 1.0)});
                 break;
             }

@@ -19,6 +19,9 @@ struct SurfaceFile {
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> indices;
     int patches = 0;
+    // Stems in the same frame, as pairs of points (L-Py's @g of a curve: a polyline; of a
+    // point set: a short stem at each point), drawn as thick as the turtle's width.
+    std::vector<glm::vec3> lines;
 };
 
 // `error` says what is wrong and on which line when the text is not a surface file.

@@ -86,6 +86,7 @@ void Turtle::runLoop(const ModuleString& s) {
             if constexpr (Parametric) {
                 if (arity && !finite(p, arity)) continue;
             }
+            m_surfaceModule = i;
             placeSurfaceFile(t, id, arity ? p : nullptr);
             continue;
         }

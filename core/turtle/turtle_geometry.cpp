@@ -213,6 +213,20 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
         addBound(fromGlm(m.positions.back()));
     }
     for (std::uint32_t i : f.indices) m.indices.push_back(base + i);
+    for (size_t k = 0; k + 1 < f.lines.size(); k += 2) {
+        v4 a = fromGlm(pos + scale * (f.lines[k].x * h + f.lines[k].y * l + f.lines[k].z * u));
+        v4 b = fromGlm(pos + scale * (f.lines[k + 1].x * h + f.lines[k + 1].y * l + f.lines[k + 1].z * u));
+        addBound(a);
+        addBound(b);
+        a[3] = b[3] = t.width * 0.5f;
+        CylinderInstance& c = m_seg->next();
+        std::memcpy(&c.start, &a, 16);
+        std::memcpy(&c.end, &b, 16);
+        c.colour = t.stemColour;
+        c.order = t.order;
+        c.step = 0;
+        if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(m_surfaceModule));
+    }
 }
 
 }  // namespace turtle_impl

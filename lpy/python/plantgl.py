@@ -765,13 +765,14 @@ def diffuseInterception(scene, *args, **kwargs):
 
 
 def _sprout_triangles(obj, depth=0):
-    """Sprout's drawing of `@g(shape)`: the shape as triangles in its own frame (PlantGL's: x
-    left, y up, z the heading), `(points, triangles)`; None for what has no surface (curves,
-    points, text). Transformations and groups are applied; appearances are not (the turtle's
-    colour is used)."""
+    """Sprout's drawing of `@g(shape)`: the shape in its own frame (PlantGL's: x the turtle's
+    up, y its right, z its heading) as `(points, triangles, segments)`, triangles and segments indexing the points
+    (segments: a curve's polyline); None for what draws nothing (text, an empty group).
+    Transformations and groups are applied; appearances are not (the turtle's colour is used).
+    A point set's points are small octahedra."""
     if depth > 32:
         return None
-    pts, tris = [], []
+    pts, tris, segs = [], [], []
 
     def add(mesh, transform=None):
         if not mesh:
@@ -779,6 +780,10 @@ def _sprout_triangles(obj, depth=0):
         base = len(pts)
         pts.extend(transform(p) if transform else p for p in mesh[0])
         tris.extend((a + base, b + base, c + base) for a, b, c in mesh[1])
+        segs.extend((a + base, b + base) for a, b in (mesh[2] if len(mesh) > 2 else ()))
+
+    def result():
+        return (pts, tris, segs) if tris or segs else None
 
     def num(v, default):
         try:
@@ -791,9 +796,27 @@ def _sprout_triangles(obj, depth=0):
     if isinstance(obj, (list, tuple)) or name in ('Scene', 'Group'):
         for o in (get('geometryList', obj) if name == 'Group' else obj):
             add(_sprout_triangles(o, depth + 1))
-        return (pts, tris) if tris else None
+        return result()
     if name == 'Shape':
         return _sprout_triangles(get('geometry'), depth + 1)
+    if name in ('Polyline', 'Polyline2D', 'NurbsCurve', 'NurbsCurve2D', 'BezierCurve2D', 'BezierCurve'):
+        curve = get('pointList') if name == 'Polyline' else obj.points()
+        pts.extend(tuple(num(x, 0) for x in (tuple(q) + (0.0, 0.0))[:3]) for q in curve)
+        segs.extend((k, k + 1) for k in range(len(pts) - 1))
+        return result()
+    if name == 'PointSet':
+        points = [tuple(num(x, 0) for x in (tuple(q) + (0.0, 0.0))[:3]) for q in get('pointList', ())]
+        if not points:
+            return None
+        extent = max(max(q[k] for q in points) - min(q[k] for q in points) for k in range(3))
+        r = 0.005 * extent if extent > 0 else 0.01
+        for q in points:
+            base = len(pts)
+            pts.extend((q[0] + dx * r, q[1] + dy * r, q[2] + dz * r)
+                       for dx, dy, dz in ((1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)))
+            tris.extend((base + a, base + b, base + c) for a, b, c in (
+                (0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)))
+        return result()
     if name in ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented'):
         inner = _sprout_triangles(get('geometry'), depth + 1)
         if inner is None:
@@ -819,7 +842,7 @@ def _sprout_triangles(obj, depth=0):
             z = (x ^ y).normed()
             f = lambda p: tuple(x * p[0] + y * p[1] + z * p[2])
         add(inner, f)
-        return pts, tris
+        return result()
     ring = lambda r, z, n: [(r * _math.cos(2 * _math.pi * i / n), r * _math.sin(2 * _math.pi * i / n), z) for i in range(n)]
 
     def tube(profile, n, caps):  # profile: (radius, z) from bottom to top, swept about z

@@ -315,36 +315,45 @@ TEST(Lpy, RelativeMovesPinpointsFramesAndMixedColours) {
 }
 
 // @g(shape[, scale]): a PlantGL shape at the turtle, in its frame (the shape's x along the
-// turtle's left, y along its up, z along its heading), with the turtle's colour; wrappers
-// (Scaled, Translated, AxisRotated, ...) applied. A curve has no surface: a warning names it.
+// turtle's up, y to its right, z along its heading: PlantGL's PglTurtle::transform), with the
+// turtle's colour; wrappers
+// (Scaled, Translated, AxisRotated, ...) applied. A curve is drawn as stems along it; text is
+// not drawn: a warning names it.
 TEST(Lpy, PlantGLShapesAreDrawnAtTheTurtle) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     lpy::Model m = lpy::runModel("from openalea.plantgl.all import *\n"
                                  "Axiom: [@M(0, 2, 1) @g(Box(1, 0.2, 0.5))] [@M(0, 0, 5) @g(Scaled(2, Sphere(1)), 0.5)]"
-                                 " @g(Polyline([(0, 0, 0), (1, 1, 1)]))\nderivation length: 0\nproduction:\nendlsystem\n", {});
+                                 " @g(Text('no')) f(10) @g(Polyline([(0, 0, 0), (1, 0, 0), (1, 0, 2)]))\nderivation length: 0\n"
+                                 "production:\nendlsystem\n", {});
     ASSERT_TRUE(m.ok()) << messages(m);
     ASSERT_EQ(m.diagnostics.size(), 1u) << messages(m);
-    EXPECT_NE(m.diagnostics[0].message.find("@g with a curve"), std::string::npos) << messages(m);
+    EXPECT_NE(m.diagnostics[0].message.find("@g with text"), std::string::npos) << messages(m);
     Geometry geo;
     TurtleOptions to;
     interpret(m.drawable->axiom, *m.drawable, to, geo);
+    // The polyline, 10 above the origin: 1 along the up (L-Py's x, Sprout's z), then 2 along
+    // the heading (Sprout's y).
+    ASSERT_EQ(geo.cylinders.size(), 2u);
+    EXPECT_NEAR(glm::length(geo.cylinders[0].start - glm::vec3(0, 10, 0)), 0, 1e-4f);
+    EXPECT_NEAR(glm::length(geo.cylinders[0].end - glm::vec3(0, 10, 1)), 0, 1e-4f);
+    EXPECT_NEAR(glm::length(geo.cylinders[1].end - glm::vec3(0, 12, 1)), 0, 1e-4f);
     const Mesh& mesh = geo.polygons;
     ASSERT_FALSE(mesh.indices.empty());
-    // The box at L-Py (0, 2, 1), Sprout (2, 1, 0): half sizes 1 along the left (Sprout x),
-    // 0.2 along the up (Sprout z), 0.5 along the heading (Sprout y).
+    // The box at L-Py (0, 2, 1), Sprout (2, 1, 0): half sizes 1 along the up (Sprout z), 0.2
+    // to the right (L-Py's y, Sprout's x), 0.5 along the heading (Sprout y).
     glm::vec3 lo(1e9f), hi(-1e9f);
     for (const glm::vec3& q : mesh.positions)
         if (q.y < 3) lo = glm::min(lo, q), hi = glm::max(hi, q);
-    EXPECT_NEAR(lo.x, 1, 1e-4f);
-    EXPECT_NEAR(hi.x, 3, 1e-4f);
+    EXPECT_NEAR(lo.x, 1.8f, 1e-4f);
+    EXPECT_NEAR(hi.x, 2.2f, 1e-4f);
     EXPECT_NEAR(lo.y, 0.5f, 1e-4f);
     EXPECT_NEAR(hi.y, 1.5f, 1e-4f);
-    EXPECT_NEAR(lo.z, -0.2f, 1e-4f);
-    EXPECT_NEAR(hi.z, 0.2f, 1e-4f);
+    EXPECT_NEAR(lo.z, -1, 1e-4f);
+    EXPECT_NEAR(hi.z, 1, 1e-4f);
     // The sphere at L-Py (0, 0, 5), Sprout (0, 5, 0): radius 1, scaled by 2, then by @g's 0.5.
     float r = 0;
     for (const glm::vec3& q : mesh.positions)
-        if (q.y > 3) r = std::max(r, glm::length(q - glm::vec3(0, 5, 0)));
+        if (q.y > 3 && q.y < 7) r = std::max(r, glm::length(q - glm::vec3(0, 5, 0)));
     EXPECT_NEAR(r, 1, 1e-3f);
     // The turtle's colour: L-Py's material 1.
     EXPECT_EQ(mesh.colours[0], 0xC3872DFFu);  // (65, 45, 15) times its diffuse, 3
