@@ -361,6 +361,7 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             (segments = PySequence_Fast(parts == 3 ? PyTuple_GET_ITEM(r, 2) : PyTuple_GET_ITEM(r, 1), "segments"))) {
             const Py_ssize_t np = PySequence_Fast_GET_SIZE(points), nt = PySequence_Fast_GET_SIZE(triangles),
                              ns = parts == 3 ? PySequence_Fast_GET_SIZE(segments) : 0;
+            if (np == 0 && nt == 0 && ns == 0) it->second = "-";  // a shape with nothing to draw: no warning
             bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
             for (Py_ssize_t i = 0; i < np && ok; ++i) {
                 std::vector<double> q;
@@ -684,7 +685,7 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             case Op::Shape: {  // @g(shape[, scale])
                 const std::string& surface = shapeSurface(s.object(k, 0));
                 if (surface.empty()) leftOut.insert(name + " with text or what is not a PlantGL shape");
-                else w.put(surface.c_str(), {number(k, 1, 1.0)});
+                else if (surface != "-") w.put(surface.c_str(), {number(k, 1, 1.0)});
                 break;
             }
             case Op::Point:  // L-Py's x y z are Sprout's z x y

@@ -722,8 +722,8 @@ class Point3Grid:
     def is_point_enabled(self, i):
         return self.enabled[i]
 
-    def get_enabled_points(self):
-        return [i for i, e in enumerate(self.enabled) if e]
+    def get_enabled_points(self):  # the points themselves, as PlantGL's grid gives them
+        return [self.points[i] for i, e in enumerate(self.enabled) if e]
 
     def nbPoints(self):
         return len(self.points)
@@ -796,7 +796,7 @@ def _sprout_triangles(obj, depth=0):
     if isinstance(obj, (list, tuple)) or name in ('Scene', 'Group'):
         for o in (get('geometryList', obj) if name == 'Group' else obj):
             add(_sprout_triangles(o, depth + 1))
-        return result()
+        return result() or ([], [], [])  # an empty group is a shape with nothing to draw
     if name == 'Shape':
         return _sprout_triangles(get('geometry'), depth + 1)
     if name in ('Polyline', 'Polyline2D', 'NurbsCurve', 'NurbsCurve2D', 'BezierCurve2D', 'BezierCurve'):
@@ -807,7 +807,7 @@ def _sprout_triangles(obj, depth=0):
     if name == 'PointSet':
         points = [tuple(num(x, 0) for x in (tuple(q) + (0.0, 0.0))[:3]) for q in get('pointList', ())]
         if not points:
-            return None
+            return [], [], []  # a shape, with nothing to draw
         extent = max(max(q[k] for q in points) - min(q[k] for q in points) for k in range(3))
         r = 0.005 * extent if extent > 0 else 0.01
         for q in points:
