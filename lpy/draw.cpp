@@ -457,7 +457,10 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             return a < q.size() && std::isfinite(q[a]) ? q[a] : otherwise;
         }
         const double d = PyFloat_AsDouble(v);
-        if (PyErr_Occurred()) PyErr_Clear();
+        if (PyErr_Occurred()) {  // not a number (None, a curve): as if not given
+            PyErr_Clear();
+            return otherwise;
+        }
         return std::isfinite(d) ? d : otherwise;
     };
     auto setWidth = [&](double width) {
