@@ -288,6 +288,31 @@ TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
     EXPECT_TRUE(fs::exists(marker));
 }
 
+// L-Py's labels (@L) over the view: the window showing a plant with a label differs from the
+// same plant without one only in a small patch of the view (the text beside its point).
+TEST(Window, LpyLabelsAreShownOverTheView) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("labels_window");
+    Image shots[2];
+    for (int k = 0; k < 2; ++k) {
+        const fs::path model = dir / ("model" + std::to_string(k) + ".lpy"), png = dir / ("window" + std::to_string(k) + ".png");
+        std::ofstream(model) << "Axiom: _(0.2) F(3) " << (k ? "@L('Hello there', 26)" : "") << " [ + F(2) ] F(2)\n"
+                             << "derivation length: 0\nproduction:\nendlsystem\n";
+        runScript(dir, model.string() + " --size 900x600 --screenshot " + png.string(), "trust yes\nwait\n");
+        shots[k] = load(png.string());
+        ASSERT_EQ(shots[k].width, 900);
+    }
+    std::size_t differ = 0, view = 0;
+    for (int y = 0; y < shots[0].height; ++y)
+        for (int x = 430; x < shots[0].width; ++x, ++view) {
+            const std::size_t i = (std::size_t(y) * 900 + std::size_t(x)) * 4;
+            differ += std::abs(int(shots[0].rgba[i]) - int(shots[1].rgba[i])) + std::abs(int(shots[0].rgba[i + 1]) - int(shots[1].rgba[i + 1])) > 40;
+        }
+    EXPECT_GT(differ, 100u) << "the label's text";
+    EXPECT_LT(differ, view / 50) << "and nothing else";
+}
+
 // "Why this branch?" on an L-Py model: a click names the module, the step that made it and
 // the line of the production; the inspector and the rule highlight work on it too.
 TEST(Window, PickingAnLpyModelNamesItsProductionAndLine) {
