@@ -224,7 +224,7 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
         std::memcpy(&c.end, &b, 16);
         c.colour = t.stemColour;
         c.order = t.order;
-        c.step = 0;
+        c.step = m_opt.ages ? m_opt.ages[m_surfaceModule] : 0;
         if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(m_surfaceModule));
     }
 }
