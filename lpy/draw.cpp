@@ -564,19 +564,14 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
             case Op::Forward:
                 forward(p.empty() ? 1.0 : p[0], p.size() >= 2 ? p[1] : -1);  // L-Py's default step is 1
                 break;
-            case Op::Move:
-                if (st.guide) {
-                    double length = p.empty() ? 1.0 : p[0];
-                    guideBefore(length);
-                    bend();
-                    w.put(mp.sprout, {length});
-                    guideAfter();
-                } else {
-                    bend();
-                    if (p.empty()) w.put(mp.sprout, {});
-                    else w.put(mp.sprout, {p[0]});
-                }
+            case Op::Move: {  // f(length = 1), along a guide when one is set
+                double length = p.empty() ? 1.0 : p[0];
+                guideBefore(length);
+                bend();
+                w.put(mp.sprout, {length});
+                guideAfter();
                 break;
+            }
             case Op::StepForward:  // nF(length, dl[, radius[, radiusFunction]])
                 if (p.size() >= 2) stepForward(p[0], p[1], n >= 3 ? number(k, 2, -1) : -1, s.object(k, 3));
                 break;

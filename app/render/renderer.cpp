@@ -52,8 +52,8 @@ void Renderer::Impl::makeLines(Buffers& b) {
     glBindVertexArray(0);
 }
 
-void Renderer::Impl::mutableAgain(Buffers& b, bool lines) {
-    if (!b.immutable) return;
+void Renderer::Impl::mutableAgain(Buffers& b, bool lines, bool always) {
+    if (!b.immutable && !always) return;
     const GLuint buffers[] = {b.vbo, b.ebo};
     glDeleteVertexArrays(1, &b.vao);
     glDeleteBuffers(2, buffers);  // a mapping goes with its buffer; 0 is ignored
@@ -281,9 +281,8 @@ bool Renderer::beginUpload(std::shared_ptr<const PreparedScene> p, std::size_t b
         // Storage mapped for writing once: each piece a copy into it. Storage is immutable, so
         // the back buffers are made anew for each scene (the driver frees the old ones once no
         // drawing uses them: no wait here).
-        s.bakedBack.immutable = s.linesBack.immutable = true;
-        s.mutableAgain(s.bakedBack, false);
-        s.mutableAgain(s.linesBack, true);
+        s.mutableAgain(s.bakedBack, false, true);
+        s.mutableAgain(s.linesBack, true, true);
         const GLbitfield flags = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
         auto storage = [flags](GLenum target, std::size_t size) {
             const auto n = GLsizeiptr(std::max<std::size_t>(size, 1));

@@ -92,8 +92,8 @@ struct Renderer::Impl {
     // Lines: position, colour.
     static void makeLines(Buffers& b);
     // `b` (of makeBaked, or makeLines when `lines`) with buffers whose size can be set again:
-    // made anew when they have immutable storage.
-    static void mutableAgain(Buffers& b, bool lines);
+    // made anew when they have immutable storage (or `always`: fresh names for new storage).
+    static void mutableAgain(Buffers& b, bool lines, bool always = false);
     // The programs, textures, buffers and the shadow map (Renderer::init); false with a message.
     bool build(std::string& error);
     // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaFbo is it.

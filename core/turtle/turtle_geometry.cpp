@@ -201,31 +201,22 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
     const SurfaceFile& f = *m_surfaceFiles[id];
     const float scale = (p ? float(*p) : 1.0f) * t.length;
     const glm::vec3 pos = toGlm(t.pos), h = toGlm(t.H), l = toGlm(t.L), u = toGlm(up(t));
+    auto turned = [&](const glm::vec3& q) { return q.x * h + q.y * l + q.z * u; };  // the surface's frame in the turtle's
     Mesh& m = m_out.polygons;
     const std::uint32_t base = std::uint32_t(m.positions.size());
     const std::uint32_t col = surfaceColour(t, SurfaceKind::Leaf);
     for (size_t k = 0; k < f.positions.size(); ++k) {
-        const glm::vec3& q = f.positions[k];
-        const glm::vec3& n = f.normals[k];
-        m.positions.push_back(pos + scale * (q.x * h + q.y * l + q.z * u));
-        m.normals.push_back(n.x * h + n.y * l + n.z * u);
+        m.positions.push_back(pos + scale * turned(f.positions[k]));
+        m.normals.push_back(turned(f.normals[k]));
         m.colours.push_back(col);
         addBound(fromGlm(m.positions.back()));
     }
     for (std::uint32_t i : f.indices) m.indices.push_back(base + i);
     for (size_t k = 0; k + 1 < f.lines.size(); k += 2) {
-        v4 a = fromGlm(pos + scale * (f.lines[k].x * h + f.lines[k].y * l + f.lines[k].z * u));
-        v4 b = fromGlm(pos + scale * (f.lines[k + 1].x * h + f.lines[k + 1].y * l + f.lines[k + 1].z * u));
+        const v4 a = fromGlm(pos + scale * turned(f.lines[k])), b = fromGlm(pos + scale * turned(f.lines[k + 1]));
         addBound(a);
         addBound(b);
-        a[3] = b[3] = t.width * 0.5f;
-        CylinderInstance& c = m_seg->next();
-        std::memcpy(&c.start, &a, 16);
-        std::memcpy(&c.end, &b, 16);
-        c.colour = t.stemColour;
-        c.order = t.order;
-        c.step = m_opt.ages ? m_opt.ages[m_surfaceModule] : 0;
-        if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(m_surfaceModule));
+        stem(t, a, b, m_surfaceModule);
     }
 }
 

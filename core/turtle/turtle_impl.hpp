@@ -447,18 +447,22 @@ private:
         // straight to the left).
         if (act == Act::OLineTo || act == Act::OLineRel) tendTo(t, toGlm(d));
         t.lastSegment = std::int32_t(m_seg->count());
-        CylinderInstance& c = m_seg->next();
-        v4 a = t.pos, b = target;
+        stem(t, t.pos, target, i);
+        t.pos = target;
+        addBound(t.pos);
+        if (!m_polygons.empty()) vertex(t);
+    }
+
+    // A stem from a to b as thick as the turtle's width, drawn by module i (LineTo, an @g curve).
+    void stem(const State& t, v4 a, v4 b, size_t i) {
         a[3] = b[3] = t.width * 0.5f;
+        CylinderInstance& c = m_seg->next();
         std::memcpy(&c.start, &a, 16);
         std::memcpy(&c.end, &b, 16);
         c.colour = t.stemColour;
         c.order = t.order;
         c.step = m_opt.ages ? m_opt.ages[i] : 0;
         if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(i));
-        t.pos = target;
-        addBound(t.pos);
-        if (!m_polygons.empty()) vertex(t);
     }
 
     [[gnu::always_inline]] inline void segment(State& t, float len, size_t i) {
