@@ -10,8 +10,13 @@
 # Bars (issue 24): moving frames <= 17 ms (sixty a second), full quality <= 150 ms after
 # letting go; peak memory <= 1 GB with the Gosper curve or the n=10 plant (issue 15). Then
 # growth playback of four mid-size plants (bars: mean <= 20 ms a frame, none over 33 ms).
+# The first line says which GL drew (GL_RENDERER); each scene how many of the moving frames
+# (the drag's and the one letting go) were drawn at full (still) quality, as they are when the
+# still picture takes a few ms.
 #
 #   bench/window_bench.sh [--presets]     (after scripts/setup.sh; needs xvfb-run)
+#   WINDOW_BENCH_CACHE=DIR keeps the presets' thumbnails in DIR between runs.
+#   On a GPU under Xvfb: __GLX_VENDOR_LIBRARY_NAME=nvidia __GL_SYNC_TO_VBLANK=0 bench/window_bench.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sprout="$PWD/build/sprout"
@@ -21,14 +26,17 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # The presets' thumbnails are made once, before the runs (a first start makes them in the
 # background, one `sprout render` at a time).
-export XDG_CACHE_HOME="$work/cache" HOME="$work"
-printf 'wait-thumbnails\nquit\n' >"$work/thumbnails.txt"
-(cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" koch --script "$work/thumbnails.txt") >/dev/null 2>&1
-run() {  # name source "set n N"|"" -> the frame-stats line after the drag
+export XDG_CACHE_HOME="${WINDOW_BENCH_CACHE:-$work/cache}" HOME="$work"
+printf 'wait-thumbnails\ngl-info\nquit\n' >"$work/thumbnails.txt"
+gl="$( (cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" koch --script "$work/thumbnails.txt") 2>/dev/null |
+      sed -n 's/^gl_renderer=//p; s/^gl_version=/, OpenGL /p' | tr -d '\n')"
+echo "window_bench: drawn by ${gl:-an unknown GL}"
+run() {  # name source "set n N"|"" -> the frame-stats lines, and full_moving= the drag's frames at full quality
   local script="$work/$1.txt"
-  { [ -n "$3" ] && echo "$3"; printf 'wait\nsleep 1\nwait\nframe-stats\ndrag 360 60 60\nrelease\nwait\nframe-stats\nquit\n'; } >"$script"
+  { [ -n "$3" ] && echo "$3"; printf 'wait\nsleep 1\nwait\nframe-stats\nview-draws\ndrag 360 60 60\nrelease\nwait\nframe-stats\nview-draws\nquit\n'; } >"$script"
   (cd "$work" && xvfb-run -a -s '-screen 0 1600x1000x24' "$sprout" "$2" --size 1440x860 --script "$script") 2>/dev/null |
-    grep '^moving_worst_ms=' | tr '\n' ' '
+    awk '/^moving_worst_ms=/ { printf "%s ", $0 }
+         /^view_draws=/ { split($1, v, "="); split($3, f, "="); if (n++) printf "full_moving=%d moving_draws=%d ", f[2] - f0, v[2] - v0 - 1; else { v0 = v[2]; f0 = f[2] } }'
 }
 base=""
 ok=1
@@ -44,8 +52,8 @@ for scene in "fractal plant n=2|fractal_plant|set n 2" "fractal plant n=10|fract
   read -r bw br <<<"$base"
   awk -v n="$name" -v w="$local_moving_worst_ms" -v m="$local_moving_mean_ms" -v r="$local_refine_ms" \
       -v rw="$local_refine_worst_frame_ms" -v d="$local_moving_differ_pct" -v p="$local_peak_mb" -v bw="$bw" -v br="$br" \
-      -v f="$first" 'BEGIN {
-    printf "window_bench: %-20s moving frames worst %5.1f ms, mean %5.1f ms (bar 17; %.2fx n=2); full quality after letting go %4.0f ms (bar 150; %.2fx n=2), its longest frame %4.1f ms; moving picture %4.1f%% off the still one; first picture after start: longest frame %4.1f ms; peak memory %4.0f MB (bar 1024)\n", n, w, m, w / bw, r, r / br, rw, d, f, p }'
+      -v f="$first" -v q="$local_full_moving" -v md="$local_moving_draws" 'BEGIN {
+    printf "window_bench: %-20s moving frames worst %5.1f ms, mean %5.1f ms (bar 17; %.2fx n=2), %d of %d at full quality; full quality after letting go %4.0f ms (bar 150; %.2fx n=2), its longest frame %4.1f ms; moving picture %4.1f%% off the still one; first picture after start: longest frame %4.1f ms; peak memory %4.0f MB (bar 1024)\n", n, w, m, w / bw, q, md, r, r / br, rw, d, f, p }'
   awk -v w="$local_moving_worst_ms" -v r="$local_refine_ms" -v p="$local_peak_mb" 'BEGIN { exit !(w <= 17 && r <= 150 && p <= 1024) }' || ok=0
 done
 # Growth playback of mid-size plants: 4 s of play from the axiom on (every step a new plant,

@@ -205,9 +205,11 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
         return false;
     }
     const char* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const std::string renderer = name ? name : "";
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    m_glRenderer = name ? name : "";
+    m_glVersion = version ? version : "";
     m->bufferStorage = m->persistentUploads = GLAD_GL_ARB_buffer_storage;
-    m_software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+    m_software = m_glRenderer.find("llvmpipe") != std::string::npos || m_glRenderer.find("softpipe") != std::string::npos;
     return m->build(error);
 }
 

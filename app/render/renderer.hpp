@@ -104,6 +104,9 @@ public:
     // Whether the context draws on the CPU (Mesa's llvmpipe or softpipe): what costs there
     // differs (RenderOptions::quickLines).
     bool software() const { return m_software; }
+    // The context's GL_RENDERER and GL_VERSION strings ("llvmpipe (LLVM 15.0.6, 256 bits)").
+    const std::string& glRenderer() const { return m_glRenderer; }
+    const std::string& glVersion() const { return m_glVersion; }
     // Copies the plant to the GPU, baked into triangles and lines at the current detail. A big
     // planar curve is drawn from `geometry` itself: it must stay alive until the next upload.
     void upload(const Geometry& geometry);
@@ -190,6 +193,7 @@ private:
     std::unique_ptr<Pass> m_progress;  // a picture drawn in pieces (beginDraw)
     double m_lastPictureMs = 1e9;
     bool m_software = false;
+    std::string m_glRenderer, m_glVersion;
     RenderStats m_stats;
 };
 

@@ -17,6 +17,8 @@
 //                         whose still picture takes a few ms: a GPU, a small plant), then
 //                         "staged_uploads=U mapped_uploads=0|1": how many plants went to the
 //                         GPU a piece per frame, and whether into persistently mapped buffers
+//   gl-info               prints "gl_renderer=R" and "gl_version=V", a line each: the context's
+//                         GL_RENDERER and GL_VERSION (which GPU, or Mesa's llvmpipe, drew)
 //   wait-thumbnails       until the presets' thumbnails are made (benchmarks)
 //   frame-stats           prints "moving_worst_ms=A moving_mean_ms=B refine_ms=T
 //                         refine_worst_frame_ms=W peak_mb=M refine_frames=F refine_drawing_ms=D
@@ -205,6 +207,11 @@ bool Script::step(App& app) {
             app.movingWorstMs = app.movingTotalMs = 0;
             app.movingWorstWhat.clear();
             app.movingFrames = 0;
+            return true;
+        }
+        if (cmd == "gl-info") {
+            std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
+            std::fflush(stdout);
             return true;
         }
         if (cmd == "view-draws") {
