@@ -210,6 +210,7 @@ bool Renderer::init(ProcLoader loader, std::string& error) {
     m_glVersion = version ? version : "";
     m->bufferStorage = m->persistentUploads = GLAD_GL_ARB_buffer_storage;
     m_software = m_glRenderer.find("llvmpipe") != std::string::npos || m_glRenderer.find("softpipe") != std::string::npos;
+    m->bigCurveRibbons = !m_software;
     return m->build(error);
 }
 
@@ -246,10 +247,24 @@ void Renderer::adopt(const PreparedScene& p) {
     s.curveCount = p.curve.size();
     s.rasterCurve = p.curveGeometry;
     s.coverageOf = nullptr;  // a new scene: rasterise again (even at a recycled address)
-    if (s.curveCount) {
-        glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
+    glBindBuffer(GL_TEXTURE_BUFFER, s.curveInstances);
+    if (s.curveCount)
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(s.curveCount * sizeof(CylinderInstance)), p.curve.data(), GL_STATIC_DRAW);
+    if (s.rasterCurve && s.bigCurveRibbons && s.rasterCurve->cylinders.size() <= kGpuCurveRibbons) {
+        // A big curve as its ribbons, read from its geometry (no copy): when its segments fit
+        // the buffer texture (2^27 texels on NVIDIA) and the GPU's memory.
+        const auto& c = s.rasterCurve->cylinders;
+        GLint maxTexels = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+        if (c.size() * (sizeof(CylinderInstance) / 4) <= std::size_t(maxTexels)) {
+            while (glGetError() != GL_NO_ERROR) {
+            }
+            glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(c.size() * sizeof(CylinderInstance)), c.data(), GL_STATIC_DRAW);
+            if (glGetError() == GL_NO_ERROR) s.curveCount = c.size(), s.rasterCurve = nullptr;
+            else glBufferData(GL_TEXTURE_BUFFER, 64, nullptr, GL_STATIC_DRAW);  // out of memory: rasterised
+        }
     }
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
     s.bakedIndices = p.baked.indices.size();
     s.lineCount = p.lines.size() / 8;
     s.proxyCount = p.proxy.size() / 8;
@@ -327,6 +342,10 @@ bool Renderer::uploading() const { return m->staging != nullptr; }
 bool Renderer::persistentUploads() const { return m->persistentUploads; }
 
 void Renderer::setPersistentUploads(bool on) { m->persistentUploads = on && m->bufferStorage; }
+
+bool Renderer::bigCurveRibbons() const { return m->bigCurveRibbons; }
+
+void Renderer::setBigCurveRibbons(bool on) { m->bigCurveRibbons = on; }
 
 bool Renderer::continueUpload(std::size_t bytes) {
     Impl& s = *m;

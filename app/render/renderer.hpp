@@ -125,6 +125,16 @@ public:
     // llvmpipe and GPU drivers do); switched off, the pieces go by glBufferSubData.
     bool persistentUploads() const;
     void setPersistentUploads(bool on);
+    // Whether a big planar curve (PreparedScene::curveGeometry) of up to kGpuCurveRibbons
+    // segments is drawn as a ribbon per segment, as a small one is, instead of rasterised on
+    // the CPU: on a GPU, where every moving frame is then the still picture; not on a software
+    // rasteriser. Read at upload; off where the segments do not fit a buffer texture or the
+    // GPU's memory. Past the cap the raster is quicker on a GPU too: an H100 drew the 9.8 M
+    // ribbons of the quadratic Gosper curve n=5 in 31 ms a frame (its raster, moved as a
+    // picture, 4 ms) after a 310 ms upload.
+    static constexpr std::size_t kGpuCurveRibbons = 1'000'000;
+    bool bigCurveRibbons() const;
+    void setBigCurveRibbons(bool on);
     // What is drawn with the plant, translucent, after it: the environment
     // (core/environment/environment_drawing.hpp). An empty mesh draws nothing.
     void setOverlay(const Mesh& mesh);

@@ -55,6 +55,7 @@ struct Renderer::Impl {
     // context has it and it is on, and the back buffers' mappings (vertices, indices, lines)
     // while one is filled.
     bool bufferStorage = false, persistentUploads = false;
+    bool bigCurveRibbons = false;  // Renderer::bigCurveRibbons
     void* stagedMaps[3] = {};
     GLuint emptyVao = 0, curveInstances = 0, curveTexture = 0;
     GLuint shadowFbo = 0, shadowTexture = 0;

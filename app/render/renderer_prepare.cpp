@@ -37,7 +37,8 @@ constexpr float kLevelThreshold[3] = {1.0f / 100, 1.0f / 300, 1.0f / 900};  // f
 // every triangle costs llvmpipe ~0.2 us of single-threaded setup.
 constexpr float kInteractiveScale = 3.0f;
 constexpr std::size_t kVertexBudget = 6'000'000;
-// Planar curves with more segments than this are rasterised on the CPU (curve_raster.hpp):
+// Planar curves with more segments than this are rasterised on the CPU (curve_raster.hpp) on a
+// software rasteriser (a GPU draws them as ribbons: Renderer::bigCurveRibbons):
 // below it every preset keeps its ribbons, pixel for pixel; above it a ribbon per segment
 // costs far more than the picture (the quadratic Gosper curve n=5: 9.8 M ribbons, 5.6 s).
 constexpr std::size_t kRasterCurveSegments = 200'000;  // ~170 MB baked; past it, thresholds rise

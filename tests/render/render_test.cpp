@@ -245,6 +245,58 @@ TEST(Render, RasterisedCurveLooksLikeItsRibbons) {
     EXPECT_LT(differ, kW * kH / 25) << "the same pixels, up to the edges of the ink";
 }
 
+// On a GPU a big curve is drawn as its ribbons, as a small one is (Renderer::bigCurveRibbons;
+// on llvmpipe it is rasterised). The dragon curve n=10 with each segment cut into 256 pieces
+// (262 k segments, past the raster's threshold) drawn as ribbons is the picture of the uncut
+// curve's ribbons.
+TEST(Render, BigCurveIsDrawnAsItsRibbonsWhereTheGpuCan) {
+    auto g = grammarOf(*presetText("dragon"));
+    DeriveResult d = derive(g, 10);
+    ASSERT_TRUE(d.outcome.ok());
+    auto small = std::make_shared<Geometry>();
+    interpret(*d.string, *g, {14, 1, nullptr}, *small);
+    auto big = std::make_shared<Geometry>(*small);
+    big->cylinders.clear();
+    constexpr int kPieces = 256;
+    for (const CylinderInstance& c : small->cylinders)
+        for (int k = 0; k < kPieces; ++k) {
+            CylinderInstance piece = c;
+            piece.start = glm::mix(c.start, c.end, float(k) / kPieces);
+            piece.end = glm::mix(c.start, c.end, float(k + 1) / kPieces);
+            big->cylinders.push_back(piece);
+        }
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    EXPECT_FALSE(renderer.bigCurveRibbons()) << "llvmpipe rasterises a big curve";
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(*small, o);
+    render::PreparedScene reference, scene;
+    render::Renderer::prepare(*small, render::Quality::Still, reference, small);
+    render::Renderer::prepare(*big, render::Quality::Still, scene, big);
+    ASSERT_TRUE(scene.curveGeometry) << "a big curve";
+    renderer.upload(reference);
+    const std::vector<std::uint8_t> uncut = renderer.renderImage(camera, kW, kH, o.render);
+    renderer.upload(scene);
+    EXPECT_TRUE(renderer.rasterCurve());
+    renderer.renderImage(camera, kW, kH, o.render);
+    EXPECT_LT(renderer.stats().triangles, 10u) << "rasterised: one quad";
+    renderer.setBigCurveRibbons(true);
+    renderer.upload(scene);
+    EXPECT_FALSE(renderer.rasterCurve()) << "as ribbons";
+    const std::vector<std::uint8_t> ribbons = renderer.renderImage(camera, kW, kH, o.render);
+    EXPECT_GE(renderer.stats().triangles, 2 * big->cylinders.size()) << "a quad per segment";
+    int inkUncut = 0, inkRibbons = 0, differ = 0;
+    for (std::size_t i = 0; i < uncut.size(); i += 4) {
+        const bool a = uncut[i] + uncut[i + 1] + uncut[i + 2] < 3 * 120, b = ribbons[i] + ribbons[i + 1] + ribbons[i + 2] < 3 * 120;
+        inkUncut += a, inkRibbons += b, differ += a != b;
+    }
+    EXPECT_GT(inkRibbons, kW * kH / 50) << "the curve is drawn";
+    EXPECT_NEAR(double(inkRibbons) / inkUncut, 1.0, 0.03) << "as much ink";
+    EXPECT_LT(differ, kW * kH / 200) << "the same pixels";
+}
+
 // While the view of a big curve is dragged (interactive quality) the last raster is moved as a
 // picture instead of rasterising again; it must land where the new raster would.
 TEST(Render, DraggedBigCurveMovesItsLastPicture) {
