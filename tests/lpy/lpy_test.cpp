@@ -359,6 +359,51 @@ TEST(Lpy, PlantGLShapesAreDrawnAtTheTurtle) {
     EXPECT_EQ(mesh.colours[0], 0xC3872DFFu);  // (65, 45, 15) times its diffuse, 3
 }
 
+// PlantGL's AsymmetricHull (a crown: four radii, four heights, a bottom and a top point, the
+// shapes of its lower and upper parts) as PlantGL's discretizer makes it, in @g's frame.
+TEST(Lpy, AsymmetricHullIsACrownThroughItsPoints) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::Model m = lpy::runModel("from openalea.plantgl.all import *\n"
+                                 "Axiom: f(20) @g(AsymmetricHull(1, 2, 3, 4, 0.5, 1.0, 1.5, 2.0, (0, 0, 0), (0, 0, 6), 3, 1))\n"
+                                 "derivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    EXPECT_TRUE(m.diagnostics.empty()) << messages(m);
+    Geometry geo;
+    TurtleOptions to;
+    interpret(m.drawable->axiom, *m.drawable, to, geo);
+    const Mesh& mesh = geo.polygons;
+    // 4 slices x 4 quadrants meridians of 2 x 4 - 1 points, the bottom and the top; a fan at
+    // each end and a strip of 2 x (7 - 1) triangles between neighbouring meridians.
+    EXPECT_EQ(mesh.positions.size(), 16u * 7 + 2);
+    EXPECT_EQ(mesh.indices.size(), 3u * 16 * (2 + 2 * 6));
+    // PlantGL's frame at the turtle: x its up (Sprout z), y its right (Sprout x), z its heading
+    // (Sprout y), 20 along it. The four points: +x radius 2 at height 1, +y radius 4 at height 2,
+    // -x radius 1 at height 0.5, -y radius 3 at height 1.5; the bottom and the top.
+    auto has = [&](glm::vec3 p) {
+        for (const glm::vec3& q : mesh.positions)
+            if (glm::length(q - p) < 1e-4f) return true;
+        return false;
+    };
+    EXPECT_TRUE(has({0, 21, 2}));
+    EXPECT_TRUE(has({4, 22, 0}));
+    EXPECT_TRUE(has({0, 20.5f, -1}));
+    EXPECT_TRUE(has({-3, 21.5f, 0}));
+    EXPECT_TRUE(has({0, 20, 0}));
+    EXPECT_TRUE(has({0, 26, 0}));
+    glm::vec3 lo(1e9f), hi(-1e9f);
+    for (const glm::vec3& q : mesh.positions) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    EXPECT_NEAR(lo.x, -3, 1e-4f);
+    EXPECT_NEAR(hi.x, 4, 1e-4f);
+    EXPECT_NEAR(lo.y, 20, 1e-4f);
+    EXPECT_NEAR(hi.y, 26, 1e-4f);
+    EXPECT_NEAR(lo.z, -1, 1e-4f);
+    EXPECT_NEAR(hi.z, 2, 1e-4f);
+    // The lower part's shape 3: halfway out from the bottom towards the +x point (2, 0, 1),
+    // the height is 1 * 0.5^3 (stack 2 of 4); the upper part's shape 1: straight to the top.
+    EXPECT_TRUE(has({0, 20.125f, 1}));
+    EXPECT_TRUE(has({0, 1 + 20 + 5 * 0.5f, 1}));
+}
+
 // @L(text[, size]): a text at the turtle (its str() for a number), kept with the drawing.
 TEST(Lpy, LabelsAreKeptAtTheTurtle) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
