@@ -683,6 +683,44 @@ TEST(Render, ShadowDarkensTheGroundUnderATree) {
     EXPECT_GT(darker, kW * kH / 200);
 }
 
+// On a software rasteriser a moving frame lights the plant without the shadow map's lookups
+// (thin stems are shaded in whole blocks of pixels, nine lookups each); the ground keeps the
+// plant's shadow. The leafy bush of ABOP fig. 1.25 (n=2) shades itself in the still view.
+TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
+    auto g = grammarOf(
+        "n: 5\nangle: 22.5\nwidth: 0.4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\n"
+        "F -> S/////F\nS -> FL\nL -> [^^{-f+f+f-|-f+f+f}]\n");
+    DeriveResult d = derive(g, 2);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    ASSERT_TRUE(renderer.software());
+    renderer.upload(geometry);
+    SnapshotOptions o;
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    auto differing = [&](render::Quality quality, bool ground) {
+        render::RenderOptions lit = o.render;
+        lit.quality = quality;
+        lit.ground = ground;
+        lit.shadows = true;
+        render::RenderOptions unlit = lit;
+        unlit.shadows = false;
+        const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, lit), b = renderer.renderImage(camera, kW, kH, unlit);
+        int n = 0;
+        for (std::size_t i = 0; i < a.size(); i += 4)
+            n += std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
+        return n;
+    };
+    EXPECT_GT(differing(render::Quality::Still, false), kW * kH / 400) << "the still view: the plant shades itself";
+    ASSERT_LT(renderer.stats().triangles, 4000u) << "a small plant (a big one moves with no shadow at all)";
+    EXPECT_EQ(differing(render::Quality::Interactive, false), 0) << "moving: no shadow on the plant";
+    EXPECT_GT(differing(render::Quality::Interactive, true), kW * kH / 200) << "moving: the ground's shadow";
+}
+
 // The environment drawn with the plant: a region is blue-tinted glass around the stem, an
 // obstacle is solid stone, and a slice of the light grid is deep blue in the leaves' shade.
 TEST(Render, EnvironmentIsDrawnWhenAsked) {
