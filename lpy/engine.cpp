@@ -243,7 +243,9 @@ void Engine::matchBrackets(const LString& s) {
     m_matchOf = &s;
 }
 
-bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound) {
+bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
+                       std::vector<std::uint32_t>* at) {
+    const size_t kept = at ? at->size() : 0;
     std::vector<std::vector<py::object>> per(ps.size());
     const bool indexed = m_matchOf == &s && m_match.size() == s.size();
     for (long k = long(ps.size()) - 1; k >= 0; --k) {
@@ -263,10 +265,12 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
             break;
         }
         if (!matchModule(ps[size_t(k)], s[size_t(j)], per[size_t(k)])) return false;
+        if (at) at->push_back(std::uint32_t(j));
         --j;
     }
     for (auto& v : per)
         for (auto& o : v) bound.push_back(std::move(o));
+    if (at) std::reverse(at->begin() + long(kept), at->end());  // found right to left
     return true;
 }
 
@@ -281,7 +285,8 @@ long Engine::partnerIn(const View& s, size_t j) {
     return -1;
 }
 
-size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound) {
+size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound,
+                          std::vector<std::uint32_t>* at) {
     constexpr size_t npos = size_t(-1);
     for (const PatternModule& p : ps) {
         if (p.isRepeat()) {
@@ -290,8 +295,12 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
             int count = 0;
             for (; count < p.repeatMax; ++count) {
                 std::vector<py::object> one;
-                const size_t end = matchRight(p.repeat, s, j, filter, one);
-                if (end == npos || end == j) break;
+                const size_t kept = at ? at->size() : 0;
+                const size_t end = matchRight(p.repeat, s, j, filter, one, at);
+                if (end == npos || end == j) {
+                    if (at) at->resize(kept);  // not a repetition
+                    break;
+                }
                 for (size_t k = 0; k < one.size() && k < lists.size(); ++k) lists[k].append(one[k]);
                 j = end;
             }
@@ -327,6 +336,7 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
             break;
         }
         if (!matchModule(p, s[j], bound)) return npos;
+        if (at) at->push_back(std::uint32_t(j));
         ++j;
     }
     return j;
@@ -340,8 +350,11 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     std::vector<py::object> left, newLeft, pred, newRight, right;
     for (size_t k = 0; k < len; ++k)
         if (!matchModule(r.pred[k], s[start + k], pred)) return false;
-    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left)) return false;
-    if (!r.right.empty() && matchRight(r.right, View{&s}, start + len, r.filter, right) == size_t(-1)) return false;
+    const bool keep = m_contexts && (!r.left.empty() || !r.right.empty());
+    if (keep) m_left.clear(), m_right.clear();
+    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left, keep ? &m_left : nullptr)) return false;
+    if (!r.right.empty() && matchRight(r.right, View{&s}, start + len, r.filter, right, keep ? &m_right : nullptr) == size_t(-1))
+        return false;
     if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
     // `>>`: a backward step reads the new string already made to its right (built from the end).
     if (!r.newRight.empty() && (forward || matchRight(r.newRight, View{&built, true}, 0, r.filter, newRight) == size_t(-1))) return false;
@@ -391,6 +404,8 @@ bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, L
                 // an interpretation's from where that module came from (the same step's string).
                 const std::uint32_t parent = kind == RuleKind::Production ? std::uint32_t(i) : s[i].parent;
                 for (LModule& m : result) m.rule = pick & ~(1 << 30), m.parent = parent;
+                if (m_contexts && kind == RuleKind::Production && (!r.left.empty() || !r.right.empty()))
+                    m_contexts->add(parent, m_left, m_right);
                 if (forward) out.insert(out.end(), std::make_move_iterator(result.begin()), std::make_move_iterator(result.end()));
                 else out.insert(out.end(), std::make_move_iterator(result.rbegin()), std::make_move_iterator(result.rend()));
                 return true;
@@ -509,7 +524,8 @@ py::object Engine::callHook(const char* name, const LString* s, bool* replaced, 
     return ret;
 }
 
-LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
+LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
+                       std::vector<std::shared_ptr<const ContextMatches>>* contexts) {
     iteration = 0;
     stopRequested = false;
     if (m_nativeOk) {
@@ -524,6 +540,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
     }
     callHook("Start", &s, nullptr, &s);
     if (everyStep) everyStep->push_back(s);
+    if (contexts) contexts->push_back(nullptr);  // the axiom's: none
     const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
     int done = 0;
     for (int i = 0; i < steps; ++i) {
@@ -533,7 +550,12 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
         // Direction and group are read after StartEach (so StartEach may set them).
         LString next;
         if (m_hasKind[prod] && m_queryRules && fillQueries) fillQueries(s);
+        auto matched = contexts ? std::make_shared<ContextMatches>() : nullptr;
         if (m_hasKind[prod]) {
+            struct Keep {  // where the pass's contexts matched, until it ends (or throws)
+                ContextMatches*& to;
+                ~Keep() { to = nullptr; }
+            } keep{m_contexts = matched.get()};
             pass(s, next, RuleKind::Production, forwardDirection);
             s = std::move(next);
         }
@@ -541,6 +563,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep) {
         callHook("EndEach", &s, nullptr, &s);
         ++done;
         if (everyStep) everyStep->push_back(s);
+        if (contexts) matched->sort(), contexts->push_back(std::move(matched));
         if (stopRequested) break;
     }
     iteration = std::max(0, done - 1);

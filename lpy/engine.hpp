@@ -12,6 +12,7 @@
 #include <pybind11/pybind11.h>
 
 #include "core/base/pod_buffer.hpp"
+#include "core/derive/provenance.hpp"
 #include "core/language/expr.hpp"
 #include "lpy/host.hpp"
 #include "lpy/translate.hpp"
@@ -96,7 +97,10 @@ public:
     LString axiom();
     // Runs the derivation as L-Py's derive(): Start, then for each step StartEach,
     // production, decomposition, EndEach, Stop; End after the last step.
-    LString derive(LString s, int steps, std::vector<LString>* everyStep);
+    // `contexts` (with everyStep): per step, where the contexts of the rules that made it
+    // matched in the step before (the derivation inspector's "context matched").
+    LString derive(LString s, int steps, std::vector<LString>* everyStep,
+                   std::vector<std::shared_ptr<const ContextMatches>>* contexts = nullptr);
     // The string with the interpretation rules applied (depth from `maximum depth:`).
     LString interpret(const LString& s);
     bool interprets() const;  // the model has interpretation rules
@@ -140,7 +144,9 @@ private:
     bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
-    bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound);
+    // `at`: where the modules matched are added (their indices in s), when kept.
+    bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound,
+                   std::vector<std::uint32_t>* at = nullptr);
     // A string read left to right, or (the new string of a backward step, built from its
     // end) right to left.
     struct View {
@@ -150,7 +156,8 @@ private:
         const LModule& operator[](size_t j) const { return reversed ? (*s)[s->size() - 1 - j] : (*s)[j]; }
     };
     // Matches `ps` from position j; the position after the match, or npos.
-    size_t matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound);
+    size_t matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound,
+                      std::vector<std::uint32_t>* at = nullptr);
     long partnerIn(const View& s, size_t j);
     bool skipped(int cls, int filter) const;
     LString decompose(LString piece, int depth, RuleKind kind);
@@ -158,6 +165,10 @@ private:
     void checkCancel();
     void matchBrackets(const LString& s);
 
+    // While a production pass keeps where contexts matched (derive's `contexts`): the rules'
+    // matches go here, the last rule tried's context in m_left / m_right.
+    ContextMatches* m_contexts = nullptr;
+    std::vector<std::uint32_t> m_left, m_right;
     Translation m_tr;
     py::dict m_ns;
     const RunOptions& m_options;

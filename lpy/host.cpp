@@ -449,6 +449,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
         out.derivationLength = engine.derivationLength;
         const int steps = options.steps >= 0 ? options.steps : engine.derivationLength;
         std::vector<LString> every;
+        std::vector<std::shared_ptr<const ContextMatches>> contexts;
         engine.fillQueries = [&](LString& s) { fillQueries(engine, s, turtleDefaults(lpyModule)); };
         LString axiom = engine.axiom();
         const auto deriveStart = std::chrono::steady_clock::now();
@@ -468,7 +469,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
                     if (was) PyGC_Enable();
                 }
             } paused;
-            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr);
+            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr, options.keepSteps ? &contexts : nullptr);
         }
         out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
@@ -489,7 +490,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
             for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
             out.drawnFrom.push_back(std::move(from));
         }
-        if (options.keepSteps) out.record = recordOf(every, engine.translation());
+        if (options.keepSteps) out.record = recordOf(every, engine.translation()), out.record.contexts = std::move(contexts);
         for (auto w : py::list(state["warnings"]))
             out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});
         out.drawable = std::move(g);

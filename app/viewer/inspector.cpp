@@ -67,11 +67,17 @@ std::vector<std::string> describe(const DerivationRecord& record, int step, std:
     const Production& rule = g.rules.productions[size_t(made.rule)];
     const auto& before = record.steps[size_t(made.step - 1)];
     const auto& origins = record.origins[size_t(made.step)];
-    if (!rule.hasContext() || !before || !origins) return out;
+    if (!before || !origins) return out;
     const std::uint32_t parent = origins->parent.data()[made.index];
-    StepRewriter rewriter(g, g.rules);
     std::vector<std::size_t> left, right;
-    if (!rewriter.contextOf(*before, parent, rule, left, right)) return out;
+    // Kept by the derivation (L-Py's rules are Python), or found again from the rule.
+    const ContextMatches* kept = size_t(made.step) < record.contexts.size() ? record.contexts[size_t(made.step)].get() : nullptr;
+    if (kept) {
+        if (!kept->find(parent, left, right)) return out;
+    } else {
+        StepRewriter rewriter(g, g.rules);
+        if (!rule.hasContext() || !rewriter.contextOf(*before, parent, rule, left, right)) return out;
+    }
     const std::vector<std::uint64_t> beforeCheckpoints = checkpointsOf(*before, g.alphabet);
     auto text = [&](std::size_t j) { return moduleAt(*before, g.alphabet, beforeCheckpoints, j) + " (" + std::to_string(j) + ")"; };
     std::string context = "context matched in step " + std::to_string(made.step - 1) + ": ";

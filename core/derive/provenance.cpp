@@ -1,5 +1,7 @@
 #include "core/derive/provenance.hpp"
 
+#include <algorithm>
+
 namespace sprout {
 
 const Production* ruleOf(const Grammar& g, int rule) {
@@ -69,6 +71,24 @@ std::vector<std::int32_t> madeBy(const DerivationRecord& r, int step) {
         made.swap(next);
     }
     return made;
+}
+
+void ContextMatches::add(std::uint32_t parent, const std::vector<std::uint32_t>& left, const std::vector<std::uint32_t>& right) {
+    entries.push_back({parent, std::uint32_t(indices.size()), std::uint32_t(left.size()), std::uint32_t(right.size())});
+    indices.insert(indices.end(), left.begin(), left.end());
+    indices.insert(indices.end(), right.begin(), right.end());
+}
+
+void ContextMatches::sort() {
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.parent < b.parent; });
+}
+
+bool ContextMatches::find(std::uint32_t parent, std::vector<std::size_t>& left, std::vector<std::size_t>& right) const {
+    auto it = std::lower_bound(entries.begin(), entries.end(), parent, [](const Entry& e, std::uint32_t p) { return e.parent < p; });
+    if (it == entries.end() || it->parent != parent) return false;
+    left.assign(indices.begin() + it->first, indices.begin() + it->first + it->left);
+    right.assign(indices.begin() + it->first + it->left, indices.begin() + it->first + it->left + it->right);
+    return true;
 }
 
 std::string describeLineage(const Grammar& g, const std::vector<LineageLink>& links) {

@@ -19,12 +19,32 @@ struct LineageLink {
     int ruleLine = 0;          // the rule's line in the file; 0 for the axiom
 };
 
+// Where the contexts of context-sensitive rules matched, kept by a derivation whose rules
+// cannot be matched again from its record (L-Py's, whose rules are Python): for each module
+// of the step read that such a rule rewrote, the modules of that step its left and right
+// contexts matched.
+struct ContextMatches {
+    struct Entry {
+        std::uint32_t parent = 0;            // the module rewritten
+        std::uint32_t first = 0, left = 0, right = 0;  // indices[first, +left): left, then right
+    };
+    std::vector<Entry> entries;  // ascending by parent (sort() after adding)
+    std::vector<std::uint32_t> indices;
+    void add(std::uint32_t parent, const std::vector<std::uint32_t>& left, const std::vector<std::uint32_t>& right);
+    void sort();
+    // The left and right contexts that matched where `parent` was rewritten; false if none.
+    bool find(std::uint32_t parent, std::vector<std::size_t>& left, std::vector<std::size_t>& right) const;
+};
+
 // The steps of a derivation and their origins, kept apart from it (shared pointers to
 // immutable data): the viewer hands it to the window thread while the worker goes on.
 struct DerivationRecord {
     std::shared_ptr<const Grammar> grammar;
     std::vector<std::shared_ptr<const ModuleString>> steps;
     std::vector<std::shared_ptr<const Origins>> origins;
+    // contexts[k]: where contexts matched in making step k from step k - 1, when kept
+    // (ContextMatches; empty or shorter for a grammar, whose rules say it again).
+    std::vector<std::shared_ptr<const ContextMatches>> contexts;
     static DerivationRecord of(Derivation& d);  // steps 0 .. the last one derived
 };
 

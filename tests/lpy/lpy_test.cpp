@@ -359,6 +359,36 @@ TEST(Lpy, PlantGLShapesAreDrawnAtTheTurtle) {
     EXPECT_EQ(mesh.colours[0], 0xC3872DFFu);  // (65, 45, 15) times its diffuse, 3
 }
 
+// Where a context matched is kept with the steps (the derivation inspector's "context
+// matched"): L-Py's rules are Python, so the record keeps it as the run matched it. A signal
+// moving right (a left context), and a right context that skips a branch.
+TEST(Lpy, TheRecordKeepsWhereContextsMatched) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::RunOptions o;
+    o.keepSteps = true;
+    lpy::Model m = lpy::runModel("Axiom: B A A A\nderivation length: 2\nproduction:\nB < A --> B\nB --> A\nendlsystem\n", o);
+    ASSERT_TRUE(m.ok()) << messages(m);
+    EXPECT_EQ(m.derived, "AABA");
+    ASSERT_EQ(m.record.contexts.size(), 3u);
+    EXPECT_FALSE(m.record.contexts[0]) << "the axiom";
+    std::vector<std::size_t> left, right;
+    ASSERT_TRUE(m.record.contexts[1] && m.record.contexts[1]->find(1, left, right));  // A B A A: the A at 1 saw B
+    EXPECT_EQ(left, std::vector<std::size_t>{0});
+    EXPECT_TRUE(right.empty());
+    EXPECT_FALSE(m.record.contexts[1]->find(0, left, right)) << "B --> A has no context";
+    EXPECT_FALSE(m.record.contexts[1]->find(2, left, right)) << "no rule rewrote it";
+    ASSERT_TRUE(m.record.contexts[2]->find(2, left, right));  // A A B A: the A at 2 saw the B at 1
+    EXPECT_EQ(left, std::vector<std::size_t>{1});
+    // The lineage's origins say the same module: step 2's B came from step 1's module 2.
+    EXPECT_EQ(m.record.origins[2]->parent.data()[2], 2u);
+    lpy::Model r = lpy::runModel("Axiom: A [ B ] C\nderivation length: 1\nproduction:\nA > C --> D\nendlsystem\n", o);
+    ASSERT_TRUE(r.ok()) << messages(r);
+    EXPECT_EQ(r.derived, "D[B]C");
+    ASSERT_TRUE(r.record.contexts.size() == 2 && r.record.contexts[1]->find(0, left, right));
+    EXPECT_TRUE(left.empty());
+    EXPECT_EQ(right, std::vector<std::size_t>{4}) << "the branch [ B ] skipped";
+}
+
 // PlantGL's AsymmetricHull (a crown: four radii, four heights, a bottom and a top point, the
 // shapes of its lower and upper parts) as PlantGL's discretizer makes it, in @g's frame.
 TEST(Lpy, AsymmetricHullIsACrownThroughItsPoints) {

@@ -337,6 +337,19 @@ TEST(Window, InspectorSaysWhichContextMatched) {
                                                  "inspect: context matched in step 1: < [A (1)] > T (2)"}));
 }
 
+// The same for an L-Py model, whose rules are Python: where the context matched is kept by
+// the run. Step 2 is F F F B; its B was made by B < A --> B (line 5) from step 1's A (3),
+// whose left context was step 1's B (2).
+TEST(Window, InspectorSaysWhichContextMatchedInAnLpyModel) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("inspect_lpy");
+    std::ofstream(dir / "model.lpy") << "# a signal\nAxiom: F B A A\nderivation length: 2\nproduction:\nB < A --> B\nB --> F\nendlsystem\n";
+    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1200x800", "wait\ntrust yes\nwait\ninspect 2 3\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "inspect: B", "inspect: made at step 2 by line 5",
+                                                 "inspect: context matched in step 1: B (2) < [A (3)] >"}));
+}
+
 // A still scene costs nothing: while the script sleeps the window keeps making frames (the
 // panel), but the 3D view is drawn again only when something changes (a turn of the camera).
 TEST(Window, StillViewIsNotDrawnAgain) {
