@@ -198,12 +198,26 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         ++mesh;
     }
     st.materials = materialOf.size();
+    // Texts (L-Py's @L labels): an empty node each where it stands, named by the text (Blender
+    // makes each an empty of that name), its size in pixels in extras; under a node "labels".
+    if (const auto& labels = scene.geometry().labels; !labels.empty()) {
+        std::string children;
+        for (std::size_t k = 0; k < labels.size(); ++k) {
+            const Geometry::Label& l = labels[k];
+            nodes += (nodes.empty() ? "" : ",") + std::string("{\"name\":") + jsonString(l.text) + ",\"translation\":[" +
+                     fmt(l.position.x) + "," + fmt(l.position.y) + "," + fmt(l.position.z) + "],\"extras\":{\"label\":" +
+                     jsonString(l.text) + ",\"size\":" + fmt(l.size) + "}}";
+            children += (k ? "," : "") + std::to_string(mesh + k);
+        }
+        nodes += ",{\"name\":\"labels\",\"children\":[" + children + "]}";
+        sceneNodes += (sceneNodes.empty() ? "" : ",") + std::to_string(mesh + labels.size());
+    }
     std::string json = "{\"asset\":{\"version\":\"2.0\",\"generator\":" + jsonString(o.generator) +
                        "},\"scene\":0,\"scenes\":[{\"name\":\"plant\",\"nodes\":[" + sceneNodes + "]}]";
+    if (!nodes.empty()) json += ",\"nodes\":[" + nodes + "]";
     if (mesh) {
-        json += ",\"nodes\":[" + nodes + "],\"meshes\":[" + meshes + "],\"materials\":[" + materials +
-                "],\"accessors\":[" + accessors + "],\"bufferViews\":[" + views + "],\"buffers\":[{\"byteLength\":" +
-                std::to_string(offset) + "}]";
+        json += ",\"meshes\":[" + meshes + "],\"materials\":[" + materials + "],\"accessors\":[" + accessors +
+                "],\"bufferViews\":[" + views + "],\"buffers\":[{\"byteLength\":" + std::to_string(offset) + "}]";
     }
     json += "}";
     while (json.size() % 4) json += ' ';

@@ -30,6 +30,7 @@ public:
 
     std::vector<Primitive> primitives;  // part order, then colour
     std::size_t stems() const { return m_runs.size(); }
+    const Geometry& geometry() const { return m_g; }
 
     // Calls f(chunk) with the primitive's triangles a few thousand items at a time; the
     // chunk's indices count from the chunk's first vertex.

@@ -122,6 +122,22 @@ bool writeSvg(const Geometry& g, const std::string& path, const ExportOptions& o
              d + "\"/>\n";
     }
     st.materials = fills.size();
+    // Texts (L-Py's @L labels) where they stand, in their colour and size (pixels of the view).
+    for (const Geometry::Label& l : g.labels) {
+        const glm::vec2 q = pr(l.position);
+        s += "<text x=\"";
+        num(s, q.x), s += "\" y=\"", num(s, q.y);
+        s += "\" font-family=\"sans-serif\" font-size=\"";
+        num(s, l.size);
+        s += "\" fill=\"" + rgb(l.colour) + "\">";
+        for (char c : l.text) {
+            if (c == '<') s += "&lt;";
+            else if (c == '>') s += "&gt;";
+            else if (c == '&') s += "&amp;";
+            else if (std::uint8_t(c) >= 0x20 || c == '\t') s += c;
+        }
+        s += "</text>\n";
+    }
     s += "</svg>\n";
 
     if (!writeFileAtomically(path, s, error)) return false;

@@ -185,6 +185,39 @@ TEST(Export, SvgIsValidXmlAndFramesTheCurve) {
     EXPECT_NEAR(ymax, H - 20.0f, 0.5f);
 }
 
+// Texts (L-Py's @L labels) go with the model: in a .glb an empty node each, named by its text,
+// where it stands (Blender makes them named empties), under a node "labels"; in an SVG a
+// <text> each. Read back by the Khronos validator and xmllint.
+TEST(Export, LabelsAreNamedNodesAndTexts) {
+    const std::string model = writeTemp("labels.lpy", "Axiom: F(2) @L('top') [+(90) F(1) @L('a <b>', 26)]\n"
+                                                       "derivation length: 0\nproduction:\nendlsystem\n");
+    const std::string glb = temp("labels.glb"), svg = temp("labels.svg");
+    Result r = runSprout("export " + model + " -o " + glb);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string bytes = slurp(glb);
+    ASSERT_GE(bytes.size(), 20u);
+    std::uint32_t jsonLength = 0;
+    std::memcpy(&jsonLength, bytes.data() + 12, 4);
+    const std::string json = bytes.substr(20, jsonLength);
+    EXPECT_NE(json.find("{\"name\":\"top\",\"translation\":[0,2,0]"), std::string::npos) << json;
+    EXPECT_NE(json.find("{\"name\":\"a <b>\",\"translation\":[-1,2,0]"), std::string::npos) << json;  // turned left
+    EXPECT_NE(json.find("{\"name\":\"labels\",\"children\":[1,2]}"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"nodes\":[0,3]"), std::string::npos) << "the stems and the labels in the scene: " << json;
+    const std::string validator = std::string(SPROUT_TOOLS_DIR) + "/validate_gltf.js";
+    std::string report;
+    EXPECT_EQ(shell("node " + validator + " " + glb, &report), 0) << report;
+    EXPECT_NE(report.find("\"errors\": 0"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"warnings\": 0"), std::string::npos) << report;
+    r = runSprout("export " + model + " -o " + svg);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(shell("xmllint --noout " + svg, &report), 0) << report;
+    const std::string text = slurp(svg);
+    EXPECT_NE(text.find("font-size=\"13.00\" fill=\"#c3872d\">top</text>"), std::string::npos) << text;
+    EXPECT_NE(text.find(">a &lt;b&gt;</text>"), std::string::npos) << text;
+    std::remove(glb.c_str());
+    std::remove(svg.c_str());
+}
+
 TEST(Export, ErrorsAreMessagesNotCrashes) {
     Result r = runSprout("export koch -o out.xyz");
     EXPECT_EQ(r.code, 2);
