@@ -257,7 +257,7 @@ void Renderer::adopt(const PreparedScene& p) {
         GLint maxTexels = 0;
         glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
         if (c.size() * (sizeof(CylinderInstance) / 4) <= std::size_t(maxTexels)) {
-            while (glGetError() != GL_NO_ERROR) {
+            for (int k = 0; k < 16 && glGetError() != GL_NO_ERROR; ++k) {  // errors of before, cleared
             }
             glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(c.size() * sizeof(CylinderInstance)), c.data(), GL_STATIC_DRAW);
             if (glGetError() == GL_NO_ERROR) s.curveCount = c.size(), s.rasterCurve = nullptr;
