@@ -668,7 +668,11 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 const char* utf8 = str ? PyUnicode_AsUTF8AndSize(str, &length) : nullptr;
                 if (utf8 && length > 0) {
                     auto& labels = g->settings.labels;
-                    std::string t(utf8, size_t(std::min<Py_ssize_t>(length, 200)));
+                    // At most 200 bytes, cut where a character begins (the text stays UTF-8:
+                    // exported models carry it).
+                    size_t n = size_t(std::min<Py_ssize_t>(length, 200));
+                    while (n < size_t(length) && n > 0 && (std::uint8_t(utf8[n]) & 0xC0) == 0x80) --n;
+                    std::string t(utf8, n);
                     auto found = labelIndex.find(t);
                     if (found == labelIndex.end() && labels.size() < 100000) {
                         found = labelIndex.emplace(t, int(labels.size())).first;

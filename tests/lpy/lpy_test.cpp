@@ -434,6 +434,16 @@ TEST(Lpy, AsymmetricHullIsACrownThroughItsPoints) {
     EXPECT_TRUE(has({0, 1 + 20 + 5 * 0.5f, 1}));
 }
 
+// A text past 200 bytes is cut where a character begins: what is kept stays UTF-8 (an
+// exported model carries it).
+TEST(Lpy, LongLabelsAreCutWhereACharacterBegins) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::Model m = lpy::runModel("Axiom: F @L('" + std::string(199, 'a') + "\u00e9\u00e9')\nderivation length: 0\nproduction:\nendlsystem\n", {});
+    ASSERT_TRUE(m.ok()) << messages(m);
+    ASSERT_EQ(m.drawable->settings.labels.size(), 1u);
+    EXPECT_EQ(m.drawable->settings.labels[0], std::string(199, 'a')) << "not half of the first \u00e9";
+}
+
 // @L(text[, size]): a text at the turtle (its str() for a number), kept with the drawing.
 TEST(Lpy, LabelsAreKeptAtTheTurtle) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
