@@ -28,6 +28,11 @@
 #include "app/viewer/app.hpp"
 #include "app/viewer/window_input.hpp"
 
+// GLFW's X11 display and GLX window (glfw3native.h would bring X11's and GL's headers in over
+// glad's): Display* and GLXWindow, an XID.
+extern "C" void* glfwGetX11Display(void);
+extern "C" unsigned long glfwGetGLXWindow(GLFWwindow* window);
+
 namespace sprout::viewer {
 namespace {
 
@@ -185,8 +190,13 @@ struct PanelCache {
     std::uint64_t hash = 0;
 };
 
+// What drawPanel put in the window's back buffer: ImGui drawn over the whole window, the
+// panel's strip copied from the cache, or nothing (the strip there is this frame's panel).
+enum class PanelDrawn { Whole, Strip, Kept };
+
 // `hash`: drawDataHash of this frame's draw data when the frame already made it, else 0.
-void drawPanel(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash) {
+// `kept`: the back buffer's strip holds the cached panel (the window was not swapped since).
+PanelDrawn drawPanel(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept = false) {
     ImDrawData* d = ImGui::GetDrawData();
     // Whether everything ImGui draws lies in the strip: each command's clip rectangle, or
     // where its triangles are when it is clipped to more (a window's background is clipped
@@ -214,13 +224,17 @@ void drawPanel(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash) 
     if (!inStrip) {
         cache.hash = 0;
         ImGui_ImplOpenGL3_RenderDrawData(d);
-        return;
+        return PanelDrawn::Whole;
     }
     if (!cache.image || cache.width != fw || cache.height != fh) {
         cache.image = std::make_unique<render::ColourTarget>(fw, fh);
         cache.width = fw, cache.height = fh, cache.hash = 0;
     }
     const std::uint64_t h = hash ? hash : drawDataHash(d);
+    if (kept && h == cache.hash && h != 0) {
+        ++app.panelCopies;
+        return PanelDrawn::Kept;
+    }
     if (h != cache.hash || h == 0) {
         glBindFramebuffer(GL_FRAMEBUFFER, cache.image->fbo);
         const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
@@ -236,7 +250,42 @@ void drawPanel(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash) 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, app.panelWidth, fh, 0, 0, app.panelWidth, fh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return PanelDrawn::Strip;
 }
+
+// How a frame goes to the screen. Software GL under X (Mesa's drisw, GLX_MESA_copy_sub_buffer):
+// the window's back buffer is copied to the X server by glXCopySubBufferMESA instead of
+// swapped, so it keeps what it holds; a frame whose panel is as it was copies neither the
+// panel's strip into it nor that strip to the server, only the view. Elsewhere (a GPU, whose
+// swap is synchronised to the display, or no such extension) a swap.
+struct Presenter {
+    using CopySubBuffer = void (*)(void* display, unsigned long drawable, int x, int y, int width, int height);
+    using QueryExtensions = const char* (*)(void* display, int screen);
+    CopySubBuffer copy = nullptr;
+    void* display = nullptr;
+    unsigned long drawable = 0;
+    bool kept = false;  // the back buffer's panel strip is the cached panel
+
+    void init(GLFWwindow* window, bool software) {
+        if (!software || std::getenv("SPROUT_SWAP")) return;
+        display = glfwGetX11Display();
+        drawable = glfwGetGLXWindow(window);
+        auto query = reinterpret_cast<QueryExtensions>(glfwGetProcAddress("glXQueryExtensionsString"));
+        const char* extensions = display && drawable && query ? query(display, 0) : nullptr;
+        if (extensions && std::strstr(extensions, "GLX_MESA_copy_sub_buffer"))
+            copy = reinterpret_cast<CopySubBuffer>(glfwGetProcAddress("glXCopySubBufferMESA"));
+    }
+    // `panel`: what drawPanel did; the view is the rest of the window right of the panel.
+    void present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh) {
+        if (!copy) {
+            glfwSwapBuffers(window);
+            return;
+        }
+        if (panel == PanelDrawn::Kept) copy(display, drawable, panelWidth, 0, fw - panelWidth, fh);
+        else copy(display, drawable, 0, 0, fw, fh);
+        kept = panel != PanelDrawn::Whole;
+    }
+};
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
@@ -347,6 +396,8 @@ int runViewer(int argc, char** argv) {
     double last = glfwGetTime(), lastDiskCheck = last;
     bool screenshotDone = false;
     PanelCache panelCache;
+    Presenter presenter;
+    presenter.init(window, app.renderer.software());
     int framesWithPlant = 0;
     std::string windowTitle;
     while (!glfwWindowShouldClose(window) || (app.state.dirty() && !app.quitConfirmed && script.empty() && !screenshot)) {
@@ -640,7 +691,8 @@ int runViewer(int argc, char** argv) {
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
-        if (present) drawPanel(app, panelCache, fw, fh, uiHash);
+        PanelDrawn panelDrawn = PanelDrawn::Whole;
+        if (present) panelDrawn = drawPanel(app, panelCache, fw, fh, uiHash, presenter.kept);
 
         // A text that makes no plant (errors, an L-Py model not trusted) is on screen as it
         // is: screenshots and scripts go on once its result is in.
@@ -658,7 +710,7 @@ int runViewer(int argc, char** argv) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
-        if (present) glfwSwapBuffers(window);
+        if (present) presenter.present(window, panelDrawn, app.panelWidth, fw, fh);
         else glFlush();  // the piece goes on drawing meanwhile
         if (!script.empty() && framesWithPlant > 0 && !script.step(app)) {
             app.quitConfirmed = true;

@@ -21,11 +21,12 @@ namespace fs = std::filesystem;
 
 bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
-int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null") {
+int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null",
+                 const std::string& server = "-screen 0 1600x1000x24") {
     fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
     fs::create_directories(home);
     std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CONFIG_HOME=" + home.string() + "/config XDG_CACHE_HOME=" +
-                      home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' " SPROUT_BINARY " " +
+                      home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '" + server + "' " SPROUT_BINARY " " +
                       args + " >" + stdoutFile + " 2>/dev/null";
     return std::system(cmd.c_str());
 }
@@ -348,6 +349,103 @@ TEST(Window, InspectorSaysWhichContextMatchedInAnLpyModel) {
     const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1200x800", "wait\ntrust yes\nwait\ninspect 2 3\nquit\n");
     EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "inspect: B", "inspect: made at step 2 by line 5",
                                                  "inspect: context matched in step 1: B (2) < [A (3)] >"}));
+}
+
+// What the X server shows is what the window drew. On software GL under X a frame goes to the
+// server by glXCopySubBufferMESA, and one whose panel is as it was (every frame of a drag)
+// sends only the view, the back buffer keeping the panel; SPROUT_SWAP=1 swaps instead. Xvfb
+// keeps its screen in a file (-fbdir, an XWD image), read during a long drag and after it:
+// the view on the screen moves, the view let go of is the window's own picture of it, and
+// both ways show the same window.
+TEST(Window, TheScreenShowsWhatTheWindowDrew) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    // Low enough that the presets' thumbnails, made in the background as the run goes, are
+    // below the panel's fold: a drag's frames then all have the panel as it was.
+    constexpr int kW = 1200, kH = 560, kPanel = 430;
+    // The window's rectangle of the screen, RGB (the window is at the screen's corner).
+    auto window = [&](const std::string& screen, std::vector<std::uint8_t>& out) {
+        out.clear();
+        if (screen.size() < 100) return false;
+        auto field = [&](int k) {  // XWD's header: big-endian 32-bit fields
+            const auto* b = reinterpret_cast<const unsigned char*>(screen.data()) + 4 * k;
+            return std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 | b[3];
+        };
+        const std::uint32_t header = field(0), width = field(4), height = field(5), bitsPerPixel = field(11),
+                            bytesPerLine = field(12), colours = field(19);
+        const std::size_t pixels = header + std::size_t(colours) * 12;
+        if (bitsPerPixel != 32 || width < std::uint32_t(kW) || height < std::uint32_t(kH) ||
+            screen.size() < pixels + std::size_t(bytesPerLine) * height)
+            return false;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < kW; ++x) {
+                const auto* p = reinterpret_cast<const unsigned char*>(screen.data()) + pixels + std::size_t(y) * bytesPerLine + 4 * x;
+                out.insert(out.end(), {p[2], p[1], p[0]});  // B G R X
+            }
+        return true;
+    };
+    // Pixels that differ by more than 30 of 765 in columns [x0, x1) of rows [0, y1).
+    auto differing = [&](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int x0, int x1, int y1) {
+        int n = 0;
+        for (int y = 0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const std::size_t i = (std::size_t(y) * kW + std::size_t(x)) * 3;
+                n += std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]) > 30;
+            }
+        return n;
+    };
+    std::vector<std::uint8_t> last[2];  // the screen after letting go, each way
+    for (int way = 0; way < 2; ++way) {
+        SCOPED_TRACE(way ? "swapped" : "copied");
+        const fs::path dir = testDir(way ? "screen_swap" : "screen_copy"), fb = dir / "fb";
+        fs::remove_all(fb);
+        fs::create_directories(fb);
+        const fs::path start = dir / "start.png", view = dir / "view.png";
+        fs::remove(start);
+        fs::remove(view);
+        std::ofstream(dir / "script.txt") << "wait\nsleep 0.3\nwait\nscreenshot " << start.string()
+                                          << "\ndrag 720 0 240\nrelease\nwait\nsleep 0.3\nwait\nscreenshot " << view.string()
+                                          << "\nsleep 4\nquit\n";
+        int code = -1;
+        std::thread app([&] {
+            code = runUnderXvfb("binary_tree --size " + std::to_string(kW) + "x" + std::to_string(kH) + " --script " +
+                                    (dir / "script.txt").string(),
+                                way ? "SPROUT_SWAP=1" : "", "/dev/null", "-screen 0 1600x1000x24 -fbdir " + fb.string());
+        });
+        auto screen = [&] {
+            std::ifstream in(fb / "Xvfb_screen0", std::ios::binary);
+            return std::string(std::istreambuf_iterator<char>(in), {});
+        };
+        // During the drag (from the first screenshot to the second), the screen now and then.
+        std::vector<std::vector<std::uint8_t>> during;
+        for (int k = 0; k < 1200 && !fs::exists(view); ++k) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            std::vector<std::uint8_t> w;
+            if (fs::exists(start) && !fs::exists(view) && window(screen(), w)) during.push_back(std::move(w));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));
+        const bool read = window(screen(), last[way]);
+        app.join();
+        EXPECT_EQ(code, 0);
+        ASSERT_TRUE(read) << "no screen read";
+        ASSERT_GE(during.size(), 3u) << "the drag was seen on the screen";
+        int moved = 0;
+        for (std::size_t k = 1; k < during.size(); ++k) moved += differing(during[k], during[k - 1], kPanel, kW, kH) > (kW - kPanel) * kH / 200;
+        EXPECT_GE(moved, 2) << "the view moves on the screen during the drag";
+        EXPECT_GE(2 * moved, int(during.size())) << "at every look, nearly";
+        // The view let go of, on the screen right of the panel, against the window's picture of it.
+        Image v = load(view.string());
+        ASSERT_EQ(v.width, kW - kPanel);
+        ASSERT_EQ(v.height, kH);
+        int differ = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < v.width; ++x) {
+                const auto* a = &last[way][(std::size_t(y) * kW + std::size_t(x + kPanel)) * 3];
+                const auto* b = &v.rgba[(std::size_t(y) * std::size_t(v.width) + std::size_t(x)) * 4];
+                differ += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 30;
+            }
+        EXPECT_LT(differ, v.width * kH / 100) << "the screen's view is the window's (up to the mouse pointer)";
+    }
+    EXPECT_LT(differing(last[0], last[1], 0, kW, kH), kW * kH / 200) << "copied and swapped frames show the same window";
 }
 
 // A still scene costs nothing: while the script sleeps the window keeps making frames (the
