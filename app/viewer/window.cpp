@@ -687,6 +687,7 @@ int runViewer(int argc, char** argv) {
             glViewport(0, 0, fw, fh);
             glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
             glClear(GL_COLOR_BUFFER_BIT);
+            presenter.kept = false;  // the panel's strip too
             if (app.state.plant()) ++framesWithPlant;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
