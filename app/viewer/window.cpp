@@ -18,6 +18,7 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "app/cli/args.hpp"
@@ -293,6 +294,10 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
 }
 
+// The window was uncovered (an X Expose, no compositor): its next frame is sent whole.
+bool g_exposed = false;
+void onRefresh(GLFWwindow*) { g_exposed = true; }
+
 }  // namespace
 
 }  // namespace sprout::viewer
@@ -358,6 +363,7 @@ int runViewer(int argc, char** argv) {
     ImGui::GetStyle().WindowRounding = 0;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     glfwSetDropCallback(window, onDrop);
+    glfwSetWindowRefreshCallback(window, onRefresh);
     ImGui_ImplOpenGL3_Init("#version 330");
 
     app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
@@ -692,6 +698,7 @@ int runViewer(int argc, char** argv) {
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
+        if (std::exchange(g_exposed, false)) presenter.kept = false;  // its next shown frame sends it whole
         PanelDrawn panelDrawn = PanelDrawn::Whole;
         if (present) panelDrawn = drawPanel(app, panelCache, fw, fh, uiHash, presenter.kept);
 
