@@ -132,7 +132,7 @@ struct Renderer::Pass {
     glm::vec3 eye{0.0f}, centre{0.0f};
     float texel = 0, groundRadius = 0;
     bool shadows = false, ground = false, curve = false, bigInteractive = false;
-    bool plantShadows = false;  // the plant (and environment) lit with the shadow map's lookups
+    bool plantShadows = false;  // the plant lit with the shadow map's lookups (the ground: shadows)
     int width = 0, height = 0, x = 0, y = 0;
     unsigned target = 0;
     RenderOptions o;

@@ -664,11 +664,13 @@ TEST(Render, KochCurveIsLeftRightSymmetric) {
     EXPECT_GT(double(agree) / total, 0.97);
 }
 
+// ABOP fig. 1.25: a bush with leaves (n=5), which shades itself and its ground.
+constexpr const char* kLeafyBush =
+    "n: 5\nangle: 22.5\nwidth: 0.4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\n"
+    "F -> S/////F\nS -> FL\nL -> [^^{-f+f+f-|-f+f+f}]\n";
+
 TEST(Render, ShadowDarkensTheGroundUnderATree) {
-    // ABOP fig. 1.25: a bush with leaves.
-    auto g = grammarOf(
-        "n: 5\nangle: 22.5\nwidth: 0.4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\n"
-        "F -> S/////F\nS -> FL\nL -> [^^{-f+f+f-|-f+f+f}]\n");
+    auto g = grammarOf(kLeafyBush);
     SnapshotOptions lit;
     lit.render.shadows = true;
     SnapshotOptions unlit = lit;
@@ -687,9 +689,7 @@ TEST(Render, ShadowDarkensTheGroundUnderATree) {
 // (thin stems are shaded in whole blocks of pixels, nine lookups each); the ground keeps the
 // plant's shadow. The leafy bush of ABOP fig. 1.25 (n=2) shades itself in the still view.
 TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
-    auto g = grammarOf(
-        "n: 5\nangle: 22.5\nwidth: 0.4\naxiom: A\nA -> [&FL!A]/////'[&FL!A]///////'[&FL!A]\n"
-        "F -> S/////F\nS -> FL\nL -> [^^{-f+f+f-|-f+f+f}]\n");
+    auto g = grammarOf(kLeafyBush);
     DeriveResult d = derive(g, 2);
     ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
