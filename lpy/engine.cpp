@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-
-#include <algorithm>
 #include <functional>
 
 #include "core/language/module_string.hpp"
@@ -611,7 +609,14 @@ std::string Engine::text(const LString& s) const {
         for (Py_ssize_t k = 0; k < n; ++k) {
             if (k) out += ',';
             PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), k);
-            if (PyFloat_Check(v) || (PyLong_Check(v) && !PyBool_Check(v))) {
+            // Ints past 2^53 as Python writes them: a double would round them.
+            bool smallInt = false;
+            if (PyLong_Check(v) && !PyBool_Check(v)) {
+                int overflow = 0;
+                const long long i = PyLong_AsLongLongAndOverflow(v, &overflow);
+                smallInt = !overflow && i > -(1ll << 53) && i < (1ll << 53);
+            }
+            if (PyFloat_Check(v) || smallInt) {
                 appendNumber(out, PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyLong_AsDouble(v));
             } else {
                 out += py::repr(v).cast<std::string>();

@@ -84,6 +84,8 @@ struct ModelError {
     std::string message;
 };
 
+class NativeHelper;  // lpy/native.cpp
+
 class Engine {
 public:
     Engine(Translation translation, py::dict ns, const RunOptions& options);
@@ -177,8 +179,9 @@ private:
     std::unordered_map<int, Index> m_index[3];  // per kind: group -> index
     bool m_hasKind[3] = {false, false, false};
     bool m_queryRules = false;  // a production's header has a query module
-    // The native path's rules: the class and arity they match, the modules they make with
-    // their arguments compiled (Sprout's expressions on the matched numbers).
+public:
+    // The native path's rules (lpy/native.cpp): the class and arity they match, the modules
+    // they make with their arguments compiled (Sprout's expressions on the matched numbers).
     struct NativeArg {
         Expr expr;
         bool isFloat = false;    // a float whatever its inputs
@@ -191,11 +194,78 @@ private:
     struct NativeRule {
         int cls = 0, arity = 0, index = 0;
         std::uint32_t params = 0;  // the numbers its successor holds
+        std::uint32_t firstOut = 0, firstArg = 0;  // in m_flatOuts, m_flatArgs
         std::vector<NativeOut> outs;
     };
+    // The rules laid out flat for the derivation's inner loop: per class its one rule
+    // (several by arity: `many`, found by nativeRule), its modules, their arguments.
+    struct FlatArg {
+        const Expr* expr;
+        std::uint64_t need;  // an int when the module's ints hold all of these bits (bit 32: never)
+    };
+    struct FlatOut {
+        int cls;
+        std::uint32_t n;
+    };
+    // A rule whose arguments are all a parameter times a constant plus a constant
+    // (Expr::affine) or a constant: its numbers are written without an Expr call.
+    struct FastArg {
+        double mul, add;
+        std::uint64_t need;  // as FlatArg::need
+        std::uint32_t slot;
+    };
+    struct FastOut {
+        int cls;
+        std::uint32_t first, n;  // its numbers: the rule's numbers [first, first + n)
+        std::uint32_t mask;      // n low bits
+    };
+    struct FastRule {
+        std::uint32_t outs = 0, args = 0, firstOut = 0, firstArg = 0;
+        double scale = 0, shift = 0;  // the largest |mul| and |add| of its arguments
+    };
+    struct NativeClass {
+        const NativeRule* rule = nullptr;
+        std::uint32_t arity = 0;
+        bool many = false;
+        bool fast = false;  // its rule is a fast one: then its numbers and modules are these
+        std::uint32_t fastArgs = 0, fastOuts = 0, firstFastArg = 0, firstFastOut = 0;
+    };
+    struct Tables {
+        const NativeClass* classes;
+        size_t classCount;
+        const FlatOut* flatOuts;
+        const FlatArg* flatArgs;
+        const FastOut* fastOuts;
+        const FastArg* fastArgs;
+    };
+    // Where a step writes: modules, their numbers (`at`: the index of the next one), origins.
+    struct NativeCursor {
+        NumString::Module* out;
+        double* values;
+        std::uint32_t at;
+        NumString::Origin* origin;  // null when origins are not kept
+    };
     const NativeRule* nativeRule(int cls, std::uint32_t arity) const;
+
+private:
+    // Rewrites cur's modules [begin, end) from c on; false when a value is not one Python
+    // would give. `checked`: whether the fast rules' values are checked too (not needed where
+    // the step's numbers are too small for them to reach 2^53: nativeStep).
+    bool nativeRange(const NumString& cur, size_t begin, size_t end, NativeCursor& c, bool checked) const;
+    // What cur's modules [0, end) make: modules, and numbers.
+    void nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params) const;
+    // All of cur, from c on (shared with a second thread when big); throws Cancelled.
+    bool nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper);
     std::vector<NativeRule> m_native;
     std::vector<std::vector<int>> m_nativeByClass;
+    std::vector<FastRule> m_fastRules;  // per native rule
+    std::vector<FastOut> m_fastOuts;
+    std::vector<FastArg> m_fastArgs;
+    double m_fastScale = 0, m_fastShift = 0;  // over all fast rules
+    std::vector<NativeClass> m_nativeClass;
+    std::vector<FlatOut> m_flatOuts;
+    std::vector<FlatArg> m_flatArgs;
+    std::uint32_t m_nativeMaxOuts = 1, m_nativeMaxParams = 0;
     bool m_nativeOk = false;
     void prepareNative();
     int m_depth[3] = {1, 1, 1};

@@ -17,6 +17,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "core/base/huge_pages.hpp"
+
 namespace sprout {
 
 // `HugeFrom`: the size in bytes from which a buffer is mapped with huge pages.
@@ -69,27 +71,7 @@ public:
             m_capacity = n;
             return;
         }
-        if (m_mapped) {
-            // Grown by moving the pages, not copying them: a copy would hold the old and the
-            // new buffer at once (the turtle's 390 MB of segments for a 9.8 M-segment curve
-            // peaked at 700 MB while its buffer doubled).
-            const size_t have = roundUp(m_capacity * sizeof(T)), want = roundUp(bytes);
-            void* moved = mremap(m_data, have, want, MREMAP_MAYMOVE);
-            if (moved != MAP_FAILED) {
-                madvise(moved, want, MADV_HUGEPAGE);
-                m_data = static_cast<T*>(moved);
-                m_capacity = want / sizeof(T);
-                return;
-            }
-        }
-        T* p = mapHuge(bytes);
-        const size_t size = m_size;
-        if (size) std::memcpy(p, m_data, size * sizeof(T));
-        release();
-        m_size = size;
-        m_data = p;
-        m_mapped = true;
-        m_capacity = roundUp(bytes) / sizeof(T);
+        growMapped(bytes);
     }
     // Size n; elements past the old size are uninitialised.
     void resizeUninitialized(size_t n) {
@@ -136,25 +118,36 @@ public:
 
 private:
     static constexpr size_t kHugeThreshold = HugeFrom;
-    static constexpr size_t kHugePage = 2u << 20;
-    static size_t roundUp(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+    static size_t roundUp(size_t bytes) { return huge_pages::roundUp(bytes); }
 
-    // A 2 MB-aligned private mapping advised for huge pages (the slack around it unmapped).
-    static T* mapHuge(size_t bytes) {
-        const size_t size = roundUp(bytes);
-        void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (raw == MAP_FAILED) throw std::bad_alloc();
-        char* base = static_cast<char*>(raw);
-        char* aligned = reinterpret_cast<char*>((reinterpret_cast<uintptr_t>(base) + kHugePage - 1) & ~(kHugePage - 1));
-        if (aligned > base) munmap(base, size_t(aligned - base));
-        char* end = aligned + size;
-        char* rawEnd = base + size + kHugePage;
-        if (rawEnd > end) munmap(end, size_t(rawEnd - end));
-        madvise(aligned, size, MADV_HUGEPAGE);
-        return reinterpret_cast<T*>(aligned);
+    // Out of the callers' loops (a derivation step's): rare, and big.
+    [[gnu::noinline]] void growMapped(size_t bytes) {
+        if (m_mapped && m_size == 0) release();  // nothing to keep: a kept mapping may fit, its pages in
+        if (m_mapped) {
+            // Grown by moving the pages, not copying them: a copy would hold the old and the
+            // new buffer at once (the turtle's 390 MB of segments for a 9.8 M-segment curve
+            // peaked at 700 MB while its buffer doubled).
+            const size_t have = roundUp(m_capacity * sizeof(T)), want = roundUp(bytes);
+            void* moved = mremap(m_data, have, want, MREMAP_MAYMOVE);
+            if (moved != MAP_FAILED) {
+                madvise(moved, want, MADV_HUGEPAGE);
+                m_data = static_cast<T*>(moved);
+                m_capacity = want / sizeof(T);
+                return;
+            }
+        }
+        size_t got = 0;
+        T* p = static_cast<T*>(huge_pages::take(bytes, got));
+        const size_t size = m_size;
+        if (size) std::memcpy(p, m_data, size * sizeof(T));
+        release();
+        m_size = size;
+        m_data = p;
+        m_mapped = true;
+        m_capacity = got / sizeof(T);
     }
     void release() {
-        if (m_mapped) munmap(m_data, roundUp(m_capacity * sizeof(T)));
+        if (m_mapped) huge_pages::give(m_data, roundUp(m_capacity * sizeof(T)));
         else std::free(m_data);
         m_data = nullptr;
         m_capacity = m_size = 0;

@@ -52,6 +52,25 @@ public:
         }
     }
     Kind kind() const { return m_kind; }
+    // Where the expression is a parameter, or a parameter and a constant added, subtracted
+    // or multiplied: x * mul + add with x = slots[slot] gives the same double as eval() for
+    // every finite x (mul is +-1 or add is -0, so the product or the sum is exact, fused or not).
+    bool affine(std::uint16_t& slot, double& mul, double& add) const {
+        slot = m_slot;
+        mul = 1;
+        add = -0.0;
+        if (m_kind == Kind::Slot) return true;
+        if (m_kind != Kind::SlotOpConst && m_kind != Kind::ConstOpSlot) return false;
+        switch (m_op) {
+            case Op::Add: add = m_value; return true;
+            case Op::Mul: mul = m_value; return true;
+            case Op::Sub:
+                if (m_kind == Kind::SlotOpConst) add = -m_value;  // x - c is x + -c
+                else mul = -1, add = m_value;                     // c - x is -x + c
+                return true;
+            default: return false;
+        }
+    }
     bool isConstant() const { return m_kind == Kind::Const; }
     double constantValue() const { return m_value; }
     bool usesRandom() const { return m_usesRandom; }

@@ -126,5 +126,29 @@ TEST(PodBuffer, GrowingPastTheHugePageThresholdKeepsTheContents) {
     EXPECT_EQ(copy.back(), 7u);
 }
 
+// A big buffer given back keeps its mapping for the next one (its pages already in: the kernel
+// does not clear them again), and a buffer in it grows and shrinks like any other.
+TEST(PodBuffer, ABigBufferGivenBackIsTakenAgain) {
+    const std::uint32_t* first = nullptr;
+    {
+        PodBuffer<std::uint32_t> b;
+        b.resizeUninitialized(3'000'000);  // 12 MB: mapped
+        first = b.data();
+    }
+    PodBuffer<std::uint32_t> again;
+    again.resizeUninitialized(2'900'000);
+    EXPECT_EQ(again.data(), first) << "the mapping given back";
+    for (std::uint32_t i = 0; i < again.size(); ++i) again[i] = i;
+    again.resizeUninitialized(9'000'000);  // 36 MB: grown past what it was
+    for (std::uint32_t i = 0; i < 2'900'000; i += 9973) EXPECT_EQ(again[i], i);
+    again.resizeUninitialized(100);
+    again.shrinkToFit();
+    EXPECT_EQ(again[99], 99u);
+    again.clear();
+    again.resizeUninitialized(2'000'000);  // nothing kept: taken afresh (or given back and taken)
+    again[1'999'999] = 5;
+    EXPECT_EQ(again[1'999'999], 5u);
+}
+
 }  // namespace
 }  // namespace sprout::test

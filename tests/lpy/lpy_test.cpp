@@ -36,6 +36,27 @@ std::string messages(const lpy::Model& m) {
     return out;
 }
 
+// Growth stepping keeps where each module came from, natively as in Python: the lineage of
+// every `stride`th module of the last step.
+void expectSameLineage(const std::string& text, lpy::RunOptions o, std::uint32_t stride) {
+    o.keepSteps = true;
+    o.native = false;
+    lpy::Model pythonSteps = lpy::runModel(text, o);
+    o.native = true;
+    lpy::Model nativeSteps = lpy::runModel(text, o);
+    ASSERT_TRUE(pythonSteps.ok() && nativeSteps.ok()) << messages(nativeSteps) << messages(pythonSteps);
+    EXPECT_TRUE(nativeSteps.ranNative);
+    const auto& rn = nativeSteps.record;
+    const auto& rp = pythonSteps.record;
+    ASSERT_EQ(rn.steps.size(), rp.steps.size());
+    const int last = int(rn.steps.size()) - 1;
+    const std::uint32_t size = std::uint32_t(rn.steps[size_t(last)]->size());
+    ASSERT_EQ(size, rp.steps[size_t(last)]->size());
+    for (std::uint32_t i = 0; i < size; i += stride)
+        EXPECT_EQ(describeLineage(*rn.grammar, lineage(rn, last, i)), describeLineage(*rp.grammar, lineage(rp, last, i)))
+            << "module " << i;
+}
+
 TEST(LpyTranslate, LinesKeepTheirNumbers) {
     const std::string text = "def f(x):\n    return x\nAxiom: A(1)\nderivation length: 2\nproduction:\nA(x) :\n  produce B(f(x))\nendlsystem\n";
     lpy::Translation t = lpy::translate(text);
@@ -99,21 +120,8 @@ TEST(Lpy, EveryModelDerivesWhatItSays) {
                 EXPECT_TRUE(python.drawable->axiom.symbols == model.drawable->axiom.symbols &&
                             python.drawable->axiom.params == model.drawable->axiom.params)
                     << "the drawing after " << m[1] << " steps";
-                // Growth stepping keeps where each module came from, natively as in Python.
-                o.keepSteps = true;
-                lpy::Model pythonSteps = lpy::runModel(text, o);
-                o.native = true;
-                lpy::Model nativeSteps = lpy::runModel(text, o);
-                ASSERT_TRUE(pythonSteps.ok() && nativeSteps.ok()) << messages(nativeSteps) << messages(pythonSteps);
-                EXPECT_TRUE(nativeSteps.ranNative);
-                const auto& rn = nativeSteps.record;
-                const auto& rp = pythonSteps.record;
-                ASSERT_EQ(rn.steps.size(), rp.steps.size());
-                const int last = int(rn.steps.size()) - 1;
-                ASSERT_EQ(rn.steps[size_t(last)]->size(), rp.steps[size_t(last)]->size());
-                for (std::uint32_t i = 0; i < rn.steps[size_t(last)]->size(); ++i)
-                    EXPECT_EQ(describeLineage(*rn.grammar, lineage(rn, last, i)), describeLineage(*rp.grammar, lineage(rp, last, i)))
-                        << "module " << i << " after " << m[1] << " steps";
+                SCOPED_TRACE("after " + m[1].str() + " steps");
+                expectSameLineage(text, o, 1);
             }
         }
     }
@@ -174,6 +182,70 @@ TEST(Lpy, CancelStopsAnEndlessLoopInARule) {
     // The interpreter is usable again after a cancel.
     lpy::Model again = lpy::runModel("Axiom: A\nderivation length: 1\nproduction:\nA --> B\n", {});
     EXPECT_EQ(again.derived, "B") << messages(again);
+}
+
+// The native path's big steps are shared with a second thread (from 8 k modules), its rules
+// of the form x * a + b written without Sprout's expressions, the others with them: the same
+// string as Python's, module for module, and the same origins for growth stepping.
+TEST(Lpy, BigNativeStepsDeriveAsPython) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::string text =
+        "Axiom: A(1) B(2, 0.5) [ C ] D(3) G(1.5)\n"
+        "derivation length: 9\n"
+        "production:\n"
+        "A(x) --> A(x + 1) B(x, x * 0.5) A(2 - x) [ E(7) A(x * 3) ]\n"  // x + c, c - x, x * c, constants
+        "B(x, y) --> B(y, x - 1.5) E(x / 4)\n"                         // x / c: an expression
+        "B(x) --> E(x)\n"                                              // B by its arity
+        "C --> C E(1) C\n"                                             // a constant without x
+        "D(n) --> D(n * 2) F\n"
+        "E(v) --> E(0 - v)\n"
+        "G(v) --> G(-v) G((v + 1) * 2)\n"
+        "endlsystem\n";
+    lpy::RunOptions o;
+    lpy::Model native = lpy::runModel(text, o);
+    ASSERT_TRUE(native.ok()) << messages(native);
+    EXPECT_TRUE(native.ranNative);
+    ASSERT_TRUE(native.drawable);
+    EXPECT_GT(native.drawable->axiom.size(), 15000u) << "big enough for shared steps";
+    o.native = false;
+    lpy::Model python = lpy::runModel(text, o);
+    ASSERT_TRUE(python.ok()) << messages(python);
+    EXPECT_FALSE(python.ranNative);
+    EXPECT_TRUE(native.derived == python.derived) << "the strings differ (" << native.derived.size() << " and "
+                                                  << python.derived.size() << " characters)";
+    EXPECT_TRUE(python.drawable->axiom.symbols == native.drawable->axiom.symbols &&
+                python.drawable->axiom.params == native.drawable->axiom.params);
+    // Growth stepping: where modules came from, natively as in Python.
+    o.steps = 8;
+    expectSameLineage(text, o, 97);
+}
+
+// Python's ints are exact past 2^53, doubles are not: a native run whose numbers grow past it
+// goes to Python, also where the native path's unchecked arithmetic (x + c on numbers too
+// small to reach 2^53) ran the steps before, on a string big enough to be shared.
+TEST(Lpy, NativeIntsPastTwoToThe53AreLeftToPython) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const std::string text =
+        "Axiom: A(1) C\n"
+        "derivation length: 10\n"
+        "production:\n"
+        "A(x) --> A(x + 1000000000000000)\n"
+        "C --> D D D D D D D D D D D D D D D D\n"
+        "D --> E E E E E E E E E E E E E E E E\n"
+        "E --> H H H H H H H H H H H H H H H H\n"
+        "H --> I I I I I I I I I I I I I I I I\n"
+        "endlsystem\n";
+    lpy::RunOptions o;
+    o.steps = 9;  // 9000000000000001: below 2^53 (9007199254740992), exact in a double
+    lpy::Model below = lpy::runModel(text, o);
+    ASSERT_TRUE(below.ok()) << messages(below);
+    EXPECT_TRUE(below.ranNative);
+    EXPECT_EQ(below.derived, "A(9000000000000001)" + std::string(65536, 'I'));
+    o.steps = 10;  // 10000000000000001: past it, and odd (a double would say ...000)
+    lpy::Model past = lpy::runModel(text, o);
+    ASSERT_TRUE(past.ok()) << messages(past);
+    EXPECT_FALSE(past.ranNative);
+    EXPECT_EQ(past.derived, "A(10000000000000001)" + std::string(65536, 'I'));
 }
 
 TEST(Lpy, TheModelIsDrawnInLpysFrame) {
