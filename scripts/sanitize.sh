@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The sanitizer jobs: the whole test suite built with AddressSanitizer + UndefinedBehaviorSanitizer
 # (with float-cast-overflow, which GCC's 'undefined' leaves out: a double out of an integer's
-# range cast to it, issue 26), and the core and viewer-logic tests (the viewer derives on a worker thread) with
-# ThreadSanitizer. Any report fails. Run after scripts/setup.sh test (which installs the packages).
+# range cast to it, issue 26), and the core, viewer-logic and L-Py tests (the viewer derives on a worker
+# thread; L-Py's native path shares big steps with a second thread) with ThreadSanitizer. Any report
+# fails. Run after scripts/setup.sh test (which installs the packages).
 #
 #   scripts/sanitize.sh [asan|tsan|all]   (default all)
 set -euo pipefail
@@ -51,9 +52,10 @@ fi
 
 if [ "$what" = tsan ] || [ "$what" = all ]; then
   cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPROUT_SANITIZE=thread -DSPROUT_BUILD_BENCH=OFF >/dev/null
-  cmake --build build-tsan -j"$jobs" --target core_tests viewer_tests
+  cmake --build build-tsan -j"$jobs" --target core_tests viewer_tests lpy_tests
   export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
   ./build-tsan/tests/core_tests --gtest_brief=1
   ./build-tsan/tests/viewer_tests --gtest_brief=1
+  ./build-tsan/tests/lpy_tests --gtest_brief=1
 fi
 echo "sanitizers: no reports"
