@@ -32,12 +32,9 @@ vec3 toDisplay(vec3 c) { return sqrt(c); }
 // it with 1 and leave the shadow map's lookups out of their code: a software rasteriser runs
 // both sides of a branch on uShadows, so shadows switched off by a uniform still cost nine
 // lookups a fragment (half a moving frame of a leafy plant).
-vec3 shadeWith(vec3 baseSrgb, vec3 world, vec3 normal, float specular, bool shadowed) {
-    vec3 n = normalize(normal);
-    vec3 v = normalize(uEye - world);
-    if (dot(n, v) < 0.0) n = -n;  // double-sided: leaves, petals and polygons
+// Lit with the sun's visibility `vis`, the normal `n` facing the eye, `v` towards the eye.
+vec3 shadeVisible(vec3 baseSrgb, vec3 n, vec3 v, float specular, float vis) {
     vec3 base = toLinear(baseSrgb);
-    float vis = shadowed ? sunVisibility(world, n) : 1.0;
     float diffuse = max(dot(n, uSunDir), 0.0);
     vec3 ambient = mix(uGroundAmbient, uSkyAmbient, n.y * 0.5 + 0.5);
     vec3 h = normalize(uSunDir + v);
@@ -46,6 +43,13 @@ vec3 shadeWith(vec3 baseSrgb, vec3 world, vec3 normal, float specular, bool shad
     float spec = nh16 * nh16 * specular;  // (n.h)^32
     vec3 lit = base * (ambient + uSunColour * diffuse * vis) + uSunColour * spec * vis;
     return toDisplay(lit);
+}
+
+vec3 shadeWith(vec3 baseSrgb, vec3 world, vec3 normal, float specular, bool shadowed) {
+    vec3 n = normalize(normal);
+    vec3 v = normalize(uEye - world);
+    if (dot(n, v) < 0.0) n = -n;  // double-sided: leaves, petals and polygons
+    return shadeVisible(baseSrgb, n, v, specular, shadowed ? sunVisibility(world, n) : 1.0);
 }
 
 vec3 shade(vec3 baseSrgb, vec3 world, vec3 normal, float specular) { return shadeWith(baseSrgb, world, normal, specular, true); }

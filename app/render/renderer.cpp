@@ -20,6 +20,7 @@
 namespace sprout::render {
 
 using detail::kShadowSize;
+using detail::kGroundShadowSize;
 
 // Baked triangles: position, normal, colour (polygon.vert's layout).
 void Renderer::Impl::makeBaked(Buffers& b) {
@@ -72,6 +73,7 @@ bool Renderer::Impl::build(std::string& error) {
         {&inkLineProgram, "line.vert", "curve.frag"},
         {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},
         {&groundPlainProgram, "ground.vert", "ground_plain.frag"},
+        {&groundShadowProgram, "ground.vert", "ground_shadow.frag"}, {&groundMaskedProgram, "ground.vert", "ground_masked.frag"},
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
         {&overlayProgram, "polygon.vert", "overlay.frag"},
@@ -160,6 +162,21 @@ bool Renderer::Impl::build(std::string& error) {
     bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (!ok) error = "the shadow map framebuffer is incomplete";
+
+    glGenTextures(1, &groundShadowTexture);
+    glBindTexture(GL_TEXTURE_2D, groundShadowTexture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kGroundShadowSize, kGroundShadowSize, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glGenFramebuffers(1, &groundShadowFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, groundShadowFbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, groundShadowTexture, 0);
+    if (ok && glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        ok = false, error = "the ground shadow framebuffer is incomplete";
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return ok;
 }
 

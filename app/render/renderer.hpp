@@ -104,6 +104,8 @@ public:
     // Whether the context draws on the CPU (Mesa's llvmpipe or softpipe): what costs there
     // differs (RenderOptions::quickLines).
     bool software() const { return m_software; }
+    // Times the ground's shadow texture for moving frames on software GL was made (tests).
+    int groundShadowTextures() const;
     // The context's GL_RENDERER and GL_VERSION strings ("llvmpipe (LLVM 15.0.6, 256 bits)").
     const std::string& glRenderer() const { return m_glRenderer; }
     const std::string& glVersion() const { return m_glVersion; }
@@ -197,6 +199,7 @@ private:
     void plan(Pass& pass, const Camera& camera, int width, int height, const RenderOptions& options, unsigned target, int x,
               int y) const;
     bool step(Pass& pass, std::size_t budget, bool wait);
+    glm::vec3 groundCentre(const Pass& pass) const;  // the ground disc's centre, under the plant
     int partOf(const Pass& pass) const;
     std::size_t partEnd(const Pass& pass) const;
     std::unique_ptr<Impl> m;

@@ -33,6 +33,7 @@ void setUniform(GLuint p, const char* name, int v) { glUniform1i(glGetUniformLoc
 }  // namespace
 
 using detail::kShadowSize;
+using detail::kGroundShadowSize;
 
 void Renderer::Impl::setLighting(GLuint p, const RenderOptions& o, const glm::vec3& eye, const glm::mat4& lightViewProj,
                                  bool shadows, float texel) {
@@ -46,6 +47,34 @@ void Renderer::Impl::setLighting(GLuint p, const RenderOptions& o, const glm::ve
     setUniform(p, "uShadowMap", 0);
     setUniform(p, "uShadows", shadows ? 1 : 0);
     setUniform(p, "uShadowTexel", texel);
+}
+
+void Renderer::Impl::ensureGroundShadow(const RenderOptions& o, const glm::vec3& eye, const glm::vec3& centre, float radius) {
+    const glm::vec4 at(centre, radius);
+    if (groundShadowOf == shadowGeneration && groundShadowAt == at) return;
+    groundShadowOf = shadowGeneration;
+    groundShadowAt = at;
+    ++groundShadowMade;
+    // ground.vert's square, mapped onto the whole texture: x to x, z to y.
+    glm::mat4 toTexture(0.0f);
+    toTexture[0][0] = 1.0f / radius;
+    toTexture[2][1] = 1.0f / radius;
+    toTexture[3] = glm::vec4(-centre.x / radius, -centre.z / radius, 0.0f, 1.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, groundShadowFbo);
+    glViewport(0, 0, kGroundShadowSize, kGroundShadowSize);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, shadowTexture);
+    setLighting(groundShadowProgram, o, eye, shadowView, true, shadowTexel);
+    setUniform(groundShadowProgram, "uViewProj", toTexture);
+    setUniform(groundShadowProgram, "uCentre", centre);
+    setUniform(groundShadowProgram, "uRadius", radius);
+    glBindVertexArray(groundQuad.vao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBindVertexArray(0);
+    glEnable(GL_DEPTH_TEST);
 }
 
 void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const RenderOptions& o, unsigned target, int x,
@@ -161,6 +190,10 @@ std::size_t Renderer::partEnd(const Pass& p) const {
     return SIZE_MAX;
 }
 
+int Renderer::groundShadowTextures() const { return m->groundShadowMade; }
+
+glm::vec3 Renderer::groundCentre(const Pass& p) const { return glm::vec3(p.centre.x, m->bounds.min.y, p.centre.z); }
+
 bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
     Impl& s = *m;
     glEnable(GL_DEPTH_TEST);
@@ -204,9 +237,13 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         if (p.done < sceneCount) return false;
         s.shadowValid = s.shadowMade = true;
+        ++s.shadowGeneration;
         s.shadowView = p.lightViewProj;
         s.shadowTexel = p.texel;
         s.shadowAge = 0;
+        // The ground's shadow texture for the moving frames to come, with the map (a still
+        // picture's piece pays for it, not the first frame of a drag).
+        if (m_software && p.ground) s.ensureGroundShadow(p.o, p.eye, groundCentre(p), p.groundRadius);
         if (!next(Pass::Raster)) return false;
     }
     if (p.phase == Pass::Raster) {  // a big curve's raster, made on a thread when it may take its time
@@ -264,6 +301,11 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
     // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
     // A big curve's picture takes one: its raster is its own antialiasing, and sky and ink
     // have no edges to smooth (its moving frames took 19 ms at 2 samples, 1440x860).
+    // The ground of a moving frame on a software rasteriser reads the plant's shadow from a
+    // texture of its own, made (before the frame's image is bound) when the map or the ground
+    // changed.
+    const bool groundShadowTexture = p.phase == Pass::Backdrop && p.ground && p.shadows && !p.plantShadows;
+    if (groundShadowTexture) s.ensureGroundShadow(p.o, p.eye, groundCentre(p), p.groundRadius);
     if (p.curve && s.rasterCurve) s.ensureMsaa(p.width, p.height, 0, 0);
     else s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4, p.bigInteractive ? 0 : p.o.quality == Quality::Interactive ? 1 : 2);
     glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
@@ -290,10 +332,16 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
             glEnable(GL_BLEND);
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(GL_FALSE);
-            const GLuint ground = p.shadows ? s.groundProgram : s.groundPlainProgram;
+            const GLuint ground = groundShadowTexture ? s.groundMaskedProgram : p.shadows ? s.groundProgram : s.groundPlainProgram;
             s.setLighting(ground, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
+            if (groundShadowTexture) {
+                glActiveTexture(GL_TEXTURE2);
+                glBindTexture(GL_TEXTURE_2D, s.groundShadowTexture);
+                glActiveTexture(GL_TEXTURE0);
+                setUniform(ground, "uGroundShadow", 2);
+            }
             setUniform(ground, "uViewProj", p.viewProj);
-            setUniform(ground, "uCentre", glm::vec3(p.centre.x, s.bounds.min.y, p.centre.z));
+            setUniform(ground, "uCentre", groundCentre(p));
             setUniform(ground, "uRadius", p.groundRadius);
             setUniform(ground, "uGroundColour", p.o.groundColour);
             glBindVertexArray(s.groundQuad.vao);

@@ -17,6 +17,10 @@ namespace sprout::render {
 namespace detail {
 
 inline constexpr int kShadowSize = 2048;
+// The ground's shadow texture (Impl::ensureGroundShadow), texels across the ground's square:
+// about a pixel of a moving frame's ground each (those are drawn at a quarter to a half of
+// the window each way).
+inline constexpr int kGroundShadowSize = 256;
 // RenderOptions::quickLines: from this many lines in a draw on.
 inline constexpr std::size_t kQuickLines = 100'000;
 
@@ -69,6 +73,16 @@ struct Renderer::Impl {
     glm::mat4 shadowView{0.0f};
     float shadowTexel = 0;
     int shadowAge = 0;  // moving frames that used it since it was made
+    std::uint64_t shadowGeneration = 0;  // shadow maps made
+    // The plant's shadow on the ground as a texture (ground_shadow.frag) for the moving frames
+    // of a software rasteriser: one lookup a pixel (ground_masked.frag) instead of the shadow
+    // map's nine, which were half of a small plant's moving frame. Made again when the map,
+    // or the ground's centre or radius, changes.
+    GLuint groundShadowFbo = 0, groundShadowTexture = 0, groundShadowProgram = 0, groundMaskedProgram = 0;
+    std::uint64_t groundShadowOf = UINT64_MAX;  // the shadow map generation it was made from
+    glm::vec4 groundShadowAt{0.0f};             // the ground's centre and radius then
+    int groundShadowMade = 0;                   // times made (for tests)
+    void ensureGroundShadow(const RenderOptions& o, const glm::vec3& eye, const glm::vec3& centre, float radius);
     // Multisampled images: one for moving frames of big plants (2 samples) and for big curves
     // (1 sample, still and moving), one for other
     // moving frames (4 samples, half size in the window), one for still pictures, so that

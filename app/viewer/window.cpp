@@ -75,7 +75,7 @@ constexpr double kRefineMs = 8.0;
 // A scene whose still picture took at most this long is drawn at full quality while it moves.
 constexpr double kFullWhileMovingMs = 10.0;
 // The frame time the moving view's resolution is fitted to (App::movingScale).
-constexpr double kMovingFrameMs = 12.0;
+constexpr double kMovingFrameMs = 10.0;
 
 // The view's picture as the window shows it: stretched from the size it was drawn at to
 // w x h, as the blit to the window does (top row first).

@@ -721,6 +721,60 @@ TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
     EXPECT_GT(differing(render::Quality::Interactive, true), kW * kH / 200) << "moving: the ground's shadow";
 }
 
+// Moving frames on software GL read the ground's shadow from a texture made with the shadow
+// map (once, not per frame): the same shadow on the ground as the still picture's lookups.
+TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
+    auto g = grammarOf(kLeafyBush);
+    DeriveResult d = derive(g, 2);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    ASSERT_TRUE(renderer.software());
+    renderer.upload(geometry);
+    SnapshotOptions o;
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    // Pixels where the sun's shadow changes the picture (lit against unlit).
+    auto shadowed = [&](render::Quality quality, bool ground) {
+        render::RenderOptions lit = o.render;
+        lit.quality = quality;
+        lit.ground = ground;
+        lit.shadows = true;
+        render::RenderOptions unlit = lit;
+        unlit.shadows = false;
+        const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, lit), b = renderer.renderImage(camera, kW, kH, unlit);
+        std::vector<bool> out(a.size() / 4);
+        for (std::size_t i = 0; i < a.size(); i += 4)
+            out[i / 4] = std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
+        return out;
+    };
+    const std::vector<bool> still = shadowed(render::Quality::Still, true), onPlant = shadowed(render::Quality::Still, false);
+    EXPECT_EQ(renderer.groundShadowTextures(), 1) << "made with the shadow map";
+    const std::vector<bool> moving = shadowed(render::Quality::Interactive, true);
+    shadowed(render::Quality::Interactive, true);
+    EXPECT_EQ(renderer.groundShadowTextures(), 1) << "not made again for each moving frame";
+    int ground = 0, both = 0, movingOnly = 0;
+    for (std::size_t i = 0; i < still.size(); ++i) {
+        if (onPlant[i]) continue;  // the plant's shadow on itself: not drawn while moving
+        ground += still[i];
+        both += still[i] && moving[i];
+        movingOnly += moving[i] && !still[i];
+    }
+    std::printf("ground shadow: %d pixels still, %d of them moving, %d moving only\n", ground, both, movingOnly);
+    ASSERT_GT(ground, kW * kH / 200) << "the still picture's shadow on the ground";
+    EXPECT_GT(both, ground * 6 / 10) << "moving, the ground's shadow is where the still one is";
+    EXPECT_LT(movingOnly, ground * 4 / 10) << "and not elsewhere";
+    // Another plant: its shadow map, and the texture with it.
+    Geometry taller = geometry;
+    for (auto& c : taller.cylinders) c.start.y *= 1.5f, c.end.y *= 1.5f;
+    renderer.upload(taller);
+    shadowed(render::Quality::Still, true);
+    EXPECT_EQ(renderer.groundShadowTextures(), 2);
+}
+
 // The environment drawn with the plant: a region is blue-tinted glass around the stem, an
 // obstacle is solid stone, and a slice of the light grid is deep blue in the leaves' shade.
 TEST(Render, EnvironmentIsDrawnWhenAsked) {
