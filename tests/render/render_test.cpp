@@ -1,6 +1,7 @@
 // Screenshot tests: real headless renders through OSMesa (no display), checked pixel by pixel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -685,15 +686,37 @@ TEST(Render, ShadowDarkensTheGroundUnderATree) {
     EXPECT_GT(darker, kW * kH / 200);
 }
 
-// On a software rasteriser a moving frame lights the plant without the shadow map's lookups
-// (thin stems are shaded in whole blocks of pixels, nine lookups each); the ground keeps the
-// plant's shadow. The leafy bush of ABOP fig. 1.25 (n=2) shades itself in the still view.
-TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
+// Pixels where the sun's shadow changes the picture (lit against unlit, more than 30 of 765).
+std::vector<bool> shadowedPixels(render::Renderer& renderer, const render::Camera& camera, const SnapshotOptions& o,
+                                 render::Quality quality, bool ground) {
+    render::RenderOptions lit = o.render;
+    lit.quality = quality;
+    lit.ground = ground;
+    lit.shadows = true;
+    render::RenderOptions unlit = lit;
+    unlit.shadows = false;
+    const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, lit), b = renderer.renderImage(camera, kW, kH, unlit);
+    std::vector<bool> out(a.size() / 4);
+    for (std::size_t i = 0; i < a.size(); i += 4)
+        out[i / 4] = std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
+    return out;
+}
+
+// The leafy bush of ABOP fig. 1.25 (n=2).
+Geometry leafyBush() {
     auto g = grammarOf(kLeafyBush);
     DeriveResult d = derive(g, 2);
-    ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
-    interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+    if (d.outcome.ok()) interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+    return geometry;
+}
+
+// On a software rasteriser a moving frame lights the plant without the shadow map's lookups
+// (thin stems are shaded in whole blocks of pixels, nine lookups each); the ground keeps the
+// plant's shadow. The leafy bush shades itself in the still view.
+TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
+    const Geometry geometry = leafyBush();
+    ASSERT_FALSE(geometry.cylinders.empty());
     auto headless = headlessRenderer();
     ASSERT_TRUE(headless);
     render::Renderer& renderer = headless->renderer;
@@ -703,17 +726,8 @@ TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
     o.width = kW, o.height = kH;
     const render::Camera camera = snapshotCamera(geometry, o);
     auto differing = [&](render::Quality quality, bool ground) {
-        render::RenderOptions lit = o.render;
-        lit.quality = quality;
-        lit.ground = ground;
-        lit.shadows = true;
-        render::RenderOptions unlit = lit;
-        unlit.shadows = false;
-        const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, lit), b = renderer.renderImage(camera, kW, kH, unlit);
-        int n = 0;
-        for (std::size_t i = 0; i < a.size(); i += 4)
-            n += std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
-        return n;
+        const std::vector<bool> s = shadowedPixels(renderer, camera, o, quality, ground);
+        return int(std::count(s.begin(), s.end(), true));
     };
     EXPECT_GT(differing(render::Quality::Still, false), kW * kH / 400) << "the still view: the plant shades itself";
     ASSERT_LT(renderer.stats().triangles, 4000u) << "a small plant (a big one moves with no shadow at all)";
@@ -724,11 +738,8 @@ TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
 // Moving frames on software GL read the ground's shadow from a texture made with the shadow
 // map (once, not per frame): the same shadow on the ground as the still picture's lookups.
 TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
-    auto g = grammarOf(kLeafyBush);
-    DeriveResult d = derive(g, 2);
-    ASSERT_TRUE(d.outcome.ok());
-    Geometry geometry;
-    interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+    const Geometry geometry = leafyBush();
+    ASSERT_FALSE(geometry.cylinders.empty());
     auto headless = headlessRenderer();
     ASSERT_TRUE(headless);
     render::Renderer& renderer = headless->renderer;
@@ -737,24 +748,11 @@ TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
     SnapshotOptions o;
     o.width = kW, o.height = kH;
     const render::Camera camera = snapshotCamera(geometry, o);
-    // Pixels where the sun's shadow changes the picture (lit against unlit).
-    auto shadowed = [&](render::Quality quality, bool ground) {
-        render::RenderOptions lit = o.render;
-        lit.quality = quality;
-        lit.ground = ground;
-        lit.shadows = true;
-        render::RenderOptions unlit = lit;
-        unlit.shadows = false;
-        const std::vector<std::uint8_t> a = renderer.renderImage(camera, kW, kH, lit), b = renderer.renderImage(camera, kW, kH, unlit);
-        std::vector<bool> out(a.size() / 4);
-        for (std::size_t i = 0; i < a.size(); i += 4)
-            out[i / 4] = std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) + std::abs(int(a[i + 2]) - int(b[i + 2])) > 30;
-        return out;
-    };
-    const std::vector<bool> still = shadowed(render::Quality::Still, true), onPlant = shadowed(render::Quality::Still, false);
+    const std::vector<bool> still = shadowedPixels(renderer, camera, o, render::Quality::Still, true);
+    const std::vector<bool> onPlant = shadowedPixels(renderer, camera, o, render::Quality::Still, false);
     EXPECT_EQ(renderer.groundShadowTextures(), 1) << "made with the shadow map";
-    const std::vector<bool> moving = shadowed(render::Quality::Interactive, true);
-    shadowed(render::Quality::Interactive, true);
+    const std::vector<bool> moving = shadowedPixels(renderer, camera, o, render::Quality::Interactive, true);
+    shadowedPixels(renderer, camera, o, render::Quality::Interactive, true);
     EXPECT_EQ(renderer.groundShadowTextures(), 1) << "not made again for each moving frame";
     int ground = 0, both = 0, movingOnly = 0;
     for (std::size_t i = 0; i < still.size(); ++i) {
@@ -771,7 +769,7 @@ TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
     Geometry taller = geometry;
     for (auto& c : taller.cylinders) c.start.y *= 1.5f, c.end.y *= 1.5f;
     renderer.upload(taller);
-    shadowed(render::Quality::Still, true);
+    shadowedPixels(renderer, camera, o, render::Quality::Still, true);
     EXPECT_EQ(renderer.groundShadowTextures(), 2);
 }
 
