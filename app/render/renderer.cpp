@@ -76,7 +76,7 @@ bool Renderer::Impl::build(std::string& error) {
         {&groundShadowProgram, "ground.vert", "ground_shadow.frag"}, {&groundMaskedProgram, "ground.vert", "ground_masked.frag"},
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
-        {&overlayProgram, "polygon.vert", "overlay.frag"},
+        {&overlayProgram, "polygon.vert", "overlay.frag"}, {&overlayPlainProgram, "polygon.vert", "overlay_plain.frag"},
     };
     for (auto& p : programs)
         if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
@@ -488,11 +488,22 @@ void Renderer::warmUp(int width, int height) {
     segment.planarCurve = true;
     segment.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
     segment.bounds.add({0, 0, 0}), segment.bounds.add({0, 10, 0});
+    // An environment with the small plant: a stone triangle and a glass one (the overlay's
+    // three passes, lit with and without the shadow map).
+    Mesh environment;
+    for (int k = 0; k < 2; ++k) {
+        const float x = float(k) * 0.5f;
+        environment.positions.insert(environment.positions.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0.5f}});
+        environment.normals.insert(environment.normals.end(), 3, glm::vec3(0, 0, 1));
+        environment.colours.insert(environment.colours.end(), 3, k ? 0x8FB4D260u : 0x808080FFu);
+        environment.indices.insert(environment.indices.end(), {3u * std::uint32_t(k), 3u * std::uint32_t(k) + 1, 3u * std::uint32_t(k) + 2});
+    }
     for (const Geometry* g : {&plant, &small, &curve, &segment, &bigCurve}) {
         PreparedScene scene;  // as the window's worker prepares a scene, with what moving frames draw
         prepare(*g, m->detail, scene);
         prepareMoving(*g, scene);
         upload(scene);
+        setOverlay(g == &small ? environment : Mesh());
         const Camera camera = frameGeometry(*g, 1.0f, ViewPreset::Auto);
         Camera moved = camera;
         moved.yaw += 10, moved.target.x += 0.05f * moved.orthoHeight;
@@ -512,6 +523,7 @@ void Renderer::warmUp(int width, int height) {
         m->quickLinesFrom = detail::kQuickLines;
     }
     upload(Geometry());
+    setOverlay(Mesh());
     m_lastPictureMs = 1e9;
 }
 

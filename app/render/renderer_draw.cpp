@@ -436,9 +436,13 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         // the picture three times over). Scissored bands of rows, as the backdrop is drawn,
         // gave other pixels on the bands' edges here (blended glass, on llvmpipe); ranges of
         // triangles in their order give the very pixels of one draw.
+        // Lit as the plant is: without the shadow map's lookups in a moving frame on a
+        // software rasteriser (nine a fragment, each of three passes: `env_space_colonisation`'s
+        // glass crown held its moving frames at 12-13 ms at the smallest resolution).
         const std::size_t tris = s.overlayIndices / 3;
-        s.setLighting(s.overlayProgram, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
-        setUniform(s.overlayProgram, "uViewProj", p.viewProj);
+        const GLuint program = p.plantShadows ? s.overlayProgram : s.overlayPlainProgram;
+        s.setLighting(program, p.o, p.eye, p.lightViewProj, p.plantShadows, p.texel);
+        setUniform(program, "uViewProj", p.viewProj);
         glBindVertexArray(s.overlay.vao);
         for (std::size_t n = take(3 * tris); n > 0;) {
             const int pass = int(p.done / tris);
@@ -448,7 +452,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
                 glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
                 glDepthMask(GL_FALSE);
             }
-            setUniform(s.overlayProgram, "uPass", pass);
+            setUniform(program, "uPass", pass);
             glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
                            reinterpret_cast<const void*>(3 * first * sizeof(std::uint32_t)));
             glDepthMask(GL_TRUE);

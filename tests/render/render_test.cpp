@@ -787,6 +787,20 @@ TEST(Render, EnvironmentIsDrawnWhenAsked) {
         glass += d > 12 && with.rgba[i + 2] > with.rgba[i] + 10;
     }
     EXPECT_GT(glass, kW * kH / 20) << "the sphere tints the picture blue";
+    // Moving, on software GL, the glass is lit without the shadow map's lookups: the same tint.
+    o.render.quality = render::Quality::Interactive;
+    o.render.shadows = true;
+    o.render.ground = true;
+    Image moving = render(g, o);
+    o.render.quality = render::Quality::Still;
+    Image still = render(g, o);
+    int differ = 0;
+    for (std::size_t i = 0; i < still.rgba.size(); i += 4)
+        differ += std::abs(int(moving.rgba[i]) - int(still.rgba[i])) + std::abs(int(moving.rgba[i + 1]) - int(still.rgba[i + 1])) +
+                      std::abs(int(moving.rgba[i + 2]) - int(still.rgba[i + 2])) > 30;
+    EXPECT_LT(differ, kW * kH / 50) << "the moving picture of the glass is the still one";
+    o = plain();
+    o.showEnvironment = true;
     // A solid obstacle hides what is behind it: the middle of the picture is its stone grey.
     auto stone = grammarOf("n: 0\nenvironment: obstacle box -2 0 -2 2 4 2\naxiom: F(4) ?E(1,0,0,0,0)\n");
     Image box = render(stone, o), bare = render(stone, plain());
