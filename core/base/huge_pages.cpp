@@ -34,28 +34,28 @@ void* mapNew(std::size_t size) {
 
 }  // namespace
 
-void* take(std::size_t bytes, std::size_t& got) {
+void* takeKept(std::size_t bytes, std::size_t& got) {
     const std::size_t want = roundUp(bytes ? bytes : 1);
-    {
-        std::lock_guard<std::mutex> lock(g_lock);
-        if (g_kept) {
-            // The smallest kept mapping that holds it, and not one far bigger than asked for.
-            std::size_t best = g_kept->size();
-            for (std::size_t k = 0; k < g_kept->size(); ++k) {
-                const std::size_t b = (*g_kept)[k].bytes;
-                if (b >= want && b <= 4 * want && (best == g_kept->size() || b < (*g_kept)[best].bytes)) best = k;
-            }
-            if (best < g_kept->size()) {
-                const Kept k = (*g_kept)[best];
-                g_kept->erase(g_kept->begin() + std::ptrdiff_t(best));
-                g_keptBytes -= k.bytes;
-                got = k.bytes;
-                return k.p;
-            }
-        }
+    std::lock_guard<std::mutex> lock(g_lock);
+    if (!g_kept) return nullptr;
+    // The smallest kept mapping that holds it, and not one far bigger than asked for.
+    std::size_t best = g_kept->size();
+    for (std::size_t k = 0; k < g_kept->size(); ++k) {
+        const std::size_t b = (*g_kept)[k].bytes;
+        if (b >= want && b <= 4 * want && (best == g_kept->size() || b < (*g_kept)[best].bytes)) best = k;
     }
-    got = want;
-    return mapNew(want);
+    if (best == g_kept->size()) return nullptr;
+    const Kept k = (*g_kept)[best];
+    g_kept->erase(g_kept->begin() + std::ptrdiff_t(best));
+    g_keptBytes -= k.bytes;
+    got = k.bytes;
+    return k.p;
+}
+
+void* take(std::size_t bytes, std::size_t& got) {
+    if (void* p = takeKept(bytes, got)) return p;
+    got = roundUp(bytes ? bytes : 1);
+    return mapNew(got);
 }
 
 void give(void* p, std::size_t bytes) {

@@ -16,6 +16,8 @@ inline std::size_t roundUp(std::size_t bytes) { return (bytes + kPage - 1) & ~(k
 // A mapping of at least `bytes`; `got` says how big (a multiple of kPage). Throws
 // std::bad_alloc when there is no memory.
 void* take(std::size_t bytes, std::size_t& got);
+// A kept mapping of at least `bytes` (the smallest, at most 4 times as big), or null.
+void* takeKept(std::size_t bytes, std::size_t& got);
 // Gives back a mapping of `bytes` (a multiple of kPage) from take(), or its remains after
 // munmap of its tail or mremap: kept for a later take() while the kept ones fit in kKept.
 void give(void* p, std::size_t bytes);

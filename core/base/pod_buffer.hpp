@@ -122,7 +122,18 @@ private:
 
     // Out of the callers' loops (a derivation step's): rare, and big.
     [[gnu::noinline]] void growMapped(size_t bytes) {
-        if (m_mapped && m_size == 0) release();  // nothing to keep: a kept mapping may fit, its pages in
+        size_t got = 0;
+        if (m_mapped && m_size == 0) {
+            // Nothing to keep: a kept mapping that holds it (its pages in) rather than this one
+            // grown (its new pages cleared by the kernel on first touch).
+            if (void* kept = huge_pages::takeKept(bytes, got)) {
+                release();
+                m_data = static_cast<T*>(kept);
+                m_mapped = true;
+                m_capacity = got / sizeof(T);
+                return;
+            }
+        }
         if (m_mapped) {
             // Grown by moving the pages, not copying them: a copy would hold the old and the
             // new buffer at once (the turtle's 390 MB of segments for a 9.8 M-segment curve
@@ -136,7 +147,6 @@ private:
                 return;
             }
         }
-        size_t got = 0;
         T* p = static_cast<T*>(huge_pages::take(bytes, got));
         const size_t size = m_size;
         if (size) std::memcpy(p, m_data, size * sizeof(T));
