@@ -298,14 +298,14 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         p.phase = Pass::Backdrop, p.done = 0, p.started = false;
         if (made && !wait) return false;
     }
-    // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
-    // A big curve's picture takes one: its raster is its own antialiasing, and sky and ink
-    // have no edges to smooth (its moving frames took 19 ms at 2 samples, 1440x860).
     // The ground of a moving frame on a software rasteriser reads the plant's shadow from a
     // texture of its own, made (before the frame's image is bound) when the map or the ground
     // changed.
     const bool groundShadowTexture = p.phase == Pass::Backdrop && p.ground && p.shadows && !p.plantShadows;
     if (groundShadowTexture) s.ensureGroundShadow(p.o, p.eye, groundCentre(p), p.groundRadius);
+    // Interactive frames of big plants take 2 samples: a software rasteriser pays per sample.
+    // A big curve's picture takes one: its raster is its own antialiasing, and sky and ink
+    // have no edges to smooth (its moving frames took 19 ms at 2 samples, 1440x860).
     if (p.curve && s.rasterCurve) s.ensureMsaa(p.width, p.height, 0, 0);
     else s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4, p.bigInteractive ? 0 : p.o.quality == Quality::Interactive ? 1 : 2);
     glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
