@@ -195,6 +195,8 @@ public:
         int cls = 0, arity = 0, index = 0;
         std::uint32_t params = 0;  // the numbers its successor holds
         std::uint32_t firstOut = 0, firstArg = 0;  // in m_flatOuts, m_flatArgs
+        bool fast = false;  // its arguments are all fast ones (FastArg): in m_fastOuts, m_fastArgs
+        std::uint32_t firstFastOut = 0, firstFastArg = 0;
         std::vector<NativeOut> outs;
     };
     // The rules laid out flat for the derivation's inner loop: per class its one rule
@@ -219,15 +221,13 @@ public:
         std::uint32_t first, n;  // its numbers: the rule's numbers [first, first + n)
         std::uint32_t mask;      // n low bits
     };
-    struct FastRule {
-        std::uint32_t outs = 0, args = 0, firstOut = 0, firstArg = 0;
-        double scale = 0, shift = 0;  // the largest |mul| and |add| of its arguments
-    };
     struct NativeClass {
         const NativeRule* rule = nullptr;
         std::uint32_t arity = 0;
         bool many = false;
-        bool fast = false;  // its rule is a fast one: then its numbers and modules are these
+        // Its rule's fast layout (NativeRule::fast), copied here so that the inner loop reads
+        // one entry per module, not the rule behind it.
+        bool fast = false;
         std::uint32_t fastArgs = 0, fastOuts = 0, firstFastArg = 0, firstFastOut = 0;
     };
     struct Tables {
@@ -258,7 +258,6 @@ private:
     bool nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper);
     std::vector<NativeRule> m_native;
     std::vector<std::vector<int>> m_nativeByClass;
-    std::vector<FastRule> m_fastRules;  // per native rule
     std::vector<FastOut> m_fastOuts;
     std::vector<FastArg> m_fastArgs;
     double m_fastScale = 0, m_fastShift = 0;  // over all fast rules

@@ -168,16 +168,14 @@ void Engine::prepareNative() {
             for (const NativeArg& a : o.args) m_flatArgs.push_back({&a.expr, a.used | (std::uint64_t(a.isFloat) << 32)});
         }
     }
-    m_fastRules.assign(m_native.size(), {});
     m_fastOuts.clear();
     m_fastArgs.clear();
     m_fastScale = m_fastShift = 0;
-    std::vector<bool> isFast(m_native.size(), false);
-    for (size_t k = 0; k < m_native.size(); ++k) {
-        const NativeRule& r = m_native[k];
-        FastRule f{std::uint32_t(r.outs.size()), r.params, std::uint32_t(m_fastOuts.size()), std::uint32_t(m_fastArgs.size())};
+    for (NativeRule& r : m_native) {
+        const std::uint32_t firstOut = std::uint32_t(m_fastOuts.size());
         std::vector<FastArg> args;
-        bool fast = r.params <= 64;  // FastRule's ints are one 64-bit word
+        double scale = 0, shift = 0;  // the largest |mul| and |add| of its arguments
+        bool fast = r.params <= 64;   // its ints are one 64-bit word
         for (const NativeOut& o : r.outs) {
             const std::uint32_t n = std::uint32_t(o.args.size());
             m_fastOuts.push_back({o.cls, std::uint32_t(args.size()), n, n >= 32 ? ~0u : (1u << n) - 1});
@@ -194,20 +192,21 @@ void Engine::prepareNative() {
                     fast &= a.expr.affine(slot, fa.mul, fa.add);
                     fa.slot = slot;
                 }
-                f.scale = std::max(f.scale, std::fabs(fa.mul));
-                f.shift = std::max(f.shift, std::fabs(fa.add));
+                scale = std::max(scale, std::fabs(fa.mul));
+                shift = std::max(shift, std::fabs(fa.add));
                 args.push_back(fa);
             }
         }
         if (!fast) {
-            m_fastOuts.resize(f.firstOut);
+            m_fastOuts.resize(firstOut);
             continue;
         }
+        r.fast = true;
+        r.firstFastOut = firstOut;
+        r.firstFastArg = std::uint32_t(m_fastArgs.size());
         m_fastArgs.insert(m_fastArgs.end(), args.begin(), args.end());
-        m_fastRules[k] = f;
-        isFast[k] = true;
-        m_fastScale = std::max(m_fastScale, f.scale);
-        m_fastShift = std::max(m_fastShift, f.shift);
+        m_fastScale = std::max(m_fastScale, scale);
+        m_fastShift = std::max(m_fastShift, shift);
     }
     m_nativeClass.assign(m_tr.classes.size(), {});
     for (size_t c = 0; c < m_nativeByClass.size(); ++c) {
@@ -218,13 +217,12 @@ void Engine::prepareNative() {
         const NativeRule& r = m_native[size_t(rules[0])];
         k.rule = &r;
         k.arity = std::uint32_t(r.arity);
-        if (isFast[size_t(rules[0])]) {
-            const FastRule& f = m_fastRules[size_t(rules[0])];
+        if (r.fast) {
             k.fast = true;
-            k.fastArgs = f.args;
-            k.fastOuts = f.outs;
-            k.firstFastArg = f.firstArg;
-            k.firstFastOut = f.firstOut;
+            k.fastArgs = r.params;
+            k.fastOuts = std::uint32_t(r.outs.size());
+            k.firstFastArg = r.firstFastArg;
+            k.firstFastOut = r.firstFastOut;
         }
     }
     m_nativeOk = true;
@@ -484,10 +482,11 @@ private:
 bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper) {
     const size_t count = cur.size();
     // The fast rules' values need no check when no number of the string is big enough for
-    // one to reach 2^53 (|x * mul + add| <= max|x| * max|mul| + max|add|, with room for rounding).
+    // one to reach 2^53 (|x * mul + add| <= max|x| * max|mul| + max|add|, with room for
+    // rounding); without such values nothing is to check.
     double biggest[4] = {0, 0, 0, 0};
     const double* p = cur.params.data();
-    const size_t numbers = cur.params.size();
+    const size_t numbers = m_fastArgs.empty() ? 0 : cur.params.size();
     size_t k = 0;
     for (; k + 4 <= numbers; k += 4)
         for (int u = 0; u < 4; ++u) biggest[u] = std::max(biggest[u], std::fabs(p[k + size_t(u)]));

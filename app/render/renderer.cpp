@@ -22,6 +22,16 @@ namespace sprout::render {
 using detail::kShadowSize;
 using detail::kGroundShadowSize;
 
+namespace {
+// The texture bound now is filtered linearly and clamped at its edges.
+void linearClamped() {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+}  // namespace
+
 // Baked triangles: position, normal, colour (polygon.vert's layout).
 void Renderer::Impl::makeBaked(Buffers& b) {
     glGenVertexArrays(1, &b.vao);
@@ -84,10 +94,7 @@ bool Renderer::Impl::build(std::string& error) {
     glGenTextures(1, &coverageTexture);
     glBindTexture(GL_TEXTURE_2D, coverageTexture);
     // Linear: exact at the size it was made (samples at texel centres), smooth when moved.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    linearClamped();
     glBindTexture(GL_TEXTURE_2D, 0);
 
     // Two sets of baked and line buffers: the one on screen, and the one a staged upload
@@ -148,10 +155,7 @@ bool Renderer::Impl::build(std::string& error) {
     glGenTextures(1, &shadowTexture);
     glBindTexture(GL_TEXTURE_2D, shadowTexture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kShadowSize, kShadowSize, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    linearClamped();
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     glGenFramebuffers(1, &shadowFbo);
@@ -166,10 +170,7 @@ bool Renderer::Impl::build(std::string& error) {
     glGenTextures(1, &groundShadowTexture);
     glBindTexture(GL_TEXTURE_2D, groundShadowTexture);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kGroundShadowSize, kGroundShadowSize, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    linearClamped();
     glBindTexture(GL_TEXTURE_2D, 0);
     glGenFramebuffers(1, &groundShadowFbo);
     glBindFramebuffer(GL_FRAMEBUFFER, groundShadowFbo);

@@ -241,9 +241,10 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         s.shadowView = p.lightViewProj;
         s.shadowTexel = p.texel;
         s.shadowAge = 0;
-        // The ground's shadow texture for the moving frames to come, with the map (a still
-        // picture's piece pays for it, not the first frame of a drag).
-        if (m_software && p.ground) s.ensureGroundShadow(p.o, p.eye, groundCentre(p), p.groundRadius);
+        // The ground's shadow texture for the moving frames to come, with the map of the
+        // window's still view (drawn in pieces: a piece pays for it, not the first frame of a
+        // drag); a picture drawn at once (`sprout render`, a video's frame) has none to come.
+        if (m_software && p.ground && !wait) s.ensureGroundShadow(p.o, p.eye, groundCentre(p), p.groundRadius);
         if (!next(Pass::Raster)) return false;
     }
     if (p.phase == Pass::Raster) {  // a big curve's raster, made on a thread when it may take its time

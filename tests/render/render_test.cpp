@@ -702,29 +702,34 @@ std::vector<bool> shadowedPixels(render::Renderer& renderer, const render::Camer
     return out;
 }
 
-// The leafy bush of ABOP fig. 1.25 (n=2).
-Geometry leafyBush() {
-    auto g = grammarOf(kLeafyBush);
-    DeriveResult d = derive(g, 2);
+// The leafy bush of ABOP fig. 1.25 (n=2) uploaded to a headless renderer, and the camera a
+// snapshot of kW x kH frames it with.
+struct LeafyBushView {
     Geometry geometry;
-    if (d.outcome.ok()) interpret(*d.string, *g, {2, 1, nullptr}, geometry);
-    return geometry;
-}
+    std::unique_ptr<HeadlessRenderer> headless = headlessRenderer();
+    SnapshotOptions o;
+    render::Camera camera;
+    LeafyBushView() {
+        auto g = grammarOf(kLeafyBush);
+        DeriveResult d = derive(g, 2);
+        if (d.outcome.ok()) interpret(*d.string, *g, {2, 1, nullptr}, geometry);
+        o.width = kW, o.height = kH;
+        camera = snapshotCamera(geometry, o);
+        if (headless) headless->renderer.upload(geometry);
+    }
+};
 
 // On a software rasteriser a moving frame lights the plant without the shadow map's lookups
 // (thin stems are shaded in whole blocks of pixels, nine lookups each); the ground keeps the
 // plant's shadow. The leafy bush shades itself in the still view.
 TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
-    const Geometry geometry = leafyBush();
-    ASSERT_FALSE(geometry.cylinders.empty());
-    auto headless = headlessRenderer();
-    ASSERT_TRUE(headless);
-    render::Renderer& renderer = headless->renderer;
+    LeafyBushView v;
+    ASSERT_FALSE(v.geometry.cylinders.empty());
+    ASSERT_TRUE(v.headless);
+    render::Renderer& renderer = v.headless->renderer;
     ASSERT_TRUE(renderer.software());
-    renderer.upload(geometry);
-    SnapshotOptions o;
-    o.width = kW, o.height = kH;
-    const render::Camera camera = snapshotCamera(geometry, o);
+    const SnapshotOptions& o = v.o;
+    const render::Camera& camera = v.camera;
     auto differing = [&](render::Quality quality, bool ground) {
         const std::vector<bool> s = shadowedPixels(renderer, camera, o, quality, ground);
         return int(std::count(s.begin(), s.end(), true));
@@ -738,16 +743,23 @@ TEST(Render, MovingFrameOnSoftwareGlKeepsTheGroundsShadowNotThePlants) {
 // Moving frames on software GL read the ground's shadow from a texture made with the shadow
 // map (once, not per frame): the same shadow on the ground as the still picture's lookups.
 TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
-    const Geometry geometry = leafyBush();
-    ASSERT_FALSE(geometry.cylinders.empty());
-    auto headless = headlessRenderer();
-    ASSERT_TRUE(headless);
-    render::Renderer& renderer = headless->renderer;
+    LeafyBushView v;
+    ASSERT_FALSE(v.geometry.cylinders.empty());
+    ASSERT_TRUE(v.headless);
+    render::Renderer& renderer = v.headless->renderer;
     ASSERT_TRUE(renderer.software());
-    renderer.upload(geometry);
-    SnapshotOptions o;
-    o.width = kW, o.height = kH;
-    const render::Camera camera = snapshotCamera(geometry, o);
+    const Geometry& geometry = v.geometry;
+    const SnapshotOptions& o = v.o;
+    const render::Camera& camera = v.camera;
+    // The still view as the window draws it, in pieces: its shadow map, and the texture with it.
+    auto stillInPieces = [&] {
+        render::RenderOptions lit = o.render;
+        lit.ground = lit.shadows = true;
+        renderer.beginDraw(camera, kW, kH, lit);  // into the headless context's own image
+        while (!renderer.continueDraw(2000)) {
+        }
+    };
+    stillInPieces();
     const std::vector<bool> still = shadowedPixels(renderer, camera, o, render::Quality::Still, true);
     const std::vector<bool> onPlant = shadowedPixels(renderer, camera, o, render::Quality::Still, false);
     EXPECT_EQ(renderer.groundShadowTextures(), 1) << "made with the shadow map";
@@ -769,6 +781,10 @@ TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
     Geometry taller = geometry;
     for (auto& c : taller.cylinders) c.start.y *= 1.5f, c.end.y *= 1.5f;
     renderer.upload(taller);
+    stillInPieces();
+    EXPECT_EQ(renderer.groundShadowTextures(), 2);
+    // A picture drawn at once (`sprout render`) makes none: no moving frames follow it.
+    renderer.upload(geometry);
     shadowedPixels(renderer, camera, o, render::Quality::Still, true);
     EXPECT_EQ(renderer.groundShadowTextures(), 2);
 }
