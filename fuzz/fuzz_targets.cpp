@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -22,6 +24,12 @@
 namespace {
 
 using namespace sprout;
+
+// A failed check: says which on stderr (scripts/fuzz.sh shows it with the input), then aborts.
+[[noreturn]] [[maybe_unused]] void fail(const char* what) {
+    std::fprintf(stderr, "fuzz check failed: %s\n", what);
+    std::abort();
+}
 
 // Derives a few steps under a small size cap, as the viewer does on every keystroke, bounded
 // so that the fuzzer stays fast; null when the text does not parse or derive.
@@ -56,8 +64,12 @@ using namespace sprout;
     // or less. Segments and surfaces must match exactly.
     const size_t ga = g.polygons.indices.size(), sa = s.polygons.indices.size();
     if (g.cylinders.size() != s.cylinders.size() || g.surfaces.size() != s.surfaces.size() ||
-        (ga > sa ? ga - sa : sa - ga) > 6 + sa / 100 || g.planarCurve != s.planarCurve)
-        __builtin_trap();
+        (ga > sa ? ga - sa : sa - ga) > 6 + sa / 100 || g.planarCurve != s.planarCurve) {
+        std::fprintf(stderr, "cylinders %zu/%zu, surfaces %zu/%zu, polygon indices %zu/%zu, planar %d/%d\n",
+                     g.cylinders.size(), s.cylinders.size(), g.surfaces.size(), s.surfaces.size(), ga, sa,
+                     int(g.planarCurve), int(s.planarCurve));
+        fail("the tree and the string turtle drew different counts (tree/string)");
+    }
     const glm::vec3 size = s.bounds.size();
     const float extent = std::max({size.x, size.y, size.z});
     if (!(extent < 1e6f)) return;  // rounding, not placement, decides there
@@ -69,7 +81,13 @@ using namespace sprout;
     };
     for (size_t i = 0; i < s.cylinders.size(); ++i) {
         const CylinderInstance &x = g.cylinders[i], &y = s.cylinders[i];
-        if (x.order != y.order || x.colour != y.colour || far(x.start, y.start) || far(x.end, y.end)) __builtin_trap();
+        if (x.order != y.order || x.colour != y.colour || far(x.start, y.start) || far(x.end, y.end)) {
+            std::fprintf(stderr, "cylinder %zu of %zu: tree (%g %g %g)-(%g %g %g) order %d colour %d, "
+                         "string (%g %g %g)-(%g %g %g) order %d colour %d, tolerance %g\n", i, s.cylinders.size(),
+                         x.start.x, x.start.y, x.start.z, x.end.x, x.end.y, x.end.z, int(x.order), int(x.colour),
+                         y.start.x, y.start.y, y.start.z, y.end.x, y.end.y, y.end.z, int(y.order), int(y.colour), tol);
+            fail("the tree and the string turtle placed a segment differently");
+        }
     }
 }
 
@@ -130,7 +148,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     size_t lines = 1, mainLines = 0, tag = text.find("###### INITIALISATION ######");
     for (size_t k = 0; k < std::min(tag, text.size()); ++k) lines += text[k] == '\n';
     for (char c : t.mainCode) mainLines += c == '\n';
-    if (tag == std::string::npos && mainLines != lines) __builtin_trap();
+    if (tag == std::string::npos && mainLines != lines) fail("the translation lost or added lines");
     (void)detectFileKind("model.lpy", input);
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"

@@ -51,7 +51,15 @@ for t in "${targets[@]}"; do
   if ! ASAN_OPTIONS=detect_leaks=1 ./build-fuzz/fuzz/fuzz_$t -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
       -max_len=65536 -dict=fuzz/lsys.dict -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/$t- \
       "$corpus" "${dirs[@]}" 2>build-fuzz/$t.log; then
-    echo "fuzz_$t FAILED:"; grep -E "ERROR|SUMMARY|runtime error|Test unit written" build-fuzz/$t.log | head -20
+    echo "fuzz_$t FAILED:"
+    grep -E "ERROR|SUMMARY|runtime error|Test unit written|fuzz check failed|^cylinder|terminate called|what\(\)" \
+      build-fuzz/$t.log | head -20
+    # The input, so that a find on a machine that keeps nothing can be replayed (base64 -d).
+    unit="$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' build-fuzz/$t.log | tail -1)"
+    if [ -n "$unit" ] && [ -f "$unit" ]; then
+      echo "the input ($(stat -c %s "$unit") bytes; first 16 KB, base64):"
+      head -c 16384 "$unit" | base64 -w 120
+    fi
     status=1
   fi
   grep -E "stat::number_of_executed_units|stat::peak_rss_mb" build-fuzz/$t.log | tr '\n' ' '; echo

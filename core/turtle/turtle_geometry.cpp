@@ -102,10 +102,10 @@ namespace {
 // them at their distance from the origin: a few hundred ulps, relative. An absolute 1e-6 was
 // one ulp at 10 units, so whether an outline's closing point was dropped depended on how its
 // frames were multiplied, and the tree and the string turtle drew different polygons.
+constexpr float kPointRounding = 2e-5f;  // relative to 1 + the largest coordinate
+float roundingAt(const glm::vec3& m) { return kPointRounding * (1 + std::max({m.x, m.y, m.z})); }
 bool samePoint(const glm::vec3& a, const glm::vec3& b) {
-    const glm::vec3 m = glm::max(glm::abs(a), glm::abs(b));
-    const float scale = 1 + std::max({m.x, m.y, m.z});
-    return !(glm::length(a - b) > 2e-5f * scale);
+    return !(glm::length(a - b) > roundingAt(glm::max(glm::abs(a), glm::abs(b))));
 }
 }  // namespace
 
@@ -120,14 +120,21 @@ void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts) {
     if (pts.size() < 3) return;
     Mesh& m = m_out.polygons;
     // Newell's normal: robust for concave and slightly non-planar outlines.
-    glm::vec3 n(0);
+    glm::vec3 n(0), far(0);
+    float perimeter = 0;
     for (size_t i = 0; i < pts.size(); ++i) {
         const glm::vec3& a = pts[i];
         const glm::vec3& b = pts[(i + 1) % pts.size()];
         n += glm::vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        perimeter += glm::length(b - a);
+        far = glm::max(far, glm::abs(a));
     }
+    // Twice the area. An outline no wider than its points' rounding (twice the area over the
+    // perimeter) is a line and is not drawn: its area is rounding noise, zero or not
+    // depending on how its frames were multiplied (an absolute 1e-12 let the tree and the
+    // string turtle fill different collinear leaves, a fuzz find now in fuzz/regressions/derive).
     float len = glm::length(n);
-    if (len < 1e-12f) return;
+    if (!(len > perimeter * roundingAt(far))) return;
     n /= len;
     std::uint32_t base = std::uint32_t(m.positions.size());
     std::uint32_t col = t.colour >= 0 ? colour(t.colour) : colour(kLeafColour);

@@ -158,6 +158,18 @@ TEST(Turtle, PolygonIsTriangulated) {
     EXPECT_NEAR(area, 3.0, 1e-5);  // 2x1 + 1x1
 }
 
+TEST(Turtle, AnOutlineNoWiderThanItsRoundingIsALine) {
+    // Three points on one line, 25 units out, turned there by angles whose cosines round: the
+    // area is rounding noise, so nothing is filled (the tree and the string turtle filled
+    // different ones of these when an absolute 1e-12 decided).
+    const std::string far = "angle: 18\naxiom: f(20)+(1)&(7)f(5)/(13)";
+    EXPECT_EQ(draw(far + "{.f.f.}\n").polygons.indices.size(), 0u);
+    EXPECT_EQ(draw(far + "{.f.+(180)f.}\n").polygons.indices.size(), 0u);  // turned back on itself
+    // A thin leaf there, a hundredth of a unit wide and a unit long, is filled.
+    EXPECT_EQ(draw(far + "{.f.+(90)f(0.01).+(90)f.}\n").polygons.indices.size(), 6u);
+    EXPECT_EQ(draw(far + "{.f.+(89.4)f.}\n").polygons.indices.size(), 3u);  // a sliver 0.01 wide
+}
+
 TEST(Turtle, SurfacesAndSpheres) {
     Geometry g = draw("width: 0.1\naxiom: F~leaf(2)[~l]@O(0.5)~petal\n");
     ASSERT_EQ(g.surfaces.size(), 4u);
