@@ -65,6 +65,13 @@ public:
         if (n <= m_capacity) return;
         const size_t bytes = n * sizeof(T);
         if (bytes < kHugeThreshold && !m_mapped) {
+            // Nothing to keep (a derivation step's string, cleared): not realloc, which copies
+            // the whole old allocation, whatever size says.
+            if (m_size == 0 && m_data) {
+                std::free(m_data);
+                m_data = nullptr;
+                m_capacity = 0;
+            }
             void* p = std::realloc(m_data, bytes);
             if (!p) throw std::bad_alloc();
             m_data = static_cast<T*>(p);
