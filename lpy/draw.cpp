@@ -239,13 +239,18 @@ struct FromPython {
 };
 struct FromNumbers {
     const NumString& s;
+    std::vector<std::uint32_t> first;  // where each module's numbers start
+    explicit FromNumbers(const NumString& string) : s(string), first(string.size()) {
+        std::uint32_t at = 0;
+        for (size_t k = 0; k < s.size(); ++k) first[k] = at, at += s.shape(k).n;
+    }
     size_t size() const { return s.size(); }
-    int cls(size_t k) const { return s.modules[k].cls; }
+    int cls(size_t k) const { return s.shape(k).cls; }
     PyObject* object(size_t, size_t) const { return nullptr; }  // numbers only
     size_t values(size_t k, std::vector<double>& p, bool&) const {
-        const NumString::Module& m = s.modules[k];
-        p.insert(p.end(), s.params.data() + m.first, s.params.data() + m.first + m.n);
-        return m.n;
+        const std::uint32_t n = s.shape(k).n;
+        p.insert(p.end(), s.params.data() + first[k], s.params.data() + first[k] + n);
+        return n;
     }
 };
 

@@ -586,14 +586,17 @@ LString Engine::interpret(const LString& s) {
 
 std::string Engine::text(const NumString& s) const {
     std::string out;
-    for (const NumString::Module& m : s.modules) {
+    const double* v = s.params.data();
+    for (size_t j = 0; j < s.size(); ++j) {
+        const NumString::Shape& m = s.shape(j);
         out += m_tr.classes.name(m.cls);
         if (m.n == 0) continue;
         out += '(';
         for (std::uint32_t k = 0; k < m.n; ++k) {
             if (k) out += ',';
-            appendNumber(out, s.params[m.first + k]);
+            appendNumber(out, v[k]);
         }
+        v += m.n;
         out += ')';
     }
     return out;

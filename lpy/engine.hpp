@@ -32,15 +32,17 @@ struct LModule {
 };
 using LString = std::vector<LModule>;
 
-// A string of the native path (lpy/native.cpp): module classes and their numbers in one
-// array, no Python objects. `ints` has bit a set when Python holds parameter a as an int.
-// Drawn and written as it is; made into an LString only where Python reads it (the
-// interpretation rules, growth stepping).
+// A string of the native path (lpy/native.cpp): each module is its shape (class, count of
+// numbers, which of them Python holds as ints), 4 bytes, and the numbers of all modules are in
+// one array, in order: module k's follow module k - 1's. No Python objects. Drawn and written
+// as it is; made into an LString only where Python reads it (the interpretation rules, growth
+// stepping). A step reads and writes half the bytes it did with 16-byte modules that held
+// their class, numbers' offset and count.
 struct NumString {
-    struct Module {
+    struct Shape {
         int cls = 0;
-        std::uint32_t first = 0, n = 0;  // its numbers: params[first, first + n)
-        std::uint32_t ints = 0;
+        std::uint32_t n = 0;     // its numbers
+        std::uint32_t ints = 0;  // bit a: Python holds number a as an int
     };
     struct Origin {  // as LModule::rule and LModule::parent
         std::int32_t rule = -1;
@@ -48,14 +50,17 @@ struct NumString {
     };
     // No zeroing, and huge pages from 2 MB: a step writes its string once, into fresh
     // memory, and with 4 KB pages the kernel's page faults took more than half of it.
-    PodBuffer<Module, (2u << 20)> modules;
+    PodBuffer<std::uint32_t, (2u << 20)> modules;  // an index of `shapes` per module
     PodBuffer<double, (2u << 20)> params;
     PodBuffer<Origin, (2u << 20)> origins;  // one per module when kept, else none
+    std::shared_ptr<const std::vector<Shape>> shapes;  // the derivation's, shared by its steps
     size_t size() const { return modules.size(); }
+    const Shape& shape(size_t k) const { return (*shapes)[modules[k]]; }
     void swap(NumString& o) noexcept {
         modules.swap(o.modules);
         params.swap(o.params);
         origins.swap(o.origins);
+        shapes.swap(o.shapes);
     }
 };
 
@@ -195,12 +200,12 @@ public:
         int cls = 0, arity = 0, index = 0;
         std::uint32_t params = 0;  // the numbers its successor holds
         std::uint32_t firstOut = 0, firstArg = 0;  // in m_flatOuts, m_flatArgs
-        bool fast = false;  // its arguments are all fast ones (FastArg): in m_fastOuts, m_fastArgs
-        std::uint32_t firstFastOut = 0, firstFastArg = 0;
+        bool fast = false;  // its arguments are all fast ones (FastArg), from firstFastArg in m_fastArgs
+        std::uint32_t firstFastArg = 0;
         std::vector<NativeOut> outs;
     };
-    // The rules laid out flat for the derivation's inner loop: per class its one rule
-    // (several by arity: `many`, found by nativeRule), its modules, their arguments.
+    // The rules laid out flat for the derivation's inner loop: per rule its modules, their
+    // arguments.
     struct FlatArg {
         const Expr* expr;
         std::uint64_t need;  // an int when the module's ints hold all of these bits (bit 32: never)
@@ -216,34 +221,33 @@ public:
         std::uint64_t need;  // as FlatArg::need
         std::uint32_t slot;
     };
-    struct FastOut {
-        int cls;
-        std::uint32_t first, n;  // its numbers: the rule's numbers [first, first + n)
-        std::uint32_t mask;      // n low bits
-    };
-    struct NativeClass {
+    // What a step does with a module of one shape (NumString::Shape), found before the
+    // derivation for every shape the axiom's can lead to: the inner loop reads one entry per
+    // module, and writes the shapes it makes from a list.
+    struct ShapeStep {
+        enum Kind : std::uint8_t { Copy, Fast, General } kind = Copy;
+        std::uint32_t n = 0;          // its numbers (read)
+        std::uint32_t nOuts = 1;      // modules made
+        std::uint32_t nArgs = 0;      // numbers made
+        std::uint32_t firstOut = 0;   // the shapes made: in m_outShapes from here
+        std::uint32_t firstArg = 0;   // a fast rule's arguments in m_fastArgs
+        std::uint32_t ints = 0;       // its own ints (NumString::Shape::ints)
+        std::uint64_t outInts = 0;    // a fast rule's numbers that are ints, as bits
         const NativeRule* rule = nullptr;
-        std::uint32_t arity = 0;
-        bool many = false;
-        // Its rule's fast layout (NativeRule::fast), copied here so that the inner loop reads
-        // one entry per module, not the rule behind it.
-        bool fast = false;
-        std::uint32_t fastArgs = 0, fastOuts = 0, firstFastArg = 0, firstFastOut = 0;
     };
     struct Tables {
-        const NativeClass* classes;
-        size_t classCount;
+        const ShapeStep* steps;
+        const std::uint32_t* outShapes;
         const FlatOut* flatOuts;
         const FlatArg* flatArgs;
-        const FastOut* fastOuts;
         const FastArg* fastArgs;
     };
-    // Where a step writes: modules, their numbers (`at`: the index of the next one), origins.
+    // Where a step writes (modules, their numbers, origins), and the next number it reads.
     struct NativeCursor {
-        NumString::Module* out;
+        std::uint32_t* out;
         double* values;
-        std::uint32_t at;
         NumString::Origin* origin;  // null when origins are not kept
+        size_t in;
     };
     const NativeRule* nativeRule(int cls, std::uint32_t arity) const;
 
@@ -252,16 +256,22 @@ private:
     // would give. `checked`: whether the fast rules' values are checked too (not needed where
     // the step's numbers are too small for them to reach 2^53: nativeStep).
     bool nativeRange(const NumString& cur, size_t begin, size_t end, NativeCursor& c, bool checked) const;
-    // What cur's modules [0, end) make: modules, and numbers.
-    void nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params) const;
+    // What cur's modules [0, end) make (modules, numbers), and the numbers they hold.
+    void nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params, std::uint64_t& read) const;
+    // The shapes of the axiom's modules and of all they can lead to, with what a step does
+    // with each (m_shapes, m_shapeSteps, m_outShapes); false past kMaxShapes.
+    std::uint32_t shapeOf(const NumString::Shape& shape);
+    bool closeShapes();
     // All of cur, from c on (shared with a second thread when big); throws Cancelled.
     bool nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper);
     std::vector<NativeRule> m_native;
     std::vector<std::vector<int>> m_nativeByClass;
-    std::vector<FastOut> m_fastOuts;
     std::vector<FastArg> m_fastArgs;
+    std::vector<NumString::Shape> m_shapes;
+    std::unordered_map<std::uint64_t, std::uint32_t> m_shapeIds;
+    std::vector<ShapeStep> m_shapeSteps;
+    std::vector<std::uint32_t> m_outShapes;
     double m_fastScale = 0, m_fastShift = 0;  // over all fast rules
-    std::vector<NativeClass> m_nativeClass;
     std::vector<FlatOut> m_flatOuts;
     std::vector<FlatArg> m_flatArgs;
     std::uint32_t m_nativeMaxOuts = 1, m_nativeMaxParams = 0;

@@ -9,9 +9,12 @@
 // value that is not finite (a division by zero, which Python would raise) drops the native
 // run: the model runs in Python from the start instead.
 //
-// How a step runs fast (lpy_bench: 17-21x the Python path before, 60-64x after):
+// How a step runs fast (lpy_bench: 17-21x the Python path before, 60-69x, then 92-113x):
+// - a module is 4 bytes, its shape (class, count of numbers, which are ints), and every
+//   shape the axiom's can lead to is found before the derivation with what a step does with
+//   it: the inner loop reads one entry per module and copies the shapes it makes;
 // - rules whose arguments are all x * a + b of a parameter, or constants (Expr::affine), are
-//   laid out flat per class and written by loops unrolled for up to 4 modules and 4 numbers;
+//   laid out flat and written by loops unrolled for up to 4 modules and 4 numbers;
 // - those values are not checked one by one where no number of the string is big enough for
 //   one of them to reach 2^53 (a pass over the numbers first);
 // - room for the new string comes from an upper bound, not a pass that counts it;
@@ -81,7 +84,7 @@ bool plainArithmetic(std::string_view a, const std::vector<std::string>& names, 
     return any;
 }
 
-constexpr int kMaxNativeArity = 32;  // NumString::Module::ints holds a bit per parameter
+constexpr int kMaxNativeArity = 32;  // NumString::Shape::ints holds a bit per parameter
 constexpr double kExactInts = 9007199254740992.0;  // 2^53: past it a double is not Python's int
 
 // A Python number (not a bool), or nothing; `isInt` for an int (exact in a double).
@@ -168,17 +171,13 @@ void Engine::prepareNative() {
             for (const NativeArg& a : o.args) m_flatArgs.push_back({&a.expr, a.used | (std::uint64_t(a.isFloat) << 32)});
         }
     }
-    m_fastOuts.clear();
     m_fastArgs.clear();
     m_fastScale = m_fastShift = 0;
     for (NativeRule& r : m_native) {
-        const std::uint32_t firstOut = std::uint32_t(m_fastOuts.size());
         std::vector<FastArg> args;
         double scale = 0, shift = 0;  // the largest |mul| and |add| of its arguments
         bool fast = r.params <= 64;   // its ints are one 64-bit word
         for (const NativeOut& o : r.outs) {
-            const std::uint32_t n = std::uint32_t(o.args.size());
-            m_fastOuts.push_back({o.cls, std::uint32_t(args.size()), n, n >= 32 ? ~0u : (1u << n) - 1});
             for (const NativeArg& a : o.args) {
                 FastArg fa{1, -0.0, a.used | (std::uint64_t(a.isFloat) << 32), 0};
                 std::uint16_t slot = 0;
@@ -197,33 +196,12 @@ void Engine::prepareNative() {
                 args.push_back(fa);
             }
         }
-        if (!fast) {
-            m_fastOuts.resize(firstOut);
-            continue;
-        }
+        if (!fast) continue;
         r.fast = true;
-        r.firstFastOut = firstOut;
         r.firstFastArg = std::uint32_t(m_fastArgs.size());
         m_fastArgs.insert(m_fastArgs.end(), args.begin(), args.end());
         m_fastScale = std::max(m_fastScale, scale);
         m_fastShift = std::max(m_fastShift, shift);
-    }
-    m_nativeClass.assign(m_tr.classes.size(), {});
-    for (size_t c = 0; c < m_nativeByClass.size(); ++c) {
-        const auto& rules = m_nativeByClass[c];
-        NativeClass& k = m_nativeClass[c];
-        k.many = rules.size() > 1;
-        if (rules.size() != 1) continue;
-        const NativeRule& r = m_native[size_t(rules[0])];
-        k.rule = &r;
-        k.arity = std::uint32_t(r.arity);
-        if (r.fast) {
-            k.fast = true;
-            k.fastArgs = r.params;
-            k.fastOuts = std::uint32_t(r.outs.size());
-            k.firstFastArg = r.firstFastArg;
-            k.firstFastOut = r.firstFastOut;
-        }
     }
     m_nativeOk = true;
 }
@@ -231,15 +209,16 @@ void Engine::prepareNative() {
 LString Engine::toL(const NumString& s) {
     LString out;
     out.reserve(s.size());
+    const double* v = s.params.data();
     for (size_t k = 0; k < s.size(); ++k) {
-        const NumString::Module& m = s.modules[k];
+        const NumString::Shape& m = s.shape(k);
         py::tuple args(m.n);
         for (std::uint32_t a = 0; a < m.n; ++a) {
-            const double v = s.params[m.first + a];
-            PyObject* o = m.ints >> a & 1 ? PyLong_FromDouble(v) : PyFloat_FromDouble(v);
+            PyObject* o = m.ints >> a & 1 ? PyLong_FromDouble(v[a]) : PyFloat_FromDouble(v[a]);
             if (!o) throw py::error_already_set();
             PyTuple_SET_ITEM(args.ptr(), a, o);
         }
+        v += m.n;
         LModule lm{m.cls, m.n ? std::move(args) : py::tuple()};
         if (k < s.origins.size()) lm.rule = s.origins[k].rule, lm.parent = s.origins[k].parent;
         out.push_back(std::move(lm));
@@ -248,58 +227,102 @@ LString Engine::toL(const NumString& s) {
 }
 
 const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const {
-    if (size_t(cls) >= m_nativeClass.size()) return nullptr;
-    const NativeClass& c = m_nativeClass[size_t(cls)];
-    if (c.rule) return std::uint32_t(c.rule->arity) == arity ? c.rule : nullptr;
-    if (c.many)
-        for (int r : m_nativeByClass[size_t(cls)])
-            if (std::uint32_t(m_native[size_t(r)].arity) == arity) return &m_native[size_t(r)];
+    if (cls < 0 || size_t(cls) >= m_nativeByClass.size()) return nullptr;
+    for (int r : m_nativeByClass[size_t(cls)])
+        if (std::uint32_t(m_native[size_t(r)].arity) == arity) return &m_native[size_t(r)];
     return nullptr;
+}
+
+constexpr size_t kMaxShapes = 1u << 16;
+
+std::uint32_t Engine::shapeOf(const NumString::Shape& shape) {
+    const std::uint64_t key = std::uint64_t(std::uint32_t(shape.cls)) << 38 | std::uint64_t(shape.n) << 32 | shape.ints;
+    auto [it, made] = m_shapeIds.emplace(key, std::uint32_t(m_shapes.size()));
+    if (made) m_shapes.push_back(shape);
+    return it->second;
+}
+
+bool Engine::closeShapes() {
+    m_shapeSteps.clear();
+    m_outShapes.clear();
+    // The shapes found so far are the work list: each one's step may find more.
+    for (std::uint32_t id = 0; id < m_shapes.size(); ++id) {
+        if (m_shapes.size() > kMaxShapes) return false;
+        const NumString::Shape shape = m_shapes[id];  // a copy: shapeOf grows m_shapes
+        ShapeStep k;
+        k.n = shape.n;
+        k.ints = shape.ints;
+        k.firstOut = std::uint32_t(m_outShapes.size());
+        const NativeRule* rule = nativeRule(shape.cls, shape.n);
+        if (!rule) {
+            k.kind = ShapeStep::Copy;
+            k.nArgs = shape.n;
+            m_outShapes.push_back(id);
+        } else {
+            // The numbers it makes that are ints: those of int parameters only, never after
+            // a '/' or a float literal (FlatArg::need).
+            k.kind = rule->fast ? ShapeStep::Fast : ShapeStep::General;
+            k.rule = rule;
+            k.nOuts = std::uint32_t(rule->outs.size());
+            k.nArgs = rule->params;
+            k.firstArg = rule->firstFastArg;
+            const std::uint64_t notInt = ~std::uint64_t(shape.ints);
+            std::uint32_t number = 0;
+            for (const NativeOut& o : rule->outs) {
+                std::uint32_t ints = 0;
+                for (std::uint32_t a = 0; a < o.args.size(); ++a, ++number) {
+                    const NativeArg& arg = o.args[a];
+                    const bool isInt = ((arg.used | (std::uint64_t(arg.isFloat) << 32)) & notInt) == 0;
+                    ints |= std::uint32_t(isInt) << a;
+                    if (isInt && number < 64) k.outInts |= std::uint64_t(1) << number;
+                }
+                m_outShapes.push_back(shapeOf({o.cls, std::uint32_t(o.args.size()), ints}));
+            }
+        }
+        m_shapeSteps.push_back(k);
+    }
+    return true;
 }
 
 namespace {
 
-// A fast rule's numbers (N of them; N < 0: rule.args, in a loop) and whether each is an int.
+// A fast rule's numbers (N of them; N < 0: `count`, in a loop); checked: whether each is one
+// Python would give (`ints`: those that are ints).
 template <int N, bool kChecked>
-inline void fastValues(const Engine::FastArg* __restrict args, std::uint32_t count, const double* in, std::uint64_t notInt,
-                       double* __restrict values, std::uint64_t& ints, bool& bad) {
+inline void fastValues(const Engine::FastArg* __restrict args, std::uint32_t count, const double* in, std::uint64_t ints,
+                       double* __restrict values, bool& bad) {
     const std::uint32_t n = N < 0 ? count : std::uint32_t(N);
     for (std::uint32_t k = 0; k < n; ++k) {
         const Engine::FastArg& a = args[k];
         const double v = in[a.slot] * a.mul + a.add;
-        const bool isInt = (a.need & notInt) == 0;
-        if constexpr (kChecked) bad |= !(std::fabs(v) < (isInt ? kExactInts : std::numeric_limits<double>::infinity()));
+        if constexpr (kChecked)
+            bad |= !(std::fabs(v) < (ints >> k & 1 ? kExactInts : std::numeric_limits<double>::infinity()));
         values[k] = v;
-        ints |= std::uint64_t(isInt) << k;
     }
 }
 
 template <int N>
-inline void fastModules(const Engine::FastOut* __restrict outs, std::uint32_t count, std::uint32_t at, std::uint64_t ints,
-                        NumString::Module* __restrict out) {
+inline void copyShapes(const std::uint32_t* __restrict shapes, std::uint32_t count, std::uint32_t* __restrict out) {
     const std::uint32_t n = N < 0 ? count : std::uint32_t(N);
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const Engine::FastOut& o = outs[k];
-        out[k] = {o.cls, at + o.first, o.n, std::uint32_t(ints >> o.first) & o.mask};
-    }
+    for (std::uint32_t k = 0; k < n; ++k) out[k] = shapes[k];
 }
 
 // A rule with arguments other than fast ones (Expr calls, always checked), out of the
 // inner loop; false when a value is not one Python would give.
-[[gnu::noinline]] bool generalRule(const Engine::NativeRule& hit, const Engine::Tables& t, const NumString::Module& m,
-                                   const double* in, size_t j, Engine::NativeCursor& c) {
+[[gnu::noinline]] bool generalRule(const Engine::ShapeStep& k, const Engine::Tables& t, const double* in, size_t j,
+                                   Engine::NativeCursor& c) {
     Rng rng(0);  // the rules use no random numbers (prepareNative)
     bool bad = false;
+    const Engine::NativeRule& hit = *k.rule;
     const Engine::FlatOut* o = t.flatOuts + hit.firstOut;
     const Engine::FlatOut* oEnd = o + hit.outs.size();
     const Engine::FlatArg* arg = t.flatArgs + hit.firstArg;
-    const std::uint64_t notInt = ~std::uint64_t(m.ints);
-    NumString::Module* out = c.out;
+    const std::uint32_t* shape = t.outShapes + k.firstOut;
+    const std::uint64_t notInt = ~std::uint64_t(k.ints);
+    std::uint32_t* out = c.out;
     double* values = c.values;
-    std::uint32_t at = c.at;
     for (; o != oEnd; ++o) {
         const std::uint32_t n = o->n;
-        std::uint32_t ints = 0;
         if (c.origin) *c.origin++ = {hit.index, std::uint32_t(j)};
         for (std::uint32_t a = 0; a < n; ++a, ++arg) {
             const double v = arg->expr->eval(in, rng);
@@ -308,105 +331,87 @@ inline void fastModules(const Engine::FastOut* __restrict outs, std::uint32_t co
             // NaN fails the comparison).
             bad |= !(std::fabs(v) < (isInt ? kExactInts : std::numeric_limits<double>::infinity()));
             values[a] = v;
-            ints |= std::uint32_t(isInt) << a;
         }
-        *out++ = {o->cls, at, n, ints};
+        *out++ = *shape++;
         values += n;
-        at += n;
     }
-    c.out = out, c.values = values, c.at = at;
+    c.out = out, c.values = values;
     return !bad;
 }
 
 template <bool kOrigins, bool kChecked>
-bool rewriteRange(const Engine& e, const Engine::Tables& t, const NumString& cur, size_t begin, size_t end,
-                  Engine::NativeCursor& c) {
-    const NumString::Module* from = cur.modules.data();
-    const double* params = cur.params.data();
+bool rewriteRange(const Engine::Tables& t, const NumString& cur, size_t begin, size_t end, Engine::NativeCursor& c) {
+    const std::uint32_t* from = cur.modules.data();
+    const double* in = cur.params.data() + c.in;
     // Nothing written aliases the rules or the string read (the compiler would reload them
     // after every store).
-    NumString::Module* __restrict out = c.out;
+    std::uint32_t* __restrict out = c.out;
     double* __restrict values = c.values;
-    std::uint32_t at = c.at;
     NumString::Origin* __restrict origin = c.origin;
     bool bad = false;
     for (size_t j = begin; j < end; ++j) {
-        const NumString::Module m = from[j];
-        const double* in = params + m.first;
-        const Engine::NativeRule* hit = nullptr;
-        if (size_t(m.cls) < t.classCount) {
-            const Engine::NativeClass& k = t.classes[m.cls];
-            if (k.fast && k.arity == m.n) {
-                // Unrolled for the usual small rules: a loop of unknown length costs more
-                // than the arithmetic.
-                const std::uint64_t notInt = ~std::uint64_t(m.ints);
-                std::uint64_t ints = 0;
-                const Engine::FastArg* args = t.fastArgs + k.firstFastArg;
-                const std::uint32_t nArgs = k.fastArgs, nOuts = k.fastOuts;
-                switch (nArgs) {
-                    case 0: break;
-                    case 1: fastValues<1, kChecked>(args, 1, in, notInt, values, ints, bad); break;
-                    case 2: fastValues<2, kChecked>(args, 2, in, notInt, values, ints, bad); break;
-                    case 3: fastValues<3, kChecked>(args, 3, in, notInt, values, ints, bad); break;
-                    case 4: fastValues<4, kChecked>(args, 4, in, notInt, values, ints, bad); break;
-                    default: fastValues<-1, kChecked>(args, nArgs, in, notInt, values, ints, bad); break;
-                }
-                const Engine::FastOut* outs = t.fastOuts + k.firstFastOut;
-                switch (nOuts) {
-                    case 0: break;
-                    case 1: fastModules<1>(outs, 1, at, ints, out); break;
-                    case 2: fastModules<2>(outs, 2, at, ints, out); break;
-                    case 3: fastModules<3>(outs, 3, at, ints, out); break;
-                    case 4: fastModules<4>(outs, 4, at, ints, out); break;
-                    default: fastModules<-1>(outs, nOuts, at, ints, out); break;
-                }
-                if constexpr (kOrigins)
-                    for (std::uint32_t o = 0; o < nOuts; ++o) *origin++ = {k.rule->index, std::uint32_t(j)};
-                out += nOuts;
-                values += nArgs;
-                at += nArgs;
-                continue;
+        const Engine::ShapeStep& k = t.steps[from[j]];
+        const std::uint32_t nIn = k.n, nOuts = k.nOuts, nArgs = k.nArgs;
+        const std::uint32_t* shapes = t.outShapes + k.firstOut;
+        if (k.kind == Engine::ShapeStep::Fast) {
+            // Unrolled for the usual small rules: a loop of unknown length costs more than
+            // the arithmetic.
+            const Engine::FastArg* args = t.fastArgs + k.firstArg;
+            switch (nArgs) {
+                case 0: break;
+                case 1: fastValues<1, kChecked>(args, 1, in, k.outInts, values, bad); break;
+                case 2: fastValues<2, kChecked>(args, 2, in, k.outInts, values, bad); break;
+                case 3: fastValues<3, kChecked>(args, 3, in, k.outInts, values, bad); break;
+                case 4: fastValues<4, kChecked>(args, 4, in, k.outInts, values, bad); break;
+                default: fastValues<-1, kChecked>(args, nArgs, in, k.outInts, values, bad); break;
             }
-            if (k.rule && k.arity == m.n) hit = k.rule;
-            else if (k.many) hit = e.nativeRule(m.cls, m.n);
-        }
-        if (!hit) {
-            *out++ = {m.cls, at, m.n, m.ints};
+            switch (nOuts) {
+                case 0: break;
+                case 1: copyShapes<1>(shapes, 1, out); break;
+                case 2: copyShapes<2>(shapes, 2, out); break;
+                case 3: copyShapes<3>(shapes, 3, out); break;
+                case 4: copyShapes<4>(shapes, 4, out); break;
+                default: copyShapes<-1>(shapes, nOuts, out); break;
+            }
+            if constexpr (kOrigins)
+                for (std::uint32_t o = 0; o < nOuts; ++o) *origin++ = {k.rule->index, std::uint32_t(j)};
+            out += nOuts;
+            values += nArgs;
+        } else if (k.kind == Engine::ShapeStep::Copy) {
+            *out++ = *shapes;
             if constexpr (kOrigins) *origin++ = {-1, std::uint32_t(j)};
-            for (std::uint32_t a = 0; a < m.n; ++a) values[a] = in[a];
-            values += m.n;
-            at += m.n;
-            continue;
+            for (std::uint32_t a = 0; a < nIn; ++a) values[a] = in[a];
+            values += nIn;
+        } else {
+            Engine::NativeCursor g{out, values, origin, 0};
+            bad |= !generalRule(k, t, in, j, g);
+            out = g.out, values = g.values, origin = g.origin;
         }
-        Engine::NativeCursor g{out, values, at, origin};
-        bad |= !generalRule(*hit, t, m, in, j, g);
-        out = g.out, values = g.values, at = g.at, origin = g.origin;
+        in += nIn;
     }
-    c = {out, values, at, origin};
+    c = {out, values, origin, size_t(in - cur.params.data())};
     return !bad;
 }
 }  // namespace
 
-void Engine::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params) const {
-    const NumString::Module* from = cur.modules.data();
-    modules = params = 0;
+void Engine::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params,
+                        std::uint64_t& read) const {
+    const std::uint32_t* from = cur.modules.data();
+    const ShapeStep* steps = m_shapeSteps.data();
+    modules = params = read = 0;
     for (size_t j = 0; j < end; ++j) {
-        if (const NativeRule* hit = nativeRule(from[j].cls, from[j].n)) {
-            modules += hit->outs.size();
-            params += hit->params;
-        } else {
-            modules += 1;
-            params += from[j].n;
-        }
+        const ShapeStep& k = steps[from[j]];
+        modules += k.nOuts;
+        params += k.nArgs;
+        read += k.n;
     }
 }
 
 bool Engine::nativeRange(const NumString& cur, size_t begin, size_t end, NativeCursor& c, bool checked) const {
-    const Tables t{m_nativeClass.data(), m_nativeClass.size(), m_flatOuts.data(), m_flatArgs.data(), m_fastOuts.data(),
-                   m_fastArgs.data()};
+    const Tables t{m_shapeSteps.data(), m_outShapes.data(), m_flatOuts.data(), m_flatArgs.data(), m_fastArgs.data()};
     if (c.origin)
-        return checked ? rewriteRange<true, true>(*this, t, cur, begin, end, c) : rewriteRange<true, false>(*this, t, cur, begin, end, c);
-    return checked ? rewriteRange<false, true>(*this, t, cur, begin, end, c) : rewriteRange<false, false>(*this, t, cur, begin, end, c);
+        return checked ? rewriteRange<true, true>(t, cur, begin, end, c) : rewriteRange<true, false>(t, cur, begin, end, c);
+    return checked ? rewriteRange<false, true>(t, cur, begin, end, c) : rewriteRange<false, false>(t, cur, begin, end, c);
 }
 
 // A second thread for the derivations' big steps: started once for the process, given a job
@@ -511,10 +516,10 @@ bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* hel
     NativeCursor second = c;
     bool secondOk = true;
     helper->post([&] {
-        std::uint64_t modules = 0, params = 0;
-        nativeSize(cur, split, modules, params);
-        second = {start.out + modules, start.values + params, start.at + std::uint32_t(params),
-                  start.origin ? start.origin + modules : nullptr};
+        std::uint64_t modules = 0, params = 0, read = 0;
+        nativeSize(cur, split, modules, params, read);
+        second = {start.out + modules, start.values + params, start.origin ? start.origin + modules : nullptr,
+                  start.in + read};
         secondOk = run(split, count, second, false);
     });
     struct Wait {  // the second part is done before this step's locals go (a throw included)
@@ -531,10 +536,12 @@ bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* hel
 bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
                            bool origins) {
     NumString cur, next;
+    m_shapes.clear();
+    m_shapeIds.clear();
     for (size_t k = 0; k < axiom.size(); ++k) {
         const LModule& m = axiom[k];
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
-        NumString::Module nm{m.cls, std::uint32_t(cur.params.size()), std::uint32_t(n), 0};
+        NumString::Shape shape{m.cls, std::uint32_t(n), 0};
         if (origins) cur.origins.push_back({-1, std::uint32_t(k)});
         for (Py_ssize_t a = 0; a < n; ++a) {
             double v = 0;
@@ -544,10 +551,16 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
                 return false;
             }
             cur.params.push_back(v);
-            nm.ints |= std::uint32_t(isInt) << a;
+            shape.ints |= std::uint32_t(isInt) << a;
         }
-        cur.modules.push_back(nm);
+        cur.modules.push_back(shapeOf(shape));
     }
+    // Every shape the string can hold, and what a step does with each, before it grows.
+    if (!closeShapes()) {
+        m_nativeOk = false;
+        return false;
+    }
+    cur.shapes = next.shapes = std::make_shared<const std::vector<NumString::Shape>>(m_shapes);
     if (everyStep) everyStep->push_back(cur);
     std::unique_lock<std::mutex> lease;
     NativeHelper* helper = nullptr;  // lent at the first big step
@@ -559,7 +572,8 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         // size where that bound would be far too big.
         std::uint64_t modules = std::uint64_t(count) * m_nativeMaxOuts;
         std::uint64_t params = cur.params.size() + std::uint64_t(count) * m_nativeMaxParams;
-        if (modules > (16u << 20) || params > (16u << 20)) nativeSize(cur, count, modules, params);
+        std::uint64_t read = 0;
+        if (modules > (16u << 20) || params > (16u << 20)) nativeSize(cur, count, modules, params, read);
         if (params > std::numeric_limits<std::uint32_t>::max()) throw py::value_error("the string holds too many numbers");
         next.modules.clear();  // nothing of it is kept: not copied when it grows
         next.params.clear();
@@ -567,7 +581,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         next.modules.resizeUninitialized(modules);
         next.params.resizeUninitialized(params);
         if (origins) next.origins.resizeUninitialized(modules);
-        NativeCursor c{next.modules.data(), next.params.data(), 0, origins ? next.origins.data() : nullptr};
+        NativeCursor c{next.modules.data(), next.params.data(), origins ? next.origins.data() : nullptr, 0};
         if (!helper && count >= 8192) helper = NativeHelper::lend(lease);
         bool ok = nativeStep(cur, c, helper);
         if (!ok) {
@@ -579,7 +593,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         if (made > m_options.maxModules)
             throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
         next.modules.resizeUninitialized(made);
-        next.params.resizeUninitialized(c.at);
+        next.params.resizeUninitialized(size_t(c.values - next.params.data()));
         if (origins) next.origins.resizeUninitialized(made);
         cur.swap(next);
         if (everyStep) everyStep->push_back(cur);
