@@ -272,6 +272,10 @@ private:
     std::vector<ShapeStep> m_shapeSteps;
     std::vector<std::uint32_t> m_outShapes;
     double m_fastScale = 0, m_fastShift = 0;  // over all fast rules
+    // The biggest |number| the string can hold at this step (-1: not known, measured), known
+    // from step to step where every rule the string meets is a fast one (`m_allFast`).
+    double m_bound = -1;
+    bool m_allFast = false;
     std::vector<FlatOut> m_flatOuts;
     std::vector<FlatArg> m_flatArgs;
     std::uint32_t m_nativeMaxOuts = 1, m_nativeMaxParams = 0;

@@ -488,16 +488,27 @@ bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* hel
     const size_t count = cur.size();
     // The fast rules' values need no check when no number of the string is big enough for
     // one to reach 2^53 (|x * mul + add| <= max|x| * max|mul| + max|add|, with room for
-    // rounding); without such values nothing is to check.
-    double biggest[4] = {0, 0, 0, 0};
-    const double* p = cur.params.data();
-    const size_t numbers = m_fastArgs.empty() ? 0 : cur.params.size();
-    size_t k = 0;
-    for (; k + 4 <= numbers; k += 4)
-        for (int u = 0; u < 4; ++u) biggest[u] = std::max(biggest[u], std::fabs(p[k + size_t(u)]));
-    for (; k < numbers; ++k) biggest[0] = std::max(biggest[0], std::fabs(p[k]));
-    const double most = std::max(std::max(biggest[0], biggest[1]), std::max(biggest[2], biggest[3]));
-    const bool checked = !(most * m_fastScale + m_fastShift < kExactInts / 2);
+    // rounding); without such values nothing is to check. Where every rule is a fast one,
+    // the biggest number of a step's string is bounded by the step before's (copies keep
+    // theirs), so a pass over the numbers is needed only where that bound is too loose.
+    auto biggest = [&] {
+        double top[4] = {0, 0, 0, 0};
+        const double* p = cur.params.data();
+        const size_t numbers = cur.params.size();
+        size_t k = 0;
+        for (; k + 4 <= numbers; k += 4)
+            for (int u = 0; u < 4; ++u) top[u] = std::max(top[u], std::fabs(p[k + size_t(u)]));
+        for (; k < numbers; ++k) top[0] = std::max(top[0], std::fabs(p[k]));
+        return std::max(std::max(top[0], top[1]), std::max(top[2], top[3]));
+    };
+    bool checked = false;
+    if (!m_fastArgs.empty()) {
+        const double limit = kExactInts / 2;
+        double most = m_bound >= 0 ? m_bound : biggest();
+        if (!(most * m_fastScale + m_fastShift < limit) && m_bound >= 0) most = biggest();
+        checked = !(most * m_fastScale + m_fastShift < limit);
+        m_bound = m_allFast && !checked ? std::max(most, most * m_fastScale + m_fastShift) : -1;
+    }
     constexpr size_t kPiece = 16384;  // modules between two looks at Cancel
     auto run = [&](size_t from, size_t to, NativeCursor& at, bool mainThread) {
         for (size_t j = from; j < to; j += kPiece) {
@@ -561,6 +572,9 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         return false;
     }
     cur.shapes = next.shapes = std::make_shared<const std::vector<NumString::Shape>>(m_shapes);
+    m_bound = -1;  // the axiom's numbers: measured
+    m_allFast = std::none_of(m_shapeSteps.begin(), m_shapeSteps.end(),
+                             [](const ShapeStep& k) { return k.kind == ShapeStep::General; });
     if (everyStep) everyStep->push_back(cur);
     std::unique_lock<std::mutex> lease;
     NativeHelper* helper = nullptr;  // lent at the first big step
