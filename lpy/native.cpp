@@ -9,14 +9,15 @@
 // value that is not finite (a division by zero, which Python would raise) drops the native
 // run: the model runs in Python from the start instead.
 //
-// How a step runs fast (lpy_bench: 17-21x the Python path before, 60-69x, then 92-113x):
+// How a step runs fast (lpy_bench: 17-21x the Python path before, then 60-69x, now 105-140x):
 // - a module is 4 bytes, its shape (class, count of numbers, which are ints), and every
 //   shape the axiom's can lead to is found before the derivation with what a step does with
 //   it: the inner loop reads one entry per module and copies the shapes it makes;
 // - rules whose arguments are all x * a + b of a parameter, or constants (Expr::affine), are
 //   laid out flat and written by loops unrolled for up to 4 modules and 4 numbers;
 // - those values are not checked one by one where no number of the string is big enough for
-//   one of them to reach 2^53 (a pass over the numbers first);
+//   one of them to reach 2^53 (bounded from the step before's where every rule is fast,
+//   else a pass over the numbers first);
 // - room for the new string comes from an upper bound, not a pass that counts it;
 // - steps of 8 k modules or more are shared with a second thread of the process's;
 // - big buffers reuse the mappings of the last derivation (core/base/huge_pages.hpp).
@@ -233,6 +234,8 @@ const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const
     return nullptr;
 }
 
+// Past this many shapes (a model whose rules shuffle many ints and floats) the model runs in
+// Python: finding them all would cost more than it saves.
 constexpr size_t kMaxShapes = 1u << 16;
 
 std::uint32_t Engine::shapeOf(const NumString::Shape& shape) {

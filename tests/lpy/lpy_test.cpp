@@ -248,6 +248,26 @@ TEST(Lpy, NativeIntsPastTwoToThe53AreLeftToPython) {
     EXPECT_EQ(past.derived, "A(10000000000000001)" + std::string(65536, 'I'));
 }
 
+TEST(Lpy, AModelOfTooManyShapesDerivesInPython) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    // The native string's modules are shapes (class, count, which numbers are ints), all found
+    // before the derivation. A swap and a turn of 20 numbers, 10 of them ints, lead to
+    // 184,756 shapes, past the 65,536 a derivation may have: the model runs in Python.
+    const std::string many = "Axiom: A(1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5)\nderivation length: 2\nproduction:\n"
+                             "A(a, b, c, d, e, f, g, h, i, j, k, l, m, n, o, p, q, r, s, t) --> A(b, a, c, d, e, f, g, h, i, j, k, l, m, n, o, p, q, r, s, t) A(b, c, d, e, f, g, h, i, j, k, l, m, n, o, p, q, r, s, t, a)\nendlsystem\n";
+    // A swap of an int and a float: two shapes, native.
+    const std::string two = "Axiom: A(1, 0.5)\nderivation length: 3\nproduction:\nA(a, b) --> A(b, a) A(a, b)\nendlsystem\n";
+    lpy::RunOptions python;
+    python.native = false;
+    for (const std::string* text : {&many, &two}) {
+        lpy::Model m = lpy::runModel(*text, {}), p = lpy::runModel(*text, python);
+        ASSERT_TRUE(m.ok() && p.ok()) << messages(m) << messages(p);
+        EXPECT_EQ(m.ranNative, text == &two);
+        EXPECT_EQ(m.derived, p.derived);
+        EXPECT_EQ(m.derived.substr(0, 9), text == &two ? "A(0.5,1)A" : "A(1,1,1,1");
+    }
+}
+
 TEST(Lpy, TheModelIsDrawnInLpysFrame) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     // L-Py's turtle heads up (+Z, Sprout's +Y), turns 60 degrees by default, and `_(w)` sets a radius.
