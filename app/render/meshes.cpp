@@ -78,18 +78,18 @@ SurfaceMesh blade(int along, int across, Width width, Lift lift) {
 
 }  // namespace
 
-SurfaceMesh makeLeaf() {
+SurfaceMesh makeLeaf(int along, int across) {
     // An ovate leaf, widest below the middle, with a V-fold along the midrib and a tip that
     // curls slightly down.
     return blade(
-        12, 6, [](float t) { return 0.32f * std::pow(std::sin(kPi * std::pow(t, 0.8f)), 0.9f); },
+        along, across, [](float t) { return 0.32f * std::pow(std::sin(kPi * std::pow(t, 0.8f)), 0.9f); },
         [](float t, float u) { return 0.06f * u - 0.08f * t * t; });
 }
 
-SurfaceMesh makePetal() {
+SurfaceMesh makePetal(int along, int across) {
     // A rounded petal, narrow at the base, cupped upwards.
     return blade(
-        10, 6, [](float t) { return 0.42f * std::pow(std::sin(kPi * (0.15f + 0.85f * t)), 0.6f) * std::min(1.0f, t * 4 + 0.2f); },
+        along, across, [](float t) { return 0.42f * std::pow(std::sin(kPi * (0.15f + 0.85f * t)), 0.6f) * std::min(1.0f, t * 4 + 0.2f); },
         [](float t, float u) { return 0.18f * t * t + 0.08f * u * u; });
 }
 

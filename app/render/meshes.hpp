@@ -22,8 +22,8 @@ struct SurfaceMesh {
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> indices;
 };
-SurfaceMesh makeLeaf();
-SurfaceMesh makePetal();
+SurfaceMesh makeLeaf(int along = 12, int across = 6);
+SurfaceMesh makePetal(int along = 10, int across = 6);
 SurfaceMesh makeSphere(int slices, int stacks);
 
 }  // namespace sprout::render

@@ -78,9 +78,11 @@ struct PreparedScene {
     // What a moving frame draws instead of the scene (Renderer::prepareMoving, the window's);
     // the full scene is drawn again when the view stops. A big scene's sketch: lines (as `lines`) for its main branches and an even
     // share of the rest, at most kProxyLines, when the scene has more triangles and lines than
-    // that. A scene of full detail with many triangles (over kProxyTriangles): its bake at
-    // interactive detail, triangles and lines (a software rasteriser pays for long thin
-    // triangles: a 6 k-stem plant moved at 25-35 ms a frame, 10 ms so), or that bake's sketch.
+    // that. A scene with many triangles (over kProxyTriangles): its bake at interactive
+    // detail with leaves, petals and spheres of a few dozen triangles, triangles and lines,
+    // when that halves its triangles (a software rasteriser pays for long thin triangles: a
+    // 6 k-stem plant moved at 25-35 ms a frame, 10 ms so; llvmpipe transforms vertices on one
+    // thread: the L-Py flowering plant's 23 k triangles, 4.3 k so), or that bake's sketch.
     // A curve of ribbons past kCurveSketch segments: a line for each segment, drawn in ink (a
     // ribbon is two triangles from a buffer texture: 16-32 k of them took 10 ms a moving frame
     // on llvmpipe at a quarter of the pixels each way).
@@ -145,8 +147,10 @@ public:
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.
+    // `coarseSurfaces`: leaves, petals and spheres of a few dozen triangles (a moving frame's
+    // bake: prepareMoving).
     static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out,
-                        std::shared_ptr<const Geometry> owner = {});
+                        std::shared_ptr<const Geometry> owner = {}, bool coarseSurfaces = false);
     // What a moving frame draws instead of `scene` (prepared from `geometry`): its sketch or a
     // coarser bake, when drawing it whole would cost more than kProxyLines primitives or
     // kProxyTriangles full-detail triangles; nothing else. Thread-safe, no GL.

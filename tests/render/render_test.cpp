@@ -630,6 +630,25 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
     expectMovingFrameOnThePlant(geometry, scene, 50, 3, "the clustered mesh");
 }
 
+// A leafy plant: its leaves, petals and spheres are most of its triangles (144, 120 and 320
+// each). While the view moves they are drawn from a few dozen triangles each (llvmpipe
+// transforms vertices on one thread), in the same place; still, whole.
+TEST(Render, LeafyPlantMovesWithCoarseLeaves) {
+    auto g = grammarOf("n: 6\nangle: 30\nwidth: 0.08\naxiom: A\nA -> F[+~leaf(1.5)A]/(90)[-~petal(1.2)A]@O(0.3)\n");
+    DeriveResult d = derive(g, 6);
+    ASSERT_TRUE(d.outcome.ok());
+    Geometry geometry;
+    interpret(*d.string, *g, {6, 1, nullptr}, geometry);
+    render::PreparedScene scene;
+    render::Renderer::prepare(geometry, render::Quality::Still, scene);
+    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_GT(geometry.surfaces.size(), 150u);
+    ASSERT_FALSE(scene.proxyBaked.indices.empty());
+    EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "a fourth of the triangles";
+    EXPECT_EQ(scene.proxy.size(), scene.lines.size()) << "its stems as they are";
+    expectMovingFrameOnThePlant(geometry, scene, 50, 2, "the coarse leaves");
+}
+
 TEST(Render, LeavesAreGreen) {
     auto g = grammarOf("angle: 40\nwidth: 0.05\naxiom: F[+~leaf(3)][-~leaf(3)]F[+~leaf(3)][-~leaf(3)]F\n");
     SnapshotOptions o = plain();
