@@ -84,7 +84,9 @@ if [ "${1:-}" = "--presets" ]; then
   total=$(wc -l <"$work/presets.txt")
   within=$(awk '{ split($2, a, "="); if (a[2] + 0 <= 17) n++ } END { print n + 0 }' "$work/presets.txt")
   echo "window_bench: all $total presets: $within moved within 17 ms a frame (sixty a second); the slowest:"
-  awk '{ split($2, a, "="); split($4, r, "="); printf "%8.1f ms moving at worst, full quality %6.0f ms  %s\n", a[2], r[2], $1 }' "$work/presets.txt" |
+  # With the worst frame's number and what it drew (frame-stats' moving_worst_was).
+  awk '{ split($2, a, "="); split($4, r, "="); w = ""; for (i = 2; i <= NF; ++i) if ($i ~ /^moving_worst_was=/) w = substr($i, 18)
+         printf "%8.1f ms moving at worst, full quality %6.0f ms  %s  (%s)\n", a[2], r[2], $1, w }' "$work/presets.txt" |
     sort -rn | head -5 | sed 's/^/  /' || true  # head may close the pipe before sort is done (SIGPIPE)
   [ "$within" = "$total" ] || ok=0
 fi
