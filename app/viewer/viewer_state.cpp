@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 #include <utility>
 
 #include "app/viewer/text_edit.hpp"
@@ -305,12 +306,29 @@ bool ViewerState::reloadIfChangedOnDisk() {
 }
 
 void ViewerState::autosave(bool force) {
+    // The last write's text is on disk once it is done (waited for when forced).
+    if (m_autosaving.valid() && (force || m_autosaving.wait_for(std::chrono::seconds(0)) == std::future_status::ready))
+        if (m_autosaving.get()) m_autosaved = std::move(m_autosavingText);
     auto now = std::chrono::steady_clock::now();
-    if (!force && now - m_lastAutosave < std::chrono::seconds(2)) return;
+    if (!force && (now - m_lastAutosave < std::chrono::seconds(2) || m_autosaving.valid())) return;
     m_lastAutosave = now;
     if (m_text == m_autosaved) return;
-    std::string error;
-    if (saveTextAtomically(m_autosaveDir / "autosave.lsys", m_text, error)) m_autosaved = m_text;
+    const fs::path path = m_autosaveDir / "autosave.lsys";
+    if (force) {
+        std::string error;
+        if (saveTextAtomically(path, m_text, error)) m_autosaved = m_text;
+        return;
+    }
+    m_autosavingText = m_text;
+    try {
+        m_autosaving = std::async(std::launch::async, [path, text = m_autosavingText] {
+            std::string error;
+            return saveTextAtomically(path, text, error);
+        });
+    } catch (const std::system_error&) {  // no thread to be had: written here
+        std::string error;
+        if (saveTextAtomically(path, m_text, error)) m_autosaved = m_text;
+    }
 }
 
 std::optional<std::string> ViewerState::recoverable() const {

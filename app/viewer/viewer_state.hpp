@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -95,7 +96,9 @@ public:
     // Reloads the file when another program changed it (and the text here has no unsaved
     // edits); true when it did.
     bool reloadIfChangedOnDisk();
-    // Autosave of the working text, every few seconds while it has unsaved edits.
+    // Autosave of the working text, every few seconds while it has unsaved edits. Written on
+    // a thread of its own (its fsyncs took 2-3 ms here, far more on a busy or network disk,
+    // in the middle of a drag); `force` writes it before returning (leaving, saving).
     void autosave(bool force = false);
     // Text left by a session that did not end cleanly, if any.
     std::optional<std::string> recoverable() const;
@@ -127,6 +130,8 @@ private:
     std::filesystem::path m_autosaveDir;
     std::chrono::steady_clock::time_point m_lastAutosave{};
     std::string m_autosaved;
+    std::future<bool> m_autosaving;  // a write on its thread, of m_autosaving text
+    std::string m_autosavingText;
     std::string m_recovered;  // the text autosaved by a session that did not end cleanly
     bool m_crashedBefore = false;
     TrustStore m_trustStore;

@@ -271,6 +271,28 @@ TEST(ViewerState, AutosaveIsOfferedBackAfterACrash) {
     EXPECT_FALSE(clean.recoverable());  // a clean exit leaves nothing to recover
 }
 
+// The autosave of a frame is written on a thread of its own (its fsyncs are not the frame's);
+// a forced one waits for it and writes the text of the moment.
+TEST(ViewerState, AutosaveIsWrittenBesideTheFrames) {
+    fs::path dir = tempDir("autosave_thread");
+    ViewerState s(dir);
+    s.openText(kPlant);
+    s.setText("n: 1\naxiom: F\nF -> FF\n");
+    s.autosave();
+    auto onDisk = [&] {
+        std::ifstream in(dir / "autosave.lsys", std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    for (int i = 0; i < 500 && onDisk() != "n: 1\naxiom: F\nF -> FF\n"; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(onDisk(), "n: 1\naxiom: F\nF -> FF\n");
+    s.setText("n: 2\naxiom: F\nF -> FF\n");
+    s.autosave();  // within 2 s of the last: not yet
+    s.setText("n: 3\naxiom: F\nF -> FF\n");
+    s.autosave(true);
+    EXPECT_EQ(onDisk(), "n: 3\naxiom: F\nF -> FF\n");
+}
+
 TEST(ViewerState, AtomicSaveReplacesWholeFiles) {
     fs::path dir = tempDir("atomic");
     std::string error;
