@@ -79,10 +79,10 @@ struct PreparedScene {
     // the full scene is drawn again when the view stops. A big scene's sketch: lines (as `lines`) for its main branches and an even
     // share of the rest, at most kProxyLines, when the scene has more triangles and lines than
     // that. A scene with many triangles (over kProxyTriangles): its bake at interactive
-    // detail with leaves, petals and spheres of a few dozen triangles, triangles and lines,
+    // detail with leaves, petals and spheres of 12 to 48 triangles, triangles and lines,
     // when that halves its triangles (a software rasteriser pays for long thin triangles: a
     // 6 k-stem plant moved at 25-35 ms a frame, 10 ms so; llvmpipe transforms vertices on one
-    // thread: the L-Py flowering plant's 23 k triangles, 4.3 k so), or that bake's sketch.
+    // thread: the L-Py flowering plant's 23 k triangles, 2.6 k so), or that bake's sketch.
     // A curve of ribbons past kCurveSketch segments: a line for each segment, drawn in ink (a
     // ribbon is two triangles from a buffer texture: 16-32 k of them took 10 ms a moving frame
     // on llvmpipe at a quarter of the pixels each way).
@@ -147,7 +147,7 @@ public:
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.
-    // `coarseSurfaces`: leaves, petals and spheres of a few dozen triangles (a moving frame's
+    // `coarseSurfaces`: leaves, petals and spheres of 12 to 48 triangles (a moving frame's
     // bake: prepareMoving).
     static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out,
                         std::shared_ptr<const Geometry> owner = {}, bool coarseSurfaces = false);

@@ -47,8 +47,9 @@ constexpr std::size_t kRasterCurveSegments = 200'000;  // ~170 MB baked; past it
 struct UnitMeshes {
     CylinderMesh stems[3] = {makeCylinder(10, 2), makeCylinder(6, 0), makePrism(3)};
     SurfaceMesh leaf = makeLeaf(), petal = makePetal(), sphere = makeSphere(16, 10), smallSphere = makeSphere(6, 3);
-    // A moving frame's (144, 120 and 320 triangles above; 24, 20 and 60 here).
-    SurfaceMesh coarseLeaf = makeLeaf(6, 2), coarsePetal = makePetal(5, 2), coarseSphere = makeSphere(10, 3);
+    // A moving frame's (144, 120 and 320 triangles above; 12, 12 and 48 here: llvmpipe pays
+    // about a microsecond a triangle).
+    SurfaceMesh coarseLeaf = makeLeaf(3, 2), coarsePetal = makePetal(3, 2), coarseSphere = makeSphere(8, 3);
 };
 const UnitMeshes& unitMeshes() {
     static const UnitMeshes m;

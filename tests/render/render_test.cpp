@@ -631,7 +631,7 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
 }
 
 // A leafy plant: its leaves, petals and spheres are most of its triangles (144, 120 and 320
-// each). While the view moves they are drawn from a few dozen triangles each (llvmpipe
+// each). While the view moves they are drawn from 12 to 48 triangles each (llvmpipe
 // transforms vertices on one thread), in the same place; still, whole.
 TEST(Render, LeafyPlantMovesWithCoarseLeaves) {
     auto g = grammarOf("n: 6\nangle: 30\nwidth: 0.08\naxiom: A\nA -> F[+~leaf(1.5)A]/(90)[-~petal(1.2)A]@O(0.3)\n");
@@ -644,7 +644,7 @@ TEST(Render, LeafyPlantMovesWithCoarseLeaves) {
     render::Renderer::prepareMoving(geometry, scene);
     ASSERT_GT(geometry.surfaces.size(), 150u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
-    EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "a fourth of the triangles";
+    EXPECT_LT(6 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "a sixth of the triangles";
     EXPECT_EQ(scene.proxy.size(), scene.lines.size()) << "its stems as they are";
     expectMovingFrameOnThePlant(geometry, scene, 50, 2, "the coarse leaves");
 }
