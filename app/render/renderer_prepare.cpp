@@ -231,7 +231,7 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         sketch();
     } else if (triangles > PreparedScene::kProxyTriangles || primitives > budget) {
         // The interactive bake with coarse leaves, petals and spheres, if it has far fewer
-        // triangles or fits the budget (else its sketch). Leafy plants move with a fifth of
+        // triangles or fits the budget (else its sketch). Leafy plants move with a tenth of
         // their triangles: the L-Py flowering plant's 23 k had held its moving frames at 12-13
         // ms on llvmpipe at the smallest resolution, 8 of them drawing.
         PreparedScene coarse;
