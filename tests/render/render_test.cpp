@@ -106,6 +106,18 @@ PlantPixels plantPixels(const std::vector<std::uint8_t>& moving, const std::vect
     return p;
 }
 
+// A plant derived n steps and drawn, prepared at `detail` with what its moving frames draw
+// (Renderer::prepareMoving); false when it does not derive.
+bool preparePlant(const std::shared_ptr<const Grammar>& g, int n, render::Quality detail, Geometry& geometry,
+                  render::PreparedScene& scene) {
+    DeriveResult d = derive(g, n);
+    if (!d.outcome.ok()) return false;
+    interpret(*d.string, *g, {n, 1, nullptr}, geometry);
+    render::Renderer::prepare(geometry, detail, scene);
+    render::Renderer::prepareMoving(geometry, scene);
+    return true;
+}
+
 // A scene prepared as the window's worker prepares it (its proxy for moving frames too),
 // drawn headless from the snapshot camera as a moving frame and as the still picture. The
 // moving frame must draw the proxy and the still one the scene; the still plant must cover
@@ -341,13 +353,9 @@ TEST(Render, DraggedBigCurveMovesItsLastPicture) {
 // whole plant as before.
 TEST(Render, BigPlantIsSketchedWhileMoving) {
     auto g = grammarOf(std::string(*presetText("fractal_plant")) + "\nn: 9\n");  // 393 k segments
-    DeriveResult d = derive(g, 9);
-    ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
-    interpret(*d.string, *g, {9, 1, nullptr}, geometry);
     render::PreparedScene scene;
-    render::Renderer::prepare(geometry, render::Quality::Interactive, scene);
-    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_TRUE(preparePlant(g, 9, render::Quality::Interactive, geometry, scene));
     ASSERT_GT(scene.proxy.size(), 0u);
     EXPECT_TRUE(scene.proxyBaked.indices.empty()) << "lines only";
     EXPECT_LE(scene.proxy.size() / 8, render::PreparedScene::kProxyLines + 1000);
@@ -598,13 +606,9 @@ TEST(Render, ManyLinesDrawnQuickAreTheSamePlant) {
 // (far fewer triangles, thin stems as lines), in the same place; still, whole.
 TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
     auto g = grammarOf(std::string(*presetText("fractal_plant")) + "\nn: 6\n");  // 6,048 stems
-    DeriveResult d = derive(g, 6);
-    ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
-    interpret(*d.string, *g, {6, 1, nullptr}, geometry);
     render::PreparedScene scene;
-    render::Renderer::prepare(geometry, render::Quality::Still, scene);
-    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_TRUE(preparePlant(g, 6, render::Quality::Still, geometry, scene));
     ASSERT_GT(scene.baked.indices.size() / 3, render::PreparedScene::kProxyTriangles);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(2 * scene.proxyBaked.indices.size(), scene.baked.indices.size());
@@ -617,13 +621,9 @@ TEST(Render, MidSizePlantMovesAsItsCoarserBake) {
 TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
     auto g = grammarOf(std::string(*presetText("cpfg_abop_2_8_ternary_gc")));
     const int n = g->settings.iterations;
-    DeriveResult d = derive(g, n);
-    ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
-    interpret(*d.string, *g, {n, 1, nullptr}, geometry);
     render::PreparedScene scene;
-    render::Renderer::prepare(geometry, render::Quality::Still, scene);
-    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_TRUE(preparePlant(g, n, render::Quality::Still, geometry, scene));
     ASSERT_GT(geometry.polygons.indices.size() / 3, 100000u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "far fewer triangles";
@@ -635,13 +635,9 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
 // transforms vertices on one thread), in the same place; still, whole.
 TEST(Render, LeafyPlantMovesWithCoarseLeaves) {
     auto g = grammarOf("n: 6\nangle: 30\nwidth: 0.08\naxiom: A\nA -> F[+~leaf(1.5)A]/(90)[-~petal(1.2)A]@O(0.3)\n");
-    DeriveResult d = derive(g, 6);
-    ASSERT_TRUE(d.outcome.ok());
     Geometry geometry;
-    interpret(*d.string, *g, {6, 1, nullptr}, geometry);
     render::PreparedScene scene;
-    render::Renderer::prepare(geometry, render::Quality::Still, scene);
-    render::Renderer::prepareMoving(geometry, scene);
+    ASSERT_TRUE(preparePlant(g, 6, render::Quality::Still, geometry, scene));
     ASSERT_GT(geometry.surfaces.size(), 150u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(6 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "a sixth of the triangles";
