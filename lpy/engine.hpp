@@ -210,8 +210,7 @@ public:
         const Expr* expr;
         std::uint64_t need;  // an int when the module's ints hold all of these bits (bit 32: never)
     };
-    struct FlatOut {
-        int cls;
+    struct FlatOut {  // a module a rule makes: its count of numbers (its shape: ShapeStep)
         std::uint32_t n;
     };
     // A rule whose arguments are all a parameter times a constant plus a constant

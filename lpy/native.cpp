@@ -168,7 +168,7 @@ void Engine::prepareNative() {
         r.firstOut = std::uint32_t(m_flatOuts.size());
         r.firstArg = std::uint32_t(m_flatArgs.size());
         for (const NativeOut& o : r.outs) {
-            m_flatOuts.push_back({o.cls, std::uint32_t(o.args.size())});
+            m_flatOuts.push_back({std::uint32_t(o.args.size())});
             for (const NativeArg& a : o.args) m_flatArgs.push_back({&a.expr, a.used | (std::uint64_t(a.isFloat) << 32)});
         }
     }
