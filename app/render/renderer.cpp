@@ -87,6 +87,7 @@ bool Renderer::Impl::build(std::string& error) {
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
         {&overlayProgram, "polygon.vert", "overlay.frag"}, {&overlayPlainProgram, "polygon.vert", "overlay_plain.frag"},
+        {&stretchProgram, "stretch.vert", "stretch.frag"},
     };
     for (auto& p : programs)
         if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
@@ -526,6 +527,34 @@ void Renderer::warmUp(int width, int height) {
     upload(Geometry());
     setOverlay(Mesh());
     m_lastPictureMs = 1e9;
+}
+
+void Renderer::stretch(unsigned texture, int width, int height, int textureWidth, int textureHeight, unsigned target, int x,
+                       int y, int targetWidth, int targetHeight) {
+    // Texture coordinates, in texels, of a target pixel's centre c: 0.5 + (c - 0.5) * k, k the
+    // ratio of the spans between the outermost centres; at the quad's corners (c = 0, c = size).
+    auto map = [](int from, int to, int size) {
+        const float k = to > 1 ? float(from - 1) / float(to - 1) : 0.0f;
+        const float first = 0.5f - 0.5f * k, last = 0.5f + (float(to) - 0.5f) * k;
+        return glm::vec2(first / float(size), (last - first) / float(size));
+    };
+    const glm::vec2 u = map(width, targetWidth, textureWidth), v = map(height, targetHeight, textureHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(x, y, targetWidth, targetHeight);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(m->stretchProgram);
+    glUniform4f(glGetUniformLocation(m->stretchProgram, "uMap"), u.x, v.x, u.y, v.y);
+    glUniform1i(glGetUniformLocation(m->stretchProgram, "uPicture"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glBindVertexArray(m->emptyVao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glEnable(GL_DEPTH_TEST);
 }
 
 std::vector<std::uint8_t> Renderer::readPixels(int width, int height, unsigned source) const {

@@ -35,7 +35,7 @@ struct Renderer::Impl {
     using Buffers = detail::Buffers;
     GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedDepth = 0, lineProgram = 0, inkLineProgram = 0, curveProgram = 0, backgroundProgram = 0,
            groundProgram = 0, groundPlainProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0,
-           overlayPlainProgram = 0;
+           overlayPlainProgram = 0, stretchProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
     std::size_t overlayIndices = 0;
     Buffers highlight;  // picked stems, drawn over everything (setHighlight)

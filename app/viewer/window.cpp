@@ -77,13 +77,34 @@ constexpr double kFullWhileMovingMs = 10.0;
 // The frame time the moving view's resolution is fitted to (App::movingScale).
 constexpr double kMovingFrameMs = 10.0;
 
-// The view's picture as the window shows it: stretched from the size it was drawn at to
-// w x h, as the blit to the window does (top row first).
-std::vector<std::uint8_t> shownView(const App& app, int w, int h) {
+// Storage for the view's picture, w x h: a texture, as a moving frame's smaller picture is
+// drawn stretched over the view (showView).
+void makeViewPicture(GLuint texture, int w, int h) {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+// The view's picture (drawn at app.drawWidth x app.drawHeight) over w x h at (x, 0) of
+// framebuffer `target`: copied, or stretched when it was drawn smaller.
+void showView(App& app, unsigned target, int x, int w, int h) {
+    if (app.drawWidth == w && app.drawHeight == h) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+        glBlitFramebuffer(0, 0, w, h, x, 0, x + w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    } else {
+        app.renderer.stretch(app.viewColour, app.drawWidth, app.drawHeight, app.viewWidth, app.viewHeight, target, x, 0, w, h);
+    }
+}
+
+// The view's picture as the window shows it (showView), top row first.
+std::vector<std::uint8_t> shownView(App& app, int w, int h) {
     render::ColourTarget shown(w, h);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
-    glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
-                      app.drawWidth == w ? GL_NEAREST : GL_LINEAR);
+    showView(app, shown.fbo, 0, w, h);
     return app.renderer.readPixels(w, h, shown.fbo);
 }
 
@@ -114,9 +135,13 @@ void warmUp(App& app, GLFWwindow* window) {
         glClear(GL_COLOR_BUFFER_BIT);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, view.fbo);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        glBlitFramebuffer(0, 0, vw / 2, vh / 2, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
         glBlitFramebuffer(0, 0, vw, vh, app.panelWidth, 0, app.panelWidth + vw, vh, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        GLuint picture = 0;
+        glGenTextures(1, &picture);
+        makeViewPicture(picture, vw, vh);
+        app.renderer.stretch(picture, vw / 2, vh / 2, vw, vh, 0, app.panelWidth, 0, vw, vh);
         glFinish();
+        glDeleteTextures(1, &picture);
     }
     // And the panel's: its font atlas and its drawing (the first frame took 37 ms).
     ImGui_ImplOpenGL3_NewFrame();
@@ -573,13 +598,12 @@ int runViewer(int argc, char** argv) {
             const bool interactive = app.interacting || app.state.playing() || app.view.turntable;
             if (!app.viewFbo) {
                 glGenFramebuffers(1, &app.viewFbo);
-                glGenRenderbuffers(1, &app.viewColour);
+                glGenTextures(1, &app.viewColour);
             }
             if (vw != app.viewWidth || vh != app.viewHeight) {
-                glBindRenderbuffer(GL_RENDERBUFFER, app.viewColour);
-                glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, vw, vh);
+                makeViewPicture(app.viewColour, vw, vh);
                 glBindFramebuffer(GL_FRAMEBUFFER, app.viewFbo);
-                glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, app.viewColour);
+                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, app.viewColour, 0);
                 app.viewWidth = vw, app.viewHeight = vh;
                 app.needsRedraw = true;
             }
@@ -675,10 +699,7 @@ int runViewer(int argc, char** argv) {
                 app.presentedUi = ui;  // 0 after a frame that was not hashed: the next one is shown
                 app.presentedWidth = fw, app.presentedHeight = fh;
                 // The panel covers the left part; the view goes beside it (stretched when drawn small).
-                glBindFramebuffer(GL_READ_FRAMEBUFFER, app.viewFbo);
-                glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-                glBlitFramebuffer(0, 0, app.drawWidth, app.drawHeight, app.panelWidth, 0, app.panelWidth + vw, vh,
-                                  GL_COLOR_BUFFER_BIT, app.drawWidth == vw ? GL_NEAREST : GL_LINEAR);
+                showView(app, 0, app.panelWidth, vw, vh);
             }
             ++framesWithPlant;
         } else {
