@@ -438,7 +438,27 @@ void Renderer::setHighlight(const Mesh& mesh) {
 
 void Renderer::setOverlay(const Mesh& mesh) {
     Impl& s = *m;
-    s.overlayIndices = uploadMesh(mesh, s.overlay.vao, s.overlay.vbo, s.overlay.ebo);
+    // The opaque triangles, then the translucent ones (overlay_body.glsl's test, alpha >= 0.99:
+    // 253 of 255), each in the order given: every pass draws only its own, as the passes'
+    // discards left them (env_space_colonisation's free points were drawn three times, its
+    // glass crown three times). A triangle of both kinds is in both.
+    Mesh sorted;
+    sorted.positions = mesh.positions, sorted.normals = mesh.normals, sorted.colours = mesh.colours;
+    sorted.indices.reserve(mesh.indices.size());
+    auto opaque = [&](std::uint32_t v) { return v < mesh.colours.size() && (mesh.colours[v] & 0xffu) >= 253; };
+    auto take = [&](bool translucent) {
+        const std::size_t before = sorted.indices.size() / 3;
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const std::uint32_t* v = &mesh.indices[t];
+            const int opaqueCorners = int(opaque(v[0])) + int(opaque(v[1])) + int(opaque(v[2]));
+            if (translucent ? opaqueCorners < 3 : opaqueCorners > 0) sorted.indices.insert(sorted.indices.end(), v, v + 3);
+        }
+        return sorted.indices.size() / 3 - before;
+    };
+    s.overlayOpaque = take(false);
+    s.overlayTranslucent = take(true);
+    s.overlayTriangles = mesh.indices.size() / 3;
+    s.overlayIndices = uploadMesh(sorted, s.overlay.vao, s.overlay.vbo, s.overlay.ebo);
     s.overlayBounds = Bounds();
     for (const glm::vec3& p : mesh.positions) s.overlayBounds.add(p);
 }

@@ -57,6 +57,7 @@ struct RenderStats {
     bool curveMoved = false;            // a big curve's last raster moved while dragged, not made anew
     bool proxy = false;                 // a big scene drawn as its sketch while the view moves
     bool shadowPass = false;            // the shadow map was drawn for this picture
+    std::size_t overlayDrawn = 0;       // the environment's triangles drawn, all its passes together
 };
 
 // A plant baked for drawing (CPU only, no GL): made on any thread, uploaded by the thread

@@ -88,6 +88,7 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     p.stats.proxy = false;
     p.stats.shadowPass = false;
     p.stats.triangles = 0;
+    p.stats.overlayDrawn = 0;
     const float aspect = float(width) / float(std::max(height, 1));
     glm::vec3 size = s.bounds.empty ? glm::vec3(1) : s.bounds.size();
     const float radius = std::max(0.5f * glm::length(size), 1e-4f);
@@ -175,7 +176,7 @@ int Renderer::partOf(const Pass& p) const {
                       tris = (p.sketch && p.phase == Pass::Scene ? m->proxyIndices : m->bakedIndices) / 3;
     if (p.phase == Pass::Shadow) return p.done < tris ? 1 : 2;
     if (p.phase == Pass::Scene) return p.done < curves ? 0 : p.done < curves + tris ? 1 : 2;
-    if (p.phase == Pass::Overlay) return int(std::min<std::size_t>(p.done / std::max<std::size_t>(m->overlayIndices / 3, 1), 2));
+    if (p.phase == Pass::Overlay) return m->overlayPass(p.done);
     return 0;
 }
 
@@ -186,7 +187,7 @@ std::size_t Renderer::partEnd(const Pass& p) const {
     if (p.phase == Pass::Shadow && part == 1) return tris;
     if (p.phase == Pass::Scene && part == 0) return curves;
     if (p.phase == Pass::Scene && part == 1) return curves + tris;
-    if (p.phase == Pass::Overlay) return std::size_t(part + 1) * (m->overlayIndices / 3);
+    if (p.phase == Pass::Overlay) return m->overlayPassEnd(part);
     return SIZE_MAX;
 }
 
@@ -440,14 +441,14 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         // Lit as the plant is: without the shadow map's lookups in a moving frame on a
         // software rasteriser (nine a fragment, each of three passes: `env_space_colonisation`'s
         // glass crown held its moving frames at 12-13 ms at the smallest resolution).
-        const std::size_t tris = s.overlayIndices / 3;
+        const std::size_t units = s.overlayPassEnd(2);
         const GLuint program = p.plantShadows ? s.overlayProgram : s.overlayPlainProgram;
         s.setLighting(program, p.o, p.eye, p.lightViewProj, p.plantShadows, p.texel);
         setUniform(program, "uViewProj", p.viewProj);
         glBindVertexArray(s.overlay.vao);
-        for (std::size_t n = take(3 * tris); n > 0;) {
-            const int pass = int(p.done / tris);
-            const std::size_t first = p.done % tris, count = std::min(n, tris - first);
+        for (std::size_t n = take(units); n > 0;) {
+            const int pass = s.overlayPass(p.done);
+            const std::size_t first = s.overlayTriangle(p.done), count = std::min(n, s.overlayPassEnd(pass) - p.done);
             if (pass >= 1) {
                 glEnable(GL_BLEND);
                 glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -459,10 +460,11 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
             glDepthMask(GL_TRUE);
             glDisable(GL_BLEND);
             p.done += count, n -= count;
+            p.stats.overlayDrawn += count;
         }
         glBindVertexArray(0);
-        if (p.done < 3 * tris) return false;
-        p.stats.triangles += tris;
+        if (p.done < units) return false;
+        p.stats.triangles += s.overlayTriangles;
     }
     if (s.highlightIndices) {
         // What was picked, seen through whatever is in front of it.

@@ -38,6 +38,18 @@ struct Renderer::Impl {
            overlayPlainProgram = 0, stretchProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
     std::size_t overlayIndices = 0;
+    // Its triangles as uploaded: the opaque ones first (the first pass), then the translucent
+    // ones (the glass's two passes); overlayTriangles as given, for the stats.
+    std::size_t overlayOpaque = 0, overlayTranslucent = 0, overlayTriangles = 0;
+    // The overlay pass a unit of the Overlay phase falls in (0 opaque, 1 far and 2 near sides
+    // of the glass), the triangle it draws, and the end of its pass, in units.
+    int overlayPass(std::size_t unit) const {
+        return unit < overlayOpaque ? 0 : int(std::min<std::size_t>(1 + (unit - overlayOpaque) / std::max<std::size_t>(overlayTranslucent, 1), 2));
+    }
+    std::size_t overlayTriangle(std::size_t unit) const {
+        return unit < overlayOpaque ? unit : overlayOpaque + (unit - overlayOpaque) % std::max<std::size_t>(overlayTranslucent, 1);
+    }
+    std::size_t overlayPassEnd(int pass) const { return overlayOpaque + std::size_t(pass) * overlayTranslucent; }
     Buffers highlight;  // picked stems, drawn over everything (setHighlight)
     std::size_t highlightIndices = 0;
     Buffers proxy, proxyMesh;  // what a moving frame draws (PreparedScene::proxy, proxyBaked)

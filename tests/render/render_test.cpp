@@ -852,6 +852,40 @@ TEST(Render, EnvironmentIsDrawnWhenAsked) {
     EXPECT_GT(shade, 200) << "the shade under the leaves is drawn";
 }
 
+// The environment's passes draw their own triangles: the opaque ones once, the glass twice
+// (its far side, then its near side), where each pass had drawn them all; the picture is the
+// same, whole or in pieces (PictureDrawnInPiecesIsThePictureDrawnWhole).
+TEST(Render, EnvironmentPassesDrawOnlyTheirOwnTriangles) {
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    render::Renderer& renderer = headless->renderer;
+    // A glass crown with its free attraction points, opaque.
+    auto g = grammarOf("n: 0\nenvironment: attraction 200 sphere 0 6 0 3 influence 3 kill 0.5\naxiom: F(4)\n");
+    DeriveResult d = derive(g, 0);
+    ASSERT_TRUE(d.outcome.ok());
+    auto geometry = std::make_shared<Geometry>();
+    interpret(*d.string, *g, {0, 1, nullptr}, *geometry);
+    render::PreparedScene scene;
+    render::Renderer::prepareForViewer(*geometry, scene, geometry);
+    renderer.upload(scene);
+    Mesh environment;
+    ASSERT_TRUE(drawEnvironment(g->environment, *geometry, 1, EnvironmentView(), environment));
+    std::size_t opaque = 0, glass = 0;
+    for (std::size_t t = 0; t < environment.indices.size(); t += 3)
+        ++((environment.colours[environment.indices[t]] & 0xffu) == 0xffu ? opaque : glass);
+    ASSERT_GT(opaque, 0u);
+    ASSERT_GT(glass, 0u);
+    renderer.setOverlay(environment);
+    SnapshotOptions o = plain();
+    const render::Camera camera = snapshotCamera(*geometry, o);
+    for (render::Quality q : {render::Quality::Still, render::Quality::Interactive}) {
+        o.render.quality = q;
+        renderer.renderImage(camera, kW, kH, o.render);
+        EXPECT_EQ(renderer.stats().overlayDrawn, opaque + 2 * glass);
+    }
+    renderer.setOverlay(Mesh());
+}
+
 TEST(Render, TwoDimensionalCurvesAreCrispInk) {
     Image img = render(grammarOf(*presetText("koch")), plain());
     int ink = 0;
