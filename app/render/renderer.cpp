@@ -78,7 +78,7 @@ bool Renderer::Impl::build(std::string& error) {
         const char *vs, *fs;
     } programs[] = {
         {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
-        {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"},
+        {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"}, {&bakedVertexLitProgram, "polygon_lit.vert", "colour.frag"},
         {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
         {&inkLineProgram, "line.vert", "curve.frag"},
         {&backgroundProgram, "background.vert", "background.frag"}, {&groundProgram, "ground.vert", "ground.frag"},

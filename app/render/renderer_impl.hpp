@@ -33,7 +33,7 @@ struct Buffers {
 
 struct Renderer::Impl {
     using Buffers = detail::Buffers;
-    GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedDepth = 0, lineProgram = 0, inkLineProgram = 0, curveProgram = 0, backgroundProgram = 0,
+    GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedVertexLitProgram = 0, bakedDepth = 0, lineProgram = 0, inkLineProgram = 0, curveProgram = 0, backgroundProgram = 0,
            groundProgram = 0, groundPlainProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0,
            overlayPlainProgram = 0, stretchProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
@@ -132,8 +132,9 @@ struct Renderer::Impl {
     // without multisampling when `quickLines` and there are many (RenderOptions::quickLines);
     // triangles lit by a program with no shadow lookups unless `shadows`; lines in `ink` when
     // given (a curve's sketch).
-    void drawRange(const glm::mat4& viewProj, bool depthOnly, std::size_t from, std::size_t to, RenderStats& stats,
-                   bool moving = false, bool quickLines = false, bool shadows = true, const glm::vec3* ink = nullptr);
+    // `program` draws the triangles (bakedDepth: a depth pass).
+    void drawRange(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to, RenderStats& stats,
+                   bool moving = false, bool quickLines = false, const glm::vec3* ink = nullptr);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;
@@ -160,6 +161,7 @@ struct Renderer::Pass {
     float texel = 0, groundRadius = 0;
     bool shadows = false, ground = false, curve = false, bigInteractive = false;
     bool plantShadows = false;  // the plant lit with the shadow map's lookups (the ground: shadows)
+    bool vertexLit = false;     // the plant lit at its vertices (a moving frame on a software rasteriser)
     int width = 0, height = 0, x = 0, y = 0;
     unsigned target = 0;
     RenderOptions o;

@@ -1,0 +1,14 @@
+#version 330 core
+#include "common"
+// polygon.vert lit at the vertices, no shadows (lit_plain.frag's light, per vertex):
+// moving frames on a software rasteriser, whose fragments then only pass on a colour.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec4 aColour;
+uniform mat4 uViewProj;
+uniform float uSpecular;
+out vec4 vColour;
+void main() {
+    vColour = vec4(shadeWith(aColour.wzy, aPosition, aNormal, uSpecular, false), 1.0);
+    gl_Position = uViewProj * vec4(aPosition, 1.0);
+}
