@@ -130,9 +130,9 @@ struct Renderer::Impl {
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
     // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`; lines
     // without multisampling when `quickLines` and there are many (RenderOptions::quickLines);
-    // triangles lit by a program with no shadow lookups unless `shadows`; lines in `ink` when
-    // given (a curve's sketch).
-    // `program` draws the triangles (bakedDepth: a depth pass).
+    // triangles drawn by `program` (bakedDepth: a depth pass; bakedPlainProgram: no shadow
+    // lookups; bakedVertexLitProgram: lit at the vertices); lines in `ink` when given (a
+    // curve's sketch).
     void drawRange(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to, RenderStats& stats,
                    bool moving = false, bool quickLines = false, const glm::vec3* ink = nullptr);
     // A big curve's raster made on a thread for a progressive draw, and its time.
