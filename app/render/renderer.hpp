@@ -91,6 +91,11 @@ struct PreparedScene {
     BakedMesh proxyBaked;
     static constexpr std::size_t kProxyLines = 30000;
     static constexpr std::size_t kProxyTriangles = 4000;
+    // The triangles a moving bake aims at (a clustered mesh on coarser grids, leaves of 6
+    // triangles, past it): llvmpipe spends about 0.3 us a triangle on one thread, and 21-23 k
+    // triangles held `lpy_stochastic_shrub` and the ternary GC tree at 10 ms a moving frame at
+    // the smallest resolution.
+    static constexpr std::size_t kMovingTriangles = 12000;
     static constexpr std::size_t kCurveSketch = 4000;
 };
 
@@ -148,10 +153,10 @@ public:
     // Bakes a plant at the given detail; thread-safe, no GL.
     // `owner`, when given, is shared by the scene for a big planar curve; without it the scene
     // borrows `geometry`, which must then outlive it.
-    // `coarseSurfaces`: leaves, petals and spheres of 12 to 48 triangles (a moving frame's
-    // bake: prepareMoving).
+    // `coarseness` (a moving frame's bake: prepareMoving): 1, leaves, petals and spheres of 12,
+    // 12 and 48 triangles; 2, of 6, 6 and 24 (an outline of six points).
     static void prepare(const Geometry& geometry, Quality detail, PreparedScene& out,
-                        std::shared_ptr<const Geometry> owner = {}, bool coarseSurfaces = false);
+                        std::shared_ptr<const Geometry> owner = {}, int coarseness = 0);
     // What a moving frame draws instead of `scene` (prepared from `geometry`): its sketch or a
     // coarser bake, when drawing it whole would cost more than kProxyLines primitives or
     // kProxyTriangles full-detail triangles; nothing else. Thread-safe, no GL.

@@ -47,9 +47,10 @@ constexpr std::size_t kRasterCurveSegments = 200'000;  // ~170 MB baked; past it
 struct UnitMeshes {
     CylinderMesh stems[3] = {makeCylinder(10, 2), makeCylinder(6, 0), makePrism(3)};
     SurfaceMesh leaf = makeLeaf(), petal = makePetal(), sphere = makeSphere(16, 10), smallSphere = makeSphere(6, 3);
-    // A moving frame's (144, 120 and 320 triangles above; 12, 12 and 48 here: llvmpipe pays
-    // about a microsecond a triangle).
-    SurfaceMesh coarseLeaf = makeLeaf(3, 2), coarsePetal = makePetal(3, 2), coarseSphere = makeSphere(8, 3);
+    // A moving frame's, by coarseness (144, 120 and 320 triangles above; 12, 12 and 48, then
+    // 6, 6 and 24 here, the outline of six points: llvmpipe pays for each triangle).
+    SurfaceMesh coarseLeaf[2] = {makeLeaf(3, 2), makeLeaf(3, 1)}, coarsePetal[2] = {makePetal(3, 2), makePetal(3, 1)},
+                coarseSphere[2] = {makeSphere(8, 3), makeSphere(6, 2)};
 };
 const UnitMeshes& unitMeshes() {
     static const UnitMeshes m;
@@ -59,7 +60,7 @@ const UnitMeshes& unitMeshes() {
 }  // namespace
 
 void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, std::shared_ptr<const Geometry> owner,
-                       bool coarseSurfaces) {
+                       int coarseness) {
     const UnitMeshes& meshes = unitMeshes();
     out = PreparedScene();
     out.detail = detail;
@@ -137,10 +138,11 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     }
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
     for (const auto& x : g.surfaces) {
-        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? (coarseSurfaces ? meshes.coarseLeaf : meshes.leaf)
-                                  : x.kind == SurfaceKind::Petal ? (coarseSurfaces ? meshes.coarsePetal : meshes.petal)
+        const int c = std::clamp(coarseness, 0, 2) - 1;  // -1: full
+        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? (c >= 0 ? meshes.coarseLeaf[c] : meshes.leaf)
+                                  : x.kind == SurfaceKind::Petal ? (c >= 0 ? meshes.coarsePetal[c] : meshes.petal)
                                   : x.size < extent / 60         ? meshes.smallSphere
-                                  : coarseSurfaces               ? meshes.coarseSphere
+                                  : c >= 0                       ? meshes.coarseSphere[c]
                                                                  : meshes.sphere;
         bakeSurface(x, mesh, b);
     }
@@ -223,9 +225,14 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     if (g.polygons.indices.size() / 3 > budget / 2 && triangles > budget) {
         // Mostly polygons (generalized cylinders, surfaces): no stems to sketch, so the mesh
         // is clustered on a grid of 1/200 of the scene (about two pixels of a framed view at
-        // half size), with the stems' lines.
+        // half size), or coarser while that leaves more than kMovingTriangles (down to 1/50),
+        // with the stems' lines.
         const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
-        out.proxyBaked = clusterMesh(out.baked, g.bounds, std::max({size.x, size.y, size.z, 1e-6f}) / 200);
+        const float extent = std::max({size.x, size.y, size.z, 1e-6f});
+        for (float cells : {200.0f, 140.0f, 100.0f, 70.0f, 50.0f}) {
+            out.proxyBaked = clusterMesh(out.baked, g.bounds, extent / cells);
+            if (out.proxyBaked.indices.size() / 3 <= PreparedScene::kMovingTriangles) break;
+        }
         out.proxy = out.lines;
     } else if (out.detail == Quality::Interactive && primitives > budget) {
         sketch();
@@ -234,8 +241,12 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         // triangles or fits the budget (else its sketch). Leafy plants move with a tenth of
         // their triangles: the L-Py flowering plant's 23 k had held its moving frames at 12-13
         // ms on llvmpipe at the smallest resolution, 8 of them drawing.
+        // Leaves of 6 triangles where those of 12 leave more than kMovingTriangles
+        // (`lpy_stochastic_shrub`: 15.8 k triangles instead of 22.6 k, moving at 335x285
+        // instead of the smallest resolution, as far from the still picture).
         PreparedScene coarse;
-        prepare(g, Quality::Interactive, coarse, {}, true);
+        prepare(g, Quality::Interactive, coarse, {}, 1);
+        if (coarse.baked.indices.size() / 3 > PreparedScene::kMovingTriangles) prepare(g, Quality::Interactive, coarse, {}, 2);
         const std::size_t coarseTriangles = coarse.baked.indices.size() / 3;
         if (coarseTriangles + coarse.lines.size() / 8 > budget) {
             sketch();

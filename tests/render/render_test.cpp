@@ -627,6 +627,8 @@ TEST(Render, PolygonPlantMovesAsItsClusteredMesh) {
     ASSERT_GT(geometry.polygons.indices.size() / 3, 100000u);
     ASSERT_FALSE(scene.proxyBaked.indices.empty());
     EXPECT_LT(4 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "far fewer triangles";
+    EXPECT_LE(scene.proxyBaked.indices.size() / 3, render::PreparedScene::kMovingTriangles) << "on a coarser grid";
+    EXPECT_GT(scene.proxyBaked.indices.size() / 3, render::PreparedScene::kMovingTriangles / 4) << "not coarser than that";
     expectMovingFrameOnThePlant(geometry, scene, 50, 3, "the clustered mesh");
 }
 
@@ -643,6 +645,13 @@ TEST(Render, LeafyPlantMovesWithCoarseLeaves) {
     EXPECT_LT(6 * scene.proxyBaked.indices.size(), scene.baked.indices.size()) << "a sixth of the triangles";
     EXPECT_EQ(scene.proxy.size(), scene.lines.size()) << "its stems as they are";
     expectMovingFrameOnThePlant(geometry, scene, 50, 2, "the coarse leaves");
+    // Leaves of 12 triangles past PreparedScene::kMovingTriangles: of 6.
+    auto many = grammarOf("n: 9\nangle: 30\nwidth: 0.08\naxiom: A\nA -> F[+~leaf(1.5)A]/(90)[-~leaf(1.2)A]\n");
+    ASSERT_TRUE(preparePlant(many, 9, render::Quality::Still, geometry, scene));
+    ASSERT_GT(geometry.surfaces.size(), render::PreparedScene::kMovingTriangles / 12);
+    ASSERT_FALSE(scene.proxyBaked.indices.empty());
+    EXPECT_EQ(scene.proxyBaked.indices.size() / 3, 6 * geometry.surfaces.size()) << "every leaf, its stems as lines";
+    expectMovingFrameOnThePlant(geometry, scene, 50, 2, "leaves of 6 triangles");
 }
 
 TEST(Render, LeavesAreGreen) {
