@@ -242,8 +242,8 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         // their triangles: the L-Py flowering plant's 23 k had held its moving frames at 12-13
         // ms on llvmpipe at the smallest resolution, 8 of them drawing.
         // Leaves of 6 triangles where those of 12 leave more than kMovingTriangles
-        // (`lpy_stochastic_shrub`: 15.8 k triangles instead of 22.6 k, moving at 335x285
-        // instead of the smallest resolution, as far from the still picture).
+        // (`lpy_stochastic_shrub`: 15.8 k triangles instead of 22.6 k, moving at 303x258 to
+        // 364x310 instead of the smallest resolution, 252x215, as far from the still picture).
         PreparedScene coarse;
         prepare(g, Quality::Interactive, coarse, {}, 1);
         if (coarse.baked.indices.size() / 3 > PreparedScene::kMovingTriangles) prepare(g, Quality::Interactive, coarse, {}, 2);
