@@ -1,11 +1,8 @@
 #version 330 core
 #include "common"
+#include "polygon_inputs"
 // polygon.vert lit at the vertices, no shadows (lit_plain.frag's light, per vertex):
 // moving frames on a software rasteriser, whose fragments then only pass on a colour.
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec4 aColour;
-uniform mat4 uViewProj;
 uniform float uSpecular;
 out vec4 vColour;
 void main() {

@@ -419,9 +419,7 @@ bool Renderer::continueUpload(std::size_t bytes) {
 bool Renderer::rasterCurve() const { return m->rasterCurve != nullptr; }
 
 namespace {
-std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {
-    BakedMesh baked;
-    bakePolygons(mesh, baked);
+std::size_t uploadBaked(const BakedMesh& baked, GLuint vao, GLuint vbo, GLuint ebo) {
     glBindVertexArray(vao);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(baked.vertices.size() * sizeof(BakedVertex)), baked.vertices.data(), GL_STATIC_DRAW);
@@ -429,6 +427,11 @@ std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(baked.indices.size() * 4), baked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     return baked.indices.size();
+}
+std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {
+    BakedMesh baked;
+    bakePolygons(mesh, baked);
+    return uploadBaked(baked, vao, vbo, ebo);
 }
 }  // namespace
 
@@ -442,23 +445,25 @@ void Renderer::setOverlay(const Mesh& mesh) {
     // 253 of 255), each in the order given: every pass draws only its own, as the passes'
     // discards left them (env_space_colonisation's free points were drawn three times, its
     // glass crown three times). A triangle of both kinds is in both.
-    Mesh sorted;
-    sorted.positions = mesh.positions, sorted.normals = mesh.normals, sorted.colours = mesh.colours;
-    sorted.indices.reserve(mesh.indices.size());
-    auto opaque = [&](std::uint32_t v) { return v < mesh.colours.size() && (mesh.colours[v] & 0xffu) >= 253; };
+    BakedMesh baked;
+    bakePolygons(mesh, baked);
+    const std::vector<std::uint32_t> given = std::move(baked.indices);
+    baked.indices.clear();
+    baked.indices.reserve(given.size());
+    auto opaque = [&](std::uint32_t v) { return v < baked.vertices.size() && (baked.vertices[v].colour & 0xffu) >= 253; };
     auto take = [&](bool translucent) {
-        const std::size_t before = sorted.indices.size() / 3;
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            const std::uint32_t* v = &mesh.indices[t];
+        const std::size_t before = baked.indices.size() / 3;
+        for (std::size_t t = 0; t + 2 < given.size(); t += 3) {
+            const std::uint32_t* v = &given[t];
             const int opaqueCorners = int(opaque(v[0])) + int(opaque(v[1])) + int(opaque(v[2]));
-            if (translucent ? opaqueCorners < 3 : opaqueCorners > 0) sorted.indices.insert(sorted.indices.end(), v, v + 3);
+            if (translucent ? opaqueCorners < 3 : opaqueCorners > 0) baked.indices.insert(baked.indices.end(), v, v + 3);
         }
-        return sorted.indices.size() / 3 - before;
+        return baked.indices.size() / 3 - before;
     };
     s.overlayOpaque = take(false);
     s.overlayTranslucent = take(true);
-    s.overlayTriangles = mesh.indices.size() / 3;
-    s.overlayIndices = uploadMesh(sorted, s.overlay.vao, s.overlay.vbo, s.overlay.ebo);
+    s.overlayTriangles = given.size() / 3;
+    s.overlayIndices = uploadBaked(baked, s.overlay.vao, s.overlay.vbo, s.overlay.ebo);
     s.overlayBounds = Bounds();
     for (const glm::vec3& p : mesh.positions) s.overlayBounds.add(p);
 }

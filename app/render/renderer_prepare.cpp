@@ -137,8 +137,8 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         emit();
     }
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
+    const int c = std::clamp(coarseness, 0, 2) - 1;  // the coarse meshes' index; -1: full
     for (const auto& x : g.surfaces) {
-        const int c = std::clamp(coarseness, 0, 2) - 1;  // -1: full
         const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? (c >= 0 ? meshes.coarseLeaf[c] : meshes.leaf)
                                   : x.kind == SurfaceKind::Petal ? (c >= 0 ? meshes.coarsePetal[c] : meshes.petal)
                                   : x.size < extent / 60         ? meshes.smallSphere

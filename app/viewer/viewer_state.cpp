@@ -314,11 +314,11 @@ void ViewerState::autosave(bool force) {
     m_lastAutosave = now;
     if (m_text == m_autosaved) return;
     const fs::path path = m_autosaveDir / "autosave.lsys";
-    if (force) {
+    auto writeHere = [&] {
         std::string error;
         if (saveTextAtomically(path, m_text, error)) m_autosaved = m_text;
-        return;
-    }
+    };
+    if (force) return writeHere();
     m_autosavingText = m_text;
     try {
         m_autosaving = std::async(std::launch::async, [path, text = m_autosavingText] {
@@ -326,8 +326,7 @@ void ViewerState::autosave(bool force) {
             return saveTextAtomically(path, text, error);
         });
     } catch (const std::system_error&) {  // no thread to be had: written here
-        std::string error;
-        if (saveTextAtomically(path, m_text, error)) m_autosaved = m_text;
+        writeHere();
     }
 }
 
