@@ -48,11 +48,15 @@ struct NumString {
         std::int32_t rule = -1;
         std::uint32_t parent = 0;
     };
-    // No zeroing, and huge pages from 2 MB: a step writes its string once, into fresh
-    // memory, and with 4 KB pages the kernel's page faults took more than half of it.
-    PodBuffer<std::uint32_t, (2u << 20)> modules;  // an index of `shapes` per module
-    PodBuffer<double, (2u << 20)> params;
-    PodBuffer<Origin, (2u << 20)> origins;  // one per module when kept, else none
+    // No zeroing, and huge pages from 1 MB: a step writes its string once, into fresh
+    // memory, and with 4 KB pages the kernel's page faults took more than half of it. From
+    // 1 MB (not 2) the buffers come from the mappings kept between derivations, not from
+    // malloc, whose choice between its heap and a fresh mapping for a buffer of 1-2 MB moves
+    // with what the process freed before (lpy_bench's 18 steps ran at 150 or at 300 M
+    // matches/s depending on how big a module the interpreter had compiled first).
+    PodBuffer<std::uint32_t, (1u << 20)> modules;  // an index of `shapes` per module
+    PodBuffer<double, (1u << 20)> params;
+    PodBuffer<Origin, (1u << 20)> origins;  // one per module when kept, else none
     std::shared_ptr<const std::vector<Shape>> shapes;  // the derivation's, shared by its steps
     size_t size() const { return modules.size(); }
     const Shape& shape(size_t k) const { return (*shapes)[modules[k]]; }
@@ -181,11 +185,12 @@ private:
     const RunOptions& m_options;
     std::vector<py::object> m_functions;  // per rule
     std::unordered_map<const PatternArg*, py::object> m_constants, m_predicates;
-    std::unordered_map<int, Index> m_index[3];  // per kind: group -> index
+    static constexpr int kindIndex(RuleKind k) { return int(k); }
+    std::unordered_map<int, Index> m_index[3];  // per kind (kindIndex): group -> index
     bool m_hasKind[3] = {false, false, false};
     bool m_queryRules = false;  // a production's header has a query module
 public:
-    // The native path's rules (lpy/native.cpp): the class and arity they match, the modules
+    // The native path's rules (lpy/native_rules.cpp): the class and arity they match, the modules
     // they make with their arguments compiled (Sprout's expressions on the matched numbers).
     struct NativeArg {
         Expr expr;
@@ -279,6 +284,7 @@ private:
     std::vector<FlatArg> m_flatArgs;
     std::uint32_t m_nativeMaxOuts = 1, m_nativeMaxParams = 0;
     bool m_nativeOk = false;
+    static constexpr int kMaxNativeArity = 32;  // NumString::Shape::ints holds a bit per parameter
     void prepareNative();
     int m_depth[3] = {1, 1, 1};
     LString m_buffer;

@@ -9,9 +9,9 @@
 #include <pybind11/embed.h>
 #include <pybind11/stl.h>
 
-#include "app/embedded_file.hpp"
 #include "lpy/draw.hpp"
 #include "lpy/engine.hpp"
+#include "core/base/embedded_file.hpp"
 #include "core/derive/draw.hpp"
 
 namespace sprout {
@@ -195,6 +195,11 @@ void start() {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
+            // PlantGL's parts (lpy/python/plantgl_*.py), private modules that `all` gathers;
+            // each imports from those before it.
+            for (const char* part : {"vectors", "scene", "curves", "grids", "drawing"})
+                installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
+                              std::string("<sprout>/openalea/plantgl/_") + part + ".py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
             py::module_ sys = py::module_::import("sys");
             for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph", "openalea.plantgl.light",

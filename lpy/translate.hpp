@@ -94,7 +94,7 @@ struct Rule {
     std::vector<std::string> params;  // its parameters, in binding order
     int filter = -1;                  // index into Translation::filters; -1: none
     // A `-->` rule: its successor as written (the native path derives it without Python
-    // when every rule of the model is this simple: lpy/engine.cpp).
+    // when every rule of the model is this simple: lpy/native_rules.cpp).
     bool arrow = false;
     std::vector<WrittenModule> successor;
 };

@@ -1,0 +1,346 @@
+// L-Py's rules applied along a string (lpy/engine.hpp): a module's pattern matched (its
+// parameters bound as Python values, header constants and predicates checked), the contexts
+// left and right of it (skipping branches and the modules a filter ignores), the rules tried in
+// order for each module and the first that applies called, and the passes that do this over a
+// whole string (production, decomposition, interpretation). One file: the per-module loop and
+// everything it calls, so that it stays inlined.
+#include <algorithm>
+
+#include "lpy/engine.hpp"
+
+namespace sprout::lpy {
+
+bool Engine::skipped(int cls, int filter) const {
+    if (filter < 0 || cls == ModuleClasses::kPush || cls == ModuleClasses::kPop) return false;
+    const ContextFilter& f = m_tr.filters[size_t(filter)];
+    const bool listed = std::find(f.classes.begin(), f.classes.end(), cls) != f.classes.end();
+    return f.consider ? !listed : listed;
+}
+
+bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
+    const size_t n = m.args ? size_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
+    if (p.cls == ModuleClasses::kStar) {
+        if (!p.anyName.empty()) bound.push_back(py::str(m_tr.classes.name(m.cls)));
+        if (!p.hasParens || (p.anyName.empty() && p.args.empty())) return true;
+    } else {
+        if (p.cls != m.cls) return false;
+        if (!p.hasParens) return n == 0;
+    }
+    size_t k = 0;
+    for (const PatternArg& a : p.args) {
+        switch (a.kind) {
+            case PatternArg::Kind::Rest: {
+                py::list rest;
+                for (; k < n; ++k) rest.append(py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k)));
+                bound.push_back(rest);
+                continue;
+            }
+            case PatternArg::Kind::Keywords: bound.push_back(py::dict()); continue;
+            default: break;
+        }
+        if (k >= n) return false;
+        py::object v = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k++));
+        switch (a.kind) {
+            case PatternArg::Kind::Skip: break;
+            case PatternArg::Kind::Bind: bound.push_back(std::move(v)); break;
+            case PatternArg::Kind::Equal: {
+                const int eq = PyObject_RichCompareBool(v.ptr(), m_constants[&a].ptr(), Py_EQ);
+                if (eq < 0) throw py::error_already_set();
+                if (!eq) return false;
+                break;
+            }
+            case PatternArg::Kind::Predicate: {
+                py::object ok = m_predicates[&a](v);
+                bound.push_back(std::move(v));
+                if (!ok.cast<bool>()) return false;
+                break;
+            }
+            default: break;
+        }
+    }
+    return k == n;
+}
+
+namespace {
+// The bracket that closes/opens the one at j, by counting (strings not indexed).
+long partner(const LString& s, long j) {
+    const bool open = s[size_t(j)].cls == ModuleClasses::kPush;
+    int depth = 0;
+    for (long k = j; k >= 0 && size_t(k) < s.size(); k += open ? 1 : -1) {
+        const int c = s[size_t(k)].cls;
+        if (c == ModuleClasses::kPush) depth += open ? 1 : -1;
+        else if (c == ModuleClasses::kPop) depth += open ? -1 : 1;
+        if (depth == 0) return k;
+    }
+    return -1;
+}
+}  // namespace
+
+void Engine::matchBrackets(const LString& s) {
+    m_match.assign(s.size(), -1);
+    std::vector<long> stack;
+    for (size_t i = 0; i < s.size(); ++i) {
+        if (s[i].cls == ModuleClasses::kPush) stack.push_back(long(i));
+        else if (s[i].cls == ModuleClasses::kPop && !stack.empty()) {
+            m_match[i] = stack.back();
+            m_match[size_t(stack.back())] = long(i);
+            stack.pop_back();
+        }
+    }
+    m_matchOf = &s;
+}
+
+bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
+                       std::vector<std::uint32_t>* at) {
+    const size_t kept = at ? at->size() : 0;
+    std::vector<std::vector<py::object>> per(ps.size());
+    const bool indexed = m_matchOf == &s && m_match.size() == s.size();
+    for (long k = long(ps.size()) - 1; k >= 0; --k) {
+        for (;;) {
+            if (j < 0) return false;
+            const int c = s[size_t(j)].cls;
+            if (c == ModuleClasses::kPop) {  // a whole branch before this one: skipped
+                const long o = indexed ? m_match[size_t(j)] : partner(s, j);
+                if (o < 0) return false;
+                j = o - 1;
+                continue;
+            }
+            if (c == ModuleClasses::kPush || skipped(c, filter)) {
+                --j;
+                continue;
+            }
+            break;
+        }
+        if (!matchModule(ps[size_t(k)], s[size_t(j)], per[size_t(k)])) return false;
+        if (at) at->push_back(std::uint32_t(j));
+        --j;
+    }
+    for (auto& v : per)
+        for (auto& o : v) bound.push_back(std::move(o));
+    if (at) std::reverse(at->begin() + long(kept), at->end());  // found right to left
+    return true;
+}
+
+long Engine::partnerIn(const View& s, size_t j) {
+    if (!s.reversed && m_matchOf == s.s && m_match.size() == s.size()) return m_match[j];
+    int depth = 0;
+    for (size_t k = j; k < s.size(); ++k) {
+        const int c = s[k].cls;
+        if (c == ModuleClasses::kPush) ++depth;
+        else if (c == ModuleClasses::kPop && --depth == 0) return long(k);
+    }
+    return -1;
+}
+
+size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound,
+                          std::vector<std::uint32_t>* at) {
+    constexpr size_t npos = size_t(-1);
+    for (const PatternModule& p : ps) {
+        if (p.isRepeat()) {
+            // Greedy: as many repetitions as match, each variable a list of its values.
+            std::vector<py::list> lists(size_t(p.repeatVariables));
+            int count = 0;
+            for (; count < p.repeatMax; ++count) {
+                std::vector<py::object> one;
+                const size_t kept = at ? at->size() : 0;
+                const size_t end = matchRight(p.repeat, s, j, filter, one, at);
+                if (end == npos || end == j) {
+                    if (at) at->resize(kept);  // not a repetition
+                    break;
+                }
+                for (size_t k = 0; k < one.size() && k < lists.size(); ++k) lists[k].append(one[k]);
+                j = end;
+            }
+            if (count < p.repeatMin) return npos;
+            for (auto& l : lists) bound.push_back(std::move(l));
+            continue;
+        }
+        if (p.cls == ModuleClasses::kPop && !p.exactPop) {
+            // `]` in the pattern: to the end of the branch the match is in.
+            int depth = 0;
+            for (; j < s.size(); ++j) {
+                if (s[j].cls == ModuleClasses::kPush) ++depth;
+                else if (s[j].cls == ModuleClasses::kPop && depth-- == 0) break;
+            }
+            if (j >= s.size()) return npos;
+            ++j;
+            continue;
+        }
+        for (;;) {
+            if (j >= s.size()) return npos;
+            const int c = s[j].cls;
+            if (c == ModuleClasses::kPush && p.cls != ModuleClasses::kPush) {  // a side branch: skipped
+                const long o = partnerIn(s, j);
+                if (o < 0) return npos;
+                j = size_t(o) + 1;
+                continue;
+            }
+            if (c == ModuleClasses::kPop && p.cls != ModuleClasses::kPop) return npos;
+            if (skipped(c, filter)) {
+                ++j;
+                continue;
+            }
+            break;
+        }
+        if (!matchModule(p, s[j], bound)) return npos;
+        if (at) at->push_back(std::uint32_t(j));
+        ++j;
+    }
+    return j;
+}
+
+bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
+    const size_t len = r.pred.size();
+    if (!forward && at + 1 < len) return false;
+    const size_t start = forward ? at : at + 1 - len;
+    if (start + len > s.size()) return false;
+    std::vector<py::object> left, newLeft, pred, newRight, right;
+    for (size_t k = 0; k < len; ++k)
+        if (!matchModule(r.pred[k], s[start + k], pred)) return false;
+    const bool keep = m_contexts && (!r.left.empty() || !r.right.empty());
+    if (keep) m_left.clear(), m_right.clear();
+    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left, keep ? &m_left : nullptr)) return false;
+    if (!r.right.empty() && matchRight(r.right, View{&s}, start + len, r.filter, right, keep ? &m_right : nullptr) == size_t(-1))
+        return false;
+    if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
+    // `>>`: a backward step reads the new string already made to its right (built from the end).
+    if (!r.newRight.empty() && (forward || matchRight(r.newRight, View{&built, true}, 0, r.filter, newRight) == size_t(-1))) return false;
+    py::tuple args(left.size() + newLeft.size() + pred.size() + newRight.size() + right.size());
+    size_t k = 0;
+    for (auto* part : {&left, &newLeft, &pred, &newRight, &right})
+        for (auto& o : *part) PyTuple_SET_ITEM(args.ptr(), k++, o.release().ptr());
+    m_buffer.clear();
+    m_produced = false;
+    py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
+    if (!ret) throw py::error_already_set();
+    if (!m_produced && m_buffer.empty()) {
+        if (ret.is_none()) return false;  // a body that produced nothing: the next rule is tried
+        append(m_buffer, ret);
+    }
+    result = std::move(m_buffer);
+    m_buffer.clear();
+    // A result that starts with None or '*' inserts nothing: the module is deleted.
+    if (!result.empty() && (result[0].cls == ModuleClasses::kStar || result[0].cls == ModuleClasses::kNone)) result.clear();
+    consumed = len;
+    return true;
+}
+
+bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed) {
+    auto& byGroup = m_index[kindIndex(kind)];
+    const int cls = s[i].cls;
+    const int tag = forward || kind != RuleKind::Production ? 0 : 1 << 30;
+    const int groups[2] = {group, 0};
+    for (int gi = 0; gi < (group == 0 ? 1 : 2); ++gi) {
+        auto it = byGroup.find(groups[gi]);
+        if (it == byGroup.end()) continue;
+        const Index& index = it->second;
+        static const std::vector<int> none;
+        const std::vector<int>& a = size_t(cls) < index.byClass.size() ? index.byClass[size_t(cls)] : none;
+        const std::vector<int>& b = index.any;
+        // Both lists are in declaration order: merged, each rule tried once.
+        size_t ia = 0, ib = 0;
+        while (ia < a.size() || ib < b.size()) {
+            int pick;
+            if (ib >= b.size() || (ia < a.size() && (a[ia] & ~(1 << 30)) < (b[ib] & ~(1 << 30)))) pick = a[ia++];
+            else pick = b[ib++];
+            if ((pick & (1 << 30)) != tag) continue;
+            const Rule& r = m_tr.rules[size_t(pick & ~(1 << 30))];
+            LString result;
+            if (applies(r, s, i, forward, out, consumed, result)) {
+                // A production's modules come from the module it rewrote; a decomposition's or
+                // an interpretation's from where that module came from (the same step's string).
+                const std::uint32_t parent = kind == RuleKind::Production ? std::uint32_t(i) : s[i].parent;
+                for (LModule& m : result) m.rule = pick & ~(1 << 30), m.parent = parent;
+                if (m_contexts && kind == RuleKind::Production && (!r.left.empty() || !r.right.empty()))
+                    m_contexts->add(parent, m_left, m_right);
+                if (forward) out.insert(out.end(), std::make_move_iterator(result.begin()), std::make_move_iterator(result.end()));
+                else out.insert(out.end(), std::make_move_iterator(result.rbegin()), std::make_move_iterator(result.rend()));
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+void Engine::checkCancel() {
+    if (m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) throw Cancelled{};
+}
+
+namespace {
+// `%` at i: the rest of its branch goes, its ']' stays (the index of that ']', or the end).
+size_t afterCut(const LString& in, size_t i) {
+    int depth = 0;
+    size_t j = i + 1;
+    for (; j < in.size(); ++j) {
+        if (in[j].cls == ModuleClasses::kPush) ++depth;
+        else if (in[j].cls == ModuleClasses::kPop && depth-- == 0) break;
+    }
+    return j;
+}
+}  // namespace
+
+void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
+    out.clear();
+    out.reserve(in.size());
+    matchBrackets(in);
+    if (forward) {
+        for (size_t i = 0; i < in.size();) {
+            if ((i & 1023) == 0) checkCancel();
+            if (in[i].cls == ModuleClasses::kCut) {
+                i = afterCut(in, i);
+                continue;
+            }
+            size_t consumed = 1;
+            if (tryRules(kind, in, i, true, out, consumed)) {
+                i += std::max<size_t>(consumed, 1);
+                continue;
+            }
+            out.push_back(in[i]);
+            out.back().rule = -1, out.back().parent = std::uint32_t(i);
+            ++i;
+            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+        }
+    } else {
+        for (size_t i = in.size(); i-- > 0;) {
+            if ((i & 1023) == 0) checkCancel();
+            size_t consumed = 1;
+            if (tryRules(kind, in, i, false, out, consumed)) {
+                i -= std::min(i, std::max<size_t>(consumed, 1) - 1);
+                continue;
+            }
+            out.push_back(in[i]);
+            out.back().rule = -1, out.back().parent = std::uint32_t(i);
+        }
+        std::reverse(out.begin(), out.end());
+    }
+}
+
+LString Engine::decompose(LString in, int depth, RuleKind kind) {
+    if (depth <= 0) return in;
+    LString out;
+    out.reserve(in.size());
+    matchBrackets(in);
+    for (size_t i = 0; i < in.size();) {
+        if ((i & 1023) == 0) checkCancel();
+        if (in[i].cls == ModuleClasses::kCut) {
+            i = afterCut(in, i);
+            continue;
+        }
+        LString piece;
+        size_t consumed = 1;
+        if (tryRules(kind, in, i, true, piece, consumed)) {
+            // The piece is decomposed again on its own (its contexts see only it).
+            if (depth > 1) piece = decompose(std::move(piece), depth - 1, kind);
+            out.insert(out.end(), std::make_move_iterator(piece.begin()), std::make_move_iterator(piece.end()));
+            i += std::max<size_t>(consumed, 1);
+            if (m_matchOf != &in) matchBrackets(in);
+            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+            continue;
+        }
+        out.push_back(in[i]);
+        ++i;
+    }
+    return out;
+}
+
+}  // namespace sprout::lpy

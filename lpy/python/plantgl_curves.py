@@ -1,0 +1,270 @@
+# openalea.plantgl._curves, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
+# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines) evaluated
+# as PlantGL evaluates them, the functions made from them (QuantisedFunction, the arc-length
+# mappings), the Discretizer, and NURBS patches. Its own file: the curve arithmetic.
+import math as _math
+
+from openalea.plantgl._scene import Polyline
+from openalea.plantgl._vectors import Vector2, Vector3, Vector4, cross
+
+
+class _Points(list):
+    def __init__(self, *args):
+        if len(args) == 1 and not isinstance(args[0], (int, float)):
+            list.__init__(self, [tuple(p) for p in args[0]])
+        else:
+            list.__init__(self, args)
+
+
+class Point2Array(_Points):
+    pass
+
+
+class Point3Array(_Points):
+    pass
+
+
+class Point4Array(_Points):
+    pass
+
+
+class Point4Matrix(list):
+    def __init__(self, rows=()):
+        list.__init__(self, [[tuple(p) for p in row] for row in rows])
+
+
+def _uniform_clamped_knots(n, degree):
+    # n control points: degree+1 zeros, the inner knots evenly spaced, degree+1 ones.
+    inner = n - degree - 1
+    return [0.0] * (degree + 1) + [(i + 1) / (inner + 1) for i in range(inner)] + [1.0] * (degree + 1)
+
+
+class NurbsCurve2D:
+    """A 2D NURBS curve; control points are (x, y, weight)."""
+    _dim = 2
+
+    def __init__(self, ctrlPointList, degree=3, knotList=None, stride=30, width=1, **kwargs):
+        if isinstance(degree, (list, tuple)):  # the form (points, knots, degree, ...)
+            knotList, degree = degree, knotList if isinstance(knotList, int) else 3
+        pts = [tuple(p) for p in ctrlPointList]
+        d = self._dim
+        self.ctrlPointList = [[Vector3, Vector4][d - 2](*(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),))) for p in pts]
+        self.degree = max(1, min(int(degree), len(pts) - 1))
+        self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
+        self.stride = int(kwargs.get('stride', stride))
+        self.width = width
+        self.name = ''
+
+    @property
+    def firstKnot(self):
+        return self.knotList[self.degree]
+
+    @property
+    def lastKnot(self):
+        return self.knotList[len(self.ctrlPointList)]
+
+    def getPointAt(self, u):
+        k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
+        n = len(pts) - 1
+        u = max(self.firstKnot, min(self.lastKnot, u))
+        span = p
+        while span < n and u >= k[span + 1]:
+            span += 1
+        d = [[pts[j][c] * pts[j][dim] for c in range(dim)] + [pts[j][dim]] for j in range(span - p, span + 1)]
+        for r in range(1, p + 1):  # de Boor, on homogeneous points
+            for j in range(p, r - 1, -1):
+                i = j + span - p
+                den = k[i + p - r + 1] - k[i]
+                a = (u - k[i]) / den if den else 0.0
+                d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(dim + 1)]
+        w = d[p][dim] or 1.0
+        return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
+
+    def getTangentAt(self, u):
+        a, b = self.firstKnot, self.lastKnot
+        h = (b - a) * 1e-4
+        p0, p1 = self.getPointAt(max(a, u - h)), self.getPointAt(min(b, u + h))
+        return (p1 - p0).normed()
+
+    def getNormalAt(self, u):
+        t = self.getTangentAt(u)
+        return Vector2(-t[1], t[0]) if self._dim == 2 else t
+
+    def getLength(self, begin=None, end=None):
+        pts = self.points(200)
+        return sum(abs(pts[i + 1] - pts[i]) for i in range(len(pts) - 1))
+
+    def _arc_lengths(self):
+        """200 parameters u along the curve and the fraction of its length at each."""
+        a, b = self.firstKnot, self.lastKnot
+        us = [a + (b - a) * i / 199 for i in range(200)]
+        pts = [self.getPointAt(u) for u in us]
+        lengths = [0.0]
+        for i in range(199):
+            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
+        total = lengths[-1] or 1.0
+        return us, [l / total for l in lengths]
+
+    def getArcLengthToUMapping(self):
+        """A function from the fraction of the curve's length to the parameter u."""
+        us, fractions = self._arc_lengths()
+        return QuantisedFunction(Polyline2D(list(zip(fractions, us))), 200)
+
+    def getUToArcLengthMapping(self):
+        us, fractions = self._arc_lengths()
+        return QuantisedFunction(Polyline2D(list(zip(us, fractions))), 200)
+
+    def deepcopy(self):
+        import copy
+        return copy.deepcopy(self)
+
+    def points(self, samples=None):
+        n = samples or max(2, self.stride)
+        a, b = self.firstKnot, self.lastKnot
+        return [self.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n)]
+
+
+    def apply(self, action):
+        """PlantGL's actions on a curve: a Discretizer gets its polyline (the curve's stride)."""
+        return action.process(self)
+
+
+class NurbsCurve(NurbsCurve2D):
+    """A 3D NURBS curve; control points are (x, y, z, weight)."""
+    _dim = 3
+
+
+class BezierCurve2D(NurbsCurve2D):
+    def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
+        n = len(list(ctrlPointList))
+        NurbsCurve2D.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
+
+
+class Polyline2D:
+    def __init__(self, pointList, width=1, **kwargs):
+        self.pointList = [Vector2(p[0], p[1]) for p in pointList]
+        self.width = width
+        self.name = ''
+        self.firstKnot, self.lastKnot, self.stride = 0.0, 1.0, len(self.pointList)
+
+    @staticmethod
+    def Circle(radius=0.5, slices=8):
+        return Polyline2D([(radius * _math.cos(2 * _math.pi * i / slices), radius * _math.sin(2 * _math.pi * i / slices))
+                           for i in range(slices + 1)])
+
+    def getPointAt(self, u):
+        pts = self.pointList
+        if len(pts) == 1:
+            return pts[0]
+        t = max(0.0, min(1.0, u)) * (len(pts) - 1)
+        i = min(int(t), len(pts) - 2)
+        f = t - i
+        return Vector2(pts[i][0] + (pts[i + 1][0] - pts[i][0]) * f, pts[i][1] + (pts[i + 1][1] - pts[i][1]) * f)
+
+    def points(self, samples=None):
+        return list(self.pointList)
+
+    def apply(self, action):
+        return action.process(self)
+
+
+class Discretizer:
+    """PlantGL's Discretizer: `curve.apply(d)` leaves the curve's points in `d.result` (a
+    Polyline2D for a 2D curve, a Polyline for a 3D one), sampled at the curve's stride."""
+
+    def __init__(self):
+        self.result = None
+
+    def process(self, obj):
+        pts = obj.points()
+        if pts and len(tuple(pts[0])) >= 3:
+            self.result = Polyline([Vector3(*tuple(p)[:3]) for p in pts])
+        else:
+            self.result = Polyline2D(pts)
+        return True
+
+    def clear(self):
+        self.result = None
+
+
+class QuantisedFunction:
+    """y = f(x) sampled from a 2D curve over its x range (PlantGL's QuantisedFunction)."""
+
+    def __init__(self, curve, sampling=100, clamped=True):
+        if isinstance(curve, (list, tuple)):
+            curve = Polyline2D(curve)
+        n = max(2, int(sampling))
+        a, b = curve.firstKnot, curve.lastKnot
+        pts = sorted((tuple(curve.getPointAt(a + (b - a) * i / (n - 1))) for i in range(n)))
+        self._x = [p[0] for p in pts]
+        self._y = [p[1] for p in pts]
+        self.clamped = clamped
+
+    @property
+    def firstx(self):
+        return self._x[0]
+
+    @property
+    def lastx(self):
+        return self._x[-1]
+
+    def __call__(self, x):
+        xs, ys = self._x, self._y
+        if x <= xs[0]:
+            return ys[0]
+        if x >= xs[-1]:
+            return ys[-1]
+        lo, hi = 0, len(xs) - 1
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if xs[mid] <= x:
+                lo = mid
+            else:
+                hi = mid
+        dx = xs[hi] - xs[lo]
+        f = (x - xs[lo]) / dx if dx else 0.0
+        return ys[lo] + (ys[hi] - ys[lo]) * f
+
+    getValue = __call__
+
+
+class NurbsPatch:
+    """A NURBS surface; control points (x, y, z, w) in rows along u."""
+
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
+        if isinstance(udegree, (list, tuple)):  # the form (ctrl, uknots, vknots, udegree, vdegree)
+            self.uknotList, self.vknotList = list(udegree), list(vdegree)
+            udegree, vdegree = (list(args) + [3, 3])[:2]
+        else:
+            self.uknotList = kwargs.get('uknotList')
+            self.vknotList = kwargs.get('vknotList')
+        self.ctrlPointMatrix = [[tuple(p) for p in row] for row in ctrlPointMatrix]
+        self.udegree, self.vdegree = int(udegree), int(vdegree)
+        self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
+        self.name = ''
+
+    def getPointAt(self, u, v):
+        rows = [NurbsCurve([p for p in row], self.vdegree, self.vknotList) for row in self.ctrlPointMatrix]
+        column = []
+        for c in rows:
+            q = c.getPointAt(c.firstKnot + (c.lastKnot - c.firstKnot) * v)
+            column.append((q[0], q[1], q[2], 1.0))
+        cu = NurbsCurve(column, self.udegree, self.uknotList)
+        return cu.getPointAt(cu.firstKnot + (cu.lastKnot - cu.firstKnot) * u)
+
+    def getUTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(min(1.0, u + h), v) - self.getPointAt(max(0.0, u - h), v)).normed()
+
+    def getVTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(u, min(1.0, v + h)) - self.getPointAt(u, max(0.0, v - h))).normed()
+
+    def getNormalAt(self, u, v):
+        return cross(self.getUTangentAt(u, v), self.getVTangentAt(u, v)).normed()
+
+    def getIsoUSectionAt(self, u):
+        return NurbsCurve([tuple(self.getPointAt(u, i / 20.0)) + (1.0,) for i in range(21)], 1)
+
+    def getIsoVSectionAt(self, v):
+        return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)

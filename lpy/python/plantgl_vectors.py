@@ -1,0 +1,198 @@
+# openalea.plantgl._vectors, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
+# parts: plantgl.py): PlantGL's vectors, Matrix3 and the functions on vectors. Its own file
+# because every other part builds on it.
+import math as _math
+
+
+class _Vec:
+    """PlantGL's vectors: mutable (v.z *= -1), indexable, with +, -, * (by a number, or a dot
+    product), / and ^ (cross)."""
+    _n = 3
+    __slots__ = ('_v',)
+
+    def __init__(self, *args):
+        if len(args) == 1 and hasattr(args[0], '__len__'):
+            args = tuple(args[0])
+        v = [float(a) for a in args[:self._n]]
+        self._v = v + [0.0] * (self._n - len(v))
+
+    def __len__(self):
+        return self._n
+
+    def __getitem__(self, i):
+        return self._v[i]
+
+    def __setitem__(self, i, value):
+        self._v[i] = float(value)
+
+    def __iter__(self):
+        return iter(self._v)
+
+    def __eq__(self, o):
+        try:
+            return len(o) == self._n and all(a == b for a, b in zip(self._v, o))
+        except TypeError:
+            return False
+
+    def __hash__(self):
+        return hash(tuple(self._v))
+
+    def _get(i):
+        return property(lambda s: s._v[i] if i < s._n else 0.0, lambda s, value: s.__setitem__(i, value))
+
+    x, y, z, w = _get(0), _get(1), _get(2), _get(3)
+
+    def __add__(self, o):
+        return type(self)(*[a + b for a, b in zip(self._v, o)])
+
+    __radd__ = __add__
+
+    def __sub__(self, o):
+        return type(self)(*[a - b for a, b in zip(self._v, o)])
+
+    def __rsub__(self, o):
+        return type(self)(*[b - a for a, b in zip(self._v, o)])
+
+    def __neg__(self):
+        return type(self)(*[-a for a in self._v])
+
+    def __mul__(self, k):
+        if isinstance(k, (int, float)):
+            return type(self)(*[a * k for a in self._v])
+        return sum(a * b for a, b in zip(self._v, k))  # dot product, as PlantGL's Vector * Vector
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, k):
+        return type(self)(*[a / k for a in self._v])
+
+    def __xor__(self, o):  # cross product
+        return cross(self, o)
+
+    def __abs__(self):
+        return _math.sqrt(sum(a * a for a in self._v))
+
+    def norm(self):
+        return abs(self)
+
+    def normSquared(self):
+        return sum(a * a for a in self._v)
+
+    def normed(self):
+        n = abs(self)
+        return self / n if n > 0 else type(self)(*self._v)
+
+    def anOrthogonalVector(self):
+        x, y, z = (list(self._v) + [0.0, 0.0])[:3]
+        v = Vector3(-y, x, 0) if abs(x) > 1e-9 or abs(y) > 1e-9 else Vector3(0, -z, y)
+        return v.normed()
+
+    def normalize(self):
+        n = abs(self)
+        if n > 0:
+            self._v = [a / n for a in self._v]
+        return n
+
+    def __repr__(self):
+        return "%s(%s)" % (type(self).__name__, ", ".join("%g" % a for a in self._v))
+
+    def __reduce__(self):
+        return (type(self), tuple(self._v))
+
+
+class Vector2(_Vec):
+    _n = 2
+
+
+class Vector3(_Vec):
+    _n = 3
+
+    class Cylindrical:
+        def __init__(self, radius, theta, z):
+            self.radius, self.theta, self.z = radius, theta, z
+
+    class Spherical:
+        def __init__(self, radius, theta, phi):
+            self.radius, self.theta, self.phi = radius, theta, phi
+
+    def __init__(self, *args):
+        if len(args) == 1 and isinstance(args[0], Vector3.Cylindrical):
+            c = args[0]
+            args = (c.radius * _math.cos(c.theta), c.radius * _math.sin(c.theta), c.z)
+        elif len(args) == 1 and isinstance(args[0], Vector3.Spherical):
+            s = args[0]
+            args = (s.radius * _math.cos(s.theta) * _math.sin(s.phi), s.radius * _math.sin(s.theta) * _math.sin(s.phi),
+                    s.radius * _math.cos(s.phi))
+        _Vec.__init__(self, *args)
+
+
+class Vector4(_Vec):
+    _n = 4
+
+
+Vector2.OX, Vector2.OY, Vector2.ORIGIN = Vector2(1, 0), Vector2(0, 1), Vector2(0, 0)
+Vector3.OX, Vector3.OY, Vector3.OZ, Vector3.ORIGIN = Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 1), Vector3(0, 0, 0)
+Vector4.OX, Vector4.OY, Vector4.OZ, Vector4.OW = Vector4(1, 0, 0, 0), Vector4(0, 1, 0, 0), Vector4(0, 0, 1, 0), Vector4(0, 0, 0, 1)
+
+
+class Matrix3:
+    """A 3x3 matrix (rows), with PlantGL's rotations."""
+
+    def __init__(self, *rows):
+        if len(rows) == 9:
+            rows = (rows[0:3], rows[3:6], rows[6:9])
+        self.rows = [list(map(float, r)) for r in rows] if rows else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+
+    @staticmethod
+    def axisRotation(axis, angle):
+        x, y, z = Vector3(axis).normed()
+        c, s, t = _math.cos(angle), _math.sin(angle), 1 - _math.cos(angle)
+        return Matrix3([t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+                       [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+                       [t * x * z - s * y, t * y * z + s * x, t * z * z + c])
+
+    @staticmethod
+    def IDENTITY():
+        return Matrix3()
+
+    def __mul__(self, o):
+        if isinstance(o, Matrix3):
+            return Matrix3(*[[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
+        return Vector3(*[sum(self.rows[i][k] * o[k] for k in range(3)) for i in range(3)])
+
+    def transpose(self):
+        return Matrix3(*[[self.rows[j][i] for j in range(3)] for i in range(3)])
+
+    def getColumn(self, j):
+        return Vector3(*[self.rows[i][j] for i in range(3)])
+
+    def getRow(self, i):
+        return Vector3(*self.rows[i])
+
+
+def cross(a, b):
+    if len(a) == 2 and len(b) == 2:  # PlantGL: the z of the 3D cross product
+        return a[0] * b[1] - a[1] * b[0]
+    return Vector3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def norm(v):
+    return _math.sqrt(sum(a * a for a in v))
+
+
+def angle(a, b, axis=None):
+    """The angle from a to b; signed about `axis` when one is given (PlantGL)."""
+    c = dot(a, b) / (norm(a) * norm(b) or 1.0)
+    result = _math.acos(max(-1.0, min(1.0, c)))
+    if axis is not None and dot(cross(a, b), axis) < 0:
+        result = -result
+    return result
+
+
+def direction(v):
+    n = norm(v)
+    return type(v)(*[a / n for a in v]) if n > 0 else v

@@ -1,0 +1,310 @@
+// The rules of an .lpy file: a rule's header (contexts and the predecessor, read into
+// patterns, with their parameters), its body (a Python function) or its `-->` successor, and
+// the `produce` statements that build a successor from Python. Its own file: what L-Py adds
+// to Python inside `production:` and its sibling sections.
+#include <algorithm>
+#include <functional>
+#include <initializer_list>
+
+#include "lpy/translate_impl.hpp"
+
+namespace sprout::lpy::translate_detail {
+
+// Replaces `produce S` / `nproduce S` (and `produce(S)`) in lines[i...] by calls building
+// the successor; a successor in parentheses may run over several lines (they are joined
+// and the lines it took are left blank, so the numbering holds).
+void Translator::translateProduces(std::vector<std::string>& lines, size_t i) {
+    for (const char* word : {"nproduce", "produce"}) {
+        size_t from = 0;
+        for (;;) {
+            std::string& line = lines[i];
+            size_t at = findKeyword(line, word, from);
+            if (at == std::string::npos) break;
+            const bool n = word[0] == 'n';
+            size_t p = at + std::string_view(word).size();
+            while (p < line.size() && (line[p] == ' ' || line[p] == '\t')) ++p;
+            std::string successor;
+            size_t end;
+            int successorCol = int(p) + 1;
+            if (p < line.size() && line[p] == '(') {
+                // Join following lines until the parenthesis closes.
+                std::string joined = line.substr(p);
+                size_t extra = 0, close;
+                while ((close = closeParen(joined, 0)) == std::string::npos && i + extra + 1 < lines.size() && extra < 200) {
+                    ++extra;
+                    joined += ' ' + lines[i + extra];
+                }
+                if (close == std::string::npos) {
+                    error(int(i) + 1, int(p) + 1, std::string("the '(' after ") + word + " is never closed");
+                    break;
+                }
+                successor = joined.substr(1, close - 1);
+                successorCol += 1;
+                std::string rest = joined.substr(close + 1);
+                for (size_t k = 1; k <= extra; ++k) lines[i + k].clear();
+                line = line.substr(0, p) + joined.substr(0, close + 1) + rest;
+                end = p + close + 1;
+            } else {
+                end = commentStart(line);
+                // `if c: produce A` ... `; x = 1` is not written in L-Py files; a ';' is a module.
+                successor = line.substr(p, end - p);
+            }
+            auto mods = readLstring(successor, m_out.classes, int(i) + 1, successorCol, m_out.diagnostics);
+            const std::string call = (n ? "__lpy_nproduce(" : "return __lpy_produce(") + pythonLstring(mods) + ")";
+            line = line.substr(0, at) + call + line.substr(end);
+            from = at + call.size();
+        }
+    }
+}
+
+PatternModule Translator::pattern(const WrittenModule& w, int line) {
+    PatternModule p;
+    p.cls = w.cls;
+    p.hasParens = w.hasParens;
+    if (!w.variable.empty()) {
+        error(line, w.col, "'$" + w.variable + "' binds a whole module: Sprout does not match it yet");
+        return p;
+    }
+    size_t k = 0;
+    if (w.cls == ModuleClasses::kStar && !w.args.empty() && isIdentifier(w.args[0])) {
+        p.anyName = w.args[0];
+        k = 1;
+    }
+    for (; k < w.args.size(); ++k) {
+        std::string_view a = trim(w.args[k]);
+        PatternArg arg;
+        if (a == "-") {
+            arg.kind = PatternArg::Kind::Skip;
+        } else if (a.substr(0, 2) == "**" && isIdentifier(a.substr(2))) {
+            arg.kind = PatternArg::Kind::Keywords;
+            arg.name = a.substr(2);
+        } else if (a.substr(0, 1) == "*" && isIdentifier(a.substr(1))) {
+            arg.kind = PatternArg::Kind::Rest;
+            arg.name = a.substr(1);
+        } else if (isIdentifier(a) && a != "None" && a != "True" && a != "False") {
+            arg.name = a;
+        } else if (isLiteral(a)) {
+            arg.kind = PatternArg::Kind::Equal;
+            arg.expr = a;
+        } else {
+            size_t j = 0;
+            while (j < a.size() && isIdent(a[j])) ++j;
+            if (j > 0 && isIdentStart(a[0])) {
+                arg.kind = PatternArg::Kind::Predicate;
+                arg.name = a.substr(0, j);
+                arg.expr = a;
+            } else {
+                arg.kind = PatternArg::Kind::Equal;
+                arg.expr = a;
+            }
+        }
+        p.args.push_back(std::move(arg));
+    }
+    return p;
+}
+
+std::vector<PatternModule> Translator::patterns(std::string_view text, int line, int col) {
+    std::vector<PatternModule> out;
+    for (const auto& w : readLstring(text, m_out.classes, line, col, m_out.diagnostics)) {
+        const std::string& n = m_out.classes.name(size_t(w.cls) < m_out.classes.size() && w.cls >= 0 ? w.cls : 0);
+        if (w.cls >= 0 && n == "or") {
+            error(line, w.col, "the pattern 'or(...)' (alternatives) is not read by Sprout yet");
+            continue;
+        }
+        if (w.cls >= 0 && n == "x") {
+            PatternModule p;
+            p.cls = w.cls;
+            if (w.args.empty()) {
+                error(line, w.col, "x(...) repeats a pattern: write the pattern inside, e.g. x([I(c)])");
+                continue;
+            }
+            p.repeat = patterns(w.args[0], line, w.col);
+            auto count = [&](const std::string& a, int& v) {
+                if (!isNumberLiteral(a) || a.find('.') != std::string::npos || a.size() > 5) {
+                    error(line, w.col, "the counts of x(...) are whole numbers");
+                    return;
+                }
+                v = std::stoi(a);
+            };
+            if (w.args.size() >= 2) {
+                count(w.args[1], p.repeatMin);
+                p.repeatMax = p.repeatMin;
+            }
+            if (w.args.size() >= 3) count(w.args[2], p.repeatMax);
+            if (p.repeat.empty()) continue;
+            out.push_back(std::move(p));
+            continue;
+        }
+        if (w.cls >= 0 && n == "=]") {
+            PatternModule p;
+            p.cls = ModuleClasses::kPop;
+            p.exactPop = true;
+            out.push_back(p);
+            continue;
+        }
+        out.push_back(pattern(w, line));
+    }
+    return out;
+}
+
+// `lc < nlc << pred >> nrc > rc` at the top level of the header.
+void Translator::parseHeader(Rule& r, std::string_view h, int line) {
+    struct Cut {
+        size_t at, len;
+        int kind;  // 0 '<', 1 '<<', 2 '>>', 3 '>'
+    };
+    std::vector<Cut> cuts;
+    int depth = 0;
+    for (size_t i = 0; i < h.size();) {
+        const char c = h[i];
+        if (c == '\'' || c == '"') {
+            i = skipString(h, i);
+            continue;
+        }
+        if (c == '(') ++depth;
+        else if (c == ')') --depth;
+        else if (depth == 0 && (c == '<' || c == '>')) {
+            const bool twice = i + 1 < h.size() && h[i + 1] == c;
+            cuts.push_back({i, twice ? 2u : 1u, c == '<' ? (twice ? 1 : 0) : (twice ? 2 : 3)});
+            i += twice ? 2 : 1;
+            continue;
+        }
+        ++i;
+    }
+    size_t start = 0;
+    std::vector<std::pair<std::string_view, size_t>> pieces;
+    std::vector<int> kinds;
+    for (const auto& c : cuts) {
+        pieces.push_back({h.substr(start, c.at - start), start});
+        kinds.push_back(c.kind);
+        start = c.at + c.len;
+    }
+    pieces.push_back({h.substr(start), start});
+    // Assign pieces: everything before the last '<'/'<<' is left context(s); after the
+    // first '>'/'>>' is right context(s).
+    size_t predIndex = 0;
+    for (size_t k = 0; k < kinds.size(); ++k)
+        if (kinds[k] <= 1) predIndex = k + 1;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        auto mods = patterns(pieces[k].first, line, int(pieces[k].second) + 1);
+        if (k == predIndex) {
+            r.pred = std::move(mods);
+        } else if (k < predIndex) {
+            (kinds[k] == 1 ? r.newLeft : r.left) = std::move(mods);
+            if (k + 1 < predIndex && kinds[k] == 1) error(line, 1, "'<<' must come just before the predecessor");
+        } else {
+            (kinds[k - 1] == 2 ? r.newRight : r.right) = std::move(mods);
+        }
+    }
+    if (r.pred.empty()) error(line, 1, "this rule has no predecessor before its ':' or '-->'");
+    if (!r.newLeft.empty() && !r.newRight.empty()) error(line, 1, "a rule may not have both '<<' and '>>' (L-Py)");
+    // Parameters in binding order; a name used twice is an error, as in L-Py.
+    auto add = [&](const std::string& n) {
+        if (std::find(r.params.begin(), r.params.end(), n) != r.params.end()) {
+            error(line, 1, "'" + n + "' is bound twice in this rule's header");
+            return;
+        }
+        r.params.push_back(n);
+    };
+    std::function<void(PatternModule&)> bind = [&](PatternModule& pm) {
+        const size_t before = r.params.size();
+        for (auto& inner : pm.repeat) bind(inner);
+        if (pm.isRepeat()) pm.repeatVariables = int(r.params.size() - before);
+        if (!pm.anyName.empty()) add(pm.anyName);
+        for (auto& a : pm.args)
+            if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
+    };
+    for (auto* part2 : {&r.left, &r.newLeft, &r.pred, &r.newRight, &r.right})
+        for (auto& pm : *part2) bind(pm);
+}
+
+// A rule starts at lines[i] (column 0). Returns the index of its last line.
+size_t Translator::rule(std::vector<std::string>& lines, size_t i, Mode mode) {
+    const std::string& line = lines[i];
+    const int lineNo = int(i) + 1;
+    // The header ends at the first ':' or '-->' outside parentheses and strings.
+    size_t end = std::string::npos;
+    bool arrow = false;
+    int depth = 0;
+    for (size_t k = 0; k < line.size();) {
+        const char c = line[k];
+        if (c == '\'' || c == '"') {
+            k = skipString(line, k);
+            continue;
+        }
+        if (c == '(') ++depth;
+        else if (c == ')') --depth;
+        else if (depth == 0 && c == '-' && line.compare(k, 3, "-->") == 0) {
+            end = k;
+            arrow = true;
+            break;
+        } else if (depth == 0 && c == ':') {
+            end = k;
+            break;
+        }
+        ++k;
+    }
+    if (end == std::string::npos) {
+        error(lineNo, 1, "a rule's header ends with ':' (then a Python body) or '-->' (then a successor); neither is on this line");
+        m_outLines[i] = "";
+        return i;
+    }
+    Rule r;
+    r.kind = mode == Mode::Production ? RuleKind::Production : mode == Mode::Decomposition ? RuleKind::Decomposition : RuleKind::Interpretation;
+    r.group = m_group;
+    r.line = lineNo;
+    r.header = std::string(trim(std::string_view(line).substr(0, end)));
+    r.filter = m_filter;
+    parseHeader(r, std::string_view(line).substr(0, end), lineNo);
+    r.function = "__lpy_rule_" + std::to_string(m_out.rules.size());
+    std::string def = "def " + r.function + "(";
+    for (size_t k = 0; k < r.params.size(); ++k) def += (k ? "," : "") + r.params[k];
+    def += "):";
+    // The body: following lines that are indented or blank (up to the next column-0 line).
+    size_t last = i;
+    for (size_t k = i + 1; k < lines.size(); ++k) {
+        std::string_view t = trim(lines[k]);
+        if (t.empty()) continue;
+        if (indentOf(lines[k]) == 0) break;
+        last = k;
+    }
+    if (arrow) {
+        std::string successor = line.substr(end + 3);
+        successor = successor.substr(0, commentStart(successor));
+        auto mods = readLstring(successor, m_out.classes, lineNo, int(end) + 4, m_out.diagnostics);
+        m_outLines[i] = def + " return __lpy_produce(" + pythonLstring(mods) + ")";
+        r.arrow = true;
+        r.successor = mods;
+        if (last > i) warning(lineNo, int(end) + 1, "indented lines after a '-->' rule are ignored");
+        for (size_t k = i + 1; k <= last; ++k) m_outLines[k] = "";
+    } else {
+        std::string inlineBody = std::string(trim(std::string_view(line).substr(end + 1)));
+        // `A : @static` (a body evaluated once in L-Py): run as an ordinary body here.
+        if (inlineBody.rfind("@static", 0) == 0) inlineBody = std::string(trim(std::string_view(inlineBody).substr(7)));
+        const std::string headerLine = lines[i];
+        lines[i] = inlineBody;  // the body's first line is what follows ':' (columns from there)
+        for (size_t k = i; k <= last; ++k)
+            if (!lines[k].empty()) translateProduces(lines, k);
+        std::vector<std::string> body(lines.begin() + std::ptrdiff_t(i), lines.begin() + std::ptrdiff_t(last) + 1);
+        lines[i] = headerLine;
+        bool anyStatement = !trim(body[0]).empty() && trim(body[0])[0] != '#';
+        for (size_t k = 1; k < body.size(); ++k)
+            if (!trim(body[k]).empty() && trim(body[k])[0] != '#') anyStatement = true;
+        if (!trim(body[0]).empty() && body[0][0] != '#') {
+            m_outLines[i] = def + " " + body[0];
+            if (last > i) {
+                // `A : x = 1` followed by an indented block: Python cannot have both on
+                // one def; the inline part goes first on its own line of the block.
+                m_outLines[i] = def + " pass";
+                warning(lineNo, int(end) + 2, "code after ':' on the rule's line and an indented block under it: the code on the line is not run");
+            }
+        } else {
+            m_outLines[i] = def + (anyStatement ? "" : " pass");
+        }
+        for (size_t k = 1; k < body.size(); ++k) m_outLines[i + k] = body[k];
+    }
+    m_out.rules.push_back(std::move(r));
+    return last;
+}
+
+}  // namespace sprout::lpy::translate_detail
