@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/embedded_file.hpp"
+#include "core/base/embedded_file.hpp"
 
 namespace sprout {
 

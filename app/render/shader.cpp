@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "app/embedded_file.hpp"
+#include "core/base/embedded_file.hpp"
 #include "app/render/gl.hpp"
 
 namespace sprout {
