@@ -32,7 +32,7 @@ namespace {
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
-// The window's piece of a still view (app/viewer/window.cpp kRefineMs).
+// The window's piece of a still view (app/viewer/window_view.cpp kRefineMs).
 constexpr double kPieceMs = 8.0;
 
 struct Result {

@@ -1,6 +1,7 @@
 #pragma once
 // Private to app/render: the renderer's GL state (Renderer::Impl) and a picture's plan and
-// progress (Renderer::Pass), shared by renderer.cpp and renderer_draw.cpp.
+// progress (Renderer::Pass), shared by renderer.cpp (set-up), renderer_upload.cpp (the scene
+// on the GPU) and renderer_draw.cpp (pictures).
 #include <cstddef>
 #include <cstdint>
 #include <future>

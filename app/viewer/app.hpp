@@ -1,8 +1,10 @@
 #pragma once
 // The viewer window's state that lives next to the GL context: renderer, camera, view
 // settings, the cached 3D image, status messages. Split by feature: window.cpp (start-up,
-// loop), window_input.cpp (mouse, keys), app_actions.cpp (files, screenshots, exports),
-// panel*.cpp (the ImGui panel), script.cpp (scripted actions).
+// loop), window_view.cpp (the 3D view: uploads, moving and still frames), window_present.cpp
+// (the panel's cache, the copy to the screen), window_input.cpp (mouse, keys),
+// app_actions.cpp (files, screenshots, exports), panel*.cpp (the ImGui panel), script.cpp
+// (scripted actions).
 #include <cstdint>
 #include <deque>
 #include <future>

@@ -1,0 +1,241 @@
+#pragma once
+// The Turtle class: what it holds (its options, the frame, the stack, the output, the tree
+// turtle's blocks) and what its files define. Its small members are here; the per-module
+// step and the stems it draws are defined inline in turtle_step.hpp, where both readers
+// (turtle.cpp, turtle_tree.cpp) inline them: see turtle_impl.hpp for the whole.
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <vector>
+#include <glm/geometric.hpp>
+
+#include "core/language/successor_table.hpp"
+#include "core/turtle/generalized_cylinder.hpp"
+#include "core/turtle/turtle.hpp"
+#include "core/turtle/turtle_buffers.hpp"
+#include "core/turtle/turtle_state.hpp"
+
+namespace sprout::turtle_impl {
+
+class Turtle {
+public:
+    Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out);
+
+    void run(const ModuleString& s);
+
+    // Draws step n of a D0L grammar from its derivation tree instead of its string (which
+    // must be that step: see drawTree). A subtree that occurs more than once is drawn once
+    // in a frame of its own, as a block, and then placed wherever it occurs by transforming
+    // its segments: no dispatch per module, and the string is never read.
+    TurtleStats runTree(const SuccessorTable& tree, const ModuleString& axiom, int n);
+    // Whether runTree can draw this grammar: nothing that depends on the absolute position
+    // or on the module's index (jitter, tropism, growth), and interpretation rules (if any)
+    // that map each symbol to one fixed string.
+    bool treeApplicable() const {
+        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
+               !m_opt.segmentModules && !m_opt.surfaceModules &&
+               m_surfaceFiles.empty() &&
+               simpleInterpretation(m_g);
+    }
+    static bool simpleInterpretation(const Grammar& g) {
+        for (const auto& list : g.interpretation.bySymbol) {
+            if (list.size() > 1) return false;
+            for (auto idx : list) {
+                const Production& p = g.interpretation.productions[idx];
+                if (p.hasContext() || p.stochastic() || p.condition || p.slotCount || !p.successor.args.empty()) return false;
+                for (SymbolId c : p.successor.symbols)
+                    if (c == Alphabet::kCut) return false;
+            }
+        }
+        return true;
+    }
+
+private:
+    template <bool Parametric>
+    void runLoop(const ModuleString& s);
+
+    static constexpr int kOrderColours = 32;
+
+    // ---- Drawing from the derivation tree (D0L) ----
+    //
+    // A block is the drawing of S(s, d) (symbol s after d steps) by a turtle that starts at
+    // the origin in the identity frame with length 1 and width 1. Placing it for a turtle t
+    // maps the identity frame's axes (-L, H, U) to t's, scales positions by t.length and
+    // radii by t.width, and adds t's branch order. This is exact because nothing a block may
+    // contain depends on where the turtle is: only F G f g, turns, pitches, rolls, |, [ ],
+    // ! # @L @W, leaves, petals, spheres, and ; , ' as palette steps from the colour the
+    // turtle brings (no $, polygons or gravity).
+
+    static constexpr std::int32_t kEntrySegment = -2;  // lastSegment: the one before the block
+    static constexpr std::uint32_t kInheritColour = 0xFFFFFFFF;  // in a block: the turtle's colour
+    static constexpr std::uint64_t kMinBlockModules = 16;      // smaller: walking is as fast
+    static constexpr std::uint64_t kMaxBlockModules = 1 << 16;  // larger: occurs too rarely to pay
+    static constexpr std::size_t kMaxBlockSegments = 1 << 21;   // all blocks: 80 MB at most
+
+    struct Block {
+        std::uint32_t first, count;        // segments in m_blockSegs, in the identity frame
+        std::uint32_t firstPoint, points;  // places moved to (f g), for the bounds
+        v4 pos, H, L;                      // the turtle after the block, in the identity frame
+        float length, width;               // factors on the turtle's length and width
+        std::uint32_t firstSurface, surfaces;  // in m_blockSurfs, in the identity frame
+        std::int32_t lastSegment;          // index in the block, kEntrySegment or -1
+        std::int8_t colour;                // palette steps at the end, -1: none taken
+        bool brackets;
+        bool colours;                      // some segment takes palette steps
+    };
+    enum class BlockState : std::uint8_t { No, Unbuilt, Built };
+
+
+    static bool blockAction(Act a) {
+        switch (a) {
+            case Act::None: case Act::Draw: case Act::DrawNoVertex: case Act::Move: case Act::MoveNoVertex:
+            case Act::Left: case Act::Right: case Act::Down: case Act::Up: case Act::RollLeft:
+            case Act::RollRight: case Act::Around: case Act::Push: case Act::Pop: case Act::WidthDec:
+            case Act::WidthInc: case Act::ScaleLength: case Act::ScaleWidth: case Act::ColourNext:
+            case Act::ColourPrev: case Act::Leaf: case Act::Petal: case Act::Sphere:
+                return true;
+            default:
+                return false;
+        }
+    }
+
+    // Which (s, d) become blocks: those that occur at least twice in the tree, are of a
+    // useful size, contain only block actions and close every bracket they open.
+    // Returns how many there are.
+    size_t planBlocks(const ModuleString& axiom, int n);
+
+    // What a symbol of the derived string draws: its own action, or the actions of its
+    // interpretation rule's successor (cpfg's homomorphism, applied once at the leaves).
+    void setLeaves();
+
+    [[gnu::noinline]] void walkLeaves(SymbolId s, State& t);
+    void walk(SymbolId s, int d, State& t);
+
+    void build(SymbolId s, int d);
+
+    // Draws block b for turtle t and moves t to where the block leaves it.
+    void place(const Block& b, State& t);
+
+    // ---- The per-module step and what it inlines: defined inline in turtle_step.hpp ----
+
+    // cos and sin of an angle in degrees, exact for a quarter turn.
+    static inline void cosSinDegrees(double degrees, float& c, float& s);
+    // Frame axes a and b turned by the module's angle (p), else the grammar's.
+    [[gnu::always_inline]] inline void turn(const State& t, v4& a, v4& b, const double* p, float sign);
+    // What module i (action act, parameters p) does to turtle t: the switch both readers inline.
+    [[gnu::always_inline]] inline void apply(State& t, Act act, const double* p, size_t i, int arity = 1);
+    // Stems: to a point (LineTo and its kin), from a to b, one segment ahead, a run of them.
+    inline void lineTo(State& t, Act act, const double* p, int arity, size_t i);
+    inline void stem(const State& t, v4 a, v4 b, size_t i);
+    [[gnu::always_inline]] inline void segment(State& t, float len, size_t i);
+    inline void segmentRun(State& t, size_t count, size_t first);
+    // The heading bent: by tropism (ABOP 2.2), towards a vector, by a share of the angle to it
+    // (L-Py's elasticity), or turned onto it.
+    inline void bend(State& t);
+    inline void bendTowards(State& t, const glm::vec3& towards, float e);
+    inline void bendByFraction(State& t, glm::vec3 towards, float e);
+    inline void tendTo(State& t, glm::vec3 to);
+    static inline glm::vec3 rodrigues(const glm::vec3& v, const glm::vec3& k, float a);
+
+    // ---- What the step calls: small helpers here, the rest in turtle_geometry.cpp ----
+
+    // The length factor of module i while its creation step is growing.
+    float growth(size_t i) const {
+        return m_opt.ages && m_opt.growStep >= 0 && m_opt.ages[i] == m_opt.growStep ? m_opt.growFraction : 1.0f;
+    }
+    // Seeded normal jitter truncated at 3 sigma.
+    float jitter(float sigma) {
+        for (;;) {
+            float v = float(m_rng.normal(0.0, 1.0));
+            if (std::fabs(v) <= 3.0f) return v * sigma;
+        }
+    }
+    void addBound(v4 p) {
+        m_min = __builtin_ia32_minps(m_min, p);
+        m_max = __builtin_ia32_maxps(m_max, p);
+    }
+
+    // Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
+    // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
+    // tangents' length in chords. Every F in between is a control point too.
+    [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p);
+    void curvePoint(const State& t, int subdivisions);
+    void placeSurfaceFile(const State& t, SymbolId id, const double* p);
+
+    // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
+    [[gnu::noinline]] void cpfgCommand(State& t, Act act, const double* p, int arity);
+
+    // The colour of a stem: the palette entry set by ; , ', else the branch order's gradient
+    // colour (or the bark colour).
+    std::uint32_t stemColour(const State& t) const {
+        // Inside a block being built, colours stay palette steps until the block is placed.
+        if (m_level) return t.colour >= 0 ? std::uint32_t(t.colour) : kInheritColour;
+        return t.colour >= 0 ? m_palette[size_t(t.colour)]
+                             : m_gradient ? m_byOrder[std::min<int>(t.order, kOrderColours - 1)] : m_palette[0];
+    }
+    // A surface's colour: the palette entry set by ; , ', else its kind's own.
+    std::uint32_t surfaceColour(const State& t, SurfaceKind kind) const {
+        return colour(t.colour >= 0 ? t.colour
+                      : kind == SurfaceKind::Sphere ? kSphereColour
+                      : kind == SurfaceKind::Leaf   ? kLeafColour
+                                                    : kPetalColour);
+    }
+    std::uint32_t colour(int index) const {
+        int n = int(m_palette.size());
+        return m_palette[size_t(((index % n) + n) % n)];
+    }
+
+
+    void vertex(const State& t);
+
+    void emitPolygon(const State& t, std::vector<glm::vec3>& pts);
+
+    void surface(const State& t, Act act, const double* p, float grow);
+
+    void finish();
+
+    const Grammar& m_g;
+    const TurtleOptions& m_opt;
+    Geometry& m_out;
+    SegmentWriter m_segments;
+    SegmentWriter* m_seg = &m_segments;  // where segments go: the output, or a block being built
+    Rng m_rng;
+    std::vector<Act> m_actions;
+    std::vector<std::uint8_t> m_arity;
+    PodBuffer<State> m_stack;
+    std::vector<std::vector<glm::vec3>> m_polygons;
+    std::vector<std::uint32_t> m_palette;
+    std::uint32_t m_byOrder[kOrderColours];
+    State m_state;
+    v4 m_min, m_max;
+    float m_angle, m_cos, m_sin, m_angleSigma, m_stepSigma;
+    glm::vec3 m_tropism;
+    float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
+    bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
+    bool m_hasCurves = false;
+    std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
+    struct OpenCurve {
+        GeneralizedCylinder curve;
+        int subdivisions = 4;  // pieces of each span, until an @Gc(n) says otherwise
+    };
+    std::vector<OpenCurve> m_curves;
+    bool m_absoluteWidths = false;
+    // Drawing from the derivation tree
+    const SuccessorTable* m_tree = nullptr;
+    size_t m_alpha = 0;
+    std::vector<std::uint32_t> m_leafStart;  // per symbol, into m_leafActs
+    std::vector<Act> m_leafActs;
+    std::vector<BlockState> m_blockState;  // [d * alphabet + s]
+    std::vector<std::uint32_t> m_blockIndex;
+    std::vector<Block> m_blocks;
+    TreeWorkspace& m_work = treeWorkspace();
+    PodBuffer<CylinderInstance>& m_blockSegs = m_work.blockSegments;
+    PodBuffer<SurfaceInstance>& m_blockSurfs = m_work.blockSurfaces;
+    std::vector<v4>& m_blockPoints = m_work.blockPoints;
+    std::deque<TreeScratch>& m_scratch = m_work.scratch;
+    int m_level = 0;                 // blocks being built
+    size_t m_surfaceModule = 0;      // the module drawing the surface being made (picking)
+    bool m_abort = false;            // the block being built cannot be one
+};
+
+}  // namespace sprout::turtle_impl
