@@ -26,6 +26,8 @@ if [ "$mode" = test ] && ! command -v npm >/dev/null; then packages+=(nodejs npm
 if [ "$mode" = test ]; then packages+=(ffmpeg); fi
 # The install and package tests read what they check with the tools that use it.
 if [ "$mode" = test ]; then packages+=(lintian desktop-file-utils shared-mime-info man-db dpkg-dev file); fi
+# The documentation site, built and checked by the tests (mkdocs build --strict).
+if [ "$mode" = test ]; then packages+=(mkdocs mkdocs-material mkdocstrings mkdocstrings-python-handlers); fi
 # `import sprout`: its pytest suite, the notebook's slider, and the Dask sweep example.
 if [ "$mode" = test ]; then packages+=(python3-pytest python3-ipywidgets python3-dask python3-distributed python3-pandas); fi
 missing=()
