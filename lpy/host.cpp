@@ -11,6 +11,7 @@
 
 #include "lpy/draw.hpp"
 #include "lpy/engine.hpp"
+#include "lpy/python2.hpp"
 #include "core/base/embedded_file.hpp"
 #include "core/derive/draw.hpp"
 
@@ -234,6 +235,13 @@ void fitColumn(Diagnostic& d, std::string_view text) {
     d.col = int(std::min(at, line.size())) + 1;
 }
 
+// A line of Python 2 is said to be one (lpy/python2.hpp), not left as a bare SyntaxError.
+Diagnostic python2(Diagnostic d, std::string_view text) {
+    if (d.line > 0)
+        if (auto said = python2Message(d.message, lineOf(text, d.line))) d.message = *said;
+    return d;
+}
+
 // Where a Python error happened in the model file, and what it says.
 Diagnostic describe(py::error_already_set& e, const std::string& file, std::string_view text) {
     Diagnostic d;
@@ -244,7 +252,7 @@ Diagnostic describe(py::error_already_set& e, const std::string& file, std::stri
         if (py::hasattr(v, "offset") && !v.attr("offset").is_none()) d.col = v.attr("offset").cast<int>();
         if (py::hasattr(v, "msg")) d.message = "SyntaxError: " + std::string(py::str(v.attr("msg")));
         fitColumn(d, text);
-        return d;
+        return python2(d, text);
     }
     if (!e.trace()) return d;
     py::object frames = py::module_::import("traceback").attr("extract_tb")(e.trace());
@@ -254,7 +262,7 @@ Diagnostic describe(py::error_already_set& e, const std::string& file, std::stri
         if (py::hasattr(f, "colno") && !f.attr("colno").is_none()) d.col = f.attr("colno").cast<int>() + 1;
     }
     fitColumn(d, text);
-    return d;
+    return python2(d, text);
 }
 
 // Interrupts Python on the running thread when `cancel` is set (an endless loop in a rule).
