@@ -124,8 +124,27 @@ static void defineSproutLpy(py::module_& m) {
         })
         .def("__repr__", [](PyModule& self) { return engine().text({self.get()}); });
 
+    // `s += 'B'`, `s + other`: text is read as an lstring, anything else as produce takes it.
+    auto extend = [](LString& s, py::handle v) {
+        if (py::isinstance<py::str>(v)) {
+            LString more = engine().parse(v.cast<std::string>());
+            s.insert(s.end(), more.begin(), more.end());
+        } else {
+            engine().append(s, v);
+        }
+    };
     py::class_<PyLstring>(m, "Lstring")
         .def(py::init([](const std::string& text) { return PyLstring{std::make_shared<LString>(engine().parse(text))}; }))
+        .def(py::init([](const PyLstring& o) { return PyLstring{std::make_shared<LString>(*o.s)}; }))  // a copy
+        .def("__iadd__", [extend](PyLstring& s, py::object v) {
+            extend(*s.s, v);
+            return s;
+        })
+        .def("__add__", [extend](const PyLstring& s, py::object v) {
+            PyLstring out{std::make_shared<LString>(*s.s)};
+            extend(*out.s, v);
+            return out;
+        })
         .def("__len__", [](const PyLstring& s) { return s.s->size(); })
         .def("__getitem__", [](const PyLstring& s, py::ssize_t i) {
             const py::ssize_t n = py::ssize_t(s.s->size());
@@ -195,6 +214,10 @@ void start() {
         {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
+            // L-Py's experimental string controls (lpy/python/lpy_future.py), imported on demand.
+            py::module_::import("openalea.lpy")
+                .attr("_embed")("openalea.lpy.__lpyfuture__", std::string(embedded("lpy_future")),
+                                "<sprout>/openalea/lpy/__lpyfuture__.py");
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/python/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.

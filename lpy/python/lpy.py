@@ -9,8 +9,44 @@ from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, 
 _state = {}
 
 
+class _Embedded:
+    """Modules compiled into Sprout that a model imports on demand (openalea.lpy.__lpyfuture__):
+    a finder on sys.meta_path, and their loader, so that `import` and `importlib.reload` treat
+    them as files."""
+
+    sources = {}  # name: (source, file)
+
+    @classmethod
+    def find_spec(cls, name, path=None, target=None):
+        if name not in cls.sources:
+            return None
+        import importlib.util
+        return importlib.util.spec_from_loader(name, cls, origin=cls.sources[name][1])
+
+    @staticmethod
+    def create_module(spec):
+        return None
+
+    @classmethod
+    def exec_module(cls, module):
+        source, file = cls.sources[module.__name__]
+        module.__file__ = file
+        exec(compile(source, file, 'exec'), module.__dict__)
+
+
+def _embed(name, source, file):
+    """Makes `name` importable from `source` (lpy/host.cpp, at start)."""
+    _Embedded.sources[name] = (source, file)
+    if _Embedded not in _sys.meta_path:
+        _sys.meta_path.append(_Embedded)
+
+
 def _begin(ns, file):
     """A new run: the model's namespace and file, nothing remembered from an earlier run."""
+    # On-demand modules keep state of their own (__lpyfuture__'s kept strings): imported afresh.
+    for name in _Embedded.sources:
+        _sys.modules.pop(name, None)
+        globals().pop(name.rpartition('.')[2], None)
     _state.clear()
     _state.update(ns=ns, file=file, materials={}, angle=None, warnings=[], options={}, timestep=None)
 

@@ -28,6 +28,17 @@ class Point4Array(_Points):
     pass
 
 
+class RealArray(list):
+    """PlantGL's array of reals (a curve's knots): RealArray([0, 0, 1, 1]), or RealArray(n) of n
+    zeros."""
+
+    def __init__(self, values=()):
+        if isinstance(values, int):
+            list.__init__(self, [0.0] * values)
+        else:
+            list.__init__(self, [float(v) for v in values])
+
+
 class Point4Matrix(list):
     def __init__(self, rows=()):
         list.__init__(self, [[tuple(p) for p in row] for row in rows])
