@@ -146,7 +146,19 @@ public:
                        bool origins);
     // The same string as Python holds it (integral numbers as ints where Python has ints).
     static LString toL(const NumString& s);
+    // `InLeftContext(pattern, d)` / `InRightContext` in a rule's body (translation's
+    // contextPatterns[index]): matched from where the rule's own context ended, or from the
+    // previous such test's end, which then moves past it (so a loop counts a run of modules);
+    // the pattern's variables are written into d. Outside a rule's body: an error.
+    bool inContext(size_t index, bool left, py::handle dict);
 private:
+    // Where a running body's context tests start (set by applies() around the call).
+    struct BodyContext {
+        const LString* s = nullptr;
+        long left = -1;      // the next module to the left to read
+        size_t right = 0;    // the next module to the right to read
+        int filter = -1;
+    } m_body;
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'
@@ -156,8 +168,9 @@ private:
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
     // `at`: where the modules matched are added (their indices in s), when kept.
+    // `stop`: set to the position left of the match, when given.
     bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound,
-                   std::vector<std::uint32_t>* at = nullptr);
+                   std::vector<std::uint32_t>* at = nullptr, long* stop = nullptr);
     // A string read left to right, or (the new string of a backward step, built from its
     // end) right to left.
     struct View {

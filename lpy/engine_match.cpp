@@ -91,7 +91,7 @@ void Engine::matchBrackets(const LString& s) {
 }
 
 bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
-                       std::vector<std::uint32_t>* at) {
+                       std::vector<std::uint32_t>* at, long* stop) {
     const size_t kept = at ? at->size() : 0;
     std::vector<std::vector<py::object>> per(ps.size());
     const bool indexed = m_matchOf == &s && m_match.size() == s.size();
@@ -118,6 +118,26 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
     for (auto& v : per)
         for (auto& o : v) bound.push_back(std::move(o));
     if (at) std::reverse(at->begin() + long(kept), at->end());  // found right to left
+    if (stop) *stop = j;
+    return true;
+}
+
+bool Engine::inContext(size_t index, bool left, py::handle dict) {
+    if (!m_body.s) throw py::value_error(std::string(left ? "InLeftContext" : "InRightContext") + " is called outside a rule's body");
+    if (index >= m_tr.contextPatterns.size()) throw py::index_error("no such context pattern");
+    const ContextPattern& p = m_tr.contextPatterns[index];
+    std::vector<py::object> bound;
+    if (left) {
+        long stop = m_body.left;
+        if (!p.modules.empty() && !matchLeft(p.modules, *m_body.s, m_body.left, m_body.filter, bound, nullptr, &stop)) return false;
+        m_body.left = stop;
+    } else {
+        const size_t end = p.modules.empty() ? m_body.right : matchRight(p.modules, View{m_body.s}, m_body.right, m_body.filter, bound);
+        if (end == size_t(-1)) return false;
+        m_body.right = end;
+    }
+    if (!dict.is_none())
+        for (size_t k = 0; k < bound.size() && k < p.names.size(); ++k) dict[py::str(p.names[k])] = bound[k];
     return true;
 }
 
@@ -199,8 +219,11 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
         if (!matchModule(r.pred[k], s[start + k], pred)) return false;
     const bool keep = m_contexts && (!r.left.empty() || !r.right.empty());
     if (keep) m_left.clear(), m_right.clear();
-    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left, keep ? &m_left : nullptr)) return false;
-    if (!r.right.empty() && matchRight(r.right, View{&s}, start + len, r.filter, right, keep ? &m_right : nullptr) == size_t(-1))
+    long leftEnd = long(start) - 1;
+    if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left, keep ? &m_left : nullptr, &leftEnd)) return false;
+    size_t rightEnd = start + len;
+    if (!r.right.empty() &&
+        (rightEnd = matchRight(r.right, View{&s}, start + len, r.filter, right, keep ? &m_right : nullptr)) == size_t(-1))
         return false;
     if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
     // `>>`: a backward step reads the new string already made to its right (built from the end).
@@ -211,6 +234,13 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
         for (auto& o : *part) PyTuple_SET_ITEM(args.ptr(), k++, o.release().ptr());
     m_buffer.clear();
     m_produced = false;
+    // The body's own context tests (InLeftContext ...) start where the header's ended.
+    struct Restore {
+        BodyContext& now;
+        BodyContext was;
+        ~Restore() { now = was; }
+    } restore{m_body, m_body};
+    m_body = BodyContext{&s, leftEnd, rightEnd, r.filter};
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
     if (!ret) throw py::error_already_set();
     if (!m_produced && m_buffer.empty()) {

@@ -84,6 +84,8 @@ static void defineSproutLpy(py::module_& m) {
     m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
     m.def("getGroup", [] { return engine().group; });
     m.def("getIterationNb", [] { return engine().iteration; });
+    // InLeftContext / InRightContext in a rule's body (lpy/translate_contexts.cpp).
+    m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
 
     py::class_<PyModuleClass>(m, "ModuleClass")
         .def_property_readonly("name", [](const PyModuleClass& c) { return engine().translation().classes.name(c.cls); })
@@ -451,7 +453,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
         native = py::module_::import("_sprout_lpy");
         lpyModule.attr("_begin")(ns, file);
         py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
-        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class"}) ns[name] = native.attr(name);
+        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class", "__lpy_in_context"}) ns[name] = native.attr(name);
         if (!options.path.empty()) {
             // Imports beside the file (a model's own grid.py), as `python3 FILE` finds them.
             py::module_ sys = py::module_::import("sys");

@@ -105,12 +105,21 @@ struct ContextFilter {
     std::vector<int> classes;
 };
 
+// A pattern written in a rule's body, `InLeftContext(A(x), d)` / `InRightContext(...)`, tested
+// while the body runs (L-Py's LstringMatcher::inLeftContext): its modules and the names its
+// variables bind, in binding order.
+struct ContextPattern {
+    std::vector<PatternModule> modules;
+    std::vector<std::string> names;
+};
+
 struct Translation {
     std::string initCode;  // the INITIALISATION part, padded so that its lines are the file's
     std::string mainCode;  // the rest, translated; line i is the file's line i
     ModuleClasses classes;
     std::vector<Rule> rules;  // in file order
     std::vector<ContextFilter> filters;
+    std::vector<ContextPattern> contextPatterns;  // __lpy_in_context(index, ...) in the code
     bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
     bool hasAxiom = false;
     std::vector<Diagnostic> diagnostics;

@@ -65,7 +65,8 @@ std::vector<std::string> splitLines(std::string_view text);
 std::string pythonLstring(const std::vector<WrittenModule>& mods);
 
 // The translation of one file: its lines in, Translation out. Its methods are spread over
-// translate.cpp (the sections) and translate_rules.cpp (rules and `produce`).
+// translate.cpp (the sections), translate_rules.cpp (rules and `produce`) and
+// translate_contexts.cpp (contexts tested in a body).
 class Translator {
 public:
     explicit Translator(std::string_view text) : m_lines(splitLines(text)) {}
@@ -88,6 +89,12 @@ private:
 
     // translate_rules.cpp
     void translateProduces(std::vector<std::string>& lines, size_t i);
+    // The names a pattern binds, in binding order, added to `names` (a name bound twice is an
+    // error at `line`); sets each repetition's count of variables.
+    void bindNames(std::vector<PatternModule>& ps, std::vector<std::string>& names, int line);
+
+    // translate_contexts.cpp
+    void translateInContexts(std::string& line, int lineNo);
     PatternModule pattern(const WrittenModule& w, int line);
     std::vector<PatternModule> patterns(std::string_view text, int line, int col);
     void parseHeader(Rule& r, std::string_view h, int line);

@@ -199,23 +199,26 @@ void Translator::parseHeader(Rule& r, std::string_view h, int line) {
     if (r.pred.empty()) error(line, 1, "this rule has no predecessor before its ':' or '-->'");
     if (!r.newLeft.empty() && !r.newRight.empty()) error(line, 1, "a rule may not have both '<<' and '>>' (L-Py)");
     // Parameters in binding order; a name used twice is an error, as in L-Py.
+    for (auto* part : {&r.left, &r.newLeft, &r.pred, &r.newRight, &r.right}) bindNames(*part, r.params, line);
+}
+
+void Translator::bindNames(std::vector<PatternModule>& ps, std::vector<std::string>& names, int line) {
     auto add = [&](const std::string& n) {
-        if (std::find(r.params.begin(), r.params.end(), n) != r.params.end()) {
+        if (std::find(names.begin(), names.end(), n) != names.end()) {
             error(line, 1, "'" + n + "' is bound twice in this rule's header");
             return;
         }
-        r.params.push_back(n);
+        names.push_back(n);
     };
     std::function<void(PatternModule&)> bind = [&](PatternModule& pm) {
-        const size_t before = r.params.size();
+        const size_t before = names.size();
         for (auto& inner : pm.repeat) bind(inner);
-        if (pm.isRepeat()) pm.repeatVariables = int(r.params.size() - before);
+        if (pm.isRepeat()) pm.repeatVariables = int(names.size() - before);
         if (!pm.anyName.empty()) add(pm.anyName);
         for (auto& a : pm.args)
             if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
     };
-    for (auto* part2 : {&r.left, &r.newLeft, &r.pred, &r.newRight, &r.right})
-        for (auto& pm : *part2) bind(pm);
+    for (auto& pm : ps) bind(pm);
 }
 
 // A rule starts at lines[i] (column 0). Returns the index of its last line.
@@ -283,8 +286,11 @@ size_t Translator::rule(std::vector<std::string>& lines, size_t i, Mode mode) {
         if (inlineBody.rfind("@static", 0) == 0) inlineBody = std::string(trim(std::string_view(inlineBody).substr(7)));
         const std::string headerLine = lines[i];
         lines[i] = inlineBody;  // the body's first line is what follows ':' (columns from there)
-        for (size_t k = i; k <= last; ++k)
-            if (!lines[k].empty()) translateProduces(lines, k);
+        for (size_t k = i; k <= last; ++k) {
+            if (lines[k].empty()) continue;
+            translateProduces(lines, k);
+            translateInContexts(lines[k], int(k) + 1);
+        }
         std::vector<std::string> body(lines.begin() + std::ptrdiff_t(i), lines.begin() + std::ptrdiff_t(last) + 1);
         lines[i] = headerLine;
         bool anyStatement = !trim(body[0]).empty() && trim(body[0])[0] != '#';
