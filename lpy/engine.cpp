@@ -30,6 +30,11 @@ Engine::~Engine() {
 void Engine::bind() {
     g_engine = this;
     const size_t classes = m_tr.classes.size();
+    // Set by the INITIALISATION block (context.options.setSelection('Module inheritance', 1)).
+    {
+        py::object chosen = py::module_::import("openalea.lpy").attr("_state")["options"].attr("get")("Module inheritance");
+        m_inheritance = !chosen.is_none() && py::bool_(chosen);
+    }
     m_functions.clear();
     for (size_t r = 0; r < m_tr.rules.size(); ++r) {
         const Rule& rule = m_tr.rules[r];
@@ -45,6 +50,10 @@ void Engine::bind() {
         auto add = [&](const PatternModule& p, int tag) {
             if (p.cls == ModuleClasses::kStar) index.any.push_back(int(r) | tag);
             else if (size_t(p.cls) < classes) index.byClass[size_t(p.cls)].push_back(int(r) | tag);
+            // With inheritance, a rule for A is also tried on the modules derived from A.
+            if (m_inheritance && p.cls != ModuleClasses::kStar)
+                for (size_t c = 0; c < classes; ++c)
+                    if (int(c) != p.cls && m_tr.classes.derivesFrom(int(c), p.cls)) index.byClass[c].push_back(int(r) | tag);
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
@@ -86,6 +95,7 @@ void Engine::bind() {
     m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
     prepareNative();
+    if (m_inheritance) m_nativeOk = false;  // the native path matches classes exactly
 }
 
 py::object Engine::callHook(const char* name, const LString* s, bool* replaced, LString* out) {

@@ -159,6 +159,7 @@ private:
         size_t right = 0;    // the next module to the right to read
         int filter = -1;
     } m_body;
+    bool m_inheritance = false;  // L-Py's option 'Module inheritance': rules match derived modules
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'

@@ -94,7 +94,17 @@ static void defineSproutLpy(py::module_& m) {
             out.own = {c.cls, py::tuple(args)};
             return out;
         })
-        .def("__repr__", [](const PyModuleClass& c) { return "ModuleClass(" + engine().translation().classes.name(c.cls) + ")"; });
+        .def("__repr__", [](const PyModuleClass& c) { return "ModuleClass(" + engine().translation().classes.name(c.cls) + ")"; })
+        .def("__eq__", [](const PyModuleClass& a, const PyModuleClass& b) { return a.cls == b.cls; })
+        .def("__hash__", [](const PyModuleClass& c) { return c.cls; })
+        // L-Py's module classes by name, and their inheritance (`module B : base = A`).
+        .def_static("get", [](const std::string& name) -> py::object {
+            const int cls = engine().translation().classes.find(name);
+            return cls < 0 ? py::object(py::none()) : py::cast(PyModuleClass{cls});
+        })
+        .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) {
+            return engine().translation().classes.derivesFrom(c.cls, base.cls);
+        });
     m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
 
     py::class_<PyModule>(m, "Module")
@@ -138,6 +148,24 @@ static void defineSproutLpy(py::module_& m) {
     py::class_<PyLstring>(m, "Lstring")
         .def(py::init([](const std::string& text) { return PyLstring{std::make_shared<LString>(engine().parse(text))}; }))
         .def(py::init([](const PyLstring& o) { return PyLstring{std::make_shared<LString>(*o.s)}; }))  // a copy
+        // L-Py compares an Lstring with another or with text (`lstring == 'BSABSA'`): the same
+        // modules with equal parameters.
+        .def("__eq__", [extend](const PyLstring& s, py::object v) {
+            LString other;
+            try {
+                extend(other, v);
+            } catch (const std::exception&) {
+                return false;  // not something a string is made of (a number, a dict)
+            }
+            if (other.size() != s.s->size()) return false;
+            for (size_t k = 0; k < other.size(); ++k) {
+                const LModule &a = (*s.s)[k], &b = other[k];
+                const bool noneA = !a.args || py::len(a.args) == 0, noneB = !b.args || py::len(b.args) == 0;
+                if (a.cls != b.cls || noneA != noneB) return false;
+                if (!noneA && !a.args.equal(b.args)) return false;
+            }
+            return true;
+        })
         .def("__iadd__", [extend](PyLstring& s, py::object v) {
             extend(*s.s, v);
             return s;

@@ -32,7 +32,8 @@ Translation Translator::run() {
 }
 
 void Translator::declareModules(std::string_view rest, int line, size_t index) {
-    // `module A, B(x,y), C=D : scale = 2`; keys after ':' are not used by Sprout.
+    // `module A, B(x,y), C=D : base = E, scale = 2`; of the keys after ':', Sprout reads `base`
+    // (one class or a tuple of them); `scale` (multiscale strings) is not read yet.
     int depth = 0;
     size_t colon = std::string_view::npos;
     for (size_t i = 0; i < rest.size(); ++i) {
@@ -43,6 +44,17 @@ void Translator::declareModules(std::string_view rest, int line, size_t index) {
             break;
         }
     }
+    std::vector<int> bases;
+    if (colon != std::string_view::npos)
+        for (const auto& key : splitArgs(rest.substr(colon + 1, commentStart(rest.substr(colon + 1))))) {
+            std::string_view k = trim(key);
+            const size_t eq = k.find('=');
+            if (eq == std::string_view::npos || trim(k.substr(0, eq)) != "base") continue;
+            std::string_view v = trim(k.substr(eq + 1));
+            if (v.size() >= 2 && v.front() == '(' && v.back() == ')') v = v.substr(1, v.size() - 2);
+            for (const auto& b : splitArgs(v))
+                if (!trim(b).empty()) bases.push_back(m_out.classes.intern(trim(b)));
+        }
     std::string out;
     for (const auto& decl : splitArgs(rest.substr(0, colon))) {
         std::string_view d = trim(decl);
@@ -65,6 +77,7 @@ void Translator::declareModules(std::string_view rest, int line, size_t index) {
         }
         const int cls = m_out.classes.intern(name);
         if (params.size()) m_out.classes.parameterNames[size_t(cls)] = params;
+        if (!bases.empty()) m_out.classes.bases[size_t(cls)] = bases;
         if (isIdentifier(name)) out += std::string(name) + " = __lpy_module_class(" + std::to_string(cls) + "); ";
     }
     m_outLines[index] = out.empty() ? "pass" : out;

@@ -34,6 +34,11 @@ public:
     bool isPredefined(int cls) const { return cls >= 0 && size_t(cls) < m_predefined; }
     // Declared parameter names (`module A(x, y)`), for `m.x` in Python.
     std::vector<std::vector<std::string>> parameterNames;
+    // Declared bases (`module B : base = A`, `base = (A, C)`): with L-Py's option 'Module
+    // inheritance', a rule for A also matches a B.
+    std::vector<std::vector<int>> bases;
+    // Whether `cls` is `base` or derives from it, through any number of declarations.
+    bool derivesFrom(int cls, int base) const;
 
     // Fixed ids of the modules the derivation itself looks at.
     static constexpr int kPush = 0, kPop = 1, kCut = 2, kStar = 3, kNone = 4, kSurface = 5;

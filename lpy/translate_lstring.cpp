@@ -74,6 +74,7 @@ ModuleClasses::ModuleClasses() {
         }
     }
     parameterNames.resize(m_names.size());
+    bases.resize(m_names.size());
     m_predefined = m_names.size();
 }
 
@@ -95,7 +96,27 @@ int ModuleClasses::intern(std::string_view name) {
     m_ids.emplace(std::string(name), id);
     m_longest = std::max(m_longest, name.size());
     parameterNames.emplace_back();
+    bases.emplace_back();
     return id;
+}
+
+bool ModuleClasses::derivesFrom(int cls, int base) const {
+    if (cls == base) return true;
+    // Depth-first over the declarations; a cycle (`module A : base = B`, `module B : base = A`)
+    // ends when every class was seen.
+    std::vector<int> todo{cls};
+    std::vector<bool> seen(bases.size(), false);
+    while (!todo.empty()) {
+        const int c = todo.back();
+        todo.pop_back();
+        if (c < 0 || size_t(c) >= bases.size() || seen[size_t(c)]) continue;
+        seen[size_t(c)] = true;
+        for (int b : bases[size_t(c)]) {
+            if (b == base) return true;
+            todo.push_back(b);
+        }
+    }
+    return false;
 }
 
 std::vector<WrittenModule> readLstring(std::string_view s, ModuleClasses& classes, int line, int col0, std::vector<Diagnostic>& diags) {
