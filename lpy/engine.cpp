@@ -96,6 +96,17 @@ void Engine::bind() {
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
     prepareNative();
     if (m_inheritance) m_nativeOk = false;  // the native path matches classes exactly
+    // A `turtle` in an interpretation rule's body, or a hook that takes it.
+    m_usesTurtle = false;
+    for (size_t r = 0; r < m_tr.rules.size(); ++r)
+        if (m_tr.rules[r].kind == RuleKind::Interpretation &&
+            py::list(m_functions[r].attr("__code__").attr("co_names")).contains(py::str("turtle")))
+            m_usesTurtle = true;
+    for (const char* hook : {"StartInterpretation", "EndInterpretation"})
+        if (m_ns.contains(hook) && py::hasattr(m_ns[hook], "__code__") &&
+            (m_ns[hook].attr("__code__").attr("co_argcount").cast<int>() > 0 ||
+             py::list(m_ns[hook].attr("__code__").attr("co_names")).contains(py::str("turtle"))))
+            m_usesTurtle = true;
 }
 
 py::object Engine::callHook(const char* name, const LString* s, bool* replaced, LString* out) {
@@ -177,15 +188,50 @@ bool Engine::isQuery(const std::string& name) {
     return name.size() == 2 && name[0] == '?' && std::strchr("PHULRF", name[1]) != nullptr;
 }
 
-bool Engine::interprets() const { return m_hasKind[kindIndex(RuleKind::Interpretation)]; }
+bool Engine::interprets() const {
+    return m_hasKind[kindIndex(RuleKind::Interpretation)] || m_ns.contains("StartInterpretation") || m_ns.contains("EndInterpretation");
+}
+
+// StartInterpretation / EndInterpretation: called with the turtle when they take an argument;
+// what they produce is drawn first / last.
+LString Engine::interpretationHook(const char* name) {
+    if (!m_ns.contains(name)) return {};
+    py::object fn = m_ns[name];
+    if (!PyCallable_Check(fn.ptr())) return {};
+    const int arity = py::hasattr(fn, "__code__") ? fn.attr("__code__").attr("co_argcount").cast<int>() : 0;
+    m_buffer.clear();
+    m_produced = false;
+    py::object ret = arity > 0 ? fn(m_turtle ? m_turtle : py::object(py::none())) : fn();
+    LString made = std::move(m_buffer);
+    m_buffer.clear();
+    if (made.empty() && !ret.is_none()) append(made, ret);
+    return made;
+}
 
 LString Engine::interpret(const LString& s) {
     // Each module of the result knows its module in `s` (parent), and the rule that drew it.
     LString in = s;
     for (size_t i = 0; i < in.size(); ++i) in[i].parent = std::uint32_t(i), in[i].rule = -1;
     const int k = kindIndex(RuleKind::Interpretation);
-    if (!m_hasKind[k]) return in;
-    return decompose(std::move(in), m_depth[k], RuleKind::Interpretation);
+    const bool hooks = m_ns.contains("StartInterpretation") || m_ns.contains("EndInterpretation");
+    if (!m_hasKind[k] && !hooks) return in;
+    struct Turtle {
+        Engine& e;
+        ~Turtle() { e.m_turtle = py::object(); }
+    } turtle{*this};
+    if (m_usesTurtle) {
+        m_turtle = py::module_::import("openalea.lpy").attr("_InterpretationTurtle")();
+        m_ns["turtle"] = m_turtle;
+    }
+    LString first = interpretationHook("StartInterpretation");
+    LString out = m_hasKind[k] ? decompose(std::move(in), m_depth[k], RuleKind::Interpretation) : std::move(in);
+    LString last = interpretationHook("EndInterpretation");
+    if (first.empty() && last.empty()) return out;
+    for (auto* part : {&first, &last})
+        for (LModule& m : *part) m.parent = 0, m.rule = -1;
+    first.insert(first.end(), std::make_move_iterator(out.begin()), std::make_move_iterator(out.end()));
+    first.insert(first.end(), std::make_move_iterator(last.begin()), std::make_move_iterator(last.end()));
+    return first;
 }
 
 }  // namespace sprout::lpy

@@ -114,7 +114,7 @@ public:
                    std::vector<std::shared_ptr<const ContextMatches>>* contexts = nullptr);
     // The string with the interpretation rules applied (depth from `maximum depth:`).
     LString interpret(const LString& s);
-    bool interprets() const;  // the model has interpretation rules
+    bool interprets() const;  // the model has interpretation rules or Start/EndInterpretation
     std::string text(const LString& s) const;
     std::string text(const NumString& s) const;
 
@@ -160,6 +160,12 @@ private:
         int filter = -1;
     } m_body;
     bool m_inheritance = false;  // L-Py's option 'Module inheritance': rules match derived modules
+    // The `turtle` of interpretation rules (openalea.lpy._InterpretationTurtle), while an
+    // interpretation runs and only when a rule or hook uses it: its parameters are saved at
+    // each '[' and restored at each ']' of the walk.
+    bool m_usesTurtle = false;
+    py::object m_turtle;
+    LString interpretationHook(const char* name);
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'

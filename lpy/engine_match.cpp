@@ -356,6 +356,11 @@ LString Engine::decompose(LString in, int depth, RuleKind kind) {
             i = afterCut(in, i);
             continue;
         }
+        if (m_turtle && kind == RuleKind::Interpretation) {
+            // The turtle's parameters follow its branches, as the walk reaches them.
+            if (in[i].cls == ModuleClasses::kPush) m_turtle.attr("_push")();
+            else if (in[i].cls == ModuleClasses::kPop) m_turtle.attr("_pop")();
+        }
         LString piece;
         size_t consumed = 1;
         if (tryRules(kind, in, i, true, piece, consumed)) {

@@ -141,6 +141,68 @@ def extern(**kwargs):
             ns[k] = v
 
 
+class _InterpretationTurtle:
+    """The `turtle` of interpretation rules and of StartInterpretation(turtle), as far as Sprout
+    draws: each drawing call (turtle.left(60), turtle.F(1), turtle.sphere(0.5), named as L-Py's
+    PglTurtle names them) puts its module into the interpreted string where the rule runs, so
+    the turtle draws it there; the parameters a model gives it (add_parameter) follow the
+    turtle's branches: '[' keeps them, ']' brings them back."""
+
+    # PglTurtle's methods, and the module each one is.
+    _modules = {
+        'left': '+', 'right': '-', 'up': '^', 'down': '&', 'rollL': '/', 'rollR': '\\',
+        'iRollL': 'iRollL', 'iRollR': 'iRollR', 'turnAround': '|', 'rollToVert': '@v',
+        'rollToHorizontal': '@h', 'setHead': '@R', 'F': 'F', 'f': 'f', 'nF': 'nF',
+        'sphere': '@O', 'circle': '@o', 'box': '@B', 'quad': '@b', 'label': '@L',
+        'startGC': '@Gc', 'stopGC': '@Ge', 'startPolygon': '{', 'stopPolygon': '}',
+        'polygonPoint': '.', 'push': '[', 'pop': ']', 'setWidth': 'SetWidth',
+        'incWidth': '_', 'decWidth': '!', 'setColor': 'SetColor', 'incColor': ';',
+        'decColor': ',', 'interpolateColors': 'InterpolateColors', 'move': '@M',
+        'moveRel': 'MoveRel', 'lineTo': 'LineTo', 'lineRel': 'LineRel', 'oLineTo': 'OLineTo',
+        'oLineRel': 'OLineRel', 'pinpoint': 'Pinpoint', 'pinpointRel': 'PinpointRel',
+        'setGuide': 'SetGuide', 'endGuide': 'EndGuide', 'sweep': 'Sweep',
+        'setTropism': '@Tp', 'setElasticity': '@Ts', 'setScale': '@D', 'frame': 'Frame',
+        'arrow': 'Arrow', 'surface': '~',
+    }
+
+    def __init__(self):
+        object.__setattr__(self, '_params', {})
+        object.__setattr__(self, '_pystack', [])
+
+    def add_parameter(self, name, value=None):
+        self._params[name] = value
+
+    def remove_parameter(self, name):
+        self._params.pop(name, None)
+
+    def clear_parameters(self):
+        self._params.clear()
+
+    def _push(self):
+        self._pystack.append(dict(self._params))
+
+    def _pop(self):
+        if self._pystack:
+            object.__setattr__(self, '_params', self._pystack.pop())
+
+    def __getattr__(self, name):
+        params = object.__getattribute__(self, '_params')
+        if name in params:
+            return params[name]
+        module = _InterpretationTurtle._modules.get(name)
+        if module is None:
+            raise AttributeError("the turtle has no '%s' (Sprout's turtle of interpretation rules: "
+                                 "PglTurtle's drawing calls and the parameters added to it)" % name)
+        cls = ModuleClass.get(module)
+        return lambda *args: nsproduce([cls(*args)])
+
+    def __setattr__(self, name, value):
+        if name in self._params:
+            self._params[name] = value
+        else:
+            object.__setattr__(self, name, value)
+
+
 class ParameterSet:
     def __init__(self, **kwargs):
         self.__dict__.update(kwargs)
