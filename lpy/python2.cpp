@@ -16,25 +16,8 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-// The line's code: up to a `#` that is not inside a string literal.
-std::string_view code(std::string_view line) {
-    char quote = 0;
-    for (size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quote) {
-            if (c == '\\') ++i;
-            else if (c == quote) quote = 0;
-        } else if (c == '"' || c == '\'') {
-            quote = c;
-        } else if (c == '#') {
-            return trim(line.substr(0, i));
-        }
-    }
-    return trim(line);
-}
-
-// Whether `what` stands in the code outside string literals.
-bool outsideStrings(std::string_view line, std::string_view what) {
+// Where `what` first stands in the line outside string literals, or npos.
+size_t outside(std::string_view line, std::string_view what) {
     char quote = 0;
     for (size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
@@ -44,11 +27,16 @@ bool outsideStrings(std::string_view line, std::string_view what) {
         } else if (c == '"' || c == '\'') {
             quote = c;
         } else if (line.substr(i, what.size()) == what) {
-            return true;
+            return i;
         }
     }
-    return false;
+    return std::string_view::npos;
 }
+
+// The line's code: up to a `#` that is not inside a string literal.
+std::string_view code(std::string_view line) { return trim(line.substr(0, outside(line, "#"))); }
+
+bool outsideStrings(std::string_view line, std::string_view what) { return outside(line, what) != std::string_view::npos; }
 
 // A statement as the message quotes it: short enough to read in a line of the panel.
 std::string shown(std::string_view s) {

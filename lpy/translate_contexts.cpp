@@ -7,27 +7,6 @@
 #include "lpy/translate_impl.hpp"
 
 namespace sprout::lpy::translate_detail {
-namespace {
-
-// The last comma at the top level of `args` (outside brackets and strings), or npos.
-size_t lastTopComma(std::string_view args) {
-    size_t comma = std::string_view::npos;
-    int depth = 0;
-    for (size_t i = 0; i < args.size();) {
-        const char c = args[i];
-        if (c == '\'' || c == '"') {
-            i = skipString(args, i);
-            continue;
-        }
-        if (c == '(' || c == '[' || c == '{') ++depth;
-        else if (c == ')' || c == ']' || c == '}') --depth;
-        else if (c == ',' && depth == 0) comma = i;
-        ++i;
-    }
-    return comma;
-}
-
-}  // namespace
 
 void Translator::translateInContexts(std::string& line, int lineNo) {
     struct Form {
@@ -48,7 +27,8 @@ void Translator::translateInContexts(std::string& line, int lineNo) {
                 break;
             }
             const std::string_view args = std::string_view(line).substr(open + 1, close - open - 1);
-            const size_t comma = lastTopComma(args);
+            const std::vector<size_t> commas = topCommas(args);  // the dict follows the last one
+            const size_t comma = commas.empty() ? std::string_view::npos : commas.back();
             std::string_view pattern = trim(comma == std::string_view::npos ? args : args.substr(0, comma));
             const std::string dict = comma == std::string_view::npos ? "None" : std::string(trim(args.substr(comma + 1)));
             int col = int(open + 2 + size_t(pattern.data() - args.data()));

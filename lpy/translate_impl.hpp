@@ -46,6 +46,8 @@ inline int indentOf(std::string_view line) {
 
 // Skips a Python string literal starting at s[i] (a quote); returns the index after it.
 size_t skipString(std::string_view s, size_t i);
+// The commas of `s` outside brackets and string literals.
+std::vector<size_t> topCommas(std::string_view s);
 // Splits the text inside a module's parentheses at top-level commas.
 std::vector<std::string> splitArgs(std::string_view s);
 // The index of the ')' closing the '(' at s[open], or npos.

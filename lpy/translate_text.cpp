@@ -27,11 +27,9 @@ size_t skipString(std::string_view s, size_t i) {
     return s.size();
 }
 
-// Splits the text inside a module's parentheses at top-level commas.
-std::vector<std::string> splitArgs(std::string_view s) {
-    std::vector<std::string> out;
+std::vector<size_t> topCommas(std::string_view s) {
+    std::vector<size_t> out;
     int depth = 0;
-    size_t start = 0;
     for (size_t i = 0; i < s.size();) {
         const char c = s[i];
         if (c == '\'' || c == '"') {
@@ -40,11 +38,19 @@ std::vector<std::string> splitArgs(std::string_view s) {
         }
         if (c == '(' || c == '[' || c == '{') ++depth;
         else if (c == ')' || c == ']' || c == '}') --depth;
-        else if (c == ',' && depth == 0) {
-            out.emplace_back(trim(s.substr(start, i - start)));
-            start = i + 1;
-        }
+        else if (c == ',' && depth == 0) out.push_back(i);
         ++i;
+    }
+    return out;
+}
+
+// Splits the text inside a module's parentheses at top-level commas.
+std::vector<std::string> splitArgs(std::string_view s) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    for (size_t comma : topCommas(s)) {
+        out.emplace_back(trim(s.substr(start, comma - start)));
+        start = comma + 1;
     }
     std::string_view last = trim(s.substr(start));
     if (!last.empty() || !out.empty()) out.emplace_back(last);
