@@ -35,7 +35,15 @@ bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<p
                 bound.push_back(rest);
                 continue;
             }
-            case PatternArg::Kind::Keywords: bound.push_back(py::dict()); continue;
+            case PatternArg::Kind::Keywords: {
+                // `A(**p)`: the parameters the module's declaration names, by name.
+                py::dict named;
+                const auto& names = m_tr.classes.parameterNames[size_t(m.cls)];
+                for (; k < n && k < names.size(); ++k)
+                    named[py::str(names[k])] = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k));
+                bound.push_back(named);
+                continue;
+            }
             default: break;
         }
         if (k >= n) return false;

@@ -86,6 +86,23 @@ static void defineSproutLpy(py::module_& m) {
     m.def("getIterationNb", [] { return engine().iteration; });
     // InLeftContext / InRightContext in a rule's body (lpy/translate_contexts.cpp).
     m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
+    // `produce A(**p)`: p's values in the order of A's declared parameters.
+    m.def("__lpy_kwargs", [](int cls, py::dict values) {
+        const ModuleClasses& classes = engine().translation().classes;
+        const auto& names = classes.parameterNames[size_t(cls)];
+        py::list out;
+        for (const std::string& n : names) {
+            if (!values.contains(n)) break;  // the declared parameters given, from the first
+            out.append(values[py::str(n)]);
+        }
+        if (py::len(out) != py::len(values)) {
+            std::string declared;
+            for (const std::string& n : names) declared += (declared.empty() ? "" : ", ") + n;
+            throw py::type_error("produce " + classes.name(cls) + "(**...): its keys must be the first of its declared parameters (" +
+                                 declared + "), each once");
+        }
+        return out;
+    });
 
     py::class_<PyModuleClass>(m, "ModuleClass")
         .def_property_readonly("name", [](const PyModuleClass& c) { return engine().translation().classes.name(c.cls); })
@@ -481,7 +498,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
         native = py::module_::import("_sprout_lpy");
         lpyModule.attr("_begin")(ns, file);
         py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
-        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class", "__lpy_in_context"}) ns[name] = native.attr(name);
+        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class", "__lpy_in_context", "__lpy_kwargs"}) ns[name] = native.attr(name);
         if (!options.path.empty()) {
             // Imports beside the file (a model's own grid.py), as `python3 FILE` finds them.
             py::module_ sys = py::module_::import("sys");

@@ -109,6 +109,7 @@ void Translator::translateMain(std::vector<std::string>& lines) {
     m_outLines.assign(lines.size(), std::string());
     Mode mode = Mode::Python;
     bool sawProduction = false;
+    std::string inString;  // the delimiter of a triple-quoted string still open from a line above
     for (size_t i = 0; i < lines.size(); ++i) {
         const int lineNo = int(i) + 1;
         std::string& line = lines[i];
@@ -116,6 +117,11 @@ void Translator::translateMain(std::vector<std::string>& lines) {
         const int ind = indentOf(line);
         std::string_view rest;
         m_outLines[i] = line;
+        if (!inString.empty()) {  // a line of a string's text, kept as it is
+            if (line.find(inString) != std::string::npos) inString.clear();
+            continue;
+        }
+        if (mode == Mode::Python) inString = openTripleQuote(line);
         if (t.empty() || t[0] == '#') continue;
         if (keyword(t, "derivation length", rest)) {
             m_outLines[i] = std::string(size_t(mode == Mode::Python ? ind : 0), ' ') + "__derivation_length__ = " + std::string(rest);

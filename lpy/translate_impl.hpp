@@ -46,6 +46,9 @@ inline int indentOf(std::string_view line) {
 
 // Skips a Python string literal starting at s[i] (a quote); returns the index after it.
 size_t skipString(std::string_view s, size_t i);
+// The delimiter of a triple-quoted string that `line` opens and leaves open (`"""` or `'''`),
+// or empty: the lines up to its end are text, not sections or rules (as L-Py reads them).
+std::string openTripleQuote(std::string_view line);
 // The commas of `s` outside brackets and string literals.
 std::vector<size_t> topCommas(std::string_view s);
 // Splits the text inside a module's parentheses at top-level commas.

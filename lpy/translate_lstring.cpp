@@ -51,7 +51,12 @@ std::string pythonLstring(const std::vector<WrittenModule>& mods) {
             out += std::to_string(m.cls);
         } else {
             out += "(" + std::to_string(m.cls) + ",(";
-            for (const auto& a : m.args) out += a + ",";
+            for (const auto& a : m.args) {
+                const std::string_view t = trim(a);
+                // `A(**p)`: the dict's values in the order of A's declared parameters.
+                if (t.substr(0, 2) == "**") out += "*__lpy_kwargs(" + std::to_string(m.cls) + "," + std::string(t.substr(2)) + "),";
+                else out += a + ",";
+            }
             out += "))";
         }
         out += ",";

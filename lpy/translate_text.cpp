@@ -27,6 +27,22 @@ size_t skipString(std::string_view s, size_t i) {
     return s.size();
 }
 
+std::string openTripleQuote(std::string_view line) {
+    for (size_t i = 0; i < line.size();) {
+        const char c = line[i];
+        if (c == '#') break;
+        if (c == '"' || c == '\'') {
+            const bool triple = i + 2 < line.size() && line[i + 1] == c && line[i + 2] == c;
+            const size_t end = skipString(line, i);
+            if (triple && !(end >= i + 6 && line.substr(end - 3, 3) == std::string(3, c))) return std::string(3, c);
+            i = end;
+            continue;
+        }
+        ++i;
+    }
+    return {};
+}
+
 std::vector<size_t> topCommas(std::string_view s) {
     std::vector<size_t> out;
     int depth = 0;
