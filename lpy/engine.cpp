@@ -35,6 +35,22 @@ void Engine::bind() {
         py::object chosen = py::module_::import("openalea.lpy").attr("_state")["options"].attr("get")("Module inheritance");
         m_inheritance = !chosen.is_none() && py::bool_(chosen);
     }
+    // Header constants and predicates, evaluated once (in repetitions and alternatives too, and
+    // in the patterns a body tests with InLeftContext).
+    std::function<void(const PatternModule&)> compile = [&](const PatternModule& p) {
+        for (const auto& inner : p.repeat) compile(inner);
+        for (const auto& alt : p.alternatives)
+            for (const auto& inner : alt) compile(inner);
+        for (const auto& a : p.args) {
+            if (a.kind == PatternArg::Kind::Equal)
+                m_constants[&a] = py::reinterpret_steal<py::object>(
+                    PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+            else if (a.kind == PatternArg::Kind::Predicate)
+                m_predicates[&a] = py::reinterpret_steal<py::object>(
+                    PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
+            if (PyErr_Occurred()) throw py::error_already_set();
+        }
+    };
     m_functions.clear();
     for (size_t r = 0; r < m_tr.rules.size(); ++r) {
         const Rule& rule = m_tr.rules[r];
@@ -60,27 +76,18 @@ void Engine::bind() {
         if (rule.kind == RuleKind::Production) {
             std::function<bool(const PatternModule&)> query = [&](const PatternModule& p) {
                 if (p.cls >= 0 && size_t(p.cls) < classes && isQuery(m_tr.classes.name(p.cls))) return true;
+                for (const auto& alt : p.alternatives)
+                    if (std::any_of(alt.begin(), alt.end(), query)) return true;
                 return std::any_of(p.repeat.begin(), p.repeat.end(), query);
             };
             for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
                 m_queryRules = m_queryRules || std::any_of(part->begin(), part->end(), query);
         }
-        // Header constants and predicates, evaluated once (in repetitions too).
-        std::function<void(const PatternModule&)> compile = [&](const PatternModule& p) {
-            for (const auto& inner : p.repeat) compile(inner);
-            for (const auto& a : p.args) {
-                if (a.kind == PatternArg::Kind::Equal)
-                    m_constants[&a] = py::reinterpret_steal<py::object>(
-                        PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-                else if (a.kind == PatternArg::Kind::Predicate)
-                    m_predicates[&a] = py::reinterpret_steal<py::object>(
-                        PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-                if (PyErr_Occurred()) throw py::error_already_set();
-            }
-        };
         for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
             for (const auto& p : *part) compile(p);
     }
+    for (const ContextPattern& cp : m_tr.contextPatterns)
+        for (const auto& p : cp.modules) compile(p);
     // Depths and the derivation length are whole numbers in range (a float is rounded, as
     // L-Py does; NaN or a huge value is an error, never a cast out of range).
     auto whole = [&](const char* name, double lo, double hi) {

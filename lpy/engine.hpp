@@ -175,6 +175,7 @@ private:
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
     // `at`: where the modules matched are added (their indices in s), when kept.
+    void bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound);
     // `stop`: set to the position left of the match, when given.
     bool matchLeft(const std::vector<PatternModule>& ps, const LString& s, long from, int filter, std::vector<py::object>& bound,
                    std::vector<std::uint32_t>* at = nullptr, long* stop = nullptr);

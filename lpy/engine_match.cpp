@@ -98,12 +98,41 @@ void Engine::matchBrackets(const LString& s) {
     m_matchOf = &s;
 }
 
+// or(...)'s variables: None for each alternative's before and after the one that matched.
+void Engine::bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound) {
+    auto nones = [&](size_t a) {
+        const int n = a < p.alternativeVariables.size() ? p.alternativeVariables[a] : 0;
+        for (int v = 0; v < n; ++v) bound.push_back(py::none());
+    };
+    for (size_t a = 0; a < matched; ++a) nones(a);
+    for (auto& o : got) bound.push_back(std::move(o));
+    for (size_t a = matched + 1; a < p.alternatives.size(); ++a) nones(a);
+}
+
 bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
                        std::vector<std::uint32_t>* at, long* stop) {
     const size_t kept = at ? at->size() : 0;
     std::vector<std::vector<py::object>> per(ps.size());
     const bool indexed = m_matchOf == &s && m_match.size() == s.size();
     for (long k = long(ps.size()) - 1; k >= 0; --k) {
+        if (ps[size_t(k)].isOr()) {
+            // The first alternative that matches leftwards from j (their modules are not kept in `at`).
+            const PatternModule& p = ps[size_t(k)];
+            size_t matched = p.alternatives.size();
+            std::vector<py::object> got;
+            for (size_t a = 0; a < p.alternatives.size() && matched == p.alternatives.size(); ++a) {
+                std::vector<py::object> one;
+                long stopAt = j;
+                if (p.alternatives[a].empty() || matchLeft(p.alternatives[a], s, j, filter, one, nullptr, &stopAt)) {
+                    matched = a;
+                    got = std::move(one);
+                    j = stopAt;
+                }
+            }
+            if (matched == p.alternatives.size()) return false;
+            bindAlternative(p, matched, got, per[size_t(k)]);
+            continue;
+        }
         for (;;) {
             if (j < 0) return false;
             const int c = s[size_t(j)].cls;
@@ -164,6 +193,24 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
                           std::vector<std::uint32_t>* at) {
     constexpr size_t npos = size_t(-1);
     for (const PatternModule& p : ps) {
+        if (p.isOr()) {
+            size_t matched = p.alternatives.size(), end = npos;
+            std::vector<py::object> got;
+            for (size_t a = 0; a < p.alternatives.size() && matched == p.alternatives.size(); ++a) {
+                std::vector<py::object> one;
+                const size_t kept = at ? at->size() : 0;
+                const size_t e = p.alternatives[a].empty() ? j : matchRight(p.alternatives[a], s, j, filter, one, at);
+                if (e == npos) {
+                    if (at) at->resize(kept);
+                    continue;
+                }
+                matched = a, end = e, got = std::move(one);
+            }
+            if (matched == p.alternatives.size()) return npos;
+            bindAlternative(p, matched, got, bound);
+            j = end;
+            continue;
+        }
         if (p.isRepeat()) {
             // Greedy: as many repetitions as match, each variable a list of its values.
             std::vector<py::list> lists(size_t(p.repeatVariables));

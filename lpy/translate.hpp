@@ -85,6 +85,11 @@ struct PatternModule {
     int repeatMin = 0, repeatMax = 1000;
     int repeatVariables = 0;  // how many variables the repeated pattern binds (each a list)
     bool isRepeat() const { return !repeat.empty(); }
+    // `or(p1, p2, ...)`: the first alternative that matches (`None`: nothing, always matches);
+    // every alternative's variables are bound, None for those of the ones that did not match.
+    std::vector<std::vector<PatternModule>> alternatives;
+    std::vector<int> alternativeVariables;  // how many each binds
+    bool isOr() const { return !alternatives.empty(); }
 };
 
 enum class RuleKind : std::uint8_t { Production, Decomposition, Interpretation };

@@ -108,7 +108,18 @@ std::vector<PatternModule> Translator::patterns(std::string_view text, int line,
     for (const auto& w : readLstring(text, m_out.classes, line, col, m_out.diagnostics)) {
         const std::string& n = m_out.classes.name(size_t(w.cls) < m_out.classes.size() && w.cls >= 0 ? w.cls : 0);
         if (w.cls >= 0 && n == "or") {
-            error(line, w.col, "the pattern 'or(...)' (alternatives) is not read by Sprout yet");
+            PatternModule p;
+            p.cls = w.cls;
+            for (const std::string& a : w.args) {
+                const std::string_view alt = trim(a);
+                // `None` as an alternative: nothing (L-Py's None module matches the empty string).
+                p.alternatives.push_back(alt == "None" ? std::vector<PatternModule>() : patterns(alt, line, w.col));
+            }
+            if (p.alternatives.size() < 2) {
+                error(line, w.col, "or(...) takes two alternatives or more, e.g. or(B(x), C)");
+                continue;
+            }
+            out.push_back(std::move(p));
             continue;
         }
         if (w.cls >= 0 && n == "x") {
@@ -197,6 +208,8 @@ void Translator::parseHeader(Rule& r, std::string_view h, int line) {
         }
     }
     if (r.pred.empty()) error(line, 1, "this rule has no predecessor before its ':' or '-->'");
+    for (const auto& p : r.pred)
+        if (p.isOr()) error(line, 1, "or(...) alternatives are read in a rule's contexts, not in its predecessor (yet)");
     if (!r.newLeft.empty() && !r.newRight.empty()) error(line, 1, "a rule may not have both '<<' and '>>' (L-Py)");
     // Parameters in binding order; a name used twice is an error, as in L-Py.
     for (auto* part : {&r.left, &r.newLeft, &r.pred, &r.newRight, &r.right}) bindNames(*part, r.params, line);
@@ -214,6 +227,11 @@ void Translator::bindNames(std::vector<PatternModule>& ps, std::vector<std::stri
         const size_t before = names.size();
         for (auto& inner : pm.repeat) bind(inner);
         if (pm.isRepeat()) pm.repeatVariables = int(names.size() - before);
+        for (auto& alt : pm.alternatives) {
+            const size_t at = names.size();
+            for (auto& inner : alt) bind(inner);
+            pm.alternativeVariables.push_back(int(names.size() - at));
+        }
         if (!pm.anyName.empty()) add(pm.anyName);
         for (auto& a : pm.args)
             if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
