@@ -261,10 +261,13 @@ void start() {
         {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
-            // L-Py's experimental string controls (lpy/python/lpy_future.py), imported on demand.
-            py::module_::import("openalea.lpy")
-                .attr("_embed")("openalea.lpy.__lpyfuture__", std::string(embedded("lpy_future")),
-                                "<sprout>/openalea/lpy/__lpyfuture__.py");
+            // Modules of L-Py's package a model may import, imported on demand: its experimental
+            // string controls and its parameter sets (lpy/python/lpy_*.py).
+            for (const char* name : {"__lpyfuture__", "tableparameterset", "parameterset"})
+                py::module_::import("openalea.lpy")
+                    .attr("_embed")(std::string("openalea.lpy.") + name,
+                                    std::string(embedded(std::string("lpy_") + (name[0] == '_' ? "future" : name))),
+                                    std::string("<sprout>/openalea/lpy/") + name + ".py");
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/python/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.

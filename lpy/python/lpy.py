@@ -220,6 +220,19 @@ class ParameterSet:
     def get(self, name, default=None):
         return self.__dict__.get(name, default)
 
+    def parameter_names(self):
+        return list(self.__dict__.keys())
+
+    def rename(self, old, new):
+        self.__dict__[new] = self.__dict__.pop(old)
+
+    def copy(self, deep=True):
+        import copy
+        return copy.deepcopy(self) if deep else copy.copy(self)
+
+    def __contains__(self, name):
+        return name in self.__dict__
+
     def __repr__(self):
         return "ParameterSet(%s)" % ", ".join("%s=%r" % kv for kv in self.__dict__.items())
 
