@@ -142,7 +142,9 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
                 j = o - 1;
                 continue;
             }
-            if (c == ModuleClasses::kPush || skipped(c, filter)) {
+            // A '[' the pattern asks for is matched (`[ I(x) [ < I(y)`: the branch's own
+            // bracket); any other '[' is left behind on the way down the tree.
+            if ((c == ModuleClasses::kPush && ps[size_t(k)].cls != ModuleClasses::kPush) || skipped(c, filter)) {
                 --j;
                 continue;
             }
