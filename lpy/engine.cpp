@@ -27,13 +27,26 @@ Engine::~Engine() {
     if (g_engine == this) g_engine = nullptr;
 }
 
+namespace {
+// How many arguments a model's function takes (L-Py calls hooks by it), and whether its code
+// reads a global `name`; 0 and false for what is not a Python function.
+int arityOf(const py::object& fn) {
+    return py::hasattr(fn, "__code__") ? fn.attr("__code__").attr("co_argcount").cast<int>() : 0;
+}
+bool reads(const py::object& fn, const char* name) {
+    return py::hasattr(fn, "__code__") && py::list(fn.attr("__code__").attr("co_names")).contains(py::str(name));
+}
+}  // namespace
+
 void Engine::bind() {
     g_engine = this;
     const size_t classes = m_tr.classes.size();
     // Set by the INITIALISATION block (context.options.setSelection('Module inheritance', 1)).
     {
         py::object chosen = py::module_::import("openalea.lpy").attr("_state")["options"].attr("get")("Module inheritance");
-        m_inheritance = !chosen.is_none() && py::bool_(chosen);
+        m_ancestors.clear();
+        if (!chosen.is_none() && py::bool_(chosen))
+            for (size_t c = 0; c < classes; ++c) m_ancestors.push_back(m_tr.classes.ancestors(int(c)));
     }
     // Header constants and predicates, evaluated once (in repetitions and alternatives too, and
     // in the patterns a body tests with InLeftContext).
@@ -67,9 +80,9 @@ void Engine::bind() {
             if (p.cls == ModuleClasses::kStar) index.any.push_back(int(r) | tag);
             else if (size_t(p.cls) < classes) index.byClass[size_t(p.cls)].push_back(int(r) | tag);
             // With inheritance, a rule for A is also tried on the modules derived from A.
-            if (m_inheritance && p.cls != ModuleClasses::kStar)
-                for (size_t c = 0; c < classes; ++c)
-                    if (int(c) != p.cls && m_tr.classes.derivesFrom(int(c), p.cls)) index.byClass[c].push_back(int(r) | tag);
+            if (p.cls != ModuleClasses::kStar)
+                for (size_t c = 0; c < m_ancestors.size(); ++c)
+                    if (derived(int(c), p.cls)) index.byClass[c].push_back(int(r) | tag);
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
@@ -102,26 +115,20 @@ void Engine::bind() {
     m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
     prepareNative();
-    if (m_inheritance) m_nativeOk = false;  // the native path matches classes exactly
+    if (!m_ancestors.empty()) m_nativeOk = false;  // the native path matches classes exactly
     // A `turtle` in an interpretation rule's body, or a hook that takes it.
     m_usesTurtle = false;
     for (size_t r = 0; r < m_tr.rules.size(); ++r)
-        if (m_tr.rules[r].kind == RuleKind::Interpretation &&
-            py::list(m_functions[r].attr("__code__").attr("co_names")).contains(py::str("turtle")))
-            m_usesTurtle = true;
+        if (m_tr.rules[r].kind == RuleKind::Interpretation && reads(m_functions[r], "turtle")) m_usesTurtle = true;
     for (const char* hook : {"StartInterpretation", "EndInterpretation"})
-        if (m_ns.contains(hook) && py::hasattr(m_ns[hook], "__code__") &&
-            (m_ns[hook].attr("__code__").attr("co_argcount").cast<int>() > 0 ||
-             py::list(m_ns[hook].attr("__code__").attr("co_names")).contains(py::str("turtle"))))
-            m_usesTurtle = true;
+        if (m_ns.contains(hook) && (arityOf(m_ns[hook]) > 0 || reads(m_ns[hook], "turtle"))) m_usesTurtle = true;
 }
 
 py::object Engine::callHook(const char* name, const LString* s, bool* replaced, LString* out) {
     if (!m_ns.contains(name)) return py::none();
     py::object fn = m_ns[name];
     if (!PyCallable_Check(fn.ptr())) return py::none();
-    int arity = 0;
-    if (py::hasattr(fn, "__code__")) arity = fn.attr("__code__").attr("co_argcount").cast<int>();
+    const int arity = arityOf(fn);
     py::object ret;
     if (arity == 0 || !s) {
         ret = fn();
@@ -205,7 +212,7 @@ LString Engine::interpretationHook(const char* name) {
     if (!m_ns.contains(name)) return {};
     py::object fn = m_ns[name];
     if (!PyCallable_Check(fn.ptr())) return {};
-    const int arity = py::hasattr(fn, "__code__") ? fn.attr("__code__").attr("co_argcount").cast<int>() : 0;
+    const int arity = arityOf(fn);
     m_buffer.clear();
     m_produced = false;
     py::object ret = arity > 0 ? fn(m_turtle ? m_turtle : py::object(py::none())) : fn();

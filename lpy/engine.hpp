@@ -2,6 +2,7 @@
 // L-Py's derivation (L-Py's src/cpp/lsystem.cpp, described in ../shared/lpy-notes.md and the
 // L-Py documentation): a string of modules whose parameters are Python values, rewritten by
 // rules whose bodies are Python functions. Runs with the GIL held.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -159,7 +160,14 @@ private:
         size_t right = 0;    // the next module to the right to read
         int filter = -1;
     } m_body;
-    bool m_inheritance = false;  // L-Py's option 'Module inheritance': rules match derived modules
+    // With L-Py's option 'Module inheritance' (rules match derived modules): each class's
+    // ancestors, worked out once by bind(); empty without the option.
+    std::vector<std::vector<int>> m_ancestors;
+    bool derived(int cls, int base) const {
+        if (m_ancestors.empty() || size_t(cls) >= m_ancestors.size()) return false;
+        const auto& a = m_ancestors[size_t(cls)];
+        return std::find(a.begin(), a.end(), base) != a.end();
+    }
     // The `turtle` of interpretation rules (openalea.lpy._InterpretationTurtle), while an
     // interpretation runs and only when a rule or hook uses it: its parameters are saved at
     // each '[' and restored at each ']' of the walk.

@@ -23,7 +23,7 @@ bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<p
         if (!p.anyName.empty()) bound.push_back(py::str(m_tr.classes.name(m.cls)));
         if (!p.hasParens || (p.anyName.empty() && p.args.empty())) return true;
     } else {
-        if (p.cls != m.cls && !(m_inheritance && m_tr.classes.derivesFrom(m.cls, p.cls))) return false;
+        if (p.cls != m.cls && !derived(m.cls, p.cls)) return false;
         if (!p.hasParens) return n == 0;
     }
     size_t k = 0;

@@ -263,10 +263,11 @@ void start() {
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
             // Modules of L-Py's package a model may import, imported on demand: its experimental
             // string controls and its parameter sets (lpy/python/lpy_*.py).
-            for (const char* name : {"__lpyfuture__", "tableparameterset", "parameterset"})
+            const std::pair<const char*, const char*> onDemand[] = {
+                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"parameterset", "lpy_parameterset"}};
+            for (const auto& [name, stem] : onDemand)
                 py::module_::import("openalea.lpy")
-                    .attr("_embed")(std::string("openalea.lpy.") + name,
-                                    std::string(embedded(std::string("lpy_") + (name[0] == '_' ? "future" : name))),
+                    .attr("_embed")(std::string("openalea.lpy.") + name, std::string(embedded(stem)),
                                     std::string("<sprout>/openalea/lpy/") + name + ".py");
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/python/plantgl_*.py), private modules that `all` gathers;

@@ -212,10 +212,9 @@ void Translator::translateMain(std::vector<std::string>& lines) {
                 translateProduces(lines, i);
                 m_outLines[i] = lines[i];
             }
-            if (line.find("ontext") != std::string::npos) {  // a function of the file testing contexts
-                translateInContexts(lines[i], lineNo);
-                m_outLines[i] = lines[i];
-            }
+            // A function of the file may test contexts (InLeftContext), as rule bodies do.
+            translateInContexts(lines[i], lineNo);
+            m_outLines[i] = lines[i];
             continue;
         }
         // Rule mode.

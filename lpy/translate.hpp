@@ -37,7 +37,9 @@ public:
     // Declared bases (`module B : base = A`, `base = (A, C)`): with L-Py's option 'Module
     // inheritance', a rule for A also matches a B.
     std::vector<std::vector<int>> bases;
-    // Whether `cls` is `base` or derives from it, through any number of declarations.
+    // The classes `cls` derives from, through any number of declarations.
+    std::vector<int> ancestors(int cls) const;
+    // Whether `cls` is `base` or derives from it.
     bool derivesFrom(int cls, int base) const;
 
     // Fixed ids of the modules the derivation itself looks at.

@@ -105,11 +105,10 @@ int ModuleClasses::intern(std::string_view name) {
     return id;
 }
 
-bool ModuleClasses::derivesFrom(int cls, int base) const {
-    if (cls == base) return true;
+std::vector<int> ModuleClasses::ancestors(int cls) const {
     // Depth-first over the declarations; a cycle (`module A : base = B`, `module B : base = A`)
     // ends when every class was seen.
-    std::vector<int> todo{cls};
+    std::vector<int> out, todo{cls};
     std::vector<bool> seen(bases.size(), false);
     while (!todo.empty()) {
         const int c = todo.back();
@@ -117,11 +116,17 @@ bool ModuleClasses::derivesFrom(int cls, int base) const {
         if (c < 0 || size_t(c) >= bases.size() || seen[size_t(c)]) continue;
         seen[size_t(c)] = true;
         for (int b : bases[size_t(c)]) {
-            if (b == base) return true;
+            if (b != cls && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
             todo.push_back(b);
         }
     }
-    return false;
+    return out;
+}
+
+bool ModuleClasses::derivesFrom(int cls, int base) const {
+    if (cls == base) return true;
+    const std::vector<int> a = ancestors(cls);
+    return std::find(a.begin(), a.end(), base) != a.end();
 }
 
 std::vector<WrittenModule> readLstring(std::string_view s, ModuleClasses& classes, int line, int col0, std::vector<Diagnostic>& diags) {

@@ -16,7 +16,6 @@ from openalea.plantgl._vectors import *
 from openalea.plantgl._vectors import _Vec, _math
 from openalea.plantgl._scene import *
 from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
-from openalea.plantgl._scene import _name, _f  # the last of the loop that made the scene classes, as before the split
 from openalea.plantgl._curves import *
 from openalea.plantgl._curves import _Points, _uniform_clamped_knots
 from openalea.plantgl._grids import *

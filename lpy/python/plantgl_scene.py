@@ -84,6 +84,7 @@ _geometry_fields = {
 }
 for _name, _f in _geometry_fields.items():
     globals()[_name] = type(_name, (_Geometry,), {'_fields': _f})
+del _name, _f
 
 
 class Scene(list):
