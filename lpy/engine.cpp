@@ -18,10 +18,14 @@ thread_local Engine* g_engine = nullptr;
 
 Engine* currentEngine() { return g_engine; }
 
-Engine::Engine(Translation translation, py::dict ns, const RunOptions& options)
-    : m_tr(std::move(translation)), m_ns(std::move(ns)), m_options(options) {
-    g_engine = this;
+Engine* setCurrentEngine(Engine* e) {
+    Engine* was = g_engine;
+    g_engine = e;
+    return was;
 }
+
+Engine::Engine(Translation translation, py::dict ns, const RunOptions& options)
+    : m_tr(std::move(translation)), m_ns(std::move(ns)), m_options(options) {}
 
 Engine::~Engine() {
     if (g_engine == this) g_engine = nullptr;
@@ -39,7 +43,6 @@ bool reads(const py::object& fn, const char* name) {
 }  // namespace
 
 void Engine::bind() {
-    g_engine = this;
     const size_t classes = m_tr.classes.size();
     // Set by the INITIALISATION block (context.options.setSelection('Module inheritance', 1)).
     {
@@ -152,10 +155,12 @@ py::object Engine::callHook(const char* name, const LString* s, bool* replaced, 
 }
 
 LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
-                       std::vector<std::shared_ptr<const ContextMatches>>* contexts) {
-    iteration = 0;
+                       std::vector<std::shared_ptr<const ContextMatches>>* contexts, int start, int total) {
+    iteration = start;
     stopRequested = false;
-    if (m_nativeOk) {
+    if (total < 0) total = start + steps;
+    // The native path has no hooks: where it starts matters only to getIterationNb.
+    if (m_nativeOk && start == 0 && total == steps) {
         NumString result;
         std::vector<NumString> every;
         if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result, true)) {
@@ -163,16 +168,16 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
                 for (const NumString& step : every) everyStep->push_back(toL(step));
             return toL(result);
         }
-        iteration = 0;  // a value Python would not take: Python from the start
+        iteration = start;  // a value Python would not take: Python from the start
     }
-    callHook("Start", &s, nullptr, &s);
+    if (start == 0) callHook("Start", &s, nullptr, &s);
     if (everyStep) everyStep->push_back(s);
     if (contexts) contexts->push_back(nullptr);  // the axiom's: none
     const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
     int done = 0;
     for (int i = 0; i < steps; ++i) {
         checkCancel();
-        iteration = i;
+        iteration = start + i;
         callHook("StartEach", &s, nullptr, &s);
         // Direction and group are read after StartEach (so StartEach may set them).
         LString next;
@@ -193,8 +198,8 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         if (contexts) matched->sort(), contexts->push_back(std::move(matched));
         if (stopRequested) break;
     }
-    iteration = std::max(0, done - 1);
-    if (done == steps) callHook("End", &s, nullptr, &s);
+    iteration = start + std::max(0, done - 1);
+    if (start + done == total) callHook("End", &s, nullptr, &s);
     return s;
 }
 

@@ -111,8 +111,11 @@ public:
     // production, decomposition, EndEach, Stop; End after the last step.
     // `contexts` (with everyStep): per step, where the contexts of the rules that made it
     // matched in the step before (the derivation inspector's "context matched").
+    // `start`: the iteration the first step is (L-Py's derive(lstring, start, nb): Start is
+    // called when it is 0, End when the last step is iteration `total` - 1; total < 0: start
+    // + steps).
     LString derive(LString s, int steps, std::vector<LString>* everyStep,
-                   std::vector<std::shared_ptr<const ContextMatches>>* contexts = nullptr);
+                   std::vector<std::shared_ptr<const ContextMatches>>* contexts = nullptr, int start = 0, int total = -1);
     // The string with the interpretation rules applied (depth from `maximum depth:`).
     LString interpret(const LString& s);
     bool interprets() const;  // the model has interpretation rules or Start/EndInterpretation
@@ -123,6 +126,8 @@ public:
     void produce(py::handle items, bool last);
     void append(LString& out, py::handle item);
     const Translation& translation() const { return m_tr; }
+    ModuleClasses& classes() { return m_tr.classes; }  // grows as Python names new modules
+    py::dict& ns() { return m_ns; }
     int iteration = 0;
     bool forwardDirection = true;
     int group = 0;
@@ -324,5 +329,14 @@ private:
 
 // The engine running on this thread (Python's builtins reach it through this).
 Engine* currentEngine();
+// Makes `e` the engine of this thread; gives the one before.
+Engine* setCurrentEngine(Engine* e);
+
+// Strings and Python values as an engine reads and writes them, without one (the Python
+// API's Lstrings made outside a derivation): `classes` names the modules (new names are
+// interned into it), an lstring's arguments are evaluated in `ns`.
+LString parseLstring(std::string_view text, ModuleClasses& classes, py::handle ns);
+void appendValue(LString& out, py::handle item, size_t classCount);
+std::string writeLstring(const LString& s, const ModuleClasses& classes);
 
 }  // namespace sprout::lpy

@@ -7,16 +7,18 @@
 
 namespace sprout::lpy {
 
-LString Engine::parse(std::string_view text) {
+LString Engine::parse(std::string_view text) { return parseLstring(text, m_tr.classes, m_ns); }
+
+LString parseLstring(std::string_view text, ModuleClasses& classes, py::handle ns) {
     std::vector<Diagnostic> diags;
     LString out;
-    for (const auto& w : readLstring(text, m_tr.classes, 0, 1, diags)) {
+    for (const auto& w : readLstring(text, classes, 0, 1, diags)) {
         LModule m;
         m.cls = w.cls;
         if (!w.args.empty()) {
             py::list args;
             for (const auto& a : w.args)
-                args.append(py::reinterpret_steal<py::object>(PyRun_String(a.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr())));
+                args.append(py::reinterpret_steal<py::object>(PyRun_String(a.c_str(), Py_eval_input, ns.ptr(), ns.ptr())));
             if (PyErr_Occurred()) throw py::error_already_set();
             m.args = py::tuple(args);
         }
@@ -39,23 +41,25 @@ LString Engine::axiom() {
     return out;
 }
 
-void Engine::append(LString& out, py::handle item) {
+void Engine::append(LString& out, py::handle item) { appendValue(out, item, m_tr.classes.size()); }
+
+void appendValue(LString& out, py::handle item, size_t classCount) {
     if (PyLong_Check(item.ptr())) {
         const long cls = PyLong_AsLong(item.ptr());
-        if (cls < 0 || size_t(cls) >= m_tr.classes.size()) throw py::value_error("produce: not a module");
+        if (cls < 0 || size_t(cls) >= classCount) throw py::value_error("produce: not a module");
         out.push_back({int(cls), py::tuple()});
         return;
     }
     if (PyTuple_Check(item.ptr()) && PyTuple_GET_SIZE(item.ptr()) == 2 && PyLong_Check(PyTuple_GET_ITEM(item.ptr(), 0))) {
         const long cls = PyLong_AsLong(PyTuple_GET_ITEM(item.ptr(), 0));
         py::handle args = PyTuple_GET_ITEM(item.ptr(), 1);
-        if (cls < 0 || size_t(cls) >= m_tr.classes.size() || !PyTuple_Check(args.ptr())) throw py::value_error("produce: not a module");
+        if (cls < 0 || size_t(cls) >= classCount || !PyTuple_Check(args.ptr())) throw py::value_error("produce: not a module");
         // `A(*xs)`: a sequence given last is unpacked (the translation cannot tell).
         out.push_back({int(cls), py::reinterpret_borrow<py::tuple>(args)});
         return;
     }
     if (PyList_Check(item.ptr())) {
-        for (py::handle h : py::reinterpret_borrow<py::list>(item)) append(out, h);
+        for (py::handle h : py::reinterpret_borrow<py::list>(item)) appendValue(out, h, classCount);
         return;
     }
     if (item.is_none()) return;
@@ -99,10 +103,12 @@ std::string Engine::text(const NumString& s) const {
     return out;
 }
 
-std::string Engine::text(const LString& s) const {
+std::string Engine::text(const LString& s) const { return writeLstring(s, m_tr.classes); }
+
+std::string writeLstring(const LString& s, const ModuleClasses& classes) {
     std::string out;
     for (const LModule& m : s) {
-        out += m_tr.classes.name(m.cls);
+        out += m.cls >= 0 && size_t(m.cls) < classes.size() ? classes.name(m.cls) : std::string("?");
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
         if (n == 0) continue;
         out += '(';

@@ -9,8 +9,7 @@
 #include <pybind11/embed.h>
 #include <pybind11/stl.h>
 
-#include "lpy/draw.hpp"
-#include "lpy/engine.hpp"
+#include "lpy/host_impl.hpp"
 #include "lpy/python2.hpp"
 #include "core/base/embedded_file.hpp"
 #include "core/derive/draw.hpp"
@@ -28,20 +27,6 @@ Engine& engine() {
     Engine* e = currentEngine();
     if (!e) throw py::value_error("no L-Py model is running");
     return *e;
-}
-
-py::object moduleArg(LModule& m, py::ssize_t k) {
-    const py::ssize_t n = m.args ? py::ssize_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
-    if (k < 0) k += n;
-    if (k < 0 || k >= n) throw py::index_error("module parameter index out of range");
-    return m.args[py::size_t(k)];
-}
-
-PyModule viewOf(const std::shared_ptr<LString>& s, size_t i) {
-    PyModule m;
-    m.owner = s;
-    m.index = i;
-    return m;
 }
 
 template <bool Last>
@@ -104,124 +89,8 @@ static void defineSproutLpy(py::module_& m) {
         return out;
     });
 
-    py::class_<PyModuleClass>(m, "ModuleClass")
-        .def_property_readonly("name", [](const PyModuleClass& c) { return engine().translation().classes.name(c.cls); })
-        .def("__call__", [](const PyModuleClass& c, py::args args) {
-            PyModule out;
-            out.own = {c.cls, py::tuple(args)};
-            return out;
-        })
-        .def("__repr__", [](const PyModuleClass& c) { return "ModuleClass(" + engine().translation().classes.name(c.cls) + ")"; })
-        .def("__eq__", [](const PyModuleClass& a, const PyModuleClass& b) { return a.cls == b.cls; })
-        .def("__hash__", [](const PyModuleClass& c) { return c.cls; })
-        // L-Py's module classes by name, and their inheritance (`module B : base = A`).
-        .def_static("get", [](const std::string& name) -> py::object {
-            const int cls = engine().translation().classes.find(name);
-            return cls < 0 ? py::object(py::none()) : py::cast(PyModuleClass{cls});
-        })
-        .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) {
-            return engine().translation().classes.derivesFrom(c.cls, base.cls);
-        });
-    m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
-
-    py::class_<PyModule>(m, "Module")
-        .def(py::init([](const std::string& name, py::args args) {
-            PyModule out;
-            out.own = {const_cast<ModuleClasses&>(engine().translation().classes).intern(name), py::tuple(args)};
-            return out;
-        }))
-        .def_property_readonly("name", [](PyModule& self) { return engine().translation().classes.name(self.get().cls); })
-        .def_property_readonly("args", [](PyModule& self) { return py::list(self.get().args ? self.get().args : py::tuple()); })
-        .def("__len__", [](PyModule& self) { return self.get().args ? py::len(self.get().args) : 0; })
-        .def("__getitem__", [](PyModule& self, py::ssize_t k) { return moduleArg(self.get(), k); })
-        .def("__setitem__", [](PyModule& self, py::ssize_t k, py::object v) {
-            LModule& mod = self.get();
-            moduleArg(mod, k);  // range check
-            const py::ssize_t n = py::ssize_t(PyTuple_GET_SIZE(mod.args.ptr()));
-            if (k < 0) k += n;
-            py::list l(mod.args);
-            l[py::size_t(k)] = v;
-            mod.args = py::tuple(l);
-        })
-        .def("__getattr__", [](PyModule& self, const std::string& attr) -> py::object {
-            LModule& mod = self.get();
-            const auto& names = engine().translation().classes.parameterNames;
-            if (size_t(mod.cls) < names.size())
-                for (size_t k = 0; k < names[size_t(mod.cls)].size(); ++k)
-                    if (names[size_t(mod.cls)][k] == attr) return moduleArg(mod, py::ssize_t(k));
-            throw py::attribute_error("module " + engine().translation().classes.name(mod.cls) + " has no parameter " + attr);
-        })
-        .def("__repr__", [](PyModule& self) { return engine().text({self.get()}); });
-
-    // `s += 'B'`, `s + other`: text is read as an lstring, anything else as produce takes it.
-    auto extend = [](LString& s, py::handle v) {
-        if (py::isinstance<py::str>(v)) {
-            LString more = engine().parse(v.cast<std::string>());
-            s.insert(s.end(), more.begin(), more.end());
-        } else {
-            engine().append(s, v);
-        }
-    };
-    py::class_<PyLstring>(m, "Lstring")
-        .def(py::init([](const std::string& text) { return PyLstring{std::make_shared<LString>(engine().parse(text))}; }))
-        .def(py::init([](const PyLstring& o) { return PyLstring{std::make_shared<LString>(*o.s)}; }))  // a copy
-        // L-Py compares an Lstring with another or with text (`lstring == 'BSABSA'`): the same
-        // modules with equal parameters.
-        .def("__eq__", [extend](const PyLstring& s, py::object v) {
-            LString other;
-            try {
-                extend(other, v);
-            } catch (const std::exception&) {
-                return false;  // not something a string is made of (a number, a dict)
-            }
-            if (other.size() != s.s->size()) return false;
-            for (size_t k = 0; k < other.size(); ++k) {
-                const LModule &a = (*s.s)[k], &b = other[k];
-                const bool noneA = !a.args || py::len(a.args) == 0, noneB = !b.args || py::len(b.args) == 0;
-                if (a.cls != b.cls || noneA != noneB) return false;
-                if (!noneA && !a.args.equal(b.args)) return false;
-            }
-            return true;
-        })
-        .def("__iadd__", [extend](PyLstring& s, py::object v) {
-            extend(*s.s, v);
-            return s;
-        })
-        .def("__add__", [extend](const PyLstring& s, py::object v) {
-            PyLstring out{std::make_shared<LString>(*s.s)};
-            extend(*out.s, v);
-            return out;
-        })
-        .def("__len__", [](const PyLstring& s) { return s.s->size(); })
-        .def("__getitem__", [](const PyLstring& s, py::ssize_t i) {
-            const py::ssize_t n = py::ssize_t(s.s->size());
-            if (i < 0) i += n;
-            if (i < 0 || i >= n) throw py::index_error("Lstring index out of range");
-            return viewOf(s.s, size_t(i));
-        })
-        .def("__setitem__", [](PyLstring& s, py::ssize_t i, py::object v) {
-            const py::ssize_t n = py::ssize_t(s.s->size());
-            if (i < 0) i += n;
-            if (i < 0 || i >= n) throw py::index_error("Lstring index out of range");
-            LString one;
-            engine().append(one, v);
-            if (one.size() != 1) throw py::value_error("an Lstring item is one module");
-            (*s.s)[size_t(i)] = one[0];
-        })
-        .def("__iter__", [](const PyLstring& s) {
-            py::list l;
-            for (size_t i = 0; i < s.s->size(); ++i) l.append(viewOf(s.s, i));
-            return py::iter(l);
-        })
-        .def("insertAt", [](PyLstring& s, py::ssize_t i, py::object v) {
-            LString items;
-            engine().append(items, v);
-            const size_t at = size_t(std::clamp<py::ssize_t>(i, 0, py::ssize_t(s.s->size())));
-            s.s->insert(s.s->begin() + std::ptrdiff_t(at), items.begin(), items.end());
-        })
-        .def("append", [](PyLstring& s, py::object v) { engine().append(*s.s, v); })
-        .def("__str__", [](const PyLstring& s) { return engine().text(*s.s); })
-        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + engine().text(*s.s) + "')"; });
+    defineTypes(m);
+    defineSession(m);
 }
 
 namespace sprout::lpy {
@@ -245,6 +114,57 @@ std::string_view embedded(std::string_view stem) {
     for (const auto& f : embeddedLpyPython())
         if (f.stem == stem) return f.data;
     return {};
+}
+
+}  // namespace
+
+std::mutex& runMutex() { return g_run; }
+
+ModuleClasses& registry() {
+    static ModuleClasses* table = new ModuleClasses();  // with the interpreter: never destroyed
+    return *table;
+}
+
+ModuleClasses& names() {
+    Engine* e = currentEngine();
+    return e ? e->classes() : registry();
+}
+
+py::dict looseNamespace() {
+    static py::dict* ns = nullptr;  // with the interpreter: never destroyed
+    if (!ns) {
+        ns = new py::dict();
+        (*ns)["__builtins__"] = py::module_::import("builtins");
+        py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", *ns);
+    }
+    return *ns;
+}
+
+EngineScope::EngineScope(Engine* e) : m_engine(e), m_before(currentEngine()) {
+    // The names the engine before made go to the table first, and this engine catches up.
+    if (m_before) registry().adopt(m_before->classes(), false);
+    if (m_engine) m_engine->classes().adopt(registry(), true);
+    setCurrentEngine(m_engine);
+}
+
+EngineScope::~EngineScope() {
+    if (m_engine) registry().adopt(m_engine->classes(), false);
+    if (m_before) m_before->classes().adopt(registry(), true);
+    setCurrentEngine(m_before);
+}
+
+void prepareNamespace(py::dict ns, const std::string& path) {
+    py::module_ native = py::module_::import("_sprout_lpy");
+    py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
+    for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class", "__lpy_in_context", "__lpy_kwargs"})
+        ns[name] = native.attr(name);
+    if (!path.empty()) {
+        // Imports beside the file (a model's own grid.py), as `python3 FILE` finds them.
+        py::module_ sys = py::module_::import("sys");
+        py::module_ os = py::module_::import("os");
+        py::object folder = os.attr("path").attr("dirname")(os.attr("path").attr("abspath")(path));
+        if (!sys.attr("path").contains(folder)) sys.attr("path").attr("insert")(0, folder);
+    }
 }
 
 void start() {
@@ -276,6 +196,12 @@ void start() {
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
+            // L-Py's Lsystem for scripts (lpy/python/lpy_lsystem.py), part of openalea.lpy.
+            installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
+            {
+                py::module_ lpy = py::module_::import("openalea.lpy"), api = py::module_::import("openalea.lpy._lsystem");
+                for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
+            }
             py::module_ sys = py::module_::import("sys");
             for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph", "openalea.plantgl.light",
                                       "openalea.plantgl.light.light"})
@@ -290,6 +216,8 @@ void start() {
 #endif
     });
 }
+
+namespace {
 
 // A column Python counted on the translated line (a `-->` rule became a longer function on
 // its line) that lies past the end of the line as written: the successor's first column.
@@ -316,7 +244,8 @@ Diagnostic python2(Diagnostic d, std::string_view text) {
     return d;
 }
 
-// Where a Python error happened in the model file, and what it says.
+}  // namespace
+
 Diagnostic describe(py::error_already_set& e, const std::string& file, std::string_view text) {
     Diagnostic d;
     d.message = std::string(py::str(e.type().attr("__name__"))) + ": " + std::string(py::str(e.value()));
@@ -338,6 +267,8 @@ Diagnostic describe(py::error_already_set& e, const std::string& file, std::stri
     fitColumn(d, text);
     return python2(d, text);
 }
+
+namespace {
 
 // Interrupts Python on the running thread when `cancel` is set (an endless loop in a rule).
 class CancelWatch {
@@ -387,7 +318,8 @@ std::uint32_t materialColour(py::handle m) {
     }
 }
 
-// The file's turtle settings and materials as they stand (the INITIALISATION part sets them).
+}  // namespace
+
 TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
     TurtleDefaults d;
     py::dict state = lpyModule.attr("_state");
@@ -401,6 +333,8 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
     }
     return d;
 }
+
+namespace {
 
 // The kept steps as Sprout's derivation record: module names with their numbers, and each
 // module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
@@ -477,6 +411,8 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
 
 bool pythonAvailable() { return true; }
 
+void installOpenalea() { start(); }
+
 Model runModel(std::string_view text, const RunOptions& options) {
     Model out;
     Translation tr = translate(text);
@@ -490,26 +426,21 @@ Model runModel(std::string_view text, const RunOptions& options) {
     }
     std::lock_guard<std::mutex> lock(g_run);
     py::gil_scoped_acquire gil;
+    // Read again from the process's names when L-systems made from Python added some (the
+    // same modules, ids that agree with theirs).
+    if (registry().size() > ModuleClasses().size()) tr = translate(text, &registry());
+    registry().adopt(tr.classes, false);
     const std::string file = options.path.empty() ? "<model>" : options.path;
     std::string initCode = tr.initCode, mainCode = tr.mainCode;
     py::dict ns;
     ns["__builtins__"] = py::module_::import("builtins");
     ns["__name__"] = "__lpy__";
     ns["__file__"] = file;
-    py::module_ lpyModule, native;
+    py::module_ lpyModule;
     try {
         lpyModule = py::module_::import("openalea.lpy");
-        native = py::module_::import("_sprout_lpy");
         lpyModule.attr("_begin")(ns, file);
-        py::exec("from openalea.lpy import *\nfrom openalea.plantgl.all import *\n", ns);
-        for (const char* name : {"__lpy_produce", "__lpy_nproduce", "__lpy_module_class", "__lpy_in_context", "__lpy_kwargs"}) ns[name] = native.attr(name);
-        if (!options.path.empty()) {
-            // Imports beside the file (a model's own grid.py), as `python3 FILE` finds them.
-            py::module_ sys = py::module_::import("sys");
-            py::module_ os = py::module_::import("os");
-            py::object folder = os.attr("path").attr("dirname")(os.attr("path").attr("abspath")(options.path));
-            if (!sys.attr("path").contains(folder)) sys.attr("path").attr("insert")(0, folder);
-        }
+        prepareNamespace(ns, options.path);
     } catch (py::error_already_set& e) {
         out.diagnostics.push_back(describe(e, file, text));
         return out;
@@ -525,6 +456,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
         ~Restore() { sys.attr("stdout") = saved; }
     } restore{sys, savedStdout};
     Engine engine(std::move(tr), ns, options);
+    EngineScope scope(&engine);
     CancelWatch watch(options.cancel);
     auto builtins = py::module_::import("builtins");
     try {

@@ -57,4 +57,8 @@ bool pythonAvailable();
 
 Model runModel(std::string_view text, const RunOptions& options);
 
+// Installs Sprout's openalea.lpy and openalea.plantgl (L-Py's Python API, lpy/session.cpp)
+// into the running interpreter: `sprout.use_as_openalea()`.
+void installOpenalea();
+
 }  // namespace sprout::lpy

@@ -12,4 +12,6 @@ Model runModel(std::string_view, const RunOptions&) {
     return out;
 }
 
+void installOpenalea() {}
+
 }  // namespace sprout::lpy

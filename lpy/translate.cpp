@@ -236,6 +236,10 @@ void Translator::translateMain(std::vector<std::string>& lines) {
 
 }  // namespace translate_detail
 
-Translation translate(std::string_view text) { return translate_detail::Translator(text).run(); }
+Translation translate(std::string_view text, const ModuleClasses* seed) {
+    translate_detail::Translator t(text);
+    if (seed) t.seed(*seed);
+    return t.run();
+}
 
 }  // namespace sprout::lpy

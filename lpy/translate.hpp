@@ -42,12 +42,22 @@ public:
     // Whether `cls` is `base` or derives from it.
     bool derivesFrom(int cls, int base) const;
 
+    // The names of `ids` with their ids, every one but the predefined modules hidden: found by
+    // no lookup (a text is read as with a fresh table) until interned again, which keeps its
+    // id. How L-Systems of one Python process agree on ids (lpy/session.cpp): each translation
+    // starts from the names all of them made so far.
+    static ModuleClasses seededFrom(const ModuleClasses& ids);
+    // Adds `other`'s classes from this table's size on, hidden (`other` started from this
+    // table, so its ids are this table's), with their declared parameter names.
+    void adopt(const ModuleClasses& other, bool hidden);
+
     // Fixed ids of the modules the derivation itself looks at.
     static constexpr int kPush = 0, kPop = 1, kCut = 2, kStar = 3, kNone = 4, kSurface = 5;
 
 private:
     std::vector<std::string> m_names;
     std::unordered_map<std::string, int> m_ids;  // names and aliases
+    std::vector<bool> m_hidden;                  // per class (seededFrom)
     size_t m_longest = 1;
     size_t m_predefined = 0;
 };
@@ -138,6 +148,7 @@ struct Translation {
     bool ok() const { return !hasErrors(diagnostics); }
 };
 
-Translation translate(std::string_view text);
+// `seed`: a table whose ids the translation keeps (ModuleClasses::seededFrom).
+Translation translate(std::string_view text, const ModuleClasses* seed = nullptr);
 
 }  // namespace sprout::lpy

@@ -77,6 +77,7 @@ public:
     explicit Translator(std::string_view text) : m_lines(splitLines(text)) {}
 
     Translation run();
+    void seed(const ModuleClasses& ids) { m_out.classes = ModuleClasses::seededFrom(ids); }
 
 private:
     enum class Mode { Python, Production, Decomposition, Interpretation };

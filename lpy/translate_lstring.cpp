@@ -80,28 +80,53 @@ ModuleClasses::ModuleClasses() {
     }
     parameterNames.resize(m_names.size());
     bases.resize(m_names.size());
+    m_hidden.resize(m_names.size());
     m_predefined = m_names.size();
+}
+
+ModuleClasses ModuleClasses::seededFrom(const ModuleClasses& ids) {
+    ModuleClasses out;
+    out.adopt(ids, true);
+    return out;
+}
+
+void ModuleClasses::adopt(const ModuleClasses& other, bool hidden) {
+    if (!hidden)  // what `other` declared of classes this table knew
+        for (size_t c = m_predefined; c < std::min(m_names.size(), other.m_names.size()); ++c)
+            if (!other.parameterNames[c].empty()) parameterNames[c] = other.parameterNames[c];
+    for (size_t c = m_names.size(); c < other.m_names.size(); ++c) {
+        m_names.push_back(other.m_names[c]);
+        m_ids.insert_or_assign(other.m_names[c], int(c));
+        m_longest = std::max(m_longest, other.m_names[c].size());
+        parameterNames.push_back(hidden ? std::vector<std::string>{} : other.parameterNames[c]);
+        bases.emplace_back();
+        m_hidden.push_back(hidden);
+    }
 }
 
 int ModuleClasses::find(std::string_view name) const {
     auto it = m_ids.find(std::string(name));
-    return it == m_ids.end() ? -1 : it->second;
+    return it == m_ids.end() || m_hidden[size_t(it->second)] ? -1 : it->second;
 }
 
 void ModuleClasses::alias(std::string_view name, int cls) {
     if (name.empty() || find(name) >= 0) return;
-    m_ids.emplace(std::string(name), cls);
+    m_ids.insert_or_assign(std::string(name), cls);
     m_longest = std::max(m_longest, name.size());
 }
 
 int ModuleClasses::intern(std::string_view name) {
-    if (int id = find(name); id >= 0) return id;
+    if (auto it = m_ids.find(std::string(name)); it != m_ids.end()) {
+        m_hidden[size_t(it->second)] = false;  // a seeded name, used again: its id
+        return it->second;
+    }
     const int id = int(m_names.size());
     m_names.emplace_back(name);
     m_ids.emplace(std::string(name), id);
     m_longest = std::max(m_longest, name.size());
     parameterNames.emplace_back();
     bases.emplace_back();
+    m_hidden.push_back(false);
     return id;
 }
 

@@ -411,6 +411,7 @@ PYBIND11_MODULE(_sprout, m) {
             py::arg("path"), py::arg("n") = py::none(), py::arg("seed") = py::none(), py::arg("sides") = 0,
             "Writes a glTF binary, OBJ + MTL, PLY or SVG of step n");
 
+    m.def("_install_openalea", &lpy::installOpenalea);
     m.def("open", &openSource, py::arg("source"), py::arg("python") = true, py::arg("steps") = -1,
           "A file of any kind Sprout opens (.lsys, ABOP notation, cpfg .l, .lpy, Lparser .ls, Fractint .l or FILE.l:System, "
           "a PNG written by Sprout) or a preset's name. An L-Py model is a Python program: it runs here as `python3 FILE` "

@@ -41,14 +41,19 @@ def _embed(name, source, file):
         _sys.meta_path.append(_Embedded)
 
 
-def _begin(ns, file):
-    """A new run: the model's namespace and file, nothing remembered from an earlier run."""
+def _begin(ns, file, context=None):
+    """A new run: the model's namespace and file in a context of its own (`context`: an
+    Lsystem's), made current; nothing remembered from an earlier run."""
     # On-demand modules keep state of their own (__lpyfuture__'s kept strings): imported afresh.
     for name in _Embedded.sources:
         _sys.modules.pop(name, None)
         globals().pop(name.rpartition('.')[2], None)
-    _state.clear()
-    _state.update(ns=ns, file=file, materials={}, angle=None, warnings=[], options={}, timestep=None)
+    if context is None:
+        context = LsysContext()
+        _contexts.clear()
+    context._state.update(ns=ns, file=file, warnings=[])
+    context.makeCurrent()
+    return context
 
 
 def _warn(message):
@@ -60,65 +65,123 @@ def _warn(message):
 
 
 class _Options:
+    def __init__(self, state):
+        self._state = state
+
     def setSelection(self, name, index):
-        _state['options'][name] = index
+        self._state['options'][name] = index
 
     def __getitem__(self, name):
-        return _state['options'].get(name)
+        return self._state['options'].get(name)
+
+    def find(self, name):
+        return self._state['options'].get(name)
 
 
 class _Turtle:
+    def __init__(self, state):
+        self._state = state
+
     def setAngleIncrement(self, angle):
-        _state['angle'] = float(angle)
+        self._state['angle'] = float(angle)
 
     def setMaterial(self, index, material):
-        _state['materials'][int(index)] = material
+        self._state['materials'][int(index)] = material
+
+    def getMaterial(self, index):
+        return self._state['materials'].get(int(index))
 
     def __getattr__(self, name):
+        if name.startswith('_'):
+            raise AttributeError(name)
+
         def ignored(*args, **kwargs):
             _warn("context().turtle.%s is not provided by Sprout: ignored" % name)
         return ignored
 
 
-class _Context:
+class LsysContext:
+    """L-Py's LsysContext: a model's namespace (context['k'] = v), its options, the turtle's
+    settings and materials. The current one is what a running model's context() gives;
+    makeCurrent() and done() switch to it and back."""
+
     def __init__(self):
-        self.turtle = _Turtle()
-        self.options = _Options()
+        self._state = dict(ns={}, file=None, materials={}, angle=None, warnings=[], options={}, timestep=None, scales={})
+        self.turtle = _Turtle(self._state)
+        self.options = _Options(self._state)
+
+    def makeCurrent(self):
+        global _state, _current
+        _contexts.append(_current)
+        _current, _state = self, self._state
+
+    def done(self):
+        global _state, _current
+        previous = _contexts.pop() if _contexts else None
+        _current = previous if previous is not None else LsysContext()
+        _state = _current._state
+
+    def isCurrent(self):
+        return _current is self
+
+    def __enter__(self):
+        self.makeCurrent()
+        return self
+
+    def __exit__(self, *exc):
+        self.done()
 
     @property
     def animation_timestep(self):
-        return _state.get('timestep')
+        return self._state.get('timestep')
 
     @animation_timestep.setter
     def animation_timestep(self, value):
-        _state['timestep'] = value
+        self._state['timestep'] = value
 
     def __setitem__(self, name, value):
-        _state['ns'][name] = value
+        self._state['ns'][name] = value
 
     def __getitem__(self, name):
-        return _state['ns'][name]
+        return self._state['ns'][name]
+
+    def __delitem__(self, name):
+        del self._state['ns'][name]
 
     def __contains__(self, name):
-        return name in _state['ns']
+        return name in self._state['ns']
 
     def get(self, name, default=None):
-        return _state['ns'].get(name, default)
+        return self._state['ns'].get(name, default)
+
+    def globals(self):
+        return self._state['ns']
 
     def getIterationNb(self):
         return getIterationNb()
 
+    def setModuleScale(self, names, scale):
+        for name in str(names).split(','):
+            if name.strip():
+                self._state['scales'][name.strip()] = int(scale)
+
     def __getattr__(self, name):
+        if name.startswith('_'):
+            raise AttributeError(name)
+
         def ignored(*args, **kwargs):
             _warn("context().%s is not provided by Sprout: ignored" % name)
         return ignored
 
 
-_context = _Context()
+_contexts = []  # the contexts made current before, for done()
+_current = LsysContext()
+_state = _current._state
+_Context = LsysContext
 
 
 def context():
-    return _context
+    return _current
 
 
 execContext = context

@@ -53,6 +53,30 @@ Plant.steps = _steps
 Plant.png = _png_bytes
 
 
+def use_as_openalea():
+    """Makes `import openalea.lpy` and `import openalea.plantgl.all` give Sprout's in this
+    interpreter, so scripts written for L-Py run unchanged (`Lsystem`, `Lstring`, ...). Where a
+    real openalea.lpy is installed, says so and changes nothing. Returns openalea.lpy."""
+    import importlib.util
+    import sys
+    import warnings
+
+    mod = sys.modules.get("openalea.lpy")
+    if mod is not None and str(getattr(mod, "__file__", "")).startswith("<sprout>"):
+        return mod
+    try:
+        real = mod is not None or importlib.util.find_spec("openalea.lpy") is not None
+    except (ImportError, ValueError):
+        real = False
+    if real:
+        warnings.warn("sprout.use_as_openalea(): a real openalea.lpy is installed here; it is left as it is")
+        return importlib.import_module("openalea.lpy")
+    from ._sprout import _install_openalea
+
+    _install_openalea()
+    return sys.modules["openalea.lpy"]
+
+
 def slider(plant, width=480, height=360, seed=None):
     """A step slider over the plant's growth (ipywidgets), its picture redrawn at each step."""
     import ipywidgets as widgets

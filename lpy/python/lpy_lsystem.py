@@ -1,0 +1,264 @@
+# openalea.lpy's Lsystem as L-Py defines it (src/cpp/lsystem.h, src/wrapper/export_lsystem.cpp,
+# src/openalea/lpy/__init__.py), on Sprout's engine: `_Session` (lpy/session.cpp) holds a
+# model's translation, namespace and engine between calls; this class gives it L-Py's API.
+import io as _io
+import os as _os
+
+from _sprout_lpy import _Session, Lstring
+import openalea.lpy as _lpy
+
+__all__ = ['Lsystem', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
+           'eProduction', 'eDecomposition', 'eInterpretation']
+
+AxialTree = Lstring
+from _sprout_lpy import Module as ParamModule  # noqa: E402
+
+eForward, eBackward = 0, 1
+eProduction, eDecomposition, eInterpretation = 0, 1, 2
+
+
+def _read(filename):
+    """A model file's text, as L-Py reads it: UTF-8 (a Latin-1 file read as such), any line
+    ends."""
+    with open(filename, 'rb') as f:
+        data = f.read()
+    try:
+        text = data.decode('utf-8')
+    except UnicodeDecodeError:
+        text = data.decode('latin-1')
+    return text.replace('\r\n', '\n').replace('\r', '\n')
+
+
+class Lsystem:
+    """An L-system read from a file or from code, derived and interpreted on demand:
+    Lsystem(filename=None, parameters=None); parameters override the model's names (after its
+    INITIALISATION part, before the rest of its code)."""
+
+    def __init__(self, filename=None, parameters=None):
+        self._context = _lpy.LsysContext()
+        self._session = None
+        self._code = ''
+        self._parameters = {}
+        self._axiom = None  # set through the `axiom` property
+        self._last = 0
+        self._scene = None
+        self.filename = ''
+        if filename:
+            self.read(filename, parameters or {})
+
+    # -- reading -------------------------------------------------------------------------
+    def read(self, filename, parameters={}):
+        """Reads a model file and runs its code."""
+        text = _read(filename)
+        self.filename = filename
+        self.set(text, parameters)
+
+    def set(self, code, parameters={}, debug=False):
+        """Sets the model's code (and runs it): the namespace starts afresh."""
+        file = _os.path.abspath(self.filename) if self.filename else '<lsystem>'
+        self._context._state['ns'] = {}
+        ctx = _lpy._begin(self._context._state['ns'], file, self._context)
+        try:
+            self._session = _Session(code, file, ctx._state['ns'], dict(parameters or {}))
+        finally:
+            ctx.done()
+        self._code, self._parameters, self._axiom, self._last = code, dict(parameters or {}), None, 0
+        return None
+
+    def setCode(self, code, parameters={}, debug=False):
+        return self.set(code, parameters, debug)
+
+    def code(self):
+        return self._code
+
+    def clear(self):
+        self.__init__()
+
+    def empty(self):
+        return self._session is None
+
+    def isCompiled(self):
+        return self._session is not None
+
+    def compile(self):
+        pass
+
+    def _need(self):
+        if self._session is None:
+            self.set('')
+        return self._session
+
+    # -- the model's settings ------------------------------------------------------------
+    @property
+    def axiom(self):
+        if self._axiom is not None:
+            return Lstring(self._axiom)
+        s = self._need()
+        with self._context:
+            return s.axiom()
+
+    @axiom.setter
+    def axiom(self, value):
+        with self._context:
+            self._axiom = Lstring(value)
+
+    def setAxiom(self, value):
+        self.axiom = value
+
+    @property
+    def derivationLength(self):
+        return self._need().derivationLength
+
+    @derivationLength.setter
+    def derivationLength(self, n):
+        self._need().derivationLength = int(n)
+
+    def setDerivationLength(self, n):
+        self.derivationLength = n
+
+    def context(self):
+        return self._context
+
+    execContext = context
+
+    def makeCurrent(self):
+        self._context.makeCurrent()
+
+    def done(self):
+        self._context.done()
+
+    def isCurrent(self):
+        return self._context.isCurrent()
+
+    def getLastIterationNb(self):
+        return self._last
+
+    def nbProductionRules(self, group=0):
+        return self._need().rules(0, group)
+
+    def nbDecompositionRules(self, group=0):
+        return self._need().rules(1, group)
+
+    def nbInterpretationRules(self, group=0):
+        return self._need().rules(2, group)
+
+    def nbTotalRules(self):
+        return sum(self._need().rules(k) for k in range(3))
+
+    def nbGroups(self):
+        return max(self._need().groups() or [0]) + 1
+
+    # -- deriving ------------------------------------------------------------------------
+    def derive(self, *args, **kwargs):
+        """derive(), derive(nb), derive(lstring), derive(lstring, nb),
+        derive(lstring, start, nb): the string after nb steps (the model's derivation
+        length by default), from iteration `start`."""
+        s = self._need()
+        names = ('workstring', 'starting_iter', 'nb_iter', 'previouslyinterpreted')
+        args = list(args) + [kwargs.pop(n) for n in names[len(args):] if n in kwargs]
+        if kwargs:
+            raise TypeError("derive() got unexpected arguments: %s" % ", ".join(kwargs))
+        lstring, start, nb = None, 0, None
+        if args and isinstance(args[0], int):
+            nb = args[0]
+            args = []
+        elif args:
+            lstring = args[0]
+            if len(args) == 2:
+                nb = args[1]
+            elif len(args) >= 3:
+                start, nb = args[1], args[2]
+        with self._context:
+            if lstring is None:
+                lstring = self.axiom
+            elif not isinstance(lstring, Lstring):
+                lstring = Lstring(lstring)
+            if nb is None:
+                nb = s.derivationLength - start
+            out = s.derive(lstring, int(start), int(nb))
+            self._last = s.iteration
+        return out
+
+    iterate = derive
+
+    def __iter__(self):
+        return LsystemIterator(self)
+
+    def interpret(self, lstring):
+        """The string with the interpretation rules applied."""
+        with self._context:
+            return self._need().interpret(Lstring(lstring) if not isinstance(lstring, Lstring) else lstring)
+
+    homomorphism = interpret
+
+    def sceneInterpretation(self, lstring):
+        """The scene the turtle draws from the string (openalea.plantgl.all.Scene)."""
+        from openalea.plantgl.all import Scene
+        with self._context:
+            text, left = self._need().drawing(lstring if isinstance(lstring, Lstring) else Lstring(lstring))
+        scene = Scene()
+        scene._sprout = text
+        self._scene = scene
+        return scene
+
+    def getLastComputedScene(self):
+        return self._scene
+
+    def plot(self, lstring=None, checkLastComputedScene=False):
+        """Draws the string (without a viewer in this process: the scene is computed)."""
+        self.sceneInterpretation(self.axiom if lstring is None else lstring)
+
+    def animate(self, *args):
+        """Derives step by step (L-Py shows each step; without a viewer, the last string)."""
+        lstring = None
+        if args and not isinstance(args[0], (int, float)):
+            lstring, args = args[0], args[1:]
+        nb = int(args[2]) if len(args) > 2 else int(args[1]) if len(args) > 1 else None
+        out = self.derive(lstring if lstring is not None else self.axiom, 0,
+                          self.derivationLength if nb is None else nb)
+        self.plot(out)
+        return out
+
+    def record(self, *args, **kwargs):
+        raise NotImplementedError("Lsystem.record: use `sprout render` or `sprout export` for pictures and videos")
+
+    # -- pickling ------------------------------------------------------------------------
+    def __getstate__(self):
+        return dict(code=self._code, parameters=self._parameters, filename=self.filename)
+
+    def __setstate__(self, state):
+        self.__init__()
+        self.filename = state.get('filename', '')
+        self.set(state['code'], state.get('parameters', {}))
+
+    def __str__(self):
+        return self._code
+
+
+class LsystemIterator:
+    """The strings of an Lsystem's derivation, step by step (L-Py's LsystemIterator)."""
+
+    def __init__(self, lsystem, start=0, stop=None, step=1):
+        assert step >= 1 and start >= 0
+        self.lsystem, self.start, self.step = lsystem, start, step
+        self.stop = lsystem.derivationLength if stop is None else stop
+        self.currentstep = -1
+        self.axiom = None
+
+    def __next__(self):
+        if self.currentstep == -1:
+            self.axiom = self.lsystem.axiom
+            if self.start != 0:
+                self.axiom = self.lsystem.derive(self.axiom, 0, self.start)
+            self.currentstep = self.start
+            return self.axiom
+        if self.currentstep + self.step > self.stop:
+            raise StopIteration()
+        self.axiom = self.lsystem.derive(self.axiom, self.currentstep, self.step)
+        self.currentstep += self.step
+        return self.axiom
+
+    next = __next__
+
+    def __iter__(self):
+        return self

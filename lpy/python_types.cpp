@@ -1,0 +1,387 @@
+// The Python classes of L-Py's strings (lpy/host_impl.hpp): Module (ParamModule), ModuleClass
+// and Lstring (AxialTree), as L-Py defines them (src/wrapper/export_axialtree.cpp,
+// export_module.cpp, export_moduleclass.cpp): inside a rule's body, in a hook, or in a
+// script that drives an Lsystem. Their names are the running engine's, or the process's
+// table of names outside a derivation (names()).
+#include <pybind11/stl.h>
+
+#include "lpy/host_impl.hpp"
+
+namespace py = pybind11;
+
+namespace sprout::lpy {
+namespace {
+
+const std::string& nameOf(int cls) {
+    static const std::string unknown = "?";
+    const ModuleClasses& c = names();
+    return cls >= 0 && size_t(cls) < c.size() ? c.name(cls) : unknown;
+}
+
+py::object moduleArg(LModule& m, py::ssize_t k) {
+    const py::ssize_t n = m.args ? py::ssize_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
+    if (k < 0) k += n;
+    if (k < 0 || k >= n) throw py::index_error("module parameter index out of range");
+    return m.args[py::size_t(k)];
+}
+
+PyModule viewOf(const std::shared_ptr<LString>& s, size_t i) {
+    PyModule m;
+    m.owner = s;
+    m.index = i;
+    return m;
+}
+
+py::dict namespaceNow() {
+    Engine* e = currentEngine();
+    return e ? e->ns() : looseNamespace();
+}
+
+// `s += 'B'`, `s + other`: text is read as an lstring, anything else as produce takes it.
+void extend(LString& s, py::handle v) {
+    if (py::isinstance<py::str>(v)) {
+        LString more = parseLstring(v.cast<std::string>(), names(), namespaceNow());
+        s.insert(s.end(), more.begin(), more.end());
+    } else {
+        appendValue(s, v, names().size());
+    }
+}
+
+bool sameModule(const LModule& a, const LModule& b) {
+    const bool noneA = !a.args || py::len(a.args) == 0, noneB = !b.args || py::len(b.args) == 0;
+    if (a.cls != b.cls || noneA != noneB) return false;
+    return noneA || a.args.equal(b.args);
+}
+
+size_t checkedIndex(const LString& s, py::ssize_t i) {
+    const py::ssize_t n = py::ssize_t(s.size());
+    if (i < 0) i += n;
+    if (i < 0 || i >= n) throw py::index_error("Lstring index out of range");
+    return size_t(i);
+}
+
+// The axial tree of a string (L-Py's AxialTree navigation: src/cpp/axialtree.cpp): a
+// module's parent, its first son on the same axis, its lateral sons (each branch's first
+// module, through branches opened at once: `[[A]B]`).
+bool isPush(const LModule& m) { return m.cls == ModuleClasses::kPush; }
+bool isPop(const LModule& m) { return m.cls == ModuleClasses::kPop; }
+
+long closing(const LString& s, size_t open) {  // the ']' of the '[' at `open`, or -1
+    int depth = 0;
+    for (size_t j = open; j < s.size(); ++j) {
+        if (isPush(s[j])) ++depth;
+        else if (isPop(s[j]) && --depth == 0) return long(j);
+    }
+    return -1;
+}
+
+long opening(const LString& s, size_t close) {  // the '[' of the ']' at `close`, or -1
+    int depth = 0;
+    for (long j = long(close); j >= 0; --j) {
+        if (isPop(s[size_t(j)])) ++depth;
+        else if (isPush(s[size_t(j)]) && --depth == 0) return j;
+    }
+    return -1;
+}
+
+long parentOf(const LString& s, size_t i) {
+    for (long j = long(i) - 1; j >= 0; --j) {
+        if (isPop(s[size_t(j)])) {
+            j = opening(s, size_t(j));
+            if (j < 0) return -1;
+        } else if (!isPush(s[size_t(j)])) {
+            return j;
+        }
+    }
+    return -1;
+}
+
+long directSonOf(const LString& s, size_t i) {
+    for (size_t j = i + 1; j < s.size(); ++j) {
+        if (isPop(s[j])) return -1;
+        if (!isPush(s[j])) return long(j);
+        const long c = closing(s, j);
+        if (c < 0) return -1;
+        j = size_t(c);
+    }
+    return -1;
+}
+
+// The first module of the branches that open at j (and of branches opened at their start).
+void branchHeads(const LString& s, size_t j, std::vector<long>& out) {
+    while (j < s.size() && isPush(s[j])) {
+        const long c = closing(s, j);
+        size_t k = j + 1;
+        if (k < s.size() && isPush(s[k])) branchHeads(s, k, out);
+        while (k < s.size() && isPush(s[k])) {
+            const long ck = closing(s, k);
+            if (ck < 0) return;
+            k = size_t(ck) + 1;
+        }
+        if (k < s.size() && !isPop(s[k])) out.push_back(long(k));
+        if (c < 0) return;
+        j = size_t(c) + 1;
+    }
+}
+
+std::vector<long> lateralSonsOf(const LString& s, size_t i) {
+    std::vector<long> out;
+    branchHeads(s, i + 1, out);
+    return out;
+}
+
+py::object indexOrNone(long i) { return i < 0 ? py::object(py::none()) : py::object(py::int_(i)); }
+
+py::object listOrNone(const std::vector<long>& v) {
+    if (v.empty()) return py::none();
+    py::list out;
+    for (long i : v) out.append(i);
+    return out;
+}
+
+// An Lstring made from what L-Py's AxialTree takes: text, a list of modules, another Lstring.
+PyLstring makeLstring(py::handle v) {
+    PyLstring out{std::make_shared<LString>()};
+    if (!v.is_none()) extend(*out.s, v);
+    return out;
+}
+
+// The modules of s[from:to:step] (Python's slice), as a new Lstring.
+PyLstring sliceOf(const PyLstring& s, const py::slice& sl) {
+    size_t start = 0, stop = 0, step = 0, n = 0;
+    if (!sl.compute(s.s->size(), &start, &stop, &step, &n)) throw py::error_already_set();
+    PyLstring out{std::make_shared<LString>()};
+    for (size_t k = 0; k < n; ++k, start += step) out.s->push_back((*s.s)[start]);
+    return out;
+}
+
+// (name, args) pairs: how an Lstring or a module is pickled.
+py::list stateOf(const LString& s) {
+    py::list out;
+    for (const LModule& m : s) out.append(py::make_tuple(nameOf(m.cls), m.args ? m.args : py::tuple()));
+    return out;
+}
+
+LString fromState(py::handle state) {
+    LString out;
+    for (py::handle item : state) {
+        LModule m;
+        m.cls = names().intern(item[py::int_(0)].cast<std::string>());
+        m.args = py::reinterpret_borrow<py::tuple>(item[py::int_(1)]);
+        out.push_back(std::move(m));
+    }
+    return out;
+}
+
+}  // namespace
+
+void defineTypes(py::module_& m) {
+    py::class_<PyModuleClass>(m, "ModuleClass")
+        .def_property_readonly("name", [](const PyModuleClass& c) { return nameOf(c.cls); })
+        .def("__call__", [](const PyModuleClass& c, py::args args) {
+            PyModule out;
+            out.own = {c.cls, py::tuple(args)};
+            return out;
+        })
+        .def("__repr__", [](const PyModuleClass& c) { return "ModuleClass(" + nameOf(c.cls) + ")"; })
+        .def("__eq__", [](const PyModuleClass& a, const PyModuleClass& b) { return a.cls == b.cls; })
+        .def("__hash__", [](const PyModuleClass& c) { return c.cls; })
+        // L-Py's module classes by name, and their inheritance (`module B : base = A`).
+        .def_static("get", [](const std::string& name) -> py::object {
+            const int cls = names().find(name);
+            return cls < 0 ? py::object(py::none()) : py::cast(PyModuleClass{cls});
+        })
+        .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) { return names().derivesFrom(c.cls, base.cls); });
+    m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
+
+    py::class_<PyModule>(m, "Module")
+        .def(py::init([](const std::string& name, py::args args) {
+            PyModule out;
+            out.own = {names().intern(name), py::tuple(args)};
+            return out;
+        }))
+        .def(py::init([](const PyModuleClass& c, py::args args) {
+            PyModule out;
+            out.own = {c.cls, py::tuple(args)};
+            return out;
+        }))
+        .def_property_readonly("name", [](PyModule& self) { return nameOf(self.get().cls); })
+        .def_property_readonly("mclass", [](PyModule& self) { return PyModuleClass{self.get().cls}; })
+        .def_property_readonly("args", [](PyModule& self) { return py::list(self.get().args ? self.get().args : py::tuple()); })
+        .def("__len__", [](PyModule& self) { return self.get().args ? py::len(self.get().args) : 0; })
+        .def("argSize", [](PyModule& self) { return self.get().args ? py::len(self.get().args) : 0; })
+        .def("__getitem__", [](PyModule& self, py::ssize_t k) { return moduleArg(self.get(), k); })
+        .def("__setitem__", [](PyModule& self, py::ssize_t k, py::object v) {
+            LModule& mod = self.get();
+            moduleArg(mod, k);  // range check
+            const py::ssize_t n = py::ssize_t(PyTuple_GET_SIZE(mod.args.ptr()));
+            if (k < 0) k += n;
+            py::list l(mod.args);
+            l[py::size_t(k)] = v;
+            mod.args = py::tuple(l);
+        })
+        .def("append", [](PyModule& self, py::object v) {
+            LModule& mod = self.get();
+            py::list l(mod.args ? mod.args : py::tuple());
+            l.append(v);
+            mod.args = py::tuple(l);
+        })
+        .def("__getattr__", [](PyModule& self, const std::string& attr) -> py::object {
+            LModule& mod = self.get();
+            const auto& params = names().parameterNames;
+            if (size_t(mod.cls) < params.size())
+                for (size_t k = 0; k < params[size_t(mod.cls)].size(); ++k)
+                    if (params[size_t(mod.cls)][k] == attr) return moduleArg(mod, py::ssize_t(k));
+            throw py::attribute_error("module " + nameOf(mod.cls) + " has no parameter " + attr);
+        })
+        .def("__eq__", [](PyModule& a, py::object b) {
+            if (!py::isinstance<PyModule>(b)) return false;
+            return sameModule(a.get(), py::cast<PyModule&>(b).get());
+        })
+        .def("__copy__", [](PyModule& self) {
+            PyModule out;
+            out.own = self.get();
+            return out;
+        })
+        .def(py::pickle([](PyModule& self) { return stateOf({self.get()}); },
+                        [](py::list state) {
+                            PyModule out;
+                            LString s = fromState(state);
+                            if (s.size() != 1) throw py::value_error("not a pickled module");
+                            out.own = s[0];
+                            return out;
+                        }))
+        .def("__str__", [](PyModule& self) { return writeLstring({self.get()}, names()); })
+        .def("__repr__", [](PyModule& self) { return writeLstring({self.get()}, names()); });
+
+    py::class_<PyLstring>(m, "Lstring")
+        .def(py::init([] { return PyLstring{std::make_shared<LString>()}; }))
+        .def(py::init([](py::object v) { return makeLstring(v); }))
+        // L-Py compares an Lstring with another or with text (`lstring == 'BSABSA'`): the same
+        // modules with equal parameters.
+        .def("__eq__", [](const PyLstring& s, py::object v) {
+            LString other;
+            try {
+                extend(other, v);
+            } catch (const std::exception&) {
+                return false;  // not something a string is made of (a number, a dict)
+            }
+            if (other.size() != s.s->size()) return false;
+            for (size_t k = 0; k < other.size(); ++k)
+                if (!sameModule((*s.s)[k], other[k])) return false;
+            return true;
+        })
+        .def("__ne__", [](py::object s, py::object v) { return !s.attr("__eq__")(v).cast<bool>(); })
+        .def("__iadd__", [](PyLstring& s, py::object v) {
+            extend(*s.s, v);
+            return s;
+        })
+        .def("__add__", [](const PyLstring& s, py::object v) {
+            PyLstring out{std::make_shared<LString>(*s.s)};
+            extend(*out.s, v);
+            return out;
+        })
+        .def("__radd__", [](const PyLstring& s, py::object v) {
+            PyLstring out = makeLstring(v);
+            out.s->insert(out.s->end(), s.s->begin(), s.s->end());
+            return out;
+        })
+        .def("__mul__", [](const PyLstring& s, int times) {
+            PyLstring out{std::make_shared<LString>()};
+            for (int k = 0; k < times; ++k) out.s->insert(out.s->end(), s.s->begin(), s.s->end());
+            return out;
+        })
+        .def("__len__", [](const PyLstring& s) { return s.s->size(); })
+        .def("__bool__", [](const PyLstring& s) { return !s.s->empty(); })
+        .def("__getitem__", [](const PyLstring& s, py::ssize_t i) { return viewOf(s.s, checkedIndex(*s.s, i)); })
+        .def("__getitem__", [](const PyLstring& s, const py::slice& sl) { return sliceOf(s, sl); })
+        .def("__setitem__", [](PyLstring& s, py::ssize_t i, py::object v) {
+            const size_t at = checkedIndex(*s.s, i);
+            LString one;
+            appendValue(one, v, names().size());
+            if (one.size() != 1) throw py::value_error("an Lstring item is one module");
+            (*s.s)[at] = one[0];
+        })
+        .def("__delitem__", [](PyLstring& s, py::ssize_t i) { s.s->erase(s.s->begin() + std::ptrdiff_t(checkedIndex(*s.s, i))); })
+        .def("__delitem__", [](PyLstring& s, const py::slice& sl) {
+            size_t start = 0, stop = 0, step = 0, n = 0;
+            if (!sl.compute(s.s->size(), &start, &stop, &step, &n)) throw py::error_already_set();
+            std::vector<bool> drop(s.s->size(), false);
+            for (size_t k = 0; k < n; ++k, start += step) drop[start] = true;
+            LString kept;
+            for (size_t k = 0; k < s.s->size(); ++k)
+                if (!drop[k]) kept.push_back((*s.s)[k]);
+            *s.s = std::move(kept);
+        })
+        .def("__iter__", [](const PyLstring& s) {
+            py::list l;
+            for (size_t i = 0; i < s.s->size(); ++i) l.append(viewOf(s.s, i));
+            return py::iter(l);
+        })
+        .def("insertAt", [](PyLstring& s, py::ssize_t i, py::object v) {
+            LString items;
+            extend(items, v);
+            const size_t at = size_t(std::clamp<py::ssize_t>(i, 0, py::ssize_t(s.s->size())));
+            s.s->insert(s.s->begin() + std::ptrdiff_t(at), items.begin(), items.end());
+        })
+        .def("append", [](PyLstring& s, py::object v) { extend(*s.s, v); })
+        .def("prepend", [](PyLstring& s, py::object v) {
+            LString items;
+            extend(items, v);
+            s.s->insert(s.s->begin(), items.begin(), items.end());
+        })
+        .def("clear", [](PyLstring& s) { s.s->clear(); })
+        .def("empty", [](const PyLstring& s) { return s.s->empty(); })
+        .def("reverse", [](PyLstring& s) { std::reverse(s.s->begin(), s.s->end()); })
+        // count('A') counts the modules named A; count(A(1)) those equal to a module.
+        .def("count", [](const PyLstring& s, py::object what) {
+            size_t n = 0;
+            if (py::isinstance<py::str>(what)) {
+                const int cls = names().find(what.cast<std::string>());
+                for (const LModule& m : *s.s) n += m.cls == cls && cls >= 0;
+            } else {
+                LString one;
+                appendValue(one, what, names().size());
+                if (one.size() == 1)
+                    for (const LModule& m : *s.s) n += sameModule(m, one[0]);
+            }
+            return n;
+        })
+        // find('C', start, end): the first module named C, or -1.
+        .def("find", [](const PyLstring& s, const std::string& name, size_t start, py::object end) -> long {
+            const int cls = names().find(name);
+            const size_t stop = end.is_none() ? s.s->size() : std::min(s.s->size(), end.cast<size_t>());
+            for (size_t i = start; i < stop && cls >= 0; ++i)
+                if ((*s.s)[i].cls == cls) return long(i);
+            return -1;
+        }, py::arg("name"), py::arg("start") = 0, py::arg("end") = py::none())
+        .def("wellBracketed", [](const PyLstring& s) {
+            long depth = 0;
+            for (const LModule& m : *s.s) {
+                depth += isPush(m) ? 1 : isPop(m) ? -1 : 0;
+                if (depth < 0) return false;
+            }
+            return depth == 0;
+        })
+        .def("parent", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("father", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("direct_child", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("directSon", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("lateral_children", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("lateralSons", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("children", [](const PyLstring& s, py::ssize_t i) {
+            const size_t at = checkedIndex(*s.s, i);
+            std::vector<long> out = lateralSonsOf(*s.s, at);
+            if (long d = directSonOf(*s.s, at); d >= 0) out.push_back(d);
+            return listOrNone(out);
+        })
+        .def("sons", [](py::object s, py::ssize_t i) { return s.attr("children")(i); })
+        .def("__copy__", [](const PyLstring& s) { return PyLstring{std::make_shared<LString>(*s.s)}; })
+        .def("__deepcopy__", [](const PyLstring& s, py::object) { return PyLstring{std::make_shared<LString>(*s.s)}; })
+        .def(py::pickle([](const PyLstring& s) { return stateOf(*s.s); },
+                        [](py::list state) { return PyLstring{std::make_shared<LString>(fromState(state))}; }))
+        .def("__str__", [](const PyLstring& s) { return writeLstring(*s.s, names()); })
+        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + writeLstring(*s.s, names()) + "')"; });
+}
+
+}  // namespace sprout::lpy

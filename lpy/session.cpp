@@ -1,0 +1,126 @@
+// An L-system kept between calls: what openalea.lpy's Lsystem (lpy/python/lpy_lsystem.py)
+// drives from a script or a notebook, as L-Py's Lsystem does (src/cpp/lsystem.cpp): the code
+// read once (translated, its INITIALISATION part, the parameters given, then the rest), then
+// derive, interpret and axiom as often as the caller asks, the engine and its namespace
+// living as long as the Python object. The engine is Sprout's, native path included.
+#include <pybind11/stl.h>
+
+#include "core/language/module_string.hpp"
+#include "lpy/host_impl.hpp"
+#include "lpy/python2.hpp"
+
+namespace py = pybind11;
+
+namespace sprout::lpy {
+namespace {
+
+// Python's cycle collector paused while a string of many tuples is made (lpy/host.cpp).
+struct PausedCollector {
+    int was = PyGC_Disable();
+    ~PausedCollector() {
+        if (was) PyGC_Enable();
+    }
+};
+
+[[noreturn]] void raiseSyntaxError(const Diagnostic& d, const std::string& file, std::string_view code) {
+    const std::string line(lineOf(code, d.line));
+    py::object args = py::make_tuple(d.message, py::make_tuple(file, d.line, d.col, line));
+    PyErr_SetObject(PyExc_SyntaxError, args.ptr());
+    throw py::error_already_set();
+}
+
+class Session {
+public:
+    Session(const std::string& code, const std::string& file, py::dict ns, py::dict parameters) : m_file(file), m_ns(ns) {
+        Translation tr = translate(code, &registry());
+        for (const Diagnostic& d : tr.diagnostics)
+            if (d.severity == Severity::Error) raiseSyntaxError(d, file, code);
+        registry().adopt(tr.classes, false);
+        std::string init = tr.initCode, main = tr.mainCode;
+        ns["__builtins__"] = py::module_::import("builtins");
+        ns["__file__"] = file;
+        if (!ns.contains("__name__")) ns["__name__"] = "__lpy__";
+        prepareNamespace(ns, file.empty() || file[0] == '<' ? std::string() : file);
+        m_engine = std::make_unique<Engine>(std::move(tr), ns, m_options);
+        EngineScope scope(m_engine.get());
+        py::module_ builtins = py::module_::import("builtins"), lpy = py::module_::import("openalea.lpy");
+        builtins.attr("exec")(builtins.attr("compile")(init, file, "exec"), ns);
+        if (ns.contains("__initialiseContext__")) ns["__initialiseContext__"](lpy.attr("context")());
+        // The caller's parameters come after the INITIALISATION part, before the rest
+        // (extern(...) keeps them; a plain assignment in the code wins).
+        for (auto item : parameters) ns[item.first] = item.second;
+        builtins.attr("exec")(builtins.attr("compile")(main, file, "exec"), ns);
+        m_engine->bind();
+    }
+
+    PyLstring axiom() {
+        EngineScope scope(m_engine.get());
+        return PyLstring{std::make_shared<LString>(m_engine->axiom())};
+    }
+
+    // L-Py's derive(lstring, start, nb): Start at iteration 0, End at the last iteration.
+    PyLstring derive(const PyLstring& s, int start, int nb) {
+        if (start < 0 || nb < 0) throw py::value_error("derive: a start and a count of steps from 0 on");
+        EngineScope scope(m_engine.get());
+        PausedCollector paused;
+        LString out = m_engine->derive(*s.s, nb, nullptr, nullptr, start, m_engine->derivationLength);
+        return PyLstring{std::make_shared<LString>(std::move(out))};
+    }
+
+    PyLstring interpret(const PyLstring& s) {
+        EngineScope scope(m_engine.get());
+        return PyLstring{std::make_shared<LString>(m_engine->interpret(*s.s))};
+    }
+
+    // The string as Sprout's turtle draws it (the interpretation rules applied), and what the
+    // drawing left out: for sceneInterpretation and plot.
+    py::tuple drawing(const PyLstring& s) {
+        EngineScope scope(m_engine.get());
+        TurtleDefaults d = turtleDefaults(py::module_::import("openalea.lpy"));
+        std::vector<std::string> leftOut;
+        auto g = drawable(m_engine->interpret(*s.s), m_engine->classes(), d, &leftOut);
+        return py::make_tuple(toString(g->axiom, g->alphabet), leftOut);
+    }
+
+    int derivationLength() const { return m_engine->derivationLength; }
+    void setDerivationLength(int n) {
+        if (n < 0) throw py::value_error("derivationLength: a count of steps from 0 on");
+        m_engine->derivationLength = n;
+    }
+    int iteration() const { return m_engine->iteration; }
+    size_t rules(int kind, int group) const {
+        size_t n = 0;
+        for (const Rule& r : m_engine->translation().rules) n += int(r.kind) == kind && (group < 0 || r.group == group);
+        return n;
+    }
+    std::vector<int> groups() const {
+        std::vector<int> out;
+        for (const Rule& r : m_engine->translation().rules)
+            if (std::find(out.begin(), out.end(), r.group) == out.end()) out.push_back(r.group);
+        return out;
+    }
+
+private:
+    std::string m_file;
+    py::dict m_ns;
+    RunOptions m_options;  // the engine keeps a reference
+    std::unique_ptr<Engine> m_engine;
+};
+
+}  // namespace
+
+void defineSession(py::module_& m) {
+    py::class_<Session>(m, "_Session")
+        .def(py::init<const std::string&, const std::string&, py::dict, py::dict>(), py::arg("code"), py::arg("file"), py::arg("ns"),
+             py::arg("parameters"))
+        .def("axiom", &Session::axiom)
+        .def("derive", &Session::derive)
+        .def("interpret", &Session::interpret)
+        .def("drawing", &Session::drawing)
+        .def_property("derivationLength", &Session::derivationLength, &Session::setDerivationLength)
+        .def_property_readonly("iteration", &Session::iteration)
+        .def("rules", &Session::rules, py::arg("kind"), py::arg("group") = -1)
+        .def("groups", &Session::groups);
+}
+
+}  // namespace sprout::lpy
