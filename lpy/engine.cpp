@@ -192,7 +192,8 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
             s = std::move(next);
         }
         if (m_hasKind[dec]) s = decompose(std::move(s), m_depth[dec], RuleKind::Decomposition);
-        callHook("EndEach", &s, nullptr, &s);
+        frameDisplayed = animating || i == steps - 1;
+        endEach(s);
         ++done;
         if (everyStep) everyStep->push_back(s);
         if (contexts) matched->sort(), contexts->push_back(std::move(matched));
@@ -201,6 +202,36 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
     iteration = start + std::max(0, done - 1);
     if (start + done == total) callHook("End", &s, nullptr, &s);
     return s;
+}
+
+void Engine::endEach(LString& s) {
+    lastScene = py::none();
+    py::object fn = m_ns.contains("EndEach") ? py::object(m_ns["EndEach"]) : py::object();
+    if (!fn || arityOf(fn) < 2) {
+        callHook("EndEach", &s, nullptr, &s);
+        return;
+    }
+    py::object scene = frameDisplayed && sceneOf ? sceneOf(s) : py::object(py::none());
+    auto shared = std::make_shared<LString>(s);
+    py::object ret = fn(py::cast(PyLstring{shared}), scene);
+    s = *shared;
+    lastScene = scene;
+    if (ret.is_none()) return;
+    py::object string = ret;
+    if (py::isinstance<py::tuple>(ret) && py::len(ret) == 2 && !PyLong_Check(PyTuple_GET_ITEM(ret.ptr(), 0))) {
+        string = ret[py::int_(0)];
+        lastScene = ret[py::int_(1)];
+    } else if (!py::isinstance<PyLstring>(ret) && !py::isinstance<py::list>(ret)) {
+        lastScene = ret;  // a scene alone
+        return;
+    } else {
+        lastScene = py::none();  // a new string: its scene is made again
+    }
+    if (!string.is_none()) {
+        LString next;
+        append(next, string);
+        s = std::move(next);
+    }
 }
 
 bool Engine::isQuery(const std::string& name) {

@@ -137,6 +137,15 @@ public:
     // first interprets the string with a turtle that makes no picture and writes the turtle's
     // state into them (set by the host, which knows the turtle's settings).
     std::function<void(LString&)> fillQueries;
+    // The scene the turtle draws from a string (a PlantGL Scene in Python), for
+    // EndEach(lstring, scene); set by the host. Without it EndEach receives None.
+    std::function<py::object(const LString&)> sceneOf;
+    // L-Py's frame display: EndEach gets a scene at the steps whose frame is shown (every
+    // step while animating, else the last of a derive call); what it left as the scene to
+    // show (lastScene: the one computed, the one it returned, None when it changed the string).
+    bool animating = false;
+    bool frameDisplayed = false;
+    py::object lastScene;
     static bool isQuery(const std::string& name);
     LString parse(std::string_view lstring);
 
@@ -179,6 +188,7 @@ private:
     bool m_usesTurtle = false;
     py::object m_turtle;
     LString interpretationHook(const char* name);
+    void endEach(LString& s);  // the EndEach hook, with a scene when it takes two arguments
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'

@@ -69,6 +69,8 @@ static void defineSproutLpy(py::module_& m) {
     m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
     m.def("getGroup", [] { return engine().group; });
     m.def("getIterationNb", [] { return engine().iteration; });
+    m.def("isAnimationEnabled", [] { return currentEngine() && currentEngine()->animating; });
+    m.def("isFrameDisplayed", [] { return currentEngine() && currentEngine()->frameDisplayed; });
     // InLeftContext / InRightContext in a rule's body (lpy/translate_contexts.cpp).
     m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
     // `produce A(**p)`: p's values in the order of A's declared parameters.
@@ -457,6 +459,7 @@ Model runModel(std::string_view text, const RunOptions& options) {
     } restore{sys, savedStdout};
     Engine engine(std::move(tr), ns, options);
     EngineScope scope(&engine);
+    engine.sceneOf = [&engine](const LString& s) { return sceneOf(engine, s); };
     CancelWatch watch(options.cancel);
     auto builtins = py::module_::import("builtins");
     try {

@@ -50,6 +50,10 @@ Diagnostic describe(py::error_already_set& e, const std::string& file, std::stri
 // The model's turtle settings and materials as its context holds them.
 TurtleDefaults turtleDefaults(const py::module_& lpyModule);
 
+// The scene the turtle draws from `s` with the engine's interpretation rules: a PlantGL Scene
+// of shapes whose ids are the modules of `s` that drew them (L-Py's sceneInterpretation).
+py::object sceneOf(Engine& engine, const LString& s);
+
 // The Python classes of `_sprout_lpy` (python_types.cpp: Module, ModuleClass, Lstring;
 // session.cpp: _Session, which openalea.lpy's Lsystem drives).
 void defineTypes(py::module_& m);

@@ -5,6 +5,7 @@
 // living as long as the Python object. The engine is Sprout's, native path included.
 #include <pybind11/stl.h>
 
+#include "core/derive/draw.hpp"
 #include "core/language/module_string.hpp"
 #include "lpy/host_impl.hpp"
 #include "lpy/python2.hpp"
@@ -29,6 +30,51 @@ struct PausedCollector {
     throw py::error_already_set();
 }
 
+}  // namespace
+
+py::object sceneOf(Engine& engine, const LString& s) {
+    TurtleDefaults d = turtleDefaults(py::module_::import("openalea.lpy"));
+    const LString shown = engine.interpret(s);
+    std::vector<std::uint32_t> from, segments, surfaces;
+    auto g = drawable(shown, engine.classes(), d, nullptr, false, &from);
+    Geometry geo;
+    TurtleOptions t;
+    t.fromTree = false;
+    t.segmentModules = &segments;
+    t.surfaceModules = &surfaces;
+    interpret(g->axiom, *g, t, geo);
+    // What drew each part: its module in `s` (L-Py's shape ids).
+    auto idOf = [&](std::uint32_t drawn) -> long {
+        if (drawn >= from.size() || from[drawn] >= shown.size()) return -1;
+        return long(shown[from[drawn]].parent);
+    };
+    // Sprout's frame (y up) in L-Py's (z up): L-Py's x, y, z are Sprout's z, x, y.
+    auto lpyPoint = [](const glm::vec3& v) { return py::make_tuple(double(v.z), double(v.x), double(v.y)); };
+    auto rgba = [](std::uint32_t c) { return py::make_tuple(c >> 24 & 255, c >> 16 & 255, c >> 8 & 255, c & 255); };
+    py::list parts;
+    for (size_t k = 0; k < geo.cylinders.size(); ++k) {
+        const CylinderInstance& c = geo.cylinders[k];
+        parts.append(py::make_tuple("cylinder", idOf(k < segments.size() ? segments[k] : ~0u), lpyPoint(c.start), lpyPoint(c.end),
+                                    double(c.startRadius), double(c.endRadius), rgba(c.colour)));
+    }
+    for (size_t k = 0; k < geo.surfaces.size(); ++k) {
+        const SurfaceInstance& f = geo.surfaces[k];
+        parts.append(py::make_tuple(f.kind == SurfaceKind::Sphere ? "sphere" : "surface", idOf(k < surfaces.size() ? surfaces[k] : ~0u),
+                                    lpyPoint(f.position), lpyPoint(f.heading), double(f.size), rgba(f.colour), lpyPoint(f.up)));
+    }
+    if (!geo.polygons.indices.empty()) {
+        py::list points, triangles;
+        for (const auto& p : geo.polygons.positions) points.append(lpyPoint(p));
+        for (size_t k = 0; k + 2 < geo.polygons.indices.size(); k += 3)
+            triangles.append(py::make_tuple(geo.polygons.indices[k], geo.polygons.indices[k + 1], geo.polygons.indices[k + 2]));
+        parts.append(py::make_tuple("mesh", -1, points, triangles,
+                                    rgba(geo.polygons.colours.empty() ? 0x808080FFu : geo.polygons.colours[0])));
+    }
+    return py::module_::import("openalea.lpy._lsystem").attr("_scene")(parts);
+}
+
+namespace {
+
 class Session {
 public:
     Session(const std::string& code, const std::string& file, py::dict ns, py::dict parameters) : m_file(file), m_ns(ns) {
@@ -42,6 +88,7 @@ public:
         if (!ns.contains("__name__")) ns["__name__"] = "__lpy__";
         prepareNamespace(ns, file.empty() || file[0] == '<' ? std::string() : file);
         m_engine = std::make_unique<Engine>(std::move(tr), ns, m_options);
+        m_engine->sceneOf = [this](const LString& s) { return sceneOf(*m_engine, s); };
         EngineScope scope(m_engine.get());
         py::module_ builtins = py::module_::import("builtins"), lpy = py::module_::import("openalea.lpy");
         builtins.attr("exec")(builtins.attr("compile")(init, file, "exec"), ns);
@@ -72,15 +119,15 @@ public:
         return PyLstring{std::make_shared<LString>(m_engine->interpret(*s.s))};
     }
 
-    // The string as Sprout's turtle draws it (the interpretation rules applied), and what the
-    // drawing left out: for sceneInterpretation and plot.
-    py::tuple drawing(const PyLstring& s) {
+    // The scene the turtle draws (the interpretation rules applied): sceneInterpretation.
+    py::object scene(const PyLstring& s) {
         EngineScope scope(m_engine.get());
-        TurtleDefaults d = turtleDefaults(py::module_::import("openalea.lpy"));
-        std::vector<std::string> leftOut;
-        auto g = drawable(m_engine->interpret(*s.s), m_engine->classes(), d, &leftOut);
-        return py::make_tuple(toString(g->axiom, g->alphabet), leftOut);
+        return sceneOf(*m_engine, *s.s);
     }
+    // While animating: EndEach gets a scene at every step.
+    void setAnimating(bool on) { m_engine->animating = on; }
+    bool animating() const { return m_engine->animating; }
+    py::object lastScene() const { return m_engine->lastScene ? m_engine->lastScene : py::none(); }
 
     int derivationLength() const { return m_engine->derivationLength; }
     void setDerivationLength(int n) {
@@ -116,7 +163,9 @@ void defineSession(py::module_& m) {
         .def("axiom", &Session::axiom)
         .def("derive", &Session::derive)
         .def("interpret", &Session::interpret)
-        .def("drawing", &Session::drawing)
+        .def("scene", &Session::scene)
+        .def_property("animating", &Session::animating, &Session::setAnimating)
+        .def_property_readonly("lastScene", &Session::lastScene)
         .def_property("derivationLength", &Session::derivationLength, &Session::setDerivationLength)
         .def_property_readonly("iteration", &Session::iteration)
         .def("rules", &Session::rules, py::arg("kind"), py::arg("group") = -1)

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 
 #include "lpy/translate_impl.hpp"
 
@@ -14,6 +15,19 @@ namespace translate_detail {
 Translation Translator::run() {
     // A UTF-8 byte order mark is not Python.
     if (!m_lines.empty() && m_lines[0].rfind("\xEF\xBB\xBF", 0) == 0) m_lines[0].erase(0, 3);
+    // `# -*- lpy version: X -*-` on the first line: L-Py reads format 1.0 only
+    // (src/cpp/lpy_parser.cpp LpyParsing::isSupportedFormat).
+    if (!m_lines.empty()) {
+        const std::string& first = m_lines[0];
+        const std::string tag = "# -*- lpy version:";
+        if (first.rfind(tag, 0) == 0 && first.find("-*-", tag.size()) != std::string::npos) {
+            const std::string v(trim(std::string_view(first).substr(tag.size(), first.find("-*-", tag.size()) - tag.size())));
+            char* end = nullptr;
+            const double version = std::strtod(v.c_str(), &end);
+            if (end == v.c_str() || !(version >= 1.0 && version <= 1.0))
+                error(1, 1, "lpy format " + v + " is not one L-Py reads: format 1.0 is");
+        }
+    }
     size_t initAt = m_lines.size();
     for (size_t i = 0; i < m_lines.size(); ++i)
         if (m_lines[i].find("###### INITIALISATION ######") != std::string::npos) {

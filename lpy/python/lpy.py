@@ -4,7 +4,7 @@
 import sys as _sys
 
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
-                         getGroup, getIterationNb, nsproduce)
+                         getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed)
 
 _state = {}
 
@@ -188,12 +188,26 @@ execContext = context
 getContext = context
 
 
-def isAnimationEnabled():
-    return False
-
-
 def frameDisplay(*args):
     pass
+
+
+_plotter = None
+
+
+def registerPlotter(plotter):
+    """Lsystem.plot and animate give their scenes to plotter.plot(scene)."""
+    global _plotter
+    _plotter = plotter
+
+
+def cleanPlotter():
+    global _plotter
+    _plotter = None
+
+
+def get_plotter():
+    return _plotter
 
 
 def extern(**kwargs):

@@ -6,8 +6,9 @@ import os as _os
 
 from _sprout_lpy import _Session, Lstring
 import openalea.lpy as _lpy
+from openalea.lpy import LsysContext  # noqa: F401
 
-__all__ = ['Lsystem', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
+__all__ = ['Lsystem', 'LsysContext', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
            'eProduction', 'eDecomposition', 'eInterpretation']
 
 AxialTree = Lstring
@@ -27,6 +28,40 @@ def _read(filename):
     except UnicodeDecodeError:
         text = data.decode('latin-1')
     return text.replace('\r\n', '\n').replace('\r', '\n')
+
+
+def _material(colour):
+    from openalea.plantgl.all import Material
+    r, g, b, a = colour
+    return Material((r, g, b), diffuse=1, transparency=1 - a / 255.0)
+
+
+def _scene(parts):
+    """A PlantGL Scene from what Sprout's turtle drew (lpy/session.cpp sceneOf): a shape per
+    cylinder, surface or sphere, with the id of the module that drew it."""
+    from openalea.plantgl.all import (Scene, Shape, Translated, Oriented, Cylinder, Cone, Sphere, Scaled,
+                                      TriangleSet, Vector3)
+    scene = Scene()
+    for part in parts:
+        kind, ident = part[0], part[1]
+        if kind == 'cylinder':
+            a, b, r0, r1, colour = Vector3(*part[2]), Vector3(*part[3]), part[4], part[5], part[6]
+            axis = b - a
+            height = axis.__norm__() if hasattr(axis, '__norm__') else sum(c * c for c in axis) ** 0.5
+            g = Cylinder(r0, height) if abs(r0 - r1) < 1e-9 else Cone(r0, height)
+            geometry = Translated(a, Oriented((1, 0, 0), (0, 1, 0), g))
+            geometry.direction = axis
+        elif kind == 'sphere':
+            geometry = Translated(Vector3(*part[2]), Sphere(part[4]))
+            colour = part[5]
+        elif kind == 'surface':
+            geometry = Translated(Vector3(*part[2]), Scaled((part[4],) * 3, TriangleSet([], [])))
+            colour = part[5]
+        else:
+            geometry = TriangleSet([Vector3(*p) for p in part[2]], list(part[3]))
+            colour = part[4]
+        scene.append(Shape(geometry, _material(colour), ident))
+    return scene
 
 
 class Lsystem:
@@ -191,33 +226,58 @@ class Lsystem:
 
     homomorphism = interpret
 
+    def _lstring(self, lstring):
+        return lstring if isinstance(lstring, Lstring) else Lstring(lstring)
+
     def sceneInterpretation(self, lstring):
-        """The scene the turtle draws from the string (openalea.plantgl.all.Scene)."""
-        from openalea.plantgl.all import Scene
+        """The scene the turtle draws from the string: an openalea.plantgl.all.Scene whose
+        shapes' ids are the modules that drew them."""
         with self._context:
-            text, left = self._need().drawing(lstring if isinstance(lstring, Lstring) else Lstring(lstring))
-        scene = Scene()
-        scene._sprout = text
-        self._scene = scene
-        return scene
+            self._scene = self._need().scene(self._lstring(lstring))
+        return self._scene
 
     def getLastComputedScene(self):
         return self._scene
 
     def plot(self, lstring=None, checkLastComputedScene=False):
-        """Draws the string (without a viewer in this process: the scene is computed)."""
-        self.sceneInterpretation(self.axiom if lstring is None else lstring)
+        """Draws the string: its scene goes to the plotter registered with
+        openalea.lpy.registerPlotter (none by default: the scene is computed and kept)."""
+        s = self._need()
+        scene = s.lastScene if checkLastComputedScene else None
+        if scene is None:
+            scene = self.sceneInterpretation(self.axiom if lstring is None else lstring)
+        self._scene = scene
+        plotter = _lpy.get_plotter()
+        if plotter is not None:
+            plotter.plot(scene)
 
     def animate(self, *args):
-        """Derives step by step (L-Py shows each step; without a viewer, the last string)."""
+        """animate(), animate(dt), animate(dt, nb), animate(dt, start, nb),
+        animate(lstring, dt, start, nb): each step derived and shown (EndEach gets every
+        step's scene); gives the last string."""
         lstring = None
         if args and not isinstance(args[0], (int, float)):
             lstring, args = args[0], args[1:]
-        nb = int(args[2]) if len(args) > 2 else int(args[1]) if len(args) > 1 else None
-        out = self.derive(lstring if lstring is not None else self.axiom, 0,
-                          self.derivationLength if nb is None else nb)
-        self.plot(out)
-        return out
+        start, nb = 0, None
+        if len(args) == 2:
+            nb = int(args[1])
+        elif len(args) >= 3:
+            start, nb = int(args[1]), int(args[2])
+        s = self._need()
+        current = self.axiom if lstring is None else self._lstring(lstring)
+        if nb is None:
+            nb = s.derivationLength - start
+        s.animating = True
+        try:
+            self.plot(current)
+            for i in range(nb):
+                with self._context:
+                    current = s.derive(current, start + i, 1)
+                    self._last = s.iteration
+                self.plot(current, True)
+        finally:
+            s.animating = False
+        return current
 
     def record(self, *args, **kwargs):
         raise NotImplementedError("Lsystem.record: use `sprout render` or `sprout export` for pictures and videos")

@@ -82,8 +82,13 @@ _geometry_fields = {
     'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
                        'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
 }
+class Transformed(_Geometry):
+    """PlantGL's transformed geometries (Translated, Oriented, Scaled, ...): `geometry` inside."""
+
+
+_transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
 for _name, _f in _geometry_fields.items():
-    globals()[_name] = type(_name, (_Geometry,), {'_fields': _f})
+    globals()[_name] = type(_name, (Transformed if _name in _transforms else _Geometry,), {'_fields': _f})
 del _name, _f
 
 
