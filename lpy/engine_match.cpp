@@ -19,35 +19,58 @@ bool Engine::skipped(int cls, int filter) const {
 
 bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
     const size_t n = m.args ? size_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
+    // `*(*args)`, `*(**kwds)`: a star module's values are its name, then its parameters.
+    bool nameFirst = false;
     if (p.cls == ModuleClasses::kStar) {
         if (!p.anyName.empty()) bound.push_back(py::str(m_tr.classes.name(m.cls)));
         if (!p.hasParens || (p.anyName.empty() && p.args.empty())) return true;
+        nameFirst = p.anyName.empty();
     } else {
         if (p.cls != m.cls && !derived(m.cls, p.cls)) return false;
         if (!p.hasParens) return n == 0;
     }
-    size_t k = 0;
-    for (const PatternArg& a : p.args) {
-        switch (a.kind) {
-            case PatternArg::Kind::Rest: {
-                py::list rest;
-                for (; k < n; ++k) rest.append(py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k)));
-                bound.push_back(rest);
-                continue;
-            }
-            case PatternArg::Kind::Keywords: {
-                // `A(**p)`: the parameters the module's declaration names, by name.
-                py::dict named;
-                const auto& names = m_tr.classes.parameterNames[size_t(m.cls)];
-                for (; k < n && k < names.size(); ++k)
-                    named[py::str(names[k])] = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k));
-                bound.push_back(named);
-                continue;
-            }
-            default: break;
+    const size_t total = n + (nameFirst ? 1 : 0);
+    auto value = [&](size_t k) {
+        if (nameFirst) {
+            if (k == 0) return py::object(py::str(m_tr.classes.name(m.cls)));
+            --k;
         }
-        if (k >= n) return false;
-        py::object v = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k++));
+        return py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), k));
+    };
+    size_t k = 0;
+    for (size_t ai = 0; ai < p.args.size(); ++ai) {
+        const PatternArg& a = p.args[ai];
+        if (a.kind == PatternArg::Kind::Rest || a.kind == PatternArg::Kind::Keywords) {
+            // The values left: those the module's declaration names (its last parameters, by
+            // name; 'name' for a star's name) go to **kwds, the others to *args (L-Py's
+            // test_kwd). Without **kwds, *args takes them all; without *args, a value with
+            // no name means no match.
+            const bool hasKeywords = p.args.back().kind == PatternArg::Kind::Keywords;
+            const auto& names = m_tr.classes.parameterNames[size_t(m.cls)];
+            const size_t named = std::min(names.size(), n);
+            auto nameOf = [&](size_t j) -> const std::string* {  // j: index in the values
+                static const std::string star = "name";
+                if (nameFirst && j == 0) return &star;
+                const size_t param = j - (nameFirst ? 1 : 0);
+                if (param + named < n) return nullptr;
+                return &names[param - (n - named)];
+            };
+            py::list rest;
+            py::dict kw;
+            for (size_t j = k; j < total; ++j) {
+                const std::string* name = hasKeywords ? nameOf(j) : nullptr;
+                if (name) kw[py::str(*name)] = value(j);
+                else rest.append(value(j));
+            }
+            k = total;
+            const bool hasRest = a.kind == PatternArg::Kind::Rest;
+            if (!hasRest && py::len(rest) > 0) return false;
+            if (hasRest) bound.push_back(rest);
+            if (hasKeywords) bound.push_back(kw);
+            break;
+        }
+        if (k >= total) return false;
+        py::object v = value(k++);
         switch (a.kind) {
             case PatternArg::Kind::Skip: break;
             case PatternArg::Kind::Bind: bound.push_back(std::move(v)); break;
@@ -66,7 +89,7 @@ bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<p
             default: break;
         }
     }
-    return k == n;
+    return k == total;
 }
 
 namespace {

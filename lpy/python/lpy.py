@@ -210,12 +210,49 @@ def get_plotter():
     return _plotter
 
 
-def extern(**kwargs):
-    """Names the caller may set before the model runs; the defaults given here otherwise."""
-    ns = _state['ns']
-    for k, v in kwargs.items():
+def extern(*names, **defaults):
+    """L-Py's extern (openalea.lpy.defaultparameters): extern(a=1) gives a the value 1 unless
+    the caller set it (Lsystem(file, {'a': 2})); extern('b') requires b to be set. Both are
+    listed in the model's __externs__."""
+    ns = _sys._getframe(1).f_globals
+    externs = ns.setdefault('__externs__', set())
+    for k, v in defaults.items():
+        ns.setdefault(k, v)
+        externs.add(k)
+    for k in names:
+        if not isinstance(k, str):
+            raise TypeError("extern(): a name is a string")
         if k not in ns:
-            ns[k] = v
+            raise NameError(k, 'should be provided by external parameters.')
+        externs.add(k)
+
+
+def defaultparameters(function):
+    """L-Py's @defaultparameters: the function's local variables become the model's names
+    where they are not set yet."""
+    import inspect
+    ns = _sys._getframe(1).f_globals
+    found = {}
+
+    def tracer(frame, event, arg):
+        if event == 'return' and frame.f_code is function.__code__:
+            found.update(frame.f_locals)
+        return tracer if frame.f_code is function.__code__ else None
+
+    def run(*args, **kwargs):
+        old = _sys.gettrace()
+        _sys.settrace(tracer)
+        try:
+            return function(*args, **kwargs)
+        finally:
+            _sys.settrace(old)
+            for k, v in found.items():
+                ns.setdefault(k, v)
+
+    if len(inspect.signature(function).parameters) == 0:
+        run()
+        return function
+    return run
 
 
 class _InterpretationTurtle:
