@@ -45,8 +45,28 @@ bool reads(const py::object& fn, const char* name) {
 void Engine::bind() {
     const size_t classes = m_tr.classes.size();
     // Set by the INITIALISATION block (context.options.setSelection('Module inheritance', 1)).
+    py::object options = py::module_::import("openalea.lpy").attr("_state")["options"];
     {
-        py::object chosen = py::module_::import("openalea.lpy").attr("_state")["options"].attr("get")("Module inheritance");
+        // 'Module declaration' mandatory: a module the file uses without a `module` line is
+        // an error (L-Py's option; on the fly, its default, declares them).
+        py::object mandatory = options.attr("get")("Module declaration");
+        if (!mandatory.is_none() && (py::str(mandatory).cast<std::string>() == "Mandatory" ||
+                                     (!py::isinstance<py::str>(mandatory) && py::bool_(mandatory)))) {
+            std::vector<bool> declared(classes, false);
+            for (int c : m_tr.declared)
+                if (size_t(c) < classes) declared[size_t(c)] = true;
+            for (size_t c = 0; c < classes; ++c)
+                if (!m_tr.classes.isPredefined(int(c)) && m_tr.classes.used(int(c)) && !declared[c])
+                {
+                    const std::string name = m_tr.classes.name(int(c));
+                    PyErr_SetString(PyExc_NameError, ("module " + name + " is not declared: with the option 'Module declaration' set to "
+                                                      "Mandatory, declare it with `module " + name + "`").c_str());
+                    throw py::error_already_set();
+                }
+        }
+    }
+    {
+        py::object chosen = options.attr("get")("Module inheritance");
         m_ancestors.clear();
         if (!chosen.is_none() && py::bool_(chosen))
             for (size_t c = 0; c < classes; ++c) m_ancestors.push_back(m_tr.classes.ancestors(int(c)));

@@ -156,8 +156,31 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
             bindAlternative(p, matched, got, per[size_t(k)]);
             continue;
         }
+        if (ps[size_t(k)].isRepeat()) {
+            // Greedy, leftwards: as many repetitions as match (none at the string's start);
+            // each variable a list of its values in the string's order.
+            const PatternModule& p = ps[size_t(k)];
+            std::vector<std::vector<py::object>> found;
+            for (int count = 0; count < p.repeatMax; ++count) {
+                std::vector<py::object> one;
+                long stopAt = j;
+                if (!matchLeft(p.repeat, s, j, filter, one, nullptr, &stopAt) || stopAt == j) break;
+                found.push_back(std::move(one));
+                j = stopAt;
+            }
+            if (int(found.size()) < p.repeatMin) return false;
+            std::vector<py::list> lists(size_t(p.repeatVariables));
+            for (auto it = found.rbegin(); it != found.rend(); ++it)
+                for (size_t v = 0; v < it->size() && v < lists.size(); ++v) lists[v].append((*it)[v]);
+            for (auto& l : lists) per[size_t(k)].push_back(std::move(l));
+            continue;
+        }
+        const bool none = ps[size_t(k)].cls == ModuleClasses::kNone;  // `None < A`: nothing before
         for (;;) {
-            if (j < 0) return false;
+            if (j < 0) {
+                if (none) break;
+                return false;
+            }
             const int c = s[size_t(j)].cls;
             if (c == ModuleClasses::kPop) {  // a whole branch before this one: skipped
                 const long o = indexed ? m_match[size_t(j)] : partner(s, j);
@@ -172,6 +195,10 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
                 continue;
             }
             break;
+        }
+        if (none) {
+            if (j >= 0) return false;
+            continue;
         }
         if (!matchModule(ps[size_t(k)], s[size_t(j)], per[size_t(k)])) return false;
         if (at) at->push_back(std::uint32_t(j));
@@ -266,9 +293,14 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
             ++j;
             continue;
         }
+        const bool none = p.cls == ModuleClasses::kNone;  // `A > None`: nothing after, on this axis
         for (;;) {
-            if (j >= s.size()) return npos;
+            if (j >= s.size()) {
+                if (none) break;
+                return npos;
+            }
             const int c = s[j].cls;
+            if (none && c == ModuleClasses::kPop) break;
             if (c == ModuleClasses::kPush && p.cls != ModuleClasses::kPush) {  // a side branch: skipped
                 const long o = partnerIn(s, j);
                 if (o < 0) return npos;
@@ -281,6 +313,10 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
                 continue;
             }
             break;
+        }
+        if (none) {
+            if (j < s.size() && s[j].cls != ModuleClasses::kPop) return npos;
+            continue;
         }
         if (!matchModule(p, s[j], bound)) return npos;
         if (at) at->push_back(std::uint32_t(j));

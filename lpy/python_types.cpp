@@ -193,6 +193,17 @@ void defineTypes(py::module_& m) {
         })
         .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) { return names().derivesFrom(c.cls, base.cls); });
     m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
+    // An lstring as written: each module's name and its arguments' texts (lstring2py).
+    m.def("_written", [](const std::string& text) {
+        std::vector<Diagnostic> diags;
+        py::list out;
+        for (const WrittenModule& w : readLstring(text, names(), 0, 1, diags))
+            if (w.cls >= 0) out.append(py::make_tuple(nameOf(w.cls), w.args));
+        if (!diags.empty()) throw py::value_error(diags[0].message);
+        return out;
+    });
+    // Names declared for the strings read outside a model (LsysContext.declare, declare()).
+    m.def("_declare", [](const std::string& name) { return names().intern(name); });
 
     py::class_<PyModule>(m, "Module")
         .def(py::init([](const std::string& name, py::args args) {

@@ -87,6 +87,12 @@ public:
         ns["__file__"] = file;
         if (!ns.contains("__name__")) ns["__name__"] = "__lpy__";
         prepareNamespace(ns, file.empty() || file[0] == '<' ? std::string() : file);
+        // Line for line the code's (the last line's end as the code has it).
+        m_python = tr.mainCode;
+        if (!m_python.empty() && m_python.back() == '\n' &&
+            std::count(m_python.begin(), m_python.end(), '\n') > std::count(code.begin(), code.end(), '\n'))
+            m_python.pop_back();
+        for (int c : tr.declared) m_declared.push_back(tr.classes.name(c));
         m_engine = std::make_unique<Engine>(std::move(tr), ns, m_options);
         m_engine->sceneOf = [this](const LString& s) { return sceneOf(*m_engine, s); };
         EngineScope scope(m_engine.get());
@@ -147,7 +153,12 @@ public:
         return out;
     }
 
+    const std::string& python() const { return m_python; }  // the code as Python runs it (set(code, debug=True))
+    const std::vector<std::string>& declared() const { return m_declared; }
+
 private:
+    std::string m_python;
+    std::vector<std::string> m_declared;
     std::string m_file;
     py::dict m_ns;
     RunOptions m_options;  // the engine keeps a reference
@@ -169,7 +180,9 @@ void defineSession(py::module_& m) {
         .def_property("derivationLength", &Session::derivationLength, &Session::setDerivationLength)
         .def_property_readonly("iteration", &Session::iteration)
         .def("rules", &Session::rules, py::arg("kind"), py::arg("group") = -1)
-        .def("groups", &Session::groups);
+        .def("groups", &Session::groups)
+        .def_property_readonly("python", &Session::python)
+        .def("declared", &Session::declared);
 }
 
 }  // namespace sprout::lpy

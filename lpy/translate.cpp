@@ -59,11 +59,21 @@ void Translator::declareModules(std::string_view rest, int line, size_t index) {
         }
     }
     std::vector<int> bases;
+    int scale = -1;
     if (colon != std::string_view::npos)
         for (const auto& key : splitArgs(rest.substr(colon + 1, commentStart(rest.substr(colon + 1))))) {
             std::string_view k = trim(key);
             const size_t eq = k.find('=');
-            if (eq == std::string_view::npos || trim(k.substr(0, eq)) != "base") continue;
+            if (eq == std::string_view::npos) continue;
+            if (trim(k.substr(0, eq)) == "scale") {  // a whole number (L-Py evaluates it)
+                const std::string v(trim(k.substr(eq + 1)));
+                char* end = nullptr;
+                const long n = std::strtol(v.c_str(), &end, 10);
+                if (end != v.c_str() && *end == 0 && n >= 0 && n < 1000) scale = int(n);
+                else warning(line, 1, "module scale '" + v + "' is not a whole number: Sprout reads scales written as numbers");
+                continue;
+            }
+            if (trim(k.substr(0, eq)) != "base") continue;
             std::string_view v = trim(k.substr(eq + 1));
             if (v.size() >= 2 && v.front() == '(' && v.back() == ')') v = v.substr(1, v.size() - 2);
             for (const auto& b : splitArgs(v))
@@ -77,7 +87,9 @@ void Translator::declareModules(std::string_view rest, int line, size_t index) {
         std::vector<std::string> params;
         if (size_t eq = d.find('='); eq != std::string_view::npos && d.find('(') > eq) {
             // `C=D`: C is another name of D's class.
-            m_out.classes.alias(trim(d.substr(0, eq)), m_out.classes.intern(trim(d.substr(eq + 1))));
+            const int target = m_out.classes.intern(trim(d.substr(eq + 1)));
+            m_out.classes.alias(trim(d.substr(0, eq)), target);
+            m_out.declared.push_back(target);
             continue;
         }
         if (size_t open = name.find('('); open != std::string_view::npos) {
@@ -92,6 +104,8 @@ void Translator::declareModules(std::string_view rest, int line, size_t index) {
         const int cls = m_out.classes.intern(name);
         if (params.size()) m_out.classes.parameterNames[size_t(cls)] = params;
         if (!bases.empty()) m_out.classes.bases[size_t(cls)] = bases;
+        if (scale >= 0) m_out.classes.scales[size_t(cls)] = scale;
+        m_out.declared.push_back(cls);
         if (isIdentifier(name)) out += std::string(name) + " = __lpy_module_class(" + std::to_string(cls) + "); ";
     }
     m_outLines[index] = out.empty() ? "pass" : out;

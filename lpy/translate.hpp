@@ -37,6 +37,10 @@ public:
     // Declared bases (`module B : base = A`, `base = (A, C)`): with L-Py's option 'Module
     // inheritance', a rule for A also matches a B.
     std::vector<std::vector<int>> bases;
+    // Declared scales (`module I : scale = 2`) for multiscale strings; -1: none (L-Py's
+    // ModuleClass.DEFAULT_SCALE).
+    std::vector<int> scales;
+    bool used(int cls) const { return cls >= 0 && size_t(cls) < m_hidden.size() && !m_hidden[size_t(cls)]; }
     // The classes `cls` derives from, through any number of declarations.
     std::vector<int> ancestors(int cls) const;
     // Whether `cls` is `base` or derives from it.
@@ -142,6 +146,7 @@ struct Translation {
     std::vector<Rule> rules;  // in file order
     std::vector<ContextFilter> filters;
     std::vector<ContextPattern> contextPatterns;  // __lpy_in_context(index, ...) in the code
+    std::vector<int> declared;  // the classes `module` lines declare
     bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
     bool hasAxiom = false;
     std::vector<Diagnostic> diagnostics;

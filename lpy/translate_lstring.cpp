@@ -80,6 +80,7 @@ ModuleClasses::ModuleClasses() {
     }
     parameterNames.resize(m_names.size());
     bases.resize(m_names.size());
+    scales.resize(m_names.size(), -1);
     m_hidden.resize(m_names.size());
     m_predefined = m_names.size();
 }
@@ -92,14 +93,17 @@ ModuleClasses ModuleClasses::seededFrom(const ModuleClasses& ids) {
 
 void ModuleClasses::adopt(const ModuleClasses& other, bool hidden) {
     if (!hidden)  // what `other` declared of classes this table knew
-        for (size_t c = m_predefined; c < std::min(m_names.size(), other.m_names.size()); ++c)
+        for (size_t c = m_predefined; c < std::min(m_names.size(), other.m_names.size()); ++c) {
             if (!other.parameterNames[c].empty()) parameterNames[c] = other.parameterNames[c];
+            if (other.scales[c] >= 0) scales[c] = other.scales[c];
+        }
     for (size_t c = m_names.size(); c < other.m_names.size(); ++c) {
         m_names.push_back(other.m_names[c]);
         m_ids.insert_or_assign(other.m_names[c], int(c));
         m_longest = std::max(m_longest, other.m_names[c].size());
         parameterNames.push_back(hidden ? std::vector<std::string>{} : other.parameterNames[c]);
         bases.emplace_back();
+        scales.push_back(hidden ? -1 : other.scales[c]);
         m_hidden.push_back(hidden);
     }
 }
@@ -126,6 +130,7 @@ int ModuleClasses::intern(std::string_view name) {
     m_longest = std::max(m_longest, name.size());
     parameterNames.emplace_back();
     bases.emplace_back();
+    scales.push_back(-1);
     m_hidden.push_back(false);
     return id;
 }

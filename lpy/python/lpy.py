@@ -70,6 +70,7 @@ class _Options:
 
     def setSelection(self, name, index):
         self._state['options'][name] = index
+        return True
 
     def __getitem__(self, name):
         return self._state['options'].get(name)
@@ -159,6 +160,20 @@ class LsysContext:
 
     def getIterationNb(self):
         return getIterationNb()
+
+    InitialisationFunctionName = '__initialiseContext__'
+
+    def declare(self, names):
+        """Declares modules ('A, B, C') for the strings this context reads."""
+        from _sprout_lpy import _declare
+        for name in str(names).split(','):
+            name = name.strip().split('(')[0].strip()
+            if name:
+                _declare(name)
+                self._state.setdefault('declared', []).append(name)
+
+    def declaredModules(self):
+        return list(self._state.get('declared', []))
 
     def setModuleScale(self, names, scale):
         for name in str(names).split(','):

@@ -4,11 +4,11 @@
 import io as _io
 import os as _os
 
-from _sprout_lpy import _Session, Lstring
+from _sprout_lpy import _Session, Lstring, _written
 import openalea.lpy as _lpy
 from openalea.lpy import LsysContext  # noqa: F401
 
-__all__ = ['Lsystem', 'LsysContext', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
+__all__ = ['Lsystem', 'LsysContext', 'LpyParsing', 'declare', 'lstring2py', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
            'eProduction', 'eDecomposition', 'eInterpretation']
 
 AxialTree = Lstring
@@ -28,6 +28,42 @@ def _read(filename):
     except UnicodeDecodeError:
         text = data.decode('latin-1')
     return text.replace('\r\n', '\n').replace('\r', '\n')
+
+
+def declare(names):
+    """Declares modules ('A, B(x), C') for the strings read outside a model."""
+    _lpy.context().declare(names)
+
+
+def lstring2py(text):
+    """An lstring as a Python expression: the list of its modules (L-Py's lstring2py)."""
+    items = []
+    for name, args in _written(text):
+        items.append('ParamModule(%r%s)' % (name, ''.join(',' + a for a in args)))
+    return '[' + ','.join(items) + ']'
+
+
+class LpyParsing:
+    """L-Py's parser constants (src/cpp/lpy_parser.cpp): the file format tag and versions."""
+    VersionTag = '# -*- lpy version: %f -*-'
+    InitialisationBeginTag = '###### INITIALISATION ######'
+    LPY_FORMAT_VERSION = 1.0
+    formats = [1.0]
+
+    @staticmethod
+    def isSupportedFormat(version):
+        return 1.0 <= version <= LpyParsing.LPY_FORMAT_VERSION
+
+    @staticmethod
+    def getFormatVersion(code):
+        first = code.split('\n', 1)[0]
+        head, tail = LpyParsing.VersionTag.split('%f')
+        if first.startswith(head) and first.endswith(tail.rstrip()):
+            try:
+                return float(first[len(head):len(first) - len(tail.rstrip())])
+            except ValueError:
+                pass
+        return LpyParsing.LPY_FORMAT_VERSION
 
 
 def _material(colour):
@@ -97,8 +133,9 @@ class Lsystem:
             self._session = _Session(code, file, ctx._state['ns'], dict(parameters or {}))
         finally:
             ctx.done()
+        self._context._state['declared'] = list(self._session.declared())
         self._code, self._parameters, self._axiom, self._last = code, dict(parameters or {}), None, 0
-        return None
+        return self._session.python if debug else None
 
     def setCode(self, code, parameters={}, debug=False):
         return self.set(code, parameters, debug)
