@@ -178,6 +178,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
                        std::vector<std::shared_ptr<const ContextMatches>>* contexts, int start, int total) {
     iteration = start;
     stopRequested = false;
+    readMatchingOptions();
     if (total < 0) total = start + steps;
     // The native path has no hooks: where it starts matters only to getIterationNb.
     if (m_nativeOk && start == 0 && total == steps) {

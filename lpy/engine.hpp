@@ -187,6 +187,19 @@ private:
     // each '[' and restored at each ']' of the walk.
     bool m_usesTurtle = false;
     py::object m_turtle;
+    // Multiscale strings (engine_scales.cpp): the option 'String matching' (0 as a string, 1
+    // as an axial tree, 2 multi-level, 3 multiscale; read at each derive) and each class's
+    // scale (INT_MAX: none, L-Py's DEFAULT_SCALE).
+    int m_stringMatching = 1;
+    std::vector<int> m_scale;
+    void readMatchingOptions();
+    int scaleOf(int cls) const;
+    long treeParent(const LString& s, long pos, int filter);
+    // The module a left context reads after `pos` at scale `target` (-1: none); the one a
+    // right context reads from `pos` (the position after the last module matched; npos: none).
+    long predecessorAt(const LString& s, long pos, int target, int filter);
+    size_t nextAt(const LString& s, size_t pos, int target, int filter);
+    bool multiscale() const { return m_stringMatching >= 2; }
     LString interpretationHook(const char* name);
     void endEach(LString& s);  // the EndEach hook, with a scene when it takes two arguments
     struct Index {

@@ -176,6 +176,13 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
             continue;
         }
         const bool none = ps[size_t(k)].cls == ModuleClasses::kNone;  // `None < A`: nothing before
+        if (multiscale() && !none && ps[size_t(k)].cls != ModuleClasses::kPush && ps[size_t(k)].cls != ModuleClasses::kPop) {
+            const long m = predecessorAt(s, j + 1, scaleOf(ps[size_t(k)].cls), filter);
+            if (m < 0 || !matchModule(ps[size_t(k)], s[size_t(m)], per[size_t(k)])) return false;
+            if (at) at->push_back(std::uint32_t(m));
+            j = m - 1;
+            continue;
+        }
         for (;;) {
             if (j < 0) {
                 if (none) break;
@@ -294,6 +301,18 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
             continue;
         }
         const bool none = p.cls == ModuleClasses::kNone;  // `A > None`: nothing after, on this axis
+        if (multiscale() && !none && p.cls != ModuleClasses::kPush && p.cls != ModuleClasses::kPop && !s.reversed) {
+            size_t m = nextAt(*s.s, j, scaleOf(p.cls), filter);
+            while (m != npos && s[m].cls == ModuleClasses::kPush) {  // a side branch: skipped
+                const long o = partnerIn(s, m);
+                if (o < 0) return npos;
+                m = nextAt(*s.s, size_t(o) + 1, scaleOf(p.cls), filter);
+            }
+            if (m == npos || s[m].cls == ModuleClasses::kPop || !matchModule(p, s[m], bound)) return npos;
+            if (at) at->push_back(std::uint32_t(m));
+            j = m + 1;
+            continue;
+        }
         for (;;) {
             if (j >= s.size()) {
                 if (none) break;
