@@ -200,6 +200,9 @@ private:
     long predecessorAt(const LString& s, long pos, int target, int filter);
     size_t nextAt(const LString& s, size_t pos, int target, int filter);
     bool multiscale() const { return m_stringMatching >= 2; }
+public:
+    int classScale(int cls) const { return scaleOf(cls); }
+private:
     LString interpretationHook(const char* name);
     void endEach(LString& s);  // the EndEach hook, with a scene when it takes two arguments
     struct Index {
@@ -210,6 +213,10 @@ private:
     bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
+    // `$A(a)`: the module bound whole, a view of the string a pass reads (m_reading).
+    py::object nodeOf(const LModule& m);
+    const LString* m_reading = nullptr;
+    std::shared_ptr<LString> m_readingShared;
     // `at`: where the modules matched are added (their indices in s), when kept.
     void bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound);
     // `stop`: set to the position left of the match, when given.

@@ -17,6 +17,20 @@ bool Engine::skipped(int cls, int filter) const {
     return f.consider ? !listed : listed;
 }
 
+py::object Engine::nodeOf(const LModule& m) {
+    PyModule node;
+    if (m_reading && &m >= m_reading->data() && &m < m_reading->data() + m_reading->size()) {
+        // A view of the string read (a copy made once a pass, when a pattern asks for one):
+        // its place, its parent and sons.
+        if (!m_readingShared) m_readingShared = std::make_shared<LString>(*m_reading);
+        node.owner = m_readingShared;
+        node.index = size_t(&m - m_reading->data());
+    } else {
+        node.own = m;
+    }
+    return py::cast(std::move(node));
+}
+
 bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
     const size_t n = m.args ? size_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
     // `*(*args)`, `*(**kwds)`: a star module's values are its name, then its parameters.
@@ -27,6 +41,10 @@ bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<p
         nameFirst = p.anyName.empty();
     } else {
         if (p.cls != m.cls && !derived(m.cls, p.cls)) return false;
+        if (!p.moduleVariable.empty()) {
+            bound.push_back(nodeOf(m));
+            return true;
+        }
         if (!p.hasParens) return n == 0;
     }
     const size_t total = n + (nameFirst ? 1 : 0);
@@ -445,6 +463,14 @@ size_t afterCut(const LString& in, size_t i) {
 }  // namespace
 
 void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
+    struct Reading {  // the string `$A(a)` patterns bind modules of, while this pass runs
+        Engine& e;
+        const LString* was;
+        std::shared_ptr<LString> shared;
+        ~Reading() { e.m_reading = was, e.m_readingShared = std::move(shared); }
+    } reading{*this, m_reading, std::move(m_readingShared)};
+    m_reading = &in;
+    m_readingShared.reset();
     out.clear();
     out.reserve(in.size());
     matchBrackets(in);

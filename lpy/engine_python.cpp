@@ -81,7 +81,19 @@ void appendValue(LString& out, py::handle item, size_t classCount) {
 }
 
 void Engine::produce(py::handle items, bool last) {
+    const size_t before = m_buffer.size();
     append(m_buffer, items);
+    // `new('A', x)` (newmodule): a module whose name is its first argument.
+    static thread_local int newClass = -2;
+    if (newClass == -2 || newClass >= int(m_tr.classes.size())) newClass = m_tr.classes.find("new");
+    for (size_t k = before; k < m_buffer.size() && newClass >= 0; ++k) {
+        LModule& m = m_buffer[k];
+        if (m.cls != newClass || !m.args || PyTuple_GET_SIZE(m.args.ptr()) == 0) continue;
+        PyObject* name = PyTuple_GET_ITEM(m.args.ptr(), 0);
+        if (!PyUnicode_Check(name)) throw py::type_error("new(name, ...): the name of the module to make, a string");
+        m.cls = m_tr.classes.intern(py::reinterpret_borrow<py::str>(name).cast<std::string>());
+        m.args = py::reinterpret_steal<py::tuple>(PyTuple_GetSlice(m.args.ptr(), 1, PyTuple_GET_SIZE(m.args.ptr())));
+    }
     if (last) m_produced = true;
 }
 

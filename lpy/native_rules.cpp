@@ -72,7 +72,8 @@ void Engine::prepareNative() {
             !rule.newRight.empty() || !rule.right.empty() || rule.pred.size() != 1)
             return;
         const PatternModule& p = rule.pred[0];
-        if (p.cls == ModuleClasses::kStar || p.isRepeat() || !p.anyName.empty() || p.exactPop || p.cls < 0 ||
+        if (p.cls == ModuleClasses::kStar || p.isRepeat() || p.isOr() || !p.anyName.empty() || !p.moduleVariable.empty() ||
+            p.exactPop || p.cls < 0 ||
             size_t(p.cls) >= m_tr.classes.size())
             return;
         std::vector<std::string> names;

@@ -5,12 +5,19 @@
 // table of names outside a derivation (names()).
 #include <pybind11/stl.h>
 
+#include <climits>
+
 #include "lpy/host_impl.hpp"
+#include "lpy/python_tree.hpp"
 
 namespace py = pybind11;
 
 namespace sprout::lpy {
 namespace {
+
+const int kDefaultScale = INT_MAX;  // L-Py's ModuleClass.DEFAULT_SCALE
+
+using namespace tree;
 
 const std::string& nameOf(int cls) {
     static const std::string unknown = "?";
@@ -60,77 +67,38 @@ size_t checkedIndex(const LString& s, py::ssize_t i) {
     return size_t(i);
 }
 
-// The axial tree of a string (L-Py's AxialTree navigation: src/cpp/axialtree.cpp): a
-// module's parent, its first son on the same axis, its lateral sons (each branch's first
-// module, through branches opened at once: `[[A]B]`).
-bool isPush(const LModule& m) { return m.cls == ModuleClasses::kPush; }
-bool isPop(const LModule& m) { return m.cls == ModuleClasses::kPop; }
-
-long closing(const LString& s, size_t open) {  // the ']' of the '[' at `open`, or -1
-    int depth = 0;
-    for (size_t j = open; j < s.size(); ++j) {
-        if (isPush(s[j])) ++depth;
-        else if (isPop(s[j]) && --depth == 0) return long(j);
-    }
-    return -1;
-}
-
-long opening(const LString& s, size_t close) {  // the '[' of the ']' at `close`, or -1
-    int depth = 0;
-    for (long j = long(close); j >= 0; --j) {
-        if (isPop(s[size_t(j)])) ++depth;
-        else if (isPush(s[size_t(j)]) && --depth == 0) return j;
-    }
-    return -1;
-}
-
-long parentOf(const LString& s, size_t i) {
-    for (long j = long(i) - 1; j >= 0; --j) {
-        if (isPop(s[size_t(j)])) {
-            j = opening(s, size_t(j));
-            if (j < 0) return -1;
-        } else if (!isPush(s[size_t(j)])) {
-            return j;
-        }
-    }
-    return -1;
-}
-
-long directSonOf(const LString& s, size_t i) {
-    for (size_t j = i + 1; j < s.size(); ++j) {
-        if (isPop(s[j])) return -1;
-        if (!isPush(s[j])) return long(j);
-        const long c = closing(s, j);
-        if (c < 0) return -1;
-        j = size_t(c);
-    }
-    return -1;
-}
-
-// The first module of the branches that open at j (and of branches opened at their start).
-void branchHeads(const LString& s, size_t j, std::vector<long>& out) {
-    while (j < s.size() && isPush(s[j])) {
-        const long c = closing(s, j);
-        size_t k = j + 1;
-        if (k < s.size() && isPush(s[k])) branchHeads(s, k, out);
-        while (k < s.size() && isPush(s[k])) {
-            const long ck = closing(s, k);
-            if (ck < 0) return;
-            k = size_t(ck) + 1;
-        }
-        if (k < s.size() && !isPop(s[k])) out.push_back(long(k));
-        if (c < 0) return;
-        j = size_t(c) + 1;
-    }
-}
-
-std::vector<long> lateralSonsOf(const LString& s, size_t i) {
-    std::vector<long> out;
-    branchHeads(s, i + 1, out);
-    return out;
+// The scale of each class as the running model or the current context says (setModuleScale,
+// then `module X : scale = n`); INT_MAX: none.
+Scale scales() {
+    if (Engine* e = currentEngine()) return [e](int cls) { return e->classScale(cls); };
+    const ModuleClasses& c = names();
+    auto table = std::make_shared<std::vector<int>>(c.size(), INT_MAX);
+    for (size_t k = 0; k < c.size(); ++k)
+        if (c.scales[k] >= 0) (*table)[k] = c.scales[k];
+    py::dict state = py::module_::import("openalea.lpy").attr("_state");
+    if (state.contains("scales"))
+        for (auto item : py::dict(state["scales"]))
+            if (int cls = c.find(item.first.cast<std::string>()); cls >= 0) (*table)[size_t(cls)] = item.second.cast<int>();
+    return [table](int cls) { return cls >= 0 && size_t(cls) < table->size() ? (*table)[size_t(cls)] : INT_MAX; };
 }
 
 py::object indexOrNone(long i) { return i < 0 ? py::object(py::none()) : py::object(py::int_(i)); }
+
+py::object nodeAt(const PyModule& self, long i) {
+    if (i < 0 || !self.owner) return py::none();
+    return py::cast(viewOf(self.owner, size_t(i)));
+}
+
+py::list nodes(const PyModule& self, const std::vector<long>& at) {
+    py::list out;
+    for (long i : at) out.append(nodeAt(self, i));
+    return out;
+}
+
+py::object nodesOrNone(const PyModule& self, const std::vector<long>& at) {
+    if (at.empty()) return py::none();
+    return nodes(self, at);
+}
 
 py::object listOrNone(const std::vector<long>& v) {
     if (v.empty()) return py::none();
@@ -191,7 +159,17 @@ void defineTypes(py::module_& m) {
             const int cls = names().find(name);
             return cls < 0 ? py::object(py::none()) : py::cast(PyModuleClass{cls});
         })
-        .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) { return names().derivesFrom(c.cls, base.cls); });
+        .def("issubclass", [](const PyModuleClass& c, const PyModuleClass& base) { return names().derivesFrom(c.cls, base.cls); })
+        .def_readonly_static("DEFAULT_SCALE", &kDefaultScale)
+        .def_property_readonly("id", [](const PyModuleClass& c) { return c.cls; })
+        .def_property_readonly("aliases", [](const PyModuleClass& c) { return names().aliasesOf(c.cls); })
+        // A class's scale as the current context sees it (setModuleScale, then its declaration).
+        .def_property("scale", [](const PyModuleClass& c) { return scales()(c.cls); },
+                      [](const PyModuleClass& c, int scale) {
+                          py::dict state = py::module_::import("openalea.lpy").attr("_state");
+                          py::dict(state.attr("setdefault")("scales", py::dict()))[py::str(nameOf(c.cls))] = scale;
+                      });
+    m.def("_class_count", [] { return names().size(); });
     m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
     // An lstring as written: each module's name and its arguments' texts (lstring2py).
     m.def("_written", [](const std::string& text) {
@@ -245,6 +223,31 @@ void defineTypes(py::module_& m) {
                     if (params[size_t(mod.cls)][k] == attr) return moduleArg(mod, py::ssize_t(k));
             throw py::attribute_error("module " + nameOf(mod.cls) + " has no parameter " + attr);
         })
+        // `$A(a)` in a header binds a module of the string (L-Py's NodeModule): its place
+        // and its tree.
+        .def("position", [](PyModule& self) -> py::object {
+            return self.owner ? py::object(py::int_(self.index)) : py::object(py::none());
+        })
+        .def("parent", [](PyModule& self) { return nodeAt(self, self.owner ? parentOf(*self.owner, self.index) : -1); })
+        .def("father", [](PyModule& self) { return nodeAt(self, self.owner ? parentOf(*self.owner, self.index) : -1); })
+        .def("direct_child", [](PyModule& self) { return nodeAt(self, self.owner ? directSonOf(*self.owner, self.index) : -1); })
+        .def("directSon", [](PyModule& self) { return nodeAt(self, self.owner ? directSonOf(*self.owner, self.index) : -1); })
+        .def("children", [](PyModule& self) { return nodesOrNone(self, self.owner ? childrenOf(*self.owner, self.index) : std::vector<long>{}); })
+        .def("sons", [](PyModule& self) { return nodesOrNone(self, self.owner ? childrenOf(*self.owner, self.index) : std::vector<long>{}); })
+        .def("lateral_children", [](PyModule& self) {
+            return nodesOrNone(self, self.owner ? lateralSonsOf(*self.owner, self.index) : std::vector<long>{});
+        })
+        .def("complex", [](PyModule& self, py::object scale) {
+            if (!self.owner) return py::object(py::none());
+            const Scale sc = scales();
+            const int at = scale.is_none() ? sc((*self.owner)[self.index].cls) + 1 : scale.cast<int>();
+            return nodeAt(self, complexOf(*self.owner, self.index, at, sc));
+        }, py::arg("scale") = py::none())
+        .def("components", [](PyModule& self) { return nodes(self, self.owner ? componentsOf(*self.owner, self.index, scales()) : std::vector<long>{}); })
+        .def("components_at_scale", [](PyModule& self, int scale) {
+            return nodes(self, self.owner ? componentsOf(*self.owner, self.index, scales(), &scale) : std::vector<long>{});
+        })
+        .def("scale", [](PyModule& self) { return scales()(self.get().cls); })
         .def("__eq__", [](PyModule& a, py::object b) {
             if (!py::isinstance<PyModule>(b)) return false;
             return sameModule(a.get(), py::cast<PyModule&>(b).get());
@@ -387,6 +390,29 @@ void defineTypes(py::module_& m) {
             return listOrNone(out);
         })
         .def("sons", [](py::object s, py::ssize_t i) { return s.attr("children")(i); })
+        // Multiscale strings (L-Py's AxialTree): complexes, components, successors and
+        // predecessors at a scale (or a level).
+        .def("complex", [](const PyLstring& s, py::ssize_t i, py::object scale) {
+            const size_t at = checkedIndex(*s.s, i);
+            const Scale sc = scales();
+            return indexOrNone(complexOf(*s.s, at, scale.is_none() ? sc((*s.s)[at].cls) + 1 : scale.cast<int>(), sc));
+        }, py::arg("pos"), py::arg("scale") = py::none())
+        .def("components", [](const PyLstring& s, py::ssize_t i) { return componentsOf(*s.s, checkedIndex(*s.s, i), scales()); })
+        .def("components_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return componentsOf(*s.s, checkedIndex(*s.s, i), scales(), &scale);
+        })
+        .def("successor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(successorAtScale(*s.s, checkedIndex(*s.s, i), scale, scales()));
+        })
+        .def("predecessor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(predecessorAtScale(*s.s, checkedIndex(*s.s, i), scale, scales()));
+        })
+        .def("successor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(successorAtLevel(*s.s, checkedIndex(*s.s, i), scale, scales()));
+        })
+        .def("predecessor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(predecessorAtLevel(*s.s, checkedIndex(*s.s, i), scale, scales()));
+        })
         .def("__copy__", [](const PyLstring& s) { return PyLstring{std::make_shared<LString>(*s.s)}; })
         .def("__deepcopy__", [](const PyLstring& s, py::object) { return PyLstring{std::make_shared<LString>(*s.s)}; })
         .def(py::pickle([](const PyLstring& s) { return stateOf(*s.s); },

@@ -28,6 +28,7 @@ public:
     int intern(std::string_view name);
     int find(std::string_view name) const;  // -1 when unknown
     const std::string& name(int cls) const { return m_names[size_t(cls)]; }
+    std::vector<std::string> aliasesOf(int cls) const;  // its other names
     size_t size() const { return m_names.size(); }
     size_t longest() const { return m_longest; }
     // One of L-Py's predefined modules (a file's own modules draw nothing, as in L-Py).
@@ -72,6 +73,7 @@ struct WrittenModule {
     std::vector<std::string> args;
     bool hasParens = false;
     std::string variable;  // `$v`: the module held in Python variable v (cls is -1)
+    bool getModule = false;  // `$A(v)` in a header: a module of class A, bound whole to v (variable)
     int col = 0;           // 1-based column in the line
 };
 
@@ -95,6 +97,8 @@ struct PatternModule {
     std::string anyName;      // `*(name, ...)`: binds the module's name
     std::vector<PatternArg> args;
     bool exactPop = false;    // `=]`: an actual ']' (a ']' skips to the end of the branch)
+    // `$A(v)`: a module of class A bound whole (its place in the string, its tree) to v.
+    std::string moduleVariable;
     // `x(p, min, max)`: the pattern p repeated greedily (0 to 1000 times; exactly min when
     // only min is given); its variables are bound as lists.
     std::vector<PatternModule> repeat;

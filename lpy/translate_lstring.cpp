@@ -108,6 +108,14 @@ void ModuleClasses::adopt(const ModuleClasses& other, bool hidden) {
     }
 }
 
+std::vector<std::string> ModuleClasses::aliasesOf(int cls) const {
+    std::vector<std::string> out;
+    for (const auto& [name, id] : m_ids)
+        if (id == cls && name != m_names[size_t(cls)] && !m_hidden[size_t(id)]) out.push_back(name);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 int ModuleClasses::find(std::string_view name) const {
     auto it = m_ids.find(std::string(name));
     return it == m_ids.end() || m_hidden[size_t(it->second)] ? -1 : it->second;
@@ -174,7 +182,19 @@ std::vector<WrittenModule> readLstring(std::string_view s, ModuleClasses& classe
             ++i;
             continue;
         }
+        bool getModule = false;
         if (c == '$' && i + 1 < s.size() && isIdentStart(s[i + 1])) {
+            size_t j = i + 1;
+            while (j < s.size() && isIdent(s[j])) ++j;
+            size_t k = j;
+            while (k < s.size() && (s[k] == ' ' || s[k] == '\t')) ++k;
+            if (k < s.size() && s[k] == '(') {  // `$A(a)`: a pattern's whole module
+                getModule = true;
+                ++i;
+                m.col = col0 + int(i);
+            }
+        }
+        if (!getModule && c == '$' && i + 1 < s.size() && isIdentStart(s[i + 1])) {
             size_t j = i + 1;
             while (j < s.size() && isIdent(s[j])) ++j;
             m.cls = -1;
@@ -214,6 +234,15 @@ std::vector<WrittenModule> readLstring(std::string_view s, ModuleClasses& classe
             for (auto& a : splitArgs(s.substr(j + 1, close - j - 1))) m.args.push_back(std::move(a));
             if (m.args.size() == 1 && m.args[0].empty()) m.args.clear();
             i = close + 1;
+        }
+        if (getModule) {
+            m.getModule = true;
+            m.variable = m.args.size() == 1 ? std::string(trim(m.args[0])) : std::string();
+            if (m.args.size() != 1 || !isIdentifier(m.variable))
+                diags.push_back({line, m.col - 1, "'$" + classes.name(m.cls) + "(...)' binds the module to one name, e.g. $" +
+                                                      classes.name(m.cls) + "(m)", Severity::Error});
+            m.args.clear();
+            m.hasParens = false;
         }
         out.push_back(std::move(m));
     }

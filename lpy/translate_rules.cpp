@@ -61,8 +61,12 @@ PatternModule Translator::pattern(const WrittenModule& w, int line) {
     PatternModule p;
     p.cls = w.cls;
     p.hasParens = w.hasParens;
+    if (w.getModule) {
+        p.moduleVariable = w.variable;
+        return p;
+    }
     if (!w.variable.empty()) {
-        error(line, w.col, "'$" + w.variable + "' binds a whole module: Sprout does not match it yet");
+        error(line, w.col, "'$" + w.variable + "' in a rule's header: write $A(m) to bind a module of class A to m");
         return p;
     }
     size_t k = 0;
@@ -233,6 +237,7 @@ void Translator::bindNames(std::vector<PatternModule>& ps, std::vector<std::stri
             pm.alternativeVariables.push_back(int(names.size() - at));
         }
         if (!pm.anyName.empty()) add(pm.anyName);
+        if (!pm.moduleVariable.empty()) add(pm.moduleVariable);
         for (auto& a : pm.args)
             if (a.kind != PatternArg::Kind::Equal && a.kind != PatternArg::Kind::Skip) add(a.name);
     };

@@ -6,7 +6,29 @@ import sys as _sys
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
                          getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed)
 
+from _sprout_lpy import __lpy_module_class as _module_class, _class_count
+
 _state = {}
+
+
+class ModuleClassTable:
+    """L-Py's table of module classes: every class the process knows, with its aliases."""
+
+    @staticmethod
+    def get():
+        return ModuleClassTable()
+
+    def getClasses(self):
+        return [_module_class(i) for i in range(_class_count())]
+
+    def getNames(self):
+        names = []
+        for c in self.getClasses():
+            names += [c.name] + list(c.aliases)
+        return names
+
+    def find(self, name):
+        return ModuleClass.get(name)
 
 
 class _Embedded:

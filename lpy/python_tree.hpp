@@ -1,0 +1,28 @@
+#pragma once
+// A string as L-Py's axial tree (src/cpp/axialtree_manip.h), for the Python API's Lstring and
+// Module (lpy/python_types.cpp): a module's parent, sons, complex and components at a scale.
+// Positions are indices; -1 is none. Brackets have no scale (INT_MAX, L-Py's DEFAULT_SCALE).
+#include <functional>
+#include <vector>
+
+#include "lpy/engine.hpp"
+
+namespace sprout::lpy::tree {
+
+using Scale = std::function<int(int cls)>;
+
+bool isPush(const LModule& m);
+bool isPop(const LModule& m);
+long parentOf(const LString& s, size_t i);
+long directSonOf(const LString& s, size_t i);
+std::vector<long> lateralSonsOf(const LString& s, size_t i);
+std::vector<long> childrenOf(const LString& s, size_t i);  // lateral sons, then the direct son
+long complexOf(const LString& s, size_t i, int scale, const Scale& scaleOf);
+// Components of i (modules of finer scales below it), all or those at `scale`.
+std::vector<long> componentsOf(const LString& s, size_t i, const Scale& scaleOf, const int* scale = nullptr);
+long successorAtScale(const LString& s, size_t i, int scale, const Scale& scaleOf);
+long predecessorAtScale(const LString& s, size_t i, int scale, const Scale& scaleOf);
+long successorAtLevel(const LString& s, size_t i, int scale, const Scale& scaleOf);
+long predecessorAtLevel(const LString& s, size_t i, int scale, const Scale& scaleOf);
+
+}  // namespace sprout::lpy::tree
