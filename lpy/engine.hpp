@@ -212,6 +212,14 @@ private:
     void pass(const LString& in, LString& out, RuleKind kind, bool forward);
     bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
+    // Whether rule r's header matches at `at` (its predecessor's first module, or last when
+    // backward), its variables' values in `args`, where its contexts ended.
+    bool matchAt(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, py::tuple& args, long& leftEnd,
+                 size_t& rightEnd);
+public:
+    // L-Py's LsysRule.match / reverse_match: (the position past the match, its values) or False.
+    py::object matchRule(size_t rule, const LString& s, long at, bool forward);
+private:
     bool matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound);
     // `$A(a)`: the module bound whole, a view of the string a pass reads (m_reading).
     py::object nodeOf(const LModule& m);

@@ -362,7 +362,8 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
     return j;
 }
 
-bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
+bool Engine::matchAt(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, py::tuple& args, long& leftEnd,
+                     size_t& rightEnd) {
     const size_t len = r.pred.size();
     if (!forward && at + 1 < len) return false;
     const size_t start = forward ? at : at + 1 - len;
@@ -372,19 +373,42 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
         if (!matchModule(r.pred[k], s[start + k], pred)) return false;
     const bool keep = m_contexts && (!r.left.empty() || !r.right.empty());
     if (keep) m_left.clear(), m_right.clear();
-    long leftEnd = long(start) - 1;
+    leftEnd = long(start) - 1;
     if (!r.left.empty() && !matchLeft(r.left, s, long(start) - 1, r.filter, left, keep ? &m_left : nullptr, &leftEnd)) return false;
-    size_t rightEnd = start + len;
+    rightEnd = start + len;
     if (!r.right.empty() &&
         (rightEnd = matchRight(r.right, View{&s}, start + len, r.filter, right, keep ? &m_right : nullptr)) == size_t(-1))
         return false;
     if (!r.newLeft.empty() && (!forward || !matchLeft(r.newLeft, built, long(built.size()) - 1, r.filter, newLeft))) return false;
     // `>>`: a backward step reads the new string already made to its right (built from the end).
     if (!r.newRight.empty() && (forward || matchRight(r.newRight, View{&built, true}, 0, r.filter, newRight) == size_t(-1))) return false;
-    py::tuple args(left.size() + newLeft.size() + pred.size() + newRight.size() + right.size());
+    args = py::tuple(left.size() + newLeft.size() + pred.size() + newRight.size() + right.size());
     size_t k = 0;
     for (auto* part : {&left, &newLeft, &pred, &newRight, &right})
         for (auto& o : *part) PyTuple_SET_ITEM(args.ptr(), k++, o.release().ptr());
+    return true;
+}
+
+py::object Engine::matchRule(size_t rule, const LString& s, long at, bool forward) {
+    if (rule >= m_tr.rules.size() || at < 0 || size_t(at) >= s.size()) return py::bool_(false);
+    const Rule& r = m_tr.rules[rule];
+    matchBrackets(s);
+    py::tuple args;
+    long leftEnd = 0;
+    size_t rightEnd = 0;
+    const bool matched = matchAt(r, s, size_t(at), forward, LString(), args, leftEnd, rightEnd);
+    m_matchOf = nullptr;  // s is the caller's: its brackets are not kept
+    if (!matched) return py::bool_(false);
+    const long len = long(r.pred.size());
+    return py::make_tuple(forward ? at + len : at - len, py::list(args));
+}
+
+bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
+    py::tuple args;
+    long leftEnd = 0;
+    size_t rightEnd = 0;
+    if (!matchAt(r, s, at, forward, built, args, leftEnd, rightEnd)) return false;
+    const size_t len = r.pred.size();
     m_buffer.clear();
     m_produced = false;
     // The body's own context tests (InLeftContext ...) start where the header's ended.

@@ -153,6 +153,29 @@ public:
         return out;
     }
 
+    // L-Py's LsysRule: what a rule's header holds, and whether it matches at a place.
+    py::dict rule(size_t i) const {
+        const auto& rules = m_engine->translation().rules;
+        if (i >= rules.size()) throw py::index_error("no such rule");
+        const Rule& r = rules[i];
+        py::dict out;
+        out["kind"] = int(r.kind);
+        out["group"] = r.group;
+        out["line"] = r.line;
+        out["header"] = r.header;
+        out["left"] = !r.left.empty();
+        out["newLeft"] = !r.newLeft.empty();
+        out["right"] = !r.right.empty();
+        out["newRight"] = !r.newRight.empty();
+        out["parameters"] = r.params.size();
+        return out;
+    }
+    py::object match(size_t rule, const PyLstring& s, long at, bool forward) {
+        EngineScope scope(m_engine.get());
+        return m_engine->matchRule(rule, *s.s, at, forward);
+    }
+    size_t ruleCount() const { return m_engine->translation().rules.size(); }
+
     const std::string& python() const { return m_python; }  // the code as Python runs it (set(code, debug=True))
     const std::vector<std::string>& declared() const { return m_declared; }
 
@@ -181,6 +204,9 @@ void defineSession(py::module_& m) {
         .def_property_readonly("iteration", &Session::iteration)
         .def("rules", &Session::rules, py::arg("kind"), py::arg("group") = -1)
         .def("groups", &Session::groups)
+        .def("rule", &Session::rule)
+        .def("ruleCount", &Session::ruleCount)
+        .def("match", &Session::match)
         .def_property_readonly("python", &Session::python)
         .def("declared", &Session::declared);
 }

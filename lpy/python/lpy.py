@@ -194,6 +194,20 @@ class LsysContext:
                 _declare(name)
                 self._state.setdefault('declared', []).append(name)
 
+    def undeclare(self, names):
+        declared = self._state.setdefault('declared', [])
+        for name in str(names).split(','):
+            name = name.strip()
+            if name in declared:
+                declared.remove(name)
+
+    @staticmethod
+    def currentContext():
+        return _current
+
+    def updateNamespace(self, values):
+        self._state['ns'].update(values)
+
     def declaredModules(self):
         return list(self._state.get('declared', []))
 

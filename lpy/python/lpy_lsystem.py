@@ -8,7 +8,7 @@ from _sprout_lpy import _Session, Lstring, _written
 import openalea.lpy as _lpy
 from openalea.lpy import LsysContext  # noqa: F401
 
-__all__ = ['Lsystem', 'LsysContext', 'LpyParsing', 'declare', 'lstring2py', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
+__all__ = ['Lsystem', 'LsysContext', 'LsysRule', 'PatternModule', 'LpyParsing', 'declare', 'undeclare', 'lstring2py', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
            'eProduction', 'eDecomposition', 'eInterpretation']
 
 AxialTree = Lstring
@@ -33,6 +33,26 @@ def _read(filename):
 def declare(names):
     """Declares modules ('A, B(x), C') for the strings read outside a model."""
     _lpy.context().declare(names)
+
+
+def undeclare(names):
+    _lpy.context().undeclare(names)
+
+
+class _MatchingMethod(type):
+    @property
+    def matchingMethod(cls):
+        """The option 'Module matching' of the current context."""
+        chosen = _lpy._state.get('options', {}).get('Module matching')
+        return cls.eDefaultMatchingMethod if chosen is None else chosen
+
+
+class PatternModule(metaclass=_MatchingMethod):
+    """L-Py's module matching methods (the option 'Module matching'). Sprout matches as
+    eWithStarNValueConstraint, L-Py's default, whichever is chosen: a pattern with fewer
+    parameters than a module never matches it, `*` matches any module."""
+    eSimple, eWithStar, eWithStarNValueConstraint = 0, 1, 2
+    eDefaultMatchingMethod = eWithStarNValueConstraint
 
 
 def lstring2py(text):
@@ -105,17 +125,40 @@ class Lsystem:
     Lsystem(filename=None, parameters=None); parameters override the model's names (after its
     INITIALISATION part, before the rest of its code)."""
 
+    _own = ('_context', '_session', '_code', '_parameters', '_axiom', '_length', '_last', '_scene', '_added', '_running',
+            'filename')
+
     def __init__(self, filename=None, parameters=None):
         self._context = _lpy.LsysContext()
         self._session = None
         self._code = ''
         self._parameters = {}
         self._axiom = None  # set through the `axiom` property
+        self._length = None  # set through `derivationLength`
         self._last = 0
         self._scene = None
+        self._added = []  # rules added from Python: (kind, group, text)
+        self._running = False
         self.filename = ''
         if filename:
             self.read(filename, parameters or {})
+
+    # The model's names as attributes (an L-system used as a module of a script).
+    def __getattr__(self, name):
+        if name.startswith('__') or name in Lsystem._own:
+            raise AttributeError(name)
+        ns = self.__dict__.get('_context')._state['ns'] if '_context' in self.__dict__ else {}
+        if name in ns:
+            return ns[name]
+        raise AttributeError("'Lsystem' object has no attribute '%s'" % name)
+
+    def __setattr__(self, name, value):
+        if name in Lsystem._own or name.startswith('_') or isinstance(getattr(type(self), name, None), property):
+            object.__setattr__(self, name, value)
+        elif name in self._context._state['ns']:
+            self._context._state['ns'][name] = value
+        else:
+            object.__setattr__(self, name, value)
 
     # -- reading -------------------------------------------------------------------------
     def read(self, filename, parameters={}):
@@ -126,18 +169,58 @@ class Lsystem:
 
     def set(self, code, parameters={}, debug=False):
         """Sets the model's code (and runs it): the namespace starts afresh."""
+        self._added, self._axiom, self._length = [], None, None
+        return self._set(code, parameters, debug)
+
+    def _with_added_rules(self, code):
+        """The code with the rules added from Python after its own (before its
+        INITIALISATION part)."""
+        if not self._added:
+            return code
+        tag = '###### INITIALISATION ######'
+        main, sep, init = code.partition(tag)
+        lines = [main.rstrip('\n'), 'production:']
+        for kind, group, text in self._added:
+            if kind:
+                lines.append(('decomposition:', 'interpretation:')[kind - 1])
+            lines += ['group %d:' % group if group else 'group 0:', text, 'endgroup', 'production:']
+        lines.append('endlsystem')
+        return '\n'.join(lines) + '\n' + sep + init
+
+    def _set(self, code, parameters={}, debug=False):
         file = _os.path.abspath(self.filename) if self.filename else '<lsystem>'
         self._context._state['ns'] = {}
         ctx = _lpy._begin(self._context._state['ns'], file, self._context)
         try:
-            self._session = _Session(code, file, ctx._state['ns'], dict(parameters or {}))
+            self._session = _Session(self._with_added_rules(code), file, ctx._state['ns'], dict(parameters or {}))
         finally:
             ctx.done()
         self._context._state['declared'] = list(self._session.declared())
-        self._code, self._parameters, self._axiom, self._last = code, dict(parameters or {}), None, 0
+        self._code, self._parameters, self._last = code, dict(parameters or {}), 0
+        if self._length is not None:
+            self._session.derivationLength = self._length
         return self._session.python if debug else None
 
-    def setCode(self, code, parameters={}, debug=False):
+    # -- rules added from Python ---------------------------------------------------------
+    def addRule(self, rule, kind=0, group=0):
+        """Adds a rule (its text, as in a file) of kind 0 production, 1 decomposition, 2
+        interpretation, to a group; the model is read again with it."""
+        self._added.append((int(kind), int(group), str(rule)))
+        self._set(self._code, self._parameters)
+
+    def addProductionRule(self, rule, group=0):
+        self.addRule(rule, 0, group)
+
+    def addDecompositionRule(self, rule, group=0):
+        self.addRule(rule, 1, group)
+
+    def addInterpretationRule(self, rule, group=0):
+        self.addRule(rule, 2, group)
+
+    def isRunning(self):
+        return self._running
+
+    def setCode(self, code, parameters={}, debug=False):  # noqa: D102
         return self.set(code, parameters, debug)
 
     def code(self):
@@ -157,7 +240,7 @@ class Lsystem:
 
     def _need(self):
         if self._session is None:
-            self.set('')
+            self._set('')
         return self._session
 
     # -- the model's settings ------------------------------------------------------------
@@ -184,6 +267,7 @@ class Lsystem:
     @derivationLength.setter
     def derivationLength(self, n):
         self._need().derivationLength = int(n)
+        self._length = int(n)
 
     def setDerivationLength(self, n):
         self.derivationLength = n
@@ -240,6 +324,8 @@ class Lsystem:
                 nb = args[1]
             elif len(args) >= 3:
                 start, nb = args[1], args[2]
+        if self._running:
+            raise RuntimeError("this Lsystem is deriving already: it cannot derive again from inside its own run")
         with self._context:
             if lstring is None:
                 lstring = self.axiom
@@ -247,7 +333,11 @@ class Lsystem:
                 lstring = Lstring(lstring)
             if nb is None:
                 nb = s.derivationLength - start
-            out = s.derive(lstring, int(start), int(nb))
+            self._running = True
+            try:
+                out = s.derive(lstring, int(start), int(nb))
+            finally:
+                self._running = False
             self._last = s.iteration
         return out
 
@@ -330,6 +420,71 @@ class Lsystem:
 
     def __str__(self):
         return self._code
+
+
+class LsysRule:
+    """One rule, read and matched on its own (L-Py's LsysRule)."""
+
+    def __init__(self, code=None, kind=0, group=0):
+        self._lsystem, self._info = None, None
+        if code:
+            self.set(code)
+
+    def set(self, code):
+        self._lsystem = Lsystem()
+        self._lsystem.set('production:\n' + str(code) + '\nendlsystem\n')
+        s = self._lsystem._session
+        if s.ruleCount() != 1:
+            raise ValueError("LsysRule.set: one rule, e.g. 'F --> F[+F]F'")
+        self._info = s.rule(0)
+
+    def isCompiled(self):
+        return self._info is not None
+
+    def compile(self):
+        pass
+
+    def forwardCompatible(self):
+        return not self._info['newRight']
+
+    def backwardCompatible(self):
+        return not self._info['newLeft']
+
+    def nbContexts(self):
+        return sum(1 for k in ('left', 'newLeft', 'right', 'newRight') if self._info[k])
+
+    def isContextFree(self):
+        return self.nbContexts() == 0
+
+    def nbParameters(self):
+        return self._info['parameters']
+
+    @property
+    def lineno(self):
+        return self._info['line']
+
+    def name(self):
+        return self._info['header']
+
+    def process(self, lstring):
+        """The string after one step of this rule."""
+        return self._lsystem.derive(Lstring(lstring) if not isinstance(lstring, Lstring) else lstring, 0, 1)
+
+    def _match(self, lstring, pos, forward):
+        s = lstring if isinstance(lstring, Lstring) else Lstring(lstring)
+        if pos < 0:
+            pos += len(s)
+        with self._lsystem._context:
+            return self._lsystem._session.match(0, s, pos, forward)
+
+    def match(self, lstring, pos=0, dest=None):
+        """(the position after the match, the values it binds), or False."""
+        return self._match(lstring, pos, True)
+
+    def reverse_match(self, lstring, pos=-1, dest=None):
+        """Matched backwards from pos (the last module by default): (the position before the
+        match, the values), or False."""
+        return self._match(lstring, pos, False)
 
 
 class LsystemIterator:
