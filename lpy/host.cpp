@@ -377,6 +377,8 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
     return record;
 }
 
+}  // namespace
+
 // L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string
 // with its interpretation rules drawn by a turtle that keeps no picture, and each query
 // module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
@@ -409,7 +411,6 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
     }
 }
 
-}  // namespace
 
 bool pythonAvailable() { return true; }
 

@@ -54,6 +54,10 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule);
 // of shapes whose ids are the modules of `s` that drew them (L-Py's sceneInterpretation).
 py::object sceneOf(Engine& engine, const LString& s);
 
+// L-Py's query modules (?P ?H ...) given the turtle's state where they stand (each step,
+// before the rules, when a rule reads one).
+void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d);
+
 // The Python classes of `_sprout_lpy` (python_types.cpp: Module, ModuleClass, Lstring;
 // session.cpp: _Session, which openalea.lpy's Lsystem drives).
 void defineTypes(py::module_& m);

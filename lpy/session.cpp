@@ -95,6 +95,7 @@ public:
         for (int c : tr.declared) m_declared.push_back(tr.classes.name(c));
         m_engine = std::make_unique<Engine>(std::move(tr), ns, m_options);
         m_engine->sceneOf = [this](const LString& s) { return sceneOf(*m_engine, s); };
+        m_engine->fillQueries = [this](LString& s) { fillQueries(*m_engine, s, turtleDefaults(py::module_::import("openalea.lpy"))); };
         EngineScope scope(m_engine.get());
         py::module_ builtins = py::module_::import("builtins"), lpy = py::module_::import("openalea.lpy");
         builtins.attr("exec")(builtins.attr("compile")(init, file, "exec"), ns);

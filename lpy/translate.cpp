@@ -222,7 +222,13 @@ void Translator::translateMain(std::vector<std::string>& lines) {
                     continue;
                 }
                 const size_t col = line.find(':') + 2;
-                std::string text(rest.substr(0, commentStart(rest)));
+                const size_t sharp = commentStart(rest);
+                // `#(`: cpfg's '#' (width up) as a module; in L-Py '#' starts a comment, and
+                // what it leaves ('(0.1)...') is an error there too.
+                if (sharp + 1 < rest.size() && rest[sharp + 1] == '(')
+                    error(lineNo, int(line.find(rest)) + int(sharp) + 1,
+                          "'#(': '#' starts a comment in L-Py, so it is not a module; cpfg's # (width up) is _ in L-Py");
+                std::string text(rest.substr(0, sharp));
                 auto mods = readLstring(text, m_out.classes, lineNo, int(col), m_out.diagnostics);
                 m_outLines[i] = "__axiom__ = " + pythonLstring(mods);
                 continue;

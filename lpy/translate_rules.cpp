@@ -31,8 +31,11 @@ void Translator::translateProduces(std::vector<std::string>& lines, size_t i) {
                 std::string joined = line.substr(p);
                 size_t extra = 0, close;
                 while ((close = closeParen(joined, 0)) == std::string::npos && i + extra + 1 < lines.size() && extra < 200) {
+                    // Each line's comment ends at its line (`CA  # a comment` inside the parentheses).
+                    if (extra == 0) joined.resize(commentStart(joined));
                     ++extra;
-                    joined += ' ' + lines[i + extra];
+                    const std::string& next = lines[i + extra];
+                    joined += ' ' + next.substr(0, commentStart(next));
                 }
                 if (close == std::string::npos) {
                     error(int(i) + 1, int(p) + 1, std::string("the '(' after ") + word + " is never closed");
