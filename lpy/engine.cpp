@@ -198,6 +198,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
     int done = 0;
     for (int i = 0; i < steps; ++i) {
         checkCancel();
+        if (selectionAlways || selectionRequested) insertSelection(s);
         iteration = start + i;
         callHook("StartEach", &s, nullptr, &s);
         // Direction and group are read after StartEach (so StartEach may set them).
@@ -223,6 +224,20 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
     iteration = start + std::max(0, done - 1);
     if (start + done == total) callHook("End", &s, nullptr, &s);
     return s;
+}
+
+void Engine::insertSelection(LString& s) {
+    selectionRequested = false;
+    py::object chosen = py::module_::import("openalea.lpy").attr("_selection")();
+    if (chosen.is_none()) return;
+    std::vector<size_t> at;
+    for (py::handle h : chosen) at.push_back(h.cast<size_t>());
+    std::sort(at.begin(), at.end());
+    const int x = m_tr.classes.intern("X");
+    size_t added = 0;
+    const size_t size = s.size();
+    for (size_t p : at)
+        if (p < size) s.insert(s.begin() + std::ptrdiff_t(p + added++), LModule{x, py::tuple()});
 }
 
 void Engine::endEach(LString& s) {

@@ -144,6 +144,9 @@ public:
     // step while animating, else the last of a derive call); what it left as the scene to
     // show (lastScene: the one computed, the one it returned, None when it changed the string).
     bool animating = false;
+    // L-Py's selection (setSelectionAlwaysRequired, requestSelection): before a step, the
+    // positions the plotter's selection() gives get an X module inserted.
+    bool selectionAlways = false, selectionRequested = false;
     bool frameDisplayed = false;
     py::object lastScene;
     static bool isQuery(const std::string& name);
@@ -204,7 +207,8 @@ public:
     int classScale(int cls) const { return scaleOf(cls); }
 private:
     LString interpretationHook(const char* name);
-    void endEach(LString& s);  // the EndEach hook, with a scene when it takes two arguments
+    void endEach(LString& s);
+    void insertSelection(LString& s);  // the EndEach hook, with a scene when it takes two arguments
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'

@@ -69,6 +69,9 @@ static void defineSproutLpy(py::module_& m) {
     m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
     m.def("getGroup", [] { return engine().group; });
     m.def("getIterationNb", [] { return engine().iteration; });
+    m.def("setSelectionAlwaysRequired", [](bool on) { engine().selectionAlways = on; }, py::arg("enabled") = true);
+    m.def("isSelectionAlwaysRequired", [] { return currentEngine() && currentEngine()->selectionAlways; });
+    m.def("requestSelection", [](py::object) { engine().selectionRequested = true; }, py::arg("message") = py::none());
     m.def("isAnimationEnabled", [] { return currentEngine() && currentEngine()->animating; });
     m.def("isFrameDisplayed", [] { return currentEngine() && currentEngine()->frameDisplayed; });
     // InLeftContext / InRightContext in a rule's body (lpy/translate_contexts.cpp).

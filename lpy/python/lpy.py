@@ -4,7 +4,8 @@
 import sys as _sys
 
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
-                         getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed)
+                         getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed,
+                         setSelectionAlwaysRequired, isSelectionAlwaysRequired, requestSelection)
 
 from _sprout_lpy import __lpy_module_class as _module_class, _class_count
 
@@ -259,6 +260,13 @@ def cleanPlotter():
 
 def get_plotter():
     return _plotter
+
+
+def _selection():
+    """The positions the registered plotter's selection() gives (none without one)."""
+    if _plotter is None or not hasattr(_plotter, 'selection'):
+        return None
+    return _plotter.selection()
 
 
 def extern(*names, **defaults):
