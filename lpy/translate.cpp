@@ -46,6 +46,7 @@ Translation Translator::run() {
 }
 
 void Translator::declareModules(std::string_view rest, int line, size_t index) {
+    rest = rest.substr(0, commentStart(rest));  // `module I  # an internode`
     // `module A, B(x,y), C=D : base = E, scale = 2`; of the keys after ':', Sprout reads `base`
     // (one class or a tuple of them); `scale` (multiscale strings) is not read yet.
     int depth = 0;
