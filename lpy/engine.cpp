@@ -222,7 +222,23 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         if (stopRequested) break;
     }
     iteration = start + std::max(0, done - 1);
-    if (start + done == total) callHook("End", &s, nullptr, &s);
+    if (start + done == total) {
+        // End(lstring, scene): the scene of the last step (EndEach's, or made now).
+        py::object fn = m_ns.contains("End") ? py::object(m_ns["End"]) : py::object();
+        if (fn && arityOf(fn) >= 2 && sceneOf) {
+            py::object scene = lastScene && !lastScene.is_none() ? lastScene : sceneOf(s);
+            auto shared = std::make_shared<LString>(s);
+            py::object ret = fn(py::cast(PyLstring{shared}), scene);
+            s = *shared;
+            if (py::isinstance<PyLstring>(ret) || py::isinstance<py::list>(ret)) {
+                LString next;
+                append(next, ret);
+                s = std::move(next);
+            }
+        } else {
+            callHook("End", &s, nullptr, &s);
+        }
+    }
     return s;
 }
 

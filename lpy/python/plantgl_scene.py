@@ -82,14 +82,19 @@ _geometry_fields = {
     'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
                        'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
 }
+class Mesh(_Geometry):
+    """PlantGL's meshes (TriangleSet, QuadSet, FaceSet)."""
+
+
 class Transformed(_Geometry):
     """PlantGL's transformed geometries (Translated, Oriented, Scaled, ...): `geometry` inside."""
 
 
 _transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
 for _name, _f in _geometry_fields.items():
-    globals()[_name] = type(_name, (Transformed if _name in _transforms else _Geometry,), {'_fields': _f})
-del _name, _f
+    _base = Transformed if _name in _transforms else Mesh if _name in ('TriangleSet', 'QuadSet') else _Geometry
+    globals()[_name] = type(_name, (_base,), {'_fields': _f})
+del _name, _f, _base
 
 
 class Scene(list):
@@ -107,6 +112,13 @@ class Scene(list):
 
     def add(self, shape):
         self.append(shape)
+
+    def todict(self):
+        """The shapes by id."""
+        out = {}
+        for shape in self:
+            out.setdefault(getattr(shape, 'id', None), []).append(shape)
+        return out
 
 
 class BoundingBox:
