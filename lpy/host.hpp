@@ -57,6 +57,11 @@ bool pythonAvailable();
 
 Model runModel(std::string_view text, const RunOptions& options);
 
+// What Sprout's turtle draws of an Lstring of a Python script's Lsystem (its `_Session`,
+// lpy/session.cpp, and the Lstring, as Python objects): for `sprout`'s pictures and exports
+// of a scene. Throws std::invalid_argument for objects of other kinds.
+std::shared_ptr<const Grammar> drawingOf(void* session, void* lstring);
+
 // Installs Sprout's openalea.lpy and openalea.plantgl (L-Py's Python API, lpy/session.cpp)
 // into the running interpreter: `sprout.use_as_openalea()`.
 void installOpenalea();

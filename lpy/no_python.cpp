@@ -14,4 +14,6 @@ Model runModel(std::string_view, const RunOptions&) {
 
 void installOpenalea() {}
 
+std::shared_ptr<const Grammar> drawingOf(void*, void*) { return nullptr; }
+
 }  // namespace sprout::lpy

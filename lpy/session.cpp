@@ -131,6 +131,11 @@ public:
         EngineScope scope(m_engine.get());
         return sceneOf(*m_engine, *s.s);
     }
+    std::shared_ptr<const Grammar> drawing(const LString& s) {
+        EngineScope scope(m_engine.get());
+        TurtleDefaults d = turtleDefaults(py::module_::import("openalea.lpy"));
+        return drawable(m_engine->interpret(s), m_engine->classes(), d);
+    }
     // While animating: EndEach gets a scene at every step.
     void setAnimating(bool on) { m_engine->animating = on; }
     bool animating() const { return m_engine->animating; }
@@ -190,6 +195,12 @@ private:
 };
 
 }  // namespace
+
+std::shared_ptr<const Grammar> drawingOf(void* session, void* lstring) {
+    py::handle s(static_cast<PyObject*>(session)), l(static_cast<PyObject*>(lstring));
+    if (!py::isinstance<Session>(s) || !py::isinstance<PyLstring>(l)) throw std::invalid_argument("not an Lsystem's string");
+    return py::cast<Session&>(s).drawing(*py::cast<PyLstring&>(l).s);
+}
 
 void defineSession(py::module_& m) {
     py::class_<Session>(m, "_Session")

@@ -412,6 +412,18 @@ PYBIND11_MODULE(_sprout, m) {
             "Writes a glTF binary, OBJ + MTL, PLY or SVG of step n");
 
     m.def("_install_openalea", &lpy::installOpenalea);
+    // A scene of an L-Py script's Lsystem (openalea.lpy, sceneInterpretation) as a plant that
+    // renders and exports like any other.
+    m.def("_plant_of_lpy", [](py::object session, py::object lstring) {
+        Plant p;
+        p.name = "<Lsystem>";
+        p.kind = FileKind::Lpy;
+        p.dialect = "L-Py";
+        p.grammar = lpy::drawingOf(session.ptr(), lstring.ptr());
+        if (!p.grammar) throw py::value_error("this Sprout was built without Python");
+        p.lpySteps.push_back(p.grammar);
+        return p;
+    });
     m.def("open", &openSource, py::arg("source"), py::arg("python") = true, py::arg("steps") = -1,
           "A file of any kind Sprout opens (.lsys, ABOP notation, cpfg .l, .lpy, Lparser .ls, Fractint .l or FILE.l:System, "
           "a PNG written by Sprout) or a preset's name. An L-Py model is a Python program: it runs here as `python3 FILE` "

@@ -120,6 +120,20 @@ def _scene(parts):
     return scene
 
 
+def _show_in_notebook(scene):
+    """In Jupyter, plot() shows the scene's picture (L-Py shows it in its viewer)."""
+    import sys
+    if 'IPython' not in sys.modules:
+        return
+    try:
+        from IPython import get_ipython
+        from IPython.display import display
+        if get_ipython() is not None and getattr(get_ipython(), 'kernel', None) is not None:
+            display(scene)
+    except ImportError:
+        pass
+
+
 class Lsystem:
     """An L-system read from a file or from code, derived and interpreted on demand:
     Lsystem(filename=None, parameters=None); parameters override the model's names (after its
@@ -359,8 +373,10 @@ class Lsystem:
     def sceneInterpretation(self, lstring):
         """The scene the turtle draws from the string: an openalea.plantgl.all.Scene whose
         shapes' ids are the modules that drew them."""
+        lstring = self._lstring(lstring)
         with self._context:
-            self._scene = self._need().scene(self._lstring(lstring))
+            self._scene = self._need().scene(lstring)
+        self._scene._sprout_source = (self._session, Lstring(lstring))
         return self._scene
 
     def getLastComputedScene(self):
@@ -377,6 +393,8 @@ class Lsystem:
         plotter = _lpy.get_plotter()
         if plotter is not None:
             plotter.plot(scene)
+        else:
+            _show_in_notebook(scene)
 
     def animate(self, *args):
         """animate(), animate(dt), animate(dt, nb), animate(dt, start, nb),

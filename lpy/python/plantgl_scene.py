@@ -113,6 +113,29 @@ class Scene(list):
     def add(self, shape):
         self.append(shape)
 
+    # A scene an Lsystem made (sceneInterpretation): a picture and a model by Sprout's renderer
+    # and exporters, when the `sprout` module is there (a script or a notebook).
+    def _plant(self):
+        made = getattr(self, '_sprout_source', None)
+        if made is None:
+            raise ValueError("only a scene made by Lsystem.sceneInterpretation is drawn by Sprout")
+        import sprout
+        return sprout._sprout._plant_of_lpy(*made)
+
+    def render(self, **kwargs):
+        """The scene's picture: numpy (height, width, 4), as sprout.Plant.render."""
+        return self._plant().render(**kwargs)
+
+    def export(self, path, **kwargs):
+        """Writes the scene as a model (.obj, .ply, .glb, .gltf, .stl, .svg), as sprout.Plant.export."""
+        return self._plant().export(path, **kwargs)
+
+    def _repr_png_(self):
+        if getattr(self, '_sprout_source', None) is None:
+            return None
+        import sprout
+        return sprout._png_bytes(self._plant())
+
     def todict(self):
         """The shapes by id."""
         out = {}
