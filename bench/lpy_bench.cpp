@@ -6,7 +6,11 @@
 //     second thread where the process may use two processors;
 //   - the Python path: the same file with the native path off (one Python call per match);
 //   - the same rule with a Python statement in its body (always the Python path);
-//   - Sprout's own grammar (.lsys) with the same rule, for reference.
+//   - Sprout's own grammar (.lsys) with the same rule, for reference;
+//   - the produce-only model driven from a Python script, as L-Py's documentation teaches
+//     (Lsystem.derive() of openalea.lpy, sprout.use_as_openalea()), against the command
+//     line's path above (goal: no more than 10% slower). Timed around derive() in Python: the
+//     call, the axiom, the derivation and the Lstring it gives.
 // Times the derivation alone (lpy::Model::deriveSeconds): Python's start, the preamble and
 // the drawing of the result cost the same both ways and are left out.
 // Prints matches per second for each and the ratio of the native path to the Python path
@@ -19,6 +23,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#ifdef SPROUT_BENCH_LSYSTEM_API
+#include <pybind11/embed.h>
+#endif
 
 #include "core/derive/derive.hpp"
 #include "core/language/file_kind.hpp"
@@ -54,6 +62,34 @@ double lpyRun(const std::string& text, int steps, bool native, bool expectNative
     }
     return best;
 }
+
+#ifdef SPROUT_BENCH_LSYSTEM_API
+// The best of kRuns Lsystem.derive() calls of `code` in the embedded interpreter (started by
+// runModel before), in seconds.
+double lsystemApiRun(const std::string& code, int steps) {
+    namespace py = pybind11;
+    py::gil_scoped_acquire gil;
+    py::dict ns;
+    ns["CODE"] = code;
+    ns["STEPS"] = steps;
+    ns["RUNS"] = kRuns;
+    py::exec(R"(
+import time
+from openalea.lpy import Lsystem
+lsys = Lsystem()
+lsys.set(CODE)
+lsys.derivationLength = STEPS
+best = 1e18
+for run in range(RUNS):
+    t0 = time.perf_counter()
+    s = lsys.derive()
+    best = min(best, time.perf_counter() - t0)
+    assert len(s) == 2 ** STEPS
+)",
+             ns);
+    return ns["best"].cast<double>();
+}
+#endif
 
 }  // namespace
 
@@ -91,5 +127,15 @@ int main(int argc, char** argv) {
     std::printf("  ratio native path / Python path: %.0fx (goal: 100x)\n", produceS / nativePathS);
     std::printf("  ratio native path / Python-body rule: %.0fx\n", bodyS / nativePathS);
     std::printf("  ratio .lsys / native path: %.1fx\n", nativePathS / nativeS);
+#ifdef SPROUT_BENCH_LSYSTEM_API
+    // The command line's way and the script's, alternated, each the best of its runs.
+    double cliS = 1e18, apiS = 1e18;
+    for (int round = 0; round < 3; ++round) {
+        cliS = std::min(cliS, lpyRun(produceOnly, steps, true, true));
+        apiS = std::min(apiS, lsystemApiRun(produceOnly, steps));
+    }
+    std::printf("  L-Py produce-only rule, Lsystem.derive() from Python: %8.4f s  %12.0f matches/s\n", apiS, matches / apiS);
+    std::printf("  ratio Lsystem.derive() / sprout render's derivation: %.2f (goal: 1.10 or less)\n", apiS / cliS);
+#endif
     return 0;
 }

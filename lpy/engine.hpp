@@ -73,6 +73,12 @@ struct NumString {
 // view into a string (writes go to it) or a module of its own.
 struct PyLstring {
     std::shared_ptr<LString> s;
+    // A native derivation's result (Lsystem.derive on the native path): its modules made only
+    // when Python reads them (get()), so a derivation from a script costs what it costs from
+    // the command line.
+    mutable std::shared_ptr<const NumString> pending;
+    LString& get() const;
+    size_t size() const;
 };
 struct PyModule {
     std::shared_ptr<LString> owner;  // set: a view of (*owner)[index]

@@ -7,6 +7,16 @@
 
 namespace sprout::lpy {
 
+LString& PyLstring::get() const {
+    if (pending) {
+        *s = Engine::toL(*pending);
+        pending.reset();
+    }
+    return *s;
+}
+
+size_t PyLstring::size() const { return pending ? pending->size() : s->size(); }
+
 LString Engine::parse(std::string_view text) { return parseLstring(text, m_tr.classes, m_ns); }
 
 LString parseLstring(std::string_view text, ModuleClasses& classes, py::handle ns) {
@@ -69,7 +79,7 @@ void appendValue(LString& out, py::handle item, size_t classCount) {
         return;
     }
     if (py::isinstance<PyLstring>(item)) {
-        const LString& s = *py::cast<PyLstring&>(item).s;
+        const LString& s = py::cast<PyLstring&>(item).get();
         out.insert(out.end(), s.begin(), s.end());
         return;
     }

@@ -110,16 +110,16 @@ py::object listOrNone(const std::vector<long>& v) {
 // An Lstring made from what L-Py's AxialTree takes: text, a list of modules, another Lstring.
 PyLstring makeLstring(py::handle v) {
     PyLstring out{std::make_shared<LString>()};
-    if (!v.is_none()) extend(*out.s, v);
+    if (!v.is_none()) extend(out.get(), v);
     return out;
 }
 
 // The modules of s[from:to:step] (Python's slice), as a new Lstring.
 PyLstring sliceOf(const PyLstring& s, const py::slice& sl) {
     size_t start = 0, stop = 0, step = 0, n = 0;
-    if (!sl.compute(s.s->size(), &start, &stop, &step, &n)) throw py::error_already_set();
+    if (!sl.compute(s.get().size(), &start, &stop, &step, &n)) throw py::error_already_set();
     PyLstring out{std::make_shared<LString>()};
-    for (size_t k = 0; k < n; ++k, start += step) out.s->push_back((*s.s)[start]);
+    for (size_t k = 0; k < n; ++k, start += step) out.get().push_back((s.get())[start]);
     return out;
 }
 
@@ -280,145 +280,145 @@ void defineTypes(py::module_& m) {
             } catch (const std::exception&) {
                 return false;  // not something a string is made of (a number, a dict)
             }
-            if (other.size() != s.s->size()) return false;
+            if (other.size() != s.get().size()) return false;
             for (size_t k = 0; k < other.size(); ++k)
-                if (!sameModule((*s.s)[k], other[k])) return false;
+                if (!sameModule((s.get())[k], other[k])) return false;
             return true;
         })
         .def("__ne__", [](py::object s, py::object v) { return !s.attr("__eq__")(v).cast<bool>(); })
         .def("__iadd__", [](PyLstring& s, py::object v) {
-            extend(*s.s, v);
+            extend(s.get(), v);
             return s;
         })
         .def("__add__", [](const PyLstring& s, py::object v) {
-            PyLstring out{std::make_shared<LString>(*s.s)};
-            extend(*out.s, v);
+            PyLstring out{std::make_shared<LString>(s.get())};
+            extend(out.get(), v);
             return out;
         })
         .def("__radd__", [](const PyLstring& s, py::object v) {
             PyLstring out = makeLstring(v);
-            out.s->insert(out.s->end(), s.s->begin(), s.s->end());
+            out.get().insert(out.get().end(), s.get().begin(), s.get().end());
             return out;
         })
         .def("__mul__", [](const PyLstring& s, int times) {
             PyLstring out{std::make_shared<LString>()};
-            for (int k = 0; k < times; ++k) out.s->insert(out.s->end(), s.s->begin(), s.s->end());
+            for (int k = 0; k < times; ++k) out.get().insert(out.get().end(), s.get().begin(), s.get().end());
             return out;
         })
-        .def("__len__", [](const PyLstring& s) { return s.s->size(); })
-        .def("__bool__", [](const PyLstring& s) { return !s.s->empty(); })
-        .def("__getitem__", [](const PyLstring& s, py::ssize_t i) { return viewOf(s.s, checkedIndex(*s.s, i)); })
+        .def("__len__", [](const PyLstring& s) { return s.size(); })
+        .def("__bool__", [](const PyLstring& s) { return !s.get().empty(); })
+        .def("__getitem__", [](const PyLstring& s, py::ssize_t i) { return viewOf(s.s, checkedIndex(s.get(), i)); })
         .def("__getitem__", [](const PyLstring& s, const py::slice& sl) { return sliceOf(s, sl); })
         .def("__setitem__", [](PyLstring& s, py::ssize_t i, py::object v) {
-            const size_t at = checkedIndex(*s.s, i);
+            const size_t at = checkedIndex(s.get(), i);
             LString one;
             appendValue(one, v, names().size());
             if (one.size() != 1) throw py::value_error("an Lstring item is one module");
-            (*s.s)[at] = one[0];
+            (s.get())[at] = one[0];
         })
-        .def("__delitem__", [](PyLstring& s, py::ssize_t i) { s.s->erase(s.s->begin() + std::ptrdiff_t(checkedIndex(*s.s, i))); })
+        .def("__delitem__", [](PyLstring& s, py::ssize_t i) { s.get().erase(s.get().begin() + std::ptrdiff_t(checkedIndex(s.get(), i))); })
         .def("__delitem__", [](PyLstring& s, const py::slice& sl) {
             size_t start = 0, stop = 0, step = 0, n = 0;
-            if (!sl.compute(s.s->size(), &start, &stop, &step, &n)) throw py::error_already_set();
-            std::vector<bool> drop(s.s->size(), false);
+            if (!sl.compute(s.get().size(), &start, &stop, &step, &n)) throw py::error_already_set();
+            std::vector<bool> drop(s.get().size(), false);
             for (size_t k = 0; k < n; ++k, start += step) drop[start] = true;
             LString kept;
-            for (size_t k = 0; k < s.s->size(); ++k)
-                if (!drop[k]) kept.push_back((*s.s)[k]);
-            *s.s = std::move(kept);
+            for (size_t k = 0; k < s.get().size(); ++k)
+                if (!drop[k]) kept.push_back((s.get())[k]);
+            s.get() = std::move(kept);
         })
         .def("__iter__", [](const PyLstring& s) {
             py::list l;
-            for (size_t i = 0; i < s.s->size(); ++i) l.append(viewOf(s.s, i));
+            for (size_t i = 0; i < s.get().size(); ++i) l.append(viewOf(s.s, i));
             return py::iter(l);
         })
         .def("insertAt", [](PyLstring& s, py::ssize_t i, py::object v) {
             LString items;
             extend(items, v);
-            const size_t at = size_t(std::clamp<py::ssize_t>(i, 0, py::ssize_t(s.s->size())));
-            s.s->insert(s.s->begin() + std::ptrdiff_t(at), items.begin(), items.end());
+            const size_t at = size_t(std::clamp<py::ssize_t>(i, 0, py::ssize_t(s.get().size())));
+            s.get().insert(s.get().begin() + std::ptrdiff_t(at), items.begin(), items.end());
         })
-        .def("append", [](PyLstring& s, py::object v) { extend(*s.s, v); })
+        .def("append", [](PyLstring& s, py::object v) { extend(s.get(), v); })
         .def("prepend", [](PyLstring& s, py::object v) {
             LString items;
             extend(items, v);
-            s.s->insert(s.s->begin(), items.begin(), items.end());
+            s.get().insert(s.get().begin(), items.begin(), items.end());
         })
-        .def("clear", [](PyLstring& s) { s.s->clear(); })
-        .def("empty", [](const PyLstring& s) { return s.s->empty(); })
-        .def("reverse", [](PyLstring& s) { std::reverse(s.s->begin(), s.s->end()); })
+        .def("clear", [](PyLstring& s) { s.get().clear(); })
+        .def("empty", [](const PyLstring& s) { return s.get().empty(); })
+        .def("reverse", [](PyLstring& s) { std::reverse(s.get().begin(), s.get().end()); })
         // count('A') counts the modules named A; count(A(1)) those equal to a module.
         .def("count", [](const PyLstring& s, py::object what) {
             size_t n = 0;
             if (py::isinstance<py::str>(what)) {
                 const int cls = names().find(what.cast<std::string>());
-                for (const LModule& m : *s.s) n += m.cls == cls && cls >= 0;
+                for (const LModule& m : s.get()) n += m.cls == cls && cls >= 0;
             } else {
                 LString one;
                 appendValue(one, what, names().size());
                 if (one.size() == 1)
-                    for (const LModule& m : *s.s) n += sameModule(m, one[0]);
+                    for (const LModule& m : s.get()) n += sameModule(m, one[0]);
             }
             return n;
         })
         // find('C', start, end): the first module named C, or -1.
         .def("find", [](const PyLstring& s, const std::string& name, size_t start, py::object end) -> long {
             const int cls = names().find(name);
-            const size_t stop = end.is_none() ? s.s->size() : std::min(s.s->size(), end.cast<size_t>());
+            const size_t stop = end.is_none() ? s.get().size() : std::min(s.get().size(), end.cast<size_t>());
             for (size_t i = start; i < stop && cls >= 0; ++i)
-                if ((*s.s)[i].cls == cls) return long(i);
+                if ((s.get())[i].cls == cls) return long(i);
             return -1;
         }, py::arg("name"), py::arg("start") = 0, py::arg("end") = py::none())
         .def("wellBracketed", [](const PyLstring& s) {
             long depth = 0;
-            for (const LModule& m : *s.s) {
+            for (const LModule& m : s.get()) {
                 depth += isPush(m) ? 1 : isPop(m) ? -1 : 0;
                 if (depth < 0) return false;
             }
             return depth == 0;
         })
-        .def("parent", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(*s.s, checkedIndex(*s.s, i))); })
-        .def("father", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(*s.s, checkedIndex(*s.s, i))); })
-        .def("direct_child", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(*s.s, checkedIndex(*s.s, i))); })
-        .def("directSon", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(*s.s, checkedIndex(*s.s, i))); })
-        .def("lateral_children", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(*s.s, checkedIndex(*s.s, i))); })
-        .def("lateralSons", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(*s.s, checkedIndex(*s.s, i))); })
+        .def("parent", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("father", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("direct_child", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("directSon", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("lateral_children", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("lateralSons", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
         .def("children", [](const PyLstring& s, py::ssize_t i) {
-            const size_t at = checkedIndex(*s.s, i);
-            std::vector<long> out = lateralSonsOf(*s.s, at);
-            if (long d = directSonOf(*s.s, at); d >= 0) out.push_back(d);
+            const size_t at = checkedIndex(s.get(), i);
+            std::vector<long> out = lateralSonsOf(s.get(), at);
+            if (long d = directSonOf(s.get(), at); d >= 0) out.push_back(d);
             return listOrNone(out);
         })
         .def("sons", [](py::object s, py::ssize_t i) { return s.attr("children")(i); })
         // Multiscale strings (L-Py's AxialTree): complexes, components, successors and
         // predecessors at a scale (or a level).
         .def("complex", [](const PyLstring& s, py::ssize_t i, py::object scale) {
-            const size_t at = checkedIndex(*s.s, i);
+            const size_t at = checkedIndex(s.get(), i);
             const Scale sc = scales();
-            return indexOrNone(complexOf(*s.s, at, scale.is_none() ? sc((*s.s)[at].cls) + 1 : scale.cast<int>(), sc));
+            return indexOrNone(complexOf(s.get(), at, scale.is_none() ? sc((s.get())[at].cls) + 1 : scale.cast<int>(), sc));
         }, py::arg("pos"), py::arg("scale") = py::none())
-        .def("components", [](const PyLstring& s, py::ssize_t i) { return componentsOf(*s.s, checkedIndex(*s.s, i), scales()); })
+        .def("components", [](const PyLstring& s, py::ssize_t i) { return componentsOf(s.get(), checkedIndex(s.get(), i), scales()); })
         .def("components_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return componentsOf(*s.s, checkedIndex(*s.s, i), scales(), &scale);
+            return componentsOf(s.get(), checkedIndex(s.get(), i), scales(), &scale);
         })
         .def("successor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(successorAtScale(*s.s, checkedIndex(*s.s, i), scale, scales()));
+            return indexOrNone(successorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
         })
         .def("predecessor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(predecessorAtScale(*s.s, checkedIndex(*s.s, i), scale, scales()));
+            return indexOrNone(predecessorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
         })
         .def("successor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(successorAtLevel(*s.s, checkedIndex(*s.s, i), scale, scales()));
+            return indexOrNone(successorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
         })
         .def("predecessor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(predecessorAtLevel(*s.s, checkedIndex(*s.s, i), scale, scales()));
+            return indexOrNone(predecessorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
         })
-        .def("__copy__", [](const PyLstring& s) { return PyLstring{std::make_shared<LString>(*s.s)}; })
-        .def("__deepcopy__", [](const PyLstring& s, py::object) { return PyLstring{std::make_shared<LString>(*s.s)}; })
-        .def(py::pickle([](const PyLstring& s) { return stateOf(*s.s); },
+        .def("__copy__", [](const PyLstring& s) { return PyLstring{std::make_shared<LString>(s.get())}; })
+        .def("__deepcopy__", [](const PyLstring& s, py::object) { return PyLstring{std::make_shared<LString>(s.get())}; })
+        .def(py::pickle([](const PyLstring& s) { return stateOf(s.get()); },
                         [](py::list state) { return PyLstring{std::make_shared<LString>(fromState(state))}; }))
-        .def("__str__", [](const PyLstring& s) { return writeLstring(*s.s, names()); })
-        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + writeLstring(*s.s, names()) + "')"; });
+        .def("__str__", [](const PyLstring& s) { return writeLstring(s.get(), names()); })
+        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + writeLstring(s.get(), names()) + "')"; });
 }
 
 }  // namespace sprout::lpy

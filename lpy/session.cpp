@@ -116,20 +116,27 @@ public:
     PyLstring derive(const PyLstring& s, int start, int nb) {
         if (start < 0 || nb < 0) throw py::value_error("derive: a start and a count of steps from 0 on");
         EngineScope scope(m_engine.get());
+        // The native path (no hooks, arithmetic rules): numbers to the end, made into modules
+        // when Python reads them.
+        if (m_engine->native() && start == 0 && nb == m_engine->derivationLength && !m_engine->selectionAlways) {
+            auto numbers = std::make_shared<NumString>();
+            if (m_engine->deriveNumbers(s.get(), nb, nullptr, *numbers, false))
+                return PyLstring{std::make_shared<LString>(), std::move(numbers)};
+        }
         PausedCollector paused;
-        LString out = m_engine->derive(*s.s, nb, nullptr, nullptr, start, m_engine->derivationLength);
+        LString out = m_engine->derive(s.get(), nb, nullptr, nullptr, start, m_engine->derivationLength);
         return PyLstring{std::make_shared<LString>(std::move(out))};
     }
 
     PyLstring interpret(const PyLstring& s) {
         EngineScope scope(m_engine.get());
-        return PyLstring{std::make_shared<LString>(m_engine->interpret(*s.s))};
+        return PyLstring{std::make_shared<LString>(m_engine->interpret(s.get()))};
     }
 
     // The scene the turtle draws (the interpretation rules applied): sceneInterpretation.
     py::object scene(const PyLstring& s) {
         EngineScope scope(m_engine.get());
-        return sceneOf(*m_engine, *s.s);
+        return sceneOf(*m_engine, s.get());
     }
     std::shared_ptr<const Grammar> drawing(const LString& s) {
         EngineScope scope(m_engine.get());
@@ -178,7 +185,7 @@ public:
     }
     py::object match(size_t rule, const PyLstring& s, long at, bool forward) {
         EngineScope scope(m_engine.get());
-        return m_engine->matchRule(rule, *s.s, at, forward);
+        return m_engine->matchRule(rule, s.get(), at, forward);
     }
     size_t ruleCount() const { return m_engine->translation().rules.size(); }
 
@@ -199,7 +206,7 @@ private:
 std::shared_ptr<const Grammar> drawingOf(void* session, void* lstring) {
     py::handle s(static_cast<PyObject*>(session)), l(static_cast<PyObject*>(lstring));
     if (!py::isinstance<Session>(s) || !py::isinstance<PyLstring>(l)) throw std::invalid_argument("not an Lsystem's string");
-    return py::cast<Session&>(s).drawing(*py::cast<PyLstring&>(l).s);
+    return py::cast<Session&>(s).drawing(py::cast<PyLstring&>(l).get());
 }
 
 void defineSession(py::module_& m) {
