@@ -201,7 +201,9 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         if (selectionAlways || selectionRequested) insertSelection(s);
         iteration = start + i;
         callHook("StartEach", &s, nullptr, &s);
-        // Direction and group are read after StartEach (so StartEach may set them).
+        // Direction, group and the string matching options are read after StartEach (so
+        // StartEach may set them).
+        readMatchingOptions();
         LString next;
         if (m_hasKind[prod] && m_queryRules && fillQueries) fillQueries(s);
         auto matched = contexts ? std::make_shared<ContextMatches>() : nullptr;

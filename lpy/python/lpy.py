@@ -87,19 +87,110 @@ def _warn(message):
     _state.setdefault('warnings', []).append((f.f_lineno if f is not None else 0, message))
 
 
-class _Options:
-    def __init__(self, state):
-        self._state = state
+# L-Py's options (src/cpp/lsyscontext.cpp): each with its values, by index, and its default.
+_OPTIONS = [
+    ('Module declaration', ['On the fly', 'Mandatory'], 0),
+    ('Warning with sharp module', ['Disabled', 'Enabled'], 1),
+    ('Compiler', ['Python', 'Python -OO', 'Cython'], 0),
+    ('Optimization', ['Level 0', 'Level 1', 'Level 2'], 1),
+    ('Module matching', ['Simple', 'Extension : *args', 'Extensions : *args and arg value constraints'], 2),
+    ('Module inheritance', ['Disabled', 'Enabled'], 0),
+    ('String matching', ['As String', 'As AxialTree', 'As Multi-level AxialTree', 'As Multiscale AxialTree'], 1),
+    ('Early return when no matching', ['Disabled', 'Enabled'], 0),
+    ('Axiom decomposition', ['Disabled', 'Enabled'], 0),
+    ('Warning with Turtle inconsistency', ['Disabled', 'Enabled'], 1),
+    ('Turtle Path Optimization', ['Disabled', 'Enabled'], 0),
+    ('Turtle in Interpretation rules', ['Disabled', 'Enabled'], 1),
+    ('Multicore parallel rewriting', ['Disabled', 'Enabled'], 0),
+    ('Bracket mapping optimization', ['Disabled', 'On the fly', 'As preprocessing'], 0),
+    ('Selection Always Required', ['Disabled', 'Enabled'], 0),
+]
 
-    def setSelection(self, name, index):
-        self._state['options'][name] = index
+
+class _OptionValue:
+    def __init__(self, name):
+        self.name, self.comment = name, ''
+
+    def activate(self):
+        pass
+
+
+class _Option:
+    """One of L-Py's options: its values, the one selected (by index)."""
+
+    def __init__(self, state, name, values, default):
+        self._state, self.name, self._values, self.default_value_id = state, name, values, default
+        self.comment, self.category, self.__dict__['global'] = '', '', False
+
+    @property
+    def selection(self):
+        return self._state['options'].get(self.name, self.default_value_id)
+
+    @selection.setter
+    def selection(self, index):
+        self.setSelection(index)
+
+    def setSelection(self, value):
+        if isinstance(value, str):
+            if value not in self._values:
+                return False
+            value = self._values.index(value)
+        value = int(value)
+        if not 0 <= value < len(self._values):
+            return False
+        self._state['options'][self.name] = value
         return True
 
-    def __getitem__(self, name):
-        return self._state['options'].get(name)
+    def currentValue(self):
+        return self._values[self.selection]
+
+    def isToDefault(self):
+        return self.selection == self.default_value_id
+
+    def activateSelection(self):
+        pass
+
+    def activate(self, value):
+        self.setSelection(value)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __getitem__(self, i):
+        return _OptionValue(self._values[i])
+
+
+class _Options:
+    """A context's options as L-Py names them: setSelection(name, index or value name)."""
+
+    def __init__(self, state):
+        self._state = state
+        self._all = [_Option(state, n, v, d) for n, v, d in _OPTIONS]
 
     def find(self, name):
-        return self._state['options'].get(name)
+        for option in self._all:
+            if option.name == name:
+                return option
+        return None
+
+    def setSelection(self, name, value):
+        option = self.find(name)
+        if option is None:
+            _warn("option '%s' is not one of L-Py's: ignored" % name)
+            return False
+        return option.setSelection(value)
+
+    def activateSelection(self):
+        pass
+
+    def __getitem__(self, key):
+        if isinstance(key, int):
+            return self._all[key]
+        option = self.find(key)
+        return None if option is None else option.selection
+
+    def __len__(self):
+        return len(self._all)
 
 
 class _Turtle:
