@@ -201,6 +201,15 @@ void start() {
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
+            // PlantGL's scenegraph package: the same names as all, and two modules of its own
+            // that models import by name.
+            py::module_::import("openalea.plantgl.all").attr("__path__") = py::list();
+            py::module_ lpyEmbed = py::module_::import("openalea.lpy");
+            lpyEmbed.attr("_embed")("openalea.plantgl.scenegraph.interpolated_profile", std::string(embedded("plantgl_profile")),
+                                    "<sprout>/openalea/plantgl/scenegraph/interpolated_profile.py");
+            lpyEmbed.attr("_embed")("openalea.plantgl.scenegraph.nurbspatch_nd",
+                                    "from openalea.plantgl.all import NurbsPatch3D, Vector3, Vector4\n",
+                                    "<sprout>/openalea/plantgl/scenegraph/nurbspatch_nd.py");
             // L-Py's Lsystem for scripts (lpy/python/lpy_lsystem.py), part of openalea.lpy.
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
             {

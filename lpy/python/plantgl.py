@@ -43,3 +43,9 @@ def _adopt(obj):
 for _v in list(globals().values()):
     _adopt(_v)
 del _adopt, _v
+
+
+def pgl_support_extension(name):
+    """Whether PlantGL was built with an optional extension (CGAL, Qt, ...): Sprout's PlantGL
+    has none of them."""
+    return False

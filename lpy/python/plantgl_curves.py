@@ -279,3 +279,66 @@ class NurbsPatch:
 
     def getIsoVSectionAt(self, v):
         return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
+
+
+def _de_boor(points, degree, knots, t):
+    """A point of the B-spline of homogeneous `points` (tuples) at t (de Boor)."""
+    n = len(points) - 1
+    t = max(knots[degree], min(knots[n + 1], t))
+    span = degree
+    while span < n and t >= knots[span + 1]:
+        span += 1
+    d = [list(points[j]) for j in range(span - degree, span + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + span - degree
+            den = knots[i + degree - r + 1] - knots[i]
+            a = (t - knots[i]) / den if den else 0.0
+            d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(len(d[j]))]
+    return d[degree]
+
+
+class NurbsPatch3D:
+    """A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
+    grid [u][v][w]; getPointAt(u, v, w) maps the parameter cube into space."""
+
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, wdegree=3, uknotList=None, vknotList=None, wknotList=None,
+                 ustride=30, vstride=30, wstride=30):
+        pts = [[[tuple(p) for p in row] for row in plane] for plane in ctrlPointMatrix]
+        dims = (len(pts), len(pts[0]), len(pts[0][0]))
+        self.udegree, self.vdegree, self.wdegree = int(udegree), int(vdegree), int(wdegree)
+        for degree, dim in zip((self.udegree, self.vdegree, self.wdegree), dims):
+            if not 1 <= degree < dim:
+                raise ValueError("NurbsPatch3D: each degree from 1 to its count of control points - 1")
+        self.ctrlPointMatrix = pts
+        self.uknotList = list(uknotList) if uknotList is not None else _uniform_clamped_knots(dims[0], self.udegree)
+        self.vknotList = list(vknotList) if vknotList is not None else _uniform_clamped_knots(dims[1], self.vdegree)
+        self.wknotList = list(wknotList) if wknotList is not None else _uniform_clamped_knots(dims[2], self.wdegree)
+        self.ustride, self.vstride, self.wstride = ustride, vstride, wstride
+        self.name = ''
+
+    @staticmethod
+    def default():
+        """The unit cube, degree 1 in each direction."""
+        return NurbsPatch3D([[[(i, j, k, 1) for k in (0, 1)] for j in (0, 1)] for i in (0, 1)], 1, 1, 1)
+
+    firstUKnot = property(lambda self: self.uknotList[0])
+    lastUKnot = property(lambda self: self.uknotList[-1])
+    firstVKnot = property(lambda self: self.vknotList[0])
+    lastVKnot = property(lambda self: self.vknotList[-1])
+    firstWKnot = property(lambda self: self.wknotList[0])
+    lastWKnot = property(lambda self: self.wknotList[-1])
+
+    def isValid(self):
+        return True
+
+    def getPointAt(self, u, v, w):
+        def homogeneous(p):
+            return (p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3])
+        planes = []
+        for plane in self.ctrlPointMatrix:
+            row = [_de_boor([homogeneous(p) for p in line], self.wdegree, self.wknotList, w) for line in plane]
+            planes.append(_de_boor(row, self.vdegree, self.vknotList, v))
+        x, y, z, h = _de_boor(planes, self.udegree, self.uknotList, u)
+        h = h or 1.0
+        return Vector3(x / h, y / h, z / h)

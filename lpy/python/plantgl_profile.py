@@ -1,0 +1,86 @@
+# openalea.plantgl.scenegraph.interpolated_profile as Sprout provides it: a profile made of
+# cross sections given at parameters, a section at any parameter between them (PlantGL's
+# interpolated_profile: the editor's "InterpolatedProfile" panel). Sections are interpolated
+# linearly between their neighbours, point by point (PlantGL's NurbsMethod and CSplineMethod
+# make smoother surfaces through the same sections).
+from openalea.plantgl.all import Vector3, Polyline2D, NurbsCurve2D
+
+
+class NurbsMethod:
+    """PlantGL's NURBS interpolation between sections (here: linear, point by point)."""
+
+
+class CSplineMethod:
+    """PlantGL's cubic spline interpolation between sections (here: linear, point by point)."""
+
+
+class CrossSection(list):
+    """A cross section: its control points (x, y) or (x, y, weight)."""
+
+    def __init__(self, *points):
+        list.__init__(self, [tuple(p) for p in points])
+
+
+class InterpolatedProfile(dict):
+    """Cross sections by parameter; get_interpolated_section(t) between them."""
+
+    def __init__(self, interpolator=NurbsMethod):
+        dict.__init__(self)
+        self.interpolator = interpolator
+        self.name = ''
+        self._param_range = (0.0, 1.0)
+        self._abscissa_range = (-0.5, 0.5)
+
+    @staticmethod
+    def make_default():
+        p = InterpolatedProfile()
+        p.add_cross_section(0.0, CrossSection((-0.5, 0.0), (0.5, 0.0)))
+        p.add_cross_section(1.0, CrossSection((-0.5, 0.0), (0.5, 0.0)))
+        return p
+
+    def set_param_range(self, low, high):
+        self._param_range = (float(low), float(high))
+
+    def get_param_range(self):
+        return self._param_range
+
+    def set_abscissa_range(self, low, high):
+        self._abscissa_range = (float(low), float(high))
+
+    def get_abscissa_range(self):
+        return self._abscissa_range
+
+    def check_control_point_count(self, section):
+        return not self or len(section) == len(next(iter(self.values())))
+
+    def add_cross_section(self, parameter, section, autoUpdate=True, normalised=False):
+        if not self.check_control_point_count(section):
+            raise ValueError("a cross section has as many control points as the others")
+        self[float(parameter)] = CrossSection(*section)
+
+    def add_cross_sections(self, *parameters_and_sections, **kwargs):
+        for parameter, section in zip(parameters_and_sections[::2], parameters_and_sections[1::2]):
+            self.add_cross_section(parameter, section)
+
+    def as_sorted_tuples(self):
+        return sorted(self.items())
+
+    def get_interpolated_section(self, parameter, curve=True):
+        """The section at `parameter`: a curve (NurbsCurve2D) or its points."""
+        items = self.as_sorted_tuples()
+        if not items:
+            raise ValueError("the profile has no cross section")
+        t = float(parameter)
+        if t <= items[0][0] or len(items) == 1:
+            points = items[0][1]
+        elif t >= items[-1][0]:
+            points = items[-1][1]
+        else:
+            k = next(i for i in range(1, len(items)) if t <= items[i][0])
+            (t0, a), (t1, b) = items[k - 1], items[k]
+            f = (t - t0) / (t1 - t0)
+            points = [tuple((1 - f) * x + f * y for x, y in zip(p, q)) for p, q in zip(a, b)]
+        pts = [(p[0], p[1], p[2] if len(p) > 2 else 1.0) for p in points]
+        if not curve:
+            return pts
+        return NurbsCurve2D(pts, min(3, len(pts) - 1))
