@@ -99,6 +99,7 @@ Drawing::Drawing(const TurtleDefaults& d) : g(std::make_shared<Grammar>()), w(*g
     g->settings.angle = {d.angle, 0};
     g->settings.step = {1, 0};
     g->settings.gradient = Toggle::Off;
+    g->settings.polygonEdgesDrawn = true;  // PlantGL's F inside { } draws its cylinder too
     g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
     colours = int(g->settings.palette.size());
     st.width = d.width;

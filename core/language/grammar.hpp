@@ -48,6 +48,9 @@ struct Settings {
     // The texts of Label(k[, size]) (made by the L-Py drawing: its @L and Label).
     std::vector<std::string> labels;
     Toggle gradient = Toggle::Auto;      // colour by branch order (Auto: when no colour modules)
+    // Inside { }, F draws its segment as well as a polygon point (PlantGL's turtle, for L-Py
+    // files); false: F only outlines the polygon (cpfg).
+    bool polygonEdgesDrawn = false;
     std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
     ViewHint view = ViewHint::Auto;
     std::uint64_t seed = 1;

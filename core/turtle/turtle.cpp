@@ -30,6 +30,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     cosSinDegrees(std::isfinite(st.angle.mean) ? st.angle.mean : 0.0, m_cos, m_sin);
     m_angleSigma = toFloat(st.angle.sigma) * kPi / 180.0f;
     m_stepSigma = toFloat(st.step.sigma);
+    m_polygonEdgesDrawn = st.polygonEdgesDrawn;
     m_tropism = glm::vec3(toFloat(st.tropism[0]), toFloat(st.tropism[1]), toFloat(st.tropism[2]));
     if (glm::length(m_tropism) > 0) m_tropism = glm::normalize(m_tropism);
     m_tropismE = toFloat(st.tropismStrength);

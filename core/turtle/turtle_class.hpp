@@ -209,6 +209,7 @@ private:
     State m_state;
     v4 m_min, m_max;
     float m_angle, m_cos, m_sin, m_angleSigma, m_stepSigma;
+    bool m_polygonEdgesDrawn = false;  // Settings::polygonEdgesDrawn
     glm::vec3 m_tropism;
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;

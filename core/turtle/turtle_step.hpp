@@ -54,7 +54,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
             float len = p ? float(*p) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
             len *= growth(i);
             if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
-                t.pos += t.H * len;
+                if (m_polygonEdgesDrawn) segment(t, len, i);  // and draws its segment (PlantGL)
+                else t.pos += t.H * len;
                 if (act == Act::Draw) vertex(t);
                 break;
             }
