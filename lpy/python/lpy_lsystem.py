@@ -95,17 +95,37 @@ def _material(colour):
 def _scene(parts):
     """A PlantGL Scene from what Sprout's turtle drew (lpy/session.cpp sceneOf): a shape per
     cylinder, surface or sphere, with the id of the module that drew it."""
-    from openalea.plantgl.all import (Scene, Shape, Translated, Oriented, Cylinder, Cone, Sphere, Scaled,
-                                      TriangleSet, Vector3)
+    from openalea.plantgl.all import (Scene, Shape, Translated, Oriented, Cylinder, Cone, Frustum, Sphere, Scaled,
+                                      TriangleSet, Polyline, Vector3)
     scene = Scene()
     for part in parts:
         kind, ident = part[0], part[1]
         if kind == 'cylinder':
+            # PlantGL's shapes for an F: a Cylinder, a Cone (a radius of 0 at one end), a
+            # Frustum, a Polyline for a width of 0; placed by Translated(Oriented(...)) unless
+            # the turtle stands at the origin, heading up.
             a, b, r0, r1, colour = Vector3(*part[2]), Vector3(*part[3]), part[4], part[5], part[6]
             axis = b - a
-            height = axis.__norm__() if hasattr(axis, '__norm__') else sum(c * c for c in axis) ** 0.5
-            g = Cylinder(r0, height) if abs(r0 - r1) < 1e-9 else Cone(r0, height)
-            geometry = Translated(a, Oriented((1, 0, 0), (0, 1, 0), g))
+            height = sum(c * c for c in axis) ** 0.5
+            if r0 <= 1e-9 and r1 <= 1e-9:
+                scene.append(Shape(Polyline([a, b]), _material(colour), ident))
+                continue
+            if abs(r0 - r1) < 1e-9:
+                g = Cylinder(r0, height)
+            elif r1 <= 1e-9:
+                g = Cone(r0, height)
+            elif r0 <= 1e-9:  # a cone upside down: its base at the F's end, turned over
+                geometry = Translated(b, Oriented((1, 0, 0), (0, -1, 0), Cone(r1, height)))
+                geometry.direction = axis
+                scene.append(Shape(geometry, _material(colour), ident))
+                continue
+            else:
+                g = Frustum(r0, height, r1 / r0)
+            upright = height > 0 and abs(axis[2] - height) < 1e-6 * max(1.0, height)
+            if sum(c * c for c in a) < 1e-12 and upright:
+                geometry = g
+            else:
+                geometry = Translated(a, Oriented((1, 0, 0), (0, 1, 0), g))
             geometry.direction = axis
         elif kind == 'sphere':
             geometry = Translated(Vector3(*part[2]), Sphere(part[4]))
