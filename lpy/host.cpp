@@ -1,6 +1,10 @@
 #include "lpy/host.hpp"
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -428,10 +432,45 @@ bool pythonAvailable() { return true; }
 
 void installOpenalea() { start(); }
 
-Model runModel(std::string_view text, const RunOptions& options) {
+PasteReader pasteReader(const std::string& modelPath) {
+    namespace fs = std::filesystem;
+    const fs::path folder = modelPath.empty() ? fs::path() : fs::absolute(fs::path(modelPath)).parent_path();
+    return [folder](const std::string& name, bool module) -> std::optional<std::string> {
+        std::string relative = name;
+        if (module) {
+            std::replace(relative.begin(), relative.end(), '.', '/');
+            relative += ".lpy";
+        }
+        std::vector<fs::path> places;
+        if (!folder.empty()) places.push_back(folder / relative);
+        places.push_back(fs::path(relative));
+        if (module)
+            if (const char* env = std::getenv("PYTHONPATH"))
+                for (std::string_view rest(env); !rest.empty();) {
+                    const size_t colon = rest.find(':');
+                    places.push_back(fs::path(std::string(rest.substr(0, colon))) / relative);
+                    rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+                }
+        for (const fs::path& p : places) {
+            std::error_code ec;
+            if (!fs::is_regular_file(p, ec)) continue;
+            std::ifstream in(p, std::ios::binary);
+            std::ostringstream text;
+            text << in.rdbuf();
+            if (in) return text.str();
+        }
+        return std::nullopt;
+    };
+}
+
+Model runModel(std::string_view written, const RunOptions& options) {
     Model out;
+    // %pastefile / %pastemodule lines first, as L-Py reads a file.
+    const std::string pasted = pasteFiles(written, pasteReader(options.path), out.diagnostics);
+    if (hasErrors(out.diagnostics)) return out;
+    const std::string_view text = pasted;
     Translation tr = translate(text);
-    out.diagnostics = tr.diagnostics;
+    out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
     if (!tr.ok()) return out;
     try {
         start();

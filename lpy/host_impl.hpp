@@ -42,6 +42,10 @@ private:
     Engine* m_before;
 };
 
+// How %pastefile / %pastemodule find files: beside the model (`modelPath`), then from the
+// working folder (L-Py's way), a module also along PYTHONPATH.
+PasteReader pasteReader(const std::string& modelPath);
+
 // The model's namespace made ready to run its code (L-Py's: `from openalea.lpy import *`,
 // the functions the generated code calls; imports beside `path`, the file, when given).
 void prepareNamespace(py::dict ns, const std::string& path);

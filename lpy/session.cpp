@@ -77,7 +77,10 @@ namespace {
 
 class Session {
 public:
-    Session(const std::string& code, const std::string& file, py::dict ns, py::dict parameters) : m_file(file), m_ns(ns) {
+    Session(const std::string& written, const std::string& file, py::dict ns, py::dict parameters) : m_file(file), m_ns(ns) {
+        std::vector<Diagnostic> pasteErrors;
+        const std::string code = pasteFiles(written, pasteReader(file.empty() || file[0] == '<' ? std::string() : file), pasteErrors);
+        for (const Diagnostic& d : pasteErrors) raiseSyntaxError(d, file, written);
         Translation tr = translate(code, &registry());
         for (const Diagnostic& d : tr.diagnostics)
             if (d.severity == Severity::Error) raiseSyntaxError(d, file, code);

@@ -243,7 +243,13 @@ void Translator::translateMain(std::vector<std::string>& lines) {
                 m_outLines[i] = std::string(size_t(ind), ' ') + "pass";
                 continue;
             }
-            if (findKeyword(line, "produce") != std::string::npos || findKeyword(line, "nproduce") != std::string::npos) {
+            if (startsWithWord(t, "lpyimport")) {
+                error(lineNo, ind + 1, "lpyimport (merging another file's rules) is not provided by Sprout: paste the file with %pastefile");
+                m_outLines[i] = std::string(size_t(ind), ' ') + "pass";
+                continue;
+            }
+            if (findKeyword(line, "produce") != std::string::npos || findKeyword(line, "nproduce") != std::string::npos ||
+                findKeyword(line, "makestring") != std::string::npos) {
                 translateProduces(lines, i);
                 m_outLines[i] = lines[i];
             }

@@ -7,6 +7,8 @@
 // Pure C++ (no Python): the fuzz target and the tests drive it without an interpreter; the
 // host (lpy/host.hpp) runs what it makes.
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -156,6 +158,12 @@ struct Translation {
     std::vector<Diagnostic> diagnostics;
     bool ok() const { return !hasErrors(diagnostics); }
 };
+
+// L-Py's first pass (Lsystem::set): a line holding `%pastefile NAME` or `%pastemodule
+// PKG.NAME` has the named file's text in place of the rest of the line. `read` gives a file's
+// text (module: a dotted module name) or nothing when there is none (an error at the line).
+using PasteReader = std::function<std::optional<std::string>(const std::string& name, bool module)>;
+std::string pasteFiles(std::string_view text, const PasteReader& read, std::vector<Diagnostic>& diags);
 
 // `seed`: a table whose ids the translation keeps (ModuleClasses::seededFrom).
 Translation translate(std::string_view text, const ModuleClasses* seed = nullptr);

@@ -14,13 +14,13 @@ namespace sprout::lpy::translate_detail {
 // the successor; a successor in parentheses may run over several lines (they are joined
 // and the lines it took are left blank, so the numbering holds).
 void Translator::translateProduces(std::vector<std::string>& lines, size_t i) {
-    for (const char* word : {"nproduce", "produce"}) {
+    for (const char* word : {"nproduce", "produce", "makestring"}) {
         size_t from = 0;
         for (;;) {
             std::string& line = lines[i];
             size_t at = findKeyword(line, word, from);
             if (at == std::string::npos) break;
-            const bool n = word[0] == 'n';
+            const bool n = word[0] == 'n', make = word[0] == 'm';
             size_t p = at + std::string_view(word).size();
             while (p < line.size() && (line[p] == ' ' || line[p] == '\t')) ++p;
             std::string successor;
@@ -53,7 +53,8 @@ void Translator::translateProduces(std::vector<std::string>& lines, size_t i) {
                 successor = line.substr(p, end - p);
             }
             auto mods = readLstring(successor, m_out.classes, int(i) + 1, successorCol, m_out.diagnostics);
-            const std::string call = (n ? "__lpy_nproduce(" : "return __lpy_produce(") + pythonLstring(mods) + ")";
+            // makestring(S): the Lstring S, a value (L-Py's AxialTree(...)).
+            const std::string call = (make ? "Lstring(" : n ? "__lpy_nproduce(" : "return __lpy_produce(") + pythonLstring(mods) + ")";
             line = line.substr(0, at) + call + line.substr(end);
             from = at + call.size();
         }

@@ -159,3 +159,54 @@ std::vector<std::string> splitLines(std::string_view text) {
 }
 
 }  // namespace sprout::lpy::translate_detail
+
+namespace sprout::lpy {
+
+std::string pasteFiles(std::string_view text, const PasteReader& read, std::vector<Diagnostic>& diags) {
+    if (text.find("%paste") == std::string_view::npos) return std::string(text);
+    std::string out;
+    int line = 1;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view l = text.substr(start, end - start);
+        size_t at = std::string_view::npos;
+        bool module = false;
+        for (const char* word : {"%pastefile", "%pastemodule"}) {
+            const size_t w = l.find(word);
+            const size_t after = w + std::string_view(word).size();
+            // (Not in a comment: L-Py pastes there too, which no file means.)
+            if (w != std::string_view::npos && l.substr(0, w).find('#') == std::string_view::npos &&
+                (after >= l.size() || !translate_detail::isIdent(l[after]))) {
+                at = w;
+                module = word[6] == 'm';
+                break;
+            }
+        }
+        if (at == std::string_view::npos) {
+            out.append(l);
+        } else {
+            const size_t after = at + (module ? 12 : 10);
+            std::string name(translate_detail::trim(l.substr(after)));
+            if (!name.empty() && name.back() == '\r') name.pop_back();
+            out.append(l.substr(0, at));
+            std::optional<std::string> pasted = name.empty() ? std::nullopt : read(name, module);
+            if (pasted) {
+                out += *pasted;
+            } else {
+                diags.push_back({line, int(at) + 1,
+                                 name.empty() ? std::string("invalid file to paste: name one after ") + (module ? "%pastemodule" : "%pastefile")
+                                              : (module ? "%pastemodule: no module " : "%pastefile: no file ") + name,
+                                 Severity::Error});
+            }
+        }
+        if (end == text.size()) break;
+        out += '\n';
+        start = end + 1;
+        ++line;
+    }
+    return out;
+}
+
+}  // namespace sprout::lpy
