@@ -193,7 +193,8 @@ void start() {
             // Modules of L-Py's package a model may import, imported on demand: its experimental
             // string controls and its parameter sets (lpy/python/lpy_*.py).
             const std::pair<const char*, const char*> onDemand[] = {
-                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"parameterset", "lpy_parameterset"}};
+                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"parameterset", "lpy_parameterset"},
+                {"lsysparameters", "lpy_lsysparameters"}};
             for (const auto& [name, stem] : onDemand)
                 py::module_::import("openalea.lpy")
                     .attr("_embed")(std::string("openalea.lpy.") + name, std::string(embedded(stem)),

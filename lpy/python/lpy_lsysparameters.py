@@ -1,0 +1,2 @@
+# openalea.lpy.lsysparameters as Sprout provides it (being written).
+__all__ = []
