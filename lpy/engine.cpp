@@ -181,7 +181,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
     readMatchingOptions();
     if (total < 0) total = start + steps;
     // The native path has no hooks: where it starts matters only to getIterationNb.
-    if (m_nativeOk && start == 0 && total == steps) {
+    if (m_nativeOk && start == 0 && total == steps && !debugger) {
         NumString result;
         std::vector<NumString> every;
         if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result, true)) {
@@ -212,8 +212,10 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
                 ContextMatches*& to;
                 ~Keep() { to = nullptr; }
             } keep{m_contexts = matched.get()};
+            if (debugger) debugger.attr("begin")(PyLstring{std::make_shared<LString>(s)}, forwardDirection ? 0 : 1);
             pass(s, next, RuleKind::Production, forwardDirection);
             s = std::move(next);
+            if (debugger) debugger.attr("end")(PyLstring{std::make_shared<LString>(s)});
         }
         if (m_hasKind[dec]) s = decompose(std::move(s), m_depth[dec], RuleKind::Decomposition);
         frameDisplayed = animating || i == steps - 1;
@@ -242,6 +244,29 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         }
     }
     return s;
+}
+
+void Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
+                        const LString* result, const py::tuple* args) {
+    // The new string so far, as L-Py's debugger sees it: what was built, with what the rule made.
+    auto dest = std::make_shared<LString>();
+    if (forward) {
+        *dest = built;
+        if (result) dest->insert(dest->end(), result->begin(), result->end());
+    } else {
+        if (result) *dest = *result;
+        dest->insert(dest->end(), built.rbegin(), built.rend());
+    }
+    py::object d = py::cast(PyLstring{dest});
+    if (!r) {
+        debugger.attr(what)(begin, d);
+        return;
+    }
+    py::object rule = py::module_::import("types").attr("SimpleNamespace")(
+        py::arg("lineno") = r->line, py::arg("name") = r->header, py::arg("ruleid") = int(r - m_tr.rules.data()));
+    py::list values = args ? py::list(*args) : py::list();
+    if (result) debugger.attr(what)(begin, end, d, result->size(), rule, values);
+    else debugger.attr(what)(begin, end, d, rule, values);
 }
 
 void Engine::insertSelection(LString& s) {

@@ -153,6 +153,9 @@ public:
     // L-Py's selection (setSelectionAlwaysRequired, requestSelection): before a step, the
     // positions the plotter's selection() gives get an X module inserted.
     bool selectionAlways = false, selectionRequested = false;
+    // L-Py's Lsystem.setDebugger: an object told of every production step's matches (begin,
+    // total_match, partial_match, identity, end); derivations with one take the Python path.
+    py::object debugger;
     bool frameDisplayed = false;
     py::object lastScene;
     static bool isQuery(const std::string& name);
@@ -214,7 +217,10 @@ public:
 private:
     LString interpretationHook(const char* name);
     void endEach(LString& s);
-    void insertSelection(LString& s);  // the EndEach hook, with a scene when it takes two arguments
+    void insertSelection(LString& s);
+    // Tells the debugger of a match (total_match, partial_match) or of a module copied (identity).
+    void debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
+                    const LString* result, const py::tuple* args);  // the EndEach hook, with a scene when it takes two arguments
     struct Index {
         std::vector<std::vector<int>> byClass;  // class -> rules whose first (or last) module is it
         std::vector<int> any;                   // rules starting with '*'

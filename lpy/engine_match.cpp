@@ -420,14 +420,19 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     m_body = BodyContext{&s, leftEnd, rightEnd, r.filter};
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
     if (!ret) throw py::error_already_set();
+    const size_t start = forward ? at : at + 1 - len;
     if (!m_produced && m_buffer.empty()) {
-        if (ret.is_none()) return false;  // a body that produced nothing: the next rule is tried
+        if (ret.is_none()) {  // a body that produced nothing: the next rule is tried
+            if (debugger && r.kind == RuleKind::Production) debugMatch("partial_match", &r, start, start + len, forward, built, nullptr, &args);
+            return false;
+        }
         append(m_buffer, ret);
     }
     result = std::move(m_buffer);
     m_buffer.clear();
     // A result that starts with None or '*' inserts nothing: the module is deleted.
     if (!result.empty() && (result[0].cls == ModuleClasses::kStar || result[0].cls == ModuleClasses::kNone)) result.clear();
+    if (debugger && r.kind == RuleKind::Production) debugMatch("total_match", &r, start, start + len, forward, built, &result, &args);
     consumed = len;
     return true;
 }
@@ -512,6 +517,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
             }
             out.push_back(in[i]);
             out.back().rule = -1, out.back().parent = std::uint32_t(i);
+            if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, true, out, nullptr, nullptr);
             ++i;
             if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
         }
@@ -525,6 +531,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
             }
             out.push_back(in[i]);
             out.back().rule = -1, out.back().parent = std::uint32_t(i);
+            if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, false, out, nullptr, nullptr);
         }
         std::reverse(out.begin(), out.end());
     }

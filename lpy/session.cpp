@@ -121,7 +121,7 @@ public:
         EngineScope scope(m_engine.get());
         // The native path (no hooks, arithmetic rules): numbers to the end, made into modules
         // when Python reads them.
-        if (m_engine->native() && start == 0 && nb == m_engine->derivationLength && !m_engine->selectionAlways) {
+        if (m_engine->native() && start == 0 && nb == m_engine->derivationLength && !m_engine->selectionAlways && !m_engine->debugger) {
             auto numbers = std::make_shared<NumString>();
             if (m_engine->deriveNumbers(s.get(), nb, nullptr, *numbers, false))
                 return PyLstring{std::make_shared<LString>(), std::move(numbers)};
@@ -151,6 +151,8 @@ public:
     bool animating() const { return m_engine->animating; }
     py::object lastScene() const { return m_engine->lastScene ? m_engine->lastScene : py::none(); }
 
+    void setDebugger(py::object d) { m_engine->debugger = d.is_none() ? py::object() : d; }
+    py::object debugger() const { return m_engine->debugger ? m_engine->debugger : py::none(); }
     int derivationLength() const { return m_engine->derivationLength; }
     void setDerivationLength(int n) {
         if (n < 0) throw py::value_error("derivationLength: a count of steps from 0 on");
@@ -220,6 +222,7 @@ void defineSession(py::module_& m) {
         .def("derive", &Session::derive)
         .def("interpret", &Session::interpret)
         .def("scene", &Session::scene)
+        .def_property("debugger", &Session::debugger, &Session::setDebugger)
         .def_property("animating", &Session::animating, &Session::setAnimating)
         .def_property_readonly("lastScene", &Session::lastScene)
         .def_property("derivationLength", &Session::derivationLength, &Session::setDerivationLength)

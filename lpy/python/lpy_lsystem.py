@@ -8,7 +8,7 @@ from _sprout_lpy import _Session, Lstring, _written
 import openalea.lpy as _lpy
 from openalea.lpy import LsysContext  # noqa: F401
 
-__all__ = ['Lsystem', 'LsysContext', 'LsysRule', 'PatternModule', 'LpyParsing', 'declare', 'undeclare', 'lstring2py', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
+__all__ = ['Lsystem', 'LsysContext', 'LsysRule', 'LpyDebugger', 'StringMatching', 'PatternModule', 'LpyParsing', 'declare', 'undeclare', 'lstring2py', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
            'eProduction', 'eDecomposition', 'eInterpretation']
 
 AxialTree = Lstring
@@ -254,6 +254,19 @@ class Lsystem:
     def isRunning(self):
         return self._running
 
+    # -- a debugger told of each match (L-Py's Lsystem.setDebugger) ---------------------
+    def setDebugger(self, debugger):
+        self._need().debugger = debugger
+
+    def getDebugger(self):
+        return self._need().debugger
+
+    def hasDebugger(self):
+        return self._need().debugger is not None
+
+    def clearDebugger(self):
+        self._need().debugger = None
+
     def setCode(self, code, parameters={}, debug=False):  # noqa: D102
         return self.set(code, parameters, debug)
 
@@ -458,6 +471,109 @@ class Lsystem:
 
     def __str__(self):
         return self._code
+
+
+class StringMatching:
+    """Which position of an original string each position of a target string comes from
+    (L-Py's StringMatching): marks (original, target, policy), where from a mark on either
+    both positions increase together ('increasing') or the original stays ('fixed': what a
+    rule made of one module)."""
+    INCREASING, FIXED = 0, 1
+
+    def __init__(self):
+        self._marks = [[0, 0, StringMatching.INCREASING]]
+
+    def clear(self):
+        self.__init__()
+
+    def addIdentity(self, length):
+        """`length` modules copied as they are."""
+        last = self._marks[-1]
+        if len(self._marks) > 1 and self._marks[-2][2] == StringMatching.INCREASING:
+            last[0] += length
+            last[1] += length
+        else:
+            last[2] = StringMatching.INCREASING
+            self._marks.append([last[0] + length, last[1] + length, StringMatching.INCREASING])
+
+    def append(self, original, target):
+        """`original` modules became `target` modules."""
+        if original == 1 and target == 1:
+            return self.addIdentity(1)
+        last = self._marks[-1]
+        last[2] = StringMatching.FIXED
+        self._marks.append([last[0] + original, last[1] + target, StringMatching.INCREASING])
+
+    def isIdentity(self):
+        return all(m[2] != StringMatching.FIXED for m in self._marks)
+
+    def begin(self):
+        return _StringMatchingIterator(self._marks)
+
+
+class _StringMatchingIterator:
+    def __init__(self, marks):
+        self._marks, self._at = marks, 0
+        while self._at + 1 < len(marks) and marks[self._at + 1][1] == marks[0][1]:
+            self._at += 1
+        self._original, self._target = marks[self._at][0], marks[self._at][1]
+
+    def increment(self):
+        marks = self._marks
+        self._target += 1
+        if self._at + 1 >= len(marks):
+            if marks[self._at][2] == StringMatching.INCREASING:
+                self._original += 1
+        elif self._target == marks[self._at + 1][1]:
+            while self._at + 1 < len(marks) and self._target == marks[self._at + 1][1]:
+                self._at += 1
+                self._original = marks[self._at][0]
+        elif marks[self._at][2] == StringMatching.INCREASING:
+            self._original += 1
+
+    def original(self):
+        return self._original
+
+    def target(self):
+        return self._target
+
+    def values(self):
+        return (self._original, self._target)
+
+    def nextValues(self):
+        self.increment()
+        return self.values()
+
+
+class LpyDebugger:
+    """What Lsystem.setDebugger takes: told, at each production step, of its string
+    (begin), each rule that matched and produced (total_match) or produced nothing
+    (partial_match), each module copied (identity) and the result (end). Positions are
+    indices in the step's string; `dest` is the new string so far."""
+
+    def __init__(self):
+        pass
+
+    def begin(self, src, direction):
+        pass
+
+    def end(self, result):
+        pass
+
+    def total_match(self, pos_beg, pos_end, dest, prod_length, rule, args):
+        pass
+
+    def partial_match(self, pos_beg, pos_end, dest, rule, args):
+        pass
+
+    def error_match(self, pos_beg, pos_end, dest, rule, args):
+        return False
+
+    def identity(self, pos, dest):
+        pass
+
+    def shouldStop(self, *args):
+        return True
 
 
 class LsysRule:
