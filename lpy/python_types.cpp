@@ -418,7 +418,7 @@ void defineTypes(py::module_& m) {
         .def(py::pickle([](const PyLstring& s) { return stateOf(s.get()); },
                         [](py::list state) { return PyLstring{std::make_shared<LString>(fromState(state))}; }))
         .def("__str__", [](const PyLstring& s) { return writeLstring(s.get(), names()); })
-        .def("__repr__", [](const PyLstring& s) { return "Lstring('" + writeLstring(s.get(), names()) + "')"; });
+        .def("__repr__", [](const PyLstring& s) { return "AxialTree(" + writeLstring(s.get(), names()) + ")"; });  // as L-Py writes it
 }
 
 }  // namespace sprout::lpy
