@@ -100,7 +100,8 @@ void ModuleClasses::adopt(const ModuleClasses& other, bool hidden) {
     for (size_t c = m_names.size(); c < other.m_names.size(); ++c) {
         m_names.push_back(other.m_names[c]);
         m_ids.insert_or_assign(other.m_names[c], int(c));
-        m_longest = std::max(m_longest, other.m_names[c].size());
+        // Hidden names are found by no lookup: the longest name read stays the visible ones'.
+        if (!hidden) m_longest = std::max(m_longest, other.m_names[c].size());
         parameterNames.push_back(hidden ? std::vector<std::string>{} : other.parameterNames[c]);
         bases.emplace_back();
         scales.push_back(hidden ? -1 : other.scales[c]);
@@ -129,7 +130,10 @@ void ModuleClasses::alias(std::string_view name, int cls) {
 
 int ModuleClasses::intern(std::string_view name) {
     if (auto it = m_ids.find(std::string(name)); it != m_ids.end()) {
-        m_hidden[size_t(it->second)] = false;  // a seeded name, used again: its id
+        if (m_hidden[size_t(it->second)]) {  // a seeded name, used again: its id
+            m_hidden[size_t(it->second)] = false;
+            m_longest = std::max(m_longest, name.size());
+        }
         return it->second;
     }
     const int id = int(m_names.size());

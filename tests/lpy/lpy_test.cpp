@@ -70,6 +70,36 @@ TEST(LpyTranslate, LinesKeepTheirNumbers) {
     EXPECT_EQ(detectFileKind("x.lpy", "Axiom: F\n"), FileKind::Lpy);
 }
 
+// The L-systems of one Python process share their module names' ids: a translation starts
+// from the process's table with its names hidden, so a text reads as with a fresh table, and
+// a name used again keeps its id.
+TEST(LpyTranslate, SeededTableKeepsIdsAndReadsAsFresh) {
+    lpy::Translation first = lpy::translate("module Apex, Leaf\nAxiom: Apex Leaf\n");
+    ASSERT_TRUE(first.ok());
+    lpy::ModuleClasses process;
+    process.adopt(first.classes, false);
+    const int apex = process.find("Apex"), leaf = process.find("Leaf");
+    ASSERT_GE(apex, 0);
+    lpy::Translation second = lpy::translate("module Leaf\nAxiom: Apex Leaf\n", &process);
+    ASSERT_TRUE(second.ok());
+    std::vector<Diagnostic> diags;
+    auto mods = lpy::readLstring("Apex Leaf", second.classes, 1, 1, diags);
+    std::vector<std::string> names;
+    for (const auto& m : mods) names.push_back(second.classes.name(m.cls));
+    // Apex is not declared here: its letters, as a fresh table reads them; Leaf keeps its id.
+    EXPECT_EQ(names, (std::vector<std::string>{"A", "p", "e", "x", "Leaf"}));
+    EXPECT_EQ(second.classes.find("Leaf"), leaf);
+    EXPECT_EQ(second.classes.find("Apex"), -1);
+    EXPECT_EQ(second.classes.name(apex), "Apex");  // still its id, hidden
+    // Given back, the process's table grows by the new names only, at the same ids.
+    const size_t before = process.size();
+    process.adopt(second.classes, false);
+    EXPECT_EQ(process.find("Leaf"), leaf);
+    EXPECT_EQ(process.name(apex), "Apex");
+    EXPECT_GE(process.size(), before);
+    EXPECT_EQ(process.name(second.classes.find("x")), "x");
+}
+
 TEST(LpyTranslate, LongestKnownNameFirst) {
     lpy::ModuleClasses classes;
     std::vector<Diagnostic> diags;
