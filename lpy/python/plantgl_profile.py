@@ -3,7 +3,7 @@
 # interpolated_profile: the editor's "InterpolatedProfile" panel). Sections are interpolated
 # linearly between their neighbours, point by point (PlantGL's NurbsMethod and CSplineMethod
 # make smoother surfaces through the same sections).
-from openalea.plantgl.all import Vector3, Polyline2D, NurbsCurve2D
+from openalea.plantgl.all import Vector2, Vector3, NurbsCurve2D
 
 
 class NurbsMethod:
@@ -80,7 +80,7 @@ class InterpolatedProfile(dict):
             (t0, a), (t1, b) = items[k - 1], items[k]
             f = (t - t0) / (t1 - t0)
             points = [tuple((1 - f) * x + f * y for x, y in zip(p, q)) for p, q in zip(a, b)]
+        if not curve:  # the points, as PlantGL gives them (x, y; and the weight when given)
+            return [Vector3(*p[:3]) if len(p) > 2 else Vector2(p[0], p[1]) for p in points]
         pts = [(p[0], p[1], p[2] if len(p) > 2 else 1.0) for p in points]
-        if not curve:
-            return pts
         return NurbsCurve2D(pts, min(3, len(pts) - 1))
