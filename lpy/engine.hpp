@@ -72,6 +72,9 @@ struct NumString {
 // The string as Python sees it (hooks' `lstring`, Lstring(...)), and one module of it: a
 // view into a string (writes go to it) or a module of its own.
 struct PyLstring {
+    PyLstring() = default;
+    explicit PyLstring(std::shared_ptr<LString> modules, std::shared_ptr<const NumString> numbers = nullptr)
+        : s(std::move(modules)), pending(std::move(numbers)) {}
     std::shared_ptr<LString> s;
     // A native derivation's result (Lsystem.derive on the native path): its modules made only
     // when Python reads them (get()), so a derivation from a script costs what it costs from
