@@ -217,8 +217,9 @@ void start() {
                                     "<sprout>/openalea/plantgl/scenegraph/nurbspatch_nd.py");
             // L-Py's Lsystem for scripts (lpy/python/lpy_lsystem.py), part of openalea.lpy.
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
-            {
-                py::module_ lpy = py::module_::import("openalea.lpy"), api = py::module_::import("openalea.lpy._lsystem");
+            installModule("openalea.lpy._matching", embedded("lpy_matching"), "<sprout>/openalea/lpy/_matching.py");
+            for (const char* part : {"openalea.lpy._lsystem", "openalea.lpy._matching"}) {
+                py::module_ lpy = py::module_::import("openalea.lpy"), api = py::module_::import(part);
                 for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
             }
             py::module_ sys = py::module_::import("sys");
