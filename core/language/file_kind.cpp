@@ -155,7 +155,9 @@ FileKind detectFileKind(std::string_view path, std::string_view bytes) {
     if (looksLikeCpfg(bytes)) return FileKind::Cpfg;
     // The extension decides between tools that share it only when the content does not.
     if (hasExtension(path, ".lsys")) return FileKind::Lsys;
-    if (hasExtension(path, ".ls")) return FileKind::Lparser;
+    // `.ls` is Lparser's and L-system Explorer's (the web's cpfg family): Lparser's files are
+    // lines of numbers and its keywords; the others are read as their content says.
+    if (hasExtension(path, ".ls")) return looksLikeLparser(bytes) ? FileKind::Lparser : FileKind::Lsys;
     if (hasExtension(path, ".l")) return looksLikeFractint(bytes) || bytes.find("-->") == std::string_view::npos ? FileKind::Fractint : FileKind::Cpfg;
     if (hasExtension(path, ".ifs")) return FileKind::Ifs;
     if (hasExtension(path, ".forest")) return FileKind::Forest;

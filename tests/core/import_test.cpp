@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/language/file_kind.hpp"
 #include "core/language/import/import.hpp"
 #include "core/turtle/turtle.hpp"
 #include "test_util.hpp"
@@ -115,6 +116,8 @@ TEST(Corpus, EveryLparserFileLoadsAndDraws) {
     for (const auto& e : std::filesystem::directory_iterator(kCorpus / "lparser")) {
         if (e.path().extension() != ".ls") continue;
         ++files;
+        // Told from L-system Explorer's `.ls` files by its content.
+        EXPECT_EQ(detectFileKind(e.path().string(), readAll(e.path())), FileKind::Lparser) << e.path();
         ImportResult r = importLparser(readAll(e.path()), e.path().filename().string());
         for (const auto& d : r.diagnostics) ADD_FAILURE() << formatDiagnostic(d, e.path().string());
         expectDraws(r.text, e.path().filename().string());
@@ -142,6 +145,8 @@ TEST(Lparser, TheSeedDocumentsListingsLoadAsPrinted) {
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
         ++files;
+        // Told from L-system Explorer's `.ls` files by its content.
+        EXPECT_EQ(detectFileKind(e.path().string(), readAll(e.path())), FileKind::Lparser) << e.path();
         ImportResult r = importLparser(readAll(e.path()), e.path().filename().string());
         EXPECT_TRUE(r.ok()) << e.path();
         for (const auto& d : r.diagnostics)
