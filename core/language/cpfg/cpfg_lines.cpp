@@ -504,8 +504,10 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     std::string_view value;
     std::string key = keyOf(t, value);
     if (key.empty()) {
-        m_sink.error(l.src, t, "expected a production such as 'A --> B' or a setting such as 'derivation length: 5'");
-        return;
+        // Not a cpfg line: read as the .lsys and ABOP notation lines are (`delta=25.7`,
+        // `n=5`, `ω: F`), whichever dialect the file's other lines come from (the web's cpfg
+        // family mixes them).
+        return classify(l, section);
     }
     l.value = value;
     if (key == "lsystem") return;
