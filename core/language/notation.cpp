@@ -271,6 +271,8 @@ size_t assignment(std::string_view t) {
     return std::string_view::npos;
 }
 
+// A line's parts at its top-level commas and semicolons ("n=5, δ=25.7°"; the web's
+// statements "n=30;delta=22.5;"), empty ones left out.
 std::vector<std::string_view> topLevelParts(std::string_view t) {
     std::vector<std::string_view> parts;
     int depth = 0;
@@ -279,11 +281,12 @@ std::vector<std::string_view> topLevelParts(std::string_view t) {
         const char c = i < t.size() ? t[i] : ',';
         if (c == '(' || c == '{' || c == '[') ++depth;
         else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
-        else if (c == ',' && depth == 0) {
-            parts.push_back(t.substr(start, i - start));
+        else if ((c == ',' || c == ';') && depth == 0) {
+            if (!trim(t.substr(start, i - start)).empty()) parts.push_back(t.substr(start, i - start));
             start = i + 1;
         }
     }
+    if (parts.empty()) parts.push_back(t);
     return parts;
 }
 
@@ -340,7 +343,18 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
             break;
         }
     }
-    if (!caption) parts = {t};
+    if (!caption) {
+        // "n=5;": a statement of the web's dialects, its ';' no module (a rule written with
+        // '=', "F = F;", keeps it).
+        std::string_view u = t;
+        while (!u.empty() && (u.back() == ';' || isSpace(u.back()))) u.remove_suffix(1);
+        const size_t ue = u.size() < t.size() ? assignment(u) : std::string_view::npos;
+        if (ue != std::string_view::npos) {
+            const std::string_view k = trim(u.substr(0, ue)), v = trim(u.substr(ue + 1));
+            if (settingAlias(k) || isForeignSetting(k) || (isIdentifier(k) && isConstant(v))) t = u;
+        }
+        parts = {t};
+    }
     m_notation = true;
     bool first = true;
     for (auto part : parts) {
