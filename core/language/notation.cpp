@@ -63,6 +63,13 @@ bool isForeignSetting(std::string_view key) {
     return std::any_of(std::begin(names), std::end(names), [&](const char* n) { return k == n; });
 }
 
+// A setting of the web's dialects that its rules may also read as a variable (L-system
+// Explorer's `delta`, `stemsize`): read as the setting and defined as a constant.
+bool webVariable(std::string_view key) {
+    const std::string k = lowerCollapsed(key);
+    return k == "delta" || k == "angle" || k == "stemsize" || k == "step" || k == "stepsize";
+}
+
 bool isRuleLabel(std::string_view s) {
     // After normalizePasted, subscript digits are plain digits: p1, P2, p3 (from p₃).
     // ABOP writes a lone production "p : F -> ..." too.
@@ -292,6 +299,22 @@ std::vector<std::string_view> topLevelParts(std::string_view t) {
 
 }  // namespace
 
+// Whether a rule of the text reads `name` (as a word: `&(delta/2)`), so a setting of that
+// name is a variable of the rules too.
+bool Parser::readInRules(std::string_view name) const {
+    for (const auto& other : m_lines) {
+        const std::string_view o = trim(other.src.text);
+        if (o.find("->") == std::string_view::npos || o.starts_with("#") || o.starts_with("//")) continue;
+        for (size_t at = o.find(name); at != std::string_view::npos; at = o.find(name, at + 1)) {
+            auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+            const bool before = at > 0 && word(o[at - 1]);
+            const bool after = at + name.size() < o.size() && word(o[at + name.size()]);
+            if (!before && !after) return true;
+        }
+    }
+    return false;
+}
+
 bool Parser::classifyNotation(Line& l, std::string_view t) {
     const size_t eq = assignment(t);
     if (eq == std::string_view::npos) return false;
@@ -312,7 +335,8 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
                 const size_t pe = assignment(part);
                 if (pe == std::string_view::npos) continue;
                 std::string_view name = trim(part.substr(0, pe));
-                if (isIdentifier(name) && !settingAlias(name)) pending.emplace_back(name, trim(part.substr(pe + 1)));
+                if (isIdentifier(name) && (!settingAlias(name) || webVariable(name)))
+                    pending.emplace_back(name, trim(part.substr(pe + 1)));
             }
         }
         // One pass in file order (a constant uses the ones above it): linear in the text.
@@ -363,11 +387,19 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
         const std::string_view value = trim(part.substr(pe + 1));
         const Directive* d = nullptr;
         std::string_view directiveValue = value, writtenKey = key;
+        // The web's settings are variables too (`delta=5` ... `&(delta/2)`): a constant as well.
+        const bool variable = webVariable(key) && isConstantExpr(l.src, value) && m_assignedNames.count(std::string(key)) &&
+                              readInRules(key);
         if (const char* alias = settingAlias(key); alias && !(std::string_view(alias) == "axiom" && key.size() == 1 && isConstant(value))) {
             d = directiveNamed(alias);
             if (key == alias) writtenKey = {};
+            if (variable) l.more.push_back({directiveNamed("define"), part, {}});
         } else if (isForeignSetting(key)) {
             warnForeign(l.src, key);
+            if (variable) {
+                if (first) l.kind = Line::DirectiveLine, l.directive = directiveNamed("define"), l.value = part, l.key = {}, first = false;
+                else l.more.push_back({directiveNamed("define"), part, {}});
+            }
             continue;
         } else if (const Directive* own = directiveNamed(key); own && key != "define" && key != "module") {
             d = own;  // Sprout's own settings written with '=' (width = 2, tropism = 0 -1 0 0.2)

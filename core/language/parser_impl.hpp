@@ -77,6 +77,7 @@ const char* settingAlias(std::string_view key);
 bool isForeignSetting(std::string_view key);
 // A rule label: "p1", "P2", "p" (subscripts are digits by then).
 bool isRuleLabel(std::string_view s);
+bool webVariable(std::string_view key);  // a web dialect's setting its rules read as a variable
 // Characters pasted from PDFs and web pages (dashes, spaces, quotes, arrows, subscripts, LaTeX)
 // replaced in place, keeping every byte position; `replaced` gets the warnings to give,
 // `notation` is set when the text used ABOP's printed notation.
@@ -162,6 +163,7 @@ private:
     void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
+    bool readInRules(std::string_view name) const;
     // ABOP's notation as a PDF gives it: a successor that goes on over the next lines, and
     // words as modules (`plant -> internode [+ leaf] ...`), declared from the predecessors.
     void joinNotationLines();
