@@ -350,8 +350,9 @@ void Parser::setIgnore(const SourceLine& line, std::string_view text) {
             return;
         }
         if (m.name == "[" || m.name == "]") {
-            m_sink.error(line, m.name, "brackets cannot be ignored: they define the branches contexts follow");
-            return;
+            // Written in other tools' files (L-system Explorer's `ignore: ]`): left out, not an error.
+            m_sink.warning(line, m.name, "brackets are not ignored (left out of 'ignore:'): they define the branches contexts follow");
+            continue;
         }
         auto id = symbolFor(line, m.name, 0);
         if (!id) return;
