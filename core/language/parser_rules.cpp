@@ -86,6 +86,10 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
 void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArrow) {
     std::string_view text = line.text;
     size_t arrow = equalsArrow != std::string_view::npos ? equalsArrow : findTopLevel(text, "->", 0, m_cpfg);
+    if (arrow == std::string_view::npos) {  // its '->' inside a bracket or block never closed
+        m_sink.error(line, text, "this rule's '->' is inside a '(' or '{' that is not closed before it");
+        return;
+    }
     size_t arrowEnd = arrow + (equalsArrow != std::string_view::npos ? 1 : 2);
     if (equalsArrow == std::string_view::npos && arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's and ABOP's -->
     std::string_view head = text.substr(0, arrow);
