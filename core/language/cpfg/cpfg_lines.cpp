@@ -346,8 +346,20 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
         std::string key = keyOf(t, value);
         const bool directive = (!key.empty() && arrowAt(t) == std::string_view::npos && knownKey(key)) ||
                                !sectionWord(t).empty() || startsWithWord(t, "module");
+        // A rule whose successor is on the lines after its arrow (`M(t) : 1 {...} -->` then the
+        // successor, indented: L-system Explorer's files) goes on to the next line.
+        auto successorEmpty = [](std::string_view r) {
+            const size_t a = arrowAt(r);
+            if (a == std::string_view::npos) return false;
+            size_t k = a;
+            while (k < r.size() && (r[k] == '-' || r[k] == '>')) ++k;
+            return trim(r.substr(k)).empty();
+        };
+        const bool successorNext = arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && successorEmpty(t) &&
+                                   i + 1 < body.size() && !trim(body[i + 1].text).empty() && isSpace(body[i + 1].text[0]) &&
+                                   arrowAt(body[i + 1].text) == std::string_view::npos;
         bool complete = t.empty() || directive || t.starts_with("#") ||
-                        (arrowAt(t) != std::string_view::npos && openCount(t) <= 0);
+                        (arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && !successorNext);
         if (!complete) {
             // Join while a block or parenthesis is open, or no arrow has come yet and the next
             // line continues the production (a block, the arrow, ':' or L-Py's produce).
@@ -363,12 +375,13 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
                 const bool hasArrow = arrowAt(joined) != std::string_view::npos;
                 const bool open = openCount(joined) > 0;
                 const bool produce = startsWithWord(next, "produce") || startsWithWord(next, "nproduce");
-                if (!open && (hasArrow || next.empty())) break;
-                if (!open && !(cur.ends_with(":") || cur.ends_with("}") || next.starts_with("{") ||
+                const bool successor = hasArrow && !open && successorEmpty(joined) && !next.empty();
+                if (!open && !successor && (hasArrow || next.empty())) break;
+                if (!open && !successor && !(cur.ends_with(":") || cur.ends_with("}") || next.starts_with("{") ||
                                next.starts_with("-->") || next.starts_with("->") || next.starts_with(":") ||
                                next.starts_with("}") || produce))
                     break;
-                if (!produce && !open && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
+                if (!produce && !open && !successor && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
                                  startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
                     m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
                                                     "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
@@ -386,7 +399,7 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
                     piece.replace(at, len, std::string("-->") + std::string(len - 3, ' '));
                 }
                 joined += piece;
-                if (arrowAt(joined) != std::string_view::npos && openCount(joined) <= 0) {
+                if (arrowAt(joined) != std::string_view::npos && openCount(joined) <= 0 && !successorEmpty(joined)) {
                     done = true;
                     break;
                 }
