@@ -208,6 +208,7 @@ private:
     bool m_axiomSet = false;
     int m_axiomLine = 0;
     bool m_notation = false;  // the text used ABOP's printed notation (Grammar::dialect)
+    bool m_mixed = false;  // a cpfg file with lines of the .lsys family (the web's dialects): said once
     bool m_assignedScanned = false;
     std::unordered_map<std::string, double> m_assignedNames;  // names given a value with '=' (notation.cpp)
     std::array<bool, 128> m_moduleLetters{};                   // one-letter modules written in rules

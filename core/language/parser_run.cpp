@@ -250,7 +250,7 @@ ParseResult Parser::run() {
         }
     }
     lint();
-    m_g.dialect = m_cpfg ? "cpfg" : m_notation ? "ABOP notation" : ".lsys";
+    m_g.dialect = m_cpfg ? (m_mixed ? "L-system Explorer (cpfg family)" : "cpfg") : m_notation ? "ABOP notation" : ".lsys";
     std::stable_sort(m_g.settingsRead.begin(), m_g.settingsRead.end(),
                      [](const Grammar::ReadSetting& a, const Grammar::ReadSetting& b) { return a.line < b.line; });
 

@@ -120,6 +120,14 @@ TEST(Notation, EachSettingIsNamedWithItsLineAndHowItWasWritten) {
     EXPECT_EQ(r.grammar->defineOrder, std::vector<std::string>{"R"});  // a slider, as define's
     EXPECT_EQ(parse("axiom: F\nF -> FF\n").grammar->dialect, ".lsys");
     EXPECT_EQ(parse("Axiom: F\nF --> FF\n", parseOptionsFor(FileKind::Cpfg, "")).grammar->dialect, "cpfg");
+    // cpfg's keywords with the web's lines (L-system Explorer's files): one warning, named.
+    ParseResult web = parse("delta=20; n=2;\nderivation length: 2\naxiom: F\np0: F->F[+F]F\n", parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(web.ok());
+    EXPECT_EQ(web.grammar->dialect, "L-system Explorer (cpfg family)");
+    EXPECT_EQ(std::count_if(web.diagnostics.begin(), web.diagnostics.end(),
+                            [](const Diagnostic& d) { return d.message.find("L-system Explorer") != std::string::npos; }),
+              1);
+    EXPECT_EQ(web.grammar->settings.angle.mean, 20);
 }
 
 TEST(Notation, BadInputSaysWhereAndWhat) {

@@ -519,7 +519,12 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     if (key.empty()) {
         // Not a cpfg line: read as the .lsys and ABOP notation lines are (`delta=25.7`,
         // `n=5`, `ω: F`), whichever dialect the file's other lines come from (the web's cpfg
-        // family mixes them).
+        // family mixes them). Said once, at the first such line.
+        if (!m_mixed && !t.starts_with("//")) {
+            m_mixed = true;
+            m_sink.warning(l.src, t, "a line of ABOP's notation or a web tool's in a cpfg file: each line is read as what it "
+                                     "is (L-system Explorer's dialect, of the cpfg family)");
+        }
         return classify(l, section);
     }
     l.value = value;
