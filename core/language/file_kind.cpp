@@ -91,6 +91,18 @@ bool looksLikeLparser(std::string_view text) {
 
 }  // namespace
 
+// `#define RAND (random()-0.5)`: a text macro with a call in it (cpfg's, put in place where
+// its name is used), not a constant of the .lsys family (`#define r1 0.9`).
+static bool textMacro(std::string_view l) {
+    if (!l.starts_with("#define")) return false;
+    size_t i = 7;
+    while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) ++i;
+    while (i < l.size() && (std::isalnum(static_cast<unsigned char>(l[i])) || l[i] == '_')) ++i;  // the name
+    for (size_t k = i; k + 1 < l.size(); ++k)
+        if (std::isalpha(static_cast<unsigned char>(l[k])) && l[k + 1] == '(') return true;
+    return false;
+}
+
 bool looksLikeCpfg(std::string_view text) {
     bool found = false;
     // ABOP's printed notation ("ω:", "δ = 25.7°", "→") names cpfg's `derivation length:` too:
@@ -107,7 +119,7 @@ bool looksLikeCpfg(std::string_view text) {
             isKey(l, "consider") || low == "endlsystem" || low.starts_with("endlsystem ") ||
             low == "decomposition" || low == "decomposition:" || low == "homomorphism" ||
             low.starts_with("/*") || low.starts_with("#include") || low.starts_with("produce ") ||
-            low.starts_with("nproduce ")) {
+            low.starts_with("nproduce ") || textMacro(l)) {
             found = true;
             return false;
         }

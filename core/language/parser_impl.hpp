@@ -164,6 +164,7 @@ private:
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
     bool readInRules(std::string_view name) const;
+    void warnMixed(const SourceLine& line, std::string_view t);  // once per file (m_mixed)
     // ABOP's notation as a PDF gives it: a successor that goes on over the next lines, and
     // words as modules (`plant -> internode [+ leaf] ...`), declared from the predecessors.
     void joinNotationLines();

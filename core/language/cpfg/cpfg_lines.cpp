@@ -467,6 +467,13 @@ void Parser::buildCpfgLines() {
     readCpfgFile(m_text, "", 0, 0, stack);
 }
 
+void Parser::warnMixed(const SourceLine& line, std::string_view t) {
+    if (m_mixed) return;
+    m_mixed = true;
+    m_sink.warning(line, t, "a line of ABOP's notation or a web tool's in a cpfg file: each line is read as what it is "
+                            "(L-system Explorer's dialect, of the cpfg family)");
+}
+
 void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     std::string_view t = trim(l.src.text);
     l.section = section;
@@ -520,11 +527,7 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
         // Not a cpfg line: read as the .lsys and ABOP notation lines are (`delta=25.7`,
         // `n=5`, `ω: F`), whichever dialect the file's other lines come from (the web's cpfg
         // family mixes them). Said once, at the first such line.
-        if (!m_mixed && !t.starts_with("//")) {
-            m_mixed = true;
-            m_sink.warning(l.src, t, "a line of ABOP's notation or a web tool's in a cpfg file: each line is read as what it "
-                                     "is (L-system Explorer's dialect, of the cpfg family)");
-        }
+        if (!t.starts_with("//")) warnMixed(l.src, t);
         return classify(l, section);
     }
     l.value = value;
@@ -539,6 +542,13 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     else
         for (const auto& d : directives())
             if (name == d.name) l.directive = &d;
+    if (!l.directive && (settingAlias(key) || isForeignSetting(key))) {
+        // A setting of the .lsys family's dialects (`dlength: 10`, `stemsize: 0.1`): as the
+        // .lsys reader reads it.
+        warnMixed(l.src, t);
+        l.value = {};
+        return classify(l, section);
+    }
     if (!l.directive) {
         m_sink.warning(l.src, trim(l.src.text.substr(0, l.src.text.find(':'))),
                        "'" + std::string(trim(t.substr(0, t.find(':')))) + ":' is not a setting Sprout knows (another tool's?): ignored");
