@@ -209,7 +209,6 @@ private:
     std::vector<int> m_scale;
     void readMatchingOptions();
     int scaleOf(int cls) const;
-    long treeParent(const LString& s, long pos, int filter);
     // The module a left context reads after `pos` at scale `target` (-1: none); the one a
     // right context reads from `pos` (the position after the last module matched; npos: none).
     long predecessorAt(const LString& s, long pos, int target, int filter);

@@ -6,6 +6,7 @@
 // 'As Multi-level AxialTree', at that level (the other levels skipped).
 #include <climits>
 
+#include "lpy/axial_tree.hpp"
 #include "lpy/engine.hpp"
 
 namespace sprout::lpy {
@@ -38,48 +39,12 @@ void Engine::readMatchingOptions() {
 
 int Engine::scaleOf(int cls) const { return cls >= 0 && size_t(cls) < m_scale.size() ? m_scale[size_t(cls)] : INT_MAX; }
 
-long Engine::treeParent(const LString& s, long pos, int filter) {
-    // L-Py's parent(): left over '[' and ignored modules, over whole branches before.
-    for (long j = pos - 1; j >= 0; --j) {
-        const int c = s[size_t(j)].cls;
-        if (c == ModuleClasses::kPop) {
-            int depth = 0;
-            for (; j >= 0; --j) {
-                if (s[size_t(j)].cls == ModuleClasses::kPop) ++depth;
-                else if (s[size_t(j)].cls == ModuleClasses::kPush && --depth == 0) break;
-            }
-            if (j < 0) return -1;
-            continue;
-        }
-        if (c == ModuleClasses::kPush || skipped(c, filter)) continue;
-        return j;
-    }
-    return -1;
-}
-
 long Engine::predecessorAt(const LString& s, long pos, int target, int filter) {
     if (pos <= 0) return -1;
-    const int previous = size_t(pos) < s.size() ? scaleOf(s[size_t(pos)].cls) : INT_MAX;
-    pos = treeParent(s, pos, filter);
-    if (pos < 0) return -1;
-    int current = scaleOf(s[size_t(pos)].cls);
-    if (m_stringMatching == 2) {  // the predecessor at this level
-        while (pos >= 0 && scaleOf(s[size_t(pos)].cls) != target) pos = treeParent(s, pos, filter);
-        return pos;
-    }
-    if (!(target < previous)) {  // a predecessor, not a complex: up out of the components
-        while (current < previous) {
-            pos = treeParent(s, pos, filter);
-            if (pos < 0) return -1;
-            current = scaleOf(s[size_t(pos)].cls);
-        }
-    }
-    while (current > target) {  // past the predecessor's components, to its complex at this scale
-        pos = treeParent(s, pos, filter);
-        if (pos < 0) return -1;
-        current = scaleOf(s[size_t(pos)].cls);
-    }
-    return current == target ? pos : -1;
+    const tree::Scale scale = [this](int cls) { return scaleOf(cls); };
+    const tree::Skip skip = [this, filter](int cls) { return skipped(cls, filter); };
+    return m_stringMatching == 2 ? tree::predecessorAtLevel(s, size_t(pos), target, scale, skip)
+                                 : tree::predecessorAtScale(s, size_t(pos), target, scale, skip);
 }
 
 size_t Engine::nextAt(const LString& s, size_t pos, int target, int filter) {

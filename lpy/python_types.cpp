@@ -8,7 +8,7 @@
 #include <climits>
 
 #include "lpy/host_impl.hpp"
-#include "lpy/python_tree.hpp"
+#include "lpy/axial_tree.hpp"
 
 namespace py = pybind11;
 

@@ -1,6 +1,7 @@
-// L-Py's axial tree navigation (lpy/python_tree.hpp), written from src/cpp/axialtree_manip.h.
-#include "lpy/python_tree.hpp"
+// L-Py's axial tree navigation (lpy/axial_tree.hpp), written from src/cpp/axialtree_manip.h.
+#include "lpy/axial_tree.hpp"
 
+#include <climits>
 #include <deque>
 
 namespace sprout::lpy::tree {
@@ -48,12 +49,12 @@ int scaleAt(const LString& s, long i, const Scale& scaleOf) { return i < 0 ? 0 :
 bool isPush(const LModule& m) { return m.cls == ModuleClasses::kPush; }
 bool isPop(const LModule& m) { return m.cls == ModuleClasses::kPop; }
 
-long parentOf(const LString& s, size_t i) {
+long parentOf(const LString& s, size_t i, const Skip& skip) {
     for (long j = long(i) - 1; j >= 0; --j) {
         if (isPop(s[size_t(j)])) {
             j = opening(s, size_t(j));
             if (j < 0) return -1;
-        } else if (!isPush(s[size_t(j)])) {
+        } else if (!isPush(s[size_t(j)]) && !(skip && skip(s[size_t(j)].cls))) {
             return j;
         }
     }
@@ -128,21 +129,21 @@ long successorAtScale(const LString& s, size_t i, int scale, const Scale& scaleO
     return scaleAt(s, p, scaleOf) == scale ? p : -1;
 }
 
-long predecessorAtScale(const LString& s, size_t i, int scale, const Scale& scaleOf) {
+long predecessorAtScale(const LString& s, size_t i, int scale, const Scale& scaleOf, const Skip& skip) {
     if (i == 0) return -1;
-    const int previous = scaleOf(s[i].cls);
-    long p = parentOf(s, i);
+    const int previous = i < s.size() ? scaleOf(s[i].cls) : INT_MAX;
+    long p = parentOf(s, i, skip);
     if (p < 0) return -1;
     int current = scaleAt(s, p, scaleOf);
     if (!(scale < previous)) {  // a predecessor, not a complex: up out of the components
         while (current < previous) {
-            p = parentOf(s, size_t(p));
+            p = parentOf(s, size_t(p), skip);
             if (p < 0) return -1;
             current = scaleAt(s, p, scaleOf);
         }
     }
-    while (current > scale) {
-        p = parentOf(s, size_t(p));
+    while (current > scale) {  // past the predecessor's components, to its complex at this scale
+        p = parentOf(s, size_t(p), skip);
         if (p < 0) return -1;
         current = scaleAt(s, p, scaleOf);
     }
@@ -155,9 +156,9 @@ long successorAtLevel(const LString& s, size_t i, int scale, const Scale& scaleO
     return p;
 }
 
-long predecessorAtLevel(const LString& s, size_t i, int scale, const Scale& scaleOf) {
-    long p = parentOf(s, i);
-    while (p >= 0 && scaleAt(s, p, scaleOf) != scale) p = parentOf(s, size_t(p));
+long predecessorAtLevel(const LString& s, size_t i, int scale, const Scale& scaleOf, const Skip& skip) {
+    long p = parentOf(s, i, skip);
+    while (p >= 0 && scaleAt(s, p, scaleOf) != scale) p = parentOf(s, size_t(p), skip);
     return p;
 }
 
