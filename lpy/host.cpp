@@ -471,20 +471,21 @@ Model runModel(std::string_view written, const RunOptions& options) {
     const std::string pasted = pasteFiles(written, pasteReader(options.path), out.diagnostics);
     if (hasErrors(out.diagnostics)) return out;
     const std::string_view text = pasted;
-    Translation tr = translate(text);
-    out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
-    if (!tr.ok()) return out;
     try {
         start();
     } catch (std::exception& e) {
+        const Translation tr = translate(text);  // its own errors first, then why it cannot run
+        out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
         out.diagnostics.push_back({0, 0, std::string("Python could not start: ") + e.what(), Severity::Error});
         return out;
     }
     std::lock_guard<std::mutex> lock(g_run);
     py::gil_scoped_acquire gil;
-    // Read again from the process's names when L-systems made from Python added some (the
-    // same modules, ids that agree with theirs).
-    if (registry().size() > ModuleClasses().size()) tr = translate(text, &registry());
+    // Read with the process's names (the registry is held with the GIL): the same modules as
+    // the L-systems made from Python, with ids that agree with theirs.
+    Translation tr = translate(text, &registry());
+    out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
+    if (!tr.ok()) return out;
     registry().adopt(tr.classes, false);
     const std::string file = options.path.empty() ? "<model>" : options.path;
     std::string initCode = tr.initCode, mainCode = tr.mainCode;
