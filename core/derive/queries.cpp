@@ -122,6 +122,7 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
             if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
                 const QueryFrame& f = passes[t].frames[q++];
                 if (env.isAttraction()) {  // answered above: the ?E only uses up its frame here
+                } else if (env.empty()) {  // no environment (an L-system Explorer file's ?E): it keeps its values
                 } else {
                     const glm::dvec3 p = toWorld(target, f.position), h = turnBy(glm::dvec3(f.heading), target.yaw);
                     if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(h) > 0)) {

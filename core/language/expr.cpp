@@ -36,12 +36,21 @@ const Function1 kFunctions1[] = {
     {"sign", [](double x) { return double((x > 0) - (x < 0)); }},
     {"trunc", [](double x) { return std::trunc(x); }},
     {"fabs", [](double x) { return std::fabs(x); }},
+    // mathjs's (L-system Explorer's expressions): fix rounds towards zero.
+    {"fix", [](double x) { return std::trunc(x); }},
+    {"cbrt", [](double x) { return std::cbrt(x); }},
+    {"log10", [](double x) { return std::log10(x); }},
+    {"log2", [](double x) { return std::log2(x); }},
+    {"square", [](double x) { return x * x; }},
+    {"cube", [](double x) { return x * x * x; }},
 };
 const Function2 kFunctions2[] = {
     {"atan2", [](double y, double x) { return std::atan2(y, x) / kDeg; }},
     {"min", [](double a, double b) { return std::fmin(a, b); }},
     {"max", [](double a, double b) { return std::fmax(a, b); }},
     {"pow", [](double a, double b) { return std::pow(a, b); }},
+    {"mod", [](double a, double b) { return b == 0 ? a : a - b * std::floor(a / b); }},  // mathjs: the divisor's sign
+    {"hypot", [](double a, double b) { return std::hypot(a, b); }},
 };
 
 const std::unordered_map<std::string, double>& builtinConstants() {

@@ -181,6 +181,7 @@ FileKind detectFileKind(std::string_view path, std::string_view bytes) {
 ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
     ParseOptions o;
     o.cpfg = cpfgFamily(kind);
+    o.explorer = (kind == FileKind::Lsys || kind == FileKind::Cpfg) && hasExtension(path, ".ls");
     if (!path.empty()) {  // #include (cpfg) and files an environment names read beside the grammar
         const size_t slash = path.find_last_of('/');
         o.include = includeFromFolder(slash == std::string::npos ? "." : path.substr(0, slash));
@@ -191,7 +192,9 @@ ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
 
 ParseResult parseDetected(std::string_view text, const std::string& path) {
     const FileKind kind = detectFileKind(path, text);
-    return parse(text, parseOptionsFor(cpfgFamily(kind) ? kind : FileKind::Lsys, path));
+    ParseOptions o = parseOptionsFor(cpfgFamily(kind) ? kind : FileKind::Lsys, path);
+    o.explorer = o.explorer && kind != FileKind::Lparser;
+    return parse(text, o);
 }
 
 const char* fileKindName(FileKind kind) {

@@ -169,6 +169,7 @@ struct ParseOptions {
     bool cpfg = false;       // the cpfg / lpfg / L-Py family instead of .lsys
     IncludeReader include;   // null: `#include` is an error (text typed with no folder)
     std::string fileName;    // the grammar's own name, so that it cannot include itself
+    bool explorer = false;   // an L-system Explorer file (`.ls`, not Lparser's): that tool's defaults
 };
 
 ParseResult parse(std::string_view text);

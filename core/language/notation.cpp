@@ -408,7 +408,7 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
             d = directiveNamed("define");
             directiveValue = part;
             writtenKey = {};
-            if (usedAsModule(key))
+            if (usedAsModule(key) && !m_options.explorer)  // that tool reads `name = value` as a variable, always
                 m_sink.warning(l.src, key, "'" + std::string(trim(part)) + "' was read as the constant " + std::string(key) +
                                                " (a slider); for a rule that rewrites the module " + std::string(key) +
                                                ", write '" + std::string(key) + " -> " + std::string(value) + "'");

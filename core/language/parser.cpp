@@ -16,9 +16,12 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     m_text = std::string(text);
     m_original = m_text;
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
-    // generalized cylinders and query modules; the Lparser extensions).
+    // generalized cylinders and query modules; the Lparser extensions; L-system Explorer's
+    // move without drawing, home, contours and their use, radius spline).
     m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T",
-                     "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L", "?E"};
+                     "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L", "?E",
+                     "@m", "@H", "@#", "@Gr", "@Cs", "@Ce", "@Ca", "@Cb", "@Cc", "@Cm", "@Cn", "@Ct", "@Ds", "@De",
+                     "@Di", "@bo", "@bd"};
     indexModuleNames();
 }
 
@@ -49,6 +52,11 @@ bool Parser::tokenize(const SourceLine& line, std::string_view text, std::vector
             continue;
         }
         char c = text[i];
+        if ((c == '(' || c == ')') && m_options.explorer) {  // that tool reads past it
+            m_sink.warning(line, text.substr(i), std::string("a '") + c + "' that follows no module name: left out, as L-system Explorer leaves it out");
+            ++i;
+            continue;
+        }
         if (c == '(' || c == ')') {
             m_sink.error(line, text.substr(i),
                          c == '(' ? "'(' must follow a module name, as in F(1)"
@@ -250,8 +258,17 @@ void Parser::define(const SourceLine& line, std::string_view text) {
                                                      std::string(name) + " = 1.5");
         return;
     }
-    if (m_g.defines.count(std::string(name))) {
-        m_sink.error(line, name, "'" + std::string(name) + "' is defined twice");
+    if (auto it = m_g.defines.find(std::string(name)); it != m_g.defines.end()) {
+        if (!m_cpfg) {
+            m_sink.error(line, name, "'" + std::string(name) + "' is defined twice");
+            return;
+        }
+        // cpfg's #define is the C preprocessor's: the same value again is nothing; another
+        // value replaces the first, with a warning.
+        auto v = constant(line, rest);
+        if (v && *v != it->second)
+            m_sink.warning(line, name, "'" + std::string(name) + "' is defined again with another value: the last one is used");
+        if (v) it->second = *v;
         return;
     }
     if (auto v = constant(line, rest)) {
@@ -269,7 +286,20 @@ void Parser::setAxiom(const SourceLine& line, std::string_view text) {
     m_axiomLine = line.number;
     if (text.find_first_of("()") == std::string_view::npos && setPlainAxiom(line, text)) return;
     std::vector<RawModule> mods;
-    if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, 0)) return;
+    if (!tokenize(line, text, mods)) return;
+    if (m_options.explorer) {
+        // L-system Explorer draws an axiom whose branch is never closed: it ends at the end.
+        std::vector<std::string_view> open;
+        for (const auto& m : mods) {
+            if (m.name == "[") open.push_back(m.name);
+            else if (m.name == "]" && !open.empty()) open.pop_back();
+        }
+        if (!open.empty()) {
+            m_sink.warning(line, open.front(), "this '[' is never closed with ']': the branch ends at the end of the axiom");
+            for (size_t k = 0; k < open.size(); ++k) mods.push_back(RawModule{std::string_view("]"), {}, false});
+        }
+    }
+    if (!checkBrackets(line, text, mods, 0)) return;
     ModuleString axiom;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));

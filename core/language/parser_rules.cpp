@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "core/base/bounded.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout {
@@ -127,7 +128,12 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     size_t colon = findTopLevel(head, ":", 0, m_cpfg);
     if (colon != std::string_view::npos) {
         std::string_view written = trim(head.substr(0, colon));
-        if (isRuleLabel(written)) {
+        // A lone `P :` is a module P with a condition when what follows is one, as in cpfg's
+        // `P : * {z = z+1} -> ...` (`*` no condition, `{` a statement block).
+        std::string_view after = trim(head.substr(colon + 1));
+        const bool condition = written.size() == 1 && !after.empty() &&
+                               (after[0] == '{' || (after[0] == '*' && !trim(after.substr(1)).starts_with("<")));
+        if (isRuleLabel(written) && !condition) {
             // The label as typed (p₃ with its subscript), up to the colon.
             const size_t from = size_t(written.data() - line.text.data());
             const size_t to = size_t(head.data() - line.text.data()) + colon;
@@ -214,15 +220,23 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         if (condition.empty()) colon = std::string_view::npos;
     }
     prod.firstLocal = std::uint16_t(params.size());
+    std::vector<std::pair<std::string, double>> globalsAssigned;  // L-system Explorer's variables a block changes
     if (!preBlock.empty() || !postBlock.empty()) {
         std::vector<std::string> assigned;
         collectAssigned(preBlock, assigned);
         collectAssigned(postBlock, assigned);
+        const std::string_view block = preBlock.empty() ? postBlock : preBlock;
         for (const auto& name : assigned) {
-            if (m_g.defines.count(name)) {
-                m_sink.error(line, line.text.substr(size_t(preBlock.data() - line.text.data())),
-                             "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
-                return;
+            if (auto global = m_g.defines.find(name); global != m_g.defines.end()) {
+                if (!m_options.explorer || std::find(params.begin(), params.end(), name) != params.end()) {
+                    m_sink.error(line, block, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
+                    return;
+                }
+                // L-system Explorer's `zpos = 0` is a variable its blocks change for the rest
+                // of the derivation; here the change stays in the production, from that value.
+                m_sink.warning(line, block, "the block changes the variable '" + name + "': in Sprout the change is seen by this "
+                                            "production only (each time from " + formatNumber(global->second) + "), not by the next ones");
+                globalsAssigned.emplace_back(name, global->second);
             }
             if (std::find(params.begin(), params.end(), name) == params.end()) params.push_back(name);
         }
@@ -235,6 +249,16 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
 
     ExprScope scope{&params, &m_g.defines, &m_macros};
     bool ok = true;
+    for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
+        Statement init;
+        init.slot = std::uint16_t(std::find(params.begin(), params.end(), name) - params.begin());
+        std::string number;
+        appendNumber(number, value);
+        auto e = compileExpr(number, line, scope, m_sink);
+        if (!e) return;
+        init.expr = std::move(*e);
+        prod.pre.push_back(std::move(init));
+    }
     if (!preBlock.empty() && !parseBlock(line, preBlock, params, prod.pre)) return;
     if (!postBlock.empty() && !parseBlock(line, postBlock, params, prod.post)) return;
     if (colon != std::string_view::npos) {

@@ -54,7 +54,10 @@ void Parser::classify(Line& l, Section& section) {
     }
     const char* alias = colon == std::string_view::npos ? nullptr : settingAlias(key);
     if (colon == std::string_view::npos || key.empty() || !(isIdentifier(key) || alias)) {
-        m_sink.error(l.src, t, "expected a rule such as 'F -> F+F' or a setting such as 'angle: 90'");
+        if (m_options.explorer)  // that tool passes over what it cannot read, and says nothing
+            m_sink.warning(l.src, t, "not a rule, a setting or a statement: left out, as L-system Explorer leaves it out");
+        else
+            m_sink.error(l.src, t, "expected a rule such as 'F -> F+F' or a setting such as 'angle: 90'");
         return;
     }
     std::string_view value = trim(t.substr(colon + 1));
@@ -83,7 +86,8 @@ void Parser::classify(Line& l, Section& section) {
         std::string guess = closestMatch(k, names);
         if (!guess.empty()) msg += " — did you mean '" + guess + "'?";
         else msg += " (a rule needs '->')";
-        m_sink.error(l.src, key, msg);
+        if (m_options.explorer) m_sink.warning(l.src, key, msg + ": left out, as L-system Explorer leaves it out");
+        else m_sink.error(l.src, key, msg);
         return;
     }
     l.kind = Line::DirectiveLine;
@@ -243,14 +247,28 @@ ParseResult Parser::run() {
         // Where it is first written, for the message.
         for (const auto& l : m_lines) {
             if (size_t at = l.src.text.find("?E"); at != std::string_view::npos && l.kind != Line::Skip) {
-                m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
-                                                            "such as 'environment: sphere 0 10 0 8'");
+                if (m_options.explorer)  // the page's JavaScript answers it there; the file cannot carry that
+                    m_sink.warning(l.src, l.src.text.substr(at), "?E asks L-system Explorer's environment, a JavaScript function "
+                                                                  "of that tool the file does not carry: here ?E keeps the values it "
+                                                                  "is given (declare one with 'environment: sphere 0 10 0 8')");
+                else
+                    m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
+                                                                "such as 'environment: sphere 0 10 0 8'");
                 break;
             }
         }
     }
     lint();
-    m_g.dialect = m_cpfg ? (m_mixed ? "L-system Explorer (cpfg family)" : "cpfg") : m_notation ? "ABOP notation" : ".lsys";
+    if (m_options.explorer) {
+        // L-system Explorer derives once when the file sets no derivation length.
+        const bool nSet = std::any_of(m_g.settingsRead.begin(), m_g.settingsRead.end(),
+                                      [](const Grammar::ReadSetting& s) { return s.name == "n" || s.name == "iterations"; });
+        if (!nSet) m_g.settings.iterations = 1;
+    }
+    m_g.dialect = m_cpfg ? (m_mixed || m_options.explorer ? "L-system Explorer (cpfg family)" : "cpfg")
+                  : m_options.explorer ? "L-system Explorer"
+                  : m_notation         ? "ABOP notation"
+                                       : ".lsys";
     std::stable_sort(m_g.settingsRead.begin(), m_g.settingsRead.end(),
                      [](const Grammar::ReadSetting& a, const Grammar::ReadSetting& b) { return a.line < b.line; });
 

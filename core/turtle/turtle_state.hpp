@@ -39,9 +39,10 @@ inline Act actionOf(const std::string& name) {
         // by a factor; bend towards gravity now (Lparser's t).
         {"@L", Act::ScaleLength}, {"@A", Act::ScaleAngle}, {"@W", Act::ScaleWidth}, {"@T", Act::Gravity},
         // cpfg: query modules (the turtle's frame is written back into them after each
-        // step), move to a point, set the heading, roll L horizontal, a disc.
+        // step), move to a point (L-system Explorer's @m too), set the heading, roll L
+        // horizontal, a disc.
         {"?P", Act::Query}, {"?H", Act::Query}, {"?U", Act::Query}, {"?L", Act::Query}, {"?E", Act::Query},
-        {"@M", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
+        {"@M", Act::MoveTo}, {"@m", Act::MoveTo}, {"@R", Act::SetHeading}, {"@v", Act::Horizontal}, {"@c", Act::Disc},
         // L-Py's (PlantGL's turtle): a stem straight to a point, the heading kept (LineTo) or
         // turned towards it (OLineTo).
         {"LineTo", Act::LineTo}, {"OLineTo", Act::OLineTo},

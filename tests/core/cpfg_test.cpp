@@ -34,47 +34,83 @@ std::vector<fs::path> cpfgFiles() {
     return out;
 }
 
+// One annotated file: parsed with `options`, its warnings, derivation length and strings
+// checked against its comment lines (and its dialect, with a `// dialect: NAME` line).
+// Returns the number of strings checked.
+int checkAnnotatedFile(const fs::path& path, const ParseOptions& options) {
+    static const std::regex expectLine(R"(^// (expect|draws) (\d+): (.*)$)"), warningLine(R"(^// warning (\d+): (.*)$)"),
+        nLine(R"(^// n: (\d+)$)"), dialectLine(R"(^// dialect: (.*)$)");
+    SCOPED_TRACE(path.filename().string());
+    const std::string text = slurp(path);
+    ParseResult r = parse(text, options);
+    std::set<std::string> warnings;
+    for (const auto& d : r.diagnostics) {
+        if (d.severity == Severity::Error) ADD_FAILURE() << formatDiagnostic(d, path.filename().string());
+        else warnings.insert(std::to_string(d.line) + ": " + d.message);
+    }
+    if (!r.ok()) {
+        ADD_FAILURE() << "does not parse";
+        return 0;
+    }
+    std::set<std::string> expectedWarnings;
+    std::istringstream lines(text);
+    int checked = 0;
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, warningLine)) {
+            expectedWarnings.insert(m[1].str() + ": " + m[2].str());
+        } else if (std::regex_match(line, m, nLine)) {
+            EXPECT_EQ(r.grammar->settings.iterations, std::stoi(m[1].str()));
+        } else if (std::regex_match(line, m, dialectLine)) {
+            EXPECT_EQ(r.grammar->dialect, m[1].str());
+        } else if (std::regex_match(line, m, expectLine)) {
+            const int n = std::stoi(m[2].str());
+            DeriveResult d = derive(r.grammar, n);
+            if (!d.outcome.ok()) {
+                ADD_FAILURE() << d.outcome.message;
+                return checked;
+            }
+            const ModuleString shown = m[1] == "draws" ? applyInterpretation(*r.grammar, *d.string, r.grammar->settings.seed)
+                                                       : *d.string;
+            EXPECT_EQ(toString(shown, r.grammar->alphabet), m[3].str()) << m[1] << " " << n;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 0) << "no '// expect N: STRING' line";
+    EXPECT_EQ(warnings, expectedWarnings);
+    return checked;
+}
+
 TEST(Cpfg, EveryFileDerivesWhatItSays) {
     const auto files = cpfgFiles();
     ASSERT_GE(files.size(), 40u) << "tests/cpfg holds the cpfg-family test files";
-    const std::regex expectLine(R"(^// (expect|draws) (\d+): (.*)$)"), warningLine(R"(^// warning (\d+): (.*)$)"),
-        nLine(R"(^// n: (\d+)$)");
     int checked = 0;
     for (const auto& path : files) {
-        SCOPED_TRACE(path.filename().string());
         const std::string text = slurp(path);
-        ASSERT_TRUE(cpfgFamily(detectFileKind(path.string(), text)));
-        ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, path.string()));
-        std::set<std::string> warnings;
-        for (const auto& d : r.diagnostics) {
-            if (d.severity == Severity::Error) ADD_FAILURE() << formatDiagnostic(d, path.filename().string());
-            else warnings.insert(std::to_string(d.line) + ": " + d.message);
-        }
-        ASSERT_TRUE(r.ok());
-        std::set<std::string> expectedWarnings;
-        std::istringstream lines(text);
-        bool any = false;
-        for (std::string line; std::getline(lines, line);) {
-            std::smatch m;
-            if (std::regex_match(line, m, warningLine)) {
-                expectedWarnings.insert(m[1].str() + ": " + m[2].str());
-            } else if (std::regex_match(line, m, nLine)) {
-                EXPECT_EQ(r.grammar->settings.iterations, std::stoi(m[1].str()));
-            } else if (std::regex_match(line, m, expectLine)) {
-                const int n = std::stoi(m[2].str());
-                DeriveResult d = derive(r.grammar, n);
-                ASSERT_TRUE(d.outcome.ok()) << d.outcome.message;
-                const ModuleString shown = m[1] == "draws" ? applyInterpretation(*r.grammar, *d.string, r.grammar->settings.seed)
-                                                           : *d.string;
-                EXPECT_EQ(toString(shown, r.grammar->alphabet), m[3].str()) << m[1] << " " << n;
-                any = true;
-                ++checked;
-            }
-        }
-        EXPECT_TRUE(any) << "no '// expect N: STRING' line";
-        EXPECT_EQ(warnings, expectedWarnings);
+        EXPECT_TRUE(cpfgFamily(detectFileKind(path.string(), text))) << path.filename();
+        checked += checkAnnotatedFile(path, parseOptionsFor(FileKind::Cpfg, path.string()));
     }
     EXPECT_GE(checked, 80);
+}
+
+// tests/explorer: L-system Explorer's constructs (`.ls` files written for Sprout), read as a
+// user opens them: the kind from the content and the name, that tool's defaults.
+TEST(Explorer, EveryFileDerivesWhatItSays) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(SPROUT_EXPLORER_DIR))
+        if (e.path().extension() == ".ls") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    ASSERT_GE(files.size(), 10u);
+    int checked = 0;
+    for (const auto& path : files) {
+        const std::string text = slurp(path);
+        const FileKind kind = detectFileKind(path.string(), text);
+        ASSERT_TRUE(kind == FileKind::Lsys || kind == FileKind::Cpfg) << path.filename() << ": " << fileKindName(kind);
+        const ParseOptions o = parseOptionsFor(kind, path.string());
+        EXPECT_TRUE(o.explorer) << path.filename();
+        checked += checkAnnotatedFile(path, o);
+    }
+    EXPECT_GE(checked, 15);
 }
 
 // The turtle additions draw what they say.

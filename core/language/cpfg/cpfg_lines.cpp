@@ -50,12 +50,17 @@ size_t arrowAt(std::string_view s) {
     return std::string_view::npos;
 }
 
-// Open parentheses and braces in `s` (negative when more close than open).
+// Open parentheses, and braces before the arrow, in `s` (negative when more close than
+// open). After the arrow a brace is a polygon's start or end, which a successor may leave
+// open (`A -> [&FA{.].` and `B -> B&.F.}`).
 int openCount(std::string_view s) {
+    const size_t arrow = arrowAt(s);
     int depth = 0;
-    for (char c : s) {
-        if (c == '(' || c == '{') ++depth;
-        else if (c == ')' || c == '}') --depth;
+    for (size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        const bool block = arrow == std::string_view::npos || i < arrow;
+        if (c == '(' || (block && c == '{')) ++depth;
+        else if (c == ')' || (block && c == '}')) --depth;
     }
     return depth;
 }
@@ -83,8 +88,15 @@ size_t blankComments(std::string& text) {
             i = stop;
             continue;
         }
-        if (text[i] == '/' && text[i + 1] == '/') {
+        // `//` starts a comment at the start of a line or after a space; glued to a module it
+        // is two rolls (`[//&&l]`), as L-system Explorer reads it.
+        if (text[i] == '/' && text[i + 1] == '/' && (i == 0 || isSpace(text[i - 1]) || text[i - 1] == '\n')) {
             while (i < text.size() && text[i] != '\n') text[i++] = ' ';
+            continue;
+        }
+        if (text[i] == '/') {  // a run of rolls: none of its slashes starts a comment
+            while (i + 1 < text.size() && text[i] == '/' && text[i + 1] != '*') ++i;
+            if (i + 1 == text.size()) ++i;
             continue;
         }
         ++i;
@@ -124,9 +136,22 @@ std::string sectionWord(std::string_view t) {
     return "";
 }
 
+// cpfg's blocks of statements: constants (`define: {...}`) and the global blocks run
+// before and after the derivation and each of its steps.
+bool isStatementBlockKey(const std::string& key) {
+    return key == "define" || key == "start" || key == "starteach" || key == "endeach" || key == "end";
+}
+
+// Braces open in `s` (negative when more close than open).
+int braceDepth(std::string_view s) {
+    int depth = 0;
+    for (char c : s) depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+    return depth;
+}
+
 bool knownKey(const std::string& key) {
     if (cpfgKeys().count(key) || key == "lsystem" || key == "consider" || key == "maximum depth" || key == "surface" ||
-        key == "angle factor" || key == "define")
+        key == "angle factor" || isStatementBlockKey(key))
         return true;
     for (const auto& d : directives())
         if (key == d.name) return true;
@@ -166,6 +191,36 @@ const Directive kSurface{"surface", surfaceHandler, 0};  // before rules: it nam
 const Directive kMaximumDepth{"maximum depth", depthHandler};
 const Directive kAngleFactor{"angle factor", angleFactorHandler};
 const Directive kDefineBlock{"define", defineBlockHandler, 1};
+// `Start: {...}`, `StartEach:`, `EndEach:`, `End:` (cpfg's and L-system Explorer's global
+// blocks): not run. Said once per block, with what it changes.
+void globalBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
+    std::string_view t = trim(l.text);
+    const std::string_view word = trim(t.substr(0, t.find(':')));
+    std::vector<std::string> names;
+    std::string_view body = trim(v);
+    if (body.starts_with("{")) body.remove_prefix(1);
+    if (body.ends_with("}")) body.remove_suffix(1);
+    size_t start = 0;
+    while (start < body.size()) {  // `name = ...;` statements: the names they assign
+        size_t end = body.find(';', start);
+        if (end == std::string_view::npos) end = body.size();
+        std::string_view stmt = trim(body.substr(start, end - start));
+        const size_t eq = stmt.find('=');
+        if (eq != std::string_view::npos && eq > 0 && (eq + 1 == stmt.size() || stmt[eq + 1] != '=') &&
+            std::string_view("<>!=").find(stmt[eq - 1]) == std::string_view::npos) {
+            std::string name(trim(stmt.substr(0, eq)));
+            name = name.substr(0, name.find_first_of(".[ "));
+            if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+        start = end + 1;
+    }
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    p.sink().warning(l, word, "'" + std::string(word) + ":' blocks are not run" +
+                                  (list.empty() ? std::string() : " (this one sets " + list + ")") +
+                                  ": the rules use the values set before the axiom");
+}
+const Directive kGlobalBlock{"global block", globalBlockHandler};
 
 }  // namespace
 
@@ -197,6 +252,28 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
         if (l.text.ends_with('\r')) l.text.remove_suffix(1);
         lines.push_back({l});
         start = end + 1;
+    }
+    // A line that ends with '\\' goes on on the next one (the C preprocessor's continuation,
+    // in multi-line #defines): one line, at the first line's number.
+    for (size_t i = 0; i + 1 < lines.size(); ++i) {
+        std::string_view t = lines[i].src.text;
+        while (!t.empty() && isSpace(t.back())) t.remove_suffix(1);
+        if (!t.ends_with('\\')) continue;
+        std::string joined(t.substr(0, t.size() - 1));
+        size_t j = i;
+        while (j + 1 < lines.size()) {
+            std::string_view next = lines[++j].src.text;
+            lines[j].src.text = next.substr(0, 0);
+            while (!next.empty() && isSpace(next.back())) next.remove_suffix(1);
+            const bool more = next.ends_with('\\');
+            joined += ' ';
+            joined += more ? next.substr(0, next.size() - 1) : next;
+            if (!more) break;
+        }
+        m_store.push_back(std::move(joined));
+        lines[i].src.text = m_store.back();
+        if (top) lines[i].src.original = m_store.back();
+        i = j;
     }
 
     // Preprocessor lines first, in order: #define and #include.
@@ -344,6 +421,22 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
         out.src = body[i];
         std::string_view value;
         std::string key = keyOf(t, value);
+        if (isStatementBlockKey(key) && value.starts_with("{") && braceDepth(t) > 0) {
+            // `define: {` or `EndEach: {` with its statements on the lines after: one line.
+            std::string joined(body[i].text);
+            size_t j = i;
+            while (braceDepth(joined) > 0 && j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
+                joined += ' ';
+                joined += body[++j].text;
+            }
+            for (size_t k = i + 1; k <= j; ++k) body[k].text = body[k].text.substr(0, 0);
+            m_store.push_back(std::move(joined));
+            body[i].text = m_store.back();
+            body[i].original = m_store.back();
+            out.src = body[i];
+            t = trim(body[i].text);
+            key = keyOf(t, value);
+        }
         const bool directive = (!key.empty() && arrowAt(t) == std::string_view::npos && knownKey(key)) ||
                                !sectionWord(t).empty() || startsWithWord(t, "module");
         // A rule whose successor is on the lines after its arrow (`M(t) : 1 {...} -->` then the
@@ -539,6 +632,7 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     else if (key == "maximum depth") l.directive = &kMaximumDepth;
     else if (key == "angle factor") l.directive = &kAngleFactor;
     else if (key == "define" && value.starts_with("{")) l.directive = &kDefineBlock;
+    else if (isStatementBlockKey(key) && key != "define") l.directive = &kGlobalBlock;
     else
         for (const auto& d : directives())
             if (name == d.name) l.directive = &d;

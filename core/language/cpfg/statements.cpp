@@ -159,6 +159,7 @@ bool Parser::splitCpfgCondition(const SourceLine& line, std::string_view text, s
         pre = t.substr(1, close - 1);
         if (trim(pre).empty()) pre = t.substr(1, 0);
         t = trim(t.substr(close + 1));
+        if (t.starts_with(":")) t = trim(t.substr(1));  // `{ ... }: a == V` (L-system Explorer's files)
     }
     if (t.ends_with("}")) {
         int depth = 0;
