@@ -94,7 +94,11 @@ using namespace sprout;
 // The cpfg family: parsed as written (no folder: #include is an error), derived a few steps
 // with decomposition and queries under the same caps, and drawn (generalized cylinders too).
 [[maybe_unused]] void deriveAndDrawCpfg(const std::string& text, int maxSteps) {
-    ParseResult r = parse(text, parseOptionsFor(FileKind::Cpfg, ""));
+    // Every other input as an L-system Explorer file (a `.ls`): that tool's leniencies
+    // (unbalanced successors, stray lines, sub-L-systems, paths) are fuzzed too.
+    ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
+    o.explorer = text.size() % 2 == 1;
+    ParseResult r = parse(text, o);
     int n = 0;
     auto d = deriveSome(r, maxSteps, n);
     if (!d) return;

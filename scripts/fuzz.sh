@@ -36,7 +36,7 @@ seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursi
     lparser) echo tests/data/seed001 fuzz/regressions/lparser; [ -d "$shared/lparser" ] && echo "$shared/lparser" ;;
     fractint) echo fuzz/seeds/fractint fuzz/regressions/fractint; [ -d "$shared" ] && echo "$shared" ;;
     png) echo tests/golden fuzz/regressions/png ;;
-    cpfg) echo tests/cpfg tests/bad-input presets fuzz/regressions/cpfg ;;
+    cpfg) echo tests/cpfg tests/explorer tests/bad-input presets fuzz/regressions/cpfg ;;
     lpy) echo tests/lpy/models tests/cpfg fuzz/regressions/lpy; [ -d "$shared/lpy" ] && echo "$shared/lpy" ;;
   esac
 }

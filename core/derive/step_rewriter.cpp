@@ -41,7 +41,15 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         m_inherit.push_back(keep);
     }
     m_always.assign(A, nullptr);
-    for (size_t s = 0; s < A; ++s) {
+    if (&rules == &g.rules && !g.subLsystems.empty()) {
+        m_subMark.assign(A, 0);
+        for (size_t s = 0; s < A; ++s) {
+            if (g.alphabet[SymbolId(s)].name != "$") continue;
+            m_subMark[s] = m_arity[s] > 0 ? 1 : 2;
+            m_hasRules[s] = 1;  // the copy of runs without rules stops there
+        }
+    }
+    for (size_t s = 0; s < A && m_subMark.empty(); ++s) {
         if (!m_hasRules[s]) continue;
         const Production& first = rules.productions[rules.bySymbol[s].front()];
         if (!first.hasContext() && !first.condition && !first.stochastic() && !first.hasBlocks()) m_always[s] = &first;
@@ -221,9 +229,10 @@ void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng)
 const Production* StepRewriter::select(size_t i, Rng& rng) {
     const auto& list = m_rules.bySymbol[m_in->symbols[i]];
     const auto& prods = m_rules.productions;
+    const std::uint8_t in = m_subStack.empty() ? 0 : m_subStack.back();
     for (size_t k = 0; k < list.size(); ++k) {
         const Production& p = prods[list[k]];
-        if (!applicable(p, i, rng)) continue;
+        if (p.lsystem != in || !applicable(p, i, rng)) continue;
         if (!p.stochastic()) return &p;
         // Stochastic: choose among the applicable stochastic rules for this module by their
         // probabilities. If they add up to less than 1, the module stays unchanged for the
@@ -233,7 +242,7 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
         std::uint32_t lastTested = list[k];  // whose parameters the slots hold now
         for (size_t k2 = k + 1; k2 < list.size(); ++k2) {
             const Production& q = prods[list[k2]];
-            if (!q.stochastic()) continue;
+            if (!q.stochastic() || q.lsystem != in) continue;
             lastTested = list[k2];
             if (applicable(q, i, rng)) {
                 m_candidates.push_back(list[k2]);
@@ -284,6 +293,7 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     const std::uint8_t* arity = m_arity.data();
     size_t pp = 0;
     size_t nextCheck = 1u << 18;
+    m_subStack.clear();
     for (size_t i = 0; i < N;) {
         if (i >= nextCheck) {
             nextCheck = i + (1u << 18);
@@ -338,6 +348,17 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
             for (unsigned k = 0; k < a; ++k) *dp++ = par[pp + k];
             if (da) *da++ = ages->in[i];
             if (dParent) *dParent++ = std::uint32_t(i), *dRule++ = -1;
+        }
+        if (!m_subMark.empty() && m_subMark[sym[i]]) {  // after its own rewriting, as L-system Explorer does
+            if (m_subMark[sym[i]] == 2) {
+                if (!m_subStack.empty()) m_subStack.pop_back();
+            } else {
+                const auto& labels = m_g.subLsystems;
+                const auto at = std::find(labels.begin(), labels.end(), par[pp]);
+                // An unknown label rewrites with the L-system it is in.
+                m_subStack.push_back(at == labels.end() ? (m_subStack.empty() ? 0 : m_subStack.back())
+                                                        : std::uint8_t(at - labels.begin() + 1));
+            }
         }
         pp += a;
         ++i;

@@ -57,6 +57,10 @@ private:
     // The rule that always applies to a symbol (first in file order, without context,
     // condition or probability), so the common case skips matching altogether.
     std::vector<const Production*> m_always;
+    // Sub-L-systems: by symbol, 1 for `$(k)` (enter k), 2 for `$` (leave); the stack of those
+    // entered while a step goes left to right.
+    std::vector<std::uint8_t> m_subMark;
+    std::vector<std::uint8_t> m_subStack;
     std::vector<int> m_inherit;  // per production: the successor index that keeps the age, or -1
     std::vector<std::uint32_t> m_maxLen;     // per symbol: most modules one rewrite can emit
     std::vector<std::uint32_t> m_maxParams;

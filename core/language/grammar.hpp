@@ -51,6 +51,9 @@ struct Settings {
     // Inside { }, F draws its segment as well as a polygon point (PlantGL's turtle, for L-Py
     // files); false: F only outlines the polygon (cpfg).
     bool polygonEdgesDrawn = false;
+    // L-system Explorer: `{(0)` (a '{' with a parameter) starts a path, a tube through the
+    // points F reaches (as @Gs does), and a '}' with no polygon open ends it.
+    bool bracePaths = false;
     std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
     ViewHint view = ViewHint::Auto;
     std::uint64_t seed = 1;
@@ -93,6 +96,7 @@ struct Production {
     Successor successor;
     double probability = -1;  // < 0: deterministic
     int slotCount = 0;        // formal parameters across left, pred and right
+    std::uint8_t lsystem = 0; // cpfg's sub-L-system it belongs to: 0 the main one, k subLsystems[k-1]
     bool hasContext() const { return !left.empty() || !right.empty(); }
     bool stochastic() const { return probability >= 0; }
     bool hasBlocks() const { return !pre.empty() || !post.empty(); }
@@ -115,6 +119,9 @@ struct Grammar {
     // cpfg's cut: a '%' stays in the string of the step that made it and removes the rest of
     // its branch while the next step is derived. In .lsys it cuts at once (ABOP 1.10.3).
     bool cutInNextStep = false;
+    // cpfg's sub-L-systems (`lsystem: 2` after the main one's `endlsystem`), by label: between
+    // `$(2)` and `$` a step rewrites with sub-L-system 2's productions (L-system Explorer).
+    std::vector<double> subLsystems;
     Settings settings;
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;

@@ -520,6 +520,12 @@ void Parser::declareNamedModules() {
 }
 
 void Parser::applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key) {
+    if (m_options.explorer && trim(value).empty() && std::string_view(d.name) != "module") {
+        // `dlength:` with nothing after it: that tool passes over it.
+        const std::string_view t = trim(src.text);
+        m_sink.warning(src, t, "'" + std::string(trim(t.substr(0, t.find(':')))) + ":' has no value: left out");
+        return;
+    }
     m_g.settingsRead.push_back({src.number, d.name, std::string(trim(value)), std::string(key)});
     d.handler(*this, src, value);
 }

@@ -132,13 +132,21 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
         else if (m.name == "]") {
             if (!open.empty()) open.pop_back();
             else if (net < 0 && closedOuter == 0) closedOuter = 1;
-            else {
+            else if (m_options.explorer) {  // that tool reads the string as written: the turtle and contexts allow it
+                m_sink.warning(line, m.name, "']' closes a branch this successor did not open: read as written, as L-system "
+                                             "Explorer reads it");
+                return true;
+            } else {
                 m_sink.error(line, m.name, "']' closes a branch that was never opened with '['");
                 return false;
             }
         }
     }
     int extra = net > 0 ? 1 : 0;
+    if (int(open.size()) > extra && m_options.explorer) {
+        m_sink.warning(line, open.back(), "this '[' is not closed in this successor: read as written, as L-system Explorer reads it");
+        return true;
+    }
     if (int(open.size()) > extra) {
         m_sink.error(line, open.back(), "this '[' is never closed with ']'");
         return false;

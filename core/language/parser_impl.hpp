@@ -148,6 +148,7 @@ private:
         };
         std::vector<More> more;
         size_t equalsArrow = std::string_view::npos;  // a rule written "F = FF": where its '=' is
+        std::uint8_t lsystem = 0;  // the cpfg sub-L-system the line belongs to (0: the main one)
     };
     // Where the pieces of a cpfg logical line came from: a production joined from several
     // lines, or a line of an #included file (reported at the #include, naming the file).
@@ -222,6 +223,8 @@ private:
     std::vector<std::pair<std::string, std::string>> m_textMacros;  // #define NAME text (not a number)
     Section m_depthSection = Section::Productions;  // where `maximum depth:` applies (cpfg)
     bool m_considerSet = false;
+    std::uint8_t m_lsystem = 0;      // the sub-L-system being read (classifyCpfg)
+    std::uint8_t m_ruleLsystem = 0;  // the sub-L-system of the production parseRule reads
     std::vector<NameId> m_considered;
 };
 

@@ -150,6 +150,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
 
     Production prod;
     prod.line = line.number;
+    prod.lsystem = m_ruleLsystem;
     prod.label = std::move(label);
     std::vector<std::string> params;
     size_t lt = findTopLevel(patterns, "<");

@@ -99,12 +99,14 @@ void Parser::lint() {
     // for the same module are dead: say so rather than leave the user wondering.
     for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation, &m_g.decomposition}) {
         for (const auto& list : rs->bySymbol) {
+            // Each sub-L-system's productions are their own (the first's lsystem is the one checked).
             const Production* total = nullptr;
             double probSum = 0;
             int probCount = 0;
             bool guarded = false;
             for (auto idx : list) {
                 const Production& p = rs->productions[idx];
+                if (p.lsystem != rs->productions[list.front()].lsystem) continue;
                 if (total) {
                     Diagnostic d{p.line, 1,
                                  "this rule never applies: the rule on line " + std::to_string(total->line) +
@@ -217,10 +219,18 @@ ParseResult Parser::run() {
     }
     for (int phase = 0; phase <= 2; ++phase) {
         for (auto& l : m_lines) {
+            if (l.lsystem > 0 && (l.kind == Line::DirectiveLine || l.section != Section::Productions)) {
+                // A sub-L-system's own axiom, derivation length and homomorphism: not used (its
+                // productions rewrite the main L-system's string), as in L-system Explorer.
+                if (phase == 2 && l.kind != Line::Skip)
+                    m_sink.warning(l.src, trim(l.src.text), "a sub-L-system's productions are used; its other lines are not");
+                continue;
+            }
             if (l.kind == Line::DirectiveLine && l.directive->phase == phase) {
                 if (m_cpfg) m_depthSection = l.section;
                 applyDirective(*l.directive, l.src, l.value, l.key);
             } else if (l.kind == Line::Rule && phase == 2) {
+                m_ruleLsystem = l.lsystem;
                 parseRule(l.src, l.section, l.equalsArrow);
             }
             for (const auto& m : l.more)
@@ -264,6 +274,7 @@ ParseResult Parser::run() {
         const bool nSet = std::any_of(m_g.settingsRead.begin(), m_g.settingsRead.end(),
                                       [](const Grammar::ReadSetting& s) { return s.name == "n" || s.name == "iterations"; });
         if (!nSet) m_g.settings.iterations = 1;
+        m_g.settings.bracePaths = true;
     }
     m_g.dialect = m_cpfg ? (m_mixed || m_options.explorer ? "L-system Explorer (cpfg family)" : "cpfg")
                   : m_options.explorer ? "L-system Explorer"
@@ -321,7 +332,7 @@ bool Grammar::hasQueries() const {
 }
 
 bool Grammar::needsGeneralEngine() const {
-    if (!decomposition.productions.empty() || hasQueries()) return true;
+    if (!decomposition.productions.empty() || hasQueries() || !subLsystems.empty()) return true;
     return std::any_of(rules.productions.begin(), rules.productions.end(),
                        [](const Production& p) { return p.hasBlocks(); });
 }

@@ -16,6 +16,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     for (size_t s = 0; s < g.alphabet.size(); ++s) {
         m_arity[s] = g.alphabet[SymbolId(s)].arity;
         m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
+        if (st.bracePaths && m_actions[s] == Act::PolyBegin && m_arity[s] > 0) m_actions[s] = Act::CurveStart;
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
         m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section;
         if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {

@@ -132,6 +132,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
             if (!m_polygons.empty()) {
                 emitPolygon(t, m_polygons.back());
                 m_polygons.pop_back();
+            } else if (t.curve >= 0 && m_g.settings.bracePaths) {  // the end of an L-system Explorer path
+                curveCommand(t, Act::CurveEnd, nullptr);
             }
             break;
         case Act::WidthDec:

@@ -113,6 +113,31 @@ TEST(Explorer, EveryFileDerivesWhatItSays) {
     EXPECT_GE(checked, 15);
 }
 
+// L-system Explorer's `{(0)` ... `}` path is the tube `@Gs` ... `@Ge` makes through the same
+// points; `{` without a parameter stays a polygon.
+TEST(Explorer, BracePathIsTheTubeOfAGeneralizedCylinder) {
+    auto geometryOf = [](const std::string& text) {
+        ParseOptions o = parseOptionsFor(FileKind::Cpfg, "path.ls");
+        ParseResult r = parse(text, o);
+        EXPECT_TRUE(r.ok());
+        EXPECT_TRUE(r.grammar->settings.bracePaths);
+        Geometry g;
+        interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+        return g;
+    };
+    const Geometry path = geometryOf("derivation length: 0\nwidth: 0.5\naxiom: {(0)F(1)+(30)F(1)+(30)F(1)}\n");
+    const Geometry gc = geometryOf("derivation length: 0\nwidth: 0.5\naxiom: @Gs F(1)+(30)F(1)+(30)F(1)@Ge\n");
+    EXPECT_EQ(path.cylinders.size(), 0u);
+    ASSERT_GT(path.polygons.positions.size(), 24u);
+    ASSERT_EQ(path.polygons.positions.size(), gc.polygons.positions.size());
+    for (size_t k = 0; k < gc.polygons.positions.size(); ++k)
+        EXPECT_NEAR(glm::length(path.polygons.positions[k] - gc.polygons.positions[k]), 0.0f, 1e-5f) << k;
+    // A polygon: one flat triangle fan over its four corners, not a tube.
+    const Geometry polygon = geometryOf("derivation length: 0\naxiom: {.-f.+f.+f.}\n");
+    EXPECT_LE(polygon.polygons.positions.size(), 8u);
+    EXPECT_GE(polygon.polygons.positions.size(), 3u);
+}
+
 // The turtle additions draw what they say.
 TEST(Cpfg, DiscIsAPolygonAcrossTheHeading) {
     ParseResult r = parse("Axiom: F(2) @c(0.8)\nderivation length: 0\n", parseOptionsFor(FileKind::Cpfg, ""));

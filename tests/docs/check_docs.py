@@ -21,7 +21,7 @@ import subprocess
 import sys
 import tempfile
 
-EXTENSIONS = {"lsys": ".lsys", "cpfg": ".l", "lpy": ".lpy", "lparser": ".ls", "ifs": ".ifs", "forest": ".forest",
+EXTENSIONS = {"lsys": ".lsys", "cpfg": ".l", "lpy": ".lpy", "lparser": ".ls", "explorer": ".ls", "ifs": ".ifs", "forest": ".forest",
               "fractint": ".l"}
 TIMEOUT = 120
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/base/bounded.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
@@ -570,6 +571,28 @@ void Parser::warnMixed(const SourceLine& line, std::string_view t) {
 void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     std::string_view t = trim(l.src.text);
     l.section = section;
+    if (ended && !t.empty()) {
+        // After `endlsystem`, `lsystem: 2` starts a sub-L-system: its productions rewrite what
+        // stands between `$(2)` and `$`. Anything else there is not read.
+        std::string_view value;
+        if (keyOf(t, value) != "lsystem") return;
+        const auto label = constant(l.src, value);
+        if (!label) return;
+        if (std::find(m_g.subLsystems.begin(), m_g.subLsystems.end(), *label) != m_g.subLsystems.end()) {
+            m_sink.error(l.src, value, "a second sub-L-system with the label " + formatNumber(*label));
+            return;
+        }
+        if (m_g.subLsystems.size() >= 250) {
+            m_sink.error(l.src, value, "more than 250 sub-L-systems");
+            return;
+        }
+        m_g.subLsystems.push_back(*label);
+        m_lsystem = std::uint8_t(m_g.subLsystems.size());
+        ended = false;
+        section = Section::Productions;
+        return;
+    }
+    l.lsystem = m_lsystem;
     if (ended || t.empty()) return;
     if (t.starts_with("#ignore")) return classify(l, section);
     if (t.starts_with("#")) return;
