@@ -16,15 +16,32 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     for (size_t s = 0; s < g.alphabet.size(); ++s) {
         m_arity[s] = g.alphabet[SymbolId(s)].arity;
         m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
-        if (st.bracePaths && m_actions[s] == Act::PolyBegin && m_arity[s] > 0) m_actions[s] = Act::CurveStart;
+        if (st.bracePaths && m_arity[s] > 0) {
+            // A surface is kept by a quoted name (`}('leaf')`, `@Ge(8, 'leaf')`); a number there
+            // (`}(0)`, the end of a path) keeps nothing, as in that tool (0 is no name in JavaScript).
+            const std::uint32_t named = g.alphabet[SymbolId(s)].nameArgs;
+            if (m_actions[s] == Act::PolyBegin) m_actions[s] = Act::CurveStart;
+            else if (m_actions[s] == Act::PolyEnd && (named & 1)) m_actions[s] = Act::PolyEndSave;
+            else if (m_actions[s] == Act::CurveEnd && (named & 2)) m_actions[s] = Act::CurveEndKeep;
+            else if (g.alphabet[SymbolId(s)].name == "~") m_actions[s] = Act::InsertSaved;
+        }
+        if (st.bracePaths) {
+            const std::string& name = g.alphabet[SymbolId(s)].name;
+            if (name == "@Cs" || name == "@Ds") m_actions[s] = Act::ContourStart;
+            else if (name == "@Ce" || name == "@De") m_actions[s] = Act::ContourEnd;
+            else if (name == "@#") m_actions[s] = Act::ContourUse;
+        }
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
-        m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section;
+        m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section || m_actions[s] == Act::ContourUse;
         if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {
             m_actions[s] = Act::SurfaceFile;
             m_surfaceFiles.resize(g.alphabet.size(), nullptr);
             m_surfaceFiles[s] = f->second.get();
         }
     }
+    const auto& strings = g.alphabet.strings();
+    for (size_t k = 0; k < strings.size(); ++k)
+        if (strings[k].empty()) m_emptyName = double(k);  // `}('')`: no name, a polygon drawn
     m_gradient = st.gradient == Toggle::On || (st.gradient == Toggle::Auto && !m_colourModules);
     m_autoWidth = st.width <= 0;
     m_angle = toFloat(st.angle.mean) * kPi / 180.0f;

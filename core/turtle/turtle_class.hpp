@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <unordered_map>
 #include <vector>
 #include <glm/geometric.hpp>
 
@@ -158,7 +159,7 @@ private:
     // Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
     // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
     // tangents' length in chords. Every F in between is a control point too.
-    [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p);
+    [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p, int arity = 1);
     void curvePoint(const State& t, int subdivisions);
     void placeSurfaceFile(const State& t, SymbolId id, const double* p);
 
@@ -188,7 +189,7 @@ private:
 
     void vertex(const State& t);
 
-    void emitPolygon(const State& t, std::vector<glm::vec3>& pts);
+    void emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into = nullptr);
 
     void surface(const State& t, Act act, const double* p, float grow);
 
@@ -204,6 +205,23 @@ private:
     std::vector<std::uint8_t> m_arity;
     PodBuffer<State> m_stack;
     std::vector<std::vector<glm::vec3>> m_polygons;
+    // Where each open polygon started (the frame a kept surface is stored in), and the
+    // surfaces kept by name (L-system Explorer's `}(name)`), in that frame: x along L, y along
+    // H, z along U.
+    struct Frame { glm::vec3 origin, h, l, u; };
+    std::vector<Frame> m_polygonFrames;
+    std::unordered_map<double, Mesh> m_saved;
+    double m_emptyName = -1;
+    void keepPolygon(const State& t, std::vector<glm::vec3>& pts, const Frame& at, double name);
+    void insertKept(const State& t, const double* p, int arity);
+    // L-system Explorer's contours: the one being captured (its points' x and y), and those
+    // named, as cross-sections after Settings::sections (State::section counts on from there).
+    bool m_capturing = false;
+    std::vector<glm::vec2> m_contour;
+    std::vector<std::vector<glm::vec2>> m_contours;
+    std::unordered_map<double, std::int16_t> m_contourIds;
+    void contourCommand(State& t, Act act, const double* p);
+    void keepTube(std::size_t curve, double name);
     std::vector<std::uint32_t> m_palette;
     std::uint32_t m_byOrder[kOrderColours];
     State m_state;
@@ -218,6 +236,7 @@ private:
     struct OpenCurve {
         GeneralizedCylinder curve;
         int subdivisions = 4;  // pieces of each span, until an @Gc(n) says otherwise
+        Frame start{};         // the turtle's frame at @Gs (a kept tube is stored in it)
     };
     std::vector<OpenCurve> m_curves;
     bool m_absoluteWidths = false;

@@ -9,15 +9,19 @@ namespace turtle_impl {
 // Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
 // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
 // tangents' length in chords. Every F in between is a control point too.
-void Turtle::curveCommand(State& t, Act act, const double* p) {
+void Turtle::curveCommand(State& t, Act act, const double* p, int arity) {
     if (act == Act::CurveStart) {
         if (m_curves.size() >= 32767) return;  // the state keeps the index in 16 bits
         m_curves.emplace_back();
         m_curves.back().curve.left = toGlm(t.L);
-        if (t.section >= 0) {
+        const size_t fixed = m_g.settings.sections.size();
+        if (t.section >= 0 && size_t(t.section) < fixed) {
             const std::vector<float>& xy = m_g.settings.sections[size_t(t.section)];
             for (size_t k = 0; k + 1 < xy.size(); k += 2) m_curves.back().curve.section.emplace_back(xy[k], xy[k + 1]);
+        } else if (t.section >= 0 && size_t(t.section) - fixed < m_contours.size()) {
+            m_curves.back().curve.section = m_contours[size_t(t.section) - fixed];
         }
+        m_curves.back().start = {toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))};
         t.curve = std::int16_t(m_curves.size() - 1);
         t.lastSegment = -1;
         curvePoint(t, 1);
@@ -32,7 +36,59 @@ void Turtle::curveCommand(State& t, Act act, const double* p) {
     }
     if (act == Act::CurvePoint) c.subdivisions = n;
     curvePoint(t, n);
-    if (act == Act::CurveEnd) t.curve = -1;
+    if (act == Act::CurveEnd || act == Act::CurveEndKeep) {
+        // L-system Explorer's @Ge(n, 'name'): the tube is kept by that name, not drawn.
+        if (act == Act::CurveEndKeep && p && arity >= 2 && p[1] != m_emptyName) keepTube(size_t(t.curve), p[1]);
+        t.curve = -1;
+    }
+}
+
+void Turtle::keepTube(std::size_t curve, double name) {
+    if (m_saved.size() >= 4096 && !m_saved.count(name)) return;
+    OpenCurve& c = m_curves[curve];
+    Mesh world;
+    appendTube(c.curve, 1.0f, world);
+    c.curve.points.clear();  // drawn where it is put, not here
+    Mesh& kept = m_saved[name];
+    kept.clear();
+    const Frame& at = c.start;
+    auto local = [&](const glm::vec3& v) { return glm::vec3(glm::dot(v, at.l), glm::dot(v, at.h), glm::dot(v, at.u)); };
+    for (size_t k = 0; k < world.positions.size(); ++k) {
+        kept.positions.push_back(local(world.positions[k] - at.origin));
+        kept.normals.push_back(local(world.normals[k]));
+    }
+    kept.colours = std::move(world.colours);
+    kept.indices = std::move(world.indices);
+}
+
+// A contour's points are where the turtle stood at each '.', in the x y plane (the tool's
+// convention: contours are drawn there, usually after @H or @R), in units of the tube's radius.
+void Turtle::contourCommand(State& t, Act act, const double* p) {
+    if (act == Act::ContourStart) {
+        m_capturing = true;
+        m_contour.clear();
+        return;
+    }
+    if (act == Act::ContourEnd) {
+        if (!m_capturing) return;
+        m_capturing = false;
+        const double id = p ? p[0] : 0;
+        if (m_contour.size() < 2 || !std::isfinite(id)) return;
+        const size_t fixed = m_g.settings.sections.size();
+        auto it = m_contourIds.find(id);
+        if (it == m_contourIds.end()) {
+            if (fixed + m_contours.size() >= 32767) return;
+            it = m_contourIds.emplace(id, std::int16_t(fixed + m_contours.size())).first;
+            m_contours.emplace_back();
+        }
+        std::vector<glm::vec2>& section = m_contours[size_t(it->second) - fixed];
+        section.clear();
+        for (const glm::vec2& q : m_contour) section.push_back(2.0f * q);  // the tool's size is a diameter
+        return;
+    }
+    // @#(id): that contour for the paths to come; an id never defined (the tool's 'default'): round.
+    auto it = p ? m_contourIds.find(p[0]) : m_contourIds.end();
+    t.section = it == m_contourIds.end() ? std::int16_t(-1) : it->second;
 }
 
 void Turtle::curvePoint(const State& t, int subdivisions) {
@@ -115,10 +171,10 @@ void Turtle::vertex(const State& t) {
     if (poly.empty() || !samePoint(poly.back(), p)) poly.push_back(p);
 }
 
-void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts) {
+void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into) {
     if (pts.size() > 1 && samePoint(pts.front(), pts.back())) pts.pop_back();
     if (pts.size() < 3) return;
-    Mesh& m = m_out.polygons;
+    Mesh& m = into ? *into : m_out.polygons;
     // Newell's normal: robust for concave and slightly non-planar outlines.
     glm::vec3 n(0), far(0);
     float perimeter = 0;
@@ -142,9 +198,48 @@ void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts) {
         m.positions.push_back(p);
         m.normals.push_back(n);
         m.colours.push_back(col);
-        addBound(fromGlm(p));
+        if (!into) addBound(fromGlm(p));
     }
     triangulatePolygon(pts, base, m.indices);
+}
+
+// L-system Explorer's `{ ... }(name)`: the polygon is kept, not drawn, in the frame the
+// turtle had at its '{'; `~(name, scale)` draws it in the turtle's frame, scaled.
+void Turtle::keepPolygon(const State& t, std::vector<glm::vec3>& pts, const Frame& at, double name) {
+    if (m_saved.size() >= 4096 && !m_saved.count(name)) return;
+    Mesh world;
+    emitPolygon(t, pts, &world);
+    Mesh& kept = m_saved[name];
+    kept.clear();
+    auto local = [&](const glm::vec3& v) { return glm::vec3(glm::dot(v, at.l), glm::dot(v, at.h), glm::dot(v, at.u)); };
+    for (size_t k = 0; k < world.positions.size(); ++k) {
+        kept.positions.push_back(local(world.positions[k] - at.origin));
+        kept.normals.push_back(local(world.normals[k]));
+    }
+    kept.colours = std::move(world.colours);
+    kept.indices = std::move(world.indices);
+}
+
+void Turtle::insertKept(const State& t, const double* p, int arity) {
+    if (!p) return;
+    auto it = m_saved.find(*p);
+    if (it == m_saved.end()) return;  // none of that name kept (yet): nothing to draw
+    const Mesh& kept = it->second;
+    const float scale = arity >= 2 && std::isfinite(p[1]) ? float(std::clamp(p[1], -1e6, 1e6)) : 1.0f;
+    const glm::vec3 o = toGlm(t.pos), h = toGlm(t.H), l = toGlm(t.L), u = toGlm(up(t));
+    Mesh& m = m_out.polygons;
+    if (m.positions.size() + kept.positions.size() > (std::size_t(1) << 31)) return;
+    const std::uint32_t base = std::uint32_t(m.positions.size());
+    const std::uint32_t col = t.colour >= 0 ? colour(t.colour) : 0;
+    for (size_t k = 0; k < kept.positions.size(); ++k) {
+        const glm::vec3& a = kept.positions[k];
+        const glm::vec3& n = kept.normals[k];
+        m.positions.push_back(o + scale * (a.x * l + a.y * h + a.z * u));
+        m.normals.push_back(n.x * l + n.y * h + n.z * u);
+        m.colours.push_back(t.colour >= 0 ? col : kept.colours[k]);
+        addBound(fromGlm(m.positions.back()));
+    }
+    for (std::uint32_t i : kept.indices) m.indices.push_back(base + i);
 }
 
 void Turtle::surface(const State& t, Act act, const double* p, float grow) {

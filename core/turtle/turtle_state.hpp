@@ -23,6 +23,12 @@ enum class Act : std::uint8_t {
     Query, MoveTo, SetHeading, Disc, CurveStart, CurvePoint, CurveEnd, CurveTangent,
     LineTo, OLineTo, LineRel, OLineRel, MoveRel, Pinpoint, PinpointRel, Section, Label,
     SurfaceFile,  // a cpfg .s surface (per symbol, from the grammar; not in the name table)
+    // L-system Explorer (Settings::bracePaths): `}(name)` keeps the polygon as a surface
+    // instead of drawing it, `~(name[, scale])` draws it at the turtle.
+    PolyEndSave, InsertSaved, CurveEndKeep,
+    // Its contours: @Cs (@Ds) starts one, each '.' adds the turtle's point, @Ce(id) (@De) ends
+    // and names it, @#(id) makes it the cross-section of the paths started after it.
+    ContourStart, ContourEnd, ContourUse,
 };
 
 inline Act actionOf(const std::string& name) {

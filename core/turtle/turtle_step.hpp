@@ -124,17 +124,38 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::PolyBegin:
             m_polygons.emplace_back();
             m_polygons.back().push_back(toGlm(t.pos));
+            m_polygonFrames.push_back({toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))});
             break;
         case Act::PolyVertex:
             if (!m_polygons.empty()) vertex(t);
+            else if (m_capturing && m_contour.size() < 4096) m_contour.emplace_back(t.pos[0], t.pos[1]);
             break;
+        case Act::ContourStart:
+        case Act::ContourEnd:
+        case Act::ContourUse: contourCommand(t, act, p); break;
         case Act::PolyEnd:
             if (!m_polygons.empty()) {
                 emitPolygon(t, m_polygons.back());
                 m_polygons.pop_back();
+                m_polygonFrames.pop_back();
             } else if (t.curve >= 0 && m_g.settings.bracePaths) {  // the end of an L-system Explorer path
                 curveCommand(t, Act::CurveEnd, nullptr);
             }
+            break;
+        case Act::PolyEndSave:
+            if (!m_polygons.empty()) {
+                if (p && *p != m_emptyName) keepPolygon(t, m_polygons.back(), m_polygonFrames.back(), *p);
+                else emitPolygon(t, m_polygons.back());
+                m_polygons.pop_back();
+                m_polygonFrames.pop_back();
+            } else if (t.curve >= 0) {  // a path's end, kept by that name
+                const std::int16_t c = t.curve;
+                curveCommand(t, Act::CurveEnd, nullptr);
+                if (p && *p != m_emptyName) keepTube(size_t(c), *p);
+            }
+            break;
+        case Act::InsertSaved:
+            insertKept(t, p, arity);
             break;
         case Act::WidthDec:
         case Act::WidthInc:
@@ -187,7 +208,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::CurveStart:
         case Act::CurvePoint:
         case Act::CurveEnd:
-        case Act::CurveTangent: curveCommand(t, act, p); break;
+        case Act::CurveTangent:
+        case Act::CurveEndKeep: curveCommand(t, act, p, arity); break;
         case Act::Label:
             if (p && *p >= 0 && *p < double(m_g.settings.labels.size()) && m_out.labels.size() < 100000)
                 m_out.labels.push_back({toGlm(t.pos), m_g.settings.labels[size_t(*p)],

@@ -138,6 +138,58 @@ TEST(Explorer, BracePathIsTheTubeOfAGeneralizedCylinder) {
     EXPECT_GE(polygon.polygons.positions.size(), 3u);
 }
 
+// L-system Explorer's kept surfaces: `{ ... }('leaf')` is kept, not drawn; `~('leaf', s)` draws
+// it in the turtle's frame, scaled by s. A number there (`}(0)`) keeps nothing.
+TEST(Explorer, KeptPolygonIsDrawnWhereItIsPut) {
+    auto geometryOf = [](const std::string& axiom) {
+        ParseResult r = parse("derivation length: 0\naxiom: " + axiom + "\n", parseOptionsFor(FileKind::Cpfg, "kept.ls"));
+        EXPECT_TRUE(r.ok());
+        Geometry g;
+        if (r.ok()) interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+        return g;
+    };
+    const std::string square = "{.-f.+f.+f.}";  // (0,0) (1,0) (1,1) (0,1) with the turtle's heading up
+    const Geometry drawn = geometryOf(square);
+    ASSERT_EQ(drawn.polygons.positions.size(), 4u);
+    EXPECT_EQ(geometryOf(square + "('leaf')").polygons.positions.size(), 0u);
+    EXPECT_EQ(geometryOf(square + "(0)").polygons.positions.size(), 4u);
+    // The square ends at (0,1) heading -x; f(5) goes to (-5,1) and '+' turns the heading to -y.
+    // In the frame at the '{' (heading +y, left -x) the square is (0,0) (-1,0) (-1,1) (0,1),
+    // put in the new frame (heading -y, left +x) twice as large.
+    const Geometry put = geometryOf(square + "('leaf')f(5)+~('leaf',2)");
+    ASSERT_EQ(put.polygons.positions.size(), 4u);
+    const glm::vec3 expected[] = {{-5, 1, 0}, {-7, 1, 0}, {-7, -1, 0}, {-5, -1, 0}};
+    for (const glm::vec3& e : expected) {
+        float nearest = 1e9f;
+        for (const glm::vec3& q : put.polygons.positions) nearest = std::min(nearest, glm::length(q - e));
+        EXPECT_LT(nearest, 1e-4f) << e.x << " " << e.y;
+    }
+    EXPECT_EQ(put.polygons.indices.size(), drawn.polygons.indices.size());
+}
+
+// L-system Explorer's contours: the points '.' marks between @Cs and @Ce('c') (x and y) are the
+// cross-section of the paths started after @#('c'); an unknown name is round.
+TEST(Explorer, ContourIsTheCrossSectionOfThePathsAfterIt) {
+    auto tubeOf = [](const std::string& axiom) {
+        ParseResult r = parse("derivation length: 0\nwidth: 0.5\naxiom: " + axiom + "\n", parseOptionsFor(FileKind::Cpfg, "c.ls"));
+        EXPECT_TRUE(r.ok());
+        Geometry g;
+        if (r.ok()) interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+        return g.polygons;
+    };
+    const std::string contour = "[@Cs@m(-1,-0.2,0).@m(1,-0.2,0).@m(1,0.2,0).@m(-1,0.2,0).@m(-1,-0.2,0).@Ce('c')]";
+    const Mesh round = tubeOf(contour + "@#('none'){(0)F(1)F(1)}");
+    const Mesh flat = tubeOf(contour + "@#('c'){(0)F(1)F(1)}");
+    ASSERT_FALSE(round.positions.empty());
+    ASSERT_FALSE(flat.positions.empty());
+    EXPECT_NE(flat.positions.size(), round.positions.size());
+    // The flat section is 4 wide and 0.8 deep in radius units (radius 0.25): 1 by 0.2 around the axis.
+    float maxX = 0, maxZ = 0;
+    for (const glm::vec3& q : flat.positions) maxX = std::max(maxX, std::fabs(q.x)), maxZ = std::max(maxZ, std::fabs(q.z));
+    EXPECT_NEAR(std::max(maxX, maxZ), 0.5f, 1e-3f);
+    EXPECT_NEAR(std::min(maxX, maxZ), 0.1f, 1e-3f);
+}
+
 // The turtle additions draw what they say.
 TEST(Cpfg, DiscIsAPolygonAcrossTheHeading) {
     ParseResult r = parse("Axiom: F(2) @c(0.8)\nderivation length: 0\n", parseOptionsFor(FileKind::Cpfg, ""));
