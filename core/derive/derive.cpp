@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
 
 #include <glm/geometric.hpp>
 
@@ -25,6 +29,21 @@ std::string humanBytes(std::uint64_t b) {
 }
 
 }  // namespace
+
+std::uint64_t defaultMemoryBudget() {
+    static const std::uint64_t budget = [] {
+        std::ifstream in("/proc/meminfo");
+        std::string line;
+        while (std::getline(in, line)) {
+            std::istringstream words(line);
+            std::string key;
+            std::uint64_t kb = 0;
+            if (words >> key >> kb && key == "MemAvailable:" && kb > 0) return std::max<std::uint64_t>(kb * 1024 / 2, 64ull << 20);
+        }
+        return std::uint64_t(8ull << 30);
+    }();
+    return budget;
+}
 
 std::string withThousands(std::uint64_t v) {
     std::string digits = std::to_string(v), out;
@@ -154,8 +173,8 @@ DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64
         o.status = DeriveStatus::TooBig;
         o.message = "step " + std::to_string(step) + " would need " + humanBytes(bytes) + " for " +
                     withThousands(modules) + " modules on top of " + humanBytes(kept) +
-                    " already kept, over the memory limit of " + humanBytes(lim.maxBytes) +
-                    "; lower n or raise the limit (--max-memory)";
+                    " already kept, over the memory budget of " + humanBytes(lim.maxBytes) +
+                    "; lower n or raise the budget (--max-memory)";
     }
     return o;
 }
@@ -192,7 +211,93 @@ DeriveOutcome Derivation::deriveTo(int n) {
     return {};
 }
 
+DeriveOutcome Derivation::predictGrowth(int n) const {
+    // What each symbol becomes after j steps, at least (modules, and bytes: 4 a symbol, 8 a
+    // parameter): a symbol whose first rule always applies (no context, condition, block or
+    // probability) becomes that rule's successor; any other may also stay as it is, or become
+    // any of its rules' successors. Exact when every rule applies always. A cut ('%') or a
+    // decomposition can make a string shorter: then nothing is predicted.
+    const Grammar& g = *m_grammar;
+    if (m_decomposer || g.usesCut() || n <= m_reached || !m_steps[size_t(m_reached)]) return {};
+    const ModuleString& in = *m_steps[size_t(m_reached)];
+    const size_t A = g.alphabet.size();
+    const RuleSet& rules = g.rules;
+    std::vector<std::uint64_t> count(A, 0);
+    for (size_t i = 0; i < in.size(); ++i) ++count[in.symbols.data()[i]];
+    std::vector<char> stays(A, 1);
+    std::vector<std::vector<const Production*>> options(A);
+    bool exact = true;
+    for (size_t s = 0; s < A && s < rules.bySymbol.size(); ++s) {
+        const auto& list = rules.bySymbol[s];
+        if (list.empty()) continue;
+        // The rules tried before the first that always applies, and that one: one of them
+        // rewrites the symbol, which never stays as it is.
+        for (auto idx : list) {
+            const Production& p = rules.productions[idx];
+            options[s].push_back(&p);
+            if (!p.hasContext() && !p.condition && !p.stochastic() && !p.hasBlocks() && g.subLsystems.empty()) {
+                stays[s] = 0;
+                break;
+            }
+        }
+        if (stays[s] || options[s].size() > 1) exact = false;
+    }
+    constexpr double kHuge = 1e30;
+    std::vector<double> mods(A, 1.0), bytes(A), nextMods(A), nextBytes(A);
+    for (size_t s = 0; s < A; ++s) bytes[s] = double(sizeof(SymbolId) + sizeof(double) * g.alphabet[SymbolId(s)].arity);
+    std::uint64_t kept = 0;
+    for (const auto& s : m_steps)
+        if (s) kept += s->bytes();
+    double keptAfter = double(kept);  // with the steps predicted before k
+    const auto& lim = m_options.limits;
+    const double perModuleExtra = (m_options.trackAges ? 2.0 : 0.0) + (m_options.trackOrigins ? 8.0 : 0.0);
+    for (int k = m_reached + 1; k <= n; ++k) {
+        double totalMods = 0, totalBytes = 0;
+        for (size_t s = 0; s < A; ++s) {
+            double m = stays[s] ? mods[s] : kHuge, b = stays[s] ? bytes[s] : kHuge;
+            for (const Production* p : options[s]) {
+                double pm = 0, pb = 0;
+                for (SymbolId t : p->successor.symbols) pm += mods[t], pb += bytes[t];
+                m = std::min(m, pm);
+                b = std::min(b, pb);
+            }
+            nextMods[s] = std::min(m, kHuge);
+            nextBytes[s] = std::min(b, kHuge);
+            if (count[s]) totalMods += double(count[s]) * nextMods[s], totalBytes += double(count[s]) * nextBytes[s];
+        }
+        mods.swap(nextMods);
+        bytes.swap(nextBytes);
+        totalBytes += totalMods * perModuleExtra;
+        const bool overModules = totalMods > double(lim.maxModules);
+        const bool overBytes = totalBytes + keptAfter > double(lim.maxBytes);
+        if (overModules || overBytes) {
+            auto clamp = [](double v) { return v >= 1.8e19 ? std::numeric_limits<std::uint64_t>::max() : std::uint64_t(v); };
+            DeriveOutcome o;
+            o.status = DeriveStatus::TooBig;
+            o.step = k;
+            o.predictedModules = clamp(totalMods);
+            o.predictedBytes = clamp(totalBytes);
+            const std::string atLeast = exact ? "" : "at least ";
+            const std::string modules = totalMods >= 1e19 ? std::string("more than 10^19") : withThousands(o.predictedModules);
+            const std::string size = totalBytes >= 1e19 ? std::string("more than 10^19 bytes") : humanBytes(o.predictedBytes);
+            const std::string lower = exact ? "lower n (to " + std::to_string(k - 1) + " at most)" : "lower n below " + std::to_string(k);
+            if (overModules)
+                o.message = "step " + std::to_string(k) + " would produce " + atLeast + modules + " modules (" + size +
+                            "), over the limit of " + withThousands(lim.maxModules) + " modules; " + lower +
+                            " or raise the limit (--max-modules)";
+            else
+                o.message = "step " + std::to_string(k) + " would need " + atLeast + size + " for " + modules +
+                            " modules on top of " + humanBytes(clamp(keptAfter)) + " already kept, over the memory budget of " +
+                            humanBytes(lim.maxBytes) + "; " + lower + " or raise the budget (--max-memory)";
+            return o;
+        }
+        keptAfter += totalBytes;
+    }
+    return {};
+}
+
 DeriveOutcome Derivation::deriveGeneral(int n) {
+    if (DeriveOutcome predicted = predictGrowth(n); !predicted.ok()) return predicted;
     for (int k = m_reached + 1; k <= n; ++k) {
         const ModuleString& in = *m_steps[size_t(k - 1)];
         std::uint64_t modules, params;

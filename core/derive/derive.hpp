@@ -23,11 +23,15 @@
 
 namespace sprout {
 
+// The memory a derivation may take by default: half of what the machine has available now
+// (MemAvailable), read once; 8 GB where that cannot be read.
+std::uint64_t defaultMemoryBudget();
+
 struct DeriveLimits {
-    // Sized for a 24 GiB machine: 500 M modules is 1 GB of symbols, leaving room for the
-    // steps kept before it, the turtle's geometry and the renderer.
+    // 500 M modules is 2 GB of symbols, leaving room for the steps kept before it, the
+    // turtle's geometry and the renderer.
     std::uint64_t maxModules = 500'000'000;
-    std::uint64_t maxBytes = 8ull << 30;  // all kept steps plus the next one
+    std::uint64_t maxBytes = defaultMemoryBudget();  // all kept steps plus the next one
 };
 
 struct DeriveOptions {
@@ -102,6 +106,10 @@ public:
 
 private:
     DeriveOutcome checkSize(int step, std::uint64_t modules, std::uint64_t params) const;
+    // Before any step is derived: the sizes the steps up to n will at least have, whatever rule
+    // applies; the first one over a limit is refused at once (TooBig), so explosive growth is
+    // refused before it takes the memory.
+    DeriveOutcome predictGrowth(int n) const;
     DeriveOutcome deriveGeneral(int n);
     // cpfg: the decomposition rules until none applies, then the query modules' frames.
     DeriveOutcome finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins = nullptr);

@@ -45,10 +45,50 @@ TEST(Limits, ParametersCountTowardsMemory) {
     auto g = grammarOf("axiom: A(1)\nA(x) -> A(x)A(x)\n");
     DeriveOptions opts;
     opts.limits.maxBytes = 1 << 20;  // 1 MB: ~100 k modules of 10 bytes
-    DeriveResult r = derive(g, 20, opts);
-    EXPECT_EQ(r.outcome.status, DeriveStatus::TooBig);
-    EXPECT_NE(r.outcome.message.find("over the memory limit"), std::string::npos);
-    EXPECT_LE(r.outcome.step, 17);
+    Derivation d(g, opts);
+    DeriveOutcome o = d.deriveTo(20);
+    EXPECT_EQ(o.status, DeriveStatus::TooBig);
+    // Step 16: 65,536 modules of 10 bytes (640 KB) on top of the 15 steps before (640 KB).
+    EXPECT_EQ(o.step, 16);
+    EXPECT_EQ(o.message, "step 16 would need 0.6 MB for 65,536 modules on top of 0.6 MB already kept, over the memory "
+                         "budget of 1.0 MB; lower n (to 15 at most) or raise the budget (--max-memory)");
+    EXPECT_EQ(d.stepsDerived(), 0);  // refused before the first step: nothing was derived
+    EXPECT_TRUE(d.deriveTo(15).ok());  // the step before still fits
+}
+
+// Issue 39: growth that every rule makes for certain is refused before the first step, at the
+// step that crosses the limit, and growth that may stop is not refused for what it might do.
+TEST(Limits, CertainParametricGrowthIsRefusedBeforeTheFirstStep) {
+    auto g = grammarOf("n: 60\naxiom: A(1)\nA(x) -> A(x+1)A(x*2)A(x)\n");
+    Derivation d(g);
+    DeriveOutcome o = d.deriveTo(60);
+    EXPECT_EQ(o.status, DeriveStatus::TooBig);
+    EXPECT_EQ(o.step, 19);  // 3^19 = 1,162,261,467 modules: over the 500 M limit
+    EXPECT_EQ(o.predictedModules, 1'162'261'467u);
+    EXPECT_EQ(d.stepsDerived(), 0);
+    EXPECT_NE(o.message.find("lower n (to 18 at most)"), std::string::npos) << o.message;
+    // A symbol whose rule has a condition may stay as it is: no refusal for growth that stops.
+    auto stops = grammarOf("axiom: A(1)\nA(x) : x < 6 -> A(x+1)A(x+1)A(x+1)\n");
+    DeriveOptions small;
+    small.limits.maxModules = 1000;
+    EXPECT_TRUE(derive(stops, 60, small).outcome.ok());  // 3^5 = 243 modules, then no more growth
+    // A conditional rule before one that always applies: A at least doubles each step. The
+    // bound crosses 100 at step 7 (128), said as a bound; the string itself grows faster.
+    auto mixed = grammarOf("axiom: A(1)\nA(x) : x > 3 -> A(x)A(x)A(x)\nA(x) -> A(x+1)A(x+1)\n");
+    DeriveOptions tiny;
+    tiny.limits.maxModules = 100;
+    Derivation dm(mixed, tiny);
+    DeriveOutcome m = dm.deriveTo(30);
+    EXPECT_EQ(m.status, DeriveStatus::TooBig);
+    EXPECT_EQ(m.step, 7);
+    EXPECT_EQ(m.message, "step 7 would produce at least 128 modules (0.0 MB), over the limit of 100 modules; lower n below 7 "
+                         "or raise the limit (--max-modules)");
+    EXPECT_EQ(dm.stepsDerived(), 0);
+    // Asked for fewer steps than the bound refuses, the derivation runs and refuses where the
+    // string itself crosses: step 6 (8 x 27 = 216 modules, at most).
+    DeriveOutcome six = Derivation(mixed, tiny).deriveTo(6);
+    EXPECT_EQ(six.status, DeriveStatus::TooBig);
+    EXPECT_EQ(six.step, 6);
 }
 
 TEST(Limits, CancellationStopsAStep) {
@@ -72,7 +112,7 @@ TEST(Limits, CancellationFromAnotherThread) {
         if (++calls == 3) cancel = true;
     };
     Derivation d(g, opts);
-    DeriveOutcome o = d.deriveTo(14);
+    DeriveOutcome o = d.deriveTo(12);  // about 50 M modules: (14 would be refused at once, over the limit)
     EXPECT_EQ(o.status, DeriveStatus::Cancelled);
     EXPECT_GE(calls.load(), 3);
 }
