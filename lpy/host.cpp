@@ -232,6 +232,29 @@ void start() {
             sys.attr("modules")["openalea.plantgl"].attr("all") = sys.attr("modules")["openalea.plantgl.all"];
         }
 #ifndef SPROUT_LPY_IN_EXTENSION
+        // A model's Python cannot end Sprout: in Sprout's own process (not a user's Python, where
+        // `import sprout` runs), the calls that would end it raise instead, an error at the
+        // model's line (sys.exit's SystemExit is turned into the same error where it is caught).
+        py::exec(R"PY(
+import os, posix, signal
+class ModelExit(BaseException):
+    """A model tried to end Sprout's process."""
+def _refuse(name, real, own=None):
+    def guarded(*args, **kwargs):
+        if own is None or own(*args):
+            raise ModelExit("a model cannot end Sprout (%s)" % name)
+        return real(*args, **kwargs)
+    guarded.__name__ = getattr(real, "__name__", name)
+    return guarded
+def _own_pid(pid, *rest):
+    return pid in (0, -1, os.getpid(), -os.getpgrp())
+os._exit = posix._exit = _refuse("os._exit", os._exit)
+os.abort = posix.abort = _refuse("os.abort", os.abort)
+os.kill = posix.kill = _refuse("os.kill", os.kill, _own_pid)
+os.killpg = posix.killpg = _refuse("os.killpg", os.killpg, lambda group, *rest: group in (0, os.getpgrp()))
+signal.raise_signal = _refuse("signal.raise_signal", signal.raise_signal)
+signal.pthread_kill = _refuse("signal.pthread_kill", signal.pthread_kill)
+)PY", py::dict());
         PyEval_SaveThread();  // the GIL is taken by whichever thread runs a model
 #endif
     });
@@ -268,7 +291,10 @@ Diagnostic python2(Diagnostic d, std::string_view text) {
 
 Diagnostic describe(py::error_already_set& e, const std::string& file, std::string_view text) {
     Diagnostic d;
-    d.message = std::string(py::str(e.type().attr("__name__"))) + ": " + std::string(py::str(e.value()));
+    const std::string type = py::str(e.type().attr("__name__"));
+    d.message = type + ": " + std::string(py::str(e.value()));
+    if (type == "ModelExit") d.message = py::str(e.value());  // os._exit and the like (start())
+    else if (e.matches(PyExc_SystemExit)) d.message = "a model cannot end Sprout (sys.exit)";
     if (e.matches(PyExc_SyntaxError)) {
         py::object v = e.value();
         if (py::hasattr(v, "lineno") && !v.attr("lineno").is_none()) d.line = v.attr("lineno").cast<int>();

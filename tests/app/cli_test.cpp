@@ -187,3 +187,38 @@ TEST(Cli, CurveGoingRoundOneSquareTenMillionTimesRendersInTime) {
     EXPECT_FALSE(dark((minX + maxX) / 2, (minY + maxY) / 2)) << "nothing inside";
     EXPECT_TRUE(dark(minX + side / 2, minY) || dark(minX + side / 2, minY + 1)) << "its edge is inked";
 }
+
+namespace {
+// Issue 39: a model's Python cannot end Sprout. Each way out is an error at the model's line,
+// the command fails and writes nothing.
+TEST(Cli, AModelCannotEndSprout) {
+    const std::pair<std::string, std::string> ways[] = {
+        {"os._exit(0)", "os._exit"},
+        {"os.abort()", "os.abort"},
+        {"os.kill(os.getpid(), signal.SIGKILL)", "os.kill"},
+        {"signal.raise_signal(signal.SIGTERM)", "signal.raise_signal"},
+        {"sys.exit(0)", "sys.exit"},
+        {"raise SystemExit", "sys.exit"},
+    };
+    int k = 0;
+    for (const auto& [call, name] : ways) {
+        SCOPED_TRACE(call);
+        const std::string model = writeTemp("ends_" + std::to_string(k++) + ".lpy",
+                                            "import os, signal, sys\n\nAxiom: A\nderivation length: 2\nproduction:\nA:\n    " + call +
+                                                "\n    produce AA\nendlsystem\n");
+        const std::string png = model + ".png";
+        std::remove(png.c_str());
+        Result r = runSprout("render " + model + " --size 64x48 -o " + png);
+        EXPECT_EQ(r.code, 1) << r.err;
+        EXPECT_NE(r.err.find(model + ":7:5: a model cannot end Sprout (" + name + ")"), std::string::npos) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(png));
+    }
+    // Killing another process is the model's business: os.kill of a child is not refused.
+    const std::string child = writeTemp("kills_child.lpy",
+                                        "import os, signal, subprocess\np = subprocess.Popen(['sleep', '30'])\n"
+                                        "os.kill(p.pid, signal.SIGTERM)\np.wait()\n\nAxiom: F\nderivation length: 1\nproduction:\nendlsystem\n");
+    Result ok = runSprout("render " + child + " --size 64x48 -o " + child + ".png");
+    EXPECT_EQ(ok.code, 0) << ok.err;
+    std::remove((child + ".png").c_str());
+}
+}  // namespace

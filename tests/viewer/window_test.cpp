@@ -289,6 +289,21 @@ TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
     EXPECT_TRUE(fs::exists(marker));
 }
 
+// Issue 39: a trusted model that calls os._exit does not end the viewer: the window runs on,
+// says so at the model's line, and the script goes on to its end.
+TEST(Window, AModelCallingOsExitDoesNotEndTheViewer) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("exit_window");
+    const fs::path model = dir / "model.lpy";
+    std::ofstream(model) << "import os\n\nAxiom: A\nderivation length: 2\nproduction:\nA:\n    os._exit(0)\n    produce AA\nendlsystem\n";
+    const auto printed = runScript(dir, model.string() + " --size 900x600", "trust yes\nwait\nwait\ndiagnostics\nquit\n");
+    ASSERT_GE(printed.size(), 2u);
+    EXPECT_EQ(printed[0], "python=allowed");
+    EXPECT_NE(std::find(printed.begin(), printed.end(), "diagnostic=7:5: a model cannot end Sprout (os._exit)"), printed.end())
+        << (printed.size() > 1 ? printed[1] : "");
+}
+
 // L-Py's labels (@L) over the view: the window showing a plant with a label differs from the
 // same plant without one only in a small patch of the view (the text beside its point).
 TEST(Window, LpyLabelsAreShownOverTheView) {
