@@ -228,6 +228,11 @@ private:
         std::vector<int> any;                   // rules starting with '*'
     };
     void pass(const LString& in, LString& out, RuleKind kind, bool forward);
+    // The bytes a module of `s` takes, its Python parameters measured on up to 64 of its
+    // modules; and the check of a growing string against RunOptions' limits.
+    std::size_t moduleBytes(const LString& s) const;
+    void checkGrowth(const LString& in, const LString& out, std::size_t perModule) const;
+    double m_lastGrowth = 1;  // the production pass before: modules made per module read
     bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     // Whether rule r's header matches at `at` (its predecessor's first module, or last when

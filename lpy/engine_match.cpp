@@ -5,6 +5,7 @@
 // whole string (production, decomposition, interpretation). One file: the per-module loop and
 // everything it calls, so that it stays inlined.
 #include <algorithm>
+#include <cstdio>
 
 #include "lpy/engine.hpp"
 
@@ -491,6 +492,34 @@ size_t afterCut(const LString& in, size_t i) {
 }
 }  // namespace
 
+std::size_t Engine::moduleBytes(const LString& s) const {
+    if (s.empty()) return sizeof(LModule);
+    py::object getsizeof = py::module_::import("sys").attr("getsizeof");
+    const size_t stride = std::max<size_t>(1, s.size() / 64);
+    std::size_t total = 0, n = 0;
+    for (size_t i = 0; i < s.size(); i += stride, ++n) {
+        const LModule& m = s[i];
+        if (m.args.empty()) continue;
+        total += getsizeof(m.args).cast<std::size_t>();
+        for (py::handle a : m.args) total += getsizeof(a).cast<std::size_t>();
+    }
+    return sizeof(LModule) + total / std::max<std::size_t>(n, 1);
+}
+
+void Engine::checkGrowth(const LString& in, const LString& out, std::size_t perModule) const {
+    const std::uint64_t bytes = std::uint64_t(in.size() + out.size()) * perModule;
+    if (out.size() <= m_options.maxModules && bytes <= m_options.maxBytes) return;
+    char size[64];
+    std::snprintf(size, sizeof size, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
+    if (out.size() > m_options.maxModules)
+        throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(m_options.maxModules) +
+                              " modules; lower the derivation length or raise the limit (--max-modules)");
+    throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(out.size()) +
+                          " modules of about " + std::to_string(perModule) + " bytes each (their Python parameters measured), "
+                          "over the memory budget of " + size + " with the string before it; lower the derivation length "
+                          "or raise the budget (--max-memory)");
+}
+
 void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
     struct Reading {  // the string `$A(a)` patterns bind modules of, while this pass runs
         Engine& e;
@@ -503,9 +532,39 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
     out.clear();
     out.reserve(in.size());
     matchBrackets(in);
+    // The string made is checked as it grows (every 1024 modules read, and at the end), with
+    // the bytes of a module measured on the string read.
+    const std::size_t perModule = moduleBytes(in);
+    if (kind == RuleKind::Production && m_lastGrowth > 1) {
+        // Predicted from the growth of the step before: refused before it starts.
+        const double predicted = double(in.size()) * m_lastGrowth;
+        if (predicted > double(m_options.maxModules) ||
+            (double(in.size()) + predicted) * double(perModule) > double(m_options.maxBytes)) {
+            char size[64], budget[64];
+            std::snprintf(size, sizeof size, "%.1f MB", (double(in.size()) + predicted) * double(perModule) / double(1 << 20));
+            std::snprintf(budget, sizeof budget, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
+            const bool modules = predicted > double(m_options.maxModules);
+            throw py::value_error("step " + std::to_string(iteration + 1) + " would make about " +
+                                  std::to_string(std::uint64_t(predicted)) + " modules (the step before grew " +
+                                  std::to_string(m_lastGrowth).substr(0, 4) + " times), " + size + " with the string before it (" +
+                                  std::to_string(perModule) + " bytes a module, its Python parameters measured), over the " +
+                                  (modules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + std::string(budget)) +
+                                  "; lower the derivation length or raise the " +
+                                  (modules ? "limit (--max-modules)" : "budget (--max-memory)"));
+        }
+    }
+    struct Growth {  // the next production pass's prediction
+        Engine& e;
+        const LString& in;
+        LString& out;
+        bool production;
+        ~Growth() {
+            if (production && !in.empty()) e.m_lastGrowth = double(out.size()) / double(in.size());
+        }
+    } growth{*this, in, out, kind == RuleKind::Production};
     if (forward) {
         for (size_t i = 0; i < in.size();) {
-            if ((i & 1023) == 0) checkCancel();
+            if ((i & 1023) == 0) checkCancel(), checkGrowth(in, out, perModule);
             if (in[i].cls == ModuleClasses::kCut) {
                 i = afterCut(in, i);
                 continue;
@@ -519,11 +578,11 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
             out.back().rule = -1, out.back().parent = std::uint32_t(i);
             if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, true, out, nullptr, nullptr);
             ++i;
-            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
         }
+        checkGrowth(in, out, perModule);
     } else {
         for (size_t i = in.size(); i-- > 0;) {
-            if ((i & 1023) == 0) checkCancel();
+            if ((i & 1023) == 0) checkCancel(), checkGrowth(in, out, perModule);
             size_t consumed = 1;
             if (tryRules(kind, in, i, false, out, consumed)) {
                 i -= std::min(i, std::max<size_t>(consumed, 1) - 1);
@@ -533,6 +592,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
             out.back().rule = -1, out.back().parent = std::uint32_t(i);
             if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, false, out, nullptr, nullptr);
         }
+        checkGrowth(in, out, perModule);
         std::reverse(out.begin(), out.end());
     }
 }

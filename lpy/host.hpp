@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/language/diagnostic.hpp"
+#include "core/derive/derive.hpp"
 #include "core/derive/provenance.hpp"
 #include "core/language/grammar.hpp"
 
@@ -27,6 +28,9 @@ struct RunOptions {
     const std::atomic<bool>* cancel = nullptr;    // set by another thread: Python stops within ~100 ms
     bool keepSteps = false;                       // keep every step's drawable (growth stepping)
     std::size_t maxModules = 50'000'000;          // a string past this ends the derivation with a message
+    // The memory a step's strings may take (the one read and the one made, their Python
+    // parameters measured): a step that would pass it ends the derivation with a message.
+    std::uint64_t maxBytes = defaultMemoryBudget();
     bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
 };
 

@@ -143,6 +143,8 @@ int runExpand(int argc, char** argv) {
     LoadOptions lo;
     lo.steps = n ? int(*n) : -1;
     lo.python = !args.flag("--no-python");
+    if (maxModules) lo.maxModules = std::uint64_t(*maxModules);
+    if (maxMemory) lo.maxBytes = std::uint64_t(*maxMemory) << 20;
     auto loaded = loadGrammar(args.positionals()[0], lo);
     if (!loaded) return 1;
     if (args.flag("--stats")) printReadAs(*loaded);

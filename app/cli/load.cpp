@@ -66,6 +66,8 @@ std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOp
         ro.path = includePath;
         ro.steps = options.steps;
         ro.keepSteps = options.keepSteps;
+        if (options.maxModules) ro.maxModules = std::size_t(options.maxModules);
+        if (options.maxBytes) ro.maxBytes = options.maxBytes;
         lpy::Model model = lpy::runModel(text, ro);
         for (const auto& d : model.diagnostics) std::cerr << formatDiagnostic(d, out.displayName) << "\n";
         if (!model.ok()) return std::nullopt;

@@ -28,6 +28,7 @@ struct LoadOptions {
     int steps = -1;       // an L-Py model's derivation length (-1: the file's)
     bool python = true;   // false (--no-python): an L-Py model's Python is refused
     bool keepSteps = false;  // an L-Py model: keep every step's drawing (growth videos)
+    std::uint64_t maxModules = 0, maxBytes = 0;  // an L-Py model's limits (--max-modules, --max-memory; 0: its own)
 };
 
 // Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors

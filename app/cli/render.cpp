@@ -258,6 +258,7 @@ int runRender(int argc, char** argv) {
     lo.steps = n ? int(*n) : -1;
     lo.python = !args.flag("--no-python");
     lo.keepSteps = animate == AnimationKind::Growth;
+    if (maxModules) lo.maxModules = std::uint64_t(*maxModules);
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);

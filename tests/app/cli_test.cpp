@@ -222,3 +222,22 @@ TEST(Cli, AModelCannotEndSprout) {
     std::remove((child + ".png").c_str());
 }
 }  // namespace
+
+namespace {
+// Issue 39: an L-Py model whose Python rule doubles a string of modules with list parameters
+// is refused by the memory budget (its parameters measured, a list costing far more than a
+// number), with the step, and nothing is printed as a result.
+TEST(Cli, LpyGrowthIsRefusedByTheMemoryBudget) {
+    const std::string model = writeTemp("lists.lpy",
+                                        "Axiom: A([1.0] * 20)\nderivation length: 40\nproduction:\nA(x) :\n"
+                                        "    y = list(x)\n    produce A(x) A(y)\nendlsystem\n");
+    Result r = runSprout("expand " + model + " --max-memory 64");
+    EXPECT_EQ(r.code, 1) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    // 64 MB with 20-number lists (about 900 bytes a module with their floats) is crossed near
+    // 2^16 modules: the step is named, and the modules' measured size.
+    EXPECT_NE(r.err.find("over the memory budget"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("step 1"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+}
+}  // namespace
