@@ -24,6 +24,7 @@
 // This file is the derivation, with the inner loop and all it calls in one translation unit;
 // what is found before it (the rules compiled, the shapes and their steps) is in
 // native_rules.cpp.
+#include <cstdio>
 #include <sched.h>
 #include <unistd.h>
 
@@ -361,7 +362,23 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         std::uint64_t modules = std::uint64_t(count) * m_nativeMaxOuts;
         std::uint64_t params = cur.params.size() + std::uint64_t(count) * m_nativeMaxParams;
         std::uint64_t read = 0;
-        if (modules > (16u << 20) || params > (16u << 20)) nativeSize(cur, count, modules, params, read);
+        const bool exact = modules > (16u << 20) || params > (16u << 20);
+        if (exact) nativeSize(cur, count, modules, params, read);
+        // The step's size against the limits before it is allocated (exact where it is big;
+        // the bound of a small step is checked once made, below).
+        auto refuse = [&](std::uint64_t m, std::uint64_t p) {
+            const std::uint64_t bytes = (cur.modules.size() + m) * 4 + (cur.params.size() + p) * 8;
+            if (m <= m_options.maxModules && bytes <= m_options.maxBytes) return;
+            char size[64], budget[64];
+            std::snprintf(size, sizeof size, "%.1f MB", double(bytes) / double(1 << 20));
+            std::snprintf(budget, sizeof budget, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
+            const bool overModules = m > m_options.maxModules;
+            throw py::value_error("step " + std::to_string(i + 1) + " would make " + std::to_string(m) + " modules (" + size +
+                                  " with the string before it), over the " +
+                                  (overModules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + std::string(budget)) +
+                                  "; lower the derivation length or raise the " + (overModules ? "limit (--max-modules)" : "budget (--max-memory)"));
+        };
+        if (exact) refuse(modules, params);
         if (params > std::numeric_limits<std::uint32_t>::max()) throw py::value_error("the string holds too many numbers");
         next.modules.clear();  // nothing of it is kept: not copied when it grows
         next.params.clear();
@@ -378,8 +395,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
             return false;
         }
         const size_t made = size_t(c.out - next.modules.data());
-        if (made > m_options.maxModules)
-            throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+        refuse(made, std::uint64_t(c.values - next.params.data()));
         next.modules.resizeUninitialized(made);
         next.params.resizeUninitialized(size_t(c.values - next.params.data()));
         if (origins) next.origins.resizeUninitialized(made);
