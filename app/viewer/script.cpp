@@ -123,8 +123,10 @@ bool Script::step(App& app) {
             return true;
         }
         if (cmd == "diagnostics") {  // the messages of the result shown: "diagnostic=LINE:COL: message"
-            if (auto latest = app.state.latest())
+            if (auto latest = app.state.latest()) {
                 for (const auto& d : latest->diagnostics) std::printf("diagnostic=%d:%d: %s\n", d.line, d.col, d.message.c_str());
+                if (!latest->message.empty()) std::printf("message=%s\n", latest->message.c_str());
+            }
             std::printf("plant=%s\n", app.state.plant() ? "shown" : "none");
             std::fflush(stdout);
             return true;

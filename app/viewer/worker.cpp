@@ -248,6 +248,15 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     if (!outcome.ok()) {
         out->cancelled = outcome.status == DeriveStatus::Cancelled;
         out->message = outcome.message;
+        if (outcome.status == DeriveStatus::TooBig) {
+            // Said at the line that sets the derivation length, where the user lowers it (the
+            // last good plant stays on screen, as for an error in the text).
+            for (const auto& s : out->grammar->settingsRead)
+                if (s.name == "n" || s.name == "iterations") {
+                    out->diagnostics.push_back({s.line, 1, outcome.message, Severity::Error});
+                    out->message.clear();
+                }
+        }
         if (out->cancelled) m_derivation.reset();  // half-made: start again next time
         return out;
     }

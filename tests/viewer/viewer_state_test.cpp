@@ -225,7 +225,11 @@ TEST(ViewerState, SizeCapIsAMessageNotACrash) {
     s.openText("n: 40\naxiom: F\nF -> FFFFFFFFFF\n");
     s.waitForPlant();
     EXPECT_FALSE(s.plant());
-    EXPECT_NE(s.latest()->message.find("would produce"), std::string::npos) << s.latest()->message;
+    // Said at the line that sets n (issue 39), where the user lowers it.
+    ASSERT_EQ(s.latest()->diagnostics.size(), 1u);
+    EXPECT_EQ(s.latest()->diagnostics[0].line, 1);
+    EXPECT_EQ(s.latest()->diagnostics[0].severity, Severity::Error);
+    EXPECT_NE(s.latest()->diagnostics[0].message.find("would produce"), std::string::npos) << s.latest()->diagnostics[0].message;
 }
 
 TEST(ViewerState, SaveOpenAndReloadWhenChangedOnDisk) {

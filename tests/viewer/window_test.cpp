@@ -1,5 +1,6 @@
 // The real window under Xvfb: `sprout PRESET --screenshot` must show the panel and the
 // plant; a scripted edit must change the plant. Skipped where xvfb-run is missing.
+#include <chrono>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -302,6 +303,23 @@ TEST(Window, AModelCallingOsExitDoesNotEndTheViewer) {
     EXPECT_EQ(printed[0], "python=allowed");
     EXPECT_NE(std::find(printed.begin(), printed.end(), "diagnostic=7:5: a model cannot end Sprout (os._exit)"), printed.end())
         << (printed.size() > 1 ? printed[1] : "");
+}
+
+// Issue 39: explosive growth in the viewer is refused at once, said at the line that sets the
+// derivation length, and the last plant stays on screen.
+TEST(Window, ExplosiveGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("growth_window");
+    const fs::path grammar = dir / "boom.lsys";
+    std::ofstream(grammar) << "n: 3\naxiom: A(1)\nA(x) -> F(1)[+A(x+1)]A(x*2)[-A(x)]\n";
+    const auto start = std::chrono::steady_clock::now();
+    const auto printed = runScript(dir, grammar.string() + " --size 900x600", "wait\ndiagnostics\nset n 60\nwait\nwait\ndiagnostics\nquit\n");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(printed.size(), 3u) << (printed.empty() ? "" : printed.back());
+    EXPECT_EQ(printed[0], "plant=shown");
+    EXPECT_EQ(printed[1].rfind("diagnostic=1:1: step 17 would produce 581,130,730 modules", 0), 0u) << printed[1];
+    EXPECT_EQ(printed[2], "plant=shown");  // the plant of n 3 stays
+    EXPECT_LT(seconds, 60.0);  // (not timed: refused at once, this only keeps a hang from passing)
 }
 
 // L-Py's labels (@L) over the view: the window showing a plant with a label differs from the
