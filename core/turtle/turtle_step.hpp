@@ -128,7 +128,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
             break;
         case Act::PolyVertex:
             if (!m_polygons.empty()) vertex(t);
-            else if (m_capturing && m_contour.size() < 4096) m_contour.emplace_back(t.pos[0], t.pos[1]);
+            else if (m_capturing && m_contour.size() < 4096) m_contour.push_back(glm::vec2(float(t.pos[0]), float(t.pos[1])));
             break;
         case Act::ContourStart:
         case Act::ContourEnd:

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -239,5 +240,40 @@ TEST(Cli, LpyGrowthIsRefusedByTheMemoryBudget) {
     EXPECT_NE(r.err.find("over the memory budget"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("step 1"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+}
+}  // namespace
+
+namespace {
+// Issue 39: explosive growth is refused before it takes the memory: each input ends in its
+// message, writes nothing, and the largest of these processes stays small (its peak resident
+// memory, measured by the kernel for this test's children; not a time).
+TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
+    const std::string triples = writeTemp("triples.lsys", "n: 60\naxiom: A(1)\nA(x) -> A(x+1)A(x*2)A(x)\n");
+    const std::string forest = writeTemp("triples.forest", "scene: forest\ngrid: 3 3\nspacing: 40\nseed: 2\nspecies: " +
+                                                              triples + " 1\n");
+    const std::string doubling = writeTemp("doubling.lpy", "Axiom: A\nderivation length: 40\nproduction:\nA --> AA\nendlsystem\n");
+    const std::string lists = writeTemp("growing_lists.lpy", "Axiom: A([1.0] * 20)\nderivation length: 40\nproduction:\nA(x) :\n"
+                                                             "    y = list(x)\n    produce A(x) A(y)\nendlsystem\n");
+    const std::pair<std::string, std::string> runs[] = {
+        {"expand " + triples, "step 19 would produce 1,162,261,467 modules"},
+        {"render " + triples + " --size 64x48 -o " + triples + ".png", "step 19 would produce"},
+        {"render " + forest + " --size 64x48 -o " + forest + ".png", "step 19 would produce"},
+        {"expand " + doubling, "step 26 would make 67108864 modules"},
+        {"expand " + lists + " --max-memory 64", "over the memory budget of 64.0 MB"},
+    };
+    for (const auto& [args, message] : runs) {
+        SCOPED_TRACE(args);
+        Result r = runSprout(args);
+        EXPECT_EQ(r.code, 1);
+        EXPECT_TRUE(r.out.empty());
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(triples + ".png"));
+    EXPECT_FALSE(std::filesystem::exists(forest + ".png"));
+    // The biggest of them: L-Py's native string of 2^25 modules (the step before the limit),
+    // about 210 MB here. Deriving what was asked would take terabytes.
+    struct rusage usage {};
+    getrusage(RUSAGE_CHILDREN, &usage);
+    EXPECT_LT(usage.ru_maxrss, 400L * 1024) << "KB";
 }
 }  // namespace
