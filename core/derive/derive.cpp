@@ -85,8 +85,57 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     if (axiomAges) m_ages.push_back(std::move(axiomAges));
 }
 
+DeriveOutcome Derivation::predictDecomposition(int step, const ModuleString& s) const {
+    const Grammar& g = *m_grammar;
+    const RuleSet& rules = g.decomposition;
+    const size_t A = g.alphabet.size();
+    std::vector<const Production*> always(A, nullptr);
+    for (size_t k = 0; k < A && k < rules.bySymbol.size(); ++k) {
+        if (rules.bySymbol[k].empty()) continue;
+        const Production& first = rules.productions[rules.bySymbol[k].front()];
+        if (first.hasContext() || first.condition || first.stochastic() || first.hasBlocks()) return {};  // not followed
+        always[k] = &first;
+    }
+    if (g.usesCut()) return {};
+    for (const Production& p : rules.productions)
+        for (SymbolId t : p.successor.symbols)
+            if (t == Alphabet::kCut) return {};
+    std::vector<double> count(A, 0), next(A);
+    for (size_t i = 0; i < s.size(); ++i) count[s.symbols.data()[i]] += 1;
+    for (int pass = 0; pass < g.decompositionDepth; ++pass) {
+        bool changes = false;
+        std::fill(next.begin(), next.end(), 0.0);
+        for (size_t k = 0; k < A; ++k) {
+            if (!count[k]) continue;
+            const Production* p = always[k];
+            if (!p) {
+                next[k] += count[k];
+                continue;
+            }
+            const auto& succ = p->successor.symbols;
+            changes |= !(succ.size() == 1 && succ[0] == SymbolId(k));
+            for (SymbolId t : succ) next[t] = std::min(next[t] + count[k], 1e30);
+        }
+        if (!changes) return {};  // the passes end here: the string stays as it is
+        double modules = 0, params = 0;
+        for (size_t k = 0; k < A; ++k) modules += next[k], params += next[k] * g.alphabet[SymbolId(k)].arity;
+        auto clamp = [](double v) { return v >= 1.8e19 ? std::numeric_limits<std::uint64_t>::max() : std::uint64_t(v); };
+        DeriveOutcome o = checkSize(step, clamp(modules), clamp(params));
+        if (!o.ok()) {
+            // The passes are followed exactly: "would produce N", not "up to".
+            std::string rest = o.message.substr(o.message.find(' ', 5) + 1);
+            if (rest.starts_with("would produce up to ")) rest = "would produce " + rest.substr(20);
+            o.message = "step " + std::to_string(step) + ", decomposition pass " + std::to_string(pass + 1) + ", " + rest;
+            return o;
+        }
+        count.swap(next);
+    }
+    return {};
+}
+
 DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins) {
     if (m_decomposer) {
+        if (DeriveOutcome predicted = predictDecomposition(step, s); !predicted.ok()) return predicted;
         // Repeated passes of the (context-free) decomposition rules: pass d rewrites what
         // pass d-1 produced, which is applying them depth-first to each module (cpfg / lpfg).
         const int depth = m_grammar->decompositionDepth;

@@ -110,6 +110,9 @@ private:
     // applies; the first one over a limit is refused at once (TooBig), so explosive growth is
     // refused before it takes the memory.
     DeriveOutcome predictGrowth(int n) const;
+    // The same for the passes of a decomposition over `s`, when each of its rules always
+    // applies (the passes are then followed exactly on the counts of each symbol).
+    DeriveOutcome predictDecomposition(int step, const ModuleString& s) const;
     DeriveOutcome deriveGeneral(int n);
     // cpfg: the decomposition rules until none applies, then the query modules' frames.
     DeriveOutcome finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins = nullptr);

@@ -3,6 +3,7 @@
 
 #include <thread>
 
+#include "core/language/file_kind.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {
@@ -89,6 +90,27 @@ TEST(Limits, CertainParametricGrowthIsRefusedBeforeTheFirstStep) {
     DeriveOutcome six = Derivation(mixed, tiny).deriveTo(6);
     EXPECT_EQ(six.status, DeriveStatus::TooBig);
     EXPECT_EQ(six.step, 6);
+}
+
+// A decomposition whose rules always apply is followed on the counts of its symbols: one that
+// doubles each pass is refused before its first pass, at the pass over the limit.
+TEST(Limits, ExplodingDecompositionIsRefusedBeforeItsPasses) {
+    ParseResult r = parse("derivation length: 30\nAxiom: A\nA --> AB\ndecomposition:\nmaximum depth: 40\nB --> BB\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    DeriveOptions opts;
+    opts.limits.maxModules = 1000;
+    Derivation d(r.grammar, opts);
+    DeriveOutcome o = d.deriveTo(30);
+    EXPECT_EQ(o.status, DeriveStatus::TooBig);
+    EXPECT_EQ(o.step, 1);
+    // Step 1 is A B, then B doubles each pass: 1 + 2^10 = 1025 modules at pass 10.
+    EXPECT_EQ(o.message.rfind("step 1, decomposition pass 10, would produce 1,025 modules", 0), 0u) << o.message;
+    EXPECT_EQ(d.stepsDerived(), 0);
+    // A decomposition that ends (B --> C, C has none) is not refused.
+    ParseResult ends = parse("derivation length: 3\nAxiom: A\nA --> AB\ndecomposition:\nB --> CC\n", parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(ends.ok());
+    EXPECT_TRUE(derive(ends.grammar, 3, opts).outcome.ok());
 }
 
 TEST(Limits, CancellationStopsAStep) {
