@@ -11,6 +11,8 @@ SPROUT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build/sprout")
 INPUTS = [
     ("parametric .lsys, triples (n: 60)", "boom.lsys", "n: 60\naxiom: A(1)\nA(x) -> A(x+1)A(x*2)A(x)\n", []),
     ("D0L .lsys, x10 (n: 40)", "d0l.lsys", "n: 40\naxiom: F\nF -> FFFFFFFFFF\n", []),
+    ("cpfg decomposition doubling for 40 passes", "dec.l",
+     "derivation length: 30\nAxiom: A\nA --> AB\ndecomposition:\nmaximum depth: 40\nB --> BB\n", []),
     ("L-Py A --> AA (derivation length 40)", "aa.lpy", "Axiom: A\nderivation length: 40\nproduction:\nA --> AA\nendlsystem\n", []),
     ("L-Py Python body, lists as parameters (64 MB budget)", "lists.lpy",
      "Axiom: A([1.0] * 20)\nderivation length: 40\nproduction:\nA(x) :\n    y = list(x)\n    produce A(x) A(y)\nendlsystem\n",
