@@ -5,7 +5,6 @@
 // whole string (production, decomposition, interpretation). One file: the per-module loop and
 // everything it calls, so that it stays inlined.
 #include <algorithm>
-#include <cstdio>
 
 #include "lpy/engine.hpp"
 
@@ -509,14 +508,12 @@ std::size_t Engine::moduleBytes(const LString& s) const {
 void Engine::checkGrowth(const LString& in, const LString& out, std::size_t perModule) const {
     const std::uint64_t bytes = std::uint64_t(in.size() + out.size()) * perModule;
     if (out.size() <= m_options.maxModules && bytes <= m_options.maxBytes) return;
-    char size[64];
-    std::snprintf(size, sizeof size, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
     if (out.size() > m_options.maxModules)
         throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(m_options.maxModules) +
                               " modules; lower the derivation length or raise the limit (--max-modules)");
     throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(out.size()) +
                           " modules of about " + std::to_string(perModule) + " bytes each (their Python parameters measured), "
-                          "over the memory budget of " + size + " with the string before it; lower the derivation length "
+                          "over the memory budget of " + humanBytes(m_options.maxBytes) + " with the string before it; lower the derivation length "
                           "or raise the budget (--max-memory)");
 }
 
@@ -540,15 +537,13 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
         const double predicted = double(in.size()) * m_lastGrowth;
         if (predicted > double(m_options.maxModules) ||
             (double(in.size()) + predicted) * double(perModule) > double(m_options.maxBytes)) {
-            char size[64], budget[64];
-            std::snprintf(size, sizeof size, "%.1f MB", (double(in.size()) + predicted) * double(perModule) / double(1 << 20));
-            std::snprintf(budget, sizeof budget, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
+            const std::string size = humanBytes(std::uint64_t((double(in.size()) + predicted) * double(perModule)));
             const bool modules = predicted > double(m_options.maxModules);
             throw py::value_error("step " + std::to_string(iteration + 1) + " would make about " +
                                   std::to_string(std::uint64_t(predicted)) + " modules (the step before grew " +
                                   std::to_string(m_lastGrowth).substr(0, 4) + " times), " + size + " with the string before it (" +
                                   std::to_string(perModule) + " bytes a module, its Python parameters measured), over the " +
-                                  (modules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + std::string(budget)) +
+                                  (modules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + humanBytes(m_options.maxBytes)) +
                                   "; lower the derivation length or raise the " +
                                   (modules ? "limit (--max-modules)" : "budget (--max-memory)"));
         }

@@ -24,7 +24,6 @@
 // This file is the derivation, with the inner loop and all it calls in one translation unit;
 // what is found before it (the rules compiled, the shapes and their steps) is in
 // native_rules.cpp.
-#include <cstdio>
 #include <sched.h>
 #include <unistd.h>
 
@@ -369,13 +368,11 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         auto refuse = [&](std::uint64_t m, std::uint64_t p) {
             const std::uint64_t bytes = (cur.modules.size() + m) * 4 + (cur.params.size() + p) * 8;
             if (m <= m_options.maxModules && bytes <= m_options.maxBytes) return;
-            char size[64], budget[64];
-            std::snprintf(size, sizeof size, "%.1f MB", double(bytes) / double(1 << 20));
-            std::snprintf(budget, sizeof budget, "%.1f MB", double(m_options.maxBytes) / double(1 << 20));
+            const std::string size = humanBytes(bytes);
             const bool overModules = m > m_options.maxModules;
             throw py::value_error("step " + std::to_string(i + 1) + " would make " + std::to_string(m) + " modules (" + size +
                                   " with the string before it), over the " +
-                                  (overModules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + std::string(budget)) +
+                                  (overModules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + humanBytes(m_options.maxBytes)) +
                                   "; lower the derivation length or raise the " + (overModules ? "limit (--max-modules)" : "budget (--max-memory)"));
         };
         if (exact) refuse(modules, params);

@@ -21,14 +21,14 @@ double millisSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+}  // namespace
+
 std::string humanBytes(std::uint64_t b) {
     char buf[32];
     if (b >= (1ull << 30)) std::snprintf(buf, sizeof buf, "%.1f GB", double(b) / double(1ull << 30));
     else std::snprintf(buf, sizeof buf, "%.1f MB", double(b) / double(1ull << 20));
     return buf;
 }
-
-}  // namespace
 
 std::uint64_t defaultMemoryBudget() {
     static const std::uint64_t budget = [] {

@@ -143,5 +143,6 @@ DeriveResult derive(std::shared_ptr<const Grammar> grammar, int n, const DeriveO
 
 // "12,345,678"
 std::string withThousands(std::uint64_t v);
+std::string humanBytes(std::uint64_t bytes);  // "0.6 MB", "10.8 GB"
 
 }  // namespace sprout

@@ -214,6 +214,7 @@ private:
     double m_emptyName = -1;
     void keepPolygon(const State& t, std::vector<glm::vec3>& pts, const Frame& at, double name);
     void insertKept(const State& t, const double* p, int arity);
+    void keepMesh(Mesh&& world, const Frame& at, double name);
     // L-system Explorer's contours: the one being captured (its points' x and y), and those
     // named, as cross-sections after Settings::sections (State::section counts on from there).
     bool m_capturing = false;

@@ -49,16 +49,7 @@ void Turtle::keepTube(std::size_t curve, double name) {
     Mesh world;
     appendTube(c.curve, 1.0f, world);
     c.curve.points.clear();  // drawn where it is put, not here
-    Mesh& kept = m_saved[name];
-    kept.clear();
-    const Frame& at = c.start;
-    auto local = [&](const glm::vec3& v) { return glm::vec3(glm::dot(v, at.l), glm::dot(v, at.h), glm::dot(v, at.u)); };
-    for (size_t k = 0; k < world.positions.size(); ++k) {
-        kept.positions.push_back(local(world.positions[k] - at.origin));
-        kept.normals.push_back(local(world.normals[k]));
-    }
-    kept.colours = std::move(world.colours);
-    kept.indices = std::move(world.indices);
+    keepMesh(std::move(world), c.start, name);
 }
 
 // A contour's points are where the turtle stood at each '.', in the x y plane (the tool's
@@ -209,6 +200,11 @@ void Turtle::keepPolygon(const State& t, std::vector<glm::vec3>& pts, const Fram
     if (m_saved.size() >= 4096 && !m_saved.count(name)) return;
     Mesh world;
     emitPolygon(t, pts, &world);
+    keepMesh(std::move(world), at, name);
+}
+
+// A kept surface is stored in the frame `at`: x along its L, y along H, z along U.
+void Turtle::keepMesh(Mesh&& world, const Frame& at, double name) {
     Mesh& kept = m_saved[name];
     kept.clear();
     auto local = [&](const glm::vec3& v) { return glm::vec3(glm::dot(v, at.l), glm::dot(v, at.h), glm::dot(v, at.u)); };
