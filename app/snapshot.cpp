@@ -20,6 +20,7 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     dopts.limits = o.limits;
     Derivation derivation(grammar, dopts);
     DeriveOutcome outcome = derivation.deriveTo(n);
+    if (outcome.ok()) outcome = checkDrawing(*derivation.step(n), *grammar, o.limits, n);
     if (!outcome.ok()) {
         error = outcome.message;
         return false;

@@ -139,6 +139,7 @@ void Engine::bind() {
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
     prepareNative();
     if (!m_ancestors.empty()) m_nativeOk = false;  // the native path matches classes exactly
+    m_predictable = growthPredictable();
     // A `turtle` in an interpretation rule's body, or a hook that takes it.
     m_usesTurtle = false;
     for (size_t r = 0; r < m_tr.rules.size(); ++r)
@@ -192,6 +193,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         iteration = start;  // a value Python would not take: Python from the start
     }
     if (start == 0) callHook("Start", &s, nullptr, &s);
+    predictGrowth(s, steps);
     if (everyStep) everyStep->push_back(s);
     if (contexts) contexts->push_back(nullptr);  // the axiom's: none
     const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);

@@ -96,6 +96,11 @@ struct PyModuleClass {
 
 // Thrown when the caller cancels between rule calls.
 struct Cancelled {};
+// A step refused by the growth limits (RunOptions' maxModules, maxBytes): a ValueError in
+// Python, an error at the `derivation length:` line in a file's diagnostics.
+struct TooBig : py::value_error {
+    using py::value_error::value_error;
+};
 
 // A Python error raised while running the model: where in the file, and the message.
 struct ModelError {
@@ -232,7 +237,16 @@ private:
     // modules; and the check of a growing string against RunOptions' limits.
     std::size_t moduleBytes(const LString& s) const;
     void checkGrowth(const LString& in, const LString& out, std::size_t perModule) const;
+    void predictNextStep(const LString& in, std::size_t perModule) const;  // from m_lastGrowth
     double m_lastGrowth = 1;  // the production pass before: modules made per module read
+    // Before the first step (lpy/engine_growth.cpp): the least size of each of the next `steps`
+    // steps, followed through the rules that always make the same successor; the first over
+    // RunOptions' limits is refused (a ValueError naming it). Nothing is predicted where
+    // Python may steer the derivation (growthPredictable, worked out by bind()) or a hook runs
+    // between steps.
+    bool growthPredictable() const;
+    void predictGrowth(const LString& s, int steps) const;
+    bool m_predictable = false;
     bool tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed);
     bool applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result);
     // Whether rule r's header matches at `at` (its predecessor's first module, or last when

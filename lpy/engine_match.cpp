@@ -491,32 +491,6 @@ size_t afterCut(const LString& in, size_t i) {
 }
 }  // namespace
 
-std::size_t Engine::moduleBytes(const LString& s) const {
-    if (s.empty()) return sizeof(LModule);
-    py::object getsizeof = py::module_::import("sys").attr("getsizeof");
-    const size_t stride = std::max<size_t>(1, s.size() / 64);
-    std::size_t total = 0, n = 0;
-    for (size_t i = 0; i < s.size(); i += stride, ++n) {
-        const LModule& m = s[i];
-        if (m.args.empty()) continue;
-        total += getsizeof(m.args).cast<std::size_t>();
-        for (py::handle a : m.args) total += getsizeof(a).cast<std::size_t>();
-    }
-    return sizeof(LModule) + total / std::max<std::size_t>(n, 1);
-}
-
-void Engine::checkGrowth(const LString& in, const LString& out, std::size_t perModule) const {
-    const std::uint64_t bytes = std::uint64_t(in.size() + out.size()) * perModule;
-    if (out.size() <= m_options.maxModules && bytes <= m_options.maxBytes) return;
-    if (out.size() > m_options.maxModules)
-        throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(m_options.maxModules) +
-                              " modules; lower the derivation length or raise the limit (--max-modules)");
-    throw py::value_error("step " + std::to_string(iteration + 1) + ": the string grew past " + std::to_string(out.size()) +
-                          " modules of about " + std::to_string(perModule) + " bytes each (their Python parameters measured), "
-                          "over the memory budget of " + humanBytes(m_options.maxBytes) + " with the string before it; lower the derivation length "
-                          "or raise the budget (--max-memory)");
-}
-
 void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
     struct Reading {  // the string `$A(a)` patterns bind modules of, while this pass runs
         Engine& e;
@@ -532,22 +506,7 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
     // The string made is checked as it grows (every 1024 modules read, and at the end), with
     // the bytes of a module measured on the string read.
     const std::size_t perModule = moduleBytes(in);
-    if (kind == RuleKind::Production && m_lastGrowth > 1) {
-        // Predicted from the growth of the step before: refused before it starts.
-        const double predicted = double(in.size()) * m_lastGrowth;
-        if (predicted > double(m_options.maxModules) ||
-            (double(in.size()) + predicted) * double(perModule) > double(m_options.maxBytes)) {
-            const std::string size = humanBytes(std::uint64_t((double(in.size()) + predicted) * double(perModule)));
-            const bool modules = predicted > double(m_options.maxModules);
-            throw py::value_error("step " + std::to_string(iteration + 1) + " would make about " +
-                                  std::to_string(std::uint64_t(predicted)) + " modules (the step before grew " +
-                                  std::to_string(m_lastGrowth).substr(0, 4) + " times), " + size + " with the string before it (" +
-                                  std::to_string(perModule) + " bytes a module, its Python parameters measured), over the " +
-                                  (modules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + humanBytes(m_options.maxBytes)) +
-                                  "; lower the derivation length or raise the " +
-                                  (modules ? "limit (--max-modules)" : "budget (--max-memory)"));
-        }
-    }
+    if (kind == RuleKind::Production) predictNextStep(in, perModule);
     struct Growth {  // the next production pass's prediction
         Engine& e;
         const LString& in;
@@ -616,7 +575,7 @@ LString Engine::decompose(LString in, int depth, RuleKind kind) {
             out.insert(out.end(), std::make_move_iterator(piece.begin()), std::make_move_iterator(piece.end()));
             i += std::max<size_t>(consumed, 1);
             if (m_matchOf != &in) matchBrackets(in);
-            if (out.size() > m_options.maxModules) throw py::value_error("the string grew past " + std::to_string(m_options.maxModules) + " modules");
+            if (out.size() > m_options.maxModules) throw TooBig("the string grew past " + std::to_string(m_options.maxModules) + " modules");
             continue;
         }
         out.push_back(in[i]);

@@ -607,6 +607,9 @@ Model runModel(std::string_view written, const RunOptions& options) {
     } catch (Cancelled&) {
         out.cancelled = true;
         out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+    } catch (TooBig& e) {  // at the line that asked for the steps
+        const auto [line, col] = engine.translation().derivationLengthAt;
+        out.diagnostics.push_back({line, col, e.what(), Severity::Error});
     } catch (std::exception& e) {  // a value Python gave that C++ cannot take (pybind11's cast errors)
         out.diagnostics.push_back({0, 0, e.what(), Severity::Error});
     }

@@ -370,10 +370,11 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
             if (m <= m_options.maxModules && bytes <= m_options.maxBytes) return;
             const std::string size = humanBytes(bytes);
             const bool overModules = m > m_options.maxModules;
-            throw py::value_error("step " + std::to_string(i + 1) + " would make " + std::to_string(m) + " modules (" + size +
+            throw TooBig("step " + std::to_string(i + 1) + " would make " + withThousands(m) + " modules (" + size +
                                   " with the string before it), over the " +
-                                  (overModules ? "limit of " + std::to_string(m_options.maxModules) + " modules" : "memory budget of " + humanBytes(m_options.maxBytes)) +
-                                  "; lower the derivation length or raise the " + (overModules ? "limit (--max-modules)" : "budget (--max-memory)"));
+                                  (overModules ? "limit of " + withThousands(m_options.maxModules) + " modules" : "memory budget of " + humanBytes(m_options.maxBytes)) +
+                                  "; lower the derivation length (to " + std::to_string(i) + " at most) or raise the " +
+                                  (overModules ? "limit (--max-modules)" : "budget (--max-memory)"));
         };
         if (exact) refuse(modules, params);
         if (params > std::numeric_limits<std::uint32_t>::max()) throw py::value_error("the string holds too many numbers");

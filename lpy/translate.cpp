@@ -154,6 +154,7 @@ void Translator::translateMain(std::vector<std::string>& lines) {
         if (t.empty() || t[0] == '#') continue;
         if (keyword(t, "derivation length", rest)) {
             m_outLines[i] = std::string(size_t(mode == Mode::Python ? ind : 0), ' ') + "__derivation_length__ = " + std::string(rest);
+            m_out.derivationLengthAt = {int(i) + 1, ind + 1};
             continue;
         }
         if (ind == 0 && (startsWithWord(t, "production") && keyword(t, "production", rest))) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "core/language/diagnostic.hpp"
@@ -129,6 +130,10 @@ struct Rule {
     // when every rule of the model is this simple: lpy/native_rules.cpp).
     bool arrow = false;
     std::vector<WrittenModule> successor;
+    // Whenever it matches, it makes `successor`: a `-->` rule, or a body of plain statements
+    // (no branch, loop, return or raise) whose last is its one `produce` (the growth budget
+    // predicts such rules' growth before deriving: Engine::predictGrowth).
+    bool alwaysProduces = false;
 };
 
 // `consider:` (only these classes count in contexts) or `ignore:` (these are skipped).
@@ -155,6 +160,8 @@ struct Translation {
     std::vector<int> declared;  // the classes `module` lines declare
     bool axiomIsBlock = false;  // `Axiom:` followed by an indented block: __axiom_block__()
     bool hasAxiom = false;
+    std::pair<int, int> derivationLengthAt{0, 0};  // line and column of `derivation length:`
+    bool writesCut = false;  // a successor, `produce` or the axiom holds '%'
     std::vector<Diagnostic> diagnostics;
     bool ok() const { return !hasErrors(diagnostics); }
 };

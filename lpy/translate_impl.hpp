@@ -95,6 +95,7 @@ private:
 
     // translate_rules.cpp
     void translateProduces(std::vector<std::string>& lines, size_t i);
+    bool plainBody(const std::vector<std::string>& lines, size_t i, size_t last);
     // The names a pattern binds, in binding order, added to `names` (a name bound twice is an
     // error at `line`); sets each repetition's count of variables.
     void bindNames(std::vector<PatternModule>& ps, std::vector<std::string>& names, int line);
@@ -110,6 +111,9 @@ private:
     Translation m_out;
     int m_group = 0;
     int m_filter = -1;
+    // translateProduces: the last `produce` read (not nproduce or makestring), and how many.
+    std::vector<WrittenModule> m_produced;
+    int m_produces = 0;
 };
 
 }  // namespace sprout::lpy::translate_detail

@@ -53,6 +53,8 @@ void Translator::translateProduces(std::vector<std::string>& lines, size_t i) {
                 successor = line.substr(p, end - p);
             }
             auto mods = readLstring(successor, m_out.classes, int(i) + 1, successorCol, m_out.diagnostics);
+            for (const WrittenModule& w : mods) m_out.writesCut |= w.cls == ModuleClasses::kCut;
+            if (!n && !make) m_produced = mods, ++m_produces;
             // makestring(S): the Lstring S, a value (L-Py's AxialTree(...)).
             const std::string call = (make ? "Lstring(" : n ? "__lpy_nproduce(" : "return __lpy_produce(") + pythonLstring(mods) + ")";
             line = line.substr(0, at) + call + line.substr(end);
@@ -248,6 +250,54 @@ void Translator::bindNames(std::vector<PatternModule>& ps, std::vector<std::stri
     for (auto& pm : ps) bind(pm);
 }
 
+// Whether the body in lines[i..last] (lines[i]: what follows the header's ':') is statements
+// run one after the other, the last of them a `produce`: no compound statement, return,
+// raise, yield, nproduce or second produce, no line continued on the next. Then the rule
+// makes its produce's successor whenever its header matches (an exception ends the derivation).
+bool Translator::plainBody(const std::vector<std::string>& lines, size_t i, size_t last) {
+    // Statements that steer (at a statement's start), and words that leave a body anywhere.
+    static const char* const kSteer[] = {"if", "elif", "else", "for", "while", "try", "except", "finally", "with", "def", "class",
+                                         "break", "continue", "assert", "match", "async", "global", "nonlocal", "del"};
+    static const char* const kLeave[] = {"return", "raise", "yield", "await", "nproduce"};
+    std::vector<std::string_view> statements;
+    int indent = -1;
+    for (size_t k = i; k <= last; ++k) {
+        std::string_view t = lines[k];
+        t = t.substr(0, commentStart(t));
+        if (trim(t).empty()) continue;
+        if (k > i) {  // the lines under the header share one indentation
+            if (indent < 0) indent = indentOf(t);
+            if (indentOf(t) != indent) return false;
+        }
+        t = trim(t);
+        const char end = t.back();
+        if (end == ':' || end == '\\') return false;
+        for (const char* w : kSteer)
+            if (startsWithWord(t, w)) return false;
+        for (const char* w : kLeave)
+            if (findKeyword(t, w) != std::string_view::npos) return false;
+        statements.push_back(t);
+    }
+    if (statements.empty() || !startsWithWord(statements.back(), "produce")) return false;
+    for (size_t k = 0; k + 1 < statements.size(); ++k)  // (in a successor, ';' is a module)
+        if (findKeyword(statements[k], "produce") != std::string_view::npos || statements[k].find(';') != std::string_view::npos)
+            return false;
+    // Parentheses closed on each line (a successor in parentheses over several lines is not plain).
+    for (std::string_view t : statements) {
+        int depth = 0;
+        for (size_t c = 0; c < t.size(); ++c) {
+            if (t[c] == '\'' || t[c] == '"') {
+                c = skipString(t, c) - 1;
+                continue;
+            }
+            depth += t[c] == '(' || t[c] == '[' || t[c] == '{';
+            depth -= t[c] == ')' || t[c] == ']' || t[c] == '}';
+        }
+        if (depth != 0) return false;
+    }
+    return true;
+}
+
 // A rule starts at lines[i] (column 0). Returns the index of its last line.
 size_t Translator::rule(std::vector<std::string>& lines, size_t i, Mode mode) {
     const std::string& line = lines[i];
@@ -304,6 +354,8 @@ size_t Translator::rule(std::vector<std::string>& lines, size_t i, Mode mode) {
         auto mods = readLstring(successor, m_out.classes, lineNo, int(end) + 4, m_out.diagnostics);
         m_outLines[i] = def + " return __lpy_produce(" + pythonLstring(mods) + ")";
         r.arrow = true;
+        r.alwaysProduces = true;
+        for (const WrittenModule& w : mods) m_out.writesCut |= w.cls == ModuleClasses::kCut;
         r.successor = mods;
         if (last > i) warning(lineNo, int(end) + 1, "indented lines after a '-->' rule are ignored");
         for (size_t k = i + 1; k <= last; ++k) m_outLines[k] = "";
@@ -313,11 +365,14 @@ size_t Translator::rule(std::vector<std::string>& lines, size_t i, Mode mode) {
         if (inlineBody.rfind("@static", 0) == 0) inlineBody = std::string(trim(std::string_view(inlineBody).substr(7)));
         const std::string headerLine = lines[i];
         lines[i] = inlineBody;  // the body's first line is what follows ':' (columns from there)
+        const bool plain = plainBody(lines, i, last);
+        m_produces = 0;
         for (size_t k = i; k <= last; ++k) {
             if (lines[k].empty()) continue;
             translateProduces(lines, k);
             translateInContexts(lines[k], int(k) + 1);
         }
+        if (plain && m_produces == 1) r.alwaysProduces = true, r.successor = std::move(m_produced);
         std::vector<std::string> body(lines.begin() + std::ptrdiff_t(i), lines.begin() + std::ptrdiff_t(last) + 1);
         lines[i] = headerLine;
         bool anyStatement = !trim(body[0]).empty() && trim(body[0])[0] != '#';

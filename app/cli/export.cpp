@@ -17,11 +17,12 @@
 namespace sprout::cli {
 
 int runExport(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--quiet", "--with-environment", "--no-python"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--format"});
+    Args args(argc, argv, 1, {"--quiet", "--with-environment", "--no-python"}, {"-o", "-n", "--seed", "--sides", "--max-modules", "--max-memory", "--format"});
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto sides = args.integer("--sides", 3, 64);
     auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
+    auto maxMemory = args.integer("--max-memory", 1, INT64_MAX / (1 << 20));
     std::string problem = args.error();
     if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
         problem = "expects one FILE or PRESET and -o OUT";
@@ -38,7 +39,7 @@ int runExport(int argc, char** argv) {
     if (!problem.empty()) {
         std::cerr << "sprout export: " << problem
                   << "\nusage: sprout export FILE|PRESET -o OUT.glb|OUT.obj|OUT.ply|OUT.svg|- [--format glb|obj|ply|svg] [-n N]"
-                     " [--seed S] [--sides K] [--with-environment] [--quiet] [--no-python]\n"
+                     " [--seed S] [--sides K] [--with-environment] [--max-modules M] [--max-memory MB] [--quiet] [--no-python]\n"
                      "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n";
         return 2;
     }
@@ -49,6 +50,7 @@ int runExport(int argc, char** argv) {
     std::uint64_t usedSeed = 1;
     DeriveLimits limits;
     if (maxModules) limits.maxModules = std::uint64_t(*maxModules);
+    if (maxMemory) limits.maxBytes = std::uint64_t(*maxMemory) << 20;
     const FileKind kind = sourceKind(source);  // a picture written by Sprout holds what it shows
     if (kind == FileKind::Ifs) {
         std::cerr << source << ": an iterated function system is a point density, not a model; "
@@ -64,6 +66,8 @@ int runExport(int argc, char** argv) {
         LoadOptions lo;
         lo.steps = n ? int(*n) : -1;
         lo.python = !args.flag("--no-python");
+        if (maxModules) lo.maxModules = limits.maxModules;
+        if (maxMemory) lo.maxBytes = limits.maxBytes;
         auto loaded = loadGrammar(source, lo);
         if (!loaded) return 1;
         const Grammar& g = *loaded->grammar;
@@ -73,6 +77,7 @@ int runExport(int argc, char** argv) {
         dopts.limits = limits;
         Derivation derivation(loaded->grammar, dopts);
         DeriveOutcome outcome = derivation.deriveTo(steps);
+        if (outcome.ok()) outcome = checkDrawing(*derivation.step(steps), g, limits, steps);
         if (!outcome.ok()) {
             std::cerr << loaded->displayName << ": " << outcome.message << "\n";
             return 1;

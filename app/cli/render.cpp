@@ -175,12 +175,13 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 
 int runRender(int argc, char** argv) {
     Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--transparent", "--stats", "--show-environment", "--no-python"},
-              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--animate",
+              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--max-memory", "--animate",
                "--frames", "--fps", "--light-slice", "--detail"});
     SnapshotOptions o;
     auto n = args.integer("-n", 0, 10000);
     auto seed = args.integer("--seed", 0, INT64_MAX);
     auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
+    auto maxMemory = args.integer("--max-memory", 1, INT64_MAX / (1 << 20));
     auto frames = args.integer("--frames", 1, 100000);
     auto fps = args.integer("--fps", 1, 240);
     std::string problem = args.error();
@@ -222,7 +223,8 @@ int runRender(int argc, char** argv) {
         std::cerr << "sprout render: " << problem
                   << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
                      " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground] [--transparent] [--show-environment] [--light-slice H] [--detail full|viewer] [--no-python]\n"
+                     " [--no-shadows] [--no-ground] [--transparent] [--show-environment] [--light-slice H] [--detail full|viewer]"
+                     " [--max-modules M] [--max-memory MB] [--no-python]\n"
                      "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n"
                      "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
         return 2;
@@ -252,6 +254,8 @@ int runRender(int argc, char** argv) {
     }
     // A PNG of an IFS or a forest scene is rendered as what it holds.
     const FileKind kind = sourceKind(source);
+    if (maxModules) o.limits.maxModules = std::uint64_t(*maxModules);
+    if (maxMemory) o.limits.maxBytes = std::uint64_t(*maxMemory) << 20;
     if (kind == FileKind::Ifs) return renderIfs(source, o, *args.value("-o"), args.flag("--stats"));
     if (kind == FileKind::Forest) return renderForest(source, o, *args.value("-o"), args.flag("--stats"));
     LoadOptions lo;
@@ -259,11 +263,11 @@ int runRender(int argc, char** argv) {
     lo.python = !args.flag("--no-python");
     lo.keepSteps = animate == AnimationKind::Growth;
     if (maxModules) lo.maxModules = std::uint64_t(*maxModules);
+    if (maxMemory) lo.maxBytes = std::uint64_t(*maxMemory) << 20;
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);
     if (seed) o.seed = std::uint64_t(*seed);
-    if (maxModules) o.limits.maxModules = std::uint64_t(*maxModules);
     o.render.shadows = !args.flag("--no-shadows");
     o.render.ground = !args.flag("--no-ground");
 

@@ -244,6 +244,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     t0 = std::chrono::steady_clock::now();
     m_progress = 0;
     DeriveOutcome outcome = m_derivation->deriveTo(out->displayStep);
+    if (outcome.ok()) outcome = checkDrawing(*m_derivation->step(out->displayStep), g, limits, out->displayStep);
     out->deriveMs = millisSince(t0);
     if (!outcome.ok()) {
         out->cancelled = outcome.status == DeriveStatus::Cancelled;

@@ -212,18 +212,20 @@ DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64
     o.predictedModules = modules;
     o.predictedBytes = bytes;
     const auto& lim = m_options.limits;
+    // A D0L count is exact, and each step is checked in turn: the step before fits.
+    const std::string lower = m_d0l ? "lower n (to " + std::to_string(step - 1) + " at most)" : "lower n";
     if (modules > lim.maxModules) {
         o.status = DeriveStatus::TooBig;
         o.message = "step " + std::to_string(step) + " would produce " +
                     (m_d0l ? "" : "up to ") + withThousands(modules) + " modules (" + humanBytes(bytes) +
                     "), over the limit of " + withThousands(lim.maxModules) +
-                    " modules; lower n or raise the limit (--max-modules)";
+                    " modules; " + lower + " or raise the limit (--max-modules)";
     } else if (bytes + kept > lim.maxBytes) {
         o.status = DeriveStatus::TooBig;
         o.message = "step " + std::to_string(step) + " would need " + humanBytes(bytes) + " for " +
                     withThousands(modules) + " modules on top of " + humanBytes(kept) +
                     " already kept, over the memory budget of " + humanBytes(lim.maxBytes) +
-                    "; lower n or raise the budget (--max-memory)";
+                    "; " + lower + " or raise the budget (--max-memory)";
     }
     return o;
 }

@@ -141,6 +141,13 @@ struct DeriveResult {
 };
 DeriveResult derive(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options = {});
 
+// Before `s` (step `step`) is drawn: its drawing takes a segment (sizeof(CylinderInstance)) for
+// each module that draws one, about as much as a polygon's vertex; with the string, over
+// limits.maxBytes it is refused (TooBig, the message naming the step and the sizes), before
+// the turtle takes the memory. Not predicted where interpretation rules make what is drawn.
+DeriveOutcome checkDrawing(const ModuleString& s, const Grammar& g, const DeriveLimits& limits, int step);
+// (in core/derive/draw.cpp)
+
 // "12,345,678"
 std::string withThousands(std::uint64_t v);
 std::string humanBytes(std::uint64_t bytes);  // "0.6 MB", "10.8 GB"

@@ -1,6 +1,7 @@
 #include "core/derive/draw.hpp"
 
 #include "core/base/rng.hpp"
+#include "core/derive/derive.hpp"
 #include "core/derive/d0l.hpp"
 #include "core/derive/step_rewriter.hpp"
 
@@ -50,6 +51,26 @@ TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptio
     o.ages = nullptr;  // the interpretation changes positions: ages no longer line up
     drawString(drawn, g, o, out);
     return {};
+}
+
+DeriveOutcome checkDrawing(const ModuleString& s, const Grammar& g, const DeriveLimits& limits, int step) {
+    if (!g.interpretation.productions.empty()) return {};
+    std::vector<std::uint8_t> draws(g.alphabet.size());
+    for (size_t k = 0; k < draws.size(); ++k) draws[k] = drawsSegment(g.alphabet[SymbolId(k)].name);
+    std::uint64_t segments = 0;
+    const SymbolId* symbols = s.symbols.data();
+    for (size_t i = 0; i < s.size(); ++i) segments += draws[symbols[i]];
+    const std::uint64_t drawing = segments * sizeof(CylinderInstance), total = drawing + s.bytes();
+    if (total <= limits.maxBytes) return {};
+    DeriveOutcome o;
+    o.status = DeriveStatus::TooBig;
+    o.step = step;
+    o.predictedModules = s.size();
+    o.predictedBytes = total;
+    o.message = "drawing step " + std::to_string(step) + " would take about " + humanBytes(drawing) + " for its " + withThousands(segments) +
+                " segments, with its string " + humanBytes(total) + ", over the memory budget of " + humanBytes(limits.maxBytes) +
+                "; lower n below " + std::to_string(step) + " or raise the budget (--max-memory)";
+    return o;
 }
 
 }  // namespace sprout

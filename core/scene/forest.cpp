@@ -118,9 +118,19 @@ bool growTogether(const Forest& f, const std::vector<SharingPlant>& plants, Geom
             if (k > plants[i].grammar->settings.iterations) continue;
             DeriveOutcome o = derivations[i]->deriveTo(k);
             if (!o.ok()) {
-                error = o.message;
+                error = "plant " + std::to_string(i + 1) + " (" + plants[i].species + "): " + o.message;
                 return false;
             }
+        }
+        // Their strings live together: one budget for all of them.
+        std::uint64_t together = 0;
+        for (size_t i = 0; i < plants.size(); ++i)
+            together += derivations[i]->step(std::min(k, plants[i].grammar->settings.iterations))->bytes();
+        if (together > limits.maxBytes) {
+            error = "step " + std::to_string(k) + ": the strings of the " + std::to_string(plants.size()) +
+                    " plants that share the environment take " + humanBytes(together) + ", over the memory budget of " +
+                    humanBytes(limits.maxBytes) + "; lower their n, the grid or raise the budget (--max-memory)";
+            return false;
         }
         if (!answer(k)) return false;
     }
@@ -182,16 +192,22 @@ bool buildForest(const Forest& f, const GrammarSource& source, Geometry& out, Fo
             sharing.push_back({g, seed, yaw, at, species});
             return true;
         }
+        // The forest has one memory budget: a plant may take what the plants before it left.
+        const std::uint64_t used = out.bytes();
+        auto over = [&](const std::string& why) {
+            error = "plant " + std::to_string(stats.plants + stats.grasses + 1) + " (" + species + "): " + why;
+            if (used) error += "; the forest's plants before it take " + humanBytes(used) + " of its budget of " + humanBytes(limits.maxBytes);
+            return false;
+        };
         DeriveOptions o;
         o.seed = seed;  // each plant its own specimen
         o.limits = limits;
+        o.limits.maxBytes = limits.maxBytes > used ? limits.maxBytes - used : 0;
         Derivation d(g, o);
         const int n = g->settings.iterations;
         DeriveOutcome outcome = d.deriveTo(n);
-        if (!outcome.ok()) {
-            error = outcome.message;
-            return false;
-        }
+        if (outcome.ok()) outcome = checkDrawing(*d.step(n), *g, o.limits, n);
+        if (!outcome.ok()) return over(outcome.message);
         interpret(*d.step(n), *g, {n, seed, nullptr}, plant);
         if (placed)
             placed->push_back({species, at, yaw, grass, std::uint32_t(out.cylinders.size()), std::uint32_t(plant.cylinders.size()),

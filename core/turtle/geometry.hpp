@@ -77,6 +77,7 @@ struct Geometry {
     std::vector<Label> labels;
 
     void clear();  // keeps capacity: re-interpretation reuses the buffers
+    std::uint64_t bytes() const;  // what its instances, triangles and labels take
 };
 
 }  // namespace sprout

@@ -6,6 +6,12 @@
 
 namespace sprout {
 
+bool drawsSegment(const std::string& name) {
+    using turtle_impl::Act;
+    const Act a = turtle_impl::actionOf(name);
+    return a == Act::Draw || a == Act::DrawNoVertex || a == Act::LineTo || a == Act::OLineTo || a == Act::LineRel || a == Act::OLineRel;
+}
+
 namespace turtle_impl {
 
 Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)

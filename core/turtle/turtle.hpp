@@ -72,6 +72,10 @@ TurtleStats drawTree(const DerivationTree& tree, const Grammar& g, const TurtleO
 // interpretation rules (if any) that map each symbol to one fixed string.
 bool treeDrawable(const Grammar& g, const TurtleOptions& options);
 
+// Whether a module of this name draws a segment (F, G, LineTo...): what a drawing's memory is
+// predicted from (core/derive/draw.hpp: checkDrawing).
+bool drawsSegment(const std::string& name);
+
 // Appends `g` turned by `yaw` degrees about +Y and moved to `at` (a plant of a forest).
 void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& out);
 

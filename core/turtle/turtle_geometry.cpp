@@ -336,6 +336,14 @@ void Bounds::add(const Bounds& b) {
     add(b.max);
 }
 
+std::uint64_t Geometry::bytes() const {
+    std::uint64_t b = std::uint64_t(cylinders.size()) * sizeof(CylinderInstance) + std::uint64_t(surfaces.size()) * sizeof(SurfaceInstance);
+    b += (polygons.positions.size() + polygons.normals.size()) * sizeof(glm::vec3) +
+         (polygons.colours.size() + polygons.indices.size()) * sizeof(std::uint32_t);
+    for (const Label& l : labels) b += sizeof(Label) + l.text.size();
+    return b;
+}
+
 void Geometry::clear() {
     cylinders.clear();
     surfaces.clear();

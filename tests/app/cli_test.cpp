@@ -96,7 +96,7 @@ TEST(Cli, SizeCapRefusalNamesStepAndCount) {
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.err,
               "<stdin>: step 9 would produce 1,000,000,000 modules (1.9 GB), over the limit of "
-              "500,000,000 modules; lower n or raise the limit (--max-modules)\n");
+              "500,000,000 modules; lower n (to 8 at most) or raise the limit (--max-modules)\n");
     Result small = runSprout("expand - -n 40 --max-modules 1000", "axiom: F\nF -> FFFFFFFFFF\n");
     EXPECT_NE(small.err.find("step 4 would produce 10,000 modules"), std::string::npos) << small.err;
 }
@@ -254,12 +254,24 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     const std::string doubling = writeTemp("doubling.lpy", "Axiom: A\nderivation length: 40\nproduction:\nA --> AA\nendlsystem\n");
     const std::string lists = writeTemp("growing_lists.lpy", "Axiom: A([1.0] * 20)\nderivation length: 40\nproduction:\nA(x) :\n"
                                                              "    y = list(x)\n    produce A(x) A(y)\nendlsystem\n");
+    // The Python path: a body that doubles (followed through its one produce before step 1).
+    const std::string body = writeTemp("doubling_body.lpy", "Axiom: A(1)\nderivation length: 40\nproduction:\nA(x):\n"
+                                                            "    y = x*2\n    produce A(x+1) A(y)\nendlsystem\n");
+    // A string that fits, whose drawing would not (a segment each: 40 bytes against 4).
+    const std::string segments = writeTemp("segments.lsys", "n: 24\naxiom: F\nF -> FF\n");
+    // A forest whose plants each fit, but not all of them: one budget for the forest.
+    const std::string small = writeTemp("small.lsys", "n: 20\naxiom: F\nF -> FF\n");
+    const std::string many = writeTemp("many.forest", "scene: forest\ngrid: 4 4\nspacing: 40\nseed: 2\nspecies: " + small + " 1\n");
     const std::pair<std::string, std::string> runs[] = {
         {"expand " + triples, "step 19 would produce 1,162,261,467 modules"},
         {"render " + triples + " --size 64x48 -o " + triples + ".png", "step 19 would produce"},
         {"render " + forest + " --size 64x48 -o " + forest + ".png", "step 19 would produce"},
-        {"expand " + doubling, "step 26 would make 67108864 modules"},
+        {"expand " + doubling, ":2:1: step 26 would make 67,108,864 modules"},
         {"expand " + lists + " --max-memory 64", "over the memory budget of 64.0 MB"},
+        {"render " + body + " --size 64x48 -o " + body + ".png", ":2:1: step 26 would make 67,108,864 modules"},
+        {"render " + segments + " --max-memory 256 --size 64x48 -o " + segments + ".png", "drawing step 24 would take about 640.0 MB"},
+        {"export " + segments + " --max-memory 256 -o " + segments + ".glb", "drawing step 24 would take about 640.0 MB"},
+        {"render " + many + " --max-memory 256 --size 64x48 -o " + many + ".png", "plant 7 ("},
     };
     for (const auto& [args, message] : runs) {
         SCOPED_TRACE(args);
@@ -270,6 +282,8 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     }
     EXPECT_FALSE(std::filesystem::exists(triples + ".png"));
     EXPECT_FALSE(std::filesystem::exists(forest + ".png"));
+    for (const std::string& out : {body + ".png", segments + ".png", segments + ".glb", many + ".png"})
+        EXPECT_FALSE(std::filesystem::exists(out)) << out;
     // The biggest of them: L-Py's native string of 2^25 modules (the step before the limit),
     // about 210 MB here. Deriving what was asked would take terabytes.
     struct rusage usage {};

@@ -20,7 +20,7 @@ TEST(Limits, ExplosiveD0LIsRefusedBeforeAllocating) {
     EXPECT_EQ(o.predictedModules, 10'000'000u);
     EXPECT_EQ(o.message,
               "step 7 would produce 10,000,000 modules (19.1 MB), over the limit of 1,000,000 modules; "
-              "lower n or raise the limit (--max-modules)");
+              "lower n (to 6 at most) or raise the limit (--max-modules)");
     EXPECT_TRUE(d.deriveTo(6).ok());  // below the cap still works
 }
 

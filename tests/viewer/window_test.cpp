@@ -13,65 +13,11 @@
 #include <thread>
 #include <array>
 
-#include "app/image.hpp"
-#include "lpy/host.hpp"
+#include "tests/viewer/window_support.hpp"
 
 namespace sprout {
 namespace {
 namespace fs = std::filesystem;
-
-bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
-
-int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null",
-                 const std::string& server = "-screen 0 1600x1000x24") {
-    fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
-    fs::create_directories(home);
-    std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CONFIG_HOME=" + home.string() + "/config XDG_CACHE_HOME=" +
-                      home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '" + server + "' " SPROUT_BINARY " " +
-                      args + " >" + stdoutFile + " 2>/dev/null";
-    return std::system(cmd.c_str());
-}
-
-Image load(const std::string& path) {
-    Image img;
-    std::string error;
-    EXPECT_TRUE(readPng(path, img, error)) << path << ": " << error;
-    return img;
-}
-
-// Mean colour of a rectangle.
-std::array<double, 3> mean(const Image& img, int x0, int y0, int x1, int y1) {
-    std::array<double, 3> m{0, 0, 0};
-    int n = 0;
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x, ++n)
-            for (int c = 0; c < 3; ++c) m[size_t(c)] += img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
-    for (auto& v : m) v /= std::max(n, 1);
-    return m;
-}
-
-// A folder of one test's own.
-fs::path testDir(const std::string& name) {
-    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_" + name + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir;
-}
-
-// Runs the viewer on `args` with `script` (kept in `dir`): what it printed, a line each.
-std::vector<std::string> runScript(const fs::path& dir, const std::string& args, const std::string& script) {
-    std::ofstream(dir / "script.txt") << script;
-    const std::string out = (dir / "out.txt").string();
-    EXPECT_EQ(runUnderXvfb(args + " --script " + (dir / "script.txt").string(), "", out), 0);
-    std::ifstream in(out);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-}
-
-// The count of a "view_draws=N" line, -1 when it is not one.
-long viewDraws(const std::vector<std::string>& lines, size_t k) {
-    return k < lines.size() && lines[k].rfind("view_draws=", 0) == 0 ? std::stol(lines[k].substr(11)) : -1;
-}
 
 TEST(Window, ScreenshotShowsThePanelAndThePlant) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
@@ -260,108 +206,6 @@ TEST(Window, PickingInAForestNamesThePlantAndSpecies) {
     EXPECT_EQ(printed[1], "module=none");
 }
 
-// Trust before code runs, in the window: an L-Py file whose preamble writes a file is shown
-// with the trust bar and runs nothing until "Trust and run"; the answer is remembered.
-TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
-    const fs::path dir = testDir("trust_window");
-    const fs::path marker = dir / "written-by-the-model", model = dir / "model.lpy";
-    fs::remove(marker);
-    std::ofstream(model) << "import os\nopen('" << marker.string() << "', 'w').write('ran')\n"
-                         << "Axiom: _(0.3) F(3) [ + F(2) ] [ - F(2) ] F(2)\nderivation length: 0\nproduction:\nendlsystem\n";
-    const std::string before = (dir / "before.png").string(), after = (dir / "after.png").string();
-    const auto printed = runScript(dir, model.string() + " --size 1200x800",
-                                   "wait\ntrust ?\nscreenshot " + before + " 400x300\ntrust yes\nwait\nscreenshot " + after +
-                                       " 400x300\nquit\n");
-    EXPECT_EQ(printed, (std::vector<std::string>{"python=asking", "python=allowed"}));
-    EXPECT_TRUE(fs::exists(marker)) << "trusted, the model ran";
-    auto stems = [](const Image& img) {  // L-Py's default material 1, brown
-        std::size_t n = 0;
-        for (std::size_t i = 0; i < img.rgba.size(); i += 4)
-            n += img.rgba[i] > 90 && img.rgba[i] < 220 && img.rgba[i + 1] < 150 && img.rgba[i + 2] < 80 && img.rgba[i] > img.rgba[i + 2] + 50;
-        return n;
-    };
-    EXPECT_LT(stems(load(before)), 20u) << "nothing is drawn before the model is trusted";
-    EXPECT_GT(stems(load(after)), 500u) << "the trusted model is drawn";
-    // Opened again: remembered by its text's hash, it runs without asking.
-    fs::remove(marker);
-    EXPECT_EQ(runScript(dir, model.string(), "wait\ntrust ?\nquit\n"), std::vector<std::string>{"python=allowed"});
-    EXPECT_TRUE(fs::exists(marker));
-}
-
-// Issue 39: a trusted model that calls os._exit does not end the viewer: the window runs on,
-// says so at the model's line, and the script goes on to its end.
-TEST(Window, AModelCallingOsExitDoesNotEndTheViewer) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
-    const fs::path dir = testDir("exit_window");
-    const fs::path model = dir / "model.lpy";
-    std::ofstream(model) << "import os\n\nAxiom: A\nderivation length: 2\nproduction:\nA:\n    os._exit(0)\n    produce AA\nendlsystem\n";
-    const auto printed = runScript(dir, model.string() + " --size 900x600", "trust yes\nwait\nwait\ndiagnostics\nquit\n");
-    ASSERT_GE(printed.size(), 2u);
-    EXPECT_EQ(printed[0], "python=allowed");
-    EXPECT_NE(std::find(printed.begin(), printed.end(), "diagnostic=7:5: a model cannot end Sprout (os._exit)"), printed.end())
-        << (printed.size() > 1 ? printed[1] : "");
-}
-
-// Issue 39: explosive growth in the viewer is refused at once, said at the line that sets the
-// derivation length, and the last plant stays on screen.
-TEST(Window, ExplosiveGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    const fs::path dir = testDir("growth_window");
-    const fs::path grammar = dir / "boom.lsys";
-    std::ofstream(grammar) << "n: 3\naxiom: A(1)\nA(x) -> F(1)[+A(x+1)]A(x*2)[-A(x)]\n";
-    const auto start = std::chrono::steady_clock::now();
-    const auto printed = runScript(dir, grammar.string() + " --size 900x600", "wait\ndiagnostics\nset n 60\nwait\nwait\ndiagnostics\nquit\n");
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ASSERT_EQ(printed.size(), 3u) << (printed.empty() ? "" : printed.back());
-    EXPECT_EQ(printed[0], "plant=shown");
-    EXPECT_EQ(printed[1].rfind("diagnostic=1:1: step 17 would produce 581,130,730 modules", 0), 0u) << printed[1];
-    EXPECT_EQ(printed[2], "plant=shown");  // the plant of n 3 stays
-    EXPECT_LT(seconds, 60.0);  // (not timed: refused at once, this only keeps a hang from passing)
-}
-
-// L-Py's labels (@L) over the view: the window showing a plant with a label differs from the
-// same plant without one only in a small patch of the view (the text beside its point).
-TEST(Window, LpyLabelsAreShownOverTheView) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
-    const fs::path dir = testDir("labels_window");
-    Image shots[2];
-    for (int k = 0; k < 2; ++k) {
-        const fs::path model = dir / ("model" + std::to_string(k) + ".lpy"), png = dir / ("window" + std::to_string(k) + ".png");
-        std::ofstream(model) << "Axiom: _(0.2) F(3) " << (k ? "@L('Hello there', 26)" : "") << " [ + F(2) ] F(2)\n"
-                             << "derivation length: 0\nproduction:\nendlsystem\n";
-        runScript(dir, model.string() + " --size 900x600 --screenshot " + png.string(), "trust yes\nwait\n");
-        shots[k] = load(png.string());
-        ASSERT_EQ(shots[k].width, 900);
-    }
-    std::size_t differ = 0, view = 0;
-    for (int y = 0; y < shots[0].height; ++y)
-        for (int x = 430; x < shots[0].width; ++x, ++view) {
-            const std::size_t i = (std::size_t(y) * 900 + std::size_t(x)) * 4;
-            differ += std::abs(int(shots[0].rgba[i]) - int(shots[1].rgba[i])) + std::abs(int(shots[0].rgba[i + 1]) - int(shots[1].rgba[i + 1])) > 40;
-        }
-    EXPECT_GT(differ, 100u) << "the label's text";
-    EXPECT_LT(differ, view / 50) << "and nothing else";
-}
-
-// "Why this branch?" on an L-Py model: a click names the module, the step that made it and
-// the line of the production; the inspector and the rule highlight work on it too.
-TEST(Window, PickingAnLpyModelNamesItsProductionAndLine) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
-    const fs::path dir = testDir("pick_lpy");
-    std::ofstream(dir / "model.lpy") << "# picking test\nAxiom: _(0.4) A\nderivation length: 3\nproduction:\n"
-                                        "A --> F(2) [ + B ] A\nB --> F(1) B\nendlsystem\n";
-    // The string: _(0.4) F(2) [ + F(1) F(1) B ] F(2) [ + F(1) B ] F(2) [ + B ] A
-    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1300x860",
-                                   "wait\ntrust yes\nwait\npick 980 750\npick 980 100\ninspect 3 5\nhighlight-rule 6\nquit\n");
-    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "module=F index=1 step=1 rule_line=5", "module=F index=14 step=3 rule_line=5",
-                                                 "inspect: F(1)", "inspect: made at step 3 by line 6", "highlighted=3"}));
-}
-
 // The derivation inspector of the context-sensitive signal (step 2 is F [ + F B F ] F): the
 // '+' was made at step 2 by A > T -> [+FBF] (line 6), whose context matched step 1's T.
 TEST(Window, InspectorSaysWhichContextMatched) {
@@ -369,19 +213,6 @@ TEST(Window, InspectorSaysWhichContextMatched) {
     const auto printed = runScript(testDir("inspect"), "signal --size 1200x800", "wait\ninspect 2 2\nquit\n");
     EXPECT_EQ(printed, (std::vector<std::string>{"inspect: +", "inspect: made at step 2 by line 6",
                                                  "inspect: context matched in step 1: < [A (1)] > T (2)"}));
-}
-
-// The same for an L-Py model, whose rules are Python: where the context matched is kept by
-// the run. Step 2 is F F F B; its B was made by B < A --> B (line 5) from step 1's A (3),
-// whose left context was step 1's B (2).
-TEST(Window, InspectorSaysWhichContextMatchedInAnLpyModel) {
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
-    const fs::path dir = testDir("inspect_lpy");
-    std::ofstream(dir / "model.lpy") << "# a signal\nAxiom: F B A A\nderivation length: 2\nproduction:\nB < A --> B\nB --> F\nendlsystem\n";
-    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1200x800", "wait\ntrust yes\nwait\ninspect 2 3\nquit\n");
-    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "inspect: B", "inspect: made at step 2 by line 5",
-                                                 "inspect: context matched in step 1: B (2) < [A (3)] >"}));
 }
 
 // What the X server shows is what the window drew. On software GL under X a frame goes to the

@@ -1,0 +1,148 @@
+// The window on L-Py models under Xvfb: trust before their Python runs, a model that cannot
+// end the viewer, growth refused at the line that asks for it, labels, picking and the
+// inspector on Python rules.
+#include <chrono>
+
+#include "tests/viewer/window_support.hpp"
+
+namespace sprout {
+namespace {
+
+// Trust before code runs, in the window: an L-Py file whose preamble writes a file is shown
+// with the trust bar and runs nothing until "Trust and run"; the answer is remembered.
+TEST(Window, AnLpyFileRunsItsPythonOnlyOnceTrusted) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("trust_window");
+    const fs::path marker = dir / "written-by-the-model", model = dir / "model.lpy";
+    fs::remove(marker);
+    std::ofstream(model) << "import os\nopen('" << marker.string() << "', 'w').write('ran')\n"
+                         << "Axiom: _(0.3) F(3) [ + F(2) ] [ - F(2) ] F(2)\nderivation length: 0\nproduction:\nendlsystem\n";
+    const std::string before = (dir / "before.png").string(), after = (dir / "after.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1200x800",
+                                   "wait\ntrust ?\nscreenshot " + before + " 400x300\ntrust yes\nwait\nscreenshot " + after +
+                                       " 400x300\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=asking", "python=allowed"}));
+    EXPECT_TRUE(fs::exists(marker)) << "trusted, the model ran";
+    auto stems = [](const Image& img) {  // L-Py's default material 1, brown
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < img.rgba.size(); i += 4)
+            n += img.rgba[i] > 90 && img.rgba[i] < 220 && img.rgba[i + 1] < 150 && img.rgba[i + 2] < 80 && img.rgba[i] > img.rgba[i + 2] + 50;
+        return n;
+    };
+    EXPECT_LT(stems(load(before)), 20u) << "nothing is drawn before the model is trusted";
+    EXPECT_GT(stems(load(after)), 500u) << "the trusted model is drawn";
+    // Opened again: remembered by its text's hash, it runs without asking.
+    fs::remove(marker);
+    EXPECT_EQ(runScript(dir, model.string(), "wait\ntrust ?\nquit\n"), std::vector<std::string>{"python=allowed"});
+    EXPECT_TRUE(fs::exists(marker));
+}
+
+// Issue 39: a trusted model that calls os._exit does not end the viewer: the window runs on,
+// says so at the model's line, and the script goes on to its end.
+TEST(Window, AModelCallingOsExitDoesNotEndTheViewer) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("exit_window");
+    const fs::path model = dir / "model.lpy";
+    std::ofstream(model) << "import os\n\nAxiom: A\nderivation length: 2\nproduction:\nA:\n    os._exit(0)\n    produce AA\nendlsystem\n";
+    const auto printed = runScript(dir, model.string() + " --size 900x600", "trust yes\nwait\nwait\ndiagnostics\nquit\n");
+    ASSERT_GE(printed.size(), 2u);
+    EXPECT_EQ(printed[0], "python=allowed");
+    EXPECT_NE(std::find(printed.begin(), printed.end(), "diagnostic=7:5: a model cannot end Sprout (os._exit)"), printed.end())
+        << (printed.size() > 1 ? printed[1] : "");
+}
+
+// Issue 39: explosive growth in the viewer is refused at once, said at the line that sets the
+// derivation length, and the last plant stays on screen.
+TEST(Window, ExplosiveGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("growth_window");
+    const fs::path grammar = dir / "boom.lsys";
+    std::ofstream(grammar) << "n: 3\naxiom: A(1)\nA(x) -> F(1)[+A(x+1)]A(x*2)[-A(x)]\n";
+    const auto start = std::chrono::steady_clock::now();
+    const auto printed = runScript(dir, grammar.string() + " --size 900x600", "wait\ndiagnostics\nset n 60\nwait\nwait\ndiagnostics\nquit\n");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(printed.size(), 3u) << (printed.empty() ? "" : printed.back());
+    EXPECT_EQ(printed[0], "plant=shown");
+    EXPECT_EQ(printed[1].rfind("diagnostic=1:1: step 17 would produce 581,130,730 modules", 0), 0u) << printed[1];
+    EXPECT_EQ(printed[2], "plant=shown");  // the plant of n 3 stays
+    EXPECT_LT(seconds, 60.0);  // (not timed: refused at once, this only keeps a hang from passing)
+}
+
+// L-Py's labels (@L) over the view: the window showing a plant with a label differs from the
+// same plant without one only in a small patch of the view (the text beside its point).
+TEST(Window, LpyLabelsAreShownOverTheView) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("labels_window");
+    Image shots[2];
+    for (int k = 0; k < 2; ++k) {
+        const fs::path model = dir / ("model" + std::to_string(k) + ".lpy"), png = dir / ("window" + std::to_string(k) + ".png");
+        std::ofstream(model) << "Axiom: _(0.2) F(3) " << (k ? "@L('Hello there', 26)" : "") << " [ + F(2) ] F(2)\n"
+                             << "derivation length: 0\nproduction:\nendlsystem\n";
+        runScript(dir, model.string() + " --size 900x600 --screenshot " + png.string(), "trust yes\nwait\n");
+        shots[k] = load(png.string());
+        ASSERT_EQ(shots[k].width, 900);
+    }
+    std::size_t differ = 0, view = 0;
+    for (int y = 0; y < shots[0].height; ++y)
+        for (int x = 430; x < shots[0].width; ++x, ++view) {
+            const std::size_t i = (std::size_t(y) * 900 + std::size_t(x)) * 4;
+            differ += std::abs(int(shots[0].rgba[i]) - int(shots[1].rgba[i])) + std::abs(int(shots[0].rgba[i + 1]) - int(shots[1].rgba[i + 1])) > 40;
+        }
+    EXPECT_GT(differ, 100u) << "the label's text";
+    EXPECT_LT(differ, view / 50) << "and nothing else";
+}
+
+// "Why this branch?" on an L-Py model: a click names the module, the step that made it and
+// the line of the production; the inspector and the rule highlight work on it too.
+TEST(Window, PickingAnLpyModelNamesItsProductionAndLine) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("pick_lpy");
+    std::ofstream(dir / "model.lpy") << "# picking test\nAxiom: _(0.4) A\nderivation length: 3\nproduction:\n"
+                                        "A --> F(2) [ + B ] A\nB --> F(1) B\nendlsystem\n";
+    // The string: _(0.4) F(2) [ + F(1) F(1) B ] F(2) [ + F(1) B ] F(2) [ + B ] A
+    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1300x860",
+                                   "wait\ntrust yes\nwait\npick 980 750\npick 980 100\ninspect 3 5\nhighlight-rule 6\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "module=F index=1 step=1 rule_line=5", "module=F index=14 step=3 rule_line=5",
+                                                 "inspect: F(1)", "inspect: made at step 3 by line 6", "highlighted=3"}));
+}
+
+// The same for an L-Py model, whose rules are Python: where the context matched is kept by
+// the run. Step 2 is F F F B; its B was made by B < A --> B (line 5) from step 1's A (3),
+// whose left context was step 1's B (2).
+TEST(Window, InspectorSaysWhichContextMatchedInAnLpyModel) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("inspect_lpy");
+    std::ofstream(dir / "model.lpy") << "# a signal\nAxiom: F B A A\nderivation length: 2\nproduction:\nB < A --> B\nB --> F\nendlsystem\n";
+    const auto printed = runScript(dir, (dir / "model.lpy").string() + " --size 1200x800", "wait\ntrust yes\nwait\ninspect 2 3\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "inspect: B", "inspect: made at step 2 by line 5",
+                                                 "inspect: context matched in step 1: B (2) < [A (3)] >"}));
+}
+
+// Issue 39: the same in an L-Py model whose Python body doubles the string: refused before its
+// first step, at the `derivation length:` line; the plant of the derivation length before stays.
+TEST(Window, LpyGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("growth_lpy_window");
+    const fs::path model = dir / "boom.lpy";
+    const std::string head = "Axiom: _(0.2) A(1)\\nderivation length: ";
+    const std::string rules = "\\nproduction:\\nA(x):\\n    y = x*2\\n    produce F(1) [ + A(x+1) ] A(y)\\nendlsystem\\n";
+    std::ofstream(model) << "Axiom: _(0.2) A(1)\nderivation length: 3\nproduction:\nA(x):\n    y = x*2\n    produce F(1) [ + A(x+1) ] A(y)\nendlsystem\n";
+    const auto start = std::chrono::steady_clock::now();
+    const auto printed = runScript(dir, model.string() + " --size 900x600",
+                                   "trust yes\nwait\ndiagnostics\ntext " + head + "40" + rules + "\nwait\nwait\ndiagnostics\nquit\n");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(printed.size(), 4u) << (printed.empty() ? "" : printed.back());
+    EXPECT_EQ(printed[1], "plant=shown");
+    EXPECT_EQ(printed[2].rfind("diagnostic=2:1: step 24 would make 83,886,077 modules", 0), 0u) << printed[2];
+    EXPECT_EQ(printed[3], "plant=shown");  // the plant of derivation length 3 stays
+    EXPECT_LT(seconds, 60.0);  // (not timed: refused at once, this only keeps a hang from passing)
+}
+
+}  // namespace
+}  // namespace sprout

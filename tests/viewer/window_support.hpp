@@ -1,0 +1,74 @@
+#pragma once
+// What the window tests share (tests/viewer/window_test.cpp, window_lpy_test.cpp): the real
+// viewer run under Xvfb, with a script, and its screenshots read back.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/image.hpp"
+#include "lpy/host.hpp"
+
+namespace sprout {
+namespace fs = std::filesystem;
+
+inline bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+inline int runUnderXvfb(const std::string& args, const std::string& env = "", const std::string& stdoutFile = "/dev/null",
+                 const std::string& server = "-screen 0 1600x1000x24") {
+    fs::path home = fs::path(testing::TempDir()) / ("sprout_window_home_" + std::to_string(::getpid()));
+    fs::create_directories(home);
+    std::string cmd = "cd " + home.string() + " && XDG_STATE_HOME=" + home.string() + "/state XDG_CONFIG_HOME=" + home.string() + "/config XDG_CACHE_HOME=" +
+                      home.string() + "/cache " + env + " timeout 120 xvfb-run -a -s '" + server + "' " SPROUT_BINARY " " +
+                      args + " >" + stdoutFile + " 2>/dev/null";
+    return std::system(cmd.c_str());
+}
+
+inline Image load(const std::string& path) {
+    Image img;
+    std::string error;
+    EXPECT_TRUE(readPng(path, img, error)) << path << ": " << error;
+    return img;
+}
+
+// Mean colour of a rectangle.
+inline std::array<double, 3> mean(const Image& img, int x0, int y0, int x1, int y1) {
+    std::array<double, 3> m{0, 0, 0};
+    int n = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x, ++n)
+            for (int c = 0; c < 3; ++c) m[size_t(c)] += img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
+    for (auto& v : m) v /= std::max(n, 1);
+    return m;
+}
+
+// A folder of one test's own.
+inline fs::path testDir(const std::string& name) {
+    const fs::path dir = fs::path(testing::TempDir()) / ("sprout_" + name + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Runs the viewer on `args` with `script` (kept in `dir`): what it printed, a line each.
+inline std::vector<std::string> runScript(const fs::path& dir, const std::string& args, const std::string& script) {
+    std::ofstream(dir / "script.txt") << script;
+    const std::string out = (dir / "out.txt").string();
+    EXPECT_EQ(runUnderXvfb(args + " --script " + (dir / "script.txt").string(), "", out), 0);
+    std::ifstream in(out);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+// The count of a "view_draws=N" line, -1 when it is not one.
+inline long viewDraws(const std::vector<std::string>& lines, size_t k) {
+    return k < lines.size() && lines[k].rfind("view_draws=", 0) == 0 ? std::stol(lines[k].substr(11)) : -1;
+}
+
+}  // namespace sprout
