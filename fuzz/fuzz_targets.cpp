@@ -41,6 +41,7 @@ using namespace sprout;
     auto d = std::make_unique<Derivation>(r.grammar, o);
     n = std::min(r.grammar->settings.iterations, maxSteps);
     if (!d->deriveTo(n).ok()) return nullptr;
+    if (!checkDrawing(*d->step(n), *r.grammar, o.limits, n).ok()) return nullptr;  // as render and the viewer
     return d;
 }
 

@@ -54,7 +54,27 @@ TurtleStats interpret(const ModuleString& s, const Grammar& g, const TurtleOptio
 }
 
 DeriveOutcome checkDrawing(const ModuleString& s, const Grammar& g, const DeriveLimits& limits, int step) {
-    if (!g.interpretation.productions.empty()) return {};
+    if (!g.interpretation.productions.empty()) {
+        // The string the interpretation rules make (their first level), bounded per symbol as
+        // a production step is: what is drawn from it is not known before it is made.
+        StepRewriter rewriter(g, g.interpretation);
+        std::uint64_t modules = 0, params = 0;
+        rewriter.bound(s, modules, params, true);
+        const std::uint64_t made = modules * sizeof(SymbolId) + params * sizeof(double), total = made + s.bytes();
+        if (modules <= limits.maxModules && total <= limits.maxBytes) return {};
+        DeriveOutcome o;
+        o.status = DeriveStatus::TooBig;
+        o.step = step;
+        o.predictedModules = modules;
+        o.predictedBytes = total;
+        o.message = "drawing step " + std::to_string(step) + ": its interpretation rules would make up to " + withThousands(modules) +
+                    " modules (" + humanBytes(made) + "), with the string " + humanBytes(total) + ", over the " +
+                    (modules > limits.maxModules ? "limit of " + withThousands(limits.maxModules) + " modules; lower n below " +
+                                                       std::to_string(step) + " or raise the limit (--max-modules)"
+                                                 : "memory budget of " + humanBytes(limits.maxBytes) + "; lower n below " +
+                                                       std::to_string(step) + " or raise the budget (--max-memory)");
+        return o;
+    }
     std::vector<std::uint8_t> draws(g.alphabet.size());
     for (size_t k = 0; k < draws.size(); ++k) draws[k] = drawsSegment(g.alphabet[SymbolId(k)].name);
     std::uint64_t segments = 0;

@@ -262,6 +262,8 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     // A forest whose plants each fit, but not all of them: one budget for the forest.
     const std::string small = writeTemp("small.lsys", "n: 20\naxiom: F\nF -> FF\n");
     const std::string many = writeTemp("many.forest", "scene: forest\ngrid: 4 4\nspacing: 40\nseed: 2\nspecies: " + small + " 1\n");
+    // cpfg's homomorphism: the string its rules make to be drawn (five modules for each A).
+    const std::string homomorphism = writeTemp("homomorphism.l", "derivation length: 24\nAxiom: A\nA --> AA\nhomomorphism:\nA --> F+F-F\nendlsystem\n");
     const std::pair<std::string, std::string> runs[] = {
         {"expand " + triples, "step 19 would produce 1,162,261,467 modules"},
         {"render " + triples + " --size 64x48 -o " + triples + ".png", "step 19 would produce"},
@@ -272,6 +274,8 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
         {"render " + segments + " --max-memory 256 --size 64x48 -o " + segments + ".png", "drawing step 24 would take about 640.0 MB"},
         {"export " + segments + " --max-memory 256 -o " + segments + ".glb", "drawing step 24 would take about 640.0 MB"},
         {"render " + many + " --max-memory 256 --size 64x48 -o " + many + ".png", "plant 7 ("},
+        {"render " + homomorphism + " --max-memory 64 --size 64x48 -o " + homomorphism + ".png",
+         "drawing step 24: its interpretation rules would make up to 83,886,080 modules"},
     };
     for (const auto& [args, message] : runs) {
         SCOPED_TRACE(args);
@@ -282,7 +286,7 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     }
     EXPECT_FALSE(std::filesystem::exists(triples + ".png"));
     EXPECT_FALSE(std::filesystem::exists(forest + ".png"));
-    for (const std::string& out : {body + ".png", segments + ".png", segments + ".glb", many + ".png"})
+    for (const std::string& out : {body + ".png", segments + ".png", segments + ".glb", many + ".png", homomorphism + ".png"})
         EXPECT_FALSE(std::filesystem::exists(out)) << out;
     // The biggest of them: L-Py's native string of 2^25 modules (the step before the limit),
     // about 210 MB here. Deriving what was asked would take terabytes.
