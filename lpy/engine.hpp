@@ -412,6 +412,11 @@ Engine* setCurrentEngine(Engine* e);
 // interned into it), an lstring's arguments are evaluated in `ns`.
 LString parseLstring(std::string_view text, ModuleClasses& classes, py::handle ns);
 void appendValue(LString& out, py::handle item, size_t classCount);
-std::string writeLstring(const LString& s, const ModuleClasses& classes);
+// As L-Py writes a string (its AxialTree::str, or repr: each parameter's Python str(), or
+// repr(); a float as Python writes it, `7.0`).
+std::string writeLstring(const LString& s, const ModuleClasses& classes, bool repr = false);
+// Python's repr of a float: the shortest digits that read back the same, with `.0` on a whole
+// number, and an exponent below 1e-4 and from 1e16 on (`1e-05`, `1e+16`).
+void appendPythonFloat(std::string& out, double v);
 
 }  // namespace sprout::lpy

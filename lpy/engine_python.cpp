@@ -2,6 +2,10 @@
 // axiom gives (produce, nproduce, a returned list, Lstrings, modules and module classes made in
 // Python) made into modules, an Lstring's text read with its arguments evaluated in the
 // model's namespace, and strings written as text (`sprout expand`) as Python writes them.
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
 #include "core/language/module_string.hpp"
 #include "lpy/engine.hpp"
 
@@ -107,6 +111,54 @@ void Engine::produce(py::handle items, bool last) {
     if (last) m_produced = true;
 }
 
+void appendPythonFloat(std::string& out, double v) {
+    if (std::isnan(v)) {
+        out += "nan";
+        return;
+    }
+    if (std::isinf(v)) {
+        out += v < 0 ? "-inf" : "inf";
+        return;
+    }
+    // The shortest digits that round-trip, as d.ddde±x; then Python's layout (its
+    // format_float_short, mode 'r'): value = 0.DIGITS x 10^point.
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
+    std::string_view sci(buf, size_t(r.ptr - buf));
+    const size_t e = sci.find('e');
+    std::string digits;
+    bool negative = false;
+    for (char c : sci.substr(0, e)) {
+        if (c == '-') negative = true;
+        else if (c != '.') digits += c;
+    }
+    int exponent = 0;
+    std::from_chars(sci.data() + e + 1 + (sci[e + 1] == '+'), sci.data() + sci.size(), exponent);
+    while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
+    const int point = exponent + 1, n = int(digits.size());
+    if (negative) out += '-';
+    if (point <= -4 || point > 16) {
+        out += digits[0];
+        if (n > 1) out += '.', out.append(digits, 1, std::string::npos);
+        const int x = point - 1;
+        out += x < 0 ? "e-" : "e+";
+        if (std::abs(x) < 10) out += '0';
+        out += std::to_string(std::abs(x));
+    } else if (point <= 0) {
+        out += "0.";
+        out.append(size_t(-point), '0');
+        out += digits;
+    } else if (point >= n) {
+        out += digits;
+        out.append(size_t(point - n), '0');
+        out += ".0";
+    } else {
+        out.append(digits, 0, size_t(point));
+        out += '.';
+        out.append(digits, size_t(point), std::string::npos);
+    }
+}
+
 std::string Engine::text(const NumString& s) const {
     std::string out;
     const double* v = s.params.data();
@@ -117,7 +169,8 @@ std::string Engine::text(const NumString& s) const {
         out += '(';
         for (std::uint32_t k = 0; k < m.n; ++k) {
             if (k) out += ',';
-            appendNumber(out, v[k]);
+            if (m.ints >> k & 1) out += std::to_string(static_cast<long long>(v[k]));
+            else appendPythonFloat(out, v[k]);
         }
         v += m.n;
         out += ')';
@@ -127,7 +180,7 @@ std::string Engine::text(const NumString& s) const {
 
 std::string Engine::text(const LString& s) const { return writeLstring(s, m_tr.classes); }
 
-std::string writeLstring(const LString& s, const ModuleClasses& classes) {
+std::string writeLstring(const LString& s, const ModuleClasses& classes, bool repr) {
     std::string out;
     for (const LModule& m : s) {
         out += m.cls >= 0 && size_t(m.cls) < classes.size() ? classes.name(m.cls) : std::string("?");
@@ -137,18 +190,19 @@ std::string writeLstring(const LString& s, const ModuleClasses& classes) {
         for (Py_ssize_t k = 0; k < n; ++k) {
             if (k) out += ',';
             PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), k);
-            // Ints past 2^53 as Python writes them: a double would round them.
-            bool smallInt = false;
-            if (PyLong_Check(v) && !PyBool_Check(v)) {
+            if (PyFloat_CheckExact(v)) {
+                appendPythonFloat(out, PyFloat_AS_DOUBLE(v));
+                continue;
+            }
+            if (PyLong_CheckExact(v)) {
                 int overflow = 0;
                 const long long i = PyLong_AsLongLongAndOverflow(v, &overflow);
-                smallInt = !overflow && i > -(1ll << 53) && i < (1ll << 53);
+                if (!overflow) {
+                    out += std::to_string(i);
+                    continue;
+                }
             }
-            if (PyFloat_Check(v) || smallInt) {
-                appendNumber(out, PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyLong_AsDouble(v));
-            } else {
-                out += py::repr(v).cast<std::string>();
-            }
+            out += (repr ? py::repr(v) : py::str(v)).cast<std::string>();
         }
         out += ')';
     }

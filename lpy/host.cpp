@@ -450,8 +450,26 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
             continue;
         }
         const glm::vec3 v = name[1] == 'P' ? f.position : name[1] == 'H' ? f.heading : name[1] == 'U' ? f.up : name[1] == 'L' ? f.left : -f.left;
-        if (n == 3) m.args = py::make_tuple(double(v.z), double(v.x), double(v.y));
-        else m.args = py::make_tuple(lpyVector(v));
+        // As L-Py's ParamModule::_setValues: three values or more, the first three are x, y, z;
+        // two, x and y; one number, x; one other value (a Vector3, a list), its first items
+        // set in place; none, a Vector3.
+        const double xyz[3] = {double(v.z), double(v.x), double(v.y)};
+        if (n >= 2) {
+            py::list args(m.args);
+            for (Py_ssize_t k = 0; k < std::min<Py_ssize_t>(n, 3); ++k) args[size_t(k)] = py::float_(xyz[k]);
+            m.args = py::tuple(args);
+        } else if (n == 1) {
+            py::object arg = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), 0));
+            if (PyFloat_Check(arg.ptr()) || PyLong_Check(arg.ptr())) {
+                m.args = py::make_tuple(xyz[0]);
+            } else {
+                const Py_ssize_t size = PyObject_Length(arg.ptr());
+                if (size < 0) throw py::error_already_set();
+                for (Py_ssize_t k = 0; k < std::min<Py_ssize_t>(size, 3); ++k) arg.attr("__setitem__")(k, xyz[k]);
+            }
+        } else {
+            m.args = py::make_tuple(lpyVector(v));
+        }
     }
 }
 

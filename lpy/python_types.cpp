@@ -266,7 +266,7 @@ void defineTypes(py::module_& m) {
                             return out;
                         }))
         .def("__str__", [](PyModule& self) { return writeLstring({self.get()}, names()); })
-        .def("__repr__", [](PyModule& self) { return writeLstring({self.get()}, names()); });
+        .def("__repr__", [](PyModule& self) { return writeLstring({self.get()}, names(), true); });
 
     py::class_<PyLstring>(m, "Lstring")
         .def(py::init([] { return PyLstring{std::make_shared<LString>()}; }))
@@ -418,7 +418,7 @@ void defineTypes(py::module_& m) {
         .def(py::pickle([](const PyLstring& s) { return stateOf(s.get()); },
                         [](py::list state) { return PyLstring{std::make_shared<LString>(fromState(state))}; }))
         .def("__str__", [](const PyLstring& s) { return writeLstring(s.get(), names()); })
-        .def("__repr__", [](const PyLstring& s) { return "AxialTree(" + writeLstring(s.get(), names()) + ")"; });  // as L-Py writes it
+        .def("__repr__", [](const PyLstring& s) { return "AxialTree(" + writeLstring(s.get(), names(), true) + ")"; });  // as L-Py writes it
 }
 
 }  // namespace sprout::lpy

@@ -497,8 +497,8 @@ class ParameterSet:
     def __contains__(self, name):
         return name in self.__dict__
 
-    def __repr__(self):
-        return "ParameterSet(%s)" % ", ".join("%s=%r" % kv for kv in self.__dict__.items())
+    def __repr__(self):  # as L-Py writes it: ParameterSet(length=2,width=0.1)
+        return "%s(%s)" % (type(self).__name__, ",".join("%s=%r" % kv for kv in self.__dict__.items()))
 
 
 def makestring(text):

@@ -8,24 +8,36 @@ from openalea.plantgl._scene import Polyline
 from openalea.plantgl._vectors import Vector2, Vector3, Vector4, cross
 
 
+def _point_text(p, n):
+    """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
+    return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
+
+
 class _Points(list):
+    _n = 3
+
     def __init__(self, *args):
         if len(args) == 1 and not isinstance(args[0], (int, float)):
             list.__init__(self, [tuple(p) for p in args[0]])
         else:
             list.__init__(self, args)
 
+    def __repr__(self):  # Point3Array([Vector3(1,2,3),Vector3(4,5,6)])
+        return "%s([%s])" % (type(self).__name__, ",".join(_point_text(p, self._n) for p in self))
+
+    __str__ = __repr__
+
 
 class Point2Array(_Points):
-    pass
+    _n = 2
 
 
 class Point3Array(_Points):
-    pass
+    _n = 3
 
 
 class Point4Array(_Points):
-    pass
+    _n = 4
 
 
 class RealArray(list):
@@ -38,10 +50,36 @@ class RealArray(list):
         else:
             list.__init__(self, [float(v) for v in values])
 
+    def __repr__(self):  # RealArray([0.0,1.5])
+        return "RealArray([%s])" % ",".join(repr(float(v)) for v in self)
+
+    __str__ = __repr__
+
 
 class Point4Matrix(list):
     def __init__(self, rows=()):
         list.__init__(self, [[tuple(p) for p in row] for row in rows])
+
+    def __repr__(self):  # Point4Matrix([[Vector4(0,0,0,1),...],[...]])
+        return "Point4Matrix([%s])" % ",".join("[%s]" % ",".join(_point_text(p, 4) for p in row) for row in self)
+
+    __str__ = __repr__
+
+
+def _default_knots(knots, n, degree):
+    """PlantGL's NurbsCurve::defaultKnotListTest: whether `knots` are the uniform clamped ones
+    (then a curve's text leaves them out)."""
+    if knots is None:
+        return True
+    size = len(knots)
+    if size != n + degree + 1:
+        return False
+    if any(not abs(knots[i] - knots[0]) < 1e-10 for i in range(1, degree + 1)):
+        return False
+    step = 1.0 / (size - 2 * degree - 1) if size - 2 * degree - 1 else float("inf")
+    if any(not abs(abs(knots[j + 1] - knots[j]) - step) < 1e-5 for j in range(degree + 1, size - degree - 1)):
+        return False
+    return all(abs(knots[k] - knots[-1]) < 1e-10 for k in range(size - degree - 1, size))
 
 
 def _uniform_clamped_knots(n, degree):
@@ -139,6 +177,23 @@ class NurbsCurve2D:
         """PlantGL's actions on a curve: a Discretizer gets its polyline (the curve's stride)."""
         return action.process(self)
 
+    def __repr__(self):
+        """As PlantGL writes a curve (its nc2_repr): the control points, then what is not the
+        default (degree 3, the uniform knots, stride 30, width 1)."""
+        n = self._dim + 1
+        text = "%s(%s([%s])" % (type(self).__name__, "Point%dArray" % n, ",".join(_point_text(p, n) for p in self.ctrlPointList))
+        if self.degree != 3:
+            text += ", degree = %d" % self.degree
+        if not _default_knots(self.knotList, len(self.ctrlPointList), self.degree):
+            text += ", knotList = " + repr(RealArray(self.knotList))
+        if self.stride != 30:
+            text += ", stride = %d" % self.stride
+        if self.width != 1:
+            text += ", width = %d" % int(self.width)
+        return text + ")"
+
+    __str__ = __repr__
+
 
 class NurbsCurve(NurbsCurve2D):
     """A 3D NURBS curve; control points are (x, y, z, weight)."""
@@ -149,6 +204,16 @@ class BezierCurve2D(NurbsCurve2D):
     def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
         n = len(list(ctrlPointList))
         NurbsCurve2D.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
+
+    def __repr__(self):  # its control points, its stride and width where not the default
+        text = "BezierCurve2D(Point3Array([%s])" % ",".join(_point_text(p, 3) for p in self.ctrlPointList)
+        if self.stride != 30:
+            text += ", stride = %d" % self.stride
+        if self.width != 1:
+            text += ", width = %d" % int(self.width)
+        return text + ")"
+
+    __str__ = __repr__
 
 
 class Polyline2D:
@@ -174,6 +239,11 @@ class Polyline2D:
 
     def points(self, samples=None):
         return list(self.pointList)
+
+    def __repr__(self):  # Polyline2D(Point2Array([Vector2(0,0),Vector2(1,1)]))
+        return "Polyline2D(Point2Array([%s]))" % ",".join(_point_text(p, 2) for p in self.pointList)
+
+    __str__ = __repr__
 
     def apply(self, action):
         return action.process(self)
@@ -253,6 +323,23 @@ class NurbsPatch:
         self.udegree, self.vdegree = int(udegree), int(vdegree)
         self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
         self.name = ''
+
+    def __repr__(self):
+        """As PlantGL writes a patch (its np_repr): what is not the default after the points."""
+        rows, cols = len(self.ctrlPointMatrix), len(self.ctrlPointMatrix[0]) if self.ctrlPointMatrix else 0
+        text = "NurbsPatch(" + repr(Point4Matrix(self.ctrlPointMatrix))
+        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
+            if degree != 3:
+                text += ", %sdegree = %d" % (name, degree)
+        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
+            if not _default_knots(knots, n, degree):
+                text += ", %sknotList = %r" % (name, RealArray(knots))
+        for name, stride in (("u", self.ustride), ("v", self.vstride)):
+            if stride != 30:
+                text += ", %sstride = %d" % (name, stride)
+        return text + ")"
+
+    __str__ = __repr__
 
     def getPointAt(self, u, v):
         rows = [NurbsCurve([p for p in row], self.vdegree, self.vknotList) for row in self.ctrlPointMatrix]

@@ -93,8 +93,8 @@ class _Vec:
             self._v = [a / n for a in self._v]
         return n
 
-    def __repr__(self):
-        return "%s(%s)" % (type(self).__name__, ", ".join("%g" % a for a in self._v))
+    def __repr__(self):  # as PlantGL writes it: Vector3(0.123457,2,1e-07)
+        return "%s(%s)" % (type(self).__name__, ",".join("%g" % a for a in self._v))
 
     def __reduce__(self):
         return (type(self), tuple(self._v))
