@@ -130,10 +130,22 @@ class NurbsCurve2D:
         return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
 
     def getTangentAt(self, u):
-        a, b = self.firstKnot, self.lastKnot
-        h = (b - a) * 1e-4
-        p0, p1 = self.getPointAt(max(a, u - h)), self.getPointAt(min(b, u + h))
-        return (p1 - p0).normed()
+        """The curve's first derivative at u, not normalised (PlantGL's getTangentAt): the
+        derivative of the rational curve, (A' - w' C) / w, from the B-spline of the weighted
+        control points and the one of their differences (degree one less)."""
+        k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
+        u = max(self.firstKnot, min(self.lastKnot, u))
+        h = [[pt[c] * pt[dim] for c in range(dim)] + [pt[dim]] for pt in pts]
+        a = _de_boor(h, p, k, u)
+        if p < 1 or len(pts) < 2:
+            return [Vector2, Vector3][dim - 2](*([0.0] * dim))
+        q = []
+        for i in range(len(pts) - 1):
+            den = k[i + p + 1] - k[i + 1]
+            q.append([p * (h[i + 1][c] - h[i][c]) / den if den else 0.0 for c in range(dim + 1)])
+        da = _de_boor(q, p - 1, k[1:-1], u)
+        w = a[dim] or 1.0
+        return [Vector2, Vector3][dim - 2](*[(da[c] - da[dim] * a[c] / w) / w for c in range(dim)])
 
     def getNormalAt(self, u):
         t = self.getTangentAt(u)
@@ -269,42 +281,61 @@ class Discretizer:
 
 
 class QuantisedFunction:
-    """y = f(x) sampled from a 2D curve over its x range (PlantGL's QuantisedFunction)."""
+    """y = f(x) from a 2D curve, as PlantGL's QuantisedFunction makes it: `sampling` values at
+    evenly spaced x over the curve's x range, each the y of the curve's point found by bisecting
+    its parameter until x is within 1e-5 (PlantGL's _computeValue), read back by linear
+    interpolation between the two samples around x."""
 
     def __init__(self, curve, sampling=100, clamped=True):
         if isinstance(curve, (list, tuple)):
             curve = Polyline2D(curve)
-        n = max(2, int(sampling))
+        n = max(3, int(sampling))
         a, b = curve.firstKnot, curve.lastKnot
-        pts = sorted((tuple(curve.getPointAt(a + (b - a) * i / (n - 1))) for i in range(n)))
-        self._x = [p[0] for p in pts]
-        self._y = [p[1] for p in pts]
+        first, last = curve.getPointAt(a), curve.getPointAt(b)
+        self._first, self._last = first[0], last[0]
+        extent = self._last - self._first
+        self._values = [self._value(curve, extent * i / (n - 1) + self._first, a, b, first, last) for i in range(n)]
         self.clamped = clamped
+
+    @staticmethod
+    def _value(curve, x, low, high, first, last):
+        if x == first[0]:
+            return first[1]
+        if x == last[0]:
+            return last[1]
+        for _ in range(200):  # PlantGL loops until it is within 1e-5 (a curve not monotonous in x never ends there)
+            check = (low + high) / 2.0
+            p = curve.getPointAt(check)
+            if p[0] > x:
+                high = check
+            else:
+                low = check
+            if not abs(p[0] - x) > 1e-5:
+                break
+        return p[1]
 
     @property
     def firstx(self):
-        return self._x[0]
+        return self._first
 
     @property
     def lastx(self):
-        return self._x[-1]
+        return self._last
+
+    @property
+    def sampling(self):
+        return len(self._values)
 
     def __call__(self, x):
-        xs, ys = self._x, self._y
-        if x <= xs[0]:
-            return ys[0]
-        if x >= xs[-1]:
-            return ys[-1]
-        lo, hi = 0, len(xs) - 1
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if xs[mid] <= x:
-                lo = mid
-            else:
-                hi = mid
-        dx = xs[hi] - xs[lo]
-        f = (x - xs[lo]) / dx if dx else 0.0
-        return ys[lo] + (ys[hi] - ys[lo]) * f
+        values, n = self._values, len(self._values)
+        first, last = self._first, self._last
+        x = min(max(x, first), last)  # (PlantGL clamps when not `clamped`, and errs when it is)
+        index = (n - 1) * (x - first) / (last - first) if last != first else 0.0
+        floor = int(_math.floor(index))
+        diff = index - floor
+        if floor >= n - 1 or abs(diff) < 1e-5:
+            return values[min(floor, n - 1)]
+        return (1 - diff) * values[floor] + diff * values[floor + 1]
 
     getValue = __call__
 
