@@ -109,7 +109,7 @@ void Engine::bind() {
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
-        if (rule.kind == RuleKind::Production) {
+        if (rule.kind != RuleKind::Decomposition) {
             std::function<bool(const PatternModule&)> query = [&](const PatternModule& p) {
                 if (p.cls >= 0 && size_t(p.cls) < classes && isQuery(m_tr.classes.name(p.cls))) return true;
                 for (const auto& alt : p.alternatives)
@@ -117,7 +117,9 @@ void Engine::bind() {
                 return std::any_of(p.repeat.begin(), p.repeat.end(), query);
             };
             for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
-                m_queryRules = m_queryRules || std::any_of(part->begin(), part->end(), query);
+                if (!std::any_of(part->begin(), part->end(), query)) continue;
+                else if (rule.kind == RuleKind::Interpretation) interpretationReadsQueries = true;
+                else m_queryRules = true, m_queryGroups.insert(rule.group);
         }
         for (const auto* part : {&rule.left, &rule.newLeft, &rule.pred, &rule.newRight, &rule.right})
             for (const auto& p : *part) compile(p);
@@ -207,7 +209,9 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         // StartEach may set them).
         readMatchingOptions();
         LString next;
-        if (m_hasKind[prod] && m_queryRules && fillQueries) fillQueries(s);
+        // As L-Py: the turtle fills the query modules when the rules of the group in use (with
+        // group 0's) read one.
+        if (m_hasKind[prod] && fillQueries && (m_queryGroups.count(0) || m_queryGroups.count(group))) fillQueries(s);
         auto matched = contexts ? std::make_shared<ContextMatches>() : nullptr;
         if (m_hasKind[prod]) {
             struct Keep {  // where the pass's contexts matched, until it ends (or throws)
@@ -232,7 +236,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         // End(lstring, scene): the scene of the last step (EndEach's, or made now).
         py::object fn = m_ns.contains("End") ? py::object(m_ns["End"]) : py::object();
         if (fn && arityOf(fn) >= 2 && sceneOf) {
-            py::object scene = lastScene && !lastScene.is_none() ? lastScene : sceneOf(s);
+            py::object scene = lastScene && !lastScene.is_none() ? lastScene : sceneOfFilled(s);
             auto shared = std::make_shared<LString>(s);
             py::object ret = fn(py::cast(PyLstring{shared}), scene);
             s = *shared;
@@ -285,6 +289,18 @@ void Engine::insertSelection(LString& s) {
         if (p < size) s.insert(s.begin() + std::ptrdiff_t(p + added++), LModule{x, py::tuple()});
 }
 
+py::object Engine::sceneOfFilled(LString& s) {
+    // L-Py draws the scene a hook receives from the string itself: its turtle writes the
+    // query modules (?P, ?H...) it passes, in the string the hook then reads.
+    if (fillQueries)
+        for (const LModule& m : s)
+            if (isQuery(m_tr.classes.name(m.cls))) {
+                fillQueries(s);
+                break;
+            }
+    return sceneOf(s);
+}
+
 void Engine::endEach(LString& s) {
     lastScene = py::none();
     py::object fn = m_ns.contains("EndEach") ? py::object(m_ns["EndEach"]) : py::object();
@@ -292,7 +308,7 @@ void Engine::endEach(LString& s) {
         callHook("EndEach", &s, nullptr, &s);
         return;
     }
-    py::object scene = frameDisplayed && sceneOf ? sceneOf(s) : py::object(py::none());
+    py::object scene = frameDisplayed && sceneOf ? sceneOfFilled(s) : py::object(py::none());
     auto shared = std::make_shared<LString>(s);
     py::object ret = fn(py::cast(PyLstring{shared}), scene);
     s = *shared;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <unordered_map>
+#include <set>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -154,6 +155,11 @@ public:
     // The scene the turtle draws from a string (a PlantGL Scene in Python), for
     // EndEach(lstring, scene); set by the host. Without it EndEach receives None.
     std::function<py::object(const LString&)> sceneOf;
+    py::object sceneOfFilled(LString& s);
+    // An interpretation rule's header has a query module (L-Py's turtle fills a query module
+    // as it passes it, before the rules after it are tried: host.cpp's fillQueries then walks
+    // twice where a query module had no value yet).
+    bool interpretationReadsQueries = false;  // sceneOf, the string's query modules filled first (as L-Py's turtle fills them)
     // L-Py's frame display: EndEach gets a scene at the steps whose frame is shown (every
     // step while animating, else the last of a derive call); what it left as the scene to
     // show (lastScene: the one computed, the one it returned, None when it changed the string).
@@ -298,6 +304,7 @@ private:
     std::unordered_map<int, Index> m_index[3];  // per kind (kindIndex): group -> index
     bool m_hasKind[3] = {false, false, false};
     bool m_queryRules = false;  // a production's header has a query module
+    std::set<int> m_queryGroups;  // the groups of those productions
 public:
     // The native path's rules (lpy/native_rules.cpp): the class and arity they match, the modules
     // they make with their arguments compiled (Sprout's expressions on the matched numbers).

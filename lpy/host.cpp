@@ -427,7 +427,23 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
 // with its interpretation rules drawn by a turtle that keeps no picture, and each query
 // module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
 // The k-th query module of the interpreted string is the k-th of the string.
+namespace {
+void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d);
+}  // namespace
+
 void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
+    // L-Py's turtle fills each query module as it passes it, and the interpretation rules after
+    // it see its value. Sprout interprets first, then walks: where a query module had no value
+    // yet and an interpretation rule reads one, the walk is made again with the values filled.
+    bool bare = false;
+    for (const LModule& m : s)
+        if (Engine::isQuery(engine.translation().classes.name(m.cls)) && (!m.args || PyTuple_GET_SIZE(m.args.ptr()) == 0)) bare = true;
+    fillQueriesOnce(engine, s, d);
+    if (bare && engine.interpretationReadsQueries) fillQueriesOnce(engine, s, d);
+}
+
+namespace {
+void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
     const ModuleClasses& classes = engine.translation().classes;
     auto g = drawable(engine.interpret(s), classes, d, nullptr, true);
     Geometry geo;
@@ -472,6 +488,7 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
         }
     }
 }
+}  // namespace
 
 
 bool pythonAvailable() { return true; }

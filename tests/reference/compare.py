@@ -22,6 +22,7 @@ import argparse
 import concurrent.futures
 import glob
 import json
+import math
 import os
 import re
 import subprocess
@@ -60,11 +61,43 @@ def derive(python, path, build=None, steps=False, timeout=120):
         return {"ok": False, "error": "exit %d: %s" % (p.returncode, tail[0][:200])}
 
 
-NUMBER = re.compile(r"\d+\.\d*(?:[eE][-+]?\d+)?|\d+(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|.", re.S)
+# A PlantGL vector is one token (its components compared at its own scale); a number another;
+# an object written with its address (`<...QuantisedFunction object at 0x7f...>`) another.
+TOKEN = re.compile(r"Vector[234]\([^()]*\)|<[\w.]*?(\w+) object at 0x[0-9a-f]+>|\d+\.\d*(?:[eE][-+]?\d+)?|\d+(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|.", re.S)
 
 
 def tokens(s):
-    return NUMBER.findall(s)
+    return [m.group(0) for m in TOKEN.finditer(s)]
+
+
+def same_vector(a, b):
+    """Vectors as PlantGL writes them (6 significant digits each): equal when each component is
+    within 1e-6 of the vector's size, or within one unit of its last written digit (Sprout's
+    turtle works in single precision, whose rounding can move that digit)."""
+    try:
+        x = [float(v) for v in a[a.index("(") + 1:-1].split(",")]
+        y = [float(v) for v in b[b.index("(") + 1:-1].split(",")]
+    except ValueError:
+        return False
+    if a[:7] != b[:7] or len(x) != len(y):
+        return False
+    scale = max([1.0] + [abs(v) for v in x + y])
+    for u, v in zip(x, y):
+        m = max(abs(u), abs(v))
+        digit = 10 ** (math.floor(math.log10(m)) - 5) if m > 0 else 0.0
+        if abs(u - v) > max(1e-6 * scale, 1.01 * digit):
+            return False
+    return True
+
+
+def same_token(x, y):
+    if x == y:
+        return True
+    if x.startswith("Vector") and y.startswith("Vector"):
+        return same_vector(x, y)
+    if x.startswith("<") and y.startswith("<"):  # objects: their class, not their address
+        return TOKEN.match(x).group(1) == TOKEN.match(y).group(1)
+    return is_number(x) and is_number(y) and same_number(x, y)
 
 
 def is_number(t):
@@ -86,7 +119,7 @@ def first_difference(a, b):
     offset = 0
     for i in range(min(len(ta), len(tb))):
         x, y = ta[i], tb[i]
-        if x != y and not (is_number(x) and is_number(y) and same_number(x, y)):
+        if not same_token(x, y):
             return offset, a[offset:offset + 60], "".join(tb[i:i + 30])[:60]
         offset += len(x)
     if len(ta) != len(tb):
@@ -117,7 +150,7 @@ def compare(args, entry):
     ref2 = derive(args.reference, path)
     mine = derive(sys.executable, path, args.build)
     r = {"set": group, "model": path, "lpy_seconds": ref1.get("seconds"), "sprout_seconds": mine.get("seconds")}
-    if not ref2.get("ok") or first_difference(ref1["final"], ref2["final"]) is not None:
+    if not ref2.get("ok") or ref1["final"] != ref2["final"]:  # L-Py's own variation: any change at all
         r["status"] = "lpy-varies"
         return r
     if not mine.get("ok"):
