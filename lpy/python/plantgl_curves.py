@@ -129,27 +129,48 @@ class NurbsCurve2D:
         w = d[p][dim] or 1.0
         return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
 
-    def getTangentAt(self, u):
-        """The curve's first derivative at u, not normalised (PlantGL's getTangentAt): the
-        derivative of the rational curve, (A' - w' C) / w, from the B-spline of the weighted
-        control points and the one of their differences (degree one less)."""
+    def getDerivativeAt(self, u, d=1):
+        """The curve's d-th derivative at u (d up to 2; PlantGL's deriveAt, the NURBS Book's
+        A4.2): the weighted control points' B-spline and its derivatives (the differences of its
+        control points, one degree less each time), then the rational curve's."""
         k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
+        vec = [Vector2, Vector3][dim - 2]
+        if d > p:
+            return vec(*([0.0] * dim))
         u = max(self.firstKnot, min(self.lastKnot, u))
-        h = [[pt[c] * pt[dim] for c in range(dim)] + [pt[dim]] for pt in pts]
-        a = _de_boor(h, p, k, u)
-        if p < 1 or len(pts) < 2:
-            return [Vector2, Vector3][dim - 2](*([0.0] * dim))
-        q = []
-        for i in range(len(pts) - 1):
-            den = k[i + p + 1] - k[i + 1]
-            q.append([p * (h[i + 1][c] - h[i][c]) / den if den else 0.0 for c in range(dim + 1)])
-        da = _de_boor(q, p - 1, k[1:-1], u)
-        w = a[dim] or 1.0
-        return [Vector2, Vector3][dim - 2](*[(da[c] - da[dim] * a[c] / w) / w for c in range(dim)])
+        ctrl = [[pt[c] * pt[dim] for c in range(dim)] + [pt[dim]] for pt in pts]
+        homogeneous, knots, degree = [], k, p
+        for order in range(d + 1):
+            homogeneous.append(_de_boor(ctrl, degree, knots, u))
+            if order == d:
+                break
+            nxt = []
+            for i in range(len(ctrl) - 1):
+                den = knots[i + degree + 1] - knots[i + 1]
+                nxt.append([degree * (ctrl[i + 1][c] - ctrl[i][c]) / den if den else 0.0 for c in range(dim + 1)])
+            ctrl, knots, degree = nxt, knots[1:-1], degree - 1
+        w = homogeneous[0][dim] or 1.0
+        ders = []
+        for order in range(d + 1):  # C(k) = (A(k) - sum over i of binom(k, i) w(i) C(k - i)) / w
+            v = list(homogeneous[order][:dim])
+            for i in range(1, order + 1):
+                b = 1 if i == order else order
+                v = [v[c] - b * homogeneous[i][dim] * ders[order - i][c] for c in range(dim)]
+            ders.append([x / w for x in v])
+        return vec(*ders[d])
+
+    def getTangentAt(self, u):
+        """The first derivative, not normalised (PlantGL's getTangentAt)."""
+        return self.getDerivativeAt(u, 1)
 
     def getNormalAt(self, u):
-        t = self.getTangentAt(u)
-        return Vector2(-t[1], t[0]) if self._dim == 2 else t
+        """PlantGL's normal: (T x C'') x T / |T|^4, T the first derivative."""
+        t, n = self.getDerivativeAt(u, 1), self.getDerivativeAt(u, 2)
+        t3 = Vector3(t[0], t[1], t[2] if self._dim == 3 else 0.0)
+        n3 = Vector3(n[0], n[1], n[2] if self._dim == 3 else 0.0)
+        length = abs(t3)
+        r = cross(cross(t3, n3), t3) / (length ** 4) if length > 0 else Vector3(0, 0, 0)
+        return Vector2(r[0], r[1]) if self._dim == 2 else r
 
     def getLength(self, begin=None, end=None):
         pts = self.points(200)
