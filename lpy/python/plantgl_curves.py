@@ -129,7 +129,7 @@ class NurbsCurve2D:
         w = d[p][dim] or 1.0
         return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
 
-    def getDerivativeAt(self, u, d=1):
+    def _derivative(self, u, d=1):
         """The curve's d-th derivative at u (d up to 2; PlantGL's deriveAt, the NURBS Book's
         A4.2): the weighted control points' B-spline and its derivatives (the differences of its
         control points, one degree less each time), then the rational curve's."""
@@ -161,11 +161,11 @@ class NurbsCurve2D:
 
     def getTangentAt(self, u):
         """The first derivative, not normalised (PlantGL's getTangentAt)."""
-        return self.getDerivativeAt(u, 1)
+        return self._derivative(u, 1)
 
     def getNormalAt(self, u):
         """PlantGL's normal: (T x C'') x T / |T|^4, T the first derivative."""
-        t, n = self.getDerivativeAt(u, 1), self.getDerivativeAt(u, 2)
+        t, n = self._derivative(u, 1), self._derivative(u, 2)
         t3 = Vector3(t[0], t[1], t[2] if self._dim == 3 else 0.0)
         n3 = Vector3(n[0], n[1], n[2] if self._dim == 3 else 0.0)
         length = abs(t3)
