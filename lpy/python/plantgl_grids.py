@@ -102,7 +102,7 @@ class Point3Grid:
             pts = d
             lo, hi = [float(v) for v in tuple(b)[:3]], [float(v) for v in tuple(c)[:3]]
             size = [float(v) for v in tuple(a)[:3]]
-        elif isinstance(a, (int, float)):  # (voxel size, points)
+        elif b is not None and not isinstance(b, (int, float)):  # (voxel size: a number or a vector, points)
             pts = b
         else:  # (points, voxel size ratio from the global extent)
             pts = a
@@ -110,8 +110,8 @@ class Point3Grid:
         if d is None:
             lo = [min(p[k] for p in self.points) for k in range(3)] if self.points else [0.0] * 3
             hi = [max(p[k] for p in self.points) for k in range(3)] if self.points else [0.0] * 3
-            if isinstance(a, (int, float)):
-                size = [float(a)] * 3
+            if pts is b:
+                size = [float(a)] * 3 if isinstance(a, (int, float)) else [float(v) for v in tuple(a)[:3]]
             else:
                 size = [(hi[k] - lo[k]) / float(b if b is not None else 10) for k in range(3)]
         self._size = [v if v > 1e-5 else 1e-5 for v in size]
