@@ -173,28 +173,56 @@ class NurbsCurve2D:
         return Vector2(r[0], r[1]) if self._dim == 2 else r
 
     def getLength(self, begin=None, end=None):
-        pts = self.points(200)
-        return sum(abs(pts[i + 1] - pts[i]) for i in range(len(pts) - 1))
-
-    def _arc_lengths(self):
-        """200 parameters u along the curve and the fraction of its length at each."""
-        a, b = self.firstKnot, self.lastKnot
-        us = [a + (b - a) * i / 199 for i in range(200)]
-        pts = [self.getPointAt(u) for u in us]
-        lengths = [0.0]
-        for i in range(199):
-            lengths.append(lengths[-1] + abs(pts[i + 1] - pts[i]))
-        total = lengths[-1] or 1.0
-        return us, [l / total for l in lengths]
+        """The length of the polyline through `stride` evenly spaced parameters (PlantGL's
+        LineicModel::getLength, its corrections at both ends included)."""
+        fk, lk = self.firstKnot, self.lastKnot
+        begin = fk if begin is None or begin < fk else begin
+        end = lk if end is None or end > lk else end
+        du = (lk - fk) / self.stride
+        begin_i, end_i = int((begin - fk) / du) * du + fk, int((end - fk) / du) * du + fk
+        p1, length = self.getPointAt(begin_i), 0.0
+        if begin - begin_i > 1e-5:
+            length -= abs(self.getPointAt(begin) - p1)
+        u = begin_i + fk + du
+        while u <= end_i:
+            p2 = self.getPointAt(u)
+            length += abs(p2 - p1)
+            p1 = p2
+            u += du
+        if end - end_i > 1e-5:
+            length += abs(self.getPointAt(end) - p1)
+        return length
 
     def getArcLengthToUMapping(self):
-        """A function from the fraction of the curve's length to the parameter u."""
-        us, fractions = self._arc_lengths()
-        return QuantisedFunction(Polyline2D(list(zip(fractions, us))), 200)
+        """A function from the fraction of the curve's length to the parameter u (PlantGL's:
+        the polyline through `stride` steps of u, sampled 5 * stride times)."""
+        total, fk, lk, stride = self.getLength(), self.firstKnot, self.lastKnot, self.stride
+        du = (lk - fk) / stride
+        p1, length, points, u = self.getPointAt(fk), 0.0, [(0.0, fk)], fk + du
+        for _ in range(stride):
+            p2 = self.getPointAt(u)
+            n = abs(p2 - p1)
+            if n > 0:
+                length += n
+                p1 = p2
+                points.append((length / total, u))
+            u += du
+        points[-1] = (1.0, lk)
+        return QuantisedFunction(Polyline2D(points), 5 * stride)
 
     def getUToArcLengthMapping(self):
-        us, fractions = self._arc_lengths()
-        return QuantisedFunction(Polyline2D(list(zip(us, fractions))), 200)
+        """A function from u to the fraction of the curve's length (PlantGL's)."""
+        total, fk, lk, stride = self.getLength(), self.firstKnot, self.lastKnot, self.stride
+        du = (lk - fk) / stride
+        p1, length, points, u = self.getPointAt(fk), 0.0, [(fk, 0.0)], fk + du
+        for _ in range(stride):
+            p2 = self.getPointAt(u)
+            length += abs(p2 - p1)
+            p1 = p2
+            points.append((u, length / total))
+            u += du
+        points[-1] = (lk, 1.0)
+        return QuantisedFunction(Polyline2D(points), 5 * stride)
 
     def deepcopy(self):
         import copy
@@ -254,7 +282,8 @@ class Polyline2D:
         self.pointList = [Vector2(p[0], p[1]) for p in pointList]
         self.width = width
         self.name = ''
-        self.firstKnot, self.lastKnot, self.stride = 0.0, 1.0, len(self.pointList)
+        # PlantGL's knots: point i at u = i
+        self.firstKnot, self.lastKnot, self.stride = 0.0, float(len(self.pointList) - 1), max(1, len(self.pointList) - 1)
 
     @staticmethod
     def Circle(radius=0.5, slices=8):
@@ -262,13 +291,21 @@ class Polyline2D:
                            for i in range(slices + 1)])
 
     def getPointAt(self, u):
+        """As PlantGL's Polyline::getPointAt: point i at u = i, linear between."""
         pts = self.pointList
         if len(pts) == 1:
             return pts[0]
-        t = max(0.0, min(1.0, u)) * (len(pts) - 1)
-        i = min(int(t), len(pts) - 2)
-        f = t - i
-        return Vector2(pts[i][0] + (pts[i + 1][0] - pts[i][0]) * f, pts[i][1] + (pts[i + 1][1] - pts[i][1]) * f)
+        last = len(pts) - 1
+        u = max(0.0, min(float(last), u))
+        if abs(u) < 1e-5:
+            u = 0.0
+        elif abs(u - last) < 1e-5:
+            u = float(last)
+        i = int(u)
+        if i == u:
+            return Vector2(pts[i][0], pts[i][1])
+        a, b = pts[i], pts[i + 1]
+        return Vector2(a[0] * ((i + 1) - u) + b[0] * (u - i), a[1] * ((i + 1) - u) + b[1] * (u - i))
 
     def points(self, samples=None):
         return list(self.pointList)

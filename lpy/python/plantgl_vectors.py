@@ -185,12 +185,15 @@ def norm(v):
 
 
 def angle(a, b, axis=None):
-    """The angle from a to b; signed about `axis` when one is given (PlantGL)."""
-    c = dot(a, b) / (norm(a) * norm(b) or 1.0)
-    result = _math.acos(max(-1.0, min(1.0, c)))
-    if axis is not None and dot(cross(a, b), axis) < 0:
-        result = -result
-    return result
+    """The angle from a to b, as PlantGL's angle() gives it: atan2 of the cross and dot
+    products; signed in 2D (the cross product's z), and in 3D about `axis` when one is given."""
+    if len(a) == 2 and len(b) == 2:
+        return _math.atan2(cross(a, b), dot(a, b))
+    c = cross(a, b)
+    sinus = norm(c)
+    if axis is not None and dot(c, axis) < 0:
+        sinus = -sinus
+    return _math.atan2(sinus, dot(a, b))
 
 
 def direction(v):
