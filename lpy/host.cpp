@@ -445,7 +445,12 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
 namespace {
 void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
     const ModuleClasses& classes = engine.translation().classes;
-    auto g = drawable(engine.interpret(s), classes, d, nullptr, true);
+    // The string drawn, each module knowing its module in `s` (an interpretation rule's
+    // modules come from the module it rewrote): the turtle's k-th query frame is the k-th query
+    // module drawn, which is written back where that module is one of `s` copied as it is. A
+    // query module an interpretation rule rewrites is not passed by L-Py's turtle: it keeps its values.
+    const LString shown = engine.interpret(s);  // (Engine::interpret sets parent and rule so)
+    auto g = drawable(shown, classes, d, nullptr, true);
     Geometry geo;
     TurtleOptions t;
     t.fromTree = false;
@@ -455,11 +460,13 @@ void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
     py::object vector3 = py::module_::import("openalea.plantgl.all").attr("Vector3");
     auto lpyVector = [&](const glm::vec3& v) { return vector3(double(v.z), double(v.x), double(v.y)); };
     size_t k = 0;
-    for (LModule& m : s) {
-        const std::string& name = classes.name(m.cls);
-        if (!Engine::isQuery(name)) continue;
+    for (const LModule& drawn : shown) {
+        if (!Engine::isQuery(classes.name(drawn.cls))) continue;
         if (k >= frames.size()) break;
         const QueryFrame& f = frames[k++];
+        if (drawn.rule != -1 || drawn.parent >= s.size() || s[drawn.parent].cls != drawn.cls) continue;
+        LModule& m = s[drawn.parent];
+        const std::string& name = classes.name(m.cls);
         const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
         if (name[1] == 'F') {
             m.args = py::make_tuple(lpyVector(f.position), lpyVector(f.heading), lpyVector(f.up), lpyVector(f.left));
