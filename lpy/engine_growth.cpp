@@ -210,6 +210,7 @@ void Engine::predictGrowth(const LString& s, int steps) const {
             nextMods[id] = std::min(m, kHuge), nextBytes[id] = std::min(b, kHuge);
             total += count[id] * nextMods[id], totalBytes += count[id] * nextBytes[id];
         }
+        const bool settled = nextMods == mods && nextBytes == bytes;  // every step after is this one
         mods.swap(nextMods), bytes.swap(nextBytes);
         const bool overModules = total > double(m_options.maxModules);
         if (overModules || totalBytes + before > double(m_options.maxBytes)) {
@@ -227,6 +228,7 @@ void Engine::predictGrowth(const LString& s, int steps) const {
                                                : "memory budget of " + humanBytes(m_options.maxBytes) + "; " + lower + " or raise the budget (--max-memory)"));
         }
         before = totalBytes;
+        if (settled) return;
     }
 }
 
