@@ -1,9 +1,33 @@
 # openalea.plantgl.scenegraph.interpolated_profile as Sprout provides it: a profile made of
 # cross sections given at parameters, a section at any parameter between them (PlantGL's
 # interpolated_profile: the editor's "InterpolatedProfile" panel). Sections are interpolated
-# linearly between their neighbours, point by point (PlantGL's NurbsMethod and CSplineMethod
-# make smoother surfaces through the same sections).
-from openalea.plantgl.all import Vector2, Vector3, NurbsCurve2D
+# linearly between their neighbours, point by point, with NurbsMethod (PlantGL makes a NURBS
+# patch through them); with CSplineMethod, as PlantGL does: a cardinal spline through each
+# control point's positions over the sections (PlantGL's cspline.py).
+from openalea.plantgl.all import Vector2, Vector3, NurbsCurve, NurbsCurve2D
+
+
+def _cspline(points, distances=None):
+    """PlantGL's cspline(points, distances=...): the cubic NURBS curve through `points` (Vector3),
+    the derivative at each inner point half the vector from its neighbour before to the one
+    after, at the ends half the first and last segments, as Bezier arcs; its knots are the
+    cumulated distances between the points (or the given ones), each three times."""
+    n = len(points)
+    dist = list(distances) if distances is not None else [abs(points[i + 1] - points[i]) for i in range(n - 1)]
+    der = [(points[1] - points[0]) / 2.0]
+    der += [(points[i + 1] - points[i - 1]) / 2.0 for i in range(1, n - 1)]
+    der.append((points[-1] - points[-2]) / 2.0)
+    ctrl = [None] * (3 * n - 2)
+    for i in range(n - 1):
+        ctrl[3 * i] = points[i]
+        ctrl[3 * i + 1] = points[i] + der[i] * (1.0 / 3)
+        ctrl[3 * i + 2] = points[i + 1] - der[i + 1] * (1.0 / 3)
+    ctrl[-1] = points[-1]
+    param = [0.0]
+    for d in dist:
+        param.append(param[-1] + d)
+    knots = [param[0]] + [p for p in param for _ in range(3)] + [param[-1]]
+    return NurbsCurve([(c[0], c[1], c[2], 1.0) for c in ctrl], 3, knots, stride=(n - 1) * 10)
 
 
 class NurbsMethod:
@@ -11,7 +35,7 @@ class NurbsMethod:
 
 
 class CSplineMethod:
-    """PlantGL's cubic spline interpolation between sections (here: linear, point by point)."""
+    """PlantGL's cubic spline interpolation between sections (as PlantGL computes it)."""
 
 
 class CrossSection(list):
@@ -71,6 +95,17 @@ class InterpolatedProfile(dict):
         if not items:
             raise ValueError("the profile has no cross section")
         t = float(parameter)
+        if self.interpolator is CSplineMethod and len(items) >= 2:
+            # A spline through each control point's (x, y, parameter) over the sections, knots
+            # at the parameters; the section is the points of those splines at t.
+            vdist = [items[k + 1][0] - items[k][0] for k in range(len(items) - 1)]
+            splines = [_cspline([Vector3(sec[j][0], sec[j][1], par) for par, sec in items], vdist)
+                       for j in range(len(items[0][1]))]
+            section = [c.getPointAt(t) for c in splines]
+            if not curve:
+                return section
+            spline = _cspline(section)
+            return NurbsCurve2D([(c[0], c[1], 1.0) for c in spline.ctrlPointList], 3, spline.knotList)
         if t <= items[0][0] or len(items) == 1:
             points = items[0][1]
         elif t >= items[-1][0]:
