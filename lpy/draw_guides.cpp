@@ -95,9 +95,45 @@ void Drawing::alongGuide(double& length) {
     turnTo(g, chord / n);
 }
 
+namespace {
+// PlantGL's guide on a curve that has them (NURBS, Bezier): its length (getLength, stride
+// steps), and each position the point at the parameter its arc-length mapping (a
+// QuantisedFunction) gives, so that a turtle follows the curve as PlantGL's does.
+std::shared_ptr<GuideCurve> exactGuide(PyObject* curve, std::shared_ptr<GuideCurve> sampled) {
+    py::handle h(curve);
+    if (!py::hasattr(h, "getArcLengthToUMapping") || !py::hasattr(h, "getLength") || !py::hasattr(h, "getTangentAt")) return sampled;
+    try {
+        py::object c = py::reinterpret_borrow<py::object>(h);
+        py::object mapping = c.attr("getArcLengthToUMapping")();
+        const double length = c.attr("getLength")().cast<double>();
+        if (!(length > 0)) return sampled;
+        auto g = std::make_shared<GuideCurve>(*sampled);
+        g->length = length;
+        auto vec = [is3D = g->is3D](py::handle v) {
+            std::vector<double> xyz;
+            if (!numbers(v.ptr(), xyz) || xyz.size() < 2) throw py::value_error("a guide's point is not a vector");
+            return glm::dvec3(xyz[0], xyz[1], is3D && xyz.size() > 2 ? xyz[2] : 0.0);
+        };
+        g->exactPoint = [c, mapping, vec](double t) { return vec(c.attr("getPointAt")(mapping(t))); };
+        g->exactTangent = [c, mapping, vec](double t) {
+            const glm::dvec3 d = vec(c.attr("getTangentAt")(mapping(t)));
+            const double n = glm::length(d);
+            return n > 0 ? d / n : d;
+        };
+        return g;
+    } catch (py::error_already_set&) {
+        PyErr_Clear();
+        return sampled;
+    }
+}
+}  // namespace
+
 bool Drawing::setGuide(PyObject* curve, double total, bool yOrientation, bool ccw) {
-    std::shared_ptr<const GuideCurve>& c = m_curves[curve];
-    if (!c) c = sampledCurve(curve);
+    std::shared_ptr<const GuideCurve>& c = m_guides[curve];
+    if (!c) {
+        auto sampled = sampledCurve(curve);
+        if (sampled) c = exactGuide(curve, sampled);
+    }
     if (!c) return false;
     Guide g;
     g.curve = c;

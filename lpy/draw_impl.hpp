@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <map>
@@ -79,12 +80,18 @@ struct GuideCurve {
     std::vector<double> at;  // the fraction of the curve's length at each point
     double length = 0;
     bool is3D = false;
+    // A guide's curve as PlantGL follows it (Turtle2DPath): its point at the parameter its
+    // arc-length mapping gives for t, and its tangent there; unset for a curve without them
+    // (then the polyline through its points).
+    std::function<glm::dvec3(double)> exactPoint, exactTangent;
     glm::dvec3 pointAt(double t) const {
+        if (exactPoint) return exactPoint(t);
         const size_t i = segment(t);
         const double span = at[i + 1] - at[i], f = span > 0 ? (t - at[i]) / span : 0;
         return points[i] + (points[i + 1] - points[i]) * std::clamp(f, 0.0, 1.0);
     }
     glm::dvec3 tangentAt(double t) const {
+        if (exactTangent) return exactTangent(t);
         const size_t i = segment(t);
         const glm::dvec3 d = points[i + 1] - points[i];
         const double n = glm::length(d);
@@ -202,6 +209,7 @@ public:
 
 private:
     std::unordered_map<PyObject*, std::shared_ptr<const GuideCurve>> m_curves;  // sampled once a drawing
+    std::unordered_map<PyObject*, std::shared_ptr<const GuideCurve>> m_guides;  // the same, followed as PlantGL follows a guide
     std::unordered_map<PyObject*, int> m_sections;  // each section curve's Settings::sections index
     std::unordered_map<PyObject*, std::string> m_shapes;  // each @g shape's surface
     std::unordered_map<std::string, int> m_labelIndex;    // each text's Settings::labels index
