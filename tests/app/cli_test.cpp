@@ -260,7 +260,7 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     // A string that fits, whose drawing would not (a segment each: 40 bytes against 4).
     const std::string segments = writeTemp("segments.lsys", "n: 24\naxiom: F\nF -> FF\n");
     // A forest whose plants each fit, but not all of them: one budget for the forest.
-    const std::string small = writeTemp("small.lsys", "n: 20\naxiom: F\nF -> FF\n");
+    const std::string small = writeTemp("small.lsys", "n: 18\naxiom: F\nF -> FF\n");
     const std::string many = writeTemp("many.forest", "scene: forest\ngrid: 4 4\nspacing: 40\nseed: 2\nspecies: " + small + " 1\n");
     // cpfg's homomorphism: the string its rules make to be drawn (five modules for each A).
     const std::string homomorphism = writeTemp("homomorphism.l", "derivation length: 24\nAxiom: A\nA --> AA\nhomomorphism:\nA --> F+F-F\nendlsystem\n");
@@ -273,7 +273,7 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
         {"render " + body + " --size 64x48 -o " + body + ".png", ":2:1: step 26 would make 67,108,864 modules"},
         {"render " + segments + " --max-memory 256 --size 64x48 -o " + segments + ".png", "drawing step 24 would take about 640.0 MB"},
         {"export " + segments + " --max-memory 256 -o " + segments + ".glb", "drawing step 24 would take about 640.0 MB"},
-        {"render " + many + " --max-memory 256 --size 64x48 -o " + many + ".png", "plant 7 ("},
+        {"render " + many + " --max-memory 64 --size 64x48 -o " + many + ".png", "plant 7 ("},
         {"render " + homomorphism + " --max-memory 64 --size 64x48 -o " + homomorphism + ".png",
          "drawing step 24: its interpretation rules would make up to 83,886,080 modules"},
     };
