@@ -114,11 +114,20 @@ std::shared_ptr<GuideCurve> exactGuide(PyObject* curve, std::shared_ptr<GuideCur
             if (!numbers(v.ptr(), xyz) || xyz.size() < 2) throw py::value_error("a guide's point is not a vector");
             return glm::dvec3(xyz[0], xyz[1], is3D && xyz.size() > 2 ? xyz[2] : 0.0);
         };
-        g->exactPoint = [c, mapping, vec](double t) { return vec(c.attr("getPointAt")(mapping(t))); };
-        g->exactTangent = [c, mapping, vec](double t) {
+        // Each evaluation is a Python call: the same t (a guide's steps repeat along every
+        // tube that follows it) is evaluated once a drawing.
+        auto points = std::make_shared<std::unordered_map<double, glm::dvec3>>();
+        auto tangents = std::make_shared<std::unordered_map<double, glm::dvec3>>();
+        g->exactPoint = [c, mapping, vec, points](double t) {
+            if (auto it = points->find(t); it != points->end()) return it->second;
+            const glm::dvec3 p = vec(c.attr("getPointAt")(mapping(t)));
+            return (*points)[t] = p;
+        };
+        g->exactTangent = [c, mapping, vec, tangents](double t) {
+            if (auto it = tangents->find(t); it != tangents->end()) return it->second;
             const glm::dvec3 d = vec(c.attr("getTangentAt")(mapping(t)));
             const double n = glm::length(d);
-            return n > 0 ? d / n : d;
+            return (*tangents)[t] = n > 0 ? d / n : d;
         };
         return g;
     } catch (py::error_already_set&) {
