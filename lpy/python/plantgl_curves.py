@@ -247,11 +247,11 @@ class NurbsCurve2D:
             text += ", degree = %d" % self.degree
         if not _default_knots(self.knotList, len(self.ctrlPointList), self.degree):
             text += ", knotList = " + repr(RealArray(self.knotList))
-        if self.stride != 30:
-            text += ", stride = %d" % self.stride
-        if self.width != 1:
-            text += ", width = %d" % int(self.width)
-        return text + ")"
+        return text + self._stride_width_text() + ")"
+
+    def _stride_width_text(self):
+        """The end of a curve's text: its stride and width where not PlantGL's defaults (30, 1)."""
+        return (", stride = %d" % self.stride if self.stride != 30 else "") + (", width = %d" % int(self.width) if self.width != 1 else "")
 
     __str__ = __repr__
 
@@ -267,12 +267,8 @@ class BezierCurve2D(NurbsCurve2D):
         NurbsCurve2D.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
 
     def __repr__(self):  # its control points, its stride and width where not the default
-        text = "BezierCurve2D(Point3Array([%s])" % ",".join(_point_text(p, 3) for p in self.ctrlPointList)
-        if self.stride != 30:
-            text += ", stride = %d" % self.stride
-        if self.width != 1:
-            text += ", width = %d" % int(self.width)
-        return text + ")"
+        points = ",".join(_point_text(p, 3) for p in self.ctrlPointList)
+        return "BezierCurve2D(Point3Array([%s])%s)" % (points, self._stride_width_text())
 
     __str__ = __repr__
 

@@ -8,15 +8,10 @@
 
 #include "core/derive/draw.hpp"
 #include "lpy/host.hpp"
+#include "tests/lpy/lpy_messages.hpp"
 
 namespace sprout {
 namespace {
-
-std::string messages(const lpy::Model& m) {
-    std::string out;
-    for (const auto& d : m.diagnostics) out += formatDiagnostic(d, "model") + "\n";
-    return out;
-}
 
 Geometry drawn(const lpy::Model& m) {
     Geometry geo;

@@ -18,6 +18,7 @@
 #include "core/derive/provenance.hpp"
 #include "core/language/file_kind.hpp"
 #include "lpy/host.hpp"
+#include "tests/lpy/lpy_messages.hpp"
 #include "lpy/translate.hpp"
 
 namespace sprout {
@@ -28,12 +29,6 @@ namespace fs = std::filesystem;
 std::string slurp(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::string messages(const lpy::Model& m) {
-    std::string out;
-    for (const auto& d : m.diagnostics) out += formatDiagnostic(d, "model") + "\n";
-    return out;
 }
 
 // Growth stepping keeps where each module came from, natively as in Python: the lineage of
