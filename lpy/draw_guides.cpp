@@ -3,6 +3,7 @@
 // (SetContour) and nF's runs of steps. Its own file: a model with no guide or section never
 // comes here (lpy/draw_impl.hpp keeps the test that says so inline in the walk).
 #include "lpy/draw_impl.hpp"
+#include "lpy/pgl_native.hpp"
 
 namespace sprout::lpy::detail {
 namespace {
@@ -99,7 +100,12 @@ namespace {
 // PlantGL's guide on a curve that has them (NURBS, Bezier): its length (getLength, stride
 // steps), and each position the point at the parameter its arc-length mapping (a
 // QuantisedFunction) gives, so that a turtle follows the curve as PlantGL's does.
+std::shared_ptr<GuideCurve> nativeGuide(const std::shared_ptr<const curves::Nurbs>& nurbs, int stride,
+                                        const std::shared_ptr<GuideCurve>& sampled);
+
 std::shared_ptr<GuideCurve> exactGuide(PyObject* curve, std::shared_ptr<GuideCurve> sampled) {
+    int stride = 0;
+    if (auto nurbs = nativeNurbs(curve, stride)) return nativeGuide(nurbs, stride, sampled);
     py::handle h(curve);
     if (!py::hasattr(h, "getArcLengthToUMapping") || !py::hasattr(h, "getLength") || !py::hasattr(h, "getTangentAt")) return sampled;
     try {
@@ -134,6 +140,27 @@ std::shared_ptr<GuideCurve> exactGuide(PyObject* curve, std::shared_ptr<GuideCur
         PyErr_Clear();
         return sampled;
     }
+}
+// The same guide on one of Sprout's NURBS curves, evaluated in C++ (lpy/pgl_native.hpp) as
+// its Python methods would evaluate it: no Python call a step.
+std::shared_ptr<GuideCurve> nativeGuide(const std::shared_ptr<const curves::Nurbs>& nurbs, int stride,
+                                        const std::shared_ptr<GuideCurve>& sampled) {
+    const double fk = nurbs->firstKnot(), lk = nurbs->lastKnot();
+    if (stride == 0 || !((lk - fk) / stride != 0)) return sampled;  // the Python's ZeroDivisionError
+    auto mapping = std::make_shared<const curves::Quantised>(curves::quantise(curves::Polyline2D(nurbs->arcLengthToU(stride)), 5 * stride));
+    const double length = nurbs->length(fk, lk, stride);
+    if (!(length > 0)) return sampled;
+    auto g = std::make_shared<GuideCurve>(*sampled);
+    g->length = length;
+    const bool is3D = g->is3D;
+    auto vec = [is3D](const curves::Point& p) { return glm::dvec3(p[0], p[1], is3D ? p[2] : 0.0); };
+    g->exactPoint = [nurbs, mapping, vec](double t) { return vec(nurbs->pointAt((*mapping)(t))); };
+    g->exactTangent = [nurbs, mapping, vec](double t) {
+        const glm::dvec3 d = vec(nurbs->derivativeAt((*mapping)(t), 1));
+        const double n = glm::length(d);
+        return n > 0 ? d / n : d;
+    };
+    return g;
 }
 }  // namespace
 

@@ -32,6 +32,19 @@ struct RunOptions {
     // parameters measured): a step that would pass it ends the derivation with a message.
     std::uint64_t maxBytes = defaultMemoryBudget();
     bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
+    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive);
+    // Model::later draws a step when it is asked for.
+    bool drawLater = false;
+};
+
+// A run kept to draw its steps later (RunOptions::drawLater): the model's engine and namespace
+// live with it. draw() takes the interpreter itself: call it without holding the GIL. Throws
+// std::runtime_error (a Python error, at its line) or std::out_of_range.
+class StepDrawer {
+public:
+    virtual ~StepDrawer() = default;
+    virtual int steps() const = 0;  // step 0 (the axiom) .. steps() - 1
+    virtual std::shared_ptr<const Grammar> draw(int step) = 0;
 };
 
 struct Model {
@@ -53,6 +66,8 @@ struct Model {
     bool cancelled = false;
     bool ranNative = false;  // derived by the native path (lpy/native.cpp)
     double deriveSeconds = 0;  // the derivation alone (its rules), without setup and drawing
+    // drawLater: what draws each step (`drawable` then holds only the turtle's settings).
+    std::shared_ptr<StepDrawer> later;
     bool ok() const { return drawable != nullptr; }
 };
 

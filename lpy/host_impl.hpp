@@ -65,6 +65,10 @@ void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d);
 // The Python classes of `_sprout_lpy` (python_types.cpp: Module, ModuleClass, Lstring;
 // session.cpp: _Session, which openalea.lpy's Lsystem drives).
 void defineTypes(py::module_& m);
+// PlantGL's curves in C++ for Sprout's Python PlantGL (pgl_native.cpp: _PglNurbs, _PglPatch),
+// added by defineTypes.
+void definePlantGL(py::module_& m);
+void definePointGrid(py::module_& m);  // pgl_grid.cpp: Point3Grid's C++ grid
 void defineSession(py::module_& m);
 
 }  // namespace sprout::lpy

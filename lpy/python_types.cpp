@@ -144,6 +144,8 @@ LString fromState(py::handle state) {
 }  // namespace
 
 void defineTypes(py::module_& m) {
+    definePlantGL(m);
+    definePointGrid(m);
     py::class_<PyModuleClass>(m, "ModuleClass")
         .def_property_readonly("name", [](const PyModuleClass& c) { return nameOf(c.cls); })
         .def("__call__", [](const PyModuleClass& c, py::args args) {

@@ -118,21 +118,42 @@ public:
     std::string name, text, dialect;
     FileKind kind = FileKind::Lsys;
     std::shared_ptr<const Grammar> grammar;
-    std::vector<std::shared_ptr<const Grammar>> lpySteps;  // an L-Py model: each step, drawn as it is
+    // An L-Py model: each step's drawing, made when geometry(), render() or export() first asks
+    // for it (null until then), by `lpyDrawer`; and each step as derived, in `lpyRecord`.
+    std::vector<std::shared_ptr<const Grammar>> lpySteps;
+    std::shared_ptr<lpy::StepDrawer> lpyDrawer;
+    DerivationRecord lpyRecord;
     std::vector<Diagnostic> warnings;
     std::string lpyString;  // an L-Py model: its last string as L-Py writes it
 
-    int iterations() const { return lpySteps.empty() ? grammar->settings.iterations : int(lpySteps.size()) - 1; }
+    bool isLpy() const { return !lpySteps.empty(); }
+    int iterations() const { return isLpy() ? int(lpySteps.size()) - 1 : grammar->settings.iterations; }
+
+    // Step k of an L-Py model as the turtle draws it (its interpretation rules applied).
+    std::shared_ptr<const Grammar> lpyDrawn(int k) {
+        if (k < 0 || k >= int(lpySteps.size())) throw py::value_error("no step " + std::to_string(k) + " in this L-Py model's run");
+        if (!lpySteps[size_t(k)]) {
+            std::shared_ptr<const Grammar> g;
+            {
+                py::gil_scoped_release release;  // the drawer takes the interpreter itself
+                g = lpyDrawer->draw(k);
+            }
+            lpySteps[size_t(k)] = std::move(g);
+        }
+        return lpySteps[size_t(k)];
+    }
 
     // Step n's string (derived as far as needed, the steps before it kept).
     LString derive(std::optional<int> n, std::optional<std::uint64_t> seed) {
         const int k = n.value_or(iterations());
         if (k < 0) throw py::value_error("the step must be 0 or more");
-        if (!lpySteps.empty()) {
+        if (isLpy()) {
             if (k >= int(lpySteps.size()))
                 throw py::value_error("this L-Py model was run for " + std::to_string(lpySteps.size() - 1) +
                                       " steps: open it with steps=" + std::to_string(k));
-            return LString(std::make_shared<const ModuleString>(lpySteps[size_t(k)]->axiom), lpySteps[size_t(k)]);
+            if (size_t(k) < lpyRecord.steps.size()) return LString(lpyRecord.steps[size_t(k)], lpyRecord.grammar);
+            auto g = lpyDrawn(k);  // a scene's plant (_plant_of_lpy): what is drawn is all it has
+            return LString(std::make_shared<const ModuleString>(g->axiom), g);
         }
         if (!m_derivation || m_seed != seed) {
             DeriveOptions o;
@@ -152,12 +173,9 @@ public:
     }
 
     // The grammar to draw for step n (an L-Py step is its own) and the options that draw it.
-    std::shared_ptr<const Grammar> drawn(std::optional<int> n, std::optional<std::uint64_t> seed, SnapshotOptions& o) const {
+    std::shared_ptr<const Grammar> drawn(std::optional<int> n, std::optional<std::uint64_t> seed, SnapshotOptions& o) {
         const int k = n.value_or(iterations());
-        if (!lpySteps.empty()) {
-            if (k < 0 || k >= int(lpySteps.size())) throw py::value_error("no step " + std::to_string(k) + " in this L-Py model's run");
-            return lpySteps[size_t(k)];
-        }
+        if (isLpy()) return lpyDrawn(k);
         o.iterations = k;
         o.seed = seed;
         return grammar;
@@ -165,11 +183,16 @@ public:
 
     // The turtle's drawing of step n, from the string derive() keeps (not derived again).
     Geometry geometry(std::optional<int> n, std::optional<std::uint64_t> seed) {
-        LString s = derive(n, seed);
-        const int k = lpySteps.empty() ? n.value_or(iterations()) : 0;  // an L-Py step is drawn as it is
         Geometry out;
+        if (isLpy()) {  // an L-Py step is drawn as it is
+            auto g = lpyDrawn(n.value_or(iterations()));
+            py::gil_scoped_release release;
+            interpret(g->axiom, *g, {0, seed.value_or(g->settings.seed)}, out);
+            return out;
+        }
+        LString s = derive(n, seed);
         py::gil_scoped_release release;
-        interpret(s.string(), s.grammar(), {k, seed.value_or(s.grammar().settings.seed)}, out);
+        interpret(s.string(), s.grammar(), {n.value_or(iterations()), seed.value_or(s.grammar().settings.seed)}, out);
         return out;
     }
 
@@ -191,6 +214,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         ro.path = path;
         ro.steps = steps;
         ro.keepSteps = true;
+        ro.drawLater = true;  // open() and derive() derive; a step is drawn when it is asked for
         lpy::Model m;
         {
             py::gil_scoped_release release;  // the model takes the GIL itself, and can be cancelled
@@ -198,8 +222,10 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         }
         if (!m.ok()) raiseDiagnostics(m.diagnostics, name);
         p.grammar = m.drawable;
-        p.lpySteps = std::move(m.steps);
-        if (p.lpySteps.empty()) p.lpySteps.push_back(m.drawable);
+        p.lpyRecord = std::move(m.record);
+        p.lpyDrawer = std::move(m.later);
+        p.lpySteps.assign(std::max<size_t>(1, p.lpyRecord.steps.size()), nullptr);
+        if (!p.lpyDrawer) p.lpySteps.assign(1, m.drawable);  // nothing derived (a model of no steps)
         p.dialect = "L-Py";
         p.lpyString = std::move(m.derived);
         p.warnings = m.diagnostics;
@@ -291,7 +317,7 @@ PYBIND11_MODULE(_sprout, m) {
         .def_readonly("text", &Plant::text)
         .def_readonly("dialect", &Plant::dialect, "What the text was read as: .lsys, ABOP notation, cpfg, L-Py, Lparser, Fractint")
         .def_property_readonly("n", &Plant::iterations, "The derivation length the grammar sets")
-        .def_readonly("lpy_string", &Plant::lpyString, "An L-Py model: its last string as L-Py writes it (derive() gives what is drawn)")
+        .def_readonly("lpy_string", &Plant::lpyString, "An L-Py model: its last string as L-Py writes it (derive() gives its modules)")
         .def_property_readonly("angle", [](const Plant& p) { return p.grammar->settings.angle.mean; })
         .def_property_readonly("seed", [](const Plant& p) { return p.grammar->settings.seed; })
         .def_property_readonly("defines", [](const Plant& p) { return p.grammar->defines; }, "The grammar's named constants")

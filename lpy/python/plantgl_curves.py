@@ -4,8 +4,12 @@
 # mappings), the Discretizer, and NURBS patches. Its own file: the curve arithmetic.
 import math as _math
 
+from _sprout_lpy import _PglNurbs, _PglPatch, _pgl_quantised_polyline
+from openalea.plantgl import _vectors
 from openalea.plantgl._scene import Polyline
-from openalea.plantgl._vectors import Vector2, Vector3, Vector4, cross
+from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
+
+_of2, _of3 = Vector2._of, Vector3._of
 
 
 def _point_text(p, n):
@@ -112,52 +116,44 @@ class NurbsCurve2D:
     def lastKnot(self):
         return self.knotList[len(self.ctrlPointList)]
 
+    # The arithmetic is C++'s (core/turtle/curves.cpp, the same numbers as PlantGL's): an
+    # evaluator built from the curve's lists, kept on the curve while they hold the same
+    # objects and no vector has changed in place (the count of _vectors._changes).
+    def _native(self):
+        pts, knots = self.ctrlPointList, self.knotList
+        key = (_vectors._changes[0], self.degree, tuple(pts), tuple(knots))
+        cache = self.__dict__.get('_sprout_native_cache')
+        if cache is not None and cache[0] == key:
+            return cache[1]
+        native = _PglNurbs(self._dim, self.degree, knots, pts)
+        if all(isinstance(q, (_Vec, tuple)) for q in pts):  # a point that is a list may change unseen
+            self.__dict__['_sprout_native_cache'] = (key, native)
+        return native
+
+    _NATIVE = ('getPointAt', '_derivative', 'getTangentAt', 'getLength', 'getArcLengthToUMapping', 'firstKnot', 'lastKnot')
+
+    def _sprout_native(self):
+        """The C++ evaluator, for Sprout's drawing (a guide along the curve); None where a
+        subclass evaluates the curve its own way."""
+        cls = type(self)
+        if any(getattr(cls, m) is not getattr(NurbsCurve2D, m) for m in self._NATIVE):
+            return None
+        return self._native()
+
+    def __getstate__(self):  # pickled and copied without its evaluator
+        state = dict(self.__dict__)
+        state.pop('_sprout_native_cache', None)
+        return state
+
     def getPointAt(self, u):
-        k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
-        n = len(pts) - 1
-        u = max(self.firstKnot, min(self.lastKnot, u))
-        span = p
-        while span < n and u >= k[span + 1]:
-            span += 1
-        d = [[pts[j][c] * pts[j][dim] for c in range(dim)] + [pts[j][dim]] for j in range(span - p, span + 1)]
-        for r in range(1, p + 1):  # de Boor, on homogeneous points
-            for j in range(p, r - 1, -1):
-                i = j + span - p
-                den = k[i + p - r + 1] - k[i]
-                a = (u - k[i]) / den if den else 0.0
-                d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(dim + 1)]
-        w = d[p][dim] or 1.0
-        return [Vector2, Vector3][dim - 2](*[d[p][c] / w for c in range(dim)])
+        """de Boor on the homogeneous points, u clamped to the knots."""
+        return (_of2, _of3)[self._dim - 2](self._native().point(u))
 
     def _derivative(self, u, d=1):
         """The curve's d-th derivative at u (d up to 2; PlantGL's deriveAt, the NURBS Book's
-        A4.2): the weighted control points' B-spline and its derivatives (the differences of its
-        control points, one degree less each time), then the rational curve's."""
-        k, p, pts, dim = self.knotList, self.degree, self.ctrlPointList, self._dim
-        vec = [Vector2, Vector3][dim - 2]
-        if d > p:
-            return vec(*([0.0] * dim))
-        u = max(self.firstKnot, min(self.lastKnot, u))
-        ctrl = [[pt[c] * pt[dim] for c in range(dim)] + [pt[dim]] for pt in pts]
-        homogeneous, knots, degree = [], k, p
-        for order in range(d + 1):
-            homogeneous.append(_de_boor(ctrl, degree, knots, u))
-            if order == d:
-                break
-            nxt = []
-            for i in range(len(ctrl) - 1):
-                den = knots[i + degree + 1] - knots[i + 1]
-                nxt.append([degree * (ctrl[i + 1][c] - ctrl[i][c]) / den if den else 0.0 for c in range(dim + 1)])
-            ctrl, knots, degree = nxt, knots[1:-1], degree - 1
-        w = homogeneous[0][dim] or 1.0
-        ders = []
-        for order in range(d + 1):  # C(k) = (A(k) - sum over i of binom(k, i) w(i) C(k - i)) / w
-            v = list(homogeneous[order][:dim])
-            for i in range(1, order + 1):
-                b = 1 if i == order else order
-                v = [v[c] - b * homogeneous[i][dim] * ders[order - i][c] for c in range(dim)]
-            ders.append([x / w for x in v])
-        return vec(*ders[d])
+        A4.2): the weighted control points' B-spline and its derivatives, then the rational
+        curve's."""
+        return (_of2, _of3)[self._dim - 2](self._native().derivative(u, d))
 
     def getTangentAt(self, u):
         """The first derivative, not normalised (PlantGL's getTangentAt)."""
@@ -165,73 +161,31 @@ class NurbsCurve2D:
 
     def getNormalAt(self, u):
         """PlantGL's normal: (T x C'') x T / |T|^4, T the first derivative."""
-        t, n = self._derivative(u, 1), self._derivative(u, 2)
-        t3 = Vector3(t[0], t[1], t[2] if self._dim == 3 else 0.0)
-        n3 = Vector3(n[0], n[1], n[2] if self._dim == 3 else 0.0)
-        length = abs(t3)
-        r = cross(cross(t3, n3), t3) / (length ** 4) if length > 0 else Vector3(0, 0, 0)
-        return Vector2(r[0], r[1]) if self._dim == 2 else r
+        return (_of2, _of3)[self._dim - 2](self._native().normal(u))
 
     def getLength(self, begin=None, end=None):
         """The length of the polyline through `stride` evenly spaced parameters (PlantGL's
         LineicModel::getLength, its corrections at both ends included)."""
-        fk, lk = self.firstKnot, self.lastKnot
-        begin = fk if begin is None or begin < fk else begin
-        end = lk if end is None or end > lk else end
-        du = (lk - fk) / self.stride
-        begin_i, end_i = int((begin - fk) / du) * du + fk, int((end - fk) / du) * du + fk
-        p1, length = self.getPointAt(begin_i), 0.0
-        if begin - begin_i > 1e-5:
-            length -= abs(self.getPointAt(begin) - p1)
-        u = begin_i + fk + du
-        while u <= end_i:
-            p2 = self.getPointAt(u)
-            length += abs(p2 - p1)
-            p1 = p2
-            u += du
-        if end - end_i > 1e-5:
-            length += abs(self.getPointAt(end) - p1)
-        return length
+        return self._native().length(self.firstKnot if begin is None else begin, self.lastKnot if end is None else end,
+                                     self.stride)
 
     def getArcLengthToUMapping(self):
         """A function from the fraction of the curve's length to the parameter u (PlantGL's:
         the polyline through `stride` steps of u, sampled 5 * stride times)."""
-        total, fk, lk, stride = self.getLength(), self.firstKnot, self.lastKnot, self.stride
-        du = (lk - fk) / stride
-        p1, length, points, u = self.getPointAt(fk), 0.0, [(0.0, fk)], fk + du
-        for _ in range(stride):
-            p2 = self.getPointAt(u)
-            n = abs(p2 - p1)
-            if n > 0:
-                length += n
-                p1 = p2
-                points.append((length / total, u))
-            u += du
-        points[-1] = (1.0, lk)
-        return QuantisedFunction(Polyline2D(points), 5 * stride)
+        return QuantisedFunction._of(self._native().arc_to_u(self.stride))
 
     def getUToArcLengthMapping(self):
         """A function from u to the fraction of the curve's length (PlantGL's)."""
-        total, fk, lk, stride = self.getLength(), self.firstKnot, self.lastKnot, self.stride
-        du = (lk - fk) / stride
-        p1, length, points, u = self.getPointAt(fk), 0.0, [(fk, 0.0)], fk + du
-        for _ in range(stride):
-            p2 = self.getPointAt(u)
-            length += abs(p2 - p1)
-            p1 = p2
-            points.append((u, length / total))
-            u += du
-        points[-1] = (lk, 1.0)
-        return QuantisedFunction(Polyline2D(points), 5 * stride)
+        return QuantisedFunction._of(self._native().u_to_arc(self.stride))
 
     def deepcopy(self):
         import copy
         return copy.deepcopy(self)
 
     def points(self, samples=None):
-        n = samples or max(2, self.stride)
-        a, b = self.firstKnot, self.lastKnot
-        return [self.getPointAt(a + (b - a) * i / (n - 1)) for i in range(n)]
+        """`samples` (the stride) points at evenly spaced parameters."""
+        of = (_of2, _of3)[self._dim - 2]
+        return [of(p) for p in self._native().points(samples or max(2, self.stride))]
 
 
     def apply(self, action):
@@ -344,12 +298,28 @@ class QuantisedFunction:
         if isinstance(curve, (list, tuple)):
             curve = Polyline2D(curve)
         n = max(3, int(sampling))
-        a, b = curve.firstKnot, curve.lastKnot
-        first, last = curve.getPointAt(a), curve.getPointAt(b)
-        self._first, self._last = first[0], last[0]
-        extent = self._last - self._first
-        self._values = [self._value(curve, extent * i / (n - 1) + self._first, a, b, first, last) for i in range(n)]
+        # Sprout's curves are sampled in C++ (core/turtle/curves.cpp), the same numbers; any
+        # other object with a point at each parameter, here.
+        native = curve._sprout_native() if isinstance(curve, NurbsCurve2D) else None
+        if native is not None:
+            self._first, self._last, self._values = native.quantised(n)
+        elif type(curve) is Polyline2D and curve.firstKnot == 0 and curve.lastKnot == len(curve.pointList) - 1:
+            self._first, self._last, self._values = _pgl_quantised_polyline(curve.pointList, n)
+        else:
+            a, b = curve.firstKnot, curve.lastKnot
+            first, last = curve.getPointAt(a), curve.getPointAt(b)
+            self._first, self._last = first[0], last[0]
+            extent = self._last - self._first
+            self._values = [self._value(curve, extent * i / (n - 1) + self._first, a, b, first, last) for i in range(n)]
         self.clamped = clamped
+
+    @classmethod
+    def _of(cls, state, clamped=True):
+        """The function of `state` (first x, last x, values), as the C++ curves give it."""
+        f = object.__new__(cls)
+        f._first, f._last, f._values = state
+        f.clamped = clamped
+        return f
 
     @staticmethod
     def _value(curve, x, low, high, first, last):
@@ -426,14 +396,32 @@ class NurbsPatch:
 
     __str__ = __repr__
 
+    # As each row were a NurbsCurve along v, its points at v the control points of one along u
+    # (weight 1), evaluated in C++ (core/turtle/curves.cpp) by an evaluator kept on the patch
+    # while its rows hold the same points and no vector has changed in place.
+    def _native(self):
+        rows, uk, vk = self.ctrlPointMatrix, self.uknotList, self.vknotList
+        key = (_vectors._changes[0], self.udegree, self.vdegree, tuple(map(tuple, rows)),
+               None if uk is None else tuple(uk), None if vk is None else tuple(vk))
+        cache = self.__dict__.get('_sprout_native_cache')
+        if cache is not None and cache[0] == key:
+            return cache[1]
+        native = _PglPatch(rows, int(self.udegree), int(self.vdegree), uk or None, vk or None)
+        if all(isinstance(q, (_Vec, tuple)) for row in rows for q in row):
+            self.__dict__['_sprout_native_cache'] = (key, native)
+        return native
+
+    def __getstate__(self):  # pickled and copied without its evaluator
+        state = dict(self.__dict__)
+        state.pop('_sprout_native_cache', None)
+        return state
+
     def getPointAt(self, u, v):
-        rows = [NurbsCurve([p for p in row], self.vdegree, self.vknotList) for row in self.ctrlPointMatrix]
-        column = []
-        for c in rows:
-            q = c.getPointAt(c.firstKnot + (c.lastKnot - c.firstKnot) * v)
-            column.append((q[0], q[1], q[2], 1.0))
-        cu = NurbsCurve(column, self.udegree, self.uknotList)
-        return cu.getPointAt(cu.firstKnot + (cu.lastKnot - cu.firstKnot) * u)
+        return _of3(self._native().point(u, v))
+
+    def _grid(self, n):
+        """The points at (i / n, j / n), i outer, as tuples: the drawing's (plantgl_drawing.py)."""
+        return self._native().grid(n)
 
     def getUTangentAt(self, u, v):
         h = 1e-4

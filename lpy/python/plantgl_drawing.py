@@ -196,9 +196,7 @@ def _sprout_triangles(obj, depth=0):
         patch = obj if name == 'NurbsPatch' else NurbsPatch(
             get('ctrlPointMatrix'), len(get('ctrlPointMatrix')) - 1, len(get('ctrlPointMatrix')[0]) - 1)
         n = 10
-        for i in range(n + 1):
-            for j in range(n + 1):
-                pts.append(tuple(patch.getPointAt(i / n, j / n))[:3])
+        pts.extend(patch._grid(n))  # patch.getPointAt(i / n, j / n), i outer, in one call
         tris.extend(t for i in range(n) for j in range(n) for t in (
             (i * (n + 1) + j, (i + 1) * (n + 1) + j, (i + 1) * (n + 1) + j + 1),
             (i * (n + 1) + j, (i + 1) * (n + 1) + j + 1, i * (n + 1) + j + 1)))

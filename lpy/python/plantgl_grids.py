@@ -4,6 +4,7 @@
 # apart from the geometry.
 import math as _math
 
+from _sprout_lpy import _PointGrid
 from openalea.plantgl._vectors import Vector3, dot
 
 
@@ -82,20 +83,9 @@ class Grid3Indexing:
         return out
 
 
-_U64 = (1 << 64) - 1
-
-
-def _size_t(x):
-    """C++'s size_t(x) of a double (truncated; a negative one wraps, as on x86-64)."""
-    return int(x) & _U64
-
-
 class Point3Grid:
-    """PlantGL's Point3Grid (its regularpointgrid.h, in double precision): a regular grid of
-    voxels over the points' bounds, each voxel keeping the indices of its points in the order
-    they were added; queries walk the voxels near the query (the last coordinate fastest) and
-    each voxel's points in order, so they give PlantGL's indices in PlantGL's order. Disabling a
-    point takes it out of its voxel; enabling puts it back at the voxel's end."""
+    """PlantGL's Point3Grid: its arguments read here, its voxels and queries in C++
+    (core/turtle/point_grid.hpp says how it follows PlantGL's order)."""
 
     def __init__(self, a, b=None, c=None, d=None):
         if d is not None:  # (voxel size, min point, max point, points)
@@ -116,142 +106,38 @@ class Point3Grid:
                 size = [(hi[k] - lo[k]) / float(b if b is not None else 10) for k in range(3)]
         self._size = [v if v > 1e-5 else 1e-5 for v in size]
         self._lo = lo
-        self._dims = [_size_t((hi[k] - lo[k]) / self._size[k]) + 1 for k in range(3)]
-        self._voxels = {}
-        for i, p in enumerate(self.points):
-            self._voxels.setdefault(self._cell_id(self._index(p)), []).append(i)
-
-    def _index(self, p):
-        return [_size_t((p[k] - self._lo[k]) / self._size[k]) for k in range(3)]
-
-    def _cell_id(self, index):
-        nx, ny, nz = self._dims
-        return (index[2] + nz * (index[1] + ny * index[0])) & _U64
-
-    def _centre(self, index):
-        return [self._lo[k] + (index[k] + 0.5) * self._size[k] for k in range(3)]
-
-    def _around(self, centre, radius):
-        """The voxels of the box around `centre` reaching `radius`, as PlantGL walks them:
-        (cell id, index), the last coordinate fastest."""
-        c = self._index(centre)
-        lo, hi = [], []
-        for k in range(3):
-            r = _size_t(1 + radius / self._size[k])
-            lo.append(0 if c[k] < r else c[k] - r)
-            hi.append(min(self._dims[k] - 1, (c[k] + r) & _U64))
-        if any(lo[k] > hi[k] for k in range(3)):
-            return
-        for i in range(lo[0], hi[0] + 1):
-            for j in range(lo[1], hi[1] + 1):
-                for k in range(lo[2], hi[2] + 1):
-                    yield self._cell_id((i, j, k)), (i, j, k)
-
-    @staticmethod
-    def _norm(v):
-        return _math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        self._grid = _PointGrid(self.points, size, lo, hi)  # the voxels and the queries, in C++
 
     def query_ball_point(self, centre, radius):
-        c = [float(v) for v in tuple(centre)[:3]]
-        r = radius + self._norm(self._size)
-        out = []
-        for cid, index in self._around(c, radius):
-            pts = self._voxels.get(cid)
-            if not pts:
-                continue
-            vc = self._centre(index)
-            if not self._norm([vc[k] - c[k] for k in range(3)]) < r:
-                continue
-            for i in pts:
-                p = self.points[i]
-                if not self._norm([p[k] - c[k] for k in range(3)]) > radius:
-                    out.append(i)
-        return out
-
-    def _corners(self, index):
-        lo = [self._lo[k] + index[k] * self._size[k] for k in range(3)]
-        hi = [self._lo[k] + (index[k] + 1) * self._size[k] for k in range(3)]
-        corners = [lo]
-        for k in range(3):
-            for q in list(corners):
-                q = list(q)
-                q[k] = hi[k]
-                corners.append(q)
-        return corners
+        return self._grid.ball(tuple(centre), float(radius))
 
     def query_points_in_cone(self, centre, direction, radius, angle=_math.pi / 2):
-        c = [float(v) for v in tuple(centre)[:3]]
-        dv = [float(v) for v in tuple(direction)[:3]]
-        n = self._norm(dv)
-        d = [v / n for v in dv] if n > 0 else dv
-        r = radius + self._norm(self._size)
-        cos_half = _math.cos(angle / 2)
-        cos_large = _math.cos(min(angle / 2 + _math.pi / 4, _math.pi))
-
-        def unit(v):
-            m = self._norm(v)
-            return ([x / m for x in v] if m > 0 else v), m
-
-        out = []
-        for cid, index in self._around(c, radius):
-            pts = self._voxels.get(cid)
-            if not pts:
-                continue
-            vc = self._centre(index)
-            u, dist = unit([vc[k] - c[k] for k in range(3)])
-            if not dist < r:
-                continue
-            a = sum(u[k] * d[k] for k in range(3))
-            inside = a > cos_half
-            if not inside and a > cos_large:
-                for q in self._corners(index):
-                    w, _ = unit([q[k] - c[k] for k in range(3)])
-                    if sum(w[k] * d[k] for k in range(3)) > cos_half:
-                        inside = True
-                        break
-            if not inside:
-                continue
-            for i in pts:
-                p = self.points[i]
-                w, dist = unit([p[k] - c[k] for k in range(3)])
-                if dist <= radius + 1e-5 and sum(w[k] * d[k] for k in range(3)) > cos_half - 1e-5:
-                    out.append(i)
-        return out
+        return self._grid.cone(tuple(centre), tuple(direction), float(radius), float(angle))
 
     def disable_point(self, i):
-        pts = self._voxels.get(self._cell_id(self._index(self.points[i])), [])
-        if i in pts:
-            pts.remove(i)
-            return True
-        return False
+        return self._grid.disable(i)
 
     def enable_point(self, i):
-        pts = self._voxels.setdefault(self._cell_id(self._index(self.points[i])), [])
-        if i not in pts:
-            pts.append(i)
-            return True
-        return False
+        return self._grid.enable(i)
 
     def disable_points(self, indices):
-        for i in indices:
-            self.disable_point(i)
+        self._grid.disable_all(indices)
 
     def enable_points(self, indices):
-        for i in indices:
-            self.enable_point(i)
+        self._grid.enable_all(indices)
 
     def is_point_enabled(self, i):
-        return i in self._voxels.get(self._cell_id(self._index(self.points[i])), ())
+        return self._grid.enabled(i)
 
     @property
     def enabled(self):
-        return [self.is_point_enabled(i) for i in range(len(self.points))]
+        return [self._grid.enabled(i) for i in range(len(self.points))]
 
     def get_enabled_point_indices(self):
-        return [i for i in range(len(self.points)) if self.is_point_enabled(i)]
+        return self._grid.enabled_indices()
 
     def get_enabled_points(self):  # the points themselves, as PlantGL's grid gives them
-        return [self.points[i] for i in self.get_enabled_point_indices()]
+        return [self.points[i] for i in self._grid.enabled_indices()]
 
     def nbPoints(self):
         return len(self.points)

@@ -3,6 +3,10 @@
 # because every other part builds on it.
 import math as _math
 
+# Every change of a vector in place counts here: a curve's evaluator in C++ is kept while the
+# count and the curve's lists are the same (plantgl_curves.py's _native).
+_changes = [0]
+
 
 class _Vec:
     """PlantGL's vectors: mutable (v.z *= -1), indexable, with +, -, * (by a number, or a dot
@@ -24,6 +28,14 @@ class _Vec:
 
     def __setitem__(self, i, value):
         self._v[i] = float(value)
+        _changes[0] += 1
+
+    @classmethod
+    def _of(cls, values):
+        """A vector of `values`, a list of cls._n floats taken as it is (the C++ curves' points)."""
+        v = object.__new__(cls)
+        v._v = values
+        return v
 
     def __iter__(self):
         return iter(self._v)
@@ -91,6 +103,7 @@ class _Vec:
         n = abs(self)
         if n > 0:
             self._v = [a / n for a in self._v]
+            _changes[0] += 1
         return n
 
     def __repr__(self):  # as PlantGL writes it: Vector3(0.123457,2,1e-07)

@@ -72,6 +72,33 @@ def test_every_kind_of_file(tmp_path):
     assert str(again.derive(2)) == str(sprout.open("fractal_plant").derive(2))
 
 
+LAZY_MODEL = """Axiom: A(1)
+derivation length: 2
+production:
+A(x) --> A(x + 1) B
+interpretation:
+B :
+    if broken:
+        raise ValueError("drawn")
+    produce F(1)
+endlsystem
+"""
+
+
+def test_an_lpy_model_is_derived_by_open_and_drawn_when_asked():
+    # open() and derive() derive: the interpretation rule, which fails here, has not run.
+    plant = sprout.parse("broken = True\n" + LAZY_MODEL, kind="lpy")
+    assert str(plant.derive()) == "A(3)BB" and plant.lpy_string == "A(3)BB"
+    assert [str(s) for s in plant.steps(2)] == ["A(1)", "A(2)B", "A(3)BB"]
+    assert plant.derive(1)[1] == ("B", ())
+    with pytest.raises(RuntimeError, match=r"^<model>:9:9: ValueError: drawn"):
+        plant.geometry()
+    # Drawn when asked, each step on its own, and kept.
+    plant = sprout.parse("broken = False\n" + LAZY_MODEL, kind="lpy")
+    assert [len(plant.geometry(n)["segments"]) for n in (2, 1, 0, 2)] == [2, 1, 0, 2]
+    assert plant.render(n=1, width=40, height=30).shape == (30, 40, 4)
+
+
 def test_errors_carry_line_and_column():
     with pytest.raises(sprout.GrammarError) as e:
         sprout.parse("n: 2\naxiom: F\nF -> F[+F\n")

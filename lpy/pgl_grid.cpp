@@ -1,0 +1,64 @@
+// Sprout's openalea.plantgl Point3Grid (lpy/python/plantgl_grids.py) on the C++ grid
+// (core/turtle/point_grid.hpp): `_sprout_lpy._PointGrid`, which the Python class holds. A
+// space colonisation model asks it thousands of cone and ball queries a step.
+#include <pybind11/stl.h>
+
+#include "core/turtle/point_grid.hpp"
+#include "lpy/host_impl.hpp"
+
+namespace sprout::lpy {
+namespace {
+
+PointGrid::Vec vec3(py::handle v) {
+    PointGrid::Vec out{0, 0, 0};
+    size_t k = 0;
+    for (py::handle x : v) {
+        if (k == 3) break;
+        out[k++] = x.cast<double>();
+    }
+    return out;
+}
+
+std::vector<PointGrid::Vec> points(py::iterable pts) {
+    std::vector<PointGrid::Vec> out;
+    for (py::handle p : pts) out.push_back(vec3(p));
+    return out;
+}
+
+py::list indices(const std::vector<std::uint32_t>& found) {
+    py::list out(found.size());
+    for (size_t k = 0; k < found.size(); ++k) out[k] = py::int_(found[k]);
+    return out;
+}
+
+}  // namespace
+
+void definePointGrid(py::module_& m) {
+    py::class_<PointGrid>(m, "_PointGrid")
+        .def(py::init([](py::iterable pts, py::handle size, py::handle lower, py::handle upper) {
+                 return PointGrid(points(pts), vec3(size), vec3(lower), vec3(upper));
+             }),
+             py::arg("points"), py::arg("size"), py::arg("lower"), py::arg("upper"))
+        .def("__len__", &PointGrid::size)
+        .def("ball", [](const PointGrid& g, py::handle c, double r) { return indices(g.ballQuery(vec3(c), r)); })
+        .def("cone", [](const PointGrid& g, py::handle c, py::handle d, double r, double a) {
+            return indices(g.coneQuery(vec3(c), vec3(d), r, a));
+        })
+        .def("disable", [](PointGrid& g, long i) { return i >= 0 && g.disable(size_t(i)); })
+        .def("enable", [](PointGrid& g, long i) { return i >= 0 && g.enable(size_t(i)); })
+        .def("disable_all", [](PointGrid& g, py::iterable is) {
+            for (py::handle i : is) g.disable(i.cast<size_t>());
+        })
+        .def("enable_all", [](PointGrid& g, py::iterable is) {
+            for (py::handle i : is) g.enable(i.cast<size_t>());
+        })
+        .def("enabled", [](const PointGrid& g, long i) { return i >= 0 && g.enabled(size_t(i)); })
+        .def("enabled_indices", [](const PointGrid& g) {
+            std::vector<std::uint32_t> out;
+            for (size_t i = 0; i < g.size(); ++i)
+                if (g.enabled(i)) out.push_back(std::uint32_t(i));
+            return indices(out);
+        });
+}
+
+}  // namespace sprout::lpy

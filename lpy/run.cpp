@@ -1,0 +1,283 @@
+// runModel (lpy/host.hpp): an L-Py model file read, run and drawn for the CLI, the viewer and
+// `import sprout`. The interpreter's start, the names and the Python side of the engine are
+// host.cpp's; this file is one run, from the text to what the turtle draws.
+#include <chrono>
+#include <thread>
+
+#include <pybind11/stl.h>
+
+#include "core/derive/draw.hpp"
+#include "lpy/host.hpp"
+#include "lpy/host_impl.hpp"
+
+namespace sprout::lpy {
+namespace {
+// Interrupts Python on the running thread when `cancel` is set (an endless loop in a rule).
+class CancelWatch {
+public:
+    CancelWatch(const std::atomic<bool>* cancel) : m_cancel(cancel) {
+        if (!m_cancel) return;
+        m_thread = PyThread_get_thread_ident();
+        m_watch = std::thread([this] {
+            while (!m_done.load()) {
+                if (m_cancel->load()) {
+                    py::gil_scoped_acquire gil;
+                    if (!m_done.load()) PyThreadState_SetAsyncExc(m_thread, PyExc_KeyboardInterrupt);
+                    return;
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            }
+        });
+    }
+    ~CancelWatch() {
+        m_done = true;
+        if (m_watch.joinable()) {
+            {
+                py::gil_scoped_release release;  // the watcher may be waiting for the GIL
+                m_watch.join();
+            }
+            // An interrupt that arrived as the run ended must not hit the next run.
+            PyThreadState_SetAsyncExc(m_thread, nullptr);
+        }
+    }
+
+private:
+    const std::atomic<bool>* m_cancel;
+    unsigned long m_thread = 0;
+    std::atomic<bool> m_done{false};
+    std::thread m_watch;
+};
+
+// The kept steps as Sprout's derivation record: module names with their numbers, and each
+// module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
+DerivationRecord recordOf(const std::vector<LString>& every, const Translation& tr) {
+    auto g = std::make_shared<Grammar>();
+    for (const Rule& r : tr.rules) {
+        Production p;
+        p.line = r.line;
+        g->rules.productions.push_back(std::move(p));
+    }
+    DerivationRecord record;
+    for (size_t k = 0; k < every.size(); ++k) {
+        auto string = std::make_shared<ModuleString>();
+        auto origins = std::make_shared<Origins>();
+        for (size_t i = 0; i < every[k].size(); ++i) {
+            const LModule& m = every[k][i];
+            const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+            const int arity = int(std::min<Py_ssize_t>(n, Alphabet::kMaxArity));
+            auto id = g->alphabet.intern(tr.classes.name(m.cls), arity);
+            if (!id) id = g->alphabet.intern("?", 0);
+            if (!id) break;
+            string->symbols.push_back(*id);
+            for (int a = 0; a < int(g->alphabet[*id].arity); ++a) {
+                PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), a);
+                double x = std::numeric_limits<double>::quiet_NaN();
+                if (PyFloat_Check(v)) x = PyFloat_AS_DOUBLE(v);
+                else if (PyLong_Check(v)) x = PyLong_AsDouble(v);
+                if (PyErr_Occurred()) PyErr_Clear(), x = std::numeric_limits<double>::quiet_NaN();
+                string->params.push_back(x);
+            }
+            origins->parent.push_back(k == 0 ? std::uint32_t(i) : m.parent);
+            origins->rule.push_back(k == 0 || m.rule < 0 || size_t(m.rule) >= tr.rules.size() ? -1 : m.rule);
+        }
+        record.steps.push_back(std::move(string));
+        record.origins.push_back(std::move(origins));
+    }
+    record.grammar = std::move(g);
+    return record;
+}
+
+
+// A run that draws later (RunOptions::drawLater): its engine, namespace and kept steps, which
+// hold Python objects, so that they are let go with the GIL held.
+class KeptRun final : public StepDrawer {
+public:
+    struct State {
+        RunOptions options;  // the engine keeps a reference
+        py::dict ns;
+        std::unique_ptr<Engine> engine;
+        std::vector<LString> every;
+        TurtleDefaults defaults;
+        std::string file, text;
+    };
+    std::unique_ptr<State> state = std::make_unique<State>();
+
+    ~KeptRun() override {
+        if (!Py_IsInitialized()) {
+            (void)state.release();  // the interpreter is gone, and its objects with it
+            return;
+        }
+        py::gil_scoped_acquire gil;
+        state.reset();
+    }
+
+    int steps() const override { return int(state->every.size()); }
+
+    std::shared_ptr<const Grammar> draw(int step) override {
+        if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
+        std::lock_guard<std::mutex> lock(runMutex());
+        py::gil_scoped_acquire gil;
+        State& st = *state;
+        py::module_ sys = py::module_::import("sys");
+        py::object savedStdout = sys.attr("stdout");
+        sys.attr("stdout") = sys.attr("stderr");  // as in the run: standard output is Sprout's
+        struct Restore {
+            py::module_& sys;
+            py::object& saved;
+            ~Restore() { sys.attr("stdout") = saved; }
+        } restore{sys, savedStdout};
+        EngineScope scope(st.engine.get());
+        try {
+            return drawable(st.engine->interpret(st.every[size_t(step)]), st.engine->translation().classes, st.defaults);
+        } catch (py::error_already_set& e) {
+            throw std::runtime_error(formatDiagnostic(describe(e, st.file, st.text), st.file));
+        }
+    }
+};
+
+}  // namespace
+
+Model runModel(std::string_view written, const RunOptions& options) {
+    Model out;
+    // %pastefile / %pastemodule lines first, as L-Py reads a file.
+    const std::string pasted = pasteFiles(written, pasteReader(options.path), out.diagnostics);
+    if (hasErrors(out.diagnostics)) return out;
+    const std::string_view text = pasted;
+    try {
+        start();
+    } catch (std::exception& e) {
+        const Translation tr = translate(text);  // its own errors first, then why it cannot run
+        out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
+        out.diagnostics.push_back({0, 0, std::string("Python could not start: ") + e.what(), Severity::Error});
+        return out;
+    }
+    std::lock_guard<std::mutex> lock(runMutex());
+    py::gil_scoped_acquire gil;
+    // Read with the process's names (the registry is held with the GIL): the same modules as
+    // the L-systems made from Python, with ids that agree with theirs.
+    Translation tr = translate(text, &registry());
+    out.diagnostics.insert(out.diagnostics.end(), tr.diagnostics.begin(), tr.diagnostics.end());
+    if (!tr.ok()) return out;
+    registry().adopt(tr.classes, false);
+    const std::string file = options.path.empty() ? "<model>" : options.path;
+    std::string initCode = tr.initCode, mainCode = tr.mainCode;
+    py::dict ns;
+    ns["__builtins__"] = py::module_::import("builtins");
+    ns["__name__"] = "__lpy__";
+    ns["__file__"] = file;
+    py::module_ lpyModule;
+    try {
+        lpyModule = py::module_::import("openalea.lpy");
+        lpyModule.attr("_begin")(ns, file);
+        prepareNamespace(ns, options.path);
+    } catch (py::error_already_set& e) {
+        out.diagnostics.push_back(describe(e, file, text));
+        return out;
+    }
+    // What the model prints goes to standard error: standard output carries Sprout's results
+    // (`sprout expand` writes the string there).
+    py::module_ sys = py::module_::import("sys");
+    py::object savedStdout = sys.attr("stdout");
+    sys.attr("stdout") = sys.attr("stderr");
+    struct Restore {
+        py::module_& sys;
+        py::object& saved;
+        ~Restore() { sys.attr("stdout") = saved; }
+    } restore{sys, savedStdout};
+    // The engine and what it needs live on the heap: a run that draws later (drawLater) keeps
+    // them with the Model, the others drop them at the end of this function, the GIL held.
+    auto kept = std::make_shared<KeptRun>();
+    KeptRun::State& st = *kept->state;
+    st.options = options;
+    st.ns = ns;
+    st.file = file;
+    st.text = std::string(text);
+    st.engine = std::make_unique<Engine>(std::move(tr), ns, st.options);
+    Engine& engine = *st.engine;
+    EngineScope scope(&engine);
+    engine.sceneOf = [&engine](const LString& s) { return sceneOf(engine, s); };
+    CancelWatch watch(options.cancel);
+    auto builtins = py::module_::import("builtins");
+    try {
+        // The INITIALISATION part runs first, then __initialiseContext__, then the model.
+        builtins.attr("exec")(builtins.attr("compile")(initCode, file, "exec"), ns);
+        if (ns.contains("__initialiseContext__")) ns["__initialiseContext__"](lpyModule.attr("context")());
+        builtins.attr("exec")(builtins.attr("compile")(mainCode, file, "exec"), ns);
+        engine.bind();
+        out.derivationLength = engine.derivationLength;
+        const int steps = options.steps >= 0 ? options.steps : engine.derivationLength;
+        std::vector<LString> every;
+        std::vector<std::shared_ptr<const ContextMatches>> contexts;
+        engine.fillQueries = [&engine, lpyModule](LString& s) { fillQueries(engine, s, turtleDefaults(lpyModule)); };
+        LString axiom = engine.axiom();
+        const auto deriveStart = std::chrono::steady_clock::now();
+        LString s;
+        // A model of the native path whose string no Python reads afterwards (no
+        // interpretation rules, no growth stepping) keeps its string as numbers to the end.
+        NumString numbers;
+        const bool numeric = engine.native() && !engine.interprets() && !options.keepSteps &&
+                             engine.deriveNumbers(axiom, steps, nullptr, numbers, false);
+        if (!numeric) {
+            // Python's cycle collector walks every live object each time enough new ones were
+            // made: with a string of a million parameter tuples alive it runs again and again
+            // over all of them. The derivation makes no cycles of its own; it runs once after.
+            struct Collector {
+                int was = PyGC_Disable();
+                ~Collector() {
+                    if (was) PyGC_Enable();
+                }
+            } paused;
+            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr, options.keepSteps ? &contexts : nullptr);
+        }
+        out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
+        out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
+        out.ranNative = engine.ranNative;
+        out.derived = numeric ? engine.text(numbers) : engine.text(s);
+        // What the turtle draws, with the file's turtle settings and materials.
+        TurtleDefaults d = turtleDefaults(lpyModule);
+        py::dict state = lpyModule.attr("_state");
+        std::vector<std::string> leftOut;
+        // Drawn later: only the turtle's settings now (a drawing of nothing), each step when asked.
+        auto g = options.drawLater ? drawable(LString(), engine.translation().classes, d, nullptr)
+                 : numeric         ? drawable(numbers, engine.translation().classes, d, &leftOut)
+                                   : drawable(engine.interpret(s), engine.translation().classes, d, &leftOut);
+        for (const auto& name : leftOut)
+            out.diagnostics.push_back({0, 0, "'" + name + "' is not drawn by Sprout yet", Severity::Warning});
+        if (!options.drawLater)
+            for (const LString& step : every) {
+                const LString shown = engine.interpret(step);
+                auto from = std::make_shared<std::vector<std::uint32_t>>();
+                out.steps.push_back(drawable(shown, engine.translation().classes, d, nullptr, false, from.get()));
+                for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
+                out.drawnFrom.push_back(std::move(from));
+            }
+        if (options.keepSteps) out.record = recordOf(every, engine.translation()), out.record.contexts = std::move(contexts);
+        for (auto w : py::list(state["warnings"]))
+            out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});
+        out.drawable = std::move(g);
+        if (options.drawLater && options.keepSteps) {
+            st.every = std::move(every);
+            st.defaults = d;
+            st.options.cancel = nullptr;  // the caller's flag is not kept alive with the run
+            out.later = kept;
+        }
+    } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_KeyboardInterrupt) && options.cancel && options.cancel->load()) {
+            out.cancelled = true;
+            out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+        } else {
+            out.diagnostics.push_back(describe(e, file, text));
+        }
+    } catch (Cancelled&) {
+        out.cancelled = true;
+        out.diagnostics.push_back({0, 0, "cancelled", Severity::Error});
+    } catch (TooBig& e) {  // at the line that asked for the steps
+        const auto [line, col] = engine.translation().derivationLengthAt;
+        out.diagnostics.push_back({line, col, e.what(), Severity::Error});
+    } catch (std::exception& e) {  // a value Python gave that C++ cannot take (pybind11's cast errors)
+        out.diagnostics.push_back({0, 0, e.what(), Severity::Error});
+    }
+    return out;
+}
+
+}  // namespace sprout::lpy
