@@ -68,7 +68,7 @@ void defineTypes(py::module_& m);
 // PlantGL's curves in C++ for Sprout's Python PlantGL (pgl_native.cpp: _PglNurbs, _PglPatch),
 // added by defineTypes.
 void definePlantGL(py::module_& m);
-void definePointGrid(py::module_& m);  // pgl_grid.cpp: Point3Grid's C++ grid
+void definePointGrid(py::module_& m);  // pgl_shapes.cpp: Point3Grid, AsymmetricHull
 void defineSession(py::module_& m);
 
 }  // namespace sprout::lpy

@@ -4,52 +4,22 @@
 # file: Sprout's code, not PlantGL's interface.
 import math as _math
 
+from _sprout_lpy import _hull_mesh
 from openalea.plantgl._curves import NurbsPatch
 from openalea.plantgl._vectors import Matrix3, Vector3
 
 
 def _asymmetric_hull(obj, num):
     """PlantGL's AsymmetricHull (a tree crown) as `(points, triangles)`, as PlantGL's discretizer
-    makes it: around the z axis, 4 * slices meridians through the points at the four radii (an
-    ellipse in each quadrant: x from the x radius on its side, y from the y radius, the height
-    from the two quadrant heights as cos^2 and sin^2); each meridian goes from the bottom to its
-    point and on to the top in `stacks` steps, evenly in distance from the axis through the
-    bottom (or top) point, its height following that distance's power bottomShape (topShape)."""
+    makes it (core/turtle/asymmetric_hull.hpp says how): its fields read here, its mesh made in
+    C++."""
     g = lambda field, default: num(getattr(obj, field, default), default)
-    rad = {k: g(k + 'Radius', 0.5) for k in ('negX', 'posX', 'negY', 'posY')}
-    hgt = {k: g(k + 'Height', 0.0) for k in ('negX', 'posX', 'negY', 'posY')}
     point = lambda v, d: tuple(num(x, 0) for x in (tuple(v) + (0.0, 0.0, 0.0))[:3]) if v is not None else d
-    bottom = point(getattr(obj, 'bottom', None), (0.0, 0.0, -0.5))
-    top = point(getattr(obj, 'top', None), (0.0, 0.0, 0.5))
-    shape_bottom, shape_top = max(1e-6, g('bottomShape', 2.0)), max(1e-6, g('topShape', 2.0))
-    slices = max(1, min(64, int(g('slices', 4))))
-    stacks = max(1, min(64, int(g('stacks', 4))))
-    quadrants = (('posX', 'posY'), ('negX', 'posY'), ('negX', 'negY'), ('posX', 'negY'))
-    around = 4 * slices
-    ring = 2 * stacks - 1  # points on a meridian, between the bottom and the top
-    pts, tris = [], []
-
-    def towards(end, p, t, shape):  # from end (the bottom or top) towards p: t of the horizontal way
-        dx, dy, dz = p[0] - end[0], p[1] - end[1], p[2] - end[2]
-        return end[0] + dx * t, end[1] + dy * t, end[2] + dz * t ** shape
-
-    for q, (kx, ky) in enumerate(quadrants):
-        for i in range(slices):
-            a = 2 * _math.pi * (q * slices + i) / around
-            c, s = _math.cos(a), _math.sin(a)
-            p = (c * rad[kx], s * rad[ky], hgt[kx] * c * c + hgt[ky] * s * s)
-            pts.extend(towards(bottom, p, j / stacks, shape_bottom) for j in range(1, stacks))
-            pts.append(p)
-            pts.extend(towards(top, p, 1 - j / stacks, shape_top) for j in range(1, stacks))
-    b, t = len(pts), len(pts) + 1
-    pts.extend((bottom, top))
-    for k in range(around):
-        cur, nxt = k * ring, (k + 1) % around * ring
-        tris.append((cur, b, nxt))
-        for j in range(ring - 1):
-            tris.extend(((cur + j, nxt + j, nxt + j + 1), (cur + j, nxt + j + 1, cur + j + 1)))
-        tris.append((cur + ring - 1, nxt + ring - 1, t))
-    return pts, tris
+    return _hull_mesh(tuple(g(k + 'Radius', 0.5) for k in ('negX', 'posX', 'negY', 'posY')),
+                      tuple(g(k + 'Height', 0.0) for k in ('negX', 'posX', 'negY', 'posY')),
+                      point(getattr(obj, 'bottom', None), (0.0, 0.0, -0.5)), point(getattr(obj, 'top', None), (0.0, 0.0, 0.5)),
+                      g('bottomShape', 2.0), g('topShape', 2.0), int(max(-1e9, min(1e9, g('slices', 4)))),
+                      int(max(-1e9, min(1e9, g('stacks', 4)))))
 
 
 def _sprout_triangles(obj, depth=0):

@@ -1,8 +1,10 @@
-// Sprout's openalea.plantgl Point3Grid (lpy/python/plantgl_grids.py) on the C++ grid
-// (core/turtle/point_grid.hpp): `_sprout_lpy._PointGrid`, which the Python class holds. A
-// space colonisation model asks it thousands of cone and ball queries a step.
+// Sprout's openalea.plantgl on C++ (core/turtle/): Point3Grid's grid (`_sprout_lpy._PointGrid`,
+// which the Python class of lpy/python/plantgl_grids.py holds; a space colonisation model asks
+// it thousands of cone and ball queries a step) and the AsymmetricHull's mesh (`_hull_mesh`,
+// for lpy/python/plantgl_drawing.py; a crown model draws thousands a step).
 #include <pybind11/stl.h>
 
+#include "core/turtle/asymmetric_hull.hpp"
 #include "core/turtle/point_grid.hpp"
 #include "lpy/host_impl.hpp"
 
@@ -34,6 +36,23 @@ py::list indices(const std::vector<std::uint32_t>& found) {
 }  // namespace
 
 void definePointGrid(py::module_& m) {
+    // (negX, posX, negY, posY radii), (the same heights), bottom, top, bottomShape, topShape,
+    // slices, stacks -> (points, triangles) as lists of tuples.
+    m.def("_hull_mesh", [](std::array<double, 4> r, std::array<double, 4> h, py::handle bottom, py::handle top, double sb, double st,
+                           int slices, int stacks) {
+        AsymmetricHull hull;
+        hull.negXRadius = r[0], hull.posXRadius = r[1], hull.negYRadius = r[2], hull.posYRadius = r[3];
+        hull.negXHeight = h[0], hull.posXHeight = h[1], hull.negYHeight = h[2], hull.posYHeight = h[3];
+        hull.bottom = vec3(bottom), hull.top = vec3(top);
+        hull.bottomShape = sb, hull.topShape = st, hull.slices = slices, hull.stacks = stacks;
+        const HullMesh mesh = meshOf(hull);
+        py::list points(mesh.points.size()), triangles(mesh.triangles.size());
+        for (size_t k = 0; k < mesh.points.size(); ++k) points[k] = py::make_tuple(mesh.points[k][0], mesh.points[k][1], mesh.points[k][2]);
+        for (size_t k = 0; k < mesh.triangles.size(); ++k)
+            triangles[k] = py::make_tuple(mesh.triangles[k][0], mesh.triangles[k][1], mesh.triangles[k][2]);
+        return py::make_tuple(points, triangles);
+    });
+
     py::class_<PointGrid>(m, "_PointGrid")
         .def(py::init([](py::iterable pts, py::handle size, py::handle lower, py::handle upper) {
                  return PointGrid(points(pts), vec3(size), vec3(lower), vec3(upper));
