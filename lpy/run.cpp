@@ -2,7 +2,9 @@
 // `import sprout`. The interpreter's start, the names and the Python side of the engine are
 // host.cpp's; this file is one run, from the text to what the turtle draws.
 #include <chrono>
+#include <optional>
 #include <thread>
+#include <unordered_map>
 
 #include <pybind11/stl.h>
 
@@ -58,6 +60,8 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
         g->rules.productions.push_back(std::move(p));
     }
     DerivationRecord record;
+    // Each class and arity's symbol, looked up once (the alphabet finds a name by a walk).
+    std::unordered_map<std::uint64_t, std::optional<SymbolId>> symbols;
     for (size_t k = 0; k < every.size(); ++k) {
         auto string = std::make_shared<ModuleString>();
         auto origins = std::make_shared<Origins>();
@@ -65,8 +69,12 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
             const LModule& m = every[k][i];
             const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
             const int arity = int(std::min<Py_ssize_t>(n, Alphabet::kMaxArity));
-            auto id = g->alphabet.intern(tr.classes.name(m.cls), arity);
-            if (!id) id = g->alphabet.intern("?", 0);
+            auto [at, fresh] = symbols.try_emplace(std::uint64_t(std::uint32_t(m.cls)) << 8 | std::uint64_t(arity));
+            if (fresh) {
+                at->second = g->alphabet.intern(tr.classes.name(m.cls), arity);
+                if (!at->second) at->second = g->alphabet.intern("?", 0);
+            }
+            const std::optional<SymbolId> id = at->second;
             if (!id) break;
             string->symbols.push_back(*id);
             for (int a = 0; a < int(g->alphabet[*id].arity); ++a) {
