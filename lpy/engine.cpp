@@ -196,12 +196,20 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
     }
     if (start == 0) callHook("Start", &s, nullptr, &s);
     predictGrowth(s, steps);
-    if (everyStep) everyStep->push_back(s);
     if (contexts) contexts->push_back(nullptr);  // the axiom's: none
     const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
+    // Each step is kept (everyStep) as it ends. It is moved there once the next step's
+    // production has read it, unless something may change it in place before (StartEach,
+    // a selection, query modules filled, a debugger): then it is copied at once.
+    bool pending = everyStep != nullptr;
+    const bool changedBeforePass = m_ns.contains("StartEach") || (fillQueries && !m_queryGroups.empty()) || debugger;
     int done = 0;
     for (int i = 0; i < steps; ++i) {
         checkCancel();
+        if (pending && (changedBeforePass || selectionAlways || selectionRequested || !m_hasKind[prod])) {
+            everyStep->push_back(s);
+            pending = false;
+        }
         if (selectionAlways || selectionRequested) insertSelection(s);
         iteration = start + i;
         callHook("StartEach", &s, nullptr, &s);
@@ -220,6 +228,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
             } keep{m_contexts = matched.get()};
             if (debugger) debugger.attr("begin")(PyLstring{std::make_shared<LString>(s)}, forwardDirection ? 0 : 1);
             pass(s, next, RuleKind::Production, forwardDirection);
+            if (pending) everyStep->push_back(std::move(s)), pending = false;
             s = std::move(next);
             if (debugger) debugger.attr("end")(PyLstring{std::make_shared<LString>(s)});
         }
@@ -227,10 +236,11 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         frameDisplayed = animating || i == steps - 1;
         endEach(s);
         ++done;
-        if (everyStep) everyStep->push_back(s);
+        pending = everyStep != nullptr;
         if (contexts) matched->sort(), contexts->push_back(std::move(matched));
         if (stopRequested) break;
     }
+    if (pending) everyStep->push_back(s);
     iteration = start + std::max(0, done - 1);
     if (start + done == total) {
         // End(lstring, scene): the scene of the last step (EndEach's, or made now).

@@ -32,8 +32,8 @@ struct RunOptions {
     // parameters measured): a step that would pass it ends the derivation with a message.
     std::uint64_t maxBytes = defaultMemoryBudget();
     bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
-    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive);
-    // Model::later draws a step when it is asked for.
+    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive),
+    // and no record made; Model::later draws a step, or reads it, when it is asked for.
     bool drawLater = false;
 };
 
@@ -45,6 +45,8 @@ public:
     virtual ~StepDrawer() = default;
     virtual int steps() const = 0;  // step 0 (the axiom) .. steps() - 1
     virtual std::shared_ptr<const Grammar> draw(int step) = 0;
+    // Step `step` as derived: a record of that step alone (its grammar names the modules).
+    virtual DerivationRecord derived(int step) = 0;
 };
 
 struct Model {

@@ -50,9 +50,44 @@ private:
     std::thread m_watch;
 };
 
+// A kept module as the record reads it: its class, its numbers (NaN for another Python value),
+// and where it came from. For a step of Python modules, and of the native path's numbers.
+struct ModuleOf {
+    const LString& s;
+    size_t size() const { return s.size(); }
+    int cls(size_t i) const { return s[i].cls; }
+    int count(size_t i) const { return s[i].args ? int(PyTuple_GET_SIZE(s[i].args.ptr())) : 0; }
+    double number(size_t i, int a) const {
+        PyObject* v = PyTuple_GET_ITEM(s[i].args.ptr(), a);
+        double x = std::numeric_limits<double>::quiet_NaN();
+        if (PyFloat_Check(v)) x = PyFloat_AS_DOUBLE(v);
+        else if (PyLong_Check(v)) x = PyLong_AsDouble(v);
+        if (PyErr_Occurred()) PyErr_Clear(), x = std::numeric_limits<double>::quiet_NaN();
+        return x;
+    }
+    int rule(size_t i) const { return s[i].rule; }
+    std::uint32_t parent(size_t i) const { return s[i].parent; }
+};
+struct NumberModuleOf {
+    const NumString& s;
+    std::vector<size_t> at;  // where each module's numbers start
+    explicit NumberModuleOf(const NumString& n) : s(n) {
+        at.reserve(s.size());
+        size_t k = 0;
+        for (size_t i = 0; i < s.size(); ++i) at.push_back(k), k += s.shape(i).n;
+    }
+    size_t size() const { return s.size(); }
+    int cls(size_t i) const { return s.shape(i).cls; }
+    int count(size_t i) const { return int(s.shape(i).n); }
+    double number(size_t i, int a) const { return s.params[at[i] + size_t(a)]; }
+    int rule(size_t i) const { return i < s.origins.size() ? s.origins[i].rule : -1; }
+    std::uint32_t parent(size_t i) const { return i < s.origins.size() ? s.origins[i].parent : std::uint32_t(i); }
+};
+
 // The kept steps as Sprout's derivation record: module names with their numbers, and each
 // module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
-DerivationRecord recordOf(const std::vector<LString>& every, const Translation& tr) {
+template <class Reader, class Step>
+DerivationRecord recordOf(const std::vector<Step>& every, const Translation& tr) {
     auto g = std::make_shared<Grammar>();
     for (const Rule& r : tr.rules) {
         Production p;
@@ -63,30 +98,23 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
     // Each class and arity's symbol, looked up once (the alphabet finds a name by a walk).
     std::unordered_map<std::uint64_t, std::optional<SymbolId>> symbols;
     for (size_t k = 0; k < every.size(); ++k) {
+        const Reader m(every[k]);
         auto string = std::make_shared<ModuleString>();
         auto origins = std::make_shared<Origins>();
-        for (size_t i = 0; i < every[k].size(); ++i) {
-            const LModule& m = every[k][i];
-            const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
-            const int arity = int(std::min<Py_ssize_t>(n, Alphabet::kMaxArity));
-            auto [at, fresh] = symbols.try_emplace(std::uint64_t(std::uint32_t(m.cls)) << 8 | std::uint64_t(arity));
+        for (size_t i = 0; i < m.size(); ++i) {
+            const int arity = std::min(m.count(i), Alphabet::kMaxArity);
+            auto [at, fresh] = symbols.try_emplace(std::uint64_t(std::uint32_t(m.cls(i))) << 8 | std::uint64_t(arity));
             if (fresh) {
-                at->second = g->alphabet.intern(tr.classes.name(m.cls), arity);
+                at->second = g->alphabet.intern(tr.classes.name(m.cls(i)), arity);
                 if (!at->second) at->second = g->alphabet.intern("?", 0);
             }
             const std::optional<SymbolId> id = at->second;
             if (!id) break;
             string->symbols.push_back(*id);
-            for (int a = 0; a < int(g->alphabet[*id].arity); ++a) {
-                PyObject* v = PyTuple_GET_ITEM(m.args.ptr(), a);
-                double x = std::numeric_limits<double>::quiet_NaN();
-                if (PyFloat_Check(v)) x = PyFloat_AS_DOUBLE(v);
-                else if (PyLong_Check(v)) x = PyLong_AsDouble(v);
-                if (PyErr_Occurred()) PyErr_Clear(), x = std::numeric_limits<double>::quiet_NaN();
-                string->params.push_back(x);
-            }
-            origins->parent.push_back(k == 0 ? std::uint32_t(i) : m.parent);
-            origins->rule.push_back(k == 0 || m.rule < 0 || size_t(m.rule) >= tr.rules.size() ? -1 : m.rule);
+            for (int a = 0; a < int(g->alphabet[*id].arity); ++a) string->params.push_back(m.number(i, a));
+            const int rule = m.rule(i);
+            origins->parent.push_back(k == 0 ? std::uint32_t(i) : m.parent(i));
+            origins->rule.push_back(k == 0 || rule < 0 || size_t(rule) >= tr.rules.size() ? -1 : rule);
         }
         record.steps.push_back(std::move(string));
         record.origins.push_back(std::move(origins));
@@ -94,7 +122,6 @@ DerivationRecord recordOf(const std::vector<LString>& every, const Translation& 
     record.grammar = std::move(g);
     return record;
 }
-
 
 // A run that draws later (RunOptions::drawLater): its engine, namespace and kept steps, which
 // hold Python objects, so that they are let go with the GIL held.
@@ -105,6 +132,7 @@ public:
         py::dict ns;
         std::unique_ptr<Engine> engine;
         std::vector<LString> every;
+        std::vector<NumString> numbers;  // or, on the native path, the steps as numbers
         TurtleDefaults defaults;
         std::string file, text;
     };
@@ -119,7 +147,15 @@ public:
         state.reset();
     }
 
-    int steps() const override { return int(state->every.size()); }
+    int steps() const override { return int(state->numbers.empty() ? state->every.size() : state->numbers.size()); }
+
+    DerivationRecord derived(int step) override {
+        if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
+        py::gil_scoped_acquire gil;  // the modules' numbers are Python's
+        State& st = *state;
+        if (!st.numbers.empty()) return recordOf<NumberModuleOf>(std::vector<NumString>{st.numbers[size_t(step)]}, st.engine->translation());
+        return recordOf<ModuleOf>(std::vector<LString>{st.every[size_t(step)]}, st.engine->translation());
+    }
 
     std::shared_ptr<const Grammar> draw(int step) override {
         if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
@@ -136,7 +172,11 @@ public:
         } restore{sys, savedStdout};
         EngineScope scope(st.engine.get());
         try {
-            return drawable(st.engine->interpret(st.every[size_t(step)]), st.engine->translation().classes, st.defaults);
+            const ModuleClasses& classes = st.engine->translation().classes;
+            if (st.numbers.empty()) return drawable(st.engine->interpret(st.every[size_t(step)]), classes, st.defaults);
+            const NumString& n = st.numbers[size_t(step)];
+            return st.engine->interprets() ? drawable(st.engine->interpret(Engine::toL(n)), classes, st.defaults)
+                                           : drawable(n, classes, st.defaults);
         } catch (py::error_already_set& e) {
             throw std::runtime_error(formatDiagnostic(describe(e, st.file, st.text), st.file));
         }
@@ -225,7 +265,12 @@ Model runModel(std::string_view written, const RunOptions& options) {
         NumString numbers;
         const bool numeric = engine.native() && !engine.interprets() && !options.keepSteps &&
                              engine.deriveNumbers(axiom, steps, nullptr, numbers, false);
-        if (!numeric) {
+        // Steps kept to be drawn later (`import sprout`), on the native path: kept as numbers,
+        // made into Python modules only for a step that is drawn.
+        std::vector<NumString> everyNumbers;
+        const bool numericSteps = !numeric && options.keepSteps && options.drawLater && engine.native() &&
+                                  engine.deriveNumbers(axiom, steps, &everyNumbers, numbers, true);
+        if (!numeric && !numericSteps) {
             // Python's cycle collector walks every live object each time enough new ones were
             // made: with a string of a million parameter tuples alive it runs again and again
             // over all of them. The derivation makes no cycles of its own; it runs once after.
@@ -235,12 +280,14 @@ Model runModel(std::string_view written, const RunOptions& options) {
                     if (was) PyGC_Enable();
                 }
             } paused;
-            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr, options.keepSteps ? &contexts : nullptr);
+            // Where contexts matched: for the derivation inspector, not for steps drawn later.
+            s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr,
+                              options.keepSteps && !options.drawLater ? &contexts : nullptr);
         }
         out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
         out.ranNative = engine.ranNative;
-        out.derived = numeric ? engine.text(numbers) : engine.text(s);
+        out.derived = numeric || numericSteps ? engine.text(numbers) : engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
         TurtleDefaults d = turtleDefaults(lpyModule);
         py::dict state = lpyModule.attr("_state");
@@ -259,12 +306,16 @@ Model runModel(std::string_view written, const RunOptions& options) {
                 for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
                 out.drawnFrom.push_back(std::move(from));
             }
-        if (options.keepSteps) out.record = recordOf(every, engine.translation()), out.record.contexts = std::move(contexts);
+        if (options.keepSteps && !options.drawLater)  // drawn later: each step's record when asked
+            out.record = numericSteps ? recordOf<NumberModuleOf>(everyNumbers, engine.translation())
+                                      : recordOf<ModuleOf>(every, engine.translation());
+        out.record.contexts = std::move(contexts);
         for (auto w : py::list(state["warnings"]))
             out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});
         out.drawable = std::move(g);
         if (options.drawLater && options.keepSteps) {
             st.every = std::move(every);
+            st.numbers = std::move(everyNumbers);
             st.defaults = d;
             st.options.cancel = nullptr;  // the caller's flag is not kept alive with the run
             out.later = kept;

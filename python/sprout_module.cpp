@@ -119,10 +119,11 @@ public:
     FileKind kind = FileKind::Lsys;
     std::shared_ptr<const Grammar> grammar;
     // An L-Py model: each step's drawing, made when geometry(), render() or export() first asks
-    // for it (null until then), by `lpyDrawer`; and each step as derived, in `lpyRecord`.
+    // for it (null until then), and each step as derived, read when derive() first asks for
+    // it, both by `lpyDrawer`.
     std::vector<std::shared_ptr<const Grammar>> lpySteps;
+    std::vector<std::optional<LString>> lpyDerived;
     std::shared_ptr<lpy::StepDrawer> lpyDrawer;
-    DerivationRecord lpyRecord;
     std::vector<Diagnostic> warnings;
     std::string lpyString;  // an L-Py model: its last string as L-Py writes it
 
@@ -151,7 +152,18 @@ public:
             if (k >= int(lpySteps.size()))
                 throw py::value_error("this L-Py model was run for " + std::to_string(lpySteps.size() - 1) +
                                       " steps: open it with steps=" + std::to_string(k));
-            if (size_t(k) < lpyRecord.steps.size()) return LString(lpyRecord.steps[size_t(k)], lpyRecord.grammar);
+            if (lpyDrawer) {
+                std::optional<LString>& s = lpyDerived[size_t(k)];
+                if (!s) {
+                    DerivationRecord r;
+                    {
+                        py::gil_scoped_release release;  // the drawer takes the interpreter itself
+                        r = lpyDrawer->derived(k);
+                    }
+                    s.emplace(r.steps.at(0), r.grammar);
+                }
+                return *s;
+            }
             auto g = lpyDrawn(k);  // a scene's plant (_plant_of_lpy): what is drawn is all it has
             return LString(std::make_shared<const ModuleString>(g->axiom), g);
         }
@@ -222,10 +234,14 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         }
         if (!m.ok()) raiseDiagnostics(m.diagnostics, name);
         p.grammar = m.drawable;
-        p.lpyRecord = std::move(m.record);
         p.lpyDrawer = std::move(m.later);
-        p.lpySteps.assign(std::max<size_t>(1, p.lpyRecord.steps.size()), nullptr);
-        if (!p.lpyDrawer) p.lpySteps.assign(1, m.drawable);  // nothing derived (a model of no steps)
+        if (p.lpyDrawer && p.lpyDrawer->steps() > 0) {
+            p.lpySteps.assign(size_t(p.lpyDrawer->steps()), nullptr);
+            p.lpyDerived.resize(p.lpySteps.size());
+        } else {
+            p.lpyDrawer = nullptr;
+            p.lpySteps.assign(1, m.drawable);  // nothing kept: what was drawn is all there is
+        }
         p.dialect = "L-Py";
         p.lpyString = std::move(m.derived);
         p.warnings = m.diagnostics;

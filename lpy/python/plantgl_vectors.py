@@ -20,6 +20,9 @@ class _Vec:
         v = [float(a) for a in args[:self._n]]
         self._v = v + [0.0] * (self._n - len(v))
 
+    # The arithmetic below is written out for each size: models make vectors by the hundred
+    # thousand a step (the same sums, in the same order, as a loop would make).
+
     def __len__(self):
         return self._n
 
@@ -55,34 +58,52 @@ class _Vec:
     x, y, z, w = _get(0), _get(1), _get(2), _get(3)
 
     def __add__(self, o):
-        return type(self)(*[a + b for a, b in zip(self._v, o)])
+        v, w = self._v, (o._v if isinstance(o, _Vec) else o)
+        if len(v) == 3 and len(w) == 3:
+            return self._of([v[0] + w[0], v[1] + w[1], v[2] + w[2]])
+        return type(self)(*[a + b for a, b in zip(v, w)])
 
     __radd__ = __add__
 
     def __sub__(self, o):
-        return type(self)(*[a - b for a, b in zip(self._v, o)])
+        v, w = self._v, (o._v if isinstance(o, _Vec) else o)
+        if len(v) == 3 and len(w) == 3:
+            return self._of([v[0] - w[0], v[1] - w[1], v[2] - w[2]])
+        return type(self)(*[a - b for a, b in zip(v, w)])
 
     def __rsub__(self, o):
         return type(self)(*[b - a for a, b in zip(self._v, o)])
 
     def __neg__(self):
-        return type(self)(*[-a for a in self._v])
+        return self._of([-a for a in self._v])
 
     def __mul__(self, k):
+        v = self._v
         if isinstance(k, (int, float)):
-            return type(self)(*[a * k for a in self._v])
-        return sum(a * b for a, b in zip(self._v, k))  # dot product, as PlantGL's Vector * Vector
+            if len(v) == 3:
+                return self._of([v[0] * k, v[1] * k, v[2] * k])
+            return type(self)(*[a * k for a in v])
+        w = k._v if isinstance(k, _Vec) else k
+        if len(v) == 3 and len(w) == 3:  # dot product, as PlantGL's Vector * Vector
+            return 0.0 + v[0] * w[0] + v[1] * w[1] + v[2] * w[2]  # from 0 as sum(): -0.0 terms give 0.0
+        return sum(a * b for a, b in zip(v, w))
 
     __rmul__ = __mul__
 
     def __truediv__(self, k):
-        return type(self)(*[a / k for a in self._v])
+        v = self._v
+        if len(v) == 3:
+            return self._of([v[0] / k, v[1] / k, v[2] / k])
+        return type(self)(*[a / k for a in v])
 
     def __xor__(self, o):  # cross product
         return cross(self, o)
 
     def __abs__(self):
-        return _math.sqrt(sum(a * a for a in self._v))
+        v = self._v
+        if len(v) == 3:
+            return _math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        return _math.sqrt(sum(a * a for a in v))
 
     def norm(self):
         return abs(self)
@@ -92,7 +113,7 @@ class _Vec:
 
     def normed(self):
         n = abs(self)
-        return self / n if n > 0 else type(self)(*self._v)
+        return self / n if n > 0 else self._of(list(self._v))
 
     def anOrthogonalVector(self):
         x, y, z = (list(self._v) + [0.0, 0.0])[:3]
@@ -129,6 +150,9 @@ class Vector3(_Vec):
             self.radius, self.theta, self.phi = radius, theta, phi
 
     def __init__(self, *args):
+        if len(args) == 3:
+            self._v = [float(args[0]), float(args[1]), float(args[2])]
+            return
         if len(args) == 1 and isinstance(args[0], Vector3.Cylindrical):
             c = args[0]
             args = (c.radius * _math.cos(c.theta), c.radius * _math.sin(c.theta), c.z)
@@ -190,10 +214,14 @@ def cross(a, b):
 
 
 def dot(a, b):
+    if isinstance(a, _Vec) and isinstance(b, _Vec):
+        return a * b
     return sum(x * y for x, y in zip(a, b))
 
 
 def norm(v):
+    if isinstance(v, _Vec):
+        return abs(v)
     return _math.sqrt(sum(a * a for a in v))
 
 
