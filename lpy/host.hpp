@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,19 +33,32 @@ struct RunOptions {
     // parameters measured): a step that would pass it ends the derivation with a message.
     std::uint64_t maxBytes = defaultMemoryBudget();
     bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
-    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive),
-    // and no record made; Model::later draws a step, or reads it, when it is asked for.
+    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive;
+    // the viewer draws the step it shows); Model::later draws a step, or reads it, when asked.
     bool drawLater = false;
+    // With keepSteps: the derivation record and where contexts matched (the viewer's inspector
+    // and picking; `import sprout` reads a step's record from Model::later when asked).
+    bool keepRecord = true;
+};
+
+// A Python error in an interpretation rule, met while a step is drawn later: what() is the
+// diagnostic written with its file.
+struct DrawError : std::runtime_error {
+    Diagnostic diagnostic;
+    DrawError(Diagnostic d, const std::string& file) : std::runtime_error(formatDiagnostic(d, file)), diagnostic(std::move(d)) {}
 };
 
 // A run kept to draw its steps later (RunOptions::drawLater): the model's engine and namespace
 // live with it. draw() takes the interpreter itself: call it without holding the GIL. Throws
-// std::runtime_error (a Python error, at its line) or std::out_of_range.
+// DrawError (a Python error, at its line) or std::out_of_range.
 class StepDrawer {
 public:
     virtual ~StepDrawer() = default;
     virtual int steps() const = 0;  // step 0 (the axiom) .. steps() - 1
-    virtual std::shared_ptr<const Grammar> draw(int step) = 0;
+    // `from`, when given: for each module the drawing's axiom holds, the module of the step
+    // that it draws (picking). `cancel`, set by another thread, stops it: nullptr is returned.
+    virtual std::shared_ptr<const Grammar> draw(int step, std::vector<std::uint32_t>* from = nullptr,
+                                                const std::atomic<bool>* cancel = nullptr) = 0;
     // Step `step` as derived: a record of that step alone (its grammar names the modules).
     virtual DerivationRecord derived(int step) = 0;
 };
@@ -55,7 +69,7 @@ struct Model {
     // interpretation rules applied, in Sprout's turtle vocabulary, and L-Py's turtle defaults
     // (60 degree turns, materials as the palette).
     std::shared_ptr<const Grammar> drawable;
-    std::vector<std::shared_ptr<const Grammar>> steps;  // keepSteps: step 0 (the axiom) .. n
+    std::vector<std::shared_ptr<const Grammar>> steps;  // keepSteps, not drawLater: step 0 (the axiom) .. n
     // keepSteps, for "why this branch?" and the derivation inspector: each step's modules (by
     // name, their numbers; NaN for other Python values) and where each came from (the rule,
     // whose line the record's grammar keeps; its module in the step before), and per step,

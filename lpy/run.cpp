@@ -157,11 +157,17 @@ public:
         return recordOf<ModuleOf>(std::vector<LString>{st.every[size_t(step)]}, st.engine->translation());
     }
 
-    std::shared_ptr<const Grammar> draw(int step) override {
+    std::shared_ptr<const Grammar> draw(int step, std::vector<std::uint32_t>* from, const std::atomic<bool>* cancel) override {
         if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
         std::lock_guard<std::mutex> lock(runMutex());
         py::gil_scoped_acquire gil;
         State& st = *state;
+        st.options.cancel = cancel;  // the engine reads it (a reference to these options)
+        struct Forget {
+            RunOptions& o;
+            ~Forget() { o.cancel = nullptr; }
+        } forget{st.options};
+        CancelWatch watch(cancel);
         py::module_ sys = py::module_::import("sys");
         py::object savedStdout = sys.attr("stdout");
         sys.attr("stdout") = sys.attr("stderr");  // as in the run: standard output is Sprout's
@@ -173,12 +179,17 @@ public:
         EngineScope scope(st.engine.get());
         try {
             const ModuleClasses& classes = st.engine->translation().classes;
-            if (st.numbers.empty()) return drawable(st.engine->interpret(st.every[size_t(step)]), classes, st.defaults);
-            const NumString& n = st.numbers[size_t(step)];
-            return st.engine->interprets() ? drawable(st.engine->interpret(Engine::toL(n)), classes, st.defaults)
-                                           : drawable(n, classes, st.defaults);
+            if (!st.numbers.empty() && !from && !st.engine->interprets()) return drawable(st.numbers[size_t(step)], classes, st.defaults);
+            const LString shown = st.engine->interpret(st.numbers.empty() ? st.every[size_t(step)] : Engine::toL(st.numbers[size_t(step)]));
+            auto g = drawable(shown, classes, st.defaults, nullptr, false, from);
+            if (from)
+                for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
+            return g;
         } catch (py::error_already_set& e) {
-            throw std::runtime_error(formatDiagnostic(describe(e, st.file, st.text), st.file));
+            if (cancel && cancel->load() && e.matches(PyExc_KeyboardInterrupt)) return nullptr;
+            throw DrawError(describe(e, st.file, st.text), st.file);
+        } catch (Cancelled&) {
+            return nullptr;
         }
     }
 };
@@ -280,9 +291,9 @@ Model runModel(std::string_view written, const RunOptions& options) {
                     if (was) PyGC_Enable();
                 }
             } paused;
-            // Where contexts matched: for the derivation inspector, not for steps drawn later.
+            // Where contexts matched: for the derivation inspector.
             s = engine.derive(std::move(axiom), steps, options.keepSteps ? &every : nullptr,
-                              options.keepSteps && !options.drawLater ? &contexts : nullptr);
+                              options.keepSteps && options.keepRecord ? &contexts : nullptr);
         }
         out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
@@ -306,7 +317,7 @@ Model runModel(std::string_view written, const RunOptions& options) {
                 for (auto& v : *from) v = v < shown.size() ? shown[v].parent : 0;
                 out.drawnFrom.push_back(std::move(from));
             }
-        if (options.keepSteps && !options.drawLater)  // drawn later: each step's record when asked
+        if (options.keepSteps && options.keepRecord)  // else each step's record when asked (StepDrawer::derived)
             out.record = numericSteps ? recordOf<NumberModuleOf>(everyNumbers, engine.translation())
                                       : recordOf<ModuleOf>(every, engine.translation());
         out.record.contexts = std::move(contexts);

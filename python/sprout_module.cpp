@@ -227,6 +227,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         ro.steps = steps;
         ro.keepSteps = true;
         ro.drawLater = true;  // open() and derive() derive; a step is drawn when it is asked for
+        ro.keepRecord = false;  // and read when it is asked for
         lpy::Model m;
         {
             py::gil_scoped_release release;  // the model takes the GIL itself, and can be cancelled

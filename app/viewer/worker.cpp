@@ -133,6 +133,7 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
         o.steps = steps;
         o.cancel = &m_cancel;
         o.keepSteps = true;
+        o.drawLater = true;
         o.maxModules = std::size_t(std::min<std::uint64_t>(limits.maxModules, 50'000'000));
         auto model = std::make_shared<lpy::Model>(lpy::runModel(r.text, o));
         out->deriveMs = millisSince(t0);
@@ -141,16 +142,36 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
             return out;
         }
         m_lpy = std::move(model);
+        const size_t kept = m_lpy->later ? size_t(m_lpy->later->steps()) : 0;
+        m_lpyDrawn.assign(kept, nullptr);
+        m_lpyFrom.assign(kept, nullptr);
         m_lpyText = r.text;
         m_lpyPath = r.path;
         m_lpySteps = steps;
     }
     out->diagnostics = m_lpy->diagnostics;
-    if (!m_lpy->ok() || m_lpy->steps.empty()) return out;  // the diagnostics say why
-    const int n = int(m_lpy->steps.size()) - 1;
+    if (!m_lpy->ok() || m_lpyDrawn.empty()) return out;  // the diagnostics say why
+    const int n = int(m_lpyDrawn.size()) - 1;
     out->iterations = n;
     out->displayStep = r.displayStep < 0 ? n : std::min(r.displayStep, n);
-    out->grammar = m_lpy->steps[size_t(out->displayStep)];
+    const std::size_t step = std::size_t(out->displayStep);
+    if (!m_lpyDrawn[step]) {
+        t0 = std::chrono::steady_clock::now();
+        auto from = std::make_shared<std::vector<std::uint32_t>>();
+        try {
+            m_lpyDrawn[step] = m_lpy->later->draw(out->displayStep, from.get(), &m_cancel);
+        } catch (lpy::DrawError& e) {  // a Python error in an interpretation rule, at its line
+            out->diagnostics.push_back(e.diagnostic);
+            return out;
+        }
+        if (!m_lpyDrawn[step]) {
+            out->cancelled = true;
+            return out;
+        }
+        m_lpyFrom[step] = std::move(from);
+        out->deriveMs += millisSince(t0);
+    }
+    out->grammar = m_lpyDrawn[step];
     out->environment = std::shared_ptr<const Environment>(out->grammar, &out->grammar->environment);
     out->seed = r.seed.value_or(out->grammar->settings.seed);
     // The kept step is a grammar with no rules whose axiom is the string to draw.
@@ -170,8 +191,7 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
     TurtleOptions t{0, out->seed, nullptr};
     // Picking: the model's run kept where each module came from (its rule and line).
     std::shared_ptr<PickData> pick;
-    const std::size_t step = std::size_t(out->displayStep);
-    if (r.trackOrigins && step < m_lpy->record.steps.size() && step < m_lpy->drawnFrom.size()) {
+    if (r.trackOrigins && step < m_lpy->record.steps.size() && m_lpyFrom[step]) {
         pick = std::make_shared<PickData>();
         t.segmentModules = &pick->segmentModules;
         t.surfaceModules = &pick->surfaceModules;
@@ -179,7 +199,7 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
     interpret(*string, *out->grammar, t, *geometry);
     out->interpretMs = millisSince(t0);
     if (pick) {  // drawn modules -> the modules of the step that they draw
-        const std::vector<std::uint32_t>& from = *m_lpy->drawnFrom[step];
+        const std::vector<std::uint32_t>& from = *m_lpyFrom[step];
         for (auto* list : {&pick->segmentModules, &pick->surfaceModules})
             for (std::uint32_t& k : *list) k = k < from.size() ? from[k] : 0;
         pick->record = m_lpy->record;

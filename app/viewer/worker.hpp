@@ -128,8 +128,11 @@ private:
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;
     // An L-Py model run by Python (lpy/host.hpp), every step kept: stepping through it draws
-    // the kept steps, and only a change of text, file or length runs the Python again.
+    // the kept steps, and only a change of text, file or length runs the Python again. A
+    // step's drawing (its interpretation rules, its shapes) is made when it is first shown.
     std::shared_ptr<const lpy::Model> m_lpy;
+    std::vector<std::shared_ptr<const Grammar>> m_lpyDrawn;
+    std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> m_lpyFrom;
     std::string m_lpyText, m_lpyPath;
     int m_lpySteps = -1;
     // Last: the thread starts once every member it uses exists.

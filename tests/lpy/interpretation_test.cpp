@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/derive/draw.hpp"
+#include "core/language/module_string.hpp"
 #include "lpy/host.hpp"
 #include "tests/lpy/lpy_messages.hpp"
 
@@ -68,6 +69,73 @@ TEST(LpyInterpretation, TheTurtleDrawsWhereTheRuleRunsAndItsParametersFollowBran
     lpy::Model unknown = lpy::runModel("Axiom: K\nderivation length: 0\nproduction:\ninterpretation:\nK :\n    turtle.fly(3)\nendlsystem\n", {});
     ASSERT_FALSE(unknown.ok());
     EXPECT_NE(unknown.diagnostics.back().message.find("the turtle has no 'fly'"), std::string::npos) << messages(unknown);
+}
+
+}  // namespace
+}  // namespace sprout
+
+namespace sprout {
+namespace {
+
+// Steps drawn later (RunOptions::drawLater: `import sprout`, the viewer) are the steps drawn at
+// once: the same strings to draw, the same modules they come from, for a model of the Python
+// path with interpretation rules and one of the native path; and each step's record read
+// later is the one the run keeps.
+TEST(LpyInterpretation, StepsDrawnLaterAreTheStepsDrawnAtOnce) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const char* models[] = {
+        "Axiom: A(1)\nderivation length: 3\nproduction:\nA(x) :\n    produce A(x + 1) [+B(x)]\ninterpretation:\nB(x) --> F(x) X\nendlsystem\n",
+        "Axiom: A(1)\nderivation length: 4\nproduction:\nA(x) --> F(x) [+A(x * 0.5)] A(x + 1)\nendlsystem\n",
+    };
+    for (const char* model : models) {
+        SCOPED_TRACE(model);
+        lpy::RunOptions o;
+        o.keepSteps = true;
+        const lpy::Model now = lpy::runModel(model, o);
+        o.drawLater = true;
+        const lpy::Model later = lpy::runModel(model, o);
+        o.keepRecord = false;
+        const lpy::Model bare = lpy::runModel(model, o);
+        ASSERT_TRUE(now.ok() && later.ok() && bare.ok()) << messages(later) << messages(bare);
+        ASSERT_TRUE(later.later && bare.later);
+        EXPECT_TRUE(later.steps.empty());
+        EXPECT_TRUE(bare.record.steps.empty());
+        ASSERT_EQ(size_t(later.later->steps()), now.steps.size());
+        ASSERT_EQ(later.record.steps.size(), now.record.steps.size());
+        for (int k = 0; k < later.later->steps(); ++k) {
+            SCOPED_TRACE(k);
+            std::vector<std::uint32_t> from;
+            auto g = later.later->draw(k, &from);
+            ASSERT_TRUE(g);
+            EXPECT_EQ(toString(g->axiom, g->alphabet), toString(now.steps[size_t(k)]->axiom, now.steps[size_t(k)]->alphabet));
+            EXPECT_EQ(from, *now.drawnFrom[size_t(k)]);
+            auto plain = bare.later->draw(k);
+            EXPECT_EQ(toString(plain->axiom, plain->alphabet), toString(g->axiom, g->alphabet));
+            const DerivationRecord r = bare.later->derived(k);
+            EXPECT_EQ(toString(*r.steps.at(0), r.grammar->alphabet),
+                      toString(*now.record.steps[size_t(k)], now.record.grammar->alphabet));
+            EXPECT_EQ(toString(*later.record.steps[size_t(k)], later.record.grammar->alphabet),
+                      toString(*now.record.steps[size_t(k)], now.record.grammar->alphabet));
+        }
+        EXPECT_THROW(bare.later->draw(99), std::out_of_range);
+    }
+}
+
+// An interpretation rule's Python error, met when the step is drawn, says where it is.
+TEST(LpyInterpretation, AnErrorDrawingLaterSaysItsLine) {
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    lpy::RunOptions o;
+    o.keepSteps = true;
+    o.drawLater = true;
+    const lpy::Model m = lpy::runModel("Axiom: B\nderivation length: 1\nproduction:\ninterpretation:\nB :\n    x = 1 / 0\n    produce F\nendlsystem\n", o);
+    ASSERT_TRUE(m.ok() && m.later) << messages(m);
+    try {
+        m.later->draw(1);
+        FAIL() << "no error";
+    } catch (lpy::DrawError& e) {
+        EXPECT_EQ(e.diagnostic.line, 6);
+        EXPECT_NE(std::string(e.what()).find("ZeroDivisionError"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
