@@ -375,6 +375,7 @@ void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
     Geometry geo;
     TurtleOptions t;
     t.fromTree = false;
+    t.meshes = false;  // only the frames are read
     std::vector<QueryFrame> frames;
     t.queries = &frames;
     interpret(g->axiom, *g, t, geo);

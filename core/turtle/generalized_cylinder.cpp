@@ -56,7 +56,17 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         const float chord = glm::length(b.position - a.position);
         if (chord < 1e-9f) continue;
         const glm::vec3 t0 = dir[i - 1] * chord * curve.tangentScale, t1 = dir[i] * chord * curve.tangentScale;
-        const int n = std::clamp(b.subdivisions, 1, 64);
+        // The pieces @Gc(n) asks for; by default, one per 4 degrees the span's ends turn from
+        // its chord, up to 4: a span that goes straight is one piece (a tube of a hundred short
+        // steps along a guide, as L-Py models make them, is not cut in four hundred).
+        int n = b.subdivisions;
+        if (n < 0) {
+            const glm::vec3 along = (b.position - a.position) / chord;
+            const float bend = std::max(std::acos(std::clamp(glm::dot(dir[i - 1], along), -1.0f, 1.0f)),
+                                        std::acos(std::clamp(glm::dot(dir[i], along), -1.0f, 1.0f)));
+            n = std::min(-n, 1 + int(bend / (4 * kPi / 180)));
+        }
+        n = std::clamp(n, 1, 64);
         for (int k = 1; k <= n; ++k) {
             const float s = float(k) / float(n);
             samples.push_back({hermite(a.position, t0, b.position, t1, s),

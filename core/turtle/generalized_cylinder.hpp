@@ -18,7 +18,7 @@ struct CurvePoint {
     glm::vec3 heading;  // unit
     float radius;
     std::uint32_t colour;
-    int subdivisions;   // pieces of the span that ends here
+    int subdivisions;   // pieces of the span that ends here; -n: up to n, as the span bends
 };
 
 struct GeneralizedCylinder {

@@ -42,6 +42,9 @@ struct TurtleOptions {
     // the derivation tree.
     std::vector<std::uint32_t>* segmentModules = nullptr;
     std::vector<std::uint32_t>* surfaceModules = nullptr;
+    // False: no meshes are made (generalized cylinders' tubes, surface files): a walk for its
+    // query frames (L-Py's query modules, filled at each step).
+    bool meshes = true;
 };
 
 struct TurtleStats {

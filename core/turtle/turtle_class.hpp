@@ -236,7 +236,7 @@ private:
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;
-        int subdivisions = 4;  // pieces of each span, until an @Gc(n) says otherwise
+        int subdivisions = -4;  // pieces of each span (-4: up to 4, as it bends), until an @Gc(n) says
         Frame start{};         // the turtle's frame at @Gs (a kept tube is stored in it)
     };
     std::vector<OpenCurve> m_curves;

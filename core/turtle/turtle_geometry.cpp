@@ -284,7 +284,8 @@ void Turtle::finish() {
             c.endRadius *= k;
         }
     }
-    for (const auto& c : m_curves) appendTube(c.curve, k, out.polygons);
+    if (m_opt.meshes)
+        for (const auto& c : m_curves) appendTube(c.curve, k, out.polygons);
     // A planar curve: every point in the z = 0 plane and no branches or surfaces.
     const float tol = 1e-4f * (1 + glm::length(out.bounds.size()));
     bool flat = std::fabs(out.bounds.min.z) < tol && std::fabs(out.bounds.max.z) < tol;
@@ -296,6 +297,7 @@ void Turtle::finish() {
 // A cpfg surface file at the turtle: its frame (heading, left, up) mapped onto the turtle's,
 // scaled by the module's parameter and the step length, coloured like a leaf.
 void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
+    if (!m_opt.meshes) return;
     const SurfaceFile& f = *m_surfaceFiles[id];
     const float scale = (p ? float(*p) : 1.0f) * t.length;
     const glm::vec3 pos = toGlm(t.pos), h = toGlm(t.H), l = toGlm(t.L), u = toGlm(up(t));
