@@ -21,7 +21,9 @@ struct OSMesa {
 };
 
 const OSMesa& osmesa() {
-    static OSMesa api;
+    // Never destroyed: a context prepared for a picture (app/snapshot.cpp) is let go at exit,
+    // after the function-local statics made before it.
+    static OSMesa& api = *new OSMesa;
     static std::once_flag once;
     std::call_once(once, [] {
         void* lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
@@ -64,13 +66,21 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(int width, int height, 
     }
     std::unique_ptr<HeadlessContext> h(new HeadlessContext());
     h->m_context = ctx;
+    h->m_width = width;
+    h->m_height = height;
     h->m_buffer.resize(std::size_t(width) * std::size_t(height) * 4);
-    if (!api.makeCurrent(ctx, h->m_buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
+    if (!h->makeCurrent()) {
         error = "could not make the OSMesa context current";
         return nullptr;
     }
     return h;
 }
+
+bool HeadlessContext::makeCurrent() {
+    return osmesa().makeCurrent(static_cast<OSMesaContext>(m_context), m_buffer.data(), GL_UNSIGNED_BYTE, m_width, m_height);
+}
+
+void HeadlessContext::release() { osmesa().makeCurrent(nullptr, nullptr, 0, 0, 0); }
 
 HeadlessContext::~HeadlessContext() {
     if (m_context) osmesa().destroyContext(static_cast<OSMesaContext>(m_context));

@@ -15,10 +15,15 @@ public:
     static std::unique_ptr<HeadlessContext> create(int width, int height, std::string& error);
     ~HeadlessContext();
     render::ProcLoader loader() const;
+    // The context on this thread (create() makes it current on its own); release() leaves
+    // this thread without one, so that another thread may take it.
+    bool makeCurrent();
+    static void release();
 
 private:
     HeadlessContext() = default;
     void* m_context = nullptr;
+    int m_width = 0, m_height = 0;
     std::vector<unsigned char> m_buffer;
 };
 

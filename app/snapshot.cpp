@@ -1,6 +1,8 @@
 #include "app/snapshot.hpp"
 
 #include <chrono>
+#include <mutex>
+#include <thread>
 
 #include "app/headless.hpp"
 
@@ -9,7 +11,66 @@ namespace {
 double millisSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// prepareSnapshot's context and renderer, made on their own thread (loading OSMesa and LLVM
+// and building the programs take tens of milliseconds: an L-Py model's Python starts in as
+// many). Whoever takes them joins the thread first; one left untaken is joined at exit.
+struct Prepared {
+    std::mutex mutex;
+    std::thread thread;
+    int width = 0, height = 0;
+    std::unique_ptr<HeadlessContext> context;
+    std::unique_ptr<render::Renderer> renderer;
+
+    ~Prepared() {
+        if (thread.joinable()) thread.join();
+        // Left to the process's end as they are: GL calls while the process exits (Python and
+        // the interpreter's threads going) are not worth the memory they would give back.
+        (void)renderer.release();
+        (void)context.release();
+    }
+    // The context and renderer for a picture of this size, current on this thread; false
+    // when none was prepared for it (or it failed: the caller makes its own and says why).
+    bool take(int w, int h, std::unique_ptr<HeadlessContext>& c, std::unique_ptr<render::Renderer>& r) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!thread.joinable() || w != width || h != height) return false;
+        thread.join();
+        if (!context || !renderer || !context->makeCurrent()) return false;
+        c = std::move(context);
+        r = std::move(renderer);
+        return true;
+    }
+};
+
+Prepared& prepared() {
+    static Prepared p;
+    return p;
+}
 }  // namespace
+
+PreparedSnapshotWait::~PreparedSnapshotWait() {
+    Prepared& p = prepared();
+    std::lock_guard<std::mutex> lock(p.mutex);
+    if (p.thread.joinable()) p.thread.join();
+}
+
+void prepareSnapshot(int width, int height) {
+    Prepared& p = prepared();
+    std::lock_guard<std::mutex> lock(p.mutex);
+    if (p.thread.joinable() || p.context) return;  // once
+    p.width = width;
+    p.height = height;
+    p.thread = std::thread([&p, width, height] {
+        std::string error;
+        auto context = HeadlessContext::create(width, height, error);
+        if (!context) return;
+        auto renderer = std::make_unique<render::Renderer>();
+        if (!renderer->init(context->loader(), error)) return;
+        HeadlessContext::release();  // for the thread that draws
+        p.context = std::move(context);
+        p.renderer = std::move(renderer);
+    });
+}
 
 bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOptions& o, Snapshot& out,
                     std::string& error) {
@@ -67,10 +128,15 @@ render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
 
 bool renderGeometry(const SnapshotOptions& o, Snapshot& out, std::string& error, std::uint64_t seed) {
     auto t0 = std::chrono::steady_clock::now();
-    auto context = HeadlessContext::create(o.width, o.height, error);
-    if (!context) return false;
-    render::Renderer renderer;
-    if (!renderer.init(context->loader(), error)) return false;
+    std::unique_ptr<HeadlessContext> context;
+    std::unique_ptr<render::Renderer> made;
+    if (!prepared().take(o.width, o.height, context, made)) {
+        context = HeadlessContext::create(o.width, o.height, error);
+        if (!context) return false;
+        made = std::make_unique<render::Renderer>();
+        if (!made->init(context->loader(), error)) return false;
+    }
+    render::Renderer& renderer = *made;
     if (o.viewerDetail) renderer.setDetail(render::viewerDetail(out.geometry.cylinders.size()));
     renderer.upload(out.geometry);
     if (!overlayEnvironment(renderer, o, out.geometry, seed, error)) return false;

@@ -51,6 +51,18 @@ render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& options)
 // Renders `out.geometry` as it is (a forest scene, an imported model). `seed` places the
 // environment's attraction points.
 bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error, std::uint64_t seed = 1);
+// Makes the GL side of a picture of width x height ready on another thread (OSMesa loaded,
+// its context made, the renderer's programs built) while the caller reads and derives its
+// plant: `sprout render` starts it first. The next renderGeometry of that size takes it.
+void prepareSnapshot(int width, int height);
+// Waits for that thread where it lives: the caller holds one while it may prepare, so that
+// the thread ends before the program's exit handlers take OSMesa down under it.
+struct PreparedSnapshotWait {
+    PreparedSnapshotWait() = default;
+    PreparedSnapshotWait(const PreparedSnapshotWait&) = delete;
+    PreparedSnapshotWait& operator=(const PreparedSnapshotWait&) = delete;
+    ~PreparedSnapshotWait();
+};
 // With options.showEnvironment, hands the environment drawn for `grown` to the renderer.
 bool overlayEnvironment(render::Renderer& renderer, const SnapshotOptions& options, const Geometry& grown, std::uint64_t seed,
                         std::string& error);

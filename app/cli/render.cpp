@@ -264,6 +264,9 @@ int runRender(int argc, char** argv) {
     lo.keepSteps = animate == AnimationKind::Growth;
     if (maxModules) lo.maxModules = std::uint64_t(*maxModules);
     if (maxMemory) lo.maxBytes = std::uint64_t(*maxMemory) << 20;
+    // The picture's GL side is made ready on another thread while the model is read and run.
+    const PreparedSnapshotWait waitForIt;
+    if (!animate) prepareSnapshot(o.width, o.height);
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);

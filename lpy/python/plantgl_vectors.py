@@ -8,6 +8,11 @@ import math as _math
 _changes = [0]
 
 
+def _coordinate(i, n):
+    """The property of coordinate i of a vector of n: read (0 past its size) and set in place."""
+    return property((lambda s: s._v[i]) if i < n else (lambda s: 0.0), lambda s, value: s.__setitem__(i, value))
+
+
 class _Vec:
     """PlantGL's vectors: mutable (v.z *= -1), indexable, with +, -, * (by a number, or a dot
     product), / and ^ (cross)."""
@@ -52,10 +57,7 @@ class _Vec:
     def __hash__(self):
         return hash(tuple(self._v))
 
-    def _get(i):
-        return property(lambda s: s._v[i] if i < s._n else 0.0, lambda s, value: s.__setitem__(i, value))
-
-    x, y, z, w = _get(0), _get(1), _get(2), _get(3)
+    x, y, z, w = (_coordinate(i, 4) for i in range(4))
 
     def __add__(self, o):
         v, w = self._v, (o._v if isinstance(o, _Vec) else o)
@@ -136,10 +138,12 @@ class _Vec:
 
 class Vector2(_Vec):
     _n = 2
+    x, y, z, w = (_coordinate(i, 2) for i in range(4))
 
 
 class Vector3(_Vec):
     _n = 3
+    x, y, z, w = (_coordinate(i, 3) for i in range(4))
 
     class Cylindrical:
         def __init__(self, radius, theta, z):
