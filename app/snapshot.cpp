@@ -14,7 +14,8 @@ double millisSince(std::chrono::steady_clock::time_point t0) {
 
 // prepareSnapshot's context and renderer, made on their own thread (loading OSMesa and LLVM
 // and building the programs take tens of milliseconds: an L-Py model's Python starts in as
-// many). Whoever takes them joins the thread first; one left untaken is joined at exit.
+// many). Whoever takes them joins the thread first; PreparedSnapshotWait lets go of them
+// when no picture took them (the model failed).
 struct Prepared {
     std::mutex mutex;
     std::thread thread;
@@ -22,10 +23,8 @@ struct Prepared {
     std::unique_ptr<HeadlessContext> context;
     std::unique_ptr<render::Renderer> renderer;
 
-    ~Prepared() {
+    ~Prepared() {  // PreparedSnapshotWait has let them go; at exit, no GL calls are made
         if (thread.joinable()) thread.join();
-        // Left to the process's end as they are: GL calls while the process exits (Python and
-        // the interpreter's threads going) are not worth the memory they would give back.
         (void)renderer.release();
         (void)context.release();
     }
@@ -52,6 +51,10 @@ PreparedSnapshotWait::~PreparedSnapshotWait() {
     Prepared& p = prepared();
     std::lock_guard<std::mutex> lock(p.mutex);
     if (p.thread.joinable()) p.thread.join();
+    if (!p.context) return;  // taken, or never made
+    if (p.context->makeCurrent()) p.renderer.reset();  // its GL objects in their context
+    else (void)p.renderer.release();
+    p.context.reset();
 }
 
 void prepareSnapshot(int width, int height) {
