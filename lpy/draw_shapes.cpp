@@ -2,22 +2,112 @@
 // into surfaces of the drawing, labels (@L), frames (Frame), and the palette's entries for
 // colours given as numbers (SetColor(r, g, b), InterpolateColors). Its own file: each of these
 // reads Python objects or the palette, not the turtle's walk.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+
 #include "core/language/surface_file.hpp"
+#include "core/turtle/asymmetric_hull.hpp"
 #include "lpy/draw_impl.hpp"
 
 namespace sprout::lpy::detail {
 
+namespace {
+
+// A shape's triangles in the drawing's frame: normals from the faces around each point (by
+// area); a curve's stems alone (no triangles) keep no points.
+void finishSurface(SurfaceFile& sf) {
+    if (sf.indices.empty()) sf.positions.clear();
+    sf.normals.assign(sf.positions.size(), glm::vec3(0));
+    for (size_t i = 0; i + 2 < sf.indices.size(); i += 3) {
+        const glm::vec3 &a = sf.positions[sf.indices[i]], &b = sf.positions[sf.indices[i + 1]], &c = sf.positions[sf.indices[i + 2]];
+        const glm::vec3 n = glm::cross(b - a, c - a);
+        for (int j = 0; j < 3; ++j) sf.normals[sf.indices[i + size_t(j)]] += n;
+    }
+    for (glm::vec3& n : sf.normals) n = glm::length(n) > 0 ? glm::normalize(n) : glm::vec3(0, 0, 1);
+}
+
+// PlantGL's shape frame is the turtle's up, right (-left) and heading (PglTurtle::transform:
+// Oriented(up, -left)); the surface's is heading, left, up.
+glm::vec3 fromShapeFrame(double x, double y, double z) { return {float(z), -float(y), float(x)}; }
+
+// Sprout's AsymmetricHull (openalea.plantgl's, no subclass) read here and meshed in C++, as
+// plantgl_drawing.py's _asymmetric_hull does through Python: a crown model draws thousands.
+bool hullSurface(PyObject* shape, SurfaceFile& sf) {
+    PyTypeObject* type = Py_TYPE(shape);
+    if (std::string_view(type->tp_name) != "AsymmetricHull") return false;
+    PyObject* module = PyObject_GetAttrString(reinterpret_cast<PyObject*>(type), "__module__");
+    const bool ours = module && PyUnicode_Check(module) && std::string_view(PyUnicode_AsUTF8(module)).starts_with("openalea.plantgl");
+    Py_XDECREF(module);
+    PyErr_Clear();
+    if (!ours) return false;
+    // num(v, default) of plantgl_drawing.py: float(v), or the default.
+    auto number = [&](const char* field, double fallback) {
+        PyObject* v = PyObject_GetAttrString(shape, field);
+        PyObject* f = v ? PyNumber_Float(v) : nullptr;
+        const double x = f ? PyFloat_AS_DOUBLE(f) : fallback;
+        Py_XDECREF(f);
+        Py_XDECREF(v);
+        PyErr_Clear();
+        return x;
+    };
+    auto point = [&](const char* field, std::array<double, 3> fallback) {
+        PyObject* v = PyObject_GetAttrString(shape, field);
+        std::array<double, 3> out = fallback;
+        if (v && v != Py_None) {
+            std::vector<double> xyz;
+            if (!numbers(v, xyz)) xyz.clear();
+            out = {0, 0, 0};
+            for (size_t k = 0; k < 3 && k < xyz.size(); ++k) out[k] = xyz[k];
+        }
+        Py_XDECREF(v);
+        PyErr_Clear();
+        return out;
+    };
+    auto count = [&](const char* field, double fallback) {  // int(max(-1e9, min(1e9, v))), as Python's min and max take NaN
+        const double v = number(field, fallback);
+        return int(std::isnan(v) ? 1e9 : std::clamp(v, -1e9, 1e9));
+    };
+    AsymmetricHull h;
+    h.negXRadius = number("negXRadius", 0.5), h.posXRadius = number("posXRadius", 0.5);
+    h.negYRadius = number("negYRadius", 0.5), h.posYRadius = number("posYRadius", 0.5);
+    h.negXHeight = number("negXHeight", 0), h.posXHeight = number("posXHeight", 0);
+    h.negYHeight = number("negYHeight", 0), h.posYHeight = number("posYHeight", 0);
+    h.bottom = point("bottom", {0, 0, -0.5}), h.top = point("top", {0, 0, 0.5});
+    h.bottomShape = number("bottomShape", 2), h.topShape = number("topShape", 2);
+    h.slices = count("slices", 4), h.stacks = count("stacks", 4);
+    const HullMesh mesh = meshOf(h);
+    sf.positions.reserve(mesh.points.size());
+    for (const auto& q : mesh.points) sf.positions.push_back(fromShapeFrame(q[0], q[1], q[2]));
+    for (const auto& t : mesh.triangles) sf.indices.insert(sf.indices.end(), t.begin(), t.end());
+    return true;
+}
+
+}  // namespace
+
 // @g's shapes: each shape object made into triangles once (by the PlantGL module's
-// _sprout_triangles), a surface of the drawing named after it; "" for one with no surface.
+// _sprout_triangles, or here for a hull), a surface of the drawing named after it; "" for one
+// with no surface.
 const std::string& Drawing::shapeSurface(PyObject* shape) {
     auto [it, fresh] = m_shapes.try_emplace(shape);
     if (!fresh || !shape) return it->second;
+    auto sf = std::make_shared<SurfaceFile>();
+    auto keep = [&] {
+        finishSurface(*sf);
+        it->second = "@g#" + std::to_string(g->surfaceFiles.size());
+        g->surfaceFiles[it->second] = std::move(sf);
+    };
+    if (hullSurface(shape, *sf)) {
+        keep();
+        return it->second;
+    }
     PyObject* pgl = PyImport_ImportModule("openalea.plantgl.all");
     PyObject* r = pgl ? PyObject_CallMethod(pgl, "_sprout_triangles", "O", shape) : nullptr;
     Py_XDECREF(pgl);
     PyObject *points = nullptr, *triangles = nullptr, *segments = nullptr;
-    auto sf = std::make_shared<SurfaceFile>();
     const Py_ssize_t parts = r && PyTuple_Check(r) ? PyTuple_GET_SIZE(r) : 0;  // (points, triangles[, segments])
+    bool kept = false;
     if ((parts == 2 || parts == 3) && (points = PySequence_Fast(PyTuple_GET_ITEM(r, 0), "points")) &&
         (triangles = PySequence_Fast(PyTuple_GET_ITEM(r, 1), "triangles")) &&
         (segments = PySequence_Fast(parts == 3 ? PyTuple_GET_ITEM(r, 2) : PyTuple_GET_ITEM(r, 1), "segments"))) {
@@ -28,9 +118,7 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
         for (Py_ssize_t i = 0; i < np && ok; ++i) {
             std::vector<double> q;
             ok = numbers(PySequence_Fast_GET_ITEM(points, i), q) && q.size() == 3;
-            // PlantGL's shape frame is the turtle's up, right (-left) and heading (PglTurtle::
-            // transform: Oriented(up, -left)); the surface's is heading, left, up.
-            if (ok) sf->positions.emplace_back(float(q[2]), -float(q[1]), float(q[0]));
+            if (ok) sf->positions.push_back(fromShapeFrame(q[0], q[1], q[2]));
         }
         for (Py_ssize_t i = 0; i < nt && ok; ++i) {
             std::vector<double> t;
@@ -45,25 +133,14 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
                  e[1] >= 0 && e[1] < double(np);
             if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
         }
-        if (ok && sf->indices.empty()) sf->positions.clear();  // a curve: its stems only
-        if (ok && (!sf->indices.empty() || !sf->lines.empty())) {  // normals: the faces' around each point, by area
-            sf->normals.assign(sf->positions.size(), glm::vec3(0));
-            for (size_t i = 0; i + 2 < sf->indices.size(); i += 3) {
-                const glm::vec3 &a = sf->positions[sf->indices[i]], &b = sf->positions[sf->indices[i + 1]],
-                                &c = sf->positions[sf->indices[i + 2]];
-                const glm::vec3 n = glm::cross(b - a, c - a);
-                for (int j = 0; j < 3; ++j) sf->normals[sf->indices[i + size_t(j)]] += n;
-            }
-            for (glm::vec3& n : sf->normals) n = glm::length(n) > 0 ? glm::normalize(n) : glm::vec3(0, 0, 1);
-            it->second = "@g#" + std::to_string(g->surfaceFiles.size());
-            g->surfaceFiles[it->second] = std::move(sf);
-        }
+        kept = ok && (!sf->indices.empty() || !sf->lines.empty());
     }
     Py_XDECREF(points);
     Py_XDECREF(triangles);
     Py_XDECREF(segments);
     Py_XDECREF(r);
     if (PyErr_Occurred()) PyErr_Clear();
+    if (kept) keep();
     return it->second;
 }
 

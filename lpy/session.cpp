@@ -63,11 +63,15 @@ py::object sceneOf(Engine& engine, const LString& s) {
                                     lpyPoint(f.position), lpyPoint(f.heading), double(f.size), rgba(f.colour), lpyPoint(f.up)));
     }
     if (!geo.polygons.indices.empty()) {
-        py::list points, triangles;
-        for (const auto& p : geo.polygons.positions) points.append(lpyPoint(p));
-        for (size_t k = 0; k + 2 < geo.polygons.indices.size(); k += 3)
-            triangles.append(py::make_tuple(geo.polygons.indices[k], geo.polygons.indices[k + 1], geo.polygons.indices[k + 2]));
-        parts.append(py::make_tuple("mesh", -1, points, triangles,
+        // Packed (x, y, z floats in L-Py's axes; the triangles' indices), made into PlantGL's
+        // lists only when the model reads them: a scene is made at every step of a model whose
+        // EndEach takes one, and its crowns are tens of thousands of triangles.
+        std::vector<float> points;
+        points.reserve(geo.polygons.positions.size() * 3);
+        for (const auto& p : geo.polygons.positions) points.insert(points.end(), {p.z, p.x, p.y});
+        const size_t faces = geo.polygons.indices.size() / 3 * 3;
+        parts.append(py::make_tuple("mesh", -1, py::bytes(reinterpret_cast<const char*>(points.data()), points.size() * sizeof(float)),
+                                    py::bytes(reinterpret_cast<const char*>(geo.polygons.indices.data()), faces * sizeof(std::uint32_t)),
                                     rgba(geo.polygons.colours.empty() ? 0x808080FFu : geo.polygons.colours[0])));
     }
     return py::module_::import("openalea.lpy._lsystem").attr("_scene")(parts);

@@ -78,10 +78,39 @@ def _scene(parts):
             geometry = Translated(Vector3(*part[2]), Scaled((part[4],) * 3, TriangleSet([], [])))
             colour = part[5]
         else:
-            geometry = TriangleSet([Vector3(*p) for p in part[2]], list(part[3]))
+            geometry = _drawn_mesh(TriangleSet, Vector3, part[2], part[3])
             colour = part[4]
         scene.append(Shape(geometry, _material(colour), ident))
     return scene
+
+
+_DrawnMesh = None
+
+
+def _drawn_mesh(TriangleSet, Vector3, points, faces):
+    """The turtle's triangles in a scene: a TriangleSet whose pointList and indexList are read
+    from their packed form (float x, y, z; uint32 indices) when the model first asks for them."""
+    global _DrawnMesh
+    if _DrawnMesh is None:
+        import array
+
+        class _DrawnMesh(TriangleSet):
+            def __init__(self, points, faces):
+                self.kwargs, self.name, self._packed = {}, '', (points, faces)
+
+            def __getattr__(self, name):  # only for what is not there yet
+                packed = self.__dict__.get('_packed')
+                if name not in ('pointList', 'indexList', 'args') or packed is None:
+                    raise AttributeError(name)
+                xyz, ids = array.array('f'), array.array('I')
+                xyz.frombytes(packed[0])
+                ids.frombytes(packed[1])
+                self.pointList = [Vector3(xyz[i], xyz[i + 1], xyz[i + 2]) for i in range(0, len(xyz), 3)]
+                self.indexList = [(ids[i], ids[i + 1], ids[i + 2]) for i in range(0, len(ids), 3)]
+                self.args, self._packed = (self.pointList, self.indexList), None
+                return getattr(self, name)
+        _DrawnMesh.__name__ = _DrawnMesh.__qualname__ = 'TriangleSet'  # as PlantGL names it (and @g draws it)
+    return _DrawnMesh(points, faces)
 
 
 def _show_in_notebook(scene):

@@ -99,6 +99,24 @@ def test_an_lpy_model_is_derived_by_open_and_drawn_when_asked():
     assert plant.render(n=1, width=40, height=30).shape == (30, 40, 4)
 
 
+def test_an_lpy_crown_is_drawn_as_plantgl_meshes_it():
+    # An AsymmetricHull is meshed in C++ (lpy/draw_shapes.cpp): 4 * slices meridians of
+    # 2 * stacks - 1 points, 2 * (2 * stacks - 1) triangles each; the same mesh as the Python
+    # drawing of PlantGL's shapes gives.
+    model = ("from openalea.plantgl.all import *\nAxiom: F(1) @g(AsymmetricHull(1, 2, 1, 2, 0.5, 0, 0, 0.5, "
+             "(0, 0, -1), (0, 0, 2), 2, 3, %d, %d))\nderivation length: 0\nproduction:\nendlsystem\n")
+    for slices, stacks in ((4, 4), (2, 3), (1, 1)):
+        g = sprout.parse(model % (slices, stacks), kind="lpy").geometry()
+        assert len(g["triangles"]) == 4 * slices * 2 * (2 * stacks - 1)
+    import openalea.plantgl.all as pgl
+    hull = pgl.AsymmetricHull(1, 2, 1, 2, 0.5, 0, 0, 0.5, (0, 0, -1), (0, 0, 2), 2, 3, 4, 4)
+    points, triangles = pgl._sprout_triangles(hull)
+    g = sprout.parse(model % (4, 4), kind="lpy").geometry()
+    assert len(triangles) == len(g["triangles"])
+    # The crown's top, 2 above its base along the turtle's heading (up), at the stem's end.
+    assert abs(g["triangles"][..., 1].max() - (1 + 2)) < 1e-5
+
+
 def test_errors_carry_line_and_column():
     with pytest.raises(sprout.GrammarError) as e:
         sprout.parse("n: 2\naxiom: F\nF -> F[+F\n")
