@@ -61,6 +61,8 @@ public:
                                                 const std::atomic<bool>* cancel = nullptr) = 0;
     // Step `step` as derived: a record of that step alone (its grammar names the modules).
     virtual DerivationRecord derived(int step) = 0;
+    // Step `step` as L-Py writes it.
+    virtual std::string text(int step) = 0;
 };
 
 struct Model {
@@ -76,7 +78,7 @@ struct Model {
     // for each module of its drawing's axiom, the module of that step it draws.
     DerivationRecord record;
     std::vector<std::shared_ptr<const std::vector<std::uint32_t>>> drawnFrom;
-    std::string derived;         // the final string as L-Py writes it
+    std::string derived;         // the final string as L-Py writes it (drawLater: Model::later's text)
     int derivationLength = 0;    // as the file says
     int stepsDone = 0;
     bool cancelled = false;

@@ -3,8 +3,8 @@
 // host.cpp's; this file is one run, from the text to what the turtle draws.
 #include <chrono>
 #include <optional>
+#include <span>
 #include <thread>
-#include <unordered_map>
 
 #include <pybind11/stl.h>
 
@@ -87,7 +87,7 @@ struct NumberModuleOf {
 // The kept steps as Sprout's derivation record: module names with their numbers, and each
 // module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
 template <class Reader, class Step>
-DerivationRecord recordOf(const std::vector<Step>& every, const Translation& tr) {
+DerivationRecord recordOf(std::span<const Step> every, const Translation& tr) {
     auto g = std::make_shared<Grammar>();
     for (const Rule& r : tr.rules) {
         Production p;
@@ -95,21 +95,28 @@ DerivationRecord recordOf(const std::vector<Step>& every, const Translation& tr)
         g->rules.productions.push_back(std::move(p));
     }
     DerivationRecord record;
-    // Each class and arity's symbol, looked up once (the alphabet finds a name by a walk).
-    std::unordered_map<std::uint64_t, std::optional<SymbolId>> symbols;
+    // Each class and arity's symbol, looked up once (the alphabet finds a name by a walk):
+    // at cls * (kMaxArity + 1) + arity, -1 until looked up, -2 for none.
+    constexpr size_t kArities = Alphabet::kMaxArity + 1;
+    std::vector<std::int32_t> symbols;
     for (size_t k = 0; k < every.size(); ++k) {
         const Reader m(every[k]);
         auto string = std::make_shared<ModuleString>();
         auto origins = std::make_shared<Origins>();
+        string->symbols.reserve(m.size());
+        origins->parent.reserve(m.size());
+        origins->rule.reserve(m.size());
         for (size_t i = 0; i < m.size(); ++i) {
             const int arity = std::min(m.count(i), Alphabet::kMaxArity);
-            auto [at, fresh] = symbols.try_emplace(std::uint64_t(std::uint32_t(m.cls(i))) << 8 | std::uint64_t(arity));
-            if (fresh) {
-                at->second = g->alphabet.intern(tr.classes.name(m.cls(i)), arity);
-                if (!at->second) at->second = g->alphabet.intern("?", 0);
+            const size_t at = size_t(std::max(0, m.cls(i))) * kArities + size_t(arity);
+            if (at >= symbols.size()) symbols.resize(at + kArities, -1);
+            if (symbols[at] == -1) {
+                std::optional<SymbolId> id = g->alphabet.intern(tr.classes.name(m.cls(i)), arity);
+                if (!id) id = g->alphabet.intern("?", 0);
+                symbols[at] = id ? std::int32_t(*id) : -2;
             }
-            const std::optional<SymbolId> id = at->second;
-            if (!id) break;
+            if (symbols[at] < 0) break;
+            const std::optional<SymbolId> id = SymbolId(symbols[at]);
             string->symbols.push_back(*id);
             for (int a = 0; a < int(g->alphabet[*id].arity); ++a) string->params.push_back(m.number(i, a));
             const int rule = m.rule(i);
@@ -149,12 +156,21 @@ public:
 
     int steps() const override { return int(state->numbers.empty() ? state->every.size() : state->numbers.size()); }
 
+    std::string text(int step) override {
+        if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
+        std::lock_guard<std::mutex> lock(runMutex());
+        py::gil_scoped_acquire gil;
+        State& st = *state;
+        EngineScope scope(st.engine.get());
+        return st.numbers.empty() ? st.engine->text(st.every[size_t(step)]) : st.engine->text(st.numbers[size_t(step)]);
+    }
+
     DerivationRecord derived(int step) override {
         if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
         py::gil_scoped_acquire gil;  // the modules' numbers are Python's
         State& st = *state;
-        if (!st.numbers.empty()) return recordOf<NumberModuleOf>(std::vector<NumString>{st.numbers[size_t(step)]}, st.engine->translation());
-        return recordOf<ModuleOf>(std::vector<LString>{st.every[size_t(step)]}, st.engine->translation());
+        if (!st.numbers.empty()) return recordOf<NumberModuleOf>(std::span<const NumString>(st.numbers).subspan(size_t(step), 1), st.engine->translation());
+        return recordOf<ModuleOf>(std::span<const LString>(st.every).subspan(size_t(step), 1), st.engine->translation());
     }
 
     std::shared_ptr<const Grammar> draw(int step, std::vector<std::uint32_t>* from, const std::atomic<bool>* cancel) override {
@@ -298,7 +314,8 @@ Model runModel(std::string_view written, const RunOptions& options) {
         out.deriveSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - deriveStart).count();
         out.stepsDone = engine.iteration + (steps > 0 ? 1 : 0);
         out.ranNative = engine.ranNative;
-        out.derived = numeric || numericSteps ? engine.text(numbers) : engine.text(s);
+        // (Written when asked for, for a run drawn later: a big string takes a while.)
+        if (!(options.drawLater && options.keepSteps)) out.derived = numeric || numericSteps ? engine.text(numbers) : engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
         TurtleDefaults d = turtleDefaults(lpyModule);
         py::dict state = lpyModule.attr("_state");
@@ -318,8 +335,8 @@ Model runModel(std::string_view written, const RunOptions& options) {
                 out.drawnFrom.push_back(std::move(from));
             }
         if (options.keepSteps && options.keepRecord)  // else each step's record when asked (StepDrawer::derived)
-            out.record = numericSteps ? recordOf<NumberModuleOf>(everyNumbers, engine.translation())
-                                      : recordOf<ModuleOf>(every, engine.translation());
+            out.record = numericSteps ? recordOf<NumberModuleOf>(std::span<const NumString>(everyNumbers), engine.translation())
+                                      : recordOf<ModuleOf>(std::span<const LString>(every), engine.translation());
         out.record.contexts = std::move(contexts);
         for (auto w : py::list(state["warnings"]))
             out.diagnostics.push_back({w[py::int_(0)].cast<int>(), 0, std::string(py::str(w[py::int_(1)])), Severity::Warning});

@@ -244,7 +244,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
             p.lpySteps.assign(1, m.drawable);  // nothing kept: what was drawn is all there is
         }
         p.dialect = "L-Py";
-        p.lpyString = std::move(m.derived);
+        p.lpyString = std::move(m.derived);  // empty: written by the drawer when asked for
         p.warnings = m.diagnostics;
         p.text = std::move(text);
         return p;
@@ -334,7 +334,16 @@ PYBIND11_MODULE(_sprout, m) {
         .def_readonly("text", &Plant::text)
         .def_readonly("dialect", &Plant::dialect, "What the text was read as: .lsys, ABOP notation, cpfg, L-Py, Lparser, Fractint")
         .def_property_readonly("n", &Plant::iterations, "The derivation length the grammar sets")
-        .def_readonly("lpy_string", &Plant::lpyString, "An L-Py model: its last string as L-Py writes it (derive() gives its modules)")
+        .def_property_readonly(
+            "lpy_string",
+            [](Plant& p) {
+                if (p.lpyString.empty() && p.lpyDrawer) {
+                    py::gil_scoped_release release;  // the drawer takes the interpreter itself
+                    p.lpyString = p.lpyDrawer->text(p.lpyDrawer->steps() - 1);
+                }
+                return p.lpyString;
+            },
+            "An L-Py model: its last string as L-Py writes it (derive() gives its modules)")
         .def_property_readonly("angle", [](const Plant& p) { return p.grammar->settings.angle.mean; })
         .def_property_readonly("seed", [](const Plant& p) { return p.grammar->settings.seed; })
         .def_property_readonly("defines", [](const Plant& p) { return p.grammar->defines; }, "The grammar's named constants")
