@@ -86,8 +86,9 @@ struct NumberModuleOf {
 
 // The kept steps as Sprout's derivation record: module names with their numbers, and each
 // module's rule and parent (lpy/engine.hpp LModule), the rules' lines in a grammar of their own.
+// `first`: the step every[0] is (0: the axiom, whose modules come from nowhere).
 template <class Reader, class Step>
-DerivationRecord recordOf(std::span<const Step> every, const Translation& tr) {
+DerivationRecord recordOf(std::span<const Step> every, const Translation& tr, size_t first = 0) {
     auto g = std::make_shared<Grammar>();
     for (const Rule& r : tr.rules) {
         Production p;
@@ -120,8 +121,9 @@ DerivationRecord recordOf(std::span<const Step> every, const Translation& tr) {
             string->symbols.push_back(*id);
             for (int a = 0; a < int(g->alphabet[*id].arity); ++a) string->params.push_back(m.number(i, a));
             const int rule = m.rule(i);
-            origins->parent.push_back(k == 0 ? std::uint32_t(i) : m.parent(i));
-            origins->rule.push_back(k == 0 || rule < 0 || size_t(rule) >= tr.rules.size() ? -1 : rule);
+            const bool axiom = first + k == 0;
+            origins->parent.push_back(axiom ? std::uint32_t(i) : m.parent(i));
+            origins->rule.push_back(axiom || rule < 0 || size_t(rule) >= tr.rules.size() ? -1 : rule);
         }
         record.steps.push_back(std::move(string));
         record.origins.push_back(std::move(origins));
@@ -169,8 +171,8 @@ public:
         if (step < 0 || step >= steps()) throw std::out_of_range("no step " + std::to_string(step) + " in this run");
         py::gil_scoped_acquire gil;  // the modules' numbers are Python's
         State& st = *state;
-        if (!st.numbers.empty()) return recordOf<NumberModuleOf>(std::span<const NumString>(st.numbers).subspan(size_t(step), 1), st.engine->translation());
-        return recordOf<ModuleOf>(std::span<const LString>(st.every).subspan(size_t(step), 1), st.engine->translation());
+        if (!st.numbers.empty()) return recordOf<NumberModuleOf>(std::span<const NumString>(st.numbers).subspan(size_t(step), 1), st.engine->translation(), size_t(step));
+        return recordOf<ModuleOf>(std::span<const LString>(st.every).subspan(size_t(step), 1), st.engine->translation(), size_t(step));
     }
 
     std::shared_ptr<const Grammar> draw(int step, std::vector<std::uint32_t>* from, const std::atomic<bool>* cancel) override {
