@@ -114,8 +114,13 @@ TEST(LpyInterpretation, StepsDrawnLaterAreTheStepsDrawnAtOnce) {
             const DerivationRecord r = bare.later->derived(k);
             EXPECT_EQ(toString(*r.steps.at(0), r.grammar->alphabet),
                       toString(*now.record.steps[size_t(k)], now.record.grammar->alphabet));
-            EXPECT_EQ(r.origins.at(0)->parent, now.record.origins[size_t(k)]->parent);
-            EXPECT_EQ(r.origins.at(0)->rule, now.record.origins[size_t(k)]->rule);
+            auto list = [](const auto& v) {
+                std::string out;
+                for (size_t i = 0; i < v.size(); ++i) out += std::to_string(v[i]) + " ";
+                return out;
+            };
+            EXPECT_EQ(list(r.origins.at(0)->parent), list(now.record.origins[size_t(k)]->parent));
+            EXPECT_EQ(list(r.origins.at(0)->rule), list(now.record.origins[size_t(k)]->rule));
             EXPECT_EQ(toString(*later.record.steps[size_t(k)], later.record.grammar->alphabet),
                       toString(*now.record.steps[size_t(k)], now.record.grammar->alphabet));
         }
