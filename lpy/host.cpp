@@ -20,6 +20,8 @@
 
 namespace sprout {
 std::span<const EmbeddedFile> embeddedLpyPython();
+std::span<const EmbeddedFile> precompiledLpyPython();  // cmake/marshal_python.py
+std::string_view precompiledLpyTag();
 }
 
 namespace py = pybind11;
@@ -116,7 +118,14 @@ void installModule(const std::string& name, std::string_view source, const std::
     if (name.find('.') == std::string::npos || name == "openalea.plantgl" || name == "openalea.lpy") mod.attr("__path__") = py::list();
     sys.attr("modules")[py::str(name)] = mod;
     py::module_ builtins = py::module_::import("builtins");
-    builtins.attr("exec")(builtins.attr("compile")(std::string(source), file, "exec"), mod.attr("__dict__"));
+    // Compiled at build time, when this is the interpreter that compiled it (the same cache
+    // tag): a start compiles none of the modules it installs.
+    static const bool same = py::str(sys.attr("implementation").attr("cache_tag")).cast<std::string>() == precompiledLpyTag();
+    py::object code;
+    for (const auto& f : precompiledLpyPython())
+        if (same && f.stem == file) code = py::module_::import("marshal").attr("loads")(py::bytes(f.data.data(), f.data.size()));
+    if (!code) code = builtins.attr("compile")(std::string(source), file, "exec");
+    builtins.attr("exec")(code, mod.attr("__dict__"));
 }
 
 std::string_view embedded(std::string_view stem) {
