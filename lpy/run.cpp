@@ -50,6 +50,20 @@ private:
     std::thread m_watch;
 };
 
+// While it lives, what the model prints goes to standard error: standard output carries
+// Sprout's results (`sprout expand` writes the string there). Held with the GIL.
+class PrintsToStderr {
+public:
+    PrintsToStderr() : m_sys(py::module_::import("sys")), m_saved(m_sys.attr("stdout")) { m_sys.attr("stdout") = m_sys.attr("stderr"); }
+    ~PrintsToStderr() { m_sys.attr("stdout") = m_saved; }
+    PrintsToStderr(const PrintsToStderr&) = delete;
+    PrintsToStderr& operator=(const PrintsToStderr&) = delete;
+
+private:
+    py::module_ m_sys;
+    py::object m_saved;
+};
+
 // A kept module as the record reads it: its class, its numbers (NaN for another Python value),
 // and where it came from. For a step of Python modules, and of the native path's numbers.
 struct ModuleOf {
@@ -186,14 +200,7 @@ public:
             ~Forget() { o.cancel = nullptr; }
         } forget{st.options};
         CancelWatch watch(cancel);
-        py::module_ sys = py::module_::import("sys");
-        py::object savedStdout = sys.attr("stdout");
-        sys.attr("stdout") = sys.attr("stderr");  // as in the run: standard output is Sprout's
-        struct Restore {
-            py::module_& sys;
-            py::object& saved;
-            ~Restore() { sys.attr("stdout") = saved; }
-        } restore{sys, savedStdout};
+        const PrintsToStderr prints;  // as in the run
         EngineScope scope(st.engine.get());
         try {
             const ModuleClasses& classes = st.engine->translation().classes;
@@ -251,16 +258,7 @@ Model runModel(std::string_view written, const RunOptions& options) {
         out.diagnostics.push_back(describe(e, file, text));
         return out;
     }
-    // What the model prints goes to standard error: standard output carries Sprout's results
-    // (`sprout expand` writes the string there).
-    py::module_ sys = py::module_::import("sys");
-    py::object savedStdout = sys.attr("stdout");
-    sys.attr("stdout") = sys.attr("stderr");
-    struct Restore {
-        py::module_& sys;
-        py::object& saved;
-        ~Restore() { sys.attr("stdout") = saved; }
-    } restore{sys, savedStdout};
+    const PrintsToStderr prints;
     // The engine and what it needs live on the heap: a run that draws later (drawLater) keeps
     // them with the Model, the others drop them at the end of this function, the GIL held.
     auto kept = std::make_shared<KeptRun>();

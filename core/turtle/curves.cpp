@@ -5,6 +5,7 @@
 // (core/CMakeLists.txt), which the Python never does.
 #include "core/turtle/curves.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -177,38 +178,42 @@ double Nurbs::length(double begin, double end, double stride) const {
     return length;
 }
 
-std::vector<std::array<double, 2>> Nurbs::arcLengthToU(int stride) const {
-    const double fk = firstKnot(), lk = lastKnot(), total = length(fk, lk, stride);
-    const double du = (lk - fk) / stride;
+std::vector<std::array<double, 2>> Nurbs::strideSteps(int stride, bool stayOnZero) const {
+    const double fk = firstKnot(), lk = lastKnot(), du = (lk - fk) / stride;
     Point p1 = pointAt(fk);
-    double length = 0.0, u = fk + du;
-    std::vector<std::array<double, 2>> points{{0.0, fk}};
+    double u = fk + du;
+    std::vector<std::array<double, 2>> steps;
+    steps.reserve(size_t(std::max(0, stride)));
     for (int s = 0; s < stride; ++s) {
         const Point p2 = pointAt(u);
         const double n = distance(p1, p2);
-        if (n > 0) {
-            length += n;
-            p1 = p2;
-            points.push_back({length / total, u});
-        }
+        if (n > 0 || !stayOnZero) p1 = p2;
+        steps.push_back({u, n});
         u += du;
     }
+    return steps;
+}
+
+std::vector<std::array<double, 2>> Nurbs::arcLengthToU(int stride) const {
+    const double fk = firstKnot(), lk = lastKnot(), total = length(fk, lk, stride);
+    double length = 0.0;
+    std::vector<std::array<double, 2>> points{{0.0, fk}};
+    for (const auto& [u, n] : strideSteps(stride, true))
+        if (n > 0) {  // (a step that does not move is left out)
+            length += n;
+            points.push_back({length / total, u});
+        }
     points.back() = {1.0, lk};
     return points;
 }
 
 std::vector<std::array<double, 2>> Nurbs::uToArcLength(int stride) const {
     const double fk = firstKnot(), lk = lastKnot(), total = length(fk, lk, stride);
-    const double du = (lk - fk) / stride;
-    Point p1 = pointAt(fk);
-    double length = 0.0, u = fk + du;
+    double length = 0.0;
     std::vector<std::array<double, 2>> points{{fk, 0.0}};
-    for (int s = 0; s < stride; ++s) {
-        const Point p2 = pointAt(u);
-        length += distance(p1, p2);
-        p1 = p2;
+    for (const auto& [u, n] : strideSteps(stride, false)) {
+        length += n;
         points.push_back({u, length / total});
-        u += du;
     }
     points.back() = {lk, 1.0};
     return points;

@@ -41,6 +41,11 @@ public:
     std::vector<Point> sample(int n) const;
 
 private:
+    // The `stride` steps of u after the first knot that the mappings walk: each u and the
+    // distance of its point from the one before (kept where a step does not move, with
+    // stayOnZero, as getArcLengthToUMapping keeps it).
+    std::vector<std::array<double, 2>> strideSteps(int stride, bool stayOnZero) const;
+
     int m_dim, m_degree, m_count;   // m_count: the control points
     std::vector<double> m_knots;
     std::vector<double> m_weighted;  // (x*w, y*w, [z*w,] w) a point

@@ -104,8 +104,6 @@ class Point3Grid:
                 size = [float(a)] * 3 if isinstance(a, (int, float)) else [float(v) for v in tuple(a)[:3]]
             else:
                 size = [(hi[k] - lo[k]) / float(b if b is not None else 10) for k in range(3)]
-        self._size = [v if v > 1e-5 else 1e-5 for v in size]
-        self._lo = lo
         self._grid = _PointGrid(self.points, size, lo, hi)  # the voxels and the queries, in C++
 
     def query_ball_point(self, centre, radius):
