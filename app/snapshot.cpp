@@ -1,5 +1,6 @@
 #include "app/snapshot.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -19,6 +20,7 @@ double millisSince(std::chrono::steady_clock::time_point t0) {
 struct Prepared {
     std::mutex mutex;
     std::thread thread;
+    std::atomic<bool> wanted{false};  // taken, or no longer needed: the thread stops priming
     int width = 0, height = 0;
     std::unique_ptr<HeadlessContext> context;
     std::unique_ptr<render::Renderer> renderer;
@@ -33,6 +35,7 @@ struct Prepared {
     bool take(int w, int h, std::unique_ptr<HeadlessContext>& c, std::unique_ptr<render::Renderer>& r) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!thread.joinable() || w != width || h != height) return false;
+        wanted = true;
         thread.join();
         if (!context || !renderer || !context->makeCurrent()) return false;
         c = std::move(context);
@@ -50,6 +53,7 @@ Prepared& prepared() {
 PreparedSnapshotWait::~PreparedSnapshotWait() {
     Prepared& p = prepared();
     std::lock_guard<std::mutex> lock(p.mutex);
+    p.wanted = true;
     if (p.thread.joinable()) p.thread.join();
     if (!p.context) return;  // taken, or never made
     if (p.context->makeCurrent()) p.renderer.reset();  // its GL objects in their context
@@ -57,18 +61,19 @@ PreparedSnapshotWait::~PreparedSnapshotWait() {
     p.context.reset();
 }
 
-void prepareSnapshot(int width, int height) {
+void prepareSnapshot(int width, int height, const render::RenderOptions& options) {
     Prepared& p = prepared();
     std::lock_guard<std::mutex> lock(p.mutex);
     if (p.thread.joinable() || p.context) return;  // once
     p.width = width;
     p.height = height;
-    p.thread = std::thread([&p, width, height] {
+    p.thread = std::thread([&p, width, height, options] {
         std::string error;
         auto context = HeadlessContext::create(width, height, error);
         if (!context) return;
         auto renderer = std::make_unique<render::Renderer>();
         if (!renderer->init(context->loader(), error)) return;
+        renderer->prime(width, height, options, p.wanted);
         HeadlessContext::release();  // for the thread that draws
         p.context = std::move(context);
         p.renderer = std::move(renderer);

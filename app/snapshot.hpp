@@ -52,9 +52,10 @@ render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& options)
 // environment's attraction points.
 bool renderGeometry(const SnapshotOptions& options, Snapshot& out, std::string& error, std::uint64_t seed = 1);
 // Makes the GL side of a picture of width x height ready on another thread (OSMesa loaded,
-// its context made, the renderer's programs built) while the caller reads and derives its
-// plant: `sprout render` starts it first. The next renderGeometry of that size takes it.
-void prepareSnapshot(int width, int height);
+// its context made, the renderer's programs built and primed with `options`: Renderer::prime)
+// while the caller reads and derives its plant: `sprout render` starts it first. The next
+// renderGeometry of that size takes it.
+void prepareSnapshot(int width, int height, const render::RenderOptions& options);
 // Waits for that thread where it lives: the caller holds one while it may prepare, so that
 // the thread ends before the program's exit handlers take OSMesa down under it.
 struct PreparedSnapshotWait {

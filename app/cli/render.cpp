@@ -265,14 +265,14 @@ int runRender(int argc, char** argv) {
     if (maxModules) lo.maxModules = std::uint64_t(*maxModules);
     if (maxMemory) lo.maxBytes = std::uint64_t(*maxMemory) << 20;
     // The picture's GL side is made ready on another thread while the model is read and run.
+    o.render.shadows = !args.flag("--no-shadows");
+    o.render.ground = !args.flag("--no-ground");
     const PreparedSnapshotWait waitForIt;
-    if (!animate) prepareSnapshot(o.width, o.height);
+    if (!animate) prepareSnapshot(o.width, o.height, o.render);
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);
     if (seed) o.seed = std::uint64_t(*seed);
-    o.render.shadows = !args.flag("--no-shadows");
-    o.render.ground = !args.flag("--no-ground");
 
     // The grammar travels inside the PNG, so the picture can be opened again: with -n and
     // --seed written into it, it gives this very plant back.

@@ -87,7 +87,7 @@ bool Renderer::Impl::build(std::string& error) {
         {&curveRasterProgram, "background.vert", "curve_raster.frag"},
         {&curveImpostorProgram, "curve_impostor.vert", "curve_raster.frag"},
         {&overlayProgram, "polygon.vert", "overlay.frag"}, {&overlayPlainProgram, "polygon.vert", "overlay_plain.frag"},
-        {&stretchProgram, "stretch.vert", "stretch.frag"},
+        {&stretchProgram, "stretch.vert", "stretch.frag"}, {&resolveProgram, "resolve.vert", "resolve.frag"},
     };
     for (auto& p : programs)
         if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
@@ -149,9 +149,10 @@ bool Renderer::Impl::build(std::string& error) {
     }
     glGenVertexArrays(1, &emptyVao);
 
-    GLint maxSamples = 1;
+    GLint maxSamples = 1, maxTextureSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-    samples = std::clamp(maxSamples, 1, 4);
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &maxTextureSamples);
+    samples = std::clamp(std::min(maxSamples, maxTextureSamples), 1, 4);
 
     glGenTextures(1, &shadowTexture);
     glBindTexture(GL_TEXTURE_2D, shadowTexture);
@@ -186,6 +187,7 @@ void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     wantSamples = std::min(wantSamples, samples);
     Msaa& t = msaa[slot];
     msaaFbo = t.fbo;
+    msaaInUse = &t;
     if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
     // Moving frames change size with the window's resolution scale: a larger image is
     // drawn into in part (the picture's at the lower-left corner) rather than made again
@@ -194,15 +196,23 @@ void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     if (!t.fbo) {
         glGenFramebuffers(1, &t.fbo);
         glGenRenderbuffers(1, &t.colour);
+        glGenTextures(1, &t.colourTexture);
         glGenRenderbuffers(1, &t.depth);
     }
     t.samples = wantSamples;
-    glBindRenderbuffer(GL_RENDERBUFFER, t.colour);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, t.samples, GL_RGBA8, w, h);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+    if (t.samples > 1) {
+        glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, t.colourTexture);
+        glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, t.samples, GL_RGBA8, w, h, GL_TRUE);
+        glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D_MULTISAMPLE, t.colourTexture, 0);
+    } else {
+        glBindRenderbuffer(GL_RENDERBUFFER, t.colour);
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, t.samples, GL_RGBA8, w, h);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour);
+    }
     glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, t.samples, GL_DEPTH_COMPONENT24, w, h);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
     t.width = w;
     t.height = h;
@@ -317,6 +327,27 @@ void Renderer::warmUp(int width, int height) {
     upload(Geometry());
     setOverlay(Mesh());
     m_lastPictureMs = 1e9;
+}
+
+void Renderer::prime(int width, int height, const RenderOptions& options, const std::atomic<bool>& cancel) {
+    Geometry plant, curve;
+    plant.cylinders.push_back({{0, 0, 0}, 0.1f, {0, 2, 0}, 0.08f, 0x6B4F2AFFu, 0, 0});
+    plant.surfaces.push_back({{0, 2, 0}, 0.8f, {1, 0.5f, 0}, 0x4C8C3AFFu, {0, 0, 1}, SurfaceKind::Leaf});
+    plant.bounds.add({-1, 0, -1}), plant.bounds.add({1, 3, 1});
+    curve.planarCurve = true;
+    curve.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
+    curve.bounds.add({0, 0, 0}), curve.bounds.add({0, 10, 0});
+    const float aspect = float(width) / float(std::max(height, 1));
+    for (const Geometry* g : {&plant, &curve}) {  // a 3D plant first: most pictures are of one
+        if (cancel.load()) break;
+        upload(*g);
+        Pass p;
+        plan(p, frameGeometry(*g, aspect, ViewPreset::Auto), width, height, options, 0, 0, 0);
+        p.cancel = &cancel;
+        step(p, SIZE_MAX, true);
+    }
+    glFinish();  // the rasteriser's threads done with it here, not in the picture's time
+    upload(Geometry());
 }
 
 void Renderer::stretch(unsigned texture, int width, int height, int textureWidth, int textureHeight, unsigned target, int x,

@@ -3,6 +3,7 @@
 // it takes a context that is already current and a proc loader, keeps the plant's
 // instance data on the GPU, and draws into whatever framebuffer it is given (multisampled
 // internally, resolved into the target). No GL types leak out of this header.
+#include <atomic>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -195,6 +196,11 @@ public:
     // way on its first use, which made the first piece of the first picture take 20-50 ms),
     // at width x height (the still view's size) and half that. Leaves no scene uploaded.
     void warmUp(int width, int height);
+    // As warmUp does for the window, for one picture to come (`sprout render`): a small plant and
+    // a one-segment curve drawn at its size with its options, into the default framebuffer,
+    // while the picture's model runs. Stops between passes once `cancel` is set (the model is
+    // done: whatever is left is built by its own picture). Leaves no scene uploaded.
+    void prime(int width, int height, const RenderOptions& options, const std::atomic<bool>& cancel);
     // Draws into an offscreen image of any size (screenshots larger than the window).
     std::vector<std::uint8_t> renderImage(const Camera& camera, int width, int height, const RenderOptions& options);
     // The lower-left width x height of an RGBA texture (textureWidth x textureHeight, linear

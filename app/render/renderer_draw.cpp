@@ -139,6 +139,34 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
     }
 }
 
+void Renderer::Impl::resolve(GLuint target, int x, int y, int w, int h) {
+    if (!msaaInUse || msaaInUse->samples <= 1) {  // a copy (no shader: the blit copies memory)
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+        glBlitFramebuffer(0, 0, w, h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        return;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(x, y, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, msaaInUse->colourTexture);
+    glUseProgram(resolveProgram);
+    setUniform(resolveProgram, "uImage", 3);
+    setUniform(resolveProgram, "uSamples", msaaInUse->samples);
+    setUniform(resolveProgram, "uScale", 1.0f / float(msaaInUse->samples));
+    glUniform2i(glGetUniformLocation(resolveProgram, "uOffset"), x, y);
+    glBindVertexArray(emptyVao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glEnable(GL_DEPTH_TEST);
+}
+
 // Baked triangles [from, to) and then lines, numbered after the triangles.
 void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t from, std::size_t to, RenderStats& stats,
                                bool moving, bool quickLines, const glm::vec3* ink) {
@@ -223,7 +251,8 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
     };
     auto next = [&](int phase) {
         p.phase = phase, p.done = 0, p.started = false;
-        return wait;  // go on to it now only when drawing at once
+        // Go on to it now only when drawing at once (and not cancelled: Renderer::prime).
+        return wait && !(p.cancel && p.cancel->load(std::memory_order_relaxed));
     };
     if (p.phase == Pass::Shadow) {
         glBindFramebuffer(GL_FRAMEBUFFER, s.shadowFbo);
@@ -480,11 +509,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
         glBindVertexArray(0);
         glEnable(GL_DEPTH_TEST);
     }
-    // Resolve the multisampled image into the target.
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, s.msaaFbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, p.target);
-    glBlitFramebuffer(0, 0, p.width, p.height, p.x, p.y, p.x + p.width, p.y + p.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, p.target);
+    s.resolve(p.target, p.x, p.y, p.width, p.height);
     m_stats = p.stats;
     return true;
 }

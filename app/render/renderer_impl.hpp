@@ -36,7 +36,7 @@ struct Renderer::Impl {
     using Buffers = detail::Buffers;
     GLuint bakedProgram = 0, bakedPlainProgram = 0, bakedVertexLitProgram = 0, bakedDepth = 0, lineProgram = 0, inkLineProgram = 0, curveProgram = 0, backgroundProgram = 0,
            groundProgram = 0, groundPlainProgram = 0, curveRasterProgram = 0, curveImpostorProgram = 0, coverageTexture = 0, overlayProgram = 0,
-           overlayPlainProgram = 0, stretchProgram = 0;
+           overlayPlainProgram = 0, stretchProgram = 0, resolveProgram = 0;
     Buffers overlay;  // the environment drawn with the plant (setOverlay)
     std::size_t overlayIndices = 0;
     // Its triangles as uploaded: the opaque ones first (the first pass), then the translucent
@@ -101,11 +101,14 @@ struct Renderer::Impl {
     // (1 sample, still and moving), one for other
     // moving frames (4 samples, half size in the window), one for still pictures, so that
     // starting or letting go of a drag does not allocate them again.
+    // Their colour is a multisampled texture (read by resolveProgram), or with one sample or
+    // none a renderbuffer (copied by glBlitFramebuffer).
     struct Msaa {
-        GLuint fbo = 0, colour = 0, depth = 0;
+        GLuint fbo = 0, colour = 0, colourTexture = 0, depth = 0;
         int width = 0, height = 0, samples = 0;
     } msaa[3];
     GLuint msaaFbo = 0;  // the one in use
+    const Msaa* msaaInUse = nullptr;
     std::size_t quickLinesFrom = detail::kQuickLines;  // RenderOptions::quickLines (0 while warming up)
     int samples = 1;
     int curveBatch = 1;
@@ -127,6 +130,9 @@ struct Renderer::Impl {
     bool build(std::string& error);
     // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaFbo is it.
     void ensureMsaa(int w, int h, int wantSamples, int slot);
+    // The image in use (ensureMsaa) resolved into `target` at (x, y); the framebuffer bound
+    // after is `target`, depth testing on.
+    void resolve(GLuint target, int x, int y, int w, int h);
 
     // Baked triangles and lines (numbered after the triangles) [from, to), in order.
     // The same of what a moving frame draws instead (proxyMesh, proxy) when `moving`; lines
@@ -178,6 +184,7 @@ struct Renderer::Pass {
     double waitMs = 0;   // how long a piece may wait for the raster's thread (continueDrawFor)
     bool staleShadows = false;  // a moving frame with an earlier scene's shadow map
     bool sketch = false;        // a moving frame that draws the scene's proxy
+    const std::atomic<bool>* cancel = nullptr;  // Renderer::prime: stop between passes once set
     RenderStats stats;
 };
 
