@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 
 #include "core/base/pod_buffer.hpp"
+#include "core/base/recycled.hpp"
 #include "core/derive/provenance.hpp"
 #include "core/language/expr.hpp"
 #include "lpy/host.hpp"
@@ -32,7 +33,9 @@ struct LModule {
     std::int32_t rule = -1;
     std::uint32_t parent = 0;
 };
-using LString = std::vector<LModule>;
+// Its buffers come back to the next derivation (core/base/recycled.hpp): every step is kept,
+// and a plant dropped and opened again took its pages from the kernel anew.
+using LString = std::vector<LModule, recycled::Allocator<LModule>>;
 
 // A string of the native path (lpy/native.cpp): each module is its shape (class, count of
 // numbers, which of them Python holds as ints), 4 bytes, and the numbers of all modules are in

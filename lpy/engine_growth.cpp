@@ -15,16 +15,37 @@
 
 namespace sprout::lpy {
 
+namespace {
+// sys.getsizeof(o), read off the object for the numbers and tuples modules are made of (a
+// call of sys.getsizeof each was most of measuring a small string, every step): their type's
+// __sizeof__, and for a tuple the collector's header, as sys.getsizeof adds it.
+struct SizeOf {
+    py::object getsizeof = py::module_::import("sys").attr("getsizeof");
+    std::size_t tupleHeader = getsizeof(py::tuple()).cast<std::size_t>() - std::size_t(PyTuple_Type.tp_basicsize);
+    std::size_t operator()(py::handle o) const {
+        PyObject* p = o.ptr();
+        PyTypeObject* t = Py_TYPE(p);
+        if (PyFloat_CheckExact(p)) return std::size_t(t->tp_basicsize);
+        if (PyTuple_CheckExact(p)) return std::size_t(t->tp_basicsize) + std::size_t(PyTuple_GET_SIZE(p)) * std::size_t(t->tp_itemsize) + tupleHeader;
+#if PY_VERSION_HEX < 0x030C0000  // an int's digits are its size until 3.12
+        if (PyLong_CheckExact(p))  // at least one digit, as int.__sizeof__ counts it
+            return std::size_t(t->tp_basicsize) + std::size_t(std::max<Py_ssize_t>(std::abs(Py_SIZE(p)), 1)) * std::size_t(t->tp_itemsize);
+#endif
+        return getsizeof(o).cast<std::size_t>();
+    }
+};
+}  // namespace
+
 std::size_t Engine::moduleBytes(const LString& s) const {
     if (s.empty()) return sizeof(LModule);
-    py::object getsizeof = py::module_::import("sys").attr("getsizeof");
+    static const SizeOf* sizeOf = new SizeOf();  // never freed: at exit Python is gone
     const size_t stride = std::max<size_t>(1, s.size() / 64);
     std::size_t total = 0, n = 0;
     for (size_t i = 0; i < s.size(); i += stride, ++n) {
         const LModule& m = s[i];
         if (m.args.empty()) continue;
-        total += getsizeof(m.args).cast<std::size_t>();
-        for (py::handle a : m.args) total += getsizeof(a).cast<std::size_t>();
+        total += (*sizeOf)(m.args);
+        for (py::handle a : m.args) total += (*sizeOf)(a);
     }
     return sizeof(LModule) + total / std::max<std::size_t>(n, 1);
 }
