@@ -98,10 +98,15 @@ class InterpolatedProfile(dict):
         if self.interpolator is CSplineMethod and len(items) >= 2:
             # A spline through each control point's (x, y, parameter) over the sections, knots
             # at the parameters; the section is the points of those splines at t.
-            vdist = [items[k + 1][0] - items[k][0] for k in range(len(items) - 1)]
-            splines = [_cspline([Vector3(sec[j][0], sec[j][1], par) for par, sec in items], vdist)
-                       for j in range(len(items[0][1]))]
-            section = [c.getPointAt(t) for c in splines]
+            # The splines depend on the sections only: made once for them (as PlantGL makes
+            # its interpolator when sections are added), and again when one changes.
+            key = tuple((par, tuple(tuple(p) for p in sec)) for par, sec in items)
+            if self.__dict__.get('_splines_of') != key:
+                vdist = [items[k + 1][0] - items[k][0] for k in range(len(items) - 1)]
+                self._splines = [_cspline([Vector3(sec[j][0], sec[j][1], par) for par, sec in items], vdist)
+                                 for j in range(len(items[0][1]))]
+                self._splines_of = key
+            section = [c.getPointAt(t) for c in self._splines]
             if not curve:
                 return section
             spline = _cspline(section)

@@ -63,6 +63,8 @@ class _Vec:
         v, w = self._v, (o._v if isinstance(o, _Vec) else o)
         if len(v) == 3 and len(w) == 3:
             return self._of([v[0] + w[0], v[1] + w[1], v[2] + w[2]])
+        if len(v) == 2 and len(w) == 2:
+            return self._of([v[0] + w[0], v[1] + w[1]])
         return type(self)(*[a + b for a, b in zip(v, w)])
 
     __radd__ = __add__
@@ -71,6 +73,8 @@ class _Vec:
         v, w = self._v, (o._v if isinstance(o, _Vec) else o)
         if len(v) == 3 and len(w) == 3:
             return self._of([v[0] - w[0], v[1] - w[1], v[2] - w[2]])
+        if len(v) == 2 and len(w) == 2:
+            return self._of([v[0] - w[0], v[1] - w[1]])
         return type(self)(*[a - b for a, b in zip(v, w)])
 
     def __rsub__(self, o):
@@ -84,10 +88,14 @@ class _Vec:
         if isinstance(k, (int, float)):
             if len(v) == 3:
                 return self._of([v[0] * k, v[1] * k, v[2] * k])
+            if len(v) == 2:
+                return self._of([v[0] * k, v[1] * k])
             return type(self)(*[a * k for a in v])
         w = k._v if isinstance(k, _Vec) else k
         if len(v) == 3 and len(w) == 3:  # dot product, as PlantGL's Vector * Vector
             return 0.0 + v[0] * w[0] + v[1] * w[1] + v[2] * w[2]  # from 0 as sum(): -0.0 terms give 0.0
+        if len(v) == 2 and len(w) == 2:
+            return 0.0 + v[0] * w[0] + v[1] * w[1]
         return sum(a * b for a, b in zip(v, w))
 
     __rmul__ = __mul__
@@ -96,6 +104,8 @@ class _Vec:
         v = self._v
         if len(v) == 3:
             return self._of([v[0] / k, v[1] / k, v[2] / k])
+        if len(v) == 2:
+            return self._of([v[0] / k, v[1] / k])
         return type(self)(*[a / k for a in v])
 
     def __xor__(self, o):  # cross product
@@ -139,6 +149,12 @@ class _Vec:
 class Vector2(_Vec):
     _n = 2
     x, y, z, w = (_coordinate(i, 2) for i in range(4))
+
+    def __init__(self, *args):
+        if len(args) == 2:
+            self._v = [float(args[0]), float(args[1])]
+            return
+        _Vec.__init__(self, *args)
 
 
 class Vector3(_Vec):
