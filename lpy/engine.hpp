@@ -221,6 +221,11 @@ private:
     // scale (INT_MAX: none, L-Py's DEFAULT_SCALE).
     int m_stringMatching = 1;
     std::vector<int> m_scale;
+    py::object m_lpyModule;  // openalea.lpy, imported once (an import a step was a tenth of a small step)
+    // The context state the options were last read from, and its count of changes then
+    // ('changes': bumped by the option and scale setters): read again only when either moved.
+    py::object m_optionsOf;
+    long m_optionsChanges = -1;
     void readMatchingOptions();
     int scaleOf(int cls) const;
     // The module a left context reads after `pos` at scale `target` (-1: none); the one a

@@ -12,8 +12,12 @@
 namespace sprout::lpy {
 
 void Engine::readMatchingOptions() {
-    py::module_ lpy = py::module_::import("openalea.lpy");
-    py::dict state = lpy.attr("_state");
+    if (!m_lpyModule) m_lpyModule = py::module_::import("openalea.lpy");
+    py::dict state = m_lpyModule.attr("_state");  // the current context's (a model may switch it)
+    const long changes = state.contains("changes") ? state["changes"].cast<long>() : 0;
+    if (m_optionsOf.is(state) && changes == m_optionsChanges) return;
+    m_optionsOf = state;
+    m_optionsChanges = changes;
     py::object chosen = py::object(state["options"]).attr("get")("String matching");
     m_stringMatching = 1;  // 'As AxialTree', L-Py's default
     if (!chosen.is_none()) {

@@ -170,6 +170,7 @@ void defineTypes(py::module_& m) {
                       [](const PyModuleClass& c, int scale) {
                           py::dict state = py::module_::import("openalea.lpy").attr("_state");
                           py::dict(state.attr("setdefault")("scales", py::dict()))[py::str(nameOf(c.cls))] = scale;
+                          state["changes"] = py::int_(state.contains("changes") ? state["changes"].cast<long>() + 1 : 1);
                       });
     m.def("_class_count", [] { return names().size(); });
     m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });

@@ -139,6 +139,7 @@ class _Option:
         if not 0 <= value < len(self._values):
             return False
         self._state['options'][self.name] = value
+        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Engine::readMatchingOptions)
         return True
 
     def currentValue(self):
@@ -307,6 +308,7 @@ class LsysContext:
         for name in str(names).split(','):
             if name.strip():
                 self._state['scales'][name.strip()] = int(scale)
+                self._state['changes'] = self._state.get('changes', 0) + 1
 
     def __getattr__(self, name):
         if name.startswith('_'):
