@@ -297,6 +297,9 @@ std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classe
                 break;
             }
             case Op::Shape: {  // @g(shape[, scale])
+                // Not for the query walk, which reads frames only (@g does not move the turtle):
+                // made into triangles, a grid's hundred boxes each step were most of its time.
+                if (queries) break;
                 const std::string& surface = dr.shapeSurface(s.object(k, 0));
                 if (surface.empty()) leftOut.insert(name + " with text or what is not a PlantGL shape");
                 else if (surface != "-") w.put(surface.c_str(), {number(k, 1, 1.0)});

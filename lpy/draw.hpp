@@ -28,7 +28,8 @@ std::vector<std::uint32_t> defaultMaterials();
 // The drawable grammar (no rules; the axiom is the string). Modules Sprout does not draw are
 // left out; `warnings` receives one line per kind of module it left out that L-Py would draw.
 // `sourceOf`, when given, receives for each module of the axiom the index in `s` of the
-// module it draws. `queries`: L-Py's query modules become Sprout's `?P`, whose frames the turtle reports in order.
+// module it draws. `queries`: L-Py's query modules become Sprout's `?P`, whose frames the turtle reports in order
+// (a walk for the frames: @g's shapes are left out, not made into triangles).
 std::shared_ptr<Grammar> drawable(const LString& s, const ModuleClasses& classes, const TurtleDefaults& d,
                                   std::vector<std::string>* warnings = nullptr, bool queries = false,
                                   std::vector<std::uint32_t>* sourceOf = nullptr);
