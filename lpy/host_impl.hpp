@@ -68,6 +68,8 @@ void defineTypes(py::module_& m);
 // PlantGL's curves in C++ for Sprout's Python PlantGL (pgl_native.cpp: _PglNurbs, _PglPatch),
 // added by defineTypes.
 void definePlantGL(py::module_& m);
+// _QuantisedBase, QuantisedFunction's call in C (lpy/pgl_quantised.cpp).
+void defineQuantised(py::module_& m);
 void definePointGrid(py::module_& m);  // pgl_shapes.cpp: Point3Grid, AsymmetricHull
 void defineSession(py::module_& m);
 

@@ -145,6 +145,7 @@ LString fromState(py::handle state) {
 
 void defineTypes(py::module_& m) {
     definePlantGL(m);
+    defineQuantised(m);
     definePointGrid(m);
     py::class_<PyModuleClass>(m, "ModuleClass")
         .def_property_readonly("name", [](const PyModuleClass& c) { return nameOf(c.cls); })

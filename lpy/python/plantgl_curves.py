@@ -4,7 +4,7 @@
 # mappings), the Discretizer, and NURBS patches. Its own file: the curve arithmetic.
 import math as _math
 
-from _sprout_lpy import _PglNurbs, _PglPatch, _pgl_quantised_polyline
+from _sprout_lpy import _PglNurbs, _PglPatch, _pgl_quantised_polyline, _QuantisedBase
 from openalea.plantgl import _vectors
 from openalea.plantgl._scene import Polyline
 from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
@@ -288,11 +288,12 @@ class Discretizer:
         self.result = None
 
 
-class QuantisedFunction:
+class QuantisedFunction(_QuantisedBase):
     """y = f(x) from a 2D curve, as PlantGL's QuantisedFunction makes it: `sampling` values at
     evenly spaced x over the curve's x range, each the y of the curve's point found by bisecting
     its parameter until x is within 1e-5 (PlantGL's _computeValue), read back by linear
-    interpolation between the two samples around x."""
+    interpolation between the two samples around x. Called in C (_QuantisedBase, which keeps
+    _first, _last and _values): _call_python below where C would not read x as Python does."""
 
     def __init__(self, curve, sampling=100, clamped=True):
         if isinstance(curve, (list, tuple)):
@@ -316,7 +317,7 @@ class QuantisedFunction:
     @classmethod
     def _of(cls, state, clamped=True):
         """The function of `state` (first x, last x, values), as the C++ curves give it."""
-        f = object.__new__(cls)
+        f = cls.__new__(cls)
         f._first, f._last, f._values = state
         f.clamped = clamped
         return f
@@ -350,7 +351,13 @@ class QuantisedFunction:
     def sampling(self):
         return len(self._values)
 
-    def __call__(self, x):
+    def __reduce__(self):  # its samples live in the C base, not in __dict__
+        return (type(self)._of, ((self._first, self._last, self._values), self.clamped), dict(self.__dict__))
+
+    def getValue(self, x):
+        return self(x)
+
+    def _call_python(self, x):
         values, n = self._values, len(self._values)
         first, last = self._first, self._last
         x = min(max(x, first), last)  # (PlantGL clamps when not `clamped`, and errs when it is)
@@ -360,8 +367,6 @@ class QuantisedFunction:
         if floor >= n - 1 or abs(diff) < 1e-5:
             return values[min(floor, n - 1)]
         return (1 - diff) * values[floor] + diff * values[floor + 1]
-
-    getValue = __call__
 
 
 class NurbsPatch:

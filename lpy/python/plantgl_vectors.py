@@ -202,11 +202,16 @@ class Matrix3:
 
     @staticmethod
     def axisRotation(axis, angle):
-        x, y, z = Vector3(axis).normed()
+        # Vector3(axis).normed(), written out for a vector (the same operations).
+        v = axis._v if isinstance(axis, _Vec) and len(axis._v) == 3 else Vector3(axis)._v
+        n = _math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        x, y, z = (v[0] / n, v[1] / n, v[2] / n) if n > 0 else v
         c, s, t = _math.cos(angle), _math.sin(angle), 1 - _math.cos(angle)
-        return Matrix3([t * x * x + c, t * x * y - s * z, t * x * z + s * y],
-                       [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
-                       [t * x * z - s * y, t * y * z + s * x, t * z * z + c])
+        m = Matrix3.__new__(Matrix3)  # its rows are floats already
+        m.rows = [[float(t * x * x + c), float(t * x * y - s * z), float(t * x * z + s * y)],
+                  [float(t * x * y + s * z), float(t * y * y + c), float(t * y * z - s * x)],
+                  [float(t * x * z - s * y), float(t * y * z + s * x), float(t * z * z + c)]]
+        return m
 
     @staticmethod
     def IDENTITY():
@@ -215,6 +220,10 @@ class Matrix3:
     def __mul__(self, o):
         if isinstance(o, Matrix3):
             return Matrix3(*[[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
+        if isinstance(o, _Vec) and len(o._v) == 3:  # sum() of each row's products, written out
+            (a, b, c), (d, e, f), (g, h, i) = self.rows
+            x, y, z = o._v
+            return Vector3(0 + a * x + b * y + c * z, 0 + d * x + e * y + f * z, 0 + g * x + h * y + i * z)
         return Vector3(*[sum(self.rows[i][k] * o[k] for k in range(3)) for i in range(3)])
 
     def transpose(self):

@@ -217,3 +217,27 @@ def test_the_dask_sweep_writes_pictures_and_a_csv(tmp_path):
     assert len({x["modules"] for x in rows}) > 1  # seeds give other specimens
     for x in rows:
         assert (out / x["file"]).read_bytes()[:4] == b"\x89PNG" and int(x["segments"]) > 0
+
+
+def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
+    # QuantisedFunction's call is C (lpy/pgl_quantised.cpp); its Python (_call_python) is the
+    # reference: the same bits for every x, errors where it errs, and it pickles with its samples.
+    import copy
+    import pickle
+    import random
+    import struct
+
+    sprout.parse("Axiom: A\nderivation length: 0\nproduction:\nendlsystem\n", kind="lpy")
+    import openalea.plantgl.all as pgl
+    curve = pgl.NurbsCurve2D([(0, 0.5, 1), (0.3, 1.5, 1), (0.7, 0.2, 1), (1, 1, 1)])
+    rng = random.Random(5)
+    for f in (pgl.QuantisedFunction(curve), pgl.QuantisedFunction([(0, 3), (0.5, -1), (2, 4)], 37)):
+        xs = [0, 1, -1, 2, 10 ** 20, -0.0, float("inf"), True] + [rng.uniform(-1, 3) for _ in range(2000)]
+        for x in xs:
+            got, want = f(x), f._call_python(x)
+            assert struct.pack("d", got) == struct.pack("d", want), x
+        with pytest.raises(ValueError):
+            f(float("nan"))  # math.floor(nan), as the Python raises it
+        assert f(0.25) != f(0.75)  # not one value everywhere
+        for g in (pickle.loads(pickle.dumps(f)), copy.deepcopy(f)):
+            assert (g(0.3), g.getValue(0.7), g.sampling, g.clamped) == (f(0.3), f(0.7), f.sampling, f.clamped)
