@@ -10,6 +10,7 @@
 #include "core/language/surface_file.hpp"
 #include "core/turtle/asymmetric_hull.hpp"
 #include "lpy/draw_impl.hpp"
+#include "lpy/pgl_native.hpp"
 
 namespace sprout::lpy::detail {
 
@@ -100,6 +101,27 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
     };
     if (hullSurface(shape, *sf)) {
         keep();
+        return it->second;
+    }
+    // Made in C++ where it knows the shape (the same numbers as the Python's), else by Python.
+    const ShapeMesh mesh = shapeMesh(shape);
+    if (mesh.kind != ShapeMesh::Unknown) {
+        if (mesh.kind == ShapeMesh::Nothing) return it->second;  // as None from the Python: not drawn
+        const size_t np = mesh.points.size(), nt = mesh.triangles.size(), ns = mesh.segments.size();
+        if (np == 0 && nt == 0 && ns == 0) it->second = "-";  // a shape with nothing to draw: no warning
+        bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
+        for (size_t i = 0; i < np && ok; ++i) sf->positions.push_back(fromShapeFrame(mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]));
+        for (size_t i = 0; i < nt && ok; ++i) {
+            for (long v : mesh.triangles[i]) ok = ok && v >= 0 && size_t(v) < np;
+            if (ok)
+                for (long v : mesh.triangles[i]) sf->indices.push_back(std::uint32_t(v));
+        }
+        for (size_t i = 0; i < ns && ok; ++i) {
+            const auto& e = mesh.segments[i];
+            ok = e[0] >= 0 && size_t(e[0]) < np && e[1] >= 0 && size_t(e[1]) < np;
+            if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
+        }
+        if (ok && (!sf->indices.empty() || !sf->lines.empty())) keep();
         return it->second;
     }
     PyObject* pgl = PyImport_ImportModule("openalea.plantgl.all");

@@ -7,6 +7,7 @@
 #include "core/turtle/asymmetric_hull.hpp"
 #include "core/turtle/point_grid.hpp"
 #include "lpy/host_impl.hpp"
+#include "lpy/pgl_native.hpp"
 
 namespace sprout::lpy {
 namespace {
@@ -36,6 +37,18 @@ py::list indices(const std::vector<std::uint32_t>& found) {
 }  // namespace
 
 void definePointGrid(py::module_& m) {
+    // A shape given to @g made in C++ (lpy/pgl_meshes.cpp) as _sprout_triangles makes it:
+    // (points, triangles, segments), None where it makes None, False where it is left to it.
+    m.def("_shape_mesh", [](py::handle shape) -> py::object {
+        const ShapeMesh mesh = shapeMesh(shape.ptr());
+        if (mesh.kind == ShapeMesh::Unknown) return py::bool_(false);
+        if (mesh.kind == ShapeMesh::Nothing) return py::none();
+        py::list points, triangles, segments;
+        for (const auto& p : mesh.points) points.append(py::make_tuple(p[0], p[1], p[2]));
+        for (const auto& t : mesh.triangles) triangles.append(py::make_tuple(t[0], t[1], t[2]));
+        for (const auto& e : mesh.segments) segments.append(py::make_tuple(e[0], e[1]));
+        return py::make_tuple(points, triangles, segments);
+    });
     // (negX, posX, negY, posY radii), (the same heights), bottom, top, bottomShape, topShape,
     // slices, stacks -> (points, triangles) as lists of tuples.
     m.def("_hull_mesh", [](std::array<double, 4> r, std::array<double, 4> h, py::handle bottom, py::handle top, double sb, double st,

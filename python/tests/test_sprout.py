@@ -241,3 +241,52 @@ def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
         assert f(0.25) != f(0.75)  # not one value everywhere
         for g in (pickle.loads(pickle.dumps(f)), copy.deepcopy(f)):
             assert (g(0.3), g.getValue(0.7), g.sampling, g.clamped) == (f(0.3), f(0.7), f.sampling, f.clamped)
+
+
+def test_the_shapes_given_to_at_g_are_meshed_in_c_as_the_python_meshes_them():
+    # lpy/pgl_meshes.cpp makes @g's shapes as plantgl_drawing.py's _sprout_triangles does: the
+    # same points to the bit, the same triangles and segments; what it does not know it leaves
+    # to the Python (False).
+    import random
+    import struct
+
+    sprout.parse("Axiom: A\nderivation length: 0\nproduction:\nendlsystem\n", kind="lpy")
+    import openalea.plantgl.all as pgl
+    from _sprout_lpy import _shape_mesh
+    from openalea.plantgl._drawing import _sprout_triangles
+
+    def same_form(r):
+        if r is None:
+            return None
+        return ([tuple(struct.pack("d", float(c)) for c in p) for p in r[0]], [tuple(t) for t in r[1]],
+                [tuple(s) for s in (r[2] if len(r) > 2 else [])])
+
+    rng = random.Random(11)
+    num = lambda: rng.choice([rng.uniform(-3, 3), 0.0, -0.0, 1, rng.randint(1, 70)])
+    vec = lambda: rng.choice([(num(), num(), num()), pgl.Vector3(num(), num(), num())])
+
+    def shape(depth=0):
+        k = rng.randrange(13 if depth < 3 else 8)
+        made = [lambda: pgl.Box(vec()), lambda: pgl.Sphere(num(), rng.randint(-2, 70), rng.randint(-2, 70)),
+                lambda: pgl.Cylinder(num(), num(), True, rng.randint(1, 80)), lambda: pgl.Frustum(num(), num(), num()),
+                lambda: pgl.Paraboloid(num(), num(), num(), True, 9, 5), lambda: pgl.Disc(num()),
+                lambda: pgl.TriangleSet([vec() for _ in range(4)], [[rng.randint(0, 5) for _ in range(3)] for _ in range(3)]),
+                lambda: pgl.PointSet([vec() for _ in range(rng.randint(0, 4))]),
+                lambda: pgl.Scaled(vec(), shape(depth + 1)), lambda: pgl.Translated(vec(), shape(depth + 1)),
+                lambda: pgl.AxisRotated(vec(), num(), shape(depth + 1)), lambda: pgl.Oriented(vec(), vec(), shape(depth + 1)),
+                lambda: pgl.Group([pgl.Shape(shape(depth + 1)) for _ in range(rng.randint(0, 3))])]
+        return made[k]()
+
+    meshed = 0
+    for _ in range(1500):
+        s = shape()
+        c = _shape_mesh(s)
+        if c is not False:
+            assert same_form(c) == same_form(_sprout_triangles(s))
+            meshed += 1
+    assert meshed > 1400
+    # Left to the Python: a curve it samples, a patch, a shape with no geometry.
+    curve = pgl.NurbsCurve([(0, 0, 0, 1), (1, 0, 0, 1), (1, 1, 0, 1)], 2)
+    for s in (pgl.Group([pgl.Box(1), curve]), pgl.Shape(None)):
+        assert _shape_mesh(s) is False
+    assert _shape_mesh(pgl.Box(0.5))[1][:2] == [(0, 1, 2), (0, 2, 3)]
