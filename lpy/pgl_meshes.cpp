@@ -109,6 +109,15 @@ std::array<double, 3> triple(PyObject* v, Read read) {
 
 using V3 = std::array<double, 3>;
 
+// A Box's size or a Scaled's scale: (num(v),) * 3 for a number, else num of its first three.
+V3 sizes(PyObject* v, double fallback) {
+    if (!PyObject_HasAttrString(v, "__len__")) {
+        const double k = num(v, fallback);
+        return {k, k, k};
+    }
+    return triple(v, [fallback](PyObject* x) { return num(x, fallback); });
+}
+
 // Vector3(v).normed(): divided by its norm where that is above 0.
 V3 normed(V3 v) {
     const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -243,13 +252,7 @@ ShapeMesh Mesher::of(PyObject* obj, int depth) {
         if (name == "Scaled") {
             PyObject* sv = attribute(obj, "scale");
             const Ref ks(sv ? sv : PyLong_FromLong(1));
-            V3 s;
-            if (!PyObject_HasAttrString(ks.p, "__len__")) {
-                const double k = num(ks.p, 1);
-                s = {k, k, k};
-            } else {
-                s = triple(ks.p, [](PyObject* x) { return num(x, 1); });
-            }
+            const V3 s = sizes(ks.p, 1);
             add(m, inner, [&](const V3& p) { return V3{p[0] * s[0], p[1] * s[1], p[2] * s[2]}; });
         } else if (name == "Translated") {
             PyObject* tv = attribute(obj, "translation");
@@ -289,13 +292,7 @@ ShapeMesh Mesher::of(PyObject* obj, int depth) {
         PyObject* chosen = nargs >= 3 ? PySequence_GetSlice(args.p, 0, 3) : sv ? (Py_INCREF(sv), sv) : Py_BuildValue("(ddd)", 0.5, 0.5, 0.5);
         Py_XDECREF(sv);
         const Ref ks(chosen);
-        V3 s;
-        if (!PyObject_HasAttrString(ks.p, "__len__")) {
-            const double k = num(ks.p, 0.5);
-            s = {k, k, k};
-        } else {
-            s = triple(ks.p, [](PyObject* x) { return num(x, 0.5); });
-        }
+        const V3 s = sizes(ks.p, 0.5);
         m.kind = ShapeMesh::Mesh;
         for (int axis = 0; axis < 3; ++axis)
             for (int sign : {-1, 1}) {

@@ -8,18 +8,6 @@
 namespace sprout::recycled {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kKeep = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kKeep = false;
-#else
-constexpr bool kKeep = true;
-#endif
-#else
-constexpr bool kKeep = true;
-#endif
-
 // Size classes: 4 a power of two (2^k, 1.25, 1.5 and 1.75 times it), from kSmallest.
 constexpr int kFirstPower = 12;  // log2(kSmallest)
 constexpr int kClasses = 4 * (23 - kFirstPower) + 1;  // to kLargest = 2^23
@@ -50,7 +38,7 @@ Cache& cache() {
     return *c;
 }
 
-bool kept(std::size_t bytes) { return kKeep && bytes >= kSmallest && bytes <= kLargest; }
+bool kept(std::size_t bytes) { return kKeeps && bytes >= kSmallest && bytes <= kLargest; }
 
 }  // namespace
 

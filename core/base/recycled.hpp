@@ -16,6 +16,19 @@ constexpr std::size_t kSmallest = std::size_t(4) << 10;  // below: plain operato
 constexpr std::size_t kLargest = std::size_t(8) << 20;   // above: plain operator new
 constexpr std::size_t kKept = std::size_t(64) << 20;     // the most given-back bytes kept
 
+// Whether blocks are kept at all: not under AddressSanitizer.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kKeeps = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kKeeps = false;
+#else
+constexpr bool kKeeps = true;
+#endif
+#else
+constexpr bool kKeeps = true;
+#endif
+
 // A block of at least `bytes` (a size class: at most a quarter more). Throws std::bad_alloc.
 void* take(std::size_t bytes);
 // Gives back a block that take(bytes) gave, with the same `bytes`.

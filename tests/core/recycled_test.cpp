@@ -10,17 +10,7 @@
 namespace sprout {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kKeeps = false;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kKeeps = false;
-#else
-constexpr bool kKeeps = true;
-#endif
-#else
-constexpr bool kKeeps = true;
-#endif
+using recycled::kKeeps;
 
 TEST(Recycled, ABlockGivenBackIsTheNextOneOfItsSize) {
     if (!kKeeps) GTEST_SKIP() << "nothing is kept under AddressSanitizer";
