@@ -30,6 +30,15 @@ void linearClamped() {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
+
+// A planar curve of one segment, 10 long (warmUp and prime draw it).
+Geometry oneSegmentCurve() {
+    Geometry segment;
+    segment.planarCurve = true;
+    segment.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
+    segment.bounds.add({0, 0, 0}), segment.bounds.add({0, 10, 0});
+    return segment;
+}
 }  // namespace
 
 // Baked triangles: position, normal, colour (polygon.vert's layout).
@@ -186,7 +195,6 @@ bool Renderer::Impl::build(std::string& error) {
 void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     wantSamples = std::min(wantSamples, samples);
     Msaa& t = msaa[slot];
-    msaaFbo = t.fbo;
     msaaInUse = &t;
     if (t.fbo && w == t.width && h == t.height && wantSamples == t.samples) return;
     // Moving frames change size with the window's resolution scale: a larger image is
@@ -216,7 +224,6 @@ void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
     t.width = w;
     t.height = h;
-    msaaFbo = t.fbo;
 }
 
 Renderer::Renderer() : m(std::make_unique<Impl>()) {}
@@ -286,10 +293,7 @@ void Renderer::warmUp(int width, int height) {
     }
     // And a curve of one segment, fewer than a batch of ribbons (a plant's first step can be
     // one: it took 30 ms to draw the first time).
-    Geometry segment;
-    segment.planarCurve = true;
-    segment.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
-    segment.bounds.add({0, 0, 0}), segment.bounds.add({0, 10, 0});
+    Geometry segment = oneSegmentCurve();
     // An environment with the small plant: a stone triangle and a glass one (the overlay's
     // three passes, lit with and without the shadow map).
     Mesh environment;
@@ -330,13 +334,11 @@ void Renderer::warmUp(int width, int height) {
 }
 
 void Renderer::prime(int width, int height, const RenderOptions& options, const std::atomic<bool>& cancel) {
-    Geometry plant, curve;
+    Geometry plant;
     plant.cylinders.push_back({{0, 0, 0}, 0.1f, {0, 2, 0}, 0.08f, 0x6B4F2AFFu, 0, 0});
     plant.surfaces.push_back({{0, 2, 0}, 0.8f, {1, 0.5f, 0}, 0x4C8C3AFFu, {0, 0, 1}, SurfaceKind::Leaf});
     plant.bounds.add({-1, 0, -1}), plant.bounds.add({1, 3, 1});
-    curve.planarCurve = true;
-    curve.cylinders.push_back({{0, 0, 0}, 0.5f, {0, 10, 0}, 0.5f, 0x6B4F2AFFu, 0, 0});
-    curve.bounds.add({0, 0, 0}), curve.bounds.add({0, 10, 0});
+    Geometry curve = oneSegmentCurve();
     const float aspect = float(width) / float(std::max(height, 1));
     for (const Geometry* g : {&plant, &curve}) {  // a 3D plant first: most pictures are of one
         if (cancel.load()) break;

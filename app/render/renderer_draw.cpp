@@ -140,8 +140,8 @@ void Renderer::plan(Pass& p, const Camera& camera, int width, int height, const 
 }
 
 void Renderer::Impl::resolve(GLuint target, int x, int y, int w, int h) {
-    if (!msaaInUse || msaaInUse->samples <= 1) {  // a copy (no shader: the blit copies memory)
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo);
+    if (msaaInUse->samples <= 1) {  // a copy (no shader: the blit copies memory)
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaInUse->fbo);
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
         glBlitFramebuffer(0, 0, w, h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -342,7 +342,7 @@ bool Renderer::step(Pass& p, std::size_t budget, bool wait) {
     // have no edges to smooth (its moving frames took 19 ms at 2 samples, 1440x860).
     if (p.curve && s.rasterCurve) s.ensureMsaa(p.width, p.height, 0, 0);
     else s.ensureMsaa(p.width, p.height, p.bigInteractive ? 2 : 4, p.bigInteractive ? 0 : p.o.quality == Quality::Interactive ? 1 : 2);
-    glBindFramebuffer(GL_FRAMEBUFFER, s.msaaFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, s.msaaInUse->fbo);
     glViewport(0, 0, p.width, p.height);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, s.shadowTexture);

@@ -107,8 +107,7 @@ struct Renderer::Impl {
         GLuint fbo = 0, colour = 0, colourTexture = 0, depth = 0;
         int width = 0, height = 0, samples = 0;
     } msaa[3];
-    GLuint msaaFbo = 0;  // the one in use
-    const Msaa* msaaInUse = nullptr;
+    const Msaa* msaaInUse = nullptr;  // the one ensureMsaa made or kept last
     std::size_t quickLinesFrom = detail::kQuickLines;  // RenderOptions::quickLines (0 while warming up)
     int samples = 1;
     int curveBatch = 1;
@@ -128,7 +127,7 @@ struct Renderer::Impl {
     static void mutableAgain(Buffers& b, bool lines, bool always = false);
     // The programs, textures, buffers and the shadow map (Renderer::init); false with a message.
     bool build(std::string& error);
-    // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaFbo is it.
+    // The multisampled image of `slot` (see Msaa) at w x h, made or kept; msaaInUse is it.
     void ensureMsaa(int w, int h, int wantSamples, int slot);
     // The image in use (ensureMsaa) resolved into `target` at (x, y); the framebuffer bound
     // after is `target`, depth testing on.

@@ -231,6 +231,8 @@ def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
     import openalea.plantgl.all as pgl
     curve = pgl.NurbsCurve2D([(0, 0.5, 1), (0.3, 1.5, 1), (0.7, 0.2, 1), (1, 1, 1)])
     rng = random.Random(5)
+    # Its call is the C base's: the class defines none of its own.
+    assert "__call__" not in vars(pgl.QuantisedFunction) and pgl.QuantisedFunction.__mro__[1].__name__ == "_QuantisedBase"
     for f in (pgl.QuantisedFunction(curve), pgl.QuantisedFunction([(0, 3), (0.5, -1), (2, 4)], 37)):
         xs = [0, 1, -1, 2, 10 ** 20, -0.0, float("inf"), True] + [rng.uniform(-1, 3) for _ in range(2000)]
         for x in xs:
