@@ -1,7 +1,7 @@
 // L-Py rules, rule applications per second of the same doubling model
 //   A(x) --> A(x + 1) A(x * 0.5)          (every module matches; 2^n - 1 matches in n steps)
 // run each way, measured in the same run:
-//   - the native path: a produce-only rule compiled to Sprout's expressions (lpy/native.cpp),
+//   - the native path: a produce-only rule compiled to Sprout's expressions (lpy/engine/native_derive.cpp),
 //     its x * a + b arguments without them, steps of 8 k modules or more shared with a
 //     second thread where the process may use two processors;
 //   - the Python path: the same file with the native path off (one Python call per match);
@@ -32,7 +32,7 @@
 
 #include "core/derive/derive.hpp"
 #include "core/language/file_kind.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace {
 

@@ -1,38 +1,67 @@
 # The layers above core's stages, checked at configure time like the stages themselves
 # (core/CMakeLists.txt): a source that includes a header of a layer it may not use stops the
-# configuration with the file and the line.
+# configuration with the file and the line. docs/architecture.md draws them.
 #
-#   core/    only core/ (its stages order themselves: core/CMakeLists.txt)
-#   lpy/     core/ and lpy/: L-Py models sit below the program, so nothing of app/
-#   app/     core/, lpy/ and app/: the program; nothing of python/
-#   python/  core/, lpy/ and app/'s libraries, but not the program's own parts (app/cli/, app/viewer/)
+#   core/    only core/, its six stages in order: base, language, turtle, environment,
+#            derive, scene, each using only those before it
+#   lpy/     core/ and lpy/, its folders in this order, each using only those before it:
+#              translate and plantgl (side by side), engine, draw, interpreter, api, run
+#              (which defines lpy.hpp). lpy.hpp, its public face, includes core/ and
+#              engine/run_options.hpp. Its Python imports nothing of `sprout` (above it).
+#   app/     core/, lpy/'s public face and app/: the program; nothing of python/
+#   python/  core/, lpy/'s public face and app/'s libraries, not the program's own parts
+#            (app/cli/, app/viewer/)
 #
-# Usage: sprout_check_layer(FOLDER ALLOWED prefix... [FORBIDDEN prefix...])
+# Also run as a script (cmake -DSPROUT_ROOT=DIR -P cmake/SproutLayers.cmake): the test
+# tests/layers/ runs it over the tree, and over trees with a wrong include, which must fail.
+
+# Usage: sprout_check_layer(FOLDER [FILES glob...] ALLOWED prefix... [FORBIDDEN prefix...])
+# FILES: globs under FOLDER (default: every C/C++ source under it, recursively).
 function(sprout_check_layer folder)
-  cmake_parse_arguments(L "" "" "ALLOWED;FORBIDDEN" ${ARGN})
-  file(GLOB_RECURSE files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.cpp ${PROJECT_SOURCE_DIR}/${folder}/*.hpp
-       ${PROJECT_SOURCE_DIR}/${folder}/*.c ${PROJECT_SOURCE_DIR}/${folder}/*.h)
+  cmake_parse_arguments(L "" "" "FILES;ALLOWED;FORBIDDEN" ${ARGN})
+  set(root ${SPROUT_ROOT})
+  if(NOT L_FILES)
+    set(L_FILES **.cpp **.hpp **.c **.h)
+  endif()
+  set(globs "")
+  foreach(g ${L_FILES})
+    if(g MATCHES "^\\*\\*")
+      string(SUBSTRING "${g}" 2 -1 tail)
+      list(APPEND recursive ${root}/${folder}/*${tail})
+    else()
+      list(APPEND globs ${root}/${folder}/${g})
+    endif()
+  endforeach()
+  set(files "")
+  if(recursive)
+    file(GLOB_RECURSE found ${SPROUT_GLOB_DEPENDS} ${recursive})
+    list(APPEND files ${found})
+  endif()
+  if(globs)
+    file(GLOB found ${SPROUT_GLOB_DEPENDS} ${globs})
+    list(APPEND files ${found})
+  endif()
   string(REPLACE ";" ", " allowedText "${L_ALLOWED}")
   if(L_FORBIDDEN)
     string(REPLACE ";" ", " forbiddenText "${L_FORBIDDEN}")
     string(APPEND allowedText " but not ${forbiddenText}")
   endif()
+  # The prefixes are plain paths ("app/cli/", "lpy/lpy.hpp"), so they join into one regex.
+  list(JOIN L_ALLOWED "|" allowed)
+  list(JOIN L_FORBIDDEN "|" forbidden)
   foreach(file ${files})
     file(STRINGS ${file} includes REGEX "^#include \"(core|lpy|app|python)/")
     foreach(line ${includes})
       string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" header "${line}")
-      # The prefixes are plain folder names ("app/cli/"), so they join into one regex.
-      list(JOIN L_ALLOWED "|" allowed)
       string(REGEX MATCH "^(${allowed})" ok "${header}")
       if(L_FORBIDDEN)
-        list(JOIN L_FORBIDDEN "|" forbidden)
         string(REGEX MATCH "^(${forbidden})" refused "${header}")
         if(refused)
           set(ok "")
         endif()
       endif()
       if(NOT ok)
-        file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${file})
+        file(RELATIVE_PATH rel ${root} ${file})
         message(FATAL_ERROR "${rel}: '${line}' reaches outside what ${folder}/ may use: ${folder}/ includes only "
                             "${allowedText} (cmake/SproutLayers.cmake, docs/architecture.md)")
       endif()
@@ -40,7 +69,56 @@ function(sprout_check_layer folder)
   endforeach()
 endfunction()
 
-sprout_check_layer(core ALLOWED core/)
-sprout_check_layer(lpy ALLOWED core/ lpy/)
-sprout_check_layer(app ALLOWED core/ lpy/ app/)
-sprout_check_layer(python ALLOWED core/ lpy/ app/ FORBIDDEN app/cli/ app/viewer/)
+# lpy/'s Python is installed as openalea.lpy and openalea.plantgl, below the `sprout` module:
+# it imports nothing of it (what it needs of it is handed down: lpy/api/api.hpp).
+function(sprout_check_python_imports folder)
+  file(GLOB_RECURSE files ${SPROUT_GLOB_DEPENDS} ${SPROUT_ROOT}/${folder}/*.py)
+  foreach(file ${files})
+    file(STRINGS ${file} imports REGEX "^[ \t]*(import[ \t]+sprout|from[ \t]+sprout)([ \t.,]|$)")
+    if(imports)
+      list(GET imports 0 line)
+      string(STRIP "${line}" line)
+      file(RELATIVE_PATH rel ${SPROUT_ROOT} ${file})
+      message(FATAL_ERROR "${rel}: '${line}': ${folder}/'s Python is below the sprout module and imports nothing of it "
+                          "(cmake/SproutLayers.cmake, docs/architecture.md)")
+    endif()
+  endforeach()
+endfunction()
+
+function(sprout_check_layers)
+  # core/'s stages (core/CMakeLists.txt links them in the same order), each allowed those below.
+  set(below "")
+  foreach(stage base language turtle environment derive scene)
+    list(APPEND below core/${stage}/)
+    sprout_check_layer(core/${stage} ALLOWED ${below})
+  endforeach()
+  sprout_check_layer(core ALLOWED core/)
+  # lpy/, folder by folder, each allowed the ones before it.
+  set(below core/)
+  foreach(sub translate plantgl engine draw interpreter api run)
+    list(APPEND below lpy/${sub}/)
+    set(allowed ${below})
+    if(sub STREQUAL "plantgl")
+      set(allowed core/ lpy/plantgl/)  # beside translate/, not above it
+    elseif(sub STREQUAL "run")
+      list(APPEND allowed lpy/lpy.hpp)  # what it defines
+    endif()
+    sprout_check_layer(lpy/${sub} ALLOWED ${allowed})
+  endforeach()
+  sprout_check_layer(lpy FILES *.hpp *.cpp ALLOWED core/ lpy/engine/run_options.hpp)
+  sprout_check_python_imports(lpy)
+  sprout_check_layer(app ALLOWED core/ lpy/lpy.hpp app/)
+  sprout_check_layer(python ALLOWED core/ lpy/lpy.hpp app/ FORBIDDEN app/cli/ app/viewer/)
+endfunction()
+
+if(CMAKE_SCRIPT_MODE_FILE)
+  set(SPROUT_GLOB_DEPENDS "")
+  if(NOT SPROUT_ROOT)
+    message(FATAL_ERROR "usage: cmake -DSPROUT_ROOT=DIR -P cmake/SproutLayers.cmake")
+  endif()
+  sprout_check_layers()
+else()
+  set(SPROUT_ROOT ${PROJECT_SOURCE_DIR})
+  set(SPROUT_GLOB_DEPENDS CONFIGURE_DEPENDS)  # a file added or moved is checked at the next build
+  sprout_check_layers()
+endif()

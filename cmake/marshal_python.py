@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""Compiles Sprout's embedded Python (lpy/python/*.py) at build time, so that a process that runs
+"""Compiles Sprout's embedded Python (lpy/api/*.py, lpy/plantgl/*.py) at build time, so that a process that runs
 an L-Py model does not compile 3,000 lines of it at every start (about 25 ms).
 
     marshal_python.py OUT.cpp DISPLAY_NAME=SOURCE.py ...
 
 Writes `std::span<const EmbeddedFile> sprout::precompiledLpyPython()` (EmbeddedFile's stem and
-file name: the name the code is compiled under, as lpy/host.cpp installs it; data: marshal.dumps
+file name: the name the code is compiled under, as lpy/interpreter/interpreter.cpp installs it; data: marshal.dumps
 of its code)
 and `sprout::precompiledLpyTag()`, the interpreter's cache tag (cpython-311): the host uses the
 code only under the interpreter that made it, and compiles the source otherwise."""

@@ -19,7 +19,7 @@
 #include "core/language/import/import.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/turtle.hpp"
-#include "lpy/translate.hpp"
+#include "lpy/translate/translate.hpp"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "core/language/grammar.hpp"
 #include "core/language/import/import.hpp"
 #include "core/language/module_string.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace py = pybind11;
 using namespace sprout;
@@ -476,6 +476,8 @@ PYBIND11_MODULE(_sprout, m) {
         p.lpySteps.push_back(p.grammar);
         return p;
     });
+    // openalea.plantgl's Scene draws itself through it (lpy/ imports nothing of `sprout`).
+    lpy::setScenePlantMaker(m.attr("_plant_of_lpy").ptr());
     m.def("open", &openSource, py::arg("source"), py::arg("python") = true, py::arg("steps") = -1,
           "A file of any kind Sprout opens (.lsys, ABOP notation, cpfg .l, .lpy, Lparser .ls, Fractint .l or FILE.l:System, "
           "a PNG written by Sprout) or a preset's name. An L-Py model is a Python program: it runs here as `python3 FILE` "

@@ -10,7 +10,7 @@
 #include "app/presets.hpp"
 #include "app/source.hpp"
 #include "core/language/import/import.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout::cli {
 namespace {

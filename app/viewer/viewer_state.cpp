@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "app/viewer/text_edit.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 #include "core/language/import/import.hpp"
 #include "core/base/atomic_file.hpp"
 

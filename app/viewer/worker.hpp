@@ -18,7 +18,7 @@
 #include "core/scene/forest.hpp"
 #include "core/derive/provenance.hpp"
 #include "core/turtle/turtle.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout::viewer {
 
@@ -127,7 +127,7 @@ private:
     std::shared_ptr<const Grammar> m_cachedGrammar;
     std::vector<Diagnostic> m_cachedDiagnostics;
     std::unique_ptr<Derivation> m_derivation;
-    // An L-Py model run by Python (lpy/host.hpp), every step kept: stepping through it draws
+    // An L-Py model run by Python (lpy/lpy.hpp), every step kept: stepping through it draws
     // the kept steps, and only a change of text, file or length runs the Python again. A
     // step's drawing (its interpretation rules, its shapes) is made when it is first shown.
     std::shared_ptr<const lpy::Model> m_lpy;

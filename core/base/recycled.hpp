@@ -1,6 +1,6 @@
 #pragma once
 // Mid-size blocks (4 KB to 8 MB) kept when freed, for the next ones of their size: a
-// derivation that keeps every step (L-Py's strings, lpy/engine.hpp) allocates a few MB, and
+// derivation that keeps every step (L-Py's strings, lpy/engine/engine.hpp) allocates a few MB, and
 // when a plant is dropped and the next one opened (a script's sweep, `import sprout` in a
 // loop, an edit in the viewer), malloc had handed the heap back to the kernel in between and
 // every page was faulted in and zeroed again: a third of a 100-step stochastic model's 5 ms.

@@ -100,7 +100,7 @@ def test_an_lpy_model_is_derived_by_open_and_drawn_when_asked():
 
 
 def test_an_lpy_crown_is_drawn_as_plantgl_meshes_it():
-    # An AsymmetricHull is meshed in C++ (lpy/draw_shapes.cpp): 4 * slices meridians of
+    # An AsymmetricHull is meshed in C++ (lpy/draw/shapes.cpp): 4 * slices meridians of
     # 2 * stacks - 1 points, 2 * (2 * stacks - 1) triangles each; the same mesh as the Python
     # drawing of PlantGL's shapes gives.
     model = ("from openalea.plantgl.all import *\nAxiom: F(1) @g(AsymmetricHull(1, 2, 1, 2, 0.5, 0, 0, 0.5, "
@@ -220,7 +220,7 @@ def test_the_dask_sweep_writes_pictures_and_a_csv(tmp_path):
 
 
 def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
-    # QuantisedFunction's call is C (lpy/pgl_quantised.cpp); its Python (_call_python) is the
+    # QuantisedFunction's call is C (lpy/plantgl/bind_quantised.cpp); its Python (_call_python) is the
     # reference: the same bits for every x, errors where it errs, and it pickles with its samples.
     import copy
     import pickle
@@ -246,7 +246,7 @@ def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
 
 
 def test_the_shapes_given_to_at_g_are_meshed_in_c_as_the_python_meshes_them():
-    # lpy/pgl_meshes.cpp makes @g's shapes as plantgl_drawing.py's _sprout_triangles does: the
+    # lpy/plantgl/meshes.cpp makes @g's shapes as plantgl_drawing.py's _sprout_triangles does: the
     # same points to the bit, the same triangles and segments; what it does not know it leaves
     # to the Python (False).
     import random

@@ -6,7 +6,7 @@
 #include "core/language/file_kind.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/turtle.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 #include "tests/core/same_drawing.hpp"
 
 namespace sprout {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "core/language/diagnostic.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 #include "tests/lpy/lpy_messages.hpp"
-#include "lpy/translate.hpp"
+#include "lpy/translate/translate.hpp"
 
 namespace sprout {
 namespace {

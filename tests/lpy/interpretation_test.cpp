@@ -1,4 +1,4 @@
-// L-Py's interpretation with its turtle (lpy/engine.cpp interpret): StartInterpretation and
+// L-Py's interpretation with its turtle (lpy/engine/engine.cpp interpret): StartInterpretation and
 // EndInterpretation draw what they produce first and last; the `turtle` of interpretation rules
 // draws where the rule runs, and the parameters a model adds to it follow the turtle's
 // branches.
@@ -8,7 +8,7 @@
 
 #include "core/derive/draw.hpp"
 #include "core/language/module_string.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 #include "tests/lpy/lpy_messages.hpp"
 
 namespace sprout {

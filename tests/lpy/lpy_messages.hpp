@@ -3,7 +3,7 @@
 #include <string>
 
 #include "core/language/diagnostic.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout {
 

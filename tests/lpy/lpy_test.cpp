@@ -17,9 +17,9 @@
 #include "core/derive/draw.hpp"
 #include "core/derive/provenance.hpp"
 #include "core/language/file_kind.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 #include "tests/lpy/lpy_messages.hpp"
-#include "lpy/translate.hpp"
+#include "lpy/translate/translate.hpp"
 
 namespace sprout {
 namespace {

@@ -1,9 +1,9 @@
 // Files written for Python 2: the message says so at the line, with the Python 3 form
-// (lpy/python2.hpp), where Python alone said "SyntaxError" or "NameError".
+// (lpy/translate/python2_hints.hpp), where Python alone said "SyntaxError" or "NameError".
 #include <gtest/gtest.h>
 
-#include "lpy/host.hpp"
-#include "lpy/python2.hpp"
+#include "lpy/lpy.hpp"
+#include "lpy/translate/python2_hints.hpp"
 
 namespace sprout {
 namespace {

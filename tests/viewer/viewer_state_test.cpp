@@ -9,7 +9,7 @@
 
 #include "app/viewer/text_edit.hpp"
 #include "app/viewer/viewer_state.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout::viewer {
 namespace {

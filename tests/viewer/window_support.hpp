@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "app/image.hpp"
-#include "lpy/host.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout {
 namespace fs = std::filesystem;

@@ -1,0 +1,103 @@
+// The `_sprout_lpy` module: the functions L-Py's generated code and model files call
+// (produce, the control functions, the context tests of a rule's body) and, from types.cpp and
+// session.cpp, the classes of L-Py's strings and the session openalea.lpy's Lsystem drives.
+#include <algorithm>
+
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+
+#include "lpy/api/api.hpp"
+#include "lpy/interpreter/interpreter.hpp"
+
+namespace py = pybind11;
+using namespace sprout::lpy;
+
+namespace {
+
+Engine& engine() {
+    Engine* e = currentEngine();
+    if (!e) throw py::value_error("no L-Py model is running");
+    return *e;
+}
+
+py::object*& scenePlant() {
+    static py::object* maker = nullptr;
+    return maker;
+}
+
+template <bool Last>
+PyObject* rawProduce(PyObject*, PyObject* items) {
+    try {
+        engine().produce(py::handle(items), Last);
+    } catch (py::error_already_set& e) {
+        e.restore();
+        return nullptr;
+    } catch (py::builtin_exception& e) {
+        e.set_error();
+        return nullptr;
+    } catch (std::exception& e) {
+        PyErr_SetString(PyExc_RuntimeError, e.what());
+        return nullptr;
+    }
+    Py_RETURN_NONE;
+}
+
+}  // namespace
+
+// The functions and classes L-Py's generated code and model files call: a module built into the
+// program's embedded interpreter, or made by lpy/interpreter's start() inside a Python process (the `sprout`
+// Python module, compiled with SPROUT_LPY_IN_EXTENSION: that interpreter is already running).
+#ifndef SPROUT_LPY_IN_EXTENSION
+PYBIND11_EMBEDDED_MODULE(_sprout_lpy, m) { sprout::lpy::defineSproutLpy(m); }
+#endif
+void sprout::lpy::defineSproutLpy(py::module_& m) {
+    // produce and nproduce run once a match: plain CPython functions, without pybind11's
+    // dispatch (a third of a produce-only rule's cost).
+    static PyMethodDef produceDefs[] = {{"__lpy_produce", rawProduce<true>, METH_O, nullptr},
+                                        {"__lpy_nproduce", rawProduce<false>, METH_O, nullptr}};
+    for (PyMethodDef& def : produceDefs) m.attr(def.ml_name) = py::reinterpret_steal<py::object>(PyCFunction_New(&def, nullptr));
+    m.def("nsproduce", [](py::handle items) { engine().produce(items, false); });
+    m.def("Stop", [] { engine().stopRequested = true; });
+    m.def("forward", [] { engine().forwardDirection = true; });
+    m.def("backward", [] { engine().forwardDirection = false; });
+    m.def("isForward", [] { return engine().forwardDirection; });
+    m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
+    m.def("getGroup", [] { return engine().group; });
+    m.def("getIterationNb", [] { return engine().iteration; });
+    m.def("setSelectionAlwaysRequired", [](bool on) { engine().selectionAlways = on; }, py::arg("enabled") = true);
+    m.def("isSelectionAlwaysRequired", [] { return currentEngine() && currentEngine()->selectionAlways; });
+    m.def("requestSelection", [](py::object) { engine().selectionRequested = true; }, py::arg("message") = py::none());
+    m.def("isAnimationEnabled", [] { return currentEngine() && currentEngine()->animating; });
+    m.def("isFrameDisplayed", [] { return currentEngine() && currentEngine()->frameDisplayed; });
+    // InLeftContext / InRightContext in a rule's body (lpy/translate/contexts.cpp).
+    m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
+    // `produce A(**p)`: p's values in the order of A's declared parameters.
+    m.def("__lpy_kwargs", [](int cls, py::dict values) {
+        const ModuleClasses& classes = engine().translation().classes;
+        const auto& names = classes.parameterNames[size_t(cls)];
+        py::list out;
+        for (const std::string& n : names) {
+            if (!values.contains(n)) break;  // the declared parameters given, from the first
+            out.append(values[py::str(n)]);
+        }
+        if (py::len(out) != py::len(values)) {
+            std::string declared;
+            for (const std::string& n : names) declared += (declared.empty() ? "" : ", ") + n;
+            throw py::type_error("produce " + classes.name(cls) + "(**...): its keys must be the first of its declared parameters (" +
+                                 declared + "), each once");
+        }
+        return out;
+    });
+
+    // A scene's picture and model: the maker the `sprout` module set (setScenePlant), or None.
+    m.def("_scene_plant", [] { return scenePlant() ? *scenePlant() : py::object(py::none()); });
+
+    defineTypes(m);
+    defineSession(m);
+}
+
+void sprout::lpy::setScenePlant(py::object maker) {
+    if (!scenePlant()) scenePlant() = new py::object();  // with the interpreter: never destroyed
+    *scenePlant() = std::move(maker);
+}
+

@@ -1,0 +1,119 @@
+// What the turtle takes from a running model: its settings and materials as its context
+// (openalea.lpy's _state) holds them, and L-Py's query modules (?P ?H ...) filled with the
+// turtle's state where they stand.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec3.hpp>
+
+#include "core/derive/draw.hpp"
+#include "lpy/draw/draw.hpp"
+
+namespace sprout::lpy {
+
+namespace {
+
+std::uint32_t materialColour(py::handle m) {
+    try {
+        py::object c = m.attr("diffuseColor")();
+        const double t = m.attr("transparency").cast<double>();
+        auto ch = [](double x) { return std::uint32_t(std::clamp(x, 0.0, 255.0)); };
+        return ch(c[py::int_(0)].cast<double>()) << 24 | ch(c[py::int_(1)].cast<double>()) << 16 |
+               ch(c[py::int_(2)].cast<double>()) << 8 | ch(std::round((1 - t) * 255));
+    } catch (py::error_already_set&) {
+        return 0x808080FF;
+    }
+}
+
+}  // namespace
+
+TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
+    TurtleDefaults d;
+    py::dict state = lpyModule.attr("_state");
+    if (!state["angle"].is_none()) d.angle = state["angle"].cast<double>();
+    d.materials = defaultMaterials();
+    for (auto item : py::dict(state["materials"])) {
+        const int i = item.first.cast<int>();
+        if (i < 0 || i > 255) continue;
+        if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
+        d.materials[size_t(i)] = materialColour(item.second);
+    }
+    return d;
+}
+
+// L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string
+// with its interpretation rules drawn by a turtle that keeps no picture, and each query
+// module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
+// The k-th query module of the interpreted string is the k-th of the string.
+namespace {
+void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d);
+}  // namespace
+
+void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d) {
+    // L-Py's turtle fills each query module as it passes it, and the interpretation rules after
+    // it see its value. Sprout interprets first, then walks: where a query module had no value
+    // yet and an interpretation rule reads one, the walk is made again with the values filled.
+    bool bare = false;
+    for (const LModule& m : s)
+        if (Engine::isQuery(engine.translation().classes.name(m.cls)) && (!m.args || PyTuple_GET_SIZE(m.args.ptr()) == 0)) bare = true;
+    fillQueriesOnce(engine, s, d);
+    if (bare && engine.interpretationReadsQueries) fillQueriesOnce(engine, s, d);
+}
+
+namespace {
+void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
+    const ModuleClasses& classes = engine.translation().classes;
+    // The string drawn, each module knowing its module in `s` (an interpretation rule's
+    // modules come from the module it rewrote): the turtle's k-th query frame is the k-th query
+    // module drawn, which is written back where that module is one of `s` copied as it is. A
+    // query module an interpretation rule rewrites is not passed by L-Py's turtle: it keeps its values.
+    const LString shown = engine.interpret(s);  // (Engine::interpret sets parent and rule so)
+    auto g = drawable(shown, classes, d, nullptr, true);
+    Geometry geo;
+    TurtleOptions t;
+    t.fromTree = false;
+    t.meshes = false;  // only the frames are read
+    std::vector<QueryFrame> frames;
+    t.queries = &frames;
+    interpret(g->axiom, *g, t, geo);
+    py::object vector3 = py::module_::import("openalea.plantgl.all").attr("Vector3");
+    auto lpyVector = [&](const glm::vec3& v) { return vector3(double(v.z), double(v.x), double(v.y)); };
+    size_t k = 0;
+    for (const LModule& drawn : shown) {
+        if (!Engine::isQuery(classes.name(drawn.cls))) continue;
+        if (k >= frames.size()) break;
+        const QueryFrame& f = frames[k++];
+        if (drawn.rule != -1 || drawn.parent >= s.size() || s[drawn.parent].cls != drawn.cls) continue;
+        LModule& m = s[drawn.parent];
+        const std::string& name = classes.name(m.cls);
+        const Py_ssize_t n = m.args ? PyTuple_GET_SIZE(m.args.ptr()) : 0;
+        if (name[1] == 'F') {
+            m.args = py::make_tuple(lpyVector(f.position), lpyVector(f.heading), lpyVector(f.up), lpyVector(f.left));
+            continue;
+        }
+        const glm::vec3 v = name[1] == 'P' ? f.position : name[1] == 'H' ? f.heading : name[1] == 'U' ? f.up : name[1] == 'L' ? f.left : -f.left;
+        // As L-Py's ParamModule::_setValues: three values or more, the first three are x, y, z;
+        // two, x and y; one number, x; one other value (a Vector3, a list), its first items
+        // set in place; none, a Vector3.
+        const double xyz[3] = {double(v.z), double(v.x), double(v.y)};
+        if (n >= 2) {
+            py::list args(m.args);
+            for (Py_ssize_t k = 0; k < std::min<Py_ssize_t>(n, 3); ++k) args[size_t(k)] = py::float_(xyz[k]);
+            m.args = py::tuple(args);
+        } else if (n == 1) {
+            py::object arg = py::reinterpret_borrow<py::object>(PyTuple_GET_ITEM(m.args.ptr(), 0));
+            if (PyFloat_Check(arg.ptr()) || PyLong_Check(arg.ptr())) {
+                m.args = py::make_tuple(xyz[0]);
+            } else {
+                const Py_ssize_t size = PyObject_Length(arg.ptr());
+                if (size < 0) throw py::error_already_set();
+                for (Py_ssize_t k = 0; k < std::min<Py_ssize_t>(size, 3); ++k) arg.attr("__setitem__")(k, xyz[k]);
+            }
+        } else {
+            m.args = py::make_tuple(lpyVector(v));
+        }
+    }
+}
+}  // namespace
+
+}  // namespace sprout::lpy

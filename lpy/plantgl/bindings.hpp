@@ -1,0 +1,39 @@
+#pragma once
+// The C++ under Sprout's Python PlantGL (lpy/README.md): the classes and functions its Python
+// (plantgl_*.py) calls, and what the drawing asks of a curve or a shape without calling Python.
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "lpy/plantgl/curves.hpp"
+
+namespace sprout::lpy {
+
+// The C++ evaluator of one of Sprout's NURBS curves (NurbsCurve2D, NurbsCurve, BezierCurve2D,
+// whose methods it evaluates as they would), and its stride; null for any other object (or
+// a subclass that replaces how it is evaluated). Holds the GIL; clears any Python error.
+std::shared_ptr<const curves::Nurbs> nativeNurbs(PyObject* curve, int& stride);
+
+// A PlantGL shape given to @g as plantgl_drawing.py's _sprout_triangles makes it, in C++
+// (lpy/plantgl/meshes.cpp): its points in the shape's frame, triangles and segments indexing
+// them. Nothing where the Python returns None (nothing drawable); Unknown where the Python
+// must make it (what the C++ does not know, or reads its own way). Holds the GIL.
+struct ShapeMesh {
+    enum Kind { Nothing, Mesh, Unknown } kind = Nothing;
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<long, 3>> triangles;
+    std::vector<std::array<long, 2>> segments;
+};
+ShapeMesh shapeMesh(PyObject* shape);
+
+namespace py = pybind11;
+// Added to `_sprout_lpy` (lpy/api/types.cpp): PlantGL's curves in C++ (bind_curves.cpp:
+// _PglNurbs, _PglPatch), QuantisedFunction's call in C (bind_quantised.cpp: _QuantisedBase),
+// Point3Grid and AsymmetricHull (bind_shapes.cpp).
+void definePlantGL(py::module_& m);
+void defineQuantised(py::module_& m);
+void definePointGrid(py::module_& m);
+
+}  // namespace sprout::lpy

@@ -1,0 +1,51 @@
+# openalea.plantgl.all: the part of PlantGL that L-Py model files use, as Sprout provides it.
+# Its names come from the parts, each a file of its own that lpy/interpreter/interpreter.cpp installs as a
+# private module before this one (in this order: each imports from those above it):
+#
+#   _vectors   vectors, Matrix3, cross, dot, angle...             plantgl_vectors.py
+#   _scene     colours, materials, the scene objects for @g,      plantgl_scene.py
+#              Scene, BoundingBox, the Viewer (does nothing)
+#   _curves    point arrays, NURBS / Bezier curves, polylines,    plantgl_curves.py
+#              QuantisedFunction, Discretizer, NurbsPatch
+#   _grids     Grid3Indexing, Point3Grid (space colonisation)     plantgl_grids.py
+#   _drawing   Sprout's drawing of @g's shapes                     plantgl_drawing.py
+#              (lpy/draw/draw.cpp calls _sprout_triangles)
+#
+# The aliases openalea.plantgl.math, .scenegraph, .light are this module (lpy/interpreter/interpreter.cpp).
+from openalea.plantgl._vectors import *
+from openalea.plantgl._vectors import _Vec, _math
+from openalea.plantgl._scene import *
+from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
+from openalea.plantgl._curves import *
+from openalea.plantgl._curves import _Points, _uniform_clamped_knots
+from openalea.plantgl._grids import *
+from openalea.plantgl._drawing import *
+from openalea.plantgl._drawing import _asymmetric_hull, _sprout_triangles
+
+
+# What the parts define belongs to this module, as when it was one file: a model printing
+# type(v) sees openalea.plantgl.all.Vector3, and pickle finds the classes here.
+def _adopt(obj):
+    if isinstance(obj, (staticmethod, classmethod)):
+        obj = obj.__func__
+    if isinstance(obj, property):
+        for f in (obj.fget, obj.fset, obj.fdel):
+            if f is not None:
+                _adopt(f)
+        return
+    if isinstance(obj, (type, type(_adopt))) and obj.__module__.startswith('openalea.plantgl._'):
+        obj.__module__ = __name__
+        if isinstance(obj, type):
+            for member in list(vars(obj).values()):
+                _adopt(member)
+
+
+for _v in list(globals().values()):
+    _adopt(_v)
+del _adopt, _v
+
+
+def pgl_support_extension(name):
+    """Whether PlantGL was built with an optional extension (CGAL, Qt, ...): Sprout's PlantGL
+    has none of them."""
+    return False

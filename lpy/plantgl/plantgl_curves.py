@@ -1,0 +1,509 @@
+# openalea.plantgl._curves, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
+# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines) evaluated
+# as PlantGL evaluates them, the functions made from them (QuantisedFunction, the arc-length
+# mappings), the Discretizer, and NURBS patches. Its own file: the curve arithmetic.
+import math as _math
+
+from _sprout_lpy import _PglNurbs, _PglPatch, _pgl_quantised_polyline, _QuantisedBase
+from openalea.plantgl import _vectors
+from openalea.plantgl._scene import Polyline
+from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
+
+_of2, _of3 = Vector2._of, Vector3._of
+
+
+def _point_text(p, n):
+    """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
+    return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
+
+
+class _Points(list):
+    _n = 3
+
+    def __init__(self, *args):
+        if len(args) == 1 and not isinstance(args[0], (int, float)):
+            list.__init__(self, [tuple(p) for p in args[0]])
+        else:
+            list.__init__(self, args)
+
+    def __repr__(self):  # Point3Array([Vector3(1,2,3),Vector3(4,5,6)])
+        return "%s([%s])" % (type(self).__name__, ",".join(_point_text(p, self._n) for p in self))
+
+    __str__ = __repr__
+
+
+class Point2Array(_Points):
+    _n = 2
+
+
+class Point3Array(_Points):
+    _n = 3
+
+
+class Point4Array(_Points):
+    _n = 4
+
+
+class RealArray(list):
+    """PlantGL's array of reals (a curve's knots): RealArray([0, 0, 1, 1]), or RealArray(n) of n
+    zeros."""
+
+    def __init__(self, values=()):
+        if isinstance(values, int):
+            list.__init__(self, [0.0] * values)
+        else:
+            list.__init__(self, [float(v) for v in values])
+
+    def __repr__(self):  # RealArray([0.0,1.5])
+        return "RealArray([%s])" % ",".join(repr(float(v)) for v in self)
+
+    __str__ = __repr__
+
+
+class Point4Matrix(list):
+    def __init__(self, rows=()):
+        list.__init__(self, [[tuple(p) for p in row] for row in rows])
+
+    def __repr__(self):  # Point4Matrix([[Vector4(0,0,0,1),...],[...]])
+        return "Point4Matrix([%s])" % ",".join("[%s]" % ",".join(_point_text(p, 4) for p in row) for row in self)
+
+    __str__ = __repr__
+
+
+def _default_knots(knots, n, degree):
+    """PlantGL's NurbsCurve::defaultKnotListTest: whether `knots` are the uniform clamped ones
+    (then a curve's text leaves them out)."""
+    if knots is None:
+        return True
+    size = len(knots)
+    if size != n + degree + 1:
+        return False
+    if any(not abs(knots[i] - knots[0]) < 1e-10 for i in range(1, degree + 1)):
+        return False
+    step = 1.0 / (size - 2 * degree - 1) if size - 2 * degree - 1 else float("inf")
+    if any(not abs(abs(knots[j + 1] - knots[j]) - step) < 1e-5 for j in range(degree + 1, size - degree - 1)):
+        return False
+    return all(abs(knots[k] - knots[-1]) < 1e-10 for k in range(size - degree - 1, size))
+
+
+def _uniform_clamped_knots(n, degree):
+    # n control points: degree+1 zeros, the inner knots evenly spaced, degree+1 ones.
+    inner = n - degree - 1
+    return [0.0] * (degree + 1) + [(i + 1) / (inner + 1) for i in range(inner)] + [1.0] * (degree + 1)
+
+
+class NurbsCurve2D:
+    """A 2D NURBS curve; control points are (x, y, weight)."""
+    _dim = 2
+
+    def __init__(self, ctrlPointList, degree=3, knotList=None, stride=30, width=1, **kwargs):
+        if isinstance(degree, (list, tuple)):  # the form (points, knots, degree, ...)
+            knotList, degree = degree, knotList if isinstance(knotList, int) else 3
+        pts = [tuple(p) for p in ctrlPointList]
+        d = self._dim
+        self.ctrlPointList = [[Vector3, Vector4][d - 2](*(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),))) for p in pts]
+        self.degree = max(1, min(int(degree), len(pts) - 1))
+        self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
+        self.stride = int(kwargs.get('stride', stride))
+        self.width = width
+        self.name = ''
+
+    @property
+    def firstKnot(self):
+        return self.knotList[self.degree]
+
+    @property
+    def lastKnot(self):
+        return self.knotList[len(self.ctrlPointList)]
+
+    # The arithmetic is C++'s (lpy/plantgl/curves.cpp, the same numbers as PlantGL's): an
+    # evaluator built from the curve's lists, kept on the curve while they hold the same
+    # objects and no vector has changed in place (the count of _vectors._changes).
+    def _native(self):
+        pts, knots = self.ctrlPointList, self.knotList
+        key = (_vectors._changes[0], self.degree, tuple(pts), tuple(knots))
+        cache = self.__dict__.get('_sprout_native_cache')
+        if cache is not None and cache[0] == key:
+            return cache[1]
+        native = _PglNurbs(self._dim, self.degree, knots, pts)
+        if all(isinstance(q, (_Vec, tuple)) for q in pts):  # a point that is a list may change unseen
+            self.__dict__['_sprout_native_cache'] = (key, native)
+        return native
+
+    _NATIVE = ('getPointAt', '_derivative', 'getTangentAt', 'getLength', 'getArcLengthToUMapping', 'firstKnot', 'lastKnot')
+
+    def _sprout_native(self):
+        """The C++ evaluator, for Sprout's drawing (a guide along the curve); None where a
+        subclass evaluates the curve its own way."""
+        cls = type(self)
+        if any(getattr(cls, m) is not getattr(NurbsCurve2D, m) for m in self._NATIVE):
+            return None
+        return self._native()
+
+    def __getstate__(self):  # pickled and copied without its evaluator
+        state = dict(self.__dict__)
+        state.pop('_sprout_native_cache', None)
+        return state
+
+    def getPointAt(self, u):
+        """de Boor on the homogeneous points, u clamped to the knots."""
+        return (_of2, _of3)[self._dim - 2](self._native().point(u))
+
+    def _derivative(self, u, d=1):
+        """The curve's d-th derivative at u (d up to 2; PlantGL's deriveAt, the NURBS Book's
+        A4.2): the weighted control points' B-spline and its derivatives, then the rational
+        curve's."""
+        return (_of2, _of3)[self._dim - 2](self._native().derivative(u, d))
+
+    def getTangentAt(self, u):
+        """The first derivative, not normalised (PlantGL's getTangentAt)."""
+        return self._derivative(u, 1)
+
+    def getNormalAt(self, u):
+        """PlantGL's normal: (T x C'') x T / |T|^4, T the first derivative."""
+        return (_of2, _of3)[self._dim - 2](self._native().normal(u))
+
+    def getLength(self, begin=None, end=None):
+        """The length of the polyline through `stride` evenly spaced parameters (PlantGL's
+        LineicModel::getLength, its corrections at both ends included)."""
+        return self._native().length(self.firstKnot if begin is None else begin, self.lastKnot if end is None else end,
+                                     self.stride)
+
+    def getArcLengthToUMapping(self):
+        """A function from the fraction of the curve's length to the parameter u (PlantGL's:
+        the polyline through `stride` steps of u, sampled 5 * stride times)."""
+        return QuantisedFunction._of(self._native().arc_to_u(self.stride))
+
+    def getUToArcLengthMapping(self):
+        """A function from u to the fraction of the curve's length (PlantGL's)."""
+        return QuantisedFunction._of(self._native().u_to_arc(self.stride))
+
+    def deepcopy(self):
+        import copy
+        return copy.deepcopy(self)
+
+    def points(self, samples=None):
+        """`samples` (the stride) points at evenly spaced parameters."""
+        of = (_of2, _of3)[self._dim - 2]
+        return [of(p) for p in self._native().points(samples or max(2, self.stride))]
+
+
+    def apply(self, action):
+        """PlantGL's actions on a curve: a Discretizer gets its polyline (the curve's stride)."""
+        return action.process(self)
+
+    def __repr__(self):
+        """As PlantGL writes a curve (its nc2_repr): the control points, then what is not the
+        default (degree 3, the uniform knots, stride 30, width 1)."""
+        n = self._dim + 1
+        text = "%s(%s([%s])" % (type(self).__name__, "Point%dArray" % n, ",".join(_point_text(p, n) for p in self.ctrlPointList))
+        if self.degree != 3:
+            text += ", degree = %d" % self.degree
+        if not _default_knots(self.knotList, len(self.ctrlPointList), self.degree):
+            text += ", knotList = " + repr(RealArray(self.knotList))
+        return text + self._stride_width_text() + ")"
+
+    def _stride_width_text(self):
+        """The end of a curve's text: its stride and width where not PlantGL's defaults (30, 1)."""
+        return (", stride = %d" % self.stride if self.stride != 30 else "") + (", width = %d" % int(self.width) if self.width != 1 else "")
+
+    __str__ = __repr__
+
+
+class NurbsCurve(NurbsCurve2D):
+    """A 3D NURBS curve; control points are (x, y, z, weight)."""
+    _dim = 3
+
+
+class BezierCurve2D(NurbsCurve2D):
+    def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
+        n = len(list(ctrlPointList))
+        NurbsCurve2D.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
+
+    def __repr__(self):  # its control points, its stride and width where not the default
+        points = ",".join(_point_text(p, 3) for p in self.ctrlPointList)
+        return "BezierCurve2D(Point3Array([%s])%s)" % (points, self._stride_width_text())
+
+    __str__ = __repr__
+
+
+class Polyline2D:
+    def __init__(self, pointList, width=1, **kwargs):
+        self.pointList = [Vector2(p[0], p[1]) for p in pointList]
+        self.width = width
+        self.name = ''
+        # PlantGL's knots: point i at u = i
+        self.firstKnot, self.lastKnot, self.stride = 0.0, float(len(self.pointList) - 1), max(1, len(self.pointList) - 1)
+
+    @staticmethod
+    def Circle(radius=0.5, slices=8):
+        return Polyline2D([(radius * _math.cos(2 * _math.pi * i / slices), radius * _math.sin(2 * _math.pi * i / slices))
+                           for i in range(slices + 1)])
+
+    def getPointAt(self, u):
+        """As PlantGL's Polyline::getPointAt: point i at u = i, linear between."""
+        pts = self.pointList
+        if len(pts) == 1:
+            return pts[0]
+        last = len(pts) - 1
+        u = max(0.0, min(float(last), u))
+        if abs(u) < 1e-5:
+            u = 0.0
+        elif abs(u - last) < 1e-5:
+            u = float(last)
+        i = int(u)
+        if i == u:
+            return Vector2(pts[i][0], pts[i][1])
+        a, b = pts[i], pts[i + 1]
+        return Vector2(a[0] * ((i + 1) - u) + b[0] * (u - i), a[1] * ((i + 1) - u) + b[1] * (u - i))
+
+    def points(self, samples=None):
+        return list(self.pointList)
+
+    def __repr__(self):  # Polyline2D(Point2Array([Vector2(0,0),Vector2(1,1)]))
+        return "Polyline2D(Point2Array([%s]))" % ",".join(_point_text(p, 2) for p in self.pointList)
+
+    __str__ = __repr__
+
+    def apply(self, action):
+        return action.process(self)
+
+
+class Discretizer:
+    """PlantGL's Discretizer: `curve.apply(d)` leaves the curve's points in `d.result` (a
+    Polyline2D for a 2D curve, a Polyline for a 3D one), sampled at the curve's stride."""
+
+    def __init__(self):
+        self.result = None
+
+    def process(self, obj):
+        pts = obj.points()
+        if pts and len(tuple(pts[0])) >= 3:
+            self.result = Polyline([Vector3(*tuple(p)[:3]) for p in pts])
+        else:
+            self.result = Polyline2D(pts)
+        return True
+
+    def clear(self):
+        self.result = None
+
+
+class QuantisedFunction(_QuantisedBase):
+    """y = f(x) from a 2D curve, as PlantGL's QuantisedFunction makes it: `sampling` values at
+    evenly spaced x over the curve's x range, each the y of the curve's point found by bisecting
+    its parameter until x is within 1e-5 (PlantGL's _computeValue), read back by linear
+    interpolation between the two samples around x. Called in C (_QuantisedBase, which keeps
+    _first, _last and _values): _call_python below where C would not read x as Python does."""
+
+    def __init__(self, curve, sampling=100, clamped=True):
+        if isinstance(curve, (list, tuple)):
+            curve = Polyline2D(curve)
+        n = max(3, int(sampling))
+        # Sprout's curves are sampled in C++ (lpy/plantgl/curves.cpp), the same numbers; any
+        # other object with a point at each parameter, here.
+        native = curve._sprout_native() if isinstance(curve, NurbsCurve2D) else None
+        if native is not None:
+            self._first, self._last, self._values = native.quantised(n)
+        elif type(curve) is Polyline2D and curve.firstKnot == 0 and curve.lastKnot == len(curve.pointList) - 1:
+            self._first, self._last, self._values = _pgl_quantised_polyline(curve.pointList, n)
+        else:
+            a, b = curve.firstKnot, curve.lastKnot
+            first, last = curve.getPointAt(a), curve.getPointAt(b)
+            self._first, self._last = first[0], last[0]
+            extent = self._last - self._first
+            self._values = [self._value(curve, extent * i / (n - 1) + self._first, a, b, first, last) for i in range(n)]
+        self.clamped = clamped
+
+    @classmethod
+    def _of(cls, state, clamped=True):
+        """The function of `state` (first x, last x, values), as the C++ curves give it."""
+        f = cls.__new__(cls)
+        f._first, f._last, f._values = state
+        f.clamped = clamped
+        return f
+
+    @staticmethod
+    def _value(curve, x, low, high, first, last):
+        if x == first[0]:
+            return first[1]
+        if x == last[0]:
+            return last[1]
+        for _ in range(200):  # PlantGL loops until it is within 1e-5 (a curve not monotonous in x never ends there)
+            check = (low + high) / 2.0
+            p = curve.getPointAt(check)
+            if p[0] > x:
+                high = check
+            else:
+                low = check
+            if not abs(p[0] - x) > 1e-5:
+                break
+        return p[1]
+
+    @property
+    def firstx(self):
+        return self._first
+
+    @property
+    def lastx(self):
+        return self._last
+
+    @property
+    def sampling(self):
+        return len(self._values)
+
+    def __reduce__(self):  # its samples live in the C base, not in __dict__
+        return (type(self)._of, ((self._first, self._last, self._values), self.clamped), dict(self.__dict__))
+
+    def getValue(self, x):
+        return self(x)
+
+    def _call_python(self, x):
+        values, n = self._values, len(self._values)
+        first, last = self._first, self._last
+        x = min(max(x, first), last)  # (PlantGL clamps when not `clamped`, and errs when it is)
+        index = (n - 1) * (x - first) / (last - first) if last != first else 0.0
+        floor = int(_math.floor(index))
+        diff = index - floor
+        if floor >= n - 1 or abs(diff) < 1e-5:
+            return values[min(floor, n - 1)]
+        return (1 - diff) * values[floor] + diff * values[floor + 1]
+
+
+class NurbsPatch:
+    """A NURBS surface; control points (x, y, z, w) in rows along u."""
+
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
+        if isinstance(udegree, (list, tuple)):  # the form (ctrl, uknots, vknots, udegree, vdegree)
+            self.uknotList, self.vknotList = list(udegree), list(vdegree)
+            udegree, vdegree = (list(args) + [3, 3])[:2]
+        else:
+            self.uknotList = kwargs.get('uknotList')
+            self.vknotList = kwargs.get('vknotList')
+        self.ctrlPointMatrix = [[tuple(p) for p in row] for row in ctrlPointMatrix]
+        self.udegree, self.vdegree = int(udegree), int(vdegree)
+        self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
+        self.name = ''
+
+    def __repr__(self):
+        """As PlantGL writes a patch (its np_repr): what is not the default after the points."""
+        rows, cols = len(self.ctrlPointMatrix), len(self.ctrlPointMatrix[0]) if self.ctrlPointMatrix else 0
+        text = "NurbsPatch(" + repr(Point4Matrix(self.ctrlPointMatrix))
+        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
+            if degree != 3:
+                text += ", %sdegree = %d" % (name, degree)
+        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
+            if not _default_knots(knots, n, degree):
+                text += ", %sknotList = %r" % (name, RealArray(knots))
+        for name, stride in (("u", self.ustride), ("v", self.vstride)):
+            if stride != 30:
+                text += ", %sstride = %d" % (name, stride)
+        return text + ")"
+
+    __str__ = __repr__
+
+    # As each row were a NurbsCurve along v, its points at v the control points of one along u
+    # (weight 1), evaluated in C++ (lpy/plantgl/curves.cpp) by an evaluator kept on the patch
+    # while its rows hold the same points and no vector has changed in place.
+    def _native(self):
+        rows, uk, vk = self.ctrlPointMatrix, self.uknotList, self.vknotList
+        key = (_vectors._changes[0], self.udegree, self.vdegree, tuple(map(tuple, rows)),
+               None if uk is None else tuple(uk), None if vk is None else tuple(vk))
+        cache = self.__dict__.get('_sprout_native_cache')
+        if cache is not None and cache[0] == key:
+            return cache[1]
+        native = _PglPatch(rows, int(self.udegree), int(self.vdegree), uk or None, vk or None)
+        if all(isinstance(q, (_Vec, tuple)) for row in rows for q in row):
+            self.__dict__['_sprout_native_cache'] = (key, native)
+        return native
+
+    def __getstate__(self):  # pickled and copied without its evaluator
+        state = dict(self.__dict__)
+        state.pop('_sprout_native_cache', None)
+        return state
+
+    def getPointAt(self, u, v):
+        return _of3(self._native().point(u, v))
+
+    def _grid(self, n):
+        """The points at (i / n, j / n), i outer, as tuples: the drawing's (plantgl_drawing.py)."""
+        return self._native().grid(n)
+
+    def getUTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(min(1.0, u + h), v) - self.getPointAt(max(0.0, u - h), v)).normed()
+
+    def getVTangentAt(self, u, v):
+        h = 1e-4
+        return (self.getPointAt(u, min(1.0, v + h)) - self.getPointAt(u, max(0.0, v - h))).normed()
+
+    def getNormalAt(self, u, v):
+        return cross(self.getUTangentAt(u, v), self.getVTangentAt(u, v)).normed()
+
+    def getIsoUSectionAt(self, u):
+        return NurbsCurve([tuple(self.getPointAt(u, i / 20.0)) + (1.0,) for i in range(21)], 1)
+
+    def getIsoVSectionAt(self, v):
+        return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
+
+
+def _de_boor(points, degree, knots, t):
+    """A point of the B-spline of homogeneous `points` (tuples) at t (de Boor)."""
+    n = len(points) - 1
+    t = max(knots[degree], min(knots[n + 1], t))
+    span = degree
+    while span < n and t >= knots[span + 1]:
+        span += 1
+    d = [list(points[j]) for j in range(span - degree, span + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + span - degree
+            den = knots[i + degree - r + 1] - knots[i]
+            a = (t - knots[i]) / den if den else 0.0
+            d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(len(d[j]))]
+    return d[degree]
+
+
+class NurbsPatch3D:
+    """A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
+    grid [u][v][w]; getPointAt(u, v, w) maps the parameter cube into space."""
+
+    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, wdegree=3, uknotList=None, vknotList=None, wknotList=None,
+                 ustride=30, vstride=30, wstride=30):
+        pts = [[[tuple(p) for p in row] for row in plane] for plane in ctrlPointMatrix]
+        dims = (len(pts), len(pts[0]), len(pts[0][0]))
+        self.udegree, self.vdegree, self.wdegree = int(udegree), int(vdegree), int(wdegree)
+        for degree, dim in zip((self.udegree, self.vdegree, self.wdegree), dims):
+            if not 1 <= degree < dim:
+                raise ValueError("NurbsPatch3D: each degree from 1 to its count of control points - 1")
+        self.ctrlPointMatrix = pts
+        self.uknotList = list(uknotList) if uknotList is not None else _uniform_clamped_knots(dims[0], self.udegree)
+        self.vknotList = list(vknotList) if vknotList is not None else _uniform_clamped_knots(dims[1], self.vdegree)
+        self.wknotList = list(wknotList) if wknotList is not None else _uniform_clamped_knots(dims[2], self.wdegree)
+        self.ustride, self.vstride, self.wstride = ustride, vstride, wstride
+        self.name = ''
+
+    @staticmethod
+    def default():
+        """The unit cube, degree 1 in each direction."""
+        return NurbsPatch3D([[[(i, j, k, 1) for k in (0, 1)] for j in (0, 1)] for i in (0, 1)], 1, 1, 1)
+
+    firstUKnot = property(lambda self: self.uknotList[0])
+    lastUKnot = property(lambda self: self.uknotList[-1])
+    firstVKnot = property(lambda self: self.vknotList[0])
+    lastVKnot = property(lambda self: self.vknotList[-1])
+    firstWKnot = property(lambda self: self.wknotList[0])
+    lastWKnot = property(lambda self: self.wknotList[-1])
+
+    def isValid(self):
+        return True
+
+    def getPointAt(self, u, v, w):
+        def homogeneous(p):
+            return (p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3])
+        planes = []
+        for plane in self.ctrlPointMatrix:
+            row = [_de_boor([homogeneous(p) for p in line], self.wdegree, self.wknotList, w) for line in plane]
+            planes.append(_de_boor(row, self.vdegree, self.vknotList, v))
+        x, y, z, h = _de_boor(planes, self.udegree, self.uknotList, u)
+        h = h or 1.0
+        return Vector3(x / h, y / h, z / h)

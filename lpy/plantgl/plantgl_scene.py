@@ -1,0 +1,190 @@
+# openalea.plantgl._scene, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
+# parts: plantgl.py): colours and materials, the scene objects a model builds for @g (kept with
+# PlantGL's field names; Sprout draws them in plantgl_drawing.py), Scene, BoundingBox, and a
+# Viewer and a light model whose calls do nothing. Its own file: what a model stores, apart
+# from the curves and grids it computes with.
+from openalea.plantgl._vectors import Vector3
+
+try:
+    from openalea.lpy import _warn
+except ImportError:  # imported on its own
+    def _warn(message):
+        pass
+
+
+class Color3(tuple):
+    def __new__(cls, r=0, g=0, b=0):
+        if isinstance(r, (tuple, list)):
+            r, g, b = r[:3]
+        return tuple.__new__(cls, (int(r), int(g), int(b)))
+
+    red = property(lambda s: s[0])
+    green = property(lambda s: s[1])
+    blue = property(lambda s: s[2])
+
+
+class Color4(tuple):
+    def __new__(cls, r=0, g=0, b=0, a=0):
+        if isinstance(r, (tuple, list)):
+            r, g, b, a = (list(r) + [0])[:4]
+        return tuple.__new__(cls, (int(r), int(g), int(b), int(a)))
+
+
+class Material:
+    """PlantGL's Material: the colour a surface shows is ambient x diffuse."""
+
+    def __init__(self, *args, **kwargs):
+        names = ['ambient', 'diffuse', 'specular', 'emission', 'shininess', 'transparency']
+        args = list(args)
+        self.name = args.pop(0) if args and isinstance(args[0], str) else kwargs.pop('name', '')
+        values = dict(ambient=Color3(80, 80, 80), diffuse=2.0, specular=Color3(0, 0, 0), emission=Color3(0, 0, 0),
+                      shininess=0.2, transparency=0.0)
+        for n, v in zip(names, args):
+            values[n] = v
+        values.update(kwargs)
+        self.ambient = Color3(values['ambient'])
+        self.diffuse = float(values['diffuse'])
+        self.specular = Color3(values['specular'])
+        self.emission = Color3(values['emission'])
+        self.shininess = float(values['shininess'])
+        self.transparency = float(values['transparency'])
+
+    def diffuseColor(self):
+        return Color3(*[min(255, int(c * self.diffuse)) for c in self.ambient])
+
+
+class _Geometry:
+    """PlantGL scene objects a model may build for @g: kept (with PlantGL's field names), not
+    drawn by Sprout (a warning names the module that carries them)."""
+    _fields = ()
+
+    def __init__(self, *args, **kwargs):
+        self.args, self.kwargs = args, kwargs
+        self.name = ''
+        for field, value in zip(self._fields, args):
+            setattr(self, field, value)
+        for field, value in kwargs.items():
+            setattr(self, field, value)
+
+
+_geometry_fields = {
+    'Sphere': ('radius', 'slices', 'stacks'), 'Box': ('size',), 'Cylinder': ('radius', 'height', 'solid', 'slices'),
+    'Cone': ('radius', 'height', 'solid', 'slices'), 'Frustum': ('radius', 'height', 'taper', 'solid', 'slices'),
+    'Disc': ('radius', 'slices'), 'Paraboloid': ('radius', 'height', 'shape', 'solid', 'slices', 'stacks'),
+    'Scaled': ('scale', 'geometry'), 'Translated': ('translation', 'geometry'),
+    'AxisRotated': ('axis', 'angle', 'geometry'), 'EulerRotated': ('azimuth', 'elevation', 'roll', 'geometry'),
+    'Oriented': ('primary', 'secondary', 'geometry'), 'Shape': ('geometry', 'appearance', 'id'),
+    'QuadSet': ('pointList', 'indexList'), 'TriangleSet': ('pointList', 'indexList'), 'Polyline': ('pointList',),
+    'BezierPatch': ('ctrlPointMatrix',), 'Extrusion': ('axis', 'crossSection', 'scale'), 'Revolution': ('profile',),
+    'Swung': ('profileList', 'angleList'), 'Group': ('geometryList',), 'Text': ('string', 'position'), 'Font': (),
+    'ImageTexture': ('name', 'filename'), 'Texture2D': ('image', 'transformation'), 'Texture2DTransformation': (),
+    'PointSet': ('pointList', 'colorList'),
+    'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
+                       'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
+}
+class Mesh(_Geometry):
+    """PlantGL's meshes (TriangleSet, QuadSet, FaceSet)."""
+
+
+class Transformed(_Geometry):
+    """PlantGL's transformed geometries (Translated, Oriented, Scaled, ...): `geometry` inside."""
+
+
+_transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
+for _name, _f in _geometry_fields.items():
+    _base = Transformed if _name in _transforms else Mesh if _name in ('TriangleSet', 'QuadSet') else _Geometry
+    globals()[_name] = type(_name, (_base,), {'_fields': _f})
+del _name, _f, _base
+
+
+class Scene(list):
+    """PlantGL's Scene: a list of shapes (`sc += Shape(...)`), kept, not drawn by Sprout."""
+
+    def __init__(self, shapes=()):
+        list.__init__(self, shapes if isinstance(shapes, (list, tuple)) else [])
+
+    def __iadd__(self, o):
+        if isinstance(o, (list, tuple)):
+            self.extend(o)
+        else:
+            self.append(o)
+        return self
+
+    def add(self, shape):
+        self.append(shape)
+
+    # A scene an Lsystem made (sceneInterpretation): a picture and a model by Sprout's renderer
+    # and exporters, when the `sprout` module is there (a script or a notebook): it hands its
+    # maker of plants down (_sprout_lpy._scene_plant), as this module is below it.
+    def _plant(self):
+        made = getattr(self, '_sprout_source', None)
+        if made is None:
+            raise ValueError("only a scene made by Lsystem.sceneInterpretation is drawn by Sprout")
+        from _sprout_lpy import _scene_plant
+        maker = _scene_plant()
+        if maker is None:
+            raise ValueError("a scene is drawn by Sprout's Python module: import sprout")
+        return maker(*made)
+
+    def render(self, **kwargs):
+        """The scene's picture: numpy (height, width, 4), as sprout.Plant.render."""
+        return self._plant().render(**kwargs)
+
+    def export(self, path, **kwargs):
+        """Writes the scene as a model (.obj, .ply, .glb, .gltf, .stl, .svg), as sprout.Plant.export."""
+        return self._plant().export(path, **kwargs)
+
+    def _repr_png_(self):
+        if getattr(self, '_sprout_source', None) is None:
+            return None
+        return self._plant().png()
+
+    def todict(self):
+        """The shapes by id."""
+        out = {}
+        for shape in self:
+            out.setdefault(getattr(shape, 'id', None), []).append(shape)
+        return out
+
+
+class BoundingBox:
+    def __init__(self, lower=(0, 0, 0), upper=(0, 0, 0)):
+        self.lowerLeftCorner, self.upperRightCorner = Vector3(*tuple(lower)[:3]), Vector3(*tuple(upper)[:3])
+
+    def getXMin(self):
+        return self.lowerLeftCorner.x
+
+    def getCenter(self):
+        return (self.lowerLeftCorner + self.upperRightCorner) / 2
+
+    def getSize(self):
+        return (self.upperRightCorner - self.lowerLeftCorner) / 2
+
+    def contains(self, p):
+        p = tuple(p)
+        return all(self.lowerLeftCorner[k] <= p[k] <= self.upperRightCorner[k] for k in range(3))
+
+
+eStatic, eAnimatedPrimitives, eAnimatedScene = 0, 1, 2
+
+
+class _Viewer:
+    class _Any:
+        def __getattr__(self, name):
+            return _Viewer._Any()
+
+        def __call__(self, *args, **kwargs):
+            _warn("Viewer: Sprout has no PlantGL viewer; the call does nothing")
+            return None
+
+    def __getattr__(self, name):
+        return _Viewer._Any()
+
+
+Viewer = _Viewer()
+
+
+def diffuseInterception(scene, *args, **kwargs):
+    """PlantGL's light model is not in Sprout: no shape receives light (a warning)."""
+    _warn("diffuseInterception (openalea.plantgl.light) is not provided by Sprout: every shape gets no light")
+    return {}
