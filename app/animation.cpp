@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "app/headless.hpp"
+#include "app/plant/growth.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/turtle.hpp"
 
@@ -152,8 +153,8 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     dopts.seed = o.seed;
     dopts.limits = o.limits;
     dopts.trackAges = ao.kind == AnimationKind::Growth;
-    Derivation derivation(grammar, dopts);
-    DeriveOutcome outcome = derivation.deriveTo(kept ? 0 : n);
+    Growth growth(grammar, dopts);
+    DeriveOutcome outcome = growth.derive(kept ? 0 : n);
     if (!outcome.ok()) {
         error = outcome.message;
         return false;
@@ -171,17 +172,17 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     auto interpretStep = [&](int step, float fraction) {
         if (kept) {  // a kept step is drawn as it is
             const Grammar& g = *ao.steps[size_t(step)];
-            TurtleOptions t{0, derivation.seed(), nullptr};
-            interpret(g.axiom, g, t, geometry);
+            TurtleOptions t{0, growth.seed(), nullptr};
+            drawAsIs(g.axiom, g, t, geometry);
             return;
         }
-        auto ages = derivation.ages(step);
-        TurtleOptions t{step, derivation.seed(), ages ? ages->data() : nullptr};
+        auto ages = growth.ages(step);
+        TurtleOptions t{step, growth.seed(), ages ? ages->data() : nullptr};
         if (ages && fraction < 1.0f) {
             t.growStep = step;
             t.growFraction = fraction;
         }
-        interpret(*derivation.step(step), *grammar, t, geometry);
+        growth.draw(step, t, geometry);
     };
     interpretStep(n, 1.0f);
     const render::Camera framed = snapshotCamera(geometry, o);
@@ -191,7 +192,7 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     if (o.showEnvironment && !o.environment) withEnvironment.environment = std::shared_ptr<const Environment>(grammar, &grammar->environment);
     if (ao.kind == AnimationKind::Turntable) {
         renderer.upload(geometry);
-        if (!overlayEnvironment(renderer, withEnvironment, geometry, derivation.seed(), error)) return false;
+        if (!overlayEnvironment(renderer, withEnvironment, geometry, growth.seed(), error)) return false;
     }
 
     FrameSink sink;
@@ -212,7 +213,7 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
             geometry.planarCurve = planar;  // an axiom that draws nothing is no 2D curve
             renderer.upload(geometry);
             // The environment as the plant at this frame sees it (points used up, its shade).
-            if (!overlayEnvironment(renderer, withEnvironment, geometry, derivation.seed(), error)) return false;
+            if (!overlayEnvironment(renderer, withEnvironment, geometry, growth.seed(), error)) return false;
         } else {
             camera.yaw = framed.yaw + 360.0f * float(k) / float(frames);
         }

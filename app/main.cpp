@@ -7,7 +7,8 @@
 #include <new>
 
 #include "app/cli/commands.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
+#include "app/viewer/window/viewer.hpp"
 
 namespace sprout::cli {
 
@@ -79,5 +80,5 @@ static int run(int argc, char** argv) {
         char* renderArgv[] = {const_cast<char*>("render"), source.data(), o.data(), out.data()};
         return cli::runRender(4, renderArgv);
     }
-    return cli::runViewer(argc, argv);
+    return viewer::runViewer(argc, argv);
 }

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "app/headless.hpp"
+#include "app/plant/growth.hpp"
 
 namespace sprout {
 namespace {
@@ -87,9 +88,8 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     DeriveOptions dopts;
     dopts.seed = o.seed;
     dopts.limits = o.limits;
-    Derivation derivation(grammar, dopts);
-    DeriveOutcome outcome = derivation.deriveTo(n);
-    if (outcome.ok()) outcome = checkDrawing(*derivation.step(n), *grammar, o.limits, n);
+    Growth growth(grammar, dopts);
+    DeriveOutcome outcome = growth.grow(n, o.limits);
     if (!outcome.ok()) {
         error = outcome.message;
         return false;
@@ -97,14 +97,14 @@ bool renderSnapshot(std::shared_ptr<const Grammar> grammar, const SnapshotOption
     out.deriveMs = millisSince(t0);
 
     t0 = std::chrono::steady_clock::now();
-    interpret(*derivation.step(n), *grammar, {n, derivation.seed(), nullptr}, out.geometry);
+    growth.draw(n, {n, growth.seed(), nullptr}, out.geometry);
     out.interpretMs = millisSince(t0);
     if (o.showEnvironment && !o.environment) {
         SnapshotOptions own = o;
         own.environment = std::shared_ptr<const Environment>(grammar, &grammar->environment);
-        return renderGeometry(own, out, error, derivation.seed());
+        return renderGeometry(own, out, error, growth.seed());
     }
-    return renderGeometry(o, out, error, derivation.seed());
+    return renderGeometry(o, out, error, growth.seed());
 }
 
 bool overlayEnvironment(render::Renderer& renderer, const SnapshotOptions& o, const Geometry& grown, std::uint64_t seed,

@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <string>
 
-#include "app/viewer/editor/editor.hpp"
+#include "app/viewer/window/editor.hpp"
 
 int main() {
     using namespace sprout::viewer::editor;

@@ -12,7 +12,7 @@
 
 #include "app/export/export.hpp"
 #include "app/export/scene.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/turtle.hpp"
 
@@ -53,10 +53,10 @@ int main(int argc, char** argv) {
     // Baseline: every triangle in memory first, then one write.
     double t0 = now();
     exporter::ExportScene scene(g, 0);
-    render::BakedMesh all;
+    mesh::BakedMesh all;
     for (const auto& p : scene.primitives) {
         std::uint32_t base = std::uint32_t(all.vertices.size());
-        scene.forEachChunk(p, [&](const render::BakedMesh& c) {
+        scene.forEachChunk(p, [&](const mesh::BakedMesh& c) {
             std::uint32_t b = std::uint32_t(all.vertices.size());
             all.vertices.insert(all.vertices.end(), c.vertices.begin(), c.vertices.end());
             for (auto i : c.indices) all.indices.push_back(b - base + i);

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <cstdio>
 
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "core/scene/forest.hpp"
 #include "core/turtle/turtle.hpp"
 

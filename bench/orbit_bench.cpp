@@ -18,7 +18,7 @@
 
 
 #include "app/headless.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "app/render/camera.hpp"
 #include "app/render/renderer.hpp"
 #include "core/derive/derive.hpp"
@@ -32,7 +32,7 @@ namespace {
 
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
-// The window's piece of a still view (app/viewer/window_view.cpp kRefineMs).
+// The window's piece of a still view (app/viewer/window/window_view.cpp kRefineMs).
 constexpr double kPieceMs = 8.0;
 
 struct Result {

@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/pick.hpp"
 #include "core/turtle/turtle.hpp"

@@ -10,7 +10,7 @@
 #include <map>
 
 #include "app/cli/load.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
 
 namespace {

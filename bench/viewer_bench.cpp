@@ -15,7 +15,7 @@
 
 #include "app/headless.hpp"
 #include "app/render/renderer.hpp"
-#include "app/viewer/viewer_state.hpp"
+#include "app/viewer/state/viewer_state.hpp"
 
 using namespace sprout;
 using Clock = std::chrono::steady_clock;

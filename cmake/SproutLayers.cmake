@@ -8,17 +8,22 @@
 #              translate and plantgl (side by side), engine, draw, interpreter, api, run
 #              (which defines lpy.hpp). lpy.hpp, its public face, includes core/ and
 #              engine/run_options.hpp. Its Python imports nothing of `sprout` (above it).
-#   app/     core/, lpy/'s public face and app/: the program; nothing of python/
+#   app/     core/, lpy/'s public face and app/: the program; nothing of python/. Its
+#            libraries (mesh/ and export/ with no GL, render/, plant/: the one way from a
+#            source to a plant, and app/'s own files) below its front ends, cli/ and viewer/,
+#            which include nothing of each other; viewer/state/ (no window) below
+#            viewer/window/.
 #   python/  core/, lpy/'s public face and app/'s libraries, not the program's own parts
 #            (app/cli/, app/viewer/)
 #
 # Also run as a script (cmake -DSPROUT_ROOT=DIR -P cmake/SproutLayers.cmake): the test
 # tests/layers/ runs it over the tree, and over trees with a wrong include, which must fail.
 
-# Usage: sprout_check_layer(FOLDER [FILES glob...] ALLOWED prefix... [FORBIDDEN prefix...])
-# FILES: globs under FOLDER (default: every C/C++ source under it, recursively).
+# Usage: sprout_check_layer(FOLDER [FILES glob...] [EXCEPT name...] ALLOWED prefix... [FORBIDDEN prefix...])
+# FILES: globs under FOLDER (default: every C/C++ source under it, recursively); EXCEPT: files
+# of FOLDER left to a check of their own.
 function(sprout_check_layer folder)
-  cmake_parse_arguments(L "" "" "FILES;ALLOWED;FORBIDDEN" ${ARGN})
+  cmake_parse_arguments(L "" "" "FILES;EXCEPT;ALLOWED;FORBIDDEN" ${ARGN})
   set(root ${SPROUT_ROOT})
   if(NOT L_FILES)
     set(L_FILES **.cpp **.hpp **.c **.h)
@@ -41,6 +46,9 @@ function(sprout_check_layer folder)
     file(GLOB found ${SPROUT_GLOB_DEPENDS} ${globs})
     list(APPEND files ${found})
   endif()
+  foreach(name ${L_EXCEPT})
+    list(REMOVE_ITEM files ${root}/${folder}/${name})
+  endforeach()
   string(REPLACE ";" ", " allowedText "${L_ALLOWED}")
   if(L_FORBIDDEN)
     string(REPLACE ";" ", " forbiddenText "${L_FORBIDDEN}")
@@ -107,7 +115,18 @@ function(sprout_check_layers)
   endforeach()
   sprout_check_layer(lpy FILES *.hpp *.cpp ALLOWED core/ lpy/engine/run_options.hpp)
   sprout_check_python_imports(lpy)
-  sprout_check_layer(app ALLOWED core/ lpy/lpy.hpp app/)
+  # app/: its libraries below its two front ends, which include nothing of each other.
+  set(app_top "app/[a-z_]+[.]hpp")  # app/'s own files: headless pictures, snapshots, arguments...
+  sprout_check_layer(app/mesh ALLOWED core/ app/mesh/)
+  sprout_check_layer(app/render ALLOWED core/ app/mesh/ app/render/)
+  sprout_check_layer(app/export ALLOWED core/ app/mesh/ app/export/)
+  sprout_check_layer(app/plant ALLOWED core/ lpy/lpy.hpp app/plant/)
+  set(app_libraries core/ lpy/lpy.hpp app/mesh/ app/render/ app/export/ app/plant/ ${app_top})
+  sprout_check_layer(app FILES *.hpp *.cpp EXCEPT main.cpp ALLOWED ${app_libraries})
+  sprout_check_layer(app/cli ALLOWED ${app_libraries} app/cli/)
+  sprout_check_layer(app/viewer/state ALLOWED core/ lpy/lpy.hpp app/plant/ app/viewer/state/)
+  sprout_check_layer(app/viewer/window ALLOWED ${app_libraries} app/viewer/)
+  sprout_check_layer(app FILES main.cpp ALLOWED ${app_libraries} app/cli/commands.hpp app/viewer/window/viewer.hpp)
   sprout_check_layer(python ALLOWED core/ lpy/lpy.hpp app/ FORBIDDEN app/cli/ app/viewer/)
 endfunction()
 

@@ -11,9 +11,10 @@
 
 #include "app/export/export.hpp"
 #include "app/image.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
-#include "app/source.hpp"
+#include "app/plant/growth.hpp"
+#include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
 #include "core/derive/draw.hpp"
 #include "core/language/file_kind.hpp"
@@ -167,18 +168,18 @@ public:
             auto g = lpyDrawn(k);  // a scene's plant (_plant_of_lpy): what is drawn is all it has
             return LString(std::make_shared<const ModuleString>(g->axiom), g);
         }
-        if (!m_derivation || m_seed != seed) {
+        if (!m_growth || m_seed != seed) {
             DeriveOptions o;
             o.seed = seed;
-            m_derivation = std::make_unique<Derivation>(grammar, o);
+            m_growth = std::make_unique<Growth>(grammar, o);
             m_seed = seed;
         }
         DeriveOutcome outcome;
         std::shared_ptr<const ModuleString> s;
         {
             py::gil_scoped_release release;
-            outcome = m_derivation->deriveTo(k);
-            if (outcome.ok()) s = m_derivation->step(k);
+            outcome = m_growth->derive(k);
+            if (outcome.ok()) s = m_growth->step(k);
         }
         if (!outcome.ok()) throw py::value_error(name + ": " + outcome.message);
         return LString(s, grammar);
@@ -199,17 +200,17 @@ public:
         if (isLpy()) {  // an L-Py step is drawn as it is
             auto g = lpyDrawn(n.value_or(iterations()));
             py::gil_scoped_release release;
-            interpret(g->axiom, *g, {0, seed.value_or(g->settings.seed)}, out);
+            drawAsIs(g->axiom, *g, {0, seed.value_or(g->settings.seed)}, out);
             return out;
         }
         LString s = derive(n, seed);
         py::gil_scoped_release release;
-        interpret(s.string(), s.grammar(), {n.value_or(iterations()), seed.value_or(s.grammar().settings.seed)}, out);
+        drawAsIs(s.string(), s.grammar(), {n.value_or(iterations()), seed.value_or(s.grammar().settings.seed)}, out);
         return out;
     }
 
 private:
-    std::unique_ptr<Derivation> m_derivation;
+    std::unique_ptr<Growth> m_growth;
     std::optional<std::uint64_t> m_seed;
 };
 
@@ -285,7 +286,7 @@ Plant parseText(const std::string& text, std::optional<std::string> kind, bool p
 }
 
 // sprout.open(source): a file of any kind Sprout opens (FILE.l:System picks a Fractint system),
-// a PNG written by Sprout, or a preset's name, read as the CLI reads it (app/source.hpp).
+// a PNG written by Sprout, or a preset's name, read as the CLI reads it (app/plant/source.hpp).
 Plant openSource(const std::string& source, bool python, int steps) {
     SourceText read = readSource(source);
     if (hasErrors(read.diagnostics)) raiseDiagnostics(read.diagnostics, read.diagnosticsName);

@@ -7,7 +7,6 @@ namespace sprout::cli {
 int runExpand(int argc, char** argv);  // argv[0] is "expand"
 int runRender(int argc, char** argv);  // argv[0] is "render"
 int runExport(int argc, char** argv);  // argv[0] is "export"
-int runViewer(int argc, char** argv);  // the GLFW window; argv[0] is the program
 int printUsage(bool toStderr);
 
 }  // namespace sprout::cli

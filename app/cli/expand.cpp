@@ -8,9 +8,10 @@
 #include <iostream>
 #include <vector>
 
-#include "app/cli/args.hpp"
+#include "app/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
+#include "app/plant/growth.hpp"
 #include "core/derive/derive.hpp"
 #include "core/base/atomic_file.hpp"
 
@@ -158,15 +159,15 @@ int runExpand(int argc, char** argv) {
     if (seed) options.seed = std::uint64_t(*seed);
     if (maxModules) options.limits.maxModules = std::uint64_t(*maxModules);
     if (maxMemory) options.limits.maxBytes = std::uint64_t(*maxMemory) << 20;
-    Derivation derivation(loaded->grammar, options);
+    Growth growth(loaded->grammar, options);
     int steps = n ? int(*n) : loaded->grammar->settings.iterations;
-    DeriveOutcome outcome = derivation.deriveTo(steps);
+    DeriveOutcome outcome = growth.derive(steps);
     if (!outcome.ok()) {
         std::cerr << loaded->displayName << ": " << outcome.message << "\n";
         return 1;
     }
-    if (args.flag("--stats")) printStats(derivation, steps, loaded->displayName);
-    else if (!writeString(*derivation.step(steps), loaded->grammar->alphabet)) return 1;
+    if (args.flag("--stats")) printStats(growth.derivation(), steps, loaded->displayName);
+    else if (!writeString(*growth.step(steps), loaded->grammar->alphabet)) return 1;
     return std::fflush(stdout) == 0 ? 0 : 1;
 }
 

@@ -5,12 +5,13 @@
 #include <iostream>
 #include <unistd.h>
 
-#include "app/cli/args.hpp"
+#include "app/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
+#include "app/plant/growth.hpp"
 #include "core/environment/environment_drawing.hpp"
 #include "app/export/export.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "core/derive/derive.hpp"
 #include "core/turtle/turtle.hpp"
 
@@ -59,7 +60,7 @@ int runExport(int argc, char** argv) {
     } else if (kind == FileKind::Forest) {
         ForestStats fs;
         std::string text;
-        if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text,
+        if (!buildForestScene(source, seed ? std::optional<std::uint64_t>(*seed) : std::nullopt, limits, geometry, fs, text, printReport,
                               &environment, &usedSeed))
             return 1;
     } else {
@@ -75,16 +76,12 @@ int runExport(int argc, char** argv) {
         DeriveOptions dopts;
         if (seed) dopts.seed = std::uint64_t(*seed);
         dopts.limits = limits;
-        Derivation derivation(loaded->grammar, dopts);
-        DeriveOutcome outcome = derivation.deriveTo(steps);
-        if (outcome.ok()) outcome = checkDrawing(*derivation.step(steps), g, limits, steps);
-        if (!outcome.ok()) {
-            std::cerr << loaded->displayName << ": " << outcome.message << "\n";
+        std::string error;
+        if (!growAndDraw(loaded->grammar, steps, dopts, geometry, error, &usedSeed)) {
+            std::cerr << loaded->displayName << ": " << error << "\n";
             return 1;
         }
-        interpret(*derivation.step(steps), g, {steps, derivation.seed(), nullptr}, geometry);
         environment = g.environment;
-        usedSeed = derivation.seed();
     }
     if (args.flag("--with-environment") && !environment.empty()) {
         // The environment's shapes as the viewer draws them, as polygons beside the plant.

@@ -1,49 +1,16 @@
 #pragma once
-// Loading a grammar for a subcommand: a file path, "-" for standard input, or a preset name.
+// A subcommand's plant: opened by app/plant/ (a file, "-" for standard input, or a preset's
+// name), what is wrong printed to standard error as it is found.
 #include <optional>
 #include <string>
-#include <vector>
 
-#include "core/derive/derive.hpp"
-#include "core/language/file_kind.hpp"
-#include "core/scene/forest.hpp"
-#include "core/language/grammar.hpp"
+#include "app/plant/open.hpp"
 
 namespace sprout::cli {
 
-struct LoadedGrammar {
-    std::string displayName;  // used in FILE:line:col messages
-    std::string text;         // the grammar as written
-    std::shared_ptr<const Grammar> grammar;
-    FileKind kind = FileKind::Lsys;  // of `text`: Lsys, Cpfg or Lpy
-    std::string dialect;             // what the text was read as: ".lsys", "ABOP notation", "cpfg", "L-Py", "Lparser", "Fractint"
-    // An L-Py model run by Python (lpy/): `grammar` is what it derived, to draw (no rules);
-    // `derived` the string as L-Py writes it.
-    bool ranPython = false;
-    std::string derived;
-    std::vector<std::shared_ptr<const Grammar>> steps;  // LoadOptions::keepSteps: step 0 .. n, each to draw
-};
-
-struct LoadOptions {
-    int steps = -1;       // an L-Py model's derivation length (-1: the file's)
-    bool python = true;   // false (--no-python): an L-Py model's Python is refused
-    bool keepSteps = false;  // an L-Py model: keep every step's drawing (growth videos)
-    std::uint64_t maxModules = 0, maxBytes = 0;  // an L-Py model's limits (--max-modules, --max-memory; 0: its own)
-};
-
-// Prints diagnostics (errors and warnings) to stderr; nullopt when the grammar has errors
-// or cannot be read.
+// Prints one line of a report to standard error.
+void printReport(const std::string& line);
+// openPlant with its report printed; nullopt when the grammar has errors or cannot be read.
 std::optional<LoadedGrammar> loadGrammar(const std::string& source, const LoadOptions& options = {});
-
-// What a source (file, PNG written by Sprout, preset or "-") holds, by detectFileKind():
-// Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).
-FileKind sourceKind(const std::string& source);
-
-// A forest scene (.forest file or scene preset) built into one geometry; `text` is the
-// scene as written. Prints diagnostics; false when it cannot be built.
-// `environment`, when given, receives the scene's shared environment (empty when it has none).
-bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
-                      Geometry& geometry, ForestStats& stats, std::string& text, Environment* environment = nullptr,
-                      std::uint64_t* usedSeed = nullptr);
 
 }  // namespace sprout::cli

@@ -5,14 +5,16 @@
 #include <cstdio>
 #include <iostream>
 
-#include "app/cli/args.hpp"
+#include "app/args.hpp"
 #include "app/cli/commands.hpp"
 #include "app/labels.hpp"
 #include "app/animation.hpp"
 #include "app/cli/load.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
+#include "app/plant/source.hpp"
+#include "core/base/read_file.hpp"
 #include "app/snapshot.hpp"
-#include "app/viewer/text_edit.hpp"
+#include "app/plant/text_edit.hpp"
 #include "core/language/import/import.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/scene/forest.hpp"
@@ -61,23 +63,13 @@ bool parsePoint(const std::optional<std::string>& s, std::optional<glm::vec3>& o
     return true;
 }
 
-// The text of a file, or of the chunk `key` when it is a PNG written by Sprout.
-std::optional<std::string> readSource(const std::string& path, const char* key) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string text(std::istreambuf_iterator<char>(in), {});
-    if (detectFileKind(path, text) != FileKind::Png) return text;
-    std::string error;
-    return pngTextChunk(text, key, error);
-}
-
 // An iterated function system: the chaos game into a density image, log tone mapped.
 int renderIfs(const std::string& source, const SnapshotOptions& o, const std::string& out, bool stats) {
     std::string text;
     if (auto preset = presetText(source); preset && !std::filesystem::exists(source)) {
         text = std::string(*preset);
     } else {
-        auto t = readSource(source, "ifs");
+        auto t = readSourceOrChunk(source, "ifs");
         if (!t) {
             std::cerr << source << ": cannot be opened\n";
             return 1;
@@ -109,40 +101,6 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
 
 }  // namespace
 
-// A forest scene: its species are presets or files beside the scene file.
-bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
-                      Geometry& geometry, ForestStats& fs, std::string& text, Environment* environment, std::uint64_t* usedSeed) {
-    std::filesystem::path dir;
-    IncludeReader beside;  // a mesh an environment names, beside the scene
-    if (std::filesystem::exists(source)) {
-        text = readSource(source, "forest").value_or("");
-        dir = std::filesystem::path(source).parent_path();
-        beside = parseOptionsFor(FileKind::Forest, source).include;
-    } else if (auto preset = presetText(source)) {
-        text = std::string(*preset);
-    }
-    ForestParseResult parsed = parseForest(text, beside);
-    for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
-    if (!parsed.forest) return false;
-    if (seed) parsed.forest->seed = *seed;
-    if (environment) *environment = parsed.forest->environment;
-    if (usedSeed) *usedSeed = parsed.forest->seed;
-    auto species = [&](const std::string& name) -> std::optional<std::string> {
-        std::filesystem::path p = dir / name;
-        if (std::filesystem::exists(p)) {
-            std::ifstream in(p, std::ios::binary);
-            return std::string(std::istreambuf_iterator<char>(in), {});
-        }
-        if (auto t = presetText(name)) return std::string(*t);
-        return std::nullopt;
-    };
-    std::string error;
-    if (!buildForest(*parsed.forest, species, geometry, fs, error, limits)) {
-        std::cerr << source << ": " << error << "\n";
-        return false;
-    }
-    return true;
-}
 
 namespace {
 
@@ -153,7 +111,7 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
     auto t0 = std::chrono::steady_clock::now();
     auto environment = std::make_shared<Environment>();
     std::uint64_t seed = 1;
-    if (!buildForestScene(source, o.seed, o.limits, shot.geometry, fs, text, environment.get(), &seed)) return 1;
+    if (!buildForestScene(source, o.seed, o.limits, shot.geometry, fs, text, printReport, environment.get(), &seed)) return 1;
     double buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     o.environment = environment;
     if (!renderGeometry(o, shot, error, seed)) {
@@ -235,8 +193,7 @@ int runRender(int argc, char** argv) {
     for (const char* k : {"--view", "--yaw", "--pitch", "--distance", "--target"})
         if (auto v = args.value(k)) view += std::string(view.empty() ? "" : " ") + k + " " + *v;
     if (view.empty() && source.size() > 4 && source.substr(source.size() - 4) == ".png") {
-        std::ifstream in(source, std::ios::binary);
-        std::string png(std::istreambuf_iterator<char>(in), {}), ignored;
+        std::string png = readFile(source).value_or(""), ignored;
         if (auto v = pngTextChunk(png, "sprout-view", ignored)) {
             std::istringstream words(*v);
             std::string k, value;
@@ -277,8 +234,8 @@ int runRender(int argc, char** argv) {
     // The grammar travels inside the PNG, so the picture can be opened again: with -n and
     // --seed written into it, it gives this very plant back.
     std::string recipe = loaded->text;
-    if (n && !loaded->ranPython) recipe = viewer::setDirective(recipe, viewer::directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
-    if (seed) recipe = viewer::setDirective(recipe, "seed", std::to_string(*seed));
+    if (n && !loaded->ranPython) recipe = setDirective(recipe, directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
+    if (seed) recipe = setDirective(recipe, "seed", std::to_string(*seed));
     if (animate) {
         AnimationOptions ao;
         ao.kind = *animate;

@@ -244,7 +244,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         for (const char* part : kParts)
             for (const auto& p : prims) {
                 if (p.part != part) continue;
-                scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
                     verts.resize(chunk.vertices.size() * 6);
                     float* w = verts.data();
                     for (const auto& v : chunk.vertices) {
@@ -256,7 +256,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                     progress.advance(4096);
                 });
                 std::uint32_t base = 0;
-                scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+                scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
                     idx.resize(chunk.indices.size());
                     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = base + chunk.indices[i];
                     base += std::uint32_t(chunk.vertices.size());
@@ -306,7 +306,7 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
             if (first) out.text(std::string("o ") + part + "\n");
             first = false;
             out.text(std::string("g ") + part + "\nusemtl " + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\n");
-            scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+            scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
                 for (const auto& v : chunk.vertices) {
                     out.text("v ");
                     out.number(v.position.x), out.text(" "), out.number(v.position.y), out.text(" "), out.number(v.position.z);
@@ -317,7 +317,7 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
                 progress.advance(4096);
             });
             std::uint64_t local = base;
-            scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+            scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
                 for (std::size_t i = 0; i < chunk.indices.size(); i += 3) {
                     out.text("f");
                     for (int k = 0; k < 3; ++k) {
@@ -354,7 +354,7 @@ bool writePly(const ExportScene& scene, const std::string& path, const ExportOpt
     Progress progress(o, scene.primitives, 2);
     std::vector<char> buf;
     for (const auto& p : scene.primitives)
-        scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+        scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
             buf.resize(chunk.vertices.size() * 28);
             char* w = buf.data();
             for (const auto& v : chunk.vertices) {
@@ -370,7 +370,7 @@ bool writePly(const ExportScene& scene, const std::string& path, const ExportOpt
         });
     std::uint32_t base = 0;
     for (const auto& p : scene.primitives)
-        scene.forEachChunk(p, [&](const render::BakedMesh& chunk) {
+        scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
             buf.resize(chunk.indices.size() / 3 * 13);
             char* w = buf.data();
             for (std::size_t i = 0; i < chunk.indices.size(); i += 3) {

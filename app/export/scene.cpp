@@ -27,10 +27,10 @@ bool continues(const CylinderInstance& a, const CylinderInstance& c) {
 }  // namespace
 
 ExportScene::ExportScene(const Geometry& g, int sides) : m_g(g) {
-    for (int l = 0; l < 3; ++l) m_stem[l] = render::makeCylinder(sides > 0 ? sides : kAutoSides[l], 0);
-    m_leaf = render::makeLeaf();
-    m_petal = render::makePetal();
-    m_sphere = render::makeSphere(16, 10);
+    for (int l = 0; l < 3; ++l) m_stem[l] = mesh::makeCylinder(sides > 0 ? sides : kAutoSides[l], 0);
+    m_leaf = mesh::makeLeaf();
+    m_petal = mesh::makePetal();
+    m_sphere = mesh::makeSphere(16, 10);
 
     // Straight runs of equal stems become one tube: F -> FF plants shrink many times over.
     const float extent = std::max(glm::length(g.bounds.size()), 1e-6f);
@@ -71,14 +71,14 @@ ExportScene::ExportScene(const Geometry& g, int sides) : m_g(g) {
     for (int k = 0; k < 3; ++k)
         group(names[k], Source::Surfaces, k < 2, g.surfaces.size(), [&](std::uint32_t i) { return g.surfaces[i].colour; },
               [&](std::uint32_t i) { return g.surfaces[i].kind == kinds[k]; });
-    render::bakePolygons(g.polygons, m_polygons);
+    mesh::bakePolygons(g.polygons, m_polygons);
     group("polygons", Source::Polygons, true, m_polygons.indices.size() / 3,
           [&](std::uint32_t t) { return m_polygons.vertices[m_polygons.indices[3 * t]].colour; }, all);
 
     // Counts and exact bounds, which glTF wants before the data.
     for (Primitive& p : primitives) {
         glm::vec3 lo(INFINITY), hi(-INFINITY);
-        forEachChunk(p, [&](const render::BakedMesh& chunk) {
+        forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
             p.vertices += chunk.vertices.size();
             p.indices += chunk.indices.size();
             for (const auto& v : chunk.vertices) {
@@ -92,14 +92,14 @@ ExportScene::ExportScene(const Geometry& g, int sides) : m_g(g) {
     std::erase_if(primitives, [](const Primitive& p) { return p.indices == 0; });
 }
 
-void ExportScene::emit(const Primitive& p, std::size_t begin, std::size_t end, render::BakedMesh& out) const {
+void ExportScene::emit(const Primitive& p, std::size_t begin, std::size_t end, mesh::BakedMesh& out) const {
     for (std::size_t k = begin; k < end; ++k) {
         const std::uint32_t i = p.items[k];
         switch (p.source) {
-            case Source::Stems: render::bakeCylinder(m_runs[i], m_stem[m_runLevel[i]], out); break;
+            case Source::Stems: mesh::bakeCylinder(m_runs[i], m_stem[m_runLevel[i]], out); break;
             case Source::Surfaces: {
                 const SurfaceInstance& s = m_g.surfaces[i];
-                render::bakeSurface(s, s.kind == SurfaceKind::Leaf ? m_leaf : s.kind == SurfaceKind::Petal ? m_petal : m_sphere, out);
+                mesh::bakeSurface(s, s.kind == SurfaceKind::Leaf ? m_leaf : s.kind == SurfaceKind::Petal ? m_petal : m_sphere, out);
                 break;
             }
             case Source::Polygons: {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "app/render/bake.hpp"
-#include "app/render/meshes.hpp"
+#include "app/mesh/bake.hpp"
+#include "app/mesh/meshes.hpp"
 #include "core/turtle/geometry.hpp"
 
 namespace sprout::exporter {
@@ -36,7 +36,7 @@ public:
     // chunk's indices count from the chunk's first vertex.
     template <class F>
     void forEachChunk(const Primitive& p, F&& f) const {
-        render::BakedMesh chunk;
+        mesh::BakedMesh chunk;
         constexpr std::size_t kItems = 4096;
         for (std::size_t i = 0; i < p.items.size(); i += kItems) {
             chunk.clear();
@@ -44,15 +44,15 @@ public:
             f(chunk);
         }
     }
-    void emit(const Primitive& p, std::size_t begin, std::size_t end, render::BakedMesh& out) const;
+    void emit(const Primitive& p, std::size_t begin, std::size_t end, mesh::BakedMesh& out) const;
 
 private:
     const Geometry& m_g;
     std::vector<CylinderInstance> m_runs;  // straight runs of stems merged
     std::vector<std::uint8_t> m_runLevel;
-    render::CylinderMesh m_stem[3];
-    render::SurfaceMesh m_leaf, m_petal, m_sphere;
-    render::BakedMesh m_polygons;
+    mesh::CylinderMesh m_stem[3];
+    mesh::SurfaceMesh m_leaf, m_petal, m_sphere;
+    mesh::BakedMesh m_polygons;
 };
 
 // sRGB 0..255 -> linear 0..1 (glTF colour factors and MTL are linear).

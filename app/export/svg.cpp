@@ -12,8 +12,8 @@
 #include <glm/vec2.hpp>
 #include <map>
 
-#include "app/render/bake.hpp"
-#include "app/render/meshes.hpp"
+#include "app/mesh/bake.hpp"
+#include "app/mesh/meshes.hpp"
 
 namespace sprout::exporter {
 namespace {
@@ -99,11 +99,11 @@ bool writeSvg(const Geometry& g, const std::string& path, const ExportOptions& o
     s += "</g>\n";
 
     // Leaves, petals, spheres and polygons: filled triangles, one path per colour.
-    render::BakedMesh baked;
-    const render::SurfaceMesh leaf = render::makeLeaf(), petal = render::makePetal(), sphere = render::makeSphere(12, 8);
+    mesh::BakedMesh baked;
+    const mesh::SurfaceMesh leaf = mesh::makeLeaf(), petal = mesh::makePetal(), sphere = mesh::makeSphere(12, 8);
     for (const auto& x : g.surfaces)
-        render::bakeSurface(x, x.kind == SurfaceKind::Leaf ? leaf : x.kind == SurfaceKind::Petal ? petal : sphere, baked);
-    render::bakePolygons(g.polygons, baked);
+        mesh::bakeSurface(x, x.kind == SurfaceKind::Leaf ? leaf : x.kind == SurfaceKind::Petal ? petal : sphere, baked);
+    mesh::bakePolygons(g.polygons, baked);
     std::map<std::uint32_t, std::string> fills;
     for (std::size_t t = 0; t + 2 < baked.indices.size(); t += 3) {
         const auto& a = baked.vertices[baked.indices[t]];

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <memory>
 
-#include "app/render/bake.hpp"
+#include "app/mesh/bake.hpp"
 #include "app/render/colour_target.hpp"
 #include "app/render/gl.hpp"
 #include "app/render/renderer_impl.hpp"
@@ -47,13 +47,13 @@ void Renderer::Impl::makeBaked(Buffers& b) {
     glBindVertexArray(b.vao);
     glGenBuffers(1, &b.vbo);
     glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
-    const GLsizei bs = sizeof(BakedVertex);
+    const GLsizei bs = sizeof(mesh::BakedVertex);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, position)));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, position)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, normal)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, normal)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(BakedVertex, colour)));
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, colour)));
     glGenBuffers(1, &b.ebo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
     glBindVertexArray(0);

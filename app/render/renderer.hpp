@@ -12,7 +12,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "app/render/bake.hpp"
+#include "app/mesh/bake.hpp"
 #include "app/render/camera.hpp"
 #include "core/turtle/geometry.hpp"
 
@@ -65,7 +65,7 @@ struct RenderStats {
 // that owns the context. The viewer prepares on its worker so that a big plant's arrival
 // costs the window only buffer copies.
 struct PreparedScene {
-    BakedMesh baked;                     // stems, leaves, petals, spheres, polygons
+    mesh::BakedMesh baked;                     // stems, leaves, petals, spheres, polygons
     std::vector<float> lines;            // the thinnest stems: x y z colour, two per line
     std::vector<CylinderInstance> curve; // planar curves: ribbons drawn from these
     // A big planar curve (over 200 k segments): drawn from the geometry's own segments,
@@ -89,7 +89,7 @@ struct PreparedScene {
     // ribbon is two triangles from a buffer texture: 16-32 k of them took 10 ms a moving frame
     // on llvmpipe at a quarter of the pixels each way).
     std::vector<float> proxy;
-    BakedMesh proxyBaked;
+    mesh::BakedMesh proxyBaked;
     static constexpr std::size_t kProxyLines = 30000;
     static constexpr std::size_t kProxyTriangles = 4000;
     // The triangles a moving bake aims at (a clustered mesh on coarser grids, leaves of 6

@@ -11,8 +11,8 @@
 #include <vector>
 #include <glm/geometric.hpp>
 
-#include "app/render/bake.hpp"
-#include "app/render/meshes.hpp"
+#include "app/mesh/bake.hpp"
+#include "app/mesh/meshes.hpp"
 #include "core/base/bounded.hpp"
 
 namespace sprout::render {
@@ -45,12 +45,12 @@ constexpr std::size_t kRasterCurveSegments = 200'000;  // ~170 MB baked; past it
 
 // The unit meshes baking uses, made once (thread-safe: prepare() runs on worker threads).
 struct UnitMeshes {
-    CylinderMesh stems[3] = {makeCylinder(10, 2), makeCylinder(6, 0), makePrism(3)};
-    SurfaceMesh leaf = makeLeaf(), petal = makePetal(), sphere = makeSphere(16, 10), smallSphere = makeSphere(6, 3);
+    mesh::CylinderMesh stems[3] = {mesh::makeCylinder(10, 2), mesh::makeCylinder(6, 0), mesh::makePrism(3)};
+    mesh::SurfaceMesh leaf = mesh::makeLeaf(), petal = mesh::makePetal(), sphere = mesh::makeSphere(16, 10), smallSphere = mesh::makeSphere(6, 3);
     // A moving frame's, by coarseness (144, 120 and 320 triangles above; 12, 12 and 48, then
     // 6, 6 and 24 here, the outline of six points: llvmpipe pays for each triangle).
-    SurfaceMesh coarseLeaf[2] = {makeLeaf(3, 2), makeLeaf(3, 1)}, coarsePetal[2] = {makePetal(3, 2), makePetal(3, 1)},
-                coarseSphere[2] = {makeSphere(8, 3), makeSphere(6, 2)};
+    mesh::SurfaceMesh coarseLeaf[2] = {mesh::makeLeaf(3, 2), mesh::makeLeaf(3, 1)}, coarsePetal[2] = {mesh::makePetal(3, 2), mesh::makePetal(3, 1)},
+                coarseSphere[2] = {mesh::makeSphere(8, 3), mesh::makeSphere(6, 2)};
 };
 const UnitMeshes& unitMeshes() {
     static const UnitMeshes m;
@@ -68,7 +68,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     out.planarCurve = g.planarCurve;
     out.cylinders = g.cylinders.size();
     out.surfaces = g.surfaces.size();
-    BakedMesh& b = out.baked;
+    mesh::BakedMesh& b = out.baked;
     const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
     const float extent = std::max({size.x, size.y, size.z, 1e-6f});
     if (g.planarCurve && g.cylinders.size() > kRasterCurveSegments) {
@@ -117,7 +117,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         auto emit = [&] {
             if (runLevel < 0) return;
             if (runLevel < 3) {
-                bakeCylinder(run, meshes.stems[runLevel], b);
+                mesh::bakeCylinder(run, meshes.stems[runLevel], b);
             } else {
                 appendLine(out.lines, run.start, run.end, run.colour);
             }
@@ -139,14 +139,14 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
     const int c = std::clamp(coarseness, 0, 2) - 1;  // the coarse meshes' index; -1: full
     for (const auto& x : g.surfaces) {
-        const SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? (c >= 0 ? meshes.coarseLeaf[c] : meshes.leaf)
+        const mesh::SurfaceMesh& mesh = x.kind == SurfaceKind::Leaf    ? (c >= 0 ? meshes.coarseLeaf[c] : meshes.leaf)
                                   : x.kind == SurfaceKind::Petal ? (c >= 0 ? meshes.coarsePetal[c] : meshes.petal)
                                   : x.size < extent / 60         ? meshes.smallSphere
                                   : c >= 0                       ? meshes.coarseSphere[c]
                                                                  : meshes.sphere;
-        bakeSurface(x, mesh, b);
+        mesh::bakeSurface(x, mesh, b);
     }
-    bakePolygons(g.polygons, b);
+    mesh::bakePolygons(g.polygons, b);
 }
 
 namespace {
@@ -154,14 +154,14 @@ namespace {
 // Vertex clustering (Rossignac and Borrel): the vertices in one cell of a grid become one
 // (their normals averaged), and triangles that collapse are dropped, so a mesh of any size
 // becomes one bounded by the grid's cells on its surface.
-BakedMesh clusterMesh(const BakedMesh& in, const Bounds& bounds, float cell) {
-    BakedMesh out;
+mesh::BakedMesh clusterMesh(const mesh::BakedMesh& in, const Bounds& bounds, float cell) {
+    mesh::BakedMesh out;
     std::unordered_map<std::uint64_t, std::uint32_t> cells;
     cells.reserve(in.vertices.size() / 4 + 16);
     std::vector<std::uint32_t> remap(in.vertices.size());
     std::vector<glm::vec3> normals;
     for (std::size_t i = 0; i < in.vertices.size(); ++i) {
-        const BakedVertex& v = in.vertices[i];
+        const mesh::BakedVertex& v = in.vertices[i];
         const glm::vec3 q = glm::floor((v.position - bounds.min) / cell);
         auto axis = [](float x) { return std::uint64_t(std::clamp(saturate<int>(x), 0, (1 << 21) - 1)); };  // NaN: cell 0
         const std::uint64_t key = axis(q.x) | axis(q.y) << 21 | axis(q.z) << 42;
@@ -194,7 +194,7 @@ void Renderer::prepareForViewer(const Geometry& g, PreparedScene& out, std::shar
 
 void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
     out.proxy.clear();
-    out.proxyBaked = BakedMesh();
+    out.proxyBaked = mesh::BakedMesh();
     if (g.planarCurve) {  // a big curve moves its raster; one of many ribbons moves as lines
         if (out.curve.size() > PreparedScene::kCurveSketch) {
             out.proxy.reserve(out.curve.size() * 8);

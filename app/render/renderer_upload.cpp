@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/render/bake.hpp"
+#include "app/mesh/bake.hpp"
 #include "app/render/gl.hpp"
 #include "app/render/renderer.hpp"
 #include "app/render/renderer_impl.hpp"
@@ -33,7 +33,7 @@ void Renderer::upload(const PreparedScene& p) {
     s.mutableAgain(s.lines, true);
     glBindVertexArray(s.baked.vao);
     glBindBuffer(GL_ARRAY_BUFFER, s.baked.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.baked.vertices.size() * sizeof(mesh::BakedVertex)), p.baked.vertices.data(), GL_STATIC_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(p.baked.indices.size() * 4), p.baked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, s.lines.vbo);
@@ -78,7 +78,7 @@ void Renderer::adopt(const PreparedScene& p) {
     s.proxyIndices = p.proxyBaked.indices.size();
     glBindVertexArray(s.proxyMesh.vao);
     glBindBuffer(GL_ARRAY_BUFFER, s.proxyMesh.vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.proxyBaked.vertices.size() * sizeof(BakedVertex)), p.proxyBaked.vertices.data(),
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(p.proxyBaked.vertices.size() * sizeof(mesh::BakedVertex)), p.proxyBaked.vertices.data(),
                  GL_STATIC_DRAW);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(s.proxyIndices * 4), p.proxyBaked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
@@ -90,7 +90,7 @@ void Renderer::adopt(const PreparedScene& p) {
 
 bool Renderer::beginUpload(std::shared_ptr<const PreparedScene> p, std::size_t bytesPerFrame) {
     Impl& s = *m;
-    const std::size_t vb = p->baked.vertices.size() * sizeof(BakedVertex), ib = p->baked.indices.size() * 4,
+    const std::size_t vb = p->baked.vertices.size() * sizeof(mesh::BakedVertex), ib = p->baked.indices.size() * 4,
                       lb = p->lines.size() * 4;
     if (vb + ib + lb <= bytesPerFrame) {  // small: at once
         upload(*p);
@@ -162,7 +162,7 @@ bool Renderer::continueUpload(std::size_t bytes) {
         const void* data;
         std::size_t size;
     } parts[] = {
-        {GL_ARRAY_BUFFER, s.bakedBack.vao, s.bakedBack.vbo, p.baked.vertices.data(), p.baked.vertices.size() * sizeof(BakedVertex)},
+        {GL_ARRAY_BUFFER, s.bakedBack.vao, s.bakedBack.vbo, p.baked.vertices.data(), p.baked.vertices.size() * sizeof(mesh::BakedVertex)},
         {GL_ELEMENT_ARRAY_BUFFER, s.bakedBack.vao, s.bakedBack.ebo, p.baked.indices.data(), p.baked.indices.size() * 4},
         {GL_ARRAY_BUFFER, 0, s.linesBack.vbo, p.lines.data(), p.lines.size() * 4},
     };
@@ -205,18 +205,18 @@ bool Renderer::continueUpload(std::size_t bytes) {
 bool Renderer::rasterCurve() const { return m->rasterCurve != nullptr; }
 
 namespace {
-std::size_t uploadBaked(const BakedMesh& baked, GLuint vao, GLuint vbo, GLuint ebo) {
+std::size_t uploadBaked(const mesh::BakedMesh& baked, GLuint vao, GLuint vbo, GLuint ebo) {
     glBindVertexArray(vao);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(baked.vertices.size() * sizeof(BakedVertex)), baked.vertices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(baked.vertices.size() * sizeof(mesh::BakedVertex)), baked.vertices.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(baked.indices.size() * 4), baked.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
     return baked.indices.size();
 }
 std::size_t uploadMesh(const Mesh& mesh, GLuint vao, GLuint vbo, GLuint ebo) {
-    BakedMesh baked;
-    bakePolygons(mesh, baked);
+    mesh::BakedMesh baked;
+    mesh::bakePolygons(mesh, baked);
     return uploadBaked(baked, vao, vbo, ebo);
 }
 }  // namespace
@@ -231,8 +231,8 @@ void Renderer::setOverlay(const Mesh& mesh) {
     // 253 of 255), each in the order given: every pass draws only its own, as the passes'
     // discards left them (env_space_colonisation's free points were drawn three times, its
     // glass crown three times). A triangle of both kinds is in both.
-    BakedMesh baked;
-    bakePolygons(mesh, baked);
+    mesh::BakedMesh baked;
+    mesh::bakePolygons(mesh, baked);
     const std::vector<std::uint32_t> given = std::move(baked.indices);
     baked.indices.clear();
     baked.indices.reserve(given.size());

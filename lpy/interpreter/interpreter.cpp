@@ -17,6 +17,7 @@
 
 #include "lpy/translate/python2_hints.hpp"
 #include "core/base/embedded_file.hpp"
+#include "core/base/read_file.hpp"
 
 namespace sprout {
 std::span<const EmbeddedFile> embeddedLpyPython();
@@ -269,10 +270,7 @@ PasteReader pasteReader(const std::string& modelPath) {
         for (const fs::path& p : places) {
             std::error_code ec;
             if (!fs::is_regular_file(p, ec)) continue;
-            std::ifstream in(p, std::ios::binary);
-            std::ostringstream text;
-            text << in.rdbuf();
-            if (in) return text.str();
+            if (std::optional<std::string> text = readFile(p)) return text;
         }
         return std::nullopt;
     };

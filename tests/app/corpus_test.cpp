@@ -1,6 +1,6 @@
 // Files written by other people for other tools, read as a user brings them (issue 38): each
 // file of a collection in ../shared/corpus opens through the same reader as `sprout render`
-// (app/source.hpp: the kind by content and extension, Lparser and Fractint translated),
+// (app/plant/source.hpp: the kind by content and extension, Lparser and Fractint translated),
 // derives and draws something; every failure is named with its first message, and the count
 // that opens is held. Skipped where the shared corpus is not beside the project.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "app/source.hpp"
+#include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
 #include "core/derive/draw.hpp"
 #include "core/language/file_kind.hpp"

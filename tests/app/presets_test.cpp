@@ -1,7 +1,7 @@
 // Every embedded preset parses cleanly and derives within the default limits.
 #include <gtest/gtest.h>
 
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "core/derive/d0l.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/derive/derive.hpp"

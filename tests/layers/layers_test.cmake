@@ -20,13 +20,26 @@ set(wrong
   "lpy/interpreter/x.cpp|#include \"lpy/api/api.hpp\""
   "lpy/api/x.cpp|#include \"lpy/run/x.hpp\""
   "lpy/lpy.hpp|#include \"lpy/engine/engine.hpp\""
-  "lpy/run/x.cpp|#include \"app/source.hpp\""
+  "lpy/run/x.cpp|#include \"app/plant/source.hpp\""
   "lpy/api/x.py|import sprout"
   "lpy/plantgl/x.py|    from sprout import _sprout"
   "app/x.cpp|#include \"lpy/engine/engine.hpp\""
+  "app/x.cpp|#include \"app/cli/load.hpp\""
+  "app/x.cpp|#include \"app/viewer/state/worker.hpp\""
+  "app/cli/x.cpp|#include \"app/viewer/window/app.hpp\""
+  "app/cli/x.cpp|#include \"app/viewer/state/trust.hpp\""
+  "app/viewer/window/x.cpp|#include \"app/cli/load.hpp\""
+  "app/viewer/state/x.cpp|#include \"app/viewer/window/app.hpp\""
+  "app/viewer/state/x.cpp|#include \"app/render/gl.hpp\""
+  "app/export/x.cpp|#include \"app/render/gl.hpp\""
+  "app/export/x.cpp|#include \"app/render/renderer.hpp\""
+  "app/mesh/x.cpp|#include \"app/render/renderer.hpp\""
+  "app/render/x.cpp|#include \"app/export/export.hpp\""
+  "app/plant/x.cpp|#include \"app/snapshot.hpp\""
+  "app/plant/x.cpp|#include \"lpy/engine/engine.hpp\""
   "app/x.cpp|#include \"python/x.hpp\""
-  "python/x.cpp|#include \"app/viewer/worker.hpp\""
-  "python/x.cpp|#include \"app/cli/args.hpp\"")
+  "python/x.cpp|#include \"app/viewer/state/worker.hpp\""
+  "python/x.cpp|#include \"app/cli/load.hpp\"")
 set(n 0)
 foreach(entry IN LISTS wrong)
   string(REPLACE "|" ";" parts "${entry}")

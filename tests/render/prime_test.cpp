@@ -5,7 +5,7 @@
 #include <atomic>
 
 #include "app/headless.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "app/render/renderer.hpp"
 #include "app/snapshot.hpp"
 #include "core/language/file_kind.hpp"

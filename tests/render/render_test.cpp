@@ -13,7 +13,7 @@
 #include "app/headless.hpp"
 #include "app/image.hpp"
 #include "app/labels.hpp"
-#include "app/presets.hpp"
+#include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/render/renderer.hpp"
 #include "core/environment/environment_drawing.hpp"

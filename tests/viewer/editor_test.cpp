@@ -2,8 +2,8 @@
 // undo across outside changes) and its highlighting on every language Sprout opens.
 #include <gtest/gtest.h>
 
-#include "app/viewer/editor/highlight.hpp"
-#include "app/viewer/editor/text_model.hpp"
+#include "app/viewer/state/highlight.hpp"
+#include "app/viewer/state/text_model.hpp"
 
 namespace sprout::viewer::editor {
 namespace {

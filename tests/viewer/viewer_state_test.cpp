@@ -7,8 +7,8 @@
 #include <thread>
 #include <unistd.h>
 
-#include "app/viewer/text_edit.hpp"
-#include "app/viewer/viewer_state.hpp"
+#include "app/plant/text_edit.hpp"
+#include "app/viewer/state/viewer_state.hpp"
 #include "lpy/lpy.hpp"
 
 namespace sprout::viewer {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/base/read_file.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
@@ -116,12 +117,9 @@ IncludeReader includeFromFolder(std::string folder) {
             error = "it is larger than 4 MB";
             return std::nullopt;
         }
-        std::ifstream in(target, std::ios::binary);
-        if (!in) {
-            error = "it cannot be read";
-            return std::nullopt;
-        }
-        return std::string(std::istreambuf_iterator<char>(in), {});
+        std::optional<std::string> text = readFile(target);
+        if (!text) error = "it cannot be read";
+        return text;
     };
 }
 

@@ -1,0 +1,43 @@
+#include "app/mesh/bake.hpp"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+namespace sprout::mesh {
+
+void bakeCylinder(const CylinderInstance& c, const CylinderMesh& mesh, BakedMesh& out) {
+    glm::vec3 axis = c.end - c.start;
+    float len = glm::length(axis);
+    glm::vec3 d = len > 1e-9f ? axis / len : glm::vec3(0, 1, 0);
+    glm::vec3 helper = std::fabs(d.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    glm::vec3 s1 = glm::normalize(glm::cross(d, helper));
+    glm::vec3 s2 = glm::cross(d, s1);
+    const std::uint32_t base = std::uint32_t(out.vertices.size());
+    for (const glm::vec4& v : mesh.vertices) {
+        float r = v.w > 0.5f ? c.endRadius : c.startRadius;
+        glm::vec3 centre = v.w > 0.5f ? c.end : c.start;
+        glm::vec3 offset = v.x * s1 + v.z * s2 + d * v.y;
+        float ol = glm::length(offset);
+        out.vertices.push_back({centre + r * offset, ol > 1e-9f ? offset / ol : d, c.colour});
+    }
+    for (std::uint32_t i : mesh.indices) out.indices.push_back(base + i);
+}
+
+void bakeSurface(const SurfaceInstance& s, const SurfaceMesh& mesh, BakedMesh& out) {
+    glm::vec3 H = glm::normalize(s.heading), U = glm::normalize(s.up);
+    glm::vec3 L = glm::cross(U, H);
+    glm::mat3 frame(L, H, U);
+    const std::uint32_t base = std::uint32_t(out.vertices.size());
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        out.vertices.push_back({s.position + s.size * (frame * mesh.positions[i]), frame * mesh.normals[i], s.colour});
+    for (std::uint32_t i : mesh.indices) out.indices.push_back(base + i);
+}
+
+void bakePolygons(const Mesh& p, BakedMesh& out) {
+    const std::uint32_t base = std::uint32_t(out.vertices.size());
+    for (size_t i = 0; i < p.positions.size(); ++i) out.vertices.push_back({p.positions[i], p.normals[i], p.colours[i]});
+    for (std::uint32_t i : p.indices) out.indices.push_back(base + i);
+}
+
+}  // namespace sprout::mesh

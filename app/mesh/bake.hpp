@@ -1,0 +1,38 @@
+#pragma once
+// Instances baked into world-space triangles on the CPU. A software rasteriser runs complex
+// vertex shaders slowly (llvmpipe: ~0.5 us per vertex for a cylinder that reads its segment
+// from a buffer texture, ~0.06 us for a plain transformed vertex), so the renderer draws
+// stems, leaves and spheres as one prebuilt mesh with the simplest shader. Exports reuse it.
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "app/mesh/meshes.hpp"
+#include "core/turtle/geometry.hpp"
+
+namespace sprout::mesh {
+
+struct BakedVertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    std::uint32_t colour;  // 0xRRGGBBAA
+};
+static_assert(sizeof(BakedVertex) == 28);
+
+struct BakedMesh {
+    std::vector<BakedVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    void clear() {
+        vertices.clear();
+        indices.clear();
+    }
+};
+
+// A tapered cylinder from a unit CylinderMesh (x, z ring, y cap offset in radii, w end).
+void bakeCylinder(const CylinderInstance& c, const CylinderMesh& mesh, BakedMesh& out);
+// A leaf, petal or sphere from its unit mesh in the turtle frame.
+void bakeSurface(const SurfaceInstance& s, const SurfaceMesh& mesh, BakedMesh& out);
+// The turtle's polygons as they are.
+void bakePolygons(const Mesh& polygons, BakedMesh& out);
+
+}  // namespace sprout::mesh

@@ -1,0 +1,107 @@
+#include "app/plant/open.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <filesystem>
+#include <sys/stat.h>
+
+#include "app/plant/presets.hpp"
+#include "app/plant/source.hpp"
+#include "core/base/read_file.hpp"
+#include "core/language/import/import.hpp"
+#include "core/scene/forest.hpp"
+#include "lpy/lpy.hpp"
+
+namespace sprout {
+
+FileKind sourceKind(const std::string& source) {
+    struct stat st{};
+    if (source != "-" && ::stat(source.c_str(), &st) == 0) {
+        auto bytes = readFile(source);
+        if (!bytes) return FileKind::Lsys;  // openPlant says why
+        ImportResult r = importFile(source, *bytes);
+        return r.ok() ? r.kind : FileKind::Lsys;
+    }
+    if (auto preset = presetText(source)) return detectFileKind("", *preset);
+    return FileKind::Lsys;
+}
+
+std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOptions& options, const Report& report) {
+    SourceText read = readSource(source);
+    for (const auto& d : read.diagnostics) report(formatDiagnostic(d, read.diagnosticsName));
+    if (!read.error.empty()) report(read.error);
+    if (!read.ok()) return std::nullopt;
+    LoadedGrammar out;
+    out.displayName = std::move(read.displayName);
+    out.kind = read.kind;
+    out.dialect = std::move(read.dialect);
+    std::string text = std::move(read.text), includePath = std::move(read.includePath);
+    if (out.kind == FileKind::Lpy && lpy::pythonAvailable()) {
+        // An L-Py model is a Python program: run as `python3 FILE` would run it.
+        if (!options.python) {
+            report(out.displayName + ": an L-Py model runs Python; --no-python refuses to run it");
+            return std::nullopt;
+        }
+        lpy::RunOptions ro;
+        ro.path = includePath;
+        ro.steps = options.steps;
+        ro.keepSteps = options.keepSteps;
+        if (options.maxModules) ro.maxModules = std::size_t(options.maxModules);
+        if (options.maxBytes) ro.maxBytes = options.maxBytes;
+        lpy::Model model = lpy::runModel(text, ro);
+        for (const auto& d : model.diagnostics) report(formatDiagnostic(d, out.displayName));
+        if (!model.ok()) return std::nullopt;
+        out.grammar = model.drawable;
+        out.derived = std::move(model.derived);
+        out.steps = std::move(model.steps);
+        out.ranPython = true;
+        out.dialect = "L-Py";
+        out.text = std::move(text);
+        return out;
+    }
+    ParseResult r = parse(text, parseOptionsFor(out.kind, includePath));
+    for (const auto& d : r.diagnostics) report(formatDiagnostic(d, out.displayName));
+    if (!r.ok()) return std::nullopt;
+    out.grammar = r.grammar;
+    if (out.dialect.empty()) out.dialect = r.grammar->dialect;
+    out.text = std::move(text);
+    return out;
+}
+
+// A forest scene: its species are presets or files beside the scene file.
+bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
+                      Geometry& geometry, ForestStats& fs, std::string& text, const Report& report, Environment* environment,
+                      std::uint64_t* usedSeed) {
+    std::filesystem::path dir;
+    IncludeReader beside;  // a mesh an environment names, beside the scene
+    if (std::filesystem::exists(source)) {
+        text = readSourceOrChunk(source, "forest").value_or("");
+        dir = std::filesystem::path(source).parent_path();
+        beside = parseOptionsFor(FileKind::Forest, source).include;
+    } else if (auto preset = presetText(source)) {
+        text = std::string(*preset);
+    }
+    ForestParseResult parsed = parseForest(text, beside);
+    for (const auto& d : parsed.diagnostics) report(formatDiagnostic(d, source));
+    if (!parsed.forest) return false;
+    if (seed) parsed.forest->seed = *seed;
+    if (environment) *environment = parsed.forest->environment;
+    if (usedSeed) *usedSeed = parsed.forest->seed;
+    auto species = [&](const std::string& name) -> std::optional<std::string> {
+        std::filesystem::path p = dir / name;
+        if (std::filesystem::exists(p)) return readFile(p).value_or("");
+        if (auto t = presetText(name)) return std::string(*t);
+        return std::nullopt;
+    };
+    std::string error;
+    if (!buildForest(*parsed.forest, species, geometry, fs, error, limits)) {
+        report(source + ": " + error);
+        return false;
+    }
+    return true;
+}
+
+}  // namespace sprout

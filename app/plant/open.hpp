@@ -1,0 +1,57 @@
+#pragma once
+// Opening a plant from what a source names (app/plant/source.hpp: a file of any kind, "-" for
+// standard input, a preset's name): its grammar read, or an L-Py model run by its Python
+// (lpy/lpy.hpp), or a forest scene built. What is wrong is said through `report`, one line at a
+// time, as it is found (the CLI prints each to standard error: app/cli/).
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/derive/derive.hpp"
+#include "core/language/file_kind.hpp"
+#include "core/scene/forest.hpp"
+#include "core/language/grammar.hpp"
+
+namespace sprout {
+
+// Told each diagnostic or error, written with its file (FILE:line:col: ...).
+using Report = std::function<void(const std::string&)>;
+
+struct LoadedGrammar {
+    std::string displayName;  // used in FILE:line:col messages
+    std::string text;         // the grammar as written
+    std::shared_ptr<const Grammar> grammar;
+    FileKind kind = FileKind::Lsys;  // of `text`: Lsys, Cpfg or Lpy
+    std::string dialect;             // what the text was read as: ".lsys", "ABOP notation", "cpfg", "L-Py", "Lparser", "Fractint"
+    // An L-Py model run by Python (lpy/): `grammar` is what it derived, to draw (no rules);
+    // `derived` the string as L-Py writes it.
+    bool ranPython = false;
+    std::string derived;
+    std::vector<std::shared_ptr<const Grammar>> steps;  // LoadOptions::keepSteps: step 0 .. n, each to draw
+};
+
+struct LoadOptions {
+    int steps = -1;       // an L-Py model's derivation length (-1: the file's)
+    bool python = true;   // false (--no-python): an L-Py model's Python is refused
+    bool keepSteps = false;  // an L-Py model: keep every step's drawing (growth videos)
+    std::uint64_t maxModules = 0, maxBytes = 0;  // an L-Py model's limits (--max-modules, --max-memory; 0: its own)
+};
+
+// Reports diagnostics (errors and warnings); nullopt when the grammar has errors or cannot be
+// read.
+std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOptions& options, const Report& report);
+
+// What a source (file, PNG written by Sprout, preset or "-") holds, by detectFileKind():
+// Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).
+FileKind sourceKind(const std::string& source);
+
+// A forest scene (.forest file or scene preset) built into one geometry, its species presets or
+// files beside the scene's file; `text` is the scene as written. Reports diagnostics; false
+// when it cannot be built.
+// `environment`, when given, receives the scene's shared environment (empty when it has none).
+bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
+                      Geometry& geometry, ForestStats& stats, std::string& text, const Report& report,
+                      Environment* environment = nullptr, std::uint64_t* usedSeed = nullptr);
+
+}  // namespace sprout

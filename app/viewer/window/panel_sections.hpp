@@ -1,0 +1,23 @@
+#pragma once
+// Private to app/viewer: the ImGui panel's sections (panel_grammar.cpp, panel_sections.cpp)
+// and colours, which drawPanel (panel.cpp) puts together.
+#include <imgui.h>
+
+#include "app/viewer/window/app.hpp"
+
+namespace sprout::viewer::detail {
+
+inline const ImVec4 kError(1.0f, 0.45f, 0.4f, 1), kWarning(1.0f, 0.8f, 0.35f, 1), kDim(0.65f, 0.65f, 0.65f, 1);
+
+// panel_grammar.cpp: the grammar's editor and its messages; which rule made a picked branch.
+void grammarSection(App& app);
+void whySection(App& app);
+// panel_sections.cpp: parameters (or an IFS's maps), growth, the environment, view and light,
+// presets.
+void parameterSection(App& app);
+void growthSection(App& app);
+void environmentSection(App& app, const Environment& env);
+void viewSection(App& app);
+void presetSection(App& app);
+
+}  // namespace sprout::viewer::detail
