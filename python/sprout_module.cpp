@@ -2,6 +2,14 @@
 // like the L-Py host. This is the native part, `sprout._sprout`; python/sprout/__init__.py
 // adds the notebook's picture and slider. It runs inside the Python process: L-Py models use
 // that interpreter (lpy/ built as sprout_lpy_ext), not an embedded one.
+//
+// Index of this file:
+//   [SECTION] Errors
+//   [SECTION] LString: a derived string
+//   [SECTION] Plant: a grammar and its growth
+//   [SECTION] Opening and parsing
+//   [SECTION] Arguments
+//   [SECTION] The module
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -26,6 +34,7 @@
 namespace py = pybind11;
 using namespace sprout;
 
+// [SECTION] Errors
 namespace {
 
 // A grammar error as Python sees it: sprout.GrammarError(message, line, col, diagnostics).
@@ -42,6 +51,7 @@ namespace {
     throw py::error_already_set();
 }
 
+// [SECTION] LString: a derived string
 // A string of modules, read-only and shared with the derivation (never copied): its length,
 // its modules by index, its symbols and parameters as numpy arrays over the same memory.
 class LString {
@@ -113,6 +123,7 @@ private:
     std::vector<size_t> m_marks;
 };
 
+// [SECTION] Plant: a grammar and its growth
 // One plant: a grammar (any kind Sprout opens) and its derivation, step by step.
 class Plant {
 public:
@@ -214,6 +225,7 @@ private:
     std::optional<std::uint64_t> m_seed;
 };
 
+// [SECTION] Opening and parsing
 Plant parsed(std::string text, FileKind kind, const std::string& path, const std::string& name, bool python, int steps) {
     Plant p;
     p.name = name;
@@ -296,6 +308,7 @@ Plant openSource(const std::string& source, bool python, int steps) {
     return p;
 }
 
+// [SECTION] Arguments
 render::ViewPreset viewNamed(const std::optional<std::string>& view) {
     if (!view || *view == "auto") return render::ViewPreset::Auto;
     if (*view == "front") return render::ViewPreset::Front;
@@ -314,10 +327,10 @@ py::array_t<T> owned(std::vector<T>&& data, std::vector<py::ssize_t> shape) {
 
 }  // namespace
 
-PYBIND11_MODULE(_sprout, m) {
-    m.doc() = "Sprout's L-system engine: grammars of every kind Sprout opens, derivation, the turtle, pictures and models";
-    m.attr("__version__") = SPROUT_VERSION;
+namespace {
 
+// [SECTION] The module
+void defineLString(py::module_& m) {
     py::class_<LString>(m, "LString", "A derived string: a read-only sequence of (name, params) modules, shared with the derivation")
         .def("__len__", &LString::size)
         .def("__getitem__", &LString::module)
@@ -329,7 +342,9 @@ PYBIND11_MODULE(_sprout, m) {
         .def_property_readonly("params", [](py::object self) { return self.cast<const LString&>().params(self); },
                                "Every parameter, module after module (numpy float64, no copy)")
         .def_property_readonly("alphabet", &LString::alphabet, "(name, parameter count) of each symbol");
+}
 
+void definePlant(py::module_& m) {
     py::class_<Plant>(m, "Plant", "A grammar of any kind Sprout opens, ready to derive, draw, render and export")
         .def_readonly("name", &Plant::name)
         .def_readonly("text", &Plant::text)
@@ -463,6 +478,16 @@ PYBIND11_MODULE(_sprout, m) {
             },
             py::arg("path"), py::arg("n") = py::none(), py::arg("seed") = py::none(), py::arg("sides") = 0,
             "Writes a glTF binary, OBJ + MTL, PLY or SVG of step n");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_sprout, m) {
+    m.doc() = "Sprout's L-system engine: grammars of every kind Sprout opens, derivation, the turtle, pictures and models";
+    m.attr("__version__") = SPROUT_VERSION;
+
+    defineLString(m);
+    definePlant(m);
 
     m.def("_install_openalea", &lpy::installOpenalea);
     // A scene of an L-Py script's Lsystem (openalea.lpy, sceneInterpretation) as a plant that

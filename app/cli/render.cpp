@@ -131,64 +131,48 @@ int renderForest(const std::string& source, SnapshotOptions o, const std::string
 
 }  // namespace
 
-int runRender(int argc, char** argv) {
-    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--transparent", "--stats", "--show-environment", "--no-python"},
-              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--max-memory", "--animate",
-               "--frames", "--fps", "--light-slice", "--detail"});
-    SnapshotOptions o;
-    auto n = args.integer("-n", 0, 10000);
-    auto seed = args.integer("--seed", 0, INT64_MAX);
-    auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
-    auto maxMemory = args.integer("--max-memory", 1, INT64_MAX / (1 << 20));
-    auto frames = args.integer("--frames", 1, 100000);
-    auto fps = args.integer("--fps", 1, 240);
-    std::string problem = args.error();
-    std::optional<AnimationKind> animate;
-    if (auto a = args.value("--animate"); problem.empty() && a) {
+namespace {
+
+// The picture's options read from the command line into `o` (and what to animate); what is
+// wrong with them, or nothing.
+std::string readPictureOptions(const Args& args, bool hasFramesOrFps, SnapshotOptions& o, std::optional<AnimationKind>& animate) {
+    if (auto a = args.value("--animate")) {
         if (*a == "growth") animate = AnimationKind::Growth;
         else if (*a == "turntable") animate = AnimationKind::Turntable;
-        else problem = "--animate expects growth or turntable";
+        else return "--animate expects growth or turntable";
     }
-    if (problem.empty() && (frames || fps) && !animate) problem = "--frames and --fps go with --animate growth|turntable";
-    if (problem.empty() && args.value("--size") && !parseSize(*args.value("--size"), o.width, o.height))
-        problem = "--size expects WIDTHxHEIGHT between 16x16 and 8192x8192, e.g. 1280x720";
-    if (problem.empty() && (!parseFloat(args.value("--yaw"), o.yaw) || !parseFloat(args.value("--pitch"), o.pitch)))
-        problem = "--yaw and --pitch expect degrees";
-    if (problem.empty() && (!parseFloat(args.value("--distance"), o.distance) || (o.distance && !(*o.distance > 0))))
-        problem = "--distance expects a positive number (from the camera to its target)";
-    if (problem.empty() && !parsePoint(args.value("--target"), o.target))
-        problem = "--target expects X,Y,Z (the point the camera looks at)";
-    if (auto v = args.value("--view"); problem.empty() && v) {
+    if (hasFramesOrFps && !animate) return "--frames and --fps go with --animate growth|turntable";
+    if (args.value("--size") && !parseSize(*args.value("--size"), o.width, o.height))
+        return "--size expects WIDTHxHEIGHT between 16x16 and 8192x8192, e.g. 1280x720";
+    if (!parseFloat(args.value("--yaw"), o.yaw) || !parseFloat(args.value("--pitch"), o.pitch))
+        return "--yaw and --pitch expect degrees";
+    if (!parseFloat(args.value("--distance"), o.distance) || (o.distance && !(*o.distance > 0)))
+        return "--distance expects a positive number (from the camera to its target)";
+    if (!parsePoint(args.value("--target"), o.target))
+        return "--target expects X,Y,Z (the point the camera looks at)";
+    if (auto v = args.value("--view")) {
         if (*v == "front") o.view = render::ViewPreset::Front;
         else if (*v == "side") o.view = render::ViewPreset::Side;
         else if (*v == "top") o.view = render::ViewPreset::Top;
         else if (*v == "iso") o.view = render::ViewPreset::Iso;
-        else if (*v != "auto") problem = "--view expects front, side, top, iso or auto";
+        else if (*v != "auto") return "--view expects front, side, top, iso or auto";
     }
     std::optional<float> slice;
-    if (problem.empty() && (!parseFloat(args.value("--light-slice"), slice) || (slice && !(*slice >= 0 && *slice <= 1))))
-        problem = "--light-slice expects a height from 0 (the plant's lowest point) to 1 (its top)";
+    if (!parseFloat(args.value("--light-slice"), slice) || (slice && !(*slice >= 0 && *slice <= 1)))
+        return "--light-slice expects a height from 0 (the plant's lowest point) to 1 (its top)";
     o.showEnvironment = args.flag("--show-environment") || slice;
     o.environmentView.lightSlice = slice.has_value();
     if (slice) o.environmentView.sliceHeight = *slice;
-    if (auto d = args.value("--detail"); problem.empty() && d) {
+    if (auto d = args.value("--detail")) {
         if (*d == "viewer") o.viewerDetail = true;
-        else if (*d != "full") problem = "--detail expects full (the default) or viewer (a big plant as the viewer window draws it)";
+        else if (*d != "full") return "--detail expects full (the default) or viewer (a big plant as the viewer window draws it)";
     }
-    if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
-        problem = "expects one FILE or PRESET and -o OUT.png";
-    if (!problem.empty()) {
-        std::cerr << "sprout render: " << problem
-                  << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
-                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
-                     " [--no-shadows] [--no-ground] [--transparent] [--show-environment] [--light-slice H] [--detail full|viewer]"
-                     " [--max-modules M] [--max-memory MB] [--no-python]\n"
-                     "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n"
-                     "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
-        return 2;
-    }
-    const std::string source = args.positionals()[0];
-    // The view a picture was rendered with comes back with it, unless one is given now.
+    return {};
+}
+
+// The view a picture was rendered with comes back with it, unless one is given now: the view
+// the picture will carry (its --view, --yaw... as given), and `o` set to it.
+std::string viewToKeep(const Args& args, const std::string& source, SnapshotOptions& o) {
     std::string view;
     for (const char* k : {"--view", "--yaw", "--pitch", "--distance", "--target"})
         if (auto v = args.value(k)) view += std::string(view.empty() ? "" : " ") + k + " " + *v;
@@ -209,6 +193,102 @@ int runRender(int argc, char** argv) {
             view = *v;
         }
     }
+    return view;
+}
+
+// A growth or turntable video (or numbered frames) of the loaded plant.
+int renderVideo(const LoadedGrammar& loaded, AnimationKind kind, const SnapshotOptions& o, const std::string& recipe,
+                std::optional<std::int64_t> frames, std::optional<std::int64_t> fps, const std::string& out) {
+    AnimationOptions ao;
+    ao.kind = kind;
+    if (frames) ao.frames = int(*frames);
+    if (fps) ao.fps = int(*fps);
+    ao.recipe = recipe;
+    ao.steps = loaded.steps;
+    const bool tty = isatty(2);
+    if (tty)
+        ao.progress = [&](int k, int total) {
+            std::fprintf(stderr, "\rrendering frame %d of %d", k, total);
+            if (k == total) std::fprintf(stderr, "\n");
+        };
+    AnimationResult ar;
+    std::string error;
+    auto t0 = std::chrono::steady_clock::now();
+    if (!renderAnimation(loaded.grammar, o, ao, out, ar, error)) {
+        std::cerr << out << ": " << error << "\n";
+        return 1;
+    }
+    if (!ar.note.empty()) std::cerr << out << ": " << ar.note << "\n";
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fprintf(info(out), "%s: %d frames%s in %.1f s\n", ar.video ? out.c_str() : ar.firstFrame.c_str(), ar.frames,
+                ar.video ? "" : " (numbered PNG files)", secs);
+    return 0;
+}
+
+// The sky (and ground, unless --no-ground) left out: each pixel the plant does not change from
+// the empty scene seen by the same camera is transparent (icons, overlays).
+bool makeSkyTransparent(Snapshot& shot, const SnapshotOptions& o, std::string& error) {
+    const render::Camera c = snapshotCamera(shot.geometry, o);
+    SnapshotOptions e = o;
+    e.yaw = c.yaw;
+    e.pitch = c.pitch;
+    e.distance = c.distance;
+    e.target = c.target;
+    e.showEnvironment = false;
+    Snapshot empty;
+    if (!renderGeometry(e, empty, error)) return false;
+    auto& px = shot.image.rgba;
+    const auto& bg = empty.image.rgba;
+    for (std::size_t i = 0; i + 3 < px.size() && i + 3 < bg.size(); i += 4) {
+        const int d = std::max({std::abs(int(px[i]) - int(bg[i])), std::abs(int(px[i + 1]) - int(bg[i + 1])),
+                                std::abs(int(px[i + 2]) - int(bg[i + 2]))});
+        px[i + 3] = std::uint8_t(d <= 2 ? 0 : d >= 24 ? 255 : d * 255 / 24);  // soft edges where the plant meets the sky
+    }
+    return true;
+}
+
+void printPictureStats(const Snapshot& shot, const std::string& out) {
+    std::fprintf(info(out), "%s: %zu segments (%s), %zu surfaces, %zu triangles; derive %.1f ms, interpret %.1f ms, "
+                "render %.1f ms\n",
+                out.c_str(), shot.stats.cylinders,
+                shot.stats.curve ? "2D curve"
+                                 : ("fine " + std::to_string(shot.stats.levels[0]) + ", coarse " +
+                                    std::to_string(shot.stats.levels[1]) + ", prisms " + std::to_string(shot.stats.levels[2]) +
+                                    ", lines " + std::to_string(shot.stats.levels[3]))
+                                       .c_str(),
+                shot.stats.surfaces, shot.stats.triangles, shot.deriveMs, shot.interpretMs, shot.renderMs);
+}
+
+}  // namespace
+
+int runRender(int argc, char** argv) {
+    Args args(argc, argv, 1, {"--no-shadows", "--no-ground", "--transparent", "--stats", "--show-environment", "--no-python"},
+              {"-o", "--size", "-n", "--seed", "--view", "--yaw", "--pitch", "--distance", "--target", "--max-modules", "--max-memory", "--animate",
+               "--frames", "--fps", "--light-slice", "--detail"});
+    SnapshotOptions o;
+    auto n = args.integer("-n", 0, 10000);
+    auto seed = args.integer("--seed", 0, INT64_MAX);
+    auto maxModules = args.integer("--max-modules", 1, INT64_MAX);
+    auto maxMemory = args.integer("--max-memory", 1, INT64_MAX / (1 << 20));
+    auto frames = args.integer("--frames", 1, 100000);
+    auto fps = args.integer("--fps", 1, 240);
+    std::optional<AnimationKind> animate;
+    std::string problem = args.error();
+    if (problem.empty()) problem = readPictureOptions(args, bool(frames || fps), o, animate);
+    if (problem.empty() && (args.positionals().size() != 1 || !args.value("-o")))
+        problem = "expects one FILE or PRESET and -o OUT.png";
+    if (!problem.empty()) {
+        std::cerr << "sprout render: " << problem
+                  << "\nusage: sprout render FILE|PRESET -o out.png [--size 1280x720] [-n N] [--seed S]"
+                     " [--view front|side|top|iso] [--yaw DEG --pitch DEG] [--distance D] [--target X,Y,Z]"
+                     " [--no-shadows] [--no-ground] [--transparent] [--show-environment] [--light-slice H] [--detail full|viewer]"
+                     " [--max-modules M] [--max-memory MB] [--no-python]\n"
+                     "       An L-Py model (.lpy) is a Python program: it runs as `python3 FILE` would; --no-python refuses it.\n"
+                     "       sprout render FILE|PRESET --animate growth|turntable -o out.mp4|frames.png [--frames N] [--fps F] ...\n";
+        return 2;
+    }
+    const std::string source = args.positionals()[0];
+    const std::string view = viewToKeep(args, source, o);
     // A PNG of an IFS or a forest scene is rendered as what it holds.
     const FileKind kind = sourceKind(source);
     if (maxModules) o.limits.maxModules = std::uint64_t(*maxModules);
@@ -236,33 +316,7 @@ int runRender(int argc, char** argv) {
     std::string recipe = loaded->text;
     if (n && !loaded->ranPython) recipe = setDirective(recipe, directiveValue(recipe, "iterations") ? "iterations" : "n", std::to_string(*n));
     if (seed) recipe = setDirective(recipe, "seed", std::to_string(*seed));
-    if (animate) {
-        AnimationOptions ao;
-        ao.kind = *animate;
-        if (frames) ao.frames = int(*frames);
-        if (fps) ao.fps = int(*fps);
-        ao.recipe = recipe;
-        ao.steps = loaded->steps;
-        const bool tty = isatty(2);
-        if (tty)
-            ao.progress = [&](int k, int total) {
-                std::fprintf(stderr, "\rrendering frame %d of %d", k, total);
-                if (k == total) std::fprintf(stderr, "\n");
-            };
-        AnimationResult ar;
-        std::string error;
-        const std::string out = *args.value("-o");
-        auto t0 = std::chrono::steady_clock::now();
-        if (!renderAnimation(loaded->grammar, o, ao, out, ar, error)) {
-            std::cerr << out << ": " << error << "\n";
-            return 1;
-        }
-        if (!ar.note.empty()) std::cerr << out << ": " << ar.note << "\n";
-        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::fprintf(info(out), "%s: %d frames%s in %.1f s\n", ar.video ? out.c_str() : ar.firstFrame.c_str(), ar.frames,
-                    ar.video ? "" : " (numbered PNG files)", secs);
-        return 0;
-    }
+    if (animate) return renderVideo(*loaded, *animate, o, recipe, frames, fps, *args.value("-o"));
     Snapshot shot;
     std::string error;
     if (!renderSnapshot(loaded->grammar, o, shot, error)) {
@@ -270,28 +324,9 @@ int runRender(int argc, char** argv) {
         return 1;
     }
     paintLabels(shot.image, shot.geometry, snapshotCamera(shot.geometry, o));
-    if (args.flag("--transparent")) {
-        // The sky (and ground, unless --no-ground) left out: each pixel the plant does not
-        // change from the empty scene seen by the same camera is transparent (icons, overlays).
-        const render::Camera c = snapshotCamera(shot.geometry, o);
-        SnapshotOptions e = o;
-        e.yaw = c.yaw;
-        e.pitch = c.pitch;
-        e.distance = c.distance;
-        e.target = c.target;
-        e.showEnvironment = false;
-        Snapshot empty;
-        if (!renderGeometry(e, empty, error)) {
-            std::cerr << loaded->displayName << ": " << error << "\n";
-            return 1;
-        }
-        auto& px = shot.image.rgba;
-        const auto& bg = empty.image.rgba;
-        for (std::size_t i = 0; i + 3 < px.size() && i + 3 < bg.size(); i += 4) {
-            const int d = std::max({std::abs(int(px[i]) - int(bg[i])), std::abs(int(px[i + 1]) - int(bg[i + 1])),
-                                    std::abs(int(px[i + 2]) - int(bg[i + 2]))});
-            px[i + 3] = std::uint8_t(d <= 2 ? 0 : d >= 24 ? 255 : d * 255 / 24);  // soft edges where the plant meets the sky
-        }
+    if (args.flag("--transparent") && !makeSkyTransparent(shot, o, error)) {
+        std::cerr << loaded->displayName << ": " << error << "\n";
+        return 1;
     }
     shot.image.text.emplace_back("lsys", recipe);
     if (!view.empty()) shot.image.text.emplace_back("sprout-view", view);
@@ -301,16 +336,7 @@ int runRender(int argc, char** argv) {
         std::cerr << out << ": " << error << "\n";
         return 1;
     }
-    if (args.flag("--stats"))
-        std::fprintf(info(out), "%s: %zu segments (%s), %zu surfaces, %zu triangles; derive %.1f ms, interpret %.1f ms, "
-                    "render %.1f ms\n",
-                    out.c_str(), shot.stats.cylinders,
-                    shot.stats.curve ? "2D curve"
-                                     : ("fine " + std::to_string(shot.stats.levels[0]) + ", coarse " +
-                                        std::to_string(shot.stats.levels[1]) + ", prisms " + std::to_string(shot.stats.levels[2]) +
-                                        ", lines " + std::to_string(shot.stats.levels[3]))
-                                           .c_str(),
-                    shot.stats.surfaces, shot.stats.triangles, shot.deriveMs, shot.interpretMs, shot.renderMs);
+    if (args.flag("--stats")) printPictureStats(shot, out);
     return 0;
 }
 

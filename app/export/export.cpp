@@ -1,3 +1,13 @@
+// The model writers, streamed: glTF binary, OBJ + MTL, PLY (SVG is svg.cpp), all through one
+// buffered, atomic output.
+//
+// Index of this file:
+//   [SECTION] Output, progress, numbers
+//   [SECTION] glTF binary
+//   [SECTION] OBJ + MTL
+//   [SECTION] PLY
+//   [SECTION] Formats and the one entry
+
 #include "app/export/export.hpp"
 
 #include <algorithm>
@@ -15,6 +25,7 @@
 #include "app/export/svg.hpp"
 #include "core/base/atomic_file.hpp"
 
+// [SECTION] Output, progress, numbers
 namespace sprout::exporter {
 namespace {
 
@@ -142,6 +153,7 @@ std::string jsonString(std::string_view s) {
 
 const char* kParts[] = {"stems", "leaves", "petals", "spheres", "polygons"};
 
+// [SECTION] glTF binary
 // ---------------------------------------------------------------------------------- glTF
 bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
@@ -268,6 +280,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
     return finish(out, st, error);
 }
 
+// [SECTION] OBJ + MTL
 // ----------------------------------------------------------------------------- OBJ + MTL
 bool writeObj(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
@@ -343,6 +356,7 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
     return finish(out, st, error);
 }
 
+// [SECTION] PLY
 // ---------------------------------------------------------------------------------- PLY
 bool writePly(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
@@ -390,6 +404,7 @@ bool writePly(const ExportScene& scene, const std::string& path, const ExportOpt
 
 }  // namespace
 
+// [SECTION] Formats and the one entry
 std::optional<Format> formatFromPath(const std::string& path) {
     auto dot = path.find_last_of('.');
     if (dot == std::string::npos) return std::nullopt;

@@ -2,6 +2,13 @@
 // images, the warm-up that compiles every way it draws before the first frame, the stretch
 // of a smaller picture over a bigger one, and readback. What it draws is uploaded by
 // renderer_upload.cpp and drawn by renderer_draw.cpp.
+//
+// Index of this file:
+//   [SECTION] Helpers
+//   [SECTION] GL objects: buffers and programs
+//   [SECTION] Multisampled images
+//   [SECTION] Set-up and warm-up
+//   [SECTION] Readback
 #include "app/render/renderer.hpp"
 
 #include <algorithm>
@@ -22,6 +29,7 @@ namespace sprout::render {
 using detail::kShadowSize;
 using detail::kGroundShadowSize;
 
+// [SECTION] Helpers
 namespace {
 // The texture bound now is filtered linearly and clamped at its edges.
 void linearClamped() {
@@ -41,6 +49,7 @@ Geometry oneSegmentCurve() {
 }
 }  // namespace
 
+// [SECTION] GL objects: buffers and programs
 // Baked triangles: position, normal, colour (polygon.vert's layout).
 void Renderer::Impl::makeBaked(Buffers& b) {
     glGenVertexArrays(1, &b.vao);
@@ -192,6 +201,7 @@ bool Renderer::Impl::build(std::string& error) {
     return ok;
 }
 
+// [SECTION] Multisampled images
 void Renderer::Impl::ensureMsaa(int w, int h, int wantSamples, int slot) {
     wantSamples = std::min(wantSamples, samples);
     Msaa& t = msaa[slot];
@@ -231,6 +241,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::setDetail(Quality detail) { m->detail = detail; }
 
+// [SECTION] Set-up and warm-up
 bool Renderer::init(ProcLoader loader, std::string& error) {
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(loader))) {
         error = "could not load OpenGL functions";
@@ -380,6 +391,7 @@ void Renderer::stretch(unsigned texture, int width, int height, int textureWidth
     glEnable(GL_DEPTH_TEST);
 }
 
+// [SECTION] Readback
 std::vector<std::uint8_t> Renderer::readPixels(int width, int height, unsigned source) const {
     std::vector<std::uint8_t> pixels(std::size_t(width) * std::size_t(height) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, source);

@@ -222,6 +222,15 @@ private:
     void plan(Pass& pass, const Camera& camera, int width, int height, const RenderOptions& options, unsigned target, int x,
               int y) const;
     bool step(Pass& pass, std::size_t budget, bool wait);
+    // step()'s phases in order (renderer_draw.cpp), each drawing its next piece; false when the
+    // picture is not done yet.
+    struct Piece;
+    bool shadowPhase(Piece& piece);
+    bool rasterPhase(Pass& pass, bool wait);
+    bool backdropPhase(Piece& piece, bool groundShadowTexture);
+    bool scenePhase(Piece& piece);
+    bool overlayPhase(Piece& piece);
+    void drawHighlight(const Pass& pass);
     glm::vec3 groundCentre(const Pass& pass) const;  // the ground disc's centre, under the plant
     int partOf(const Pass& pass) const;
     std::size_t partEnd(const Pass& pass) const;

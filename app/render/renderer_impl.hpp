@@ -1,7 +1,7 @@
 #pragma once
 // Private to app/render: the renderer's GL state (Renderer::Impl) and a picture's plan and
 // progress (Renderer::Pass), shared by renderer.cpp (set-up), renderer_upload.cpp (the scene
-// on the GPU) and renderer_draw.cpp (pictures).
+// on the GPU), renderer_draw.cpp (pictures) and renderer_phases.cpp (a picture's passes).
 #include <cstddef>
 #include <cstdint>
 #include <future>
@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include "app/render/gl.hpp"
 #include "app/render/renderer.hpp"
@@ -31,6 +33,15 @@ struct Buffers {
 };
 
 }  // namespace detail
+
+// A uniform of the program in use, by name.
+inline void setUniform(GLuint p, const char* name, const glm::mat4& m) {
+    glUniformMatrix4fv(glGetUniformLocation(p, name), 1, GL_FALSE, glm::value_ptr(m));
+}
+inline void setUniform(GLuint p, const char* name, const glm::vec3& v) { glUniform3fv(glGetUniformLocation(p, name), 1, glm::value_ptr(v)); }
+inline void setUniform(GLuint p, const char* name, const glm::vec2& v) { glUniform2fv(glGetUniformLocation(p, name), 1, glm::value_ptr(v)); }
+inline void setUniform(GLuint p, const char* name, float v) { glUniform1f(glGetUniformLocation(p, name), v); }
+inline void setUniform(GLuint p, const char* name, int v) { glUniform1i(glGetUniformLocation(p, name), v); }
 
 struct Renderer::Impl {
     using Buffers = detail::Buffers;

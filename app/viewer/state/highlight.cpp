@@ -1,3 +1,13 @@
+// The editor's colours: each line of every language Sprout opens cut into spans of tokens.
+//
+// Index of this file:
+//   [SECTION] The lexer
+//   [SECTION] Rules and settings
+//   [SECTION] Comments, by language
+//   [SECTION] Lines, by language
+//   [SECTION] A line highlighted
+//   [SECTION] Brackets
+
 #include "app/viewer/state/highlight.hpp"
 
 #include <algorithm>
@@ -11,6 +21,7 @@ bool alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == 
 bool alnum(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 
+// [SECTION] The lexer
 struct Lexer {
     std::string_view s;
     std::vector<Span>& out;
@@ -138,6 +149,7 @@ struct Lexer {
     }
 };
 
+// [SECTION] Rules and settings
 // The first `->` / `-->` / `→` of a line that is not inside brackets, or npos.
 size_t arrow(std::string_view s, size_t& length) {
     int depth = 0;
@@ -218,58 +230,163 @@ bool setting(Lexer& lx, int begin, int end, bool axiomModules) {
     return true;
 }
 
+// [SECTION] Comments, by language
+// Python's comments: '#' outside a string; where the line's code ends.
+int endOfPython(std::string_view line) {
+    char quote = 0;
+    for (int i = 0; i < int(line.size()); ++i) {
+        const char c = line[size_t(i)];
+        if (quote) {
+            if (c == '\\') ++i;
+            else if (c == quote) quote = 0;
+        } else if (c == '\'' || c == '"') {
+            quote = c;
+        } else if (c == '#') {
+            return i;
+        }
+    }
+    return int(line.size());
+}
+
+// The cpfg family's comments: block comments carry over lines; // runs to the end. Where the
+// line's code begins and ends; false when the whole line is a comment (highlighted).
+bool cpfgCode(std::string_view line, LineState& state, Lexer& lx, int& begin, int& end) {
+    const int n = int(line.size());
+    if (state.inBlockComment) {
+        const size_t close = line.find("*/");
+        if (close == std::string_view::npos) {
+            lx.add(0, n, Token::Comment);
+            return false;
+        }
+        lx.add(0, int(close) + 2, Token::Comment);
+        begin = int(close) + 2;
+        state.inBlockComment = false;
+    }
+    for (int i = begin; i + 1 < n; ++i) {
+        if (line.compare(size_t(i), 2, "//") == 0) {
+            end = i;
+            break;
+        }
+        if (line.compare(size_t(i), 2, "/*") == 0) {
+            const size_t close = line.find("*/", size_t(i) + 2);
+            if (close == std::string_view::npos) {
+                state.inBlockComment = true;
+                end = i;
+                break;
+            }
+            // A comment inside the line: highlight around it (rare; the rest is plain).
+            end = i;
+            break;
+        }
+    }
+    return true;
+}
+
+// [SECTION] Lines, by language
+// An L-Py line: the L-system's lines (sections, settings, rules written with an arrow, module
+// declarations) as the cpfg family's; everything else is Python.
+void highlightLpy(Lexer& lx, std::string_view line, std::string_view body, int begin, int end) {
+    static const char* words[] = {"endlsystem", "decomposition", "homomorphism", "production", "interpretation",
+                                  "module", "endgroup", "group", "consider", "ignore"};
+    bool keyword = false;
+    for (const char* w : words) {
+        const std::string_view ws(w);
+        if (body.compare(0, ws.size(), ws) == 0 && (body.size() == ws.size() || !alnum(body[ws.size()]))) {
+            lx.add(begin, begin + int(ws.size()), Token::Keyword);
+            int j = begin + int(ws.size());
+            while (j < end && line[size_t(j)] == ' ') ++j;
+            if (j < end && line[size_t(j)] == ':') lx.add(j, j + 1, Token::Operator), ++j;
+            lx.modules(j, end);
+            keyword = true;
+            break;
+        }
+    }
+    if (keyword) return;
+    static const char* settings[] = {"Axiom:", "derivation length:", "maximum depth:", "decomposition maximum depth:"};
+    bool isSetting = false;
+    for (const char* w : settings) isSetting = isSetting || body.rfind(w, 0) == 0;
+    size_t len = 0;
+    const size_t at = arrow(body, len);
+    if (isSetting) {
+        const int colon = begin + int(body.find(':'));
+        lx.add(begin, colon + 1, Token::Setting);
+        if (body.rfind("Axiom:", 0) == 0) lx.modules(colon + 1, end);
+        else lx.python(colon + 1, end);
+    } else if (at != std::string_view::npos && line.substr(size_t(begin) + at, len) == "-->") {
+        rule(lx, begin, end, size_t(begin) + at, len);
+    } else {
+        lx.python(begin, end);
+    }
+}
+
+// A cpfg line: #define and #include, section keywords, rules, settings.
+void highlightCpfg(Lexer& lx, std::string_view line, std::string_view body, int begin, int end) {
+    if (body[0] == '#') {  // #define, #include
+        int j = begin + 1;
+        while (j < end && alpha(line[size_t(j)])) ++j;
+        lx.add(begin, j, Token::Keyword);
+        lx.expression(j, end);
+        return;
+    }
+    static const char* words[] = {"endlsystem", "decomposition", "homomorphism", "production", "interpretation",
+                                  "produce", "nproduce", "module", "endgroup", "group"};
+    bool keyword = false;
+    for (const char* w : words) {
+        const std::string_view ws(w);
+        if (body.compare(0, ws.size(), ws) == 0 && (body.size() == ws.size() || !alnum(body[ws.size()]))) {
+            lx.add(begin, begin + int(ws.size()), Token::Keyword);
+            lx.modules(begin + int(ws.size()), end);
+            keyword = true;
+            break;
+        }
+    }
+    if (keyword) return;
+    size_t len = 0;
+    const size_t at = arrow(body, len);
+    if (at != std::string_view::npos) rule(lx, begin, end, size_t(begin) + at, len);
+    else setting(lx, begin, end, true) || (lx.modules(begin, end), true);
+}
+
+// An Lparser or Fractint line: "X=successor" rules; Fractint's "Name {", "Angle 6", "Axiom F";
+// Lparser's numbers.
+void highlightImported(Lexer& lx, FileKind kind, std::string_view line, std::string_view body, int begin, int end) {
+    const size_t eq = body.find('=');
+    if (eq != std::string_view::npos) {
+        lx.modules(begin, begin + int(eq));
+        lx.add(begin + int(eq), begin + int(eq) + 1, Token::Arrow);
+        lx.modules(begin + int(eq) + 1, end);
+    } else if (alpha(body[0])) {
+        int j = begin;
+        while (j < end && alnum(line[size_t(j)])) ++j;
+        std::string word(line.substr(size_t(begin), size_t(j - begin)));
+        for (char& c : word) c = char(std::tolower(static_cast<unsigned char>(c)));
+        if (word == "angle" || word == "axiom") {
+            lx.add(begin, j, Token::Keyword);
+            if (word == "axiom") lx.modules(j, end);
+            else lx.expression(j, end);
+        } else if (kind == FileKind::Fractint) {
+            lx.add(begin, j, Token::Setting);  // a system's name
+            lx.expression(j, end);
+        } else {
+            lx.modules(begin, end);
+        }
+    } else {
+        lx.expression(begin, end);
+    }
+}
+
 }  // namespace
 
+// [SECTION] A line highlighted
 void highlightLine(FileKind kind, std::string_view line, LineState& state, std::vector<Span>& out) {
     Lexer lx{line, out};
     const int n = int(line.size());
     int end = n;
     int begin = 0;
-    const bool cpfg = cpfgFamily(kind) && kind != FileKind::Lpy;
     if (kind == FileKind::Lpy) {
-        // Python's comments: '#' outside a string.
-        char quote = 0;
-        for (int i = 0; i < n; ++i) {
-            const char c = line[size_t(i)];
-            if (quote) {
-                if (c == '\\') ++i;
-                else if (c == quote) quote = 0;
-            } else if (c == '\'' || c == '"') {
-                quote = c;
-            } else if (c == '#') {
-                end = i;
-                break;
-            }
-        }
-    } else if (cpfg) {
-        // Block comments carry over lines; // runs to the end.
-        if (state.inBlockComment) {
-            const size_t close = line.find("*/");
-            if (close == std::string_view::npos) {
-                lx.add(0, n, Token::Comment);
-                return;
-            }
-            lx.add(0, int(close) + 2, Token::Comment);
-            begin = int(close) + 2;
-            state.inBlockComment = false;
-        }
-        for (int i = begin; i + 1 < n; ++i) {
-            if (line.compare(size_t(i), 2, "//") == 0) {
-                end = i;
-                break;
-            }
-            if (line.compare(size_t(i), 2, "/*") == 0) {
-                const size_t close = line.find("*/", size_t(i) + 2);
-                if (close == std::string_view::npos) {
-                    state.inBlockComment = true;
-                    end = i;
-                    break;
-                }
-                // A comment inside the line: highlight around it (rare; the rest is plain).
-                end = i;
-                break;
-            }
-        }
+        end = endOfPython(line);
+    } else if (cpfgFamily(kind)) {
+        if (!cpfgCode(line, state, lx, begin, end)) return;
     } else {
         const char mark = kind == FileKind::Fractint ? ';' : '#';
         const size_t c = line.find(mark);
@@ -279,69 +396,12 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     while (begin < end && (line[size_t(begin)] == ' ' || line[size_t(begin)] == '\t')) ++begin;
     const std::string_view body = line.substr(size_t(begin), size_t(end - begin));
     if (!body.empty()) switch (kind) {
-        case FileKind::Lpy: {
-            // The L-system's lines (sections, settings, rules written with an arrow, module
-            // declarations) as the cpfg family's; everything else is Python.
-            static const char* words[] = {"endlsystem", "decomposition", "homomorphism", "production", "interpretation",
-                                          "module", "endgroup", "group", "consider", "ignore"};
-            bool keyword = false;
-            for (const char* w : words) {
-                const std::string_view ws(w);
-                if (body.compare(0, ws.size(), ws) == 0 && (body.size() == ws.size() || !alnum(body[ws.size()]))) {
-                    lx.add(begin, begin + int(ws.size()), Token::Keyword);
-                    int j = begin + int(ws.size());
-                    while (j < end && line[size_t(j)] == ' ') ++j;
-                    if (j < end && line[size_t(j)] == ':') lx.add(j, j + 1, Token::Operator), ++j;
-                    lx.modules(j, end);
-                    keyword = true;
-                    break;
-                }
-            }
-            if (keyword) break;
-            static const char* settings[] = {"Axiom:", "derivation length:", "maximum depth:", "decomposition maximum depth:"};
-            bool isSetting = false;
-            for (const char* w : settings) isSetting = isSetting || body.rfind(w, 0) == 0;
-            size_t len = 0;
-            const size_t at = arrow(body, len);
-            if (isSetting) {
-                const int colon = begin + int(body.find(':'));
-                lx.add(begin, colon + 1, Token::Setting);
-                if (body.rfind("Axiom:", 0) == 0) lx.modules(colon + 1, end);
-                else lx.python(colon + 1, end);
-            } else if (at != std::string_view::npos && line.substr(size_t(begin) + at, len) == "-->") {
-                rule(lx, begin, end, size_t(begin) + at, len);
-            } else {
-                lx.python(begin, end);
-            }
+        case FileKind::Lpy:
+            highlightLpy(lx, line, body, begin, end);
             break;
-        }
-        case FileKind::Cpfg: {
-            if (body[0] == '#') {  // #define, #include
-                int j = begin + 1;
-                while (j < end && alpha(line[size_t(j)])) ++j;
-                lx.add(begin, j, Token::Keyword);
-                lx.expression(j, end);
-                break;
-            }
-            static const char* words[] = {"endlsystem", "decomposition", "homomorphism", "production", "interpretation",
-                                          "produce", "nproduce", "module", "endgroup", "group"};
-            bool keyword = false;
-            for (const char* w : words) {
-                const std::string_view ws(w);
-                if (body.compare(0, ws.size(), ws) == 0 && (body.size() == ws.size() || !alnum(body[ws.size()]))) {
-                    lx.add(begin, begin + int(ws.size()), Token::Keyword);
-                    lx.modules(begin + int(ws.size()), end);
-                    keyword = true;
-                    break;
-                }
-            }
-            if (keyword) break;
-            size_t len = 0;
-            const size_t at = arrow(body, len);
-            if (at != std::string_view::npos) rule(lx, begin, end, size_t(begin) + at, len);
-            else setting(lx, begin, end, true) || (lx.modules(begin, end), true);
+        case FileKind::Cpfg:
+            highlightCpfg(lx, line, body, begin, end);
             break;
-        }
         case FileKind::Lsys: {
             size_t len = 0;
             const size_t at = arrow(body, len);
@@ -350,33 +410,9 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
             break;
         }
         case FileKind::Lparser:
-        case FileKind::Fractint: {
-            // "X=successor" rules; Fractint's "Name {", "Angle 6", "Axiom F"; Lparser's numbers.
-            const size_t eq = body.find('=');
-            if (eq != std::string_view::npos) {
-                lx.modules(begin, begin + int(eq));
-                lx.add(begin + int(eq), begin + int(eq) + 1, Token::Arrow);
-                lx.modules(begin + int(eq) + 1, end);
-            } else if (alpha(body[0])) {
-                int j = begin;
-                while (j < end && alnum(line[size_t(j)])) ++j;
-                std::string word(line.substr(size_t(begin), size_t(j - begin)));
-                for (char& c : word) c = char(std::tolower(static_cast<unsigned char>(c)));
-                if (word == "angle" || word == "axiom") {
-                    lx.add(begin, j, Token::Keyword);
-                    if (word == "axiom") lx.modules(j, end);
-                    else lx.expression(j, end);
-                } else if (kind == FileKind::Fractint) {
-                    lx.add(begin, j, Token::Setting);  // a system's name
-                    lx.expression(j, end);
-                } else {
-                    lx.modules(begin, end);
-                }
-            } else {
-                lx.expression(begin, end);
-            }
+        case FileKind::Fractint:
+            highlightImported(lx, kind, line, body, begin, end);
             break;
-        }
         case FileKind::Ifs:
             lx.expression(begin, end);
             break;
@@ -388,6 +424,7 @@ void highlightLine(FileKind kind, std::string_view line, LineState& state, std::
     if (end < n) lx.add(end, n, Token::Comment);
 }
 
+// [SECTION] Brackets
 std::optional<Pos> matchingBracket(const TextModel& t, Pos at) {
     auto charAt = [&](Pos p) { return p.col < int(t.line(p.line).size()) ? t.line(p.line)[size_t(p.col)] : '\0'; };
     static const std::string open = "([{", close = ")]}";

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <deque>
 #include <future>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -230,6 +231,11 @@ private:
     int m_dragFrames = 0;           // `drag`: frames still to move
     bool m_thumbnailsSeen = false;  // `wait-thumbnails`: a frame has polled them since
     float m_dragYaw = 0, m_dragPitch = 0;  // degrees a frame
+    // A line's command run (script.cpp, by kind); nullopt: not one of that kind.
+    std::optional<bool> documentCommand(App& app, const std::string& cmd, std::istringstream& in);
+    std::optional<bool> reportCommand(App& app, const std::string& cmd, std::istringstream& in);
+    std::optional<bool> pickCommand(App& app, const std::string& cmd, std::istringstream& in);
+    bool viewCommand(App& app, const std::string& cmd, std::istringstream& in);
 };
 
 }  // namespace sprout::viewer

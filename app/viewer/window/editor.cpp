@@ -149,22 +149,35 @@ bool Editor::handleKeys(FileKind kind, const std::vector<std::string>& completio
     return moved;
 }
 
+// The find bar over the text: Enter or "next" finds the next match.
+void Editor::drawFindBar() {
+    ImGui::SetNextItemWidth(160);
+    if (m_findFocus) ImGui::SetKeyboardFocusHere(), m_findFocus = false;
+    const bool enter = ImGui::InputText("##find", m_find, sizeof m_find, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ImGui::Button("next") || enter) {
+        if (m_model.findNext(m_find)) m_scrollToCursor = true;
+        if (enter) ImGui::SetKeyboardFocusHere(-1);  // Enter again finds the next
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("x")) m_findOpen = false;
+}
+
+// The completions of the word at the cursor, under it.
+void Editor::drawCompletions(ImVec2 under) {
+    ImGui::SetNextWindowPos(under);
+    ImGui::BeginTooltip();
+    for (size_t k = 0; k < m_candidates.size(); ++k)
+        ImGui::TextColored(int(k) == m_candidate ? ImVec4(1, 0.85f, 0.4f, 1) : ImVec4(0.8f, 0.8f, 0.8f, 1), "%s", m_candidates[k].c_str());
+    ImGui::TextDisabled("Tab: take it");
+    ImGui::EndTooltip();
+}
+
 bool Editor::draw(const char* id, float height, FileKind kind, const std::vector<Marker>& markers,
                   const std::vector<std::string>& completions) {
     ImGui::PushID(id);
     bool changed = false;
-    if (m_findOpen) {  // the find bar
-        ImGui::SetNextItemWidth(160);
-        if (m_findFocus) ImGui::SetKeyboardFocusHere(), m_findFocus = false;
-        const bool enter = ImGui::InputText("##find", m_find, sizeof m_find, ImGuiInputTextFlags_EnterReturnsTrue);
-        ImGui::SameLine();
-        if (ImGui::Button("next") || enter) {
-            if (m_model.findNext(m_find)) m_scrollToCursor = true;
-            if (enter) ImGui::SetKeyboardFocusHere(-1);  // Enter again finds the next
-        }
-        ImGui::SameLine();
-        if (ImGui::Button("x")) m_findOpen = false;
-    }
+    if (m_findOpen) drawFindBar();
     if (m_highlighted != m_model.version() || kind != m_kind) highlightAll(kind);
     const float lineH = ImGui::GetTextLineHeight();
     const float charW = ImGui::CalcTextSize("0").x;
@@ -291,15 +304,7 @@ bool Editor::draw(const char* id, float height, FileKind kind, const std::vector
         if (left < ImGui::GetScrollX()) ImGui::SetScrollX(left);
         else if (left > ImGui::GetScrollX() + viewW) ImGui::SetScrollX(left - viewW);
     }
-    // Completions under the cursor.
-    if (m_focused && !m_candidates.empty()) {
-        ImGui::SetNextWindowPos(ImVec2(cx, cy + lineH));
-        ImGui::BeginTooltip();
-        for (size_t k = 0; k < m_candidates.size(); ++k)
-            ImGui::TextColored(int(k) == m_candidate ? ImVec4(1, 0.85f, 0.4f, 1) : ImVec4(0.8f, 0.8f, 0.8f, 1), "%s", m_candidates[k].c_str());
-        ImGui::TextDisabled("Tab: take it");
-        ImGui::EndTooltip();
-    }
+    if (m_focused && !m_candidates.empty()) drawCompletions(ImVec2(cx, cy + lineH));
     ImGui::EndChild();
     ImGui::PopID();
     if (changed) m_synced = m_model.text();

@@ -6,10 +6,12 @@
 // slider edits), find (Ctrl+F, Enter for the next), comment toggling (Ctrl+/), Tab and
 // Shift+Tab indentation, new lines keeping their indentation, clipboard, and completion of
 // settings, functions and module names (Tab takes the first). The text model is
-// editor/text_model.hpp, the colours editor/highlight.hpp.
+// viewer/state/text_model.hpp, the colours viewer/state/highlight.hpp (no window: tested alone).
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <imgui.h>
 
 #include "app/viewer/state/highlight.hpp"
 #include "app/viewer/state/text_model.hpp"
@@ -45,6 +47,8 @@ public:
 private:
     void highlightAll(FileKind kind);
     bool handleKeys(FileKind kind, const std::vector<std::string>& completions);
+    void drawFindBar();
+    void drawCompletions(ImVec2 under);
     std::string wordBeforeCursor() const;
 
     TextModel m_model;

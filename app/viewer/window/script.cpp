@@ -103,242 +103,266 @@ bool Script::step(App& app) {
             App& a;
             ~After() { s.m_waitFor = a.state.generation(); }
         } after{*this, app};
-        if (cmd == "wait") return true;  // one frame drawn after the result
-        if (cmd == "sleep") {  // wall-clock time, for animations
-            double seconds = 0;
-            in >> seconds;
-            m_sleepUntil = glfwGetTime() + seconds;
-            return true;
+        if (auto done = documentCommand(app, cmd, in)) return *done;
+        if (auto done = reportCommand(app, cmd, in)) return *done;
+        if (auto done = pickCommand(app, cmd, in)) return *done;
+        return viewCommand(app, cmd, in);
+    }
+    return false;
+}
+
+// The document: waiting, the text and its values, trust, saving, the process itself.
+std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, std::istringstream& in) {
+    if (cmd == "wait") return true;  // one frame drawn after the result
+    if (cmd == "sleep") {  // wall-clock time, for animations
+        double seconds = 0;
+        in >> seconds;
+        m_sleepUntil = glfwGetTime() + seconds;
+        return true;
+    }
+    if (cmd == "quit") return false;
+    if (cmd == "crash") std::raise(SIGKILL);
+    if (cmd == "recover") {
+        app.state.restoreRecovered();
+        return true;
+    }
+    if (cmd == "trust") {  // as the trust bar's buttons: yes, no; "trust ?" prints the state
+        std::string v;
+        in >> v;
+        if (v == "yes" || v == "no") app.state.answerTrust(v == "yes");
+        std::printf("python=%s\n", app.state.pythonQuestion() ? "asking" : app.state.pythonBlocked() ? "refused" : "allowed");
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "diagnostics") {  // the messages of the result shown: "diagnostic=LINE:COL: message"
+        if (auto latest = app.state.latest()) {
+            for (const auto& d : latest->diagnostics) std::printf("diagnostic=%d:%d: %s\n", d.line, d.col, d.message.c_str());
+            if (!latest->message.empty()) std::printf("message=%s\n", latest->message.c_str());
         }
-        if (cmd == "quit") return false;
-        if (cmd == "crash") std::raise(SIGKILL);
-        if (cmd == "recover") {
-            app.state.restoreRecovered();
-            return true;
-        }
-        if (cmd == "trust") {  // as the trust bar's buttons: yes, no; "trust ?" prints the state
-            std::string v;
-            in >> v;
-            if (v == "yes" || v == "no") app.state.answerTrust(v == "yes");
-            std::printf("python=%s\n", app.state.pythonQuestion() ? "asking" : app.state.pythonBlocked() ? "refused" : "allowed");
-            std::fflush(stdout);
-            return true;
-        }
-        if (cmd == "diagnostics") {  // the messages of the result shown: "diagnostic=LINE:COL: message"
-            if (auto latest = app.state.latest()) {
-                for (const auto& d : latest->diagnostics) std::printf("diagnostic=%d:%d: %s\n", d.line, d.col, d.message.c_str());
-                if (!latest->message.empty()) std::printf("message=%s\n", latest->message.c_str());
-            }
-            std::printf("plant=%s\n", app.state.plant() ? "shown" : "none");
-            std::fflush(stdout);
-            return true;
-        }
-        if (cmd == "saveas") {
-            std::string path, error;
-            in >> path;
-            app.say(app.state.saveAs(path, error) ? "saved " + path : error);
-            return true;
-        }
-        if (cmd == "text") {
-            std::string rest;
-            std::getline(in, rest);
-            std::string text;
-            for (size_t i = rest.find_first_not_of(' '); i < rest.size(); ++i) {
-                if (rest[i] == '\\' && i + 1 < rest.size() && rest[i + 1] == 'n') {
-                    text += '\n';
-                    ++i;
-                } else {
-                    text += rest[i];
-                }
-            }
-            app.state.setText(text);
-            return true;
-        }
-        if (cmd == "set") {
-            std::string key;
-            double v = 0;
-            in >> key >> v;
-            if (key == "n") app.state.setIterations(saturate<int>(v));
-            else app.state.setDirectiveValue(key, v);
-            return true;
-        }
-        if (cmd == "define") {
-            std::string name;
-            double v = 0;
-            in >> name >> v;
-            app.state.setDefineValue(name, v);
-            return true;
-        }
-        if (cmd == "environment") {
-            size_t k = 0;
-            double v = 0;
-            in >> k >> v;
-            auto numbers = environmentNumbers(app.state.text());
-            if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
-            else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
-            return true;
-        }
-        if (cmd == "drag") {
-            float dx = 0, dy = 0;
-            int frames = 1;
-            in >> dx >> dy >> frames;
-            frames = std::max(1, frames);
-            app.scriptDragging = true;  // held: the view moves at interactive quality
-            m_dragFrames = frames;
-            m_dragYaw = dx * 0.4f / float(frames);  // as the mouse: 0.4 degrees a pixel
-            m_dragPitch = dy * 0.4f / float(frames);
-            return true;
-        }
-        if (cmd == "release") {
-            app.scriptDragging = false;
-            app.needsRedraw = true;
-            return true;
-        }
-        if (cmd == "wait-thumbnails") {  // until the presets' thumbnails are made
-            if (app.thumbnails.making() || !m_thumbnailsSeen) {
-                m_thumbnailsSeen = true;  // a frame's poll has run since: one is started if any is missing
-                m_lines.push_front(in.str());
-            }
-            return true;
-        }
-        if (cmd == "frame-stats") {
-            long peakKb = 0;  // the process's peak resident memory
-            if (std::FILE* f = std::fopen("/proc/self/status", "r")) {
-                char line[256];
-                while (std::fgets(line, sizeof line, f))
-                    if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
-                std::fclose(f);
-            }
-            std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s panel_copied_frames=%llu panel_drawn_frames=%llu\n",
-                        app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
-                        app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct,
-                        app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str(),
-                        static_cast<unsigned long long>(app.panelCopies), static_cast<unsigned long long>(app.panelDraws));
-            std::fflush(stdout);
-            app.movingWorstMs = app.movingTotalMs = 0;
-            app.movingWorstWhat.clear();
-            app.movingFrames = 0;
-            return true;
-        }
-        if (cmd == "gl-info") {
-            std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
-            std::fflush(stdout);
-            return true;
-        }
-        if (cmd == "view-draws") {
-            std::printf("view_draws=%llu sketched=%llu full_moving=%llu staged_uploads=%llu mapped_uploads=%d\n",
-                        static_cast<unsigned long long>(app.viewDraws), static_cast<unsigned long long>(app.sketchDraws),
-                        static_cast<unsigned long long>(app.fullMovingDraws), static_cast<unsigned long long>(app.stagedUploads),
-                        app.renderer.persistentUploads() ? 1 : 0);
-            std::fflush(stdout);
-            return true;
-        }
-        // Picking and the inspector need the derivation's origins: the first time, ask for
-        // them and come back once the plant that has them is on screen. A plant that cannot
-        // get them (the text has errors since) is answered without.
-        auto needsOrigins = [&](bool forestWillDo) {
-            auto plant = app.state.plant();
-            if (!plant || plant->pick || (forestWillDo && plant->forest)) return false;
-            if (app.state.picking() && !app.state.worker().busy()) return false;  // asked, and none came
-            app.state.setPicking(true);
-            m_lines.push_front(in.str());
-            return true;
-        };
-        if (cmd == "inspect") {
-            if (needsOrigins(false)) return true;
-            if (!app.state.plant() || !app.state.plant()->pick) {
-                std::fprintf(stderr, "script: inspect: the plant on screen has no derivation to inspect\n");
-                return true;
-            }
-            std::int64_t module = 0;
-            in >> app.inspector.step >> module;
-            app.inspector.chosen = module;
-            app.inspector.first = std::uint64_t(std::max<std::int64_t>(0, module - 4));
-            app.openInspector = true;
-            for (const std::string& line : describeModule(app.state.plant()->pick->record, app.inspector.step, std::uint32_t(module)))
-                std::printf("inspect: %s\n", line.c_str());
-            std::fflush(stdout);
-            return true;
-        }
-        if (cmd == "pick" || cmd == "highlight-rule") {
-            auto plant = app.state.plant();
-            if (!plant || !plant->geometry) {
-                std::printf(cmd == "pick" ? "module=none\n" : "highlighted=0\n");
-                std::fflush(stdout);
-                return true;
-            }
-            if (needsOrigins(cmd == "pick")) return true;
-            if (cmd == "pick") {
-                double x = 0, y = 0;
-                in >> x >> y;
-                app.pickAt(x, y);
-                std::printf("%s\n", app.describeSelection().c_str());
+        std::printf("plant=%s\n", app.state.plant() ? "shown" : "none");
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "saveas") {
+        std::string path, error;
+        in >> path;
+        app.say(app.state.saveAs(path, error) ? "saved " + path : error);
+        return true;
+    }
+    if (cmd == "text") {
+        std::string rest;
+        std::getline(in, rest);
+        std::string text;
+        for (size_t i = rest.find_first_not_of(' '); i < rest.size(); ++i) {
+            if (rest[i] == '\\' && i + 1 < rest.size() && rest[i + 1] == 'n') {
+                text += '\n';
+                ++i;
             } else {
-                int line = 0;
-                in >> line;
-                app.setHighlightLine(line);
-                app.updateHighlight();
-                std::printf("highlighted=%zu\n", app.highlightCount);
+                text += rest[i];
             }
-            std::fflush(stdout);
-            return true;
         }
-        if (cmd == "show-environment" || cmd == "light-slice") {
-            std::string v;
-            in >> v;
-            if (cmd == "show-environment") app.view.showEnvironment = v != "off";
-            else if (v == "off") app.view.lightSlice = false;
-            else {
-                const float h = std::strtof(v.c_str(), nullptr);  // 0 to 1; NaN is 0
-                app.view.lightSlice = true, app.view.sliceHeight = h >= 0 && h <= 1 ? h : h > 1 ? 1.0f : 0.0f;
-            }
-            app.environmentDirty = true;
-            return true;
-        }
-        if (cmd == "step") {
-            int k = 0;
-            in >> k;
-            app.state.setDisplayStep(k);
-            return true;
-        }
-        if (cmd == "play") app.state.setPlaying(true);
-        else if (cmd == "pause") app.state.setPlaying(false);
-        else if (cmd == "frame") app.frame();
-        else if (cmd == "moving") {
-            std::string how;
-            in >> how;
-            if (how != "full" && how != "auto") std::fprintf(stderr, "script: moving: full or auto, not '%s'\n", how.c_str());
-            else app.view.fullWhileMoving = how == "full";
-        } else if (cmd == "yaw" || cmd == "pitch") {
-            float v = 0;
-            in >> v;
-            (cmd == "yaw" ? app.camera.yaw : app.camera.pitch) = v;
-            app.needsRedraw = true;
-        } else if (cmd == "zoom") {  // as the mouse wheel: closer by this factor
-            float f = 1;
-            in >> f;
-            if (f > 0) app.camera.zoom(1 / f);
-            app.needsRedraw = true;
-        } else if (cmd == "screenshot") {
-            std::string path, size;
-            in >> path >> size;
-            int w = 0, h = 0;  // 0: the window's size
-            if (!size.empty() && !parseSize(size, w, h))
-                app.say("screenshot: the size must be WIDTHxHEIGHT between 16x16 and 8192x8192");
-            else
-                app.takeScreenshot(path, w, h);
-        } else if (cmd == "record") {
-            std::string kind, path;
-            in >> kind >> path;
-            app.recordVideo(kind, path);
-        } else if (cmd == "export") {
-            std::string path;
-            in >> path;
-            app.exportModel(path);
+        app.state.setText(text);
+        return true;
+    }
+    if (cmd == "set") {
+        std::string key;
+        double v = 0;
+        in >> key >> v;
+        if (key == "n") app.state.setIterations(saturate<int>(v));
+        else app.state.setDirectiveValue(key, v);
+        return true;
+    }
+    if (cmd == "define") {
+        std::string name;
+        double v = 0;
+        in >> name >> v;
+        app.state.setDefineValue(name, v);
+        return true;
+    }
+    if (cmd == "environment") {
+        size_t k = 0;
+        double v = 0;
+        in >> k >> v;
+        auto numbers = environmentNumbers(app.state.text());
+        if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
+        else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+        return true;
+    }
+    return std::nullopt;
+}
+
+// The mouse held and let go, and what the window measured.
+std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std::istringstream& in) {
+    if (cmd == "drag") {
+        float dx = 0, dy = 0;
+        int frames = 1;
+        in >> dx >> dy >> frames;
+        frames = std::max(1, frames);
+        app.scriptDragging = true;  // held: the view moves at interactive quality
+        m_dragFrames = frames;
+        m_dragYaw = dx * 0.4f / float(frames);  // as the mouse: 0.4 degrees a pixel
+        m_dragPitch = dy * 0.4f / float(frames);
+        return true;
+    }
+    if (cmd == "release") {
+        app.scriptDragging = false;
+        app.needsRedraw = true;
+        return true;
+    }
+    if (cmd == "wait-thumbnails") {  // until the presets' thumbnails are made
+        if (app.thumbnails.making() || !m_thumbnailsSeen) {
+            m_thumbnailsSeen = true;  // a frame's poll has run since: one is started if any is missing
+            m_lines.push_front(in.str());
         }
         return true;
     }
-    return false;
+    if (cmd == "frame-stats") {
+        long peakKb = 0;  // the process's peak resident memory
+        if (std::FILE* f = std::fopen("/proc/self/status", "r")) {
+            char line[256];
+            while (std::fgets(line, sizeof line, f))
+                if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
+            std::fclose(f);
+        }
+        std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s panel_copied_frames=%llu panel_drawn_frames=%llu\n",
+                    app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
+                    app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct,
+                    app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str(),
+                    static_cast<unsigned long long>(app.panelCopies), static_cast<unsigned long long>(app.panelDraws));
+        std::fflush(stdout);
+        app.movingWorstMs = app.movingTotalMs = 0;
+        app.movingWorstWhat.clear();
+        app.movingFrames = 0;
+        return true;
+    }
+    if (cmd == "gl-info") {
+        std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "view-draws") {
+        std::printf("view_draws=%llu sketched=%llu full_moving=%llu staged_uploads=%llu mapped_uploads=%d\n",
+                    static_cast<unsigned long long>(app.viewDraws), static_cast<unsigned long long>(app.sketchDraws),
+                    static_cast<unsigned long long>(app.fullMovingDraws), static_cast<unsigned long long>(app.stagedUploads),
+                    app.renderer.persistentUploads() ? 1 : 0);
+        std::fflush(stdout);
+        return true;
+    }
+    return std::nullopt;
+}
+
+// Picking and the inspector.
+std::optional<bool> Script::pickCommand(App& app, const std::string& cmd, std::istringstream& in) {
+    // Picking and the inspector need the derivation's origins: the first time, ask for
+    // them and come back once the plant that has them is on screen. A plant that cannot
+    // get them (the text has errors since) is answered without.
+    auto needsOrigins = [&](bool forestWillDo) {
+        auto plant = app.state.plant();
+        if (!plant || plant->pick || (forestWillDo && plant->forest)) return false;
+        if (app.state.picking() && !app.state.worker().busy()) return false;  // asked, and none came
+        app.state.setPicking(true);
+        m_lines.push_front(in.str());
+        return true;
+    };
+    if (cmd == "inspect") {
+        if (needsOrigins(false)) return true;
+        if (!app.state.plant() || !app.state.plant()->pick) {
+            std::fprintf(stderr, "script: inspect: the plant on screen has no derivation to inspect\n");
+            return true;
+        }
+        std::int64_t module = 0;
+        in >> app.inspector.step >> module;
+        app.inspector.chosen = module;
+        app.inspector.first = std::uint64_t(std::max<std::int64_t>(0, module - 4));
+        app.openInspector = true;
+        for (const std::string& line : describeModule(app.state.plant()->pick->record, app.inspector.step, std::uint32_t(module)))
+            std::printf("inspect: %s\n", line.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "pick" || cmd == "highlight-rule") {
+        auto plant = app.state.plant();
+        if (!plant || !plant->geometry) {
+            std::printf(cmd == "pick" ? "module=none\n" : "highlighted=0\n");
+            std::fflush(stdout);
+            return true;
+        }
+        if (needsOrigins(cmd == "pick")) return true;
+        if (cmd == "pick") {
+            double x = 0, y = 0;
+            in >> x >> y;
+            app.pickAt(x, y);
+            std::printf("%s\n", app.describeSelection().c_str());
+        } else {
+            int line = 0;
+            in >> line;
+            app.setHighlightLine(line);
+            app.updateHighlight();
+            std::printf("highlighted=%zu\n", app.highlightCount);
+        }
+        std::fflush(stdout);
+        return true;
+    }
+    return std::nullopt;
+}
+
+// The view, growth, and what the window writes: pictures, videos, models. Any other line
+// is passed over.
+bool Script::viewCommand(App& app, const std::string& cmd, std::istringstream& in) {
+    if (cmd == "show-environment" || cmd == "light-slice") {
+        std::string v;
+        in >> v;
+        if (cmd == "show-environment") app.view.showEnvironment = v != "off";
+        else if (v == "off") app.view.lightSlice = false;
+        else {
+            const float h = std::strtof(v.c_str(), nullptr);  // 0 to 1; NaN is 0
+            app.view.lightSlice = true, app.view.sliceHeight = h >= 0 && h <= 1 ? h : h > 1 ? 1.0f : 0.0f;
+        }
+        app.environmentDirty = true;
+        return true;
+    }
+    if (cmd == "step") {
+        int k = 0;
+        in >> k;
+        app.state.setDisplayStep(k);
+        return true;
+    }
+    if (cmd == "play") app.state.setPlaying(true);
+    else if (cmd == "pause") app.state.setPlaying(false);
+    else if (cmd == "frame") app.frame();
+    else if (cmd == "moving") {
+        std::string how;
+        in >> how;
+        if (how != "full" && how != "auto") std::fprintf(stderr, "script: moving: full or auto, not '%s'\n", how.c_str());
+        else app.view.fullWhileMoving = how == "full";
+    } else if (cmd == "yaw" || cmd == "pitch") {
+        float v = 0;
+        in >> v;
+        (cmd == "yaw" ? app.camera.yaw : app.camera.pitch) = v;
+        app.needsRedraw = true;
+    } else if (cmd == "zoom") {  // as the mouse wheel: closer by this factor
+        float f = 1;
+        in >> f;
+        if (f > 0) app.camera.zoom(1 / f);
+        app.needsRedraw = true;
+    } else if (cmd == "screenshot") {
+        std::string path, size;
+        in >> path >> size;
+        int w = 0, h = 0;  // 0: the window's size
+        if (!size.empty() && !parseSize(size, w, h))
+            app.say("screenshot: the size must be WIDTHxHEIGHT between 16x16 and 8192x8192");
+        else
+            app.takeScreenshot(path, w, h);
+    } else if (cmd == "record") {
+        std::string kind, path;
+        in >> kind >> path;
+        app.recordVideo(kind, path);
+    } else if (cmd == "export") {
+        std::string path;
+        in >> path;
+        app.exportModel(path);
+    }
+    return true;
 }
 
 }  // namespace sprout::viewer

@@ -3,6 +3,13 @@
 // does is in the files beside it: window_input.cpp (mouse and keys), window_view.cpp (the
 // plant to the GPU and its picture, moving or refined), window_present.cpp (the panel's cache,
 // and the frame to the screen).
+//
+// Index of this file:
+//   [SECTION] Fonts and warm-up
+//   [SECTION] Window events
+//   [SECTION] Start-up
+//   [SECTION] A frame's parts
+//   [SECTION] The main loop
 #include "app/render/gl.hpp"  // glad first: GLFW must not include GL/gl.h
 #include "app/render/colour_target.hpp"
 #define GLFW_INCLUDE_NONE
@@ -32,6 +39,7 @@
 #include "app/viewer/window/window_present.hpp"
 #include "app/viewer/window/window_view.hpp"
 
+// [SECTION] Fonts and warm-up
 namespace sprout::viewer {
 namespace {
 
@@ -101,6 +109,7 @@ void warmUp(App& app, GLFWwindow* window) {
 
 // Files dropped on the window (.lsys, Lparser .ls, Fractint .l), opened on the next frame.
 std::vector<std::string> g_dropped;
+// [SECTION] Window events
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
 }
@@ -109,8 +118,160 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 bool g_exposed = false;
 void onRefresh(GLFWwindow*) { g_exposed = true; }
 
+// [SECTION] Start-up
+// The window with an OpenGL 3.3 core context, current on this thread; null, said on standard
+// error, when there is none (no display).
+GLFWwindow* openWindow(int width, int height, const std::string& source) {
+    if (!glfwInit()) {
+        std::cerr << "sprout: cannot open a window (no display?); try: sprout render " << source << " -o plant.png\n";
+        return nullptr;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(width, height, "Sprout", nullptr, nullptr);
+    if (!window) {
+        std::cerr << "sprout: cannot create an OpenGL 3.3 window; try: sprout render " << source << " -o plant.png\n";
+        glfwTerminate();
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    return window;
+}
+
+// Dear ImGui on the window: its style, the notation's glyphs, dropped files and exposures.
+void startPanel(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed: no imgui.ini files left around
+    addNotationGlyphs();
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    glfwSetDropCallback(window, onDrop);
+    glfwSetWindowRefreshCallback(window, onRefresh);
+    ImGui_ImplOpenGL3_Init("#version 330");
+}
+
+// What the worker does for the window: a plant prepared for the renderer on its thread, and
+// a forest scene's species found among the presets and beside the scene's file.
+void connectWorker(App& app) {
+    app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
+        const Geometry& g = *owner;
+        auto p = std::make_shared<render::PreparedScene>();
+        render::Renderer::prepareForViewer(g, *p, owner);
+        return p;
+    };
+    app.state.worker().speciesSource = [&app](const std::string& name) -> std::optional<std::string> {
+        for (const auto& base : {app.state.path(), app.state.importedFrom()}) {
+            if (base.empty()) continue;
+            if (auto text = readFile(base.parent_path() / name)) return text;
+        }
+        if (auto t = presetText(name)) return std::string(*t);
+        return std::nullopt;
+    };
+}
+
+// The file or preset the viewer opens on; false, said on standard error, when there is none.
+bool openFirst(App& app, const std::string& source) {
+    std::string error;
+    if (std::filesystem::exists(source)) {
+        if (!app.state.open(source, error)) {
+            std::cerr << "sprout: " << error << "\n";
+            return false;
+        }
+    } else if (auto text = presetText(source)) {
+        app.state.openText(std::string(*text), {}, source);
+    } else {
+        std::cerr << source << ": no such file or preset\n";
+        return false;
+    }
+    return true;
+}
+
+// [SECTION] A frame's parts
+// What moves between frames: the document's clock and autosave, the file changed on disk, the
+// turntable, the presets' thumbnails, a file dropped on the window.
+void updateBeforeFrame(App& app, double now, double dt, double& lastDiskCheck) {
+    app.state.tick(dt);
+    app.state.autosave();
+    if (now - lastDiskCheck > 1.0) {
+        lastDiskCheck = now;
+        if (app.state.reloadIfChangedOnDisk()) app.say("reloaded: the file changed on disk");
+    }
+    if (app.view.turntable) {
+        app.camera.yaw += app.view.turntableSpeed * float(dt);
+        app.needsRedraw = true;
+    }
+    {
+        static const std::vector<std::string> all = [] {
+            auto n = presetNames();
+            for (const auto& x : ifsPresetNames()) n.push_back(x);
+            for (const auto& x : scenePresetNames()) n.push_back(x);
+            return n;
+        }();
+        app.thumbnails.poll(all, !app.interacting && !app.refining && !app.state.playing() && !app.view.turntable);
+    }
+    if (!g_dropped.empty()) {
+        std::string path = g_dropped.front();
+        g_dropped.clear();
+        app.openFile(path);
+    }
+}
+
+// The recovery question (the text autosaved by a session that did not close normally).
+void recoveryPopup(App& app, bool& offerRecovery) {
+    if (offerRecovery) {
+        ImGui::OpenPopup("Recover unsaved grammar?");
+        offerRecovery = false;
+    }
+    if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
+        if (ImGui::Button("Restore it")) {
+            app.state.restoreRecovered();
+            app.state.discardRecovery();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard")) {
+            app.state.discardRecovery();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
+}
+
+// No 3D view now (an IFS image, drawn by the panel's pass; a minimised window): a picture in
+// pieces is left, and the view is drawn anew when it is back (its size is forgotten). Nothing
+// to redraw meanwhile: an IFS on screen costs no frames.
+void clearWithoutView(App& app, detail::Presenter& presenter, int fw, int fh) {
+    app.refining = false;
+    app.viewWidth = app.viewHeight = 0;
+    app.needsRedraw = false;
+    app.presentedWidth = 0;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fw, fh);
+    glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
+    glClear(GL_COLOR_BUFFER_BIT);
+    presenter.kept = false;  // the panel's strip too
+}
+
+// --screenshot: the whole window as the user sees it, panel and plant.
+void writeWindowPicture(App& app, int fw, int fh, const std::string& path) {
+    glFinish();
+    Image img;
+    img.width = fw;
+    img.height = fh;
+    img.rgba = app.renderer.readPixels(fw, fh, 0);
+    std::string e;
+    if (!writePng(path, img, e)) std::cerr << path << ": " << e << "\n";
+}
+
 }  // namespace
 
+// [SECTION] The main loop
 int runViewer(int argc, char** argv) {
     Args args(argc, argv, 1, {}, {"--screenshot", "--window-screenshot", "--script", "--size"});
     if (!args.error().empty() || args.positionals().size() > 1) {
@@ -135,22 +296,8 @@ int runViewer(int argc, char** argv) {
     // --screenshot: the whole window (panel and plant) once the plant is on screen, then exit.
     const std::optional<std::string> screenshot = args.value("--screenshot");
 
-    if (!glfwInit()) {
-        std::cerr << "sprout: cannot open a window (no display?); try: sprout render " << source << " -o plant.png\n";
-        return 1;
-    }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    GLFWwindow* window = glfwCreateWindow(width, height, "Sprout", nullptr, nullptr);
-    if (!window) {
-        std::cerr << "sprout: cannot create an OpenGL 3.3 window; try: sprout render " << source << " -o plant.png\n";
-        glfwTerminate();
-        return 1;
-    }
-    glfwMakeContextCurrent(window);
-    glfwSwapInterval(1);
+    GLFWwindow* window = openWindow(width, height, source);
+    if (!window) return 1;
 
     App app(std::filesystem::read_symlink("/proc/self/exe").string());
     app.window = window;
@@ -160,44 +307,10 @@ int runViewer(int argc, char** argv) {
         std::cerr << "sprout: " << error << "\n";
         return 1;
     }
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed: no imgui.ini files left around
-    addNotationGlyphs();
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 0;
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    glfwSetDropCallback(window, onDrop);
-    glfwSetWindowRefreshCallback(window, onRefresh);
-    ImGui_ImplOpenGL3_Init("#version 330");
+    startPanel(window);
 
-    app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
-        const Geometry& g = *owner;
-        auto p = std::make_shared<render::PreparedScene>();
-        render::Renderer::prepareForViewer(g, *p, owner);
-        return p;
-    };
-    // Forest scenes find their species among the presets and beside the scene's file.
-    app.state.worker().speciesSource = [&app](const std::string& name) -> std::optional<std::string> {
-        for (const auto& base : {app.state.path(), app.state.importedFrom()}) {
-            if (base.empty()) continue;
-            if (auto text = readFile(base.parent_path() / name)) return text;
-        }
-        if (auto t = presetText(name)) return std::string(*t);
-        return std::nullopt;
-    };
-    // Open the file or preset.
-    if (std::filesystem::exists(source)) {
-        if (!app.state.open(source, error)) {
-            std::cerr << "sprout: " << error << "\n";
-            return 1;
-        }
-    } else if (auto text = presetText(source)) {
-        app.state.openText(std::string(*text), {}, source);
-    } else {
-        std::cerr << source << ": no such file or preset\n";
-        return 1;
-    }
+    connectWorker(app);
+    if (!openFirst(app, source)) return 1;
     if (!screenshot) warmUp(app, window);
     // A previous session ended without saving: offer its text back.
     bool offerRecovery = app.state.recoverable().has_value() && !screenshot && script.empty();
@@ -231,30 +344,7 @@ int runViewer(int argc, char** argv) {
 
         // The plant the worker finished, to the GPU (window_view.cpp).
         viewer::detail::takePlant(app, frame);
-        app.state.tick(dt);
-        app.state.autosave();
-        if (now - lastDiskCheck > 1.0) {
-            lastDiskCheck = now;
-            if (app.state.reloadIfChangedOnDisk()) app.say("reloaded: the file changed on disk");
-        }
-        if (app.view.turntable) {
-            app.camera.yaw += app.view.turntableSpeed * float(dt);
-            app.needsRedraw = true;
-        }
-        {
-            static const std::vector<std::string> all = [] {
-                auto n = presetNames();
-                for (const auto& x : ifsPresetNames()) n.push_back(x);
-                for (const auto& x : scenePresetNames()) n.push_back(x);
-                return n;
-            }();
-            app.thumbnails.poll(all, !app.interacting && !app.refining && !app.state.playing() && !app.view.turntable);
-        }
-        if (!g_dropped.empty()) {
-            std::string path = g_dropped.front();
-            g_dropped.clear();
-            app.openFile(path);
-        }
+        updateBeforeFrame(app, now, dt, lastDiskCheck);
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
@@ -280,42 +370,14 @@ int runViewer(int argc, char** argv) {
         // The recovery question last in the frame: a modal opened before the panel's windows
         // first appear fails ImGui's check for the modal that blocks them (it aborted the
         // viewer on the first start after a crash).
-        if (offerRecovery) {
-            ImGui::OpenPopup("Recover unsaved grammar?");
-            offerRecovery = false;
-        }
-        if (ImGui::BeginPopupModal("Recover unsaved grammar?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-            ImGui::TextUnformatted("Sprout did not close normally last time.\nThe grammar you were editing was autosaved.");
-            if (ImGui::Button("Restore it")) {
-                app.state.restoreRecovered();
-                app.state.discardRecovery();
-                ImGui::CloseCurrentPopup();
-            }
-            ImGui::SameLine();
-            if (ImGui::Button("Discard")) {
-                app.state.discardRecovery();
-                ImGui::CloseCurrentPopup();
-            }
-            ImGui::EndPopup();
-        }
+        recoveryPopup(app, offerRecovery);
         viewer::detail::drawLabels(app, fw, fh);
         ImGui::Render();
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
             viewer::detail::drawView(app, frame, vw, vh, fw, fh);  // window_view.cpp
             ++framesWithPlant;
         } else {
-            // No 3D view now (an IFS image, drawn by the panel's pass; a minimised window): a
-            // picture in pieces is left, and the view is drawn anew when it is back (its size
-            // is forgotten). Nothing to redraw meanwhile: an IFS on screen costs no frames.
-            app.refining = false;
-            app.viewWidth = app.viewHeight = 0;
-            app.needsRedraw = false;
-            app.presentedWidth = 0;
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            glViewport(0, 0, fw, fh);
-            glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
-            glClear(GL_COLOR_BUFFER_BIT);
-            presenter.kept = false;  // the panel's strip too
+            clearWithoutView(app, presenter, fw, fh);
             if (app.state.plant()) ++framesWithPlant;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -328,14 +390,7 @@ int runViewer(int argc, char** argv) {
         // is: screenshots and scripts go on once its result is in.
         if (!app.state.plant() && app.state.latest() && !app.state.worker().busy()) ++framesWithPlant;
         if (screenshot && !screenshotDone && framesWithPlant >= 2 && !app.state.worker().busy() && script.empty() && app.viewSettled()) {
-            // The whole window as the user sees it: panel and plant.
-            glFinish();
-            Image img;
-            img.width = fw;
-            img.height = fh;
-            img.rgba = app.renderer.readPixels(fw, fh, 0);
-            std::string e;
-            if (!writePng(*screenshot, img, e)) std::cerr << *screenshot << ": " << e << "\n";
+            writeWindowPicture(app, fw, fh, *screenshot);
             screenshotDone = true;
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
