@@ -165,6 +165,17 @@ private:
 
     void classify(Line& line, Section& section);
     void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
+    // parseRule's parts (parser_rules.cpp): the line's head, its patterns, the blocks' locals,
+    // the successor and its probability.
+    void unwrapTutorialRule(std::string_view& head, std::string_view& tail);
+    std::string ruleLabel(const SourceLine& line, std::string_view& head, size_t& colon);
+    bool parseRulePatterns(const SourceLine& line, std::string_view patterns, std::vector<std::string>& params,
+                           Production& prod);
+    bool collectBlockLocals(const SourceLine& line, std::string_view preBlock, std::string_view postBlock,
+                            std::vector<std::string>& params,
+                            std::vector<std::pair<std::string, double>>& globalsAssigned);
+    bool splitRuleProbability(const SourceLine& line, std::string_view tail, std::string_view& succText,
+                              Production& prod);
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
     bool readInRules(std::string_view name) const;
