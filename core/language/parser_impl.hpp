@@ -163,6 +163,11 @@ private:
         int includeLine = 0;              // the #include's line in the grammar
     };
 
+    // The whole text's steps (parser_run.cpp), before each line is classified.
+    void splitPlainLines();
+    void warnReplaced(const std::vector<std::pair<size_t, std::string>>& replaced);
+    void refuseBinaryLines();
+    void checkEnvironmentQuery();
     void classify(Line& line, Section& section);
     void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
     // parseRule's parts (parser_rules.cpp): the line's head, its patterns, the blocks' locals,
