@@ -1,3 +1,15 @@
+// Derivation (derive.hpp says what it promises): the axiom made step 0, each step's size
+// checked before it is made, the D0L fast path or the general rewriter, decomposition and
+// queries after each step.
+//
+// Index of this file:
+//   [SECTION] Sizes in words and the memory budget
+//   [SECTION] A derivation set up: the axiom as step 0
+//   [SECTION] After each step: decomposition and queries
+//   [SECTION] Size limits, checked before a step is made; the figures of each step
+//   [SECTION] Deriving to step n: D0L counts, predicted growth, general steps
+//   [SECTION] The steps kept, and derive()
+
 #include "core/derive/derive.hpp"
 
 #include <algorithm>
@@ -16,6 +28,8 @@
 
 namespace sprout {
 namespace {
+
+// [SECTION] Sizes in words and the memory budget
 
 double millisSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -54,6 +68,8 @@ std::string withThousands(std::uint64_t v) {
     return out;
 }
 
+// [SECTION] A derivation set up: the axiom as step 0
+
 Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions options)
     : m_grammar(std::move(grammar)),
       m_options(std::move(options)),
@@ -84,6 +100,10 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     m_steps.push_back(std::move(axiom));
     if (axiomAges) m_ages.push_back(std::move(axiomAges));
 }
+
+Derivation::~Derivation() = default;
+
+// [SECTION] After each step: decomposition and queries
 
 DeriveOutcome Derivation::predictDecomposition(int step, const ModuleString& s) const {
     const Grammar& g = *m_grammar;
@@ -194,7 +214,7 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
     return {};
 }
 
-Derivation::~Derivation() = default;
+// [SECTION] Size limits, checked before a step is made; the figures of each step
 
 DeriveOutcome Derivation::checkSize(int step, std::uint64_t modules, std::uint64_t params) const {
     DeriveOutcome o;
@@ -234,6 +254,8 @@ void Derivation::record(int step, const ModuleString& s, double millis) {
     if (int(m_stats.size()) <= step) m_stats.resize(size_t(step) + 1);
     m_stats[size_t(step)] = {step, s.size(), s.params.size(), millis};
 }
+
+// [SECTION] Deriving to step n: D0L counts, predicted growth, general steps
 
 DeriveOutcome Derivation::deriveTo(int n) {
     if (!m_axiomOutcome.ok()) return m_axiomOutcome;
@@ -417,6 +439,8 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
     }
     return {};
 }
+
+// [SECTION] The steps kept, and derive()
 
 std::shared_ptr<const ModuleString> Derivation::step(int k) {
     if (k < 0 || k > m_reached) return nullptr;

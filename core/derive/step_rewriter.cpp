@@ -1,3 +1,13 @@
+// One parallel rewriting step (step_rewriter.hpp says what it covers): the rule tables built
+// once, then for each module the production that applies, its successor written out.
+//
+// Index of this file:
+//   [SECTION] The rule tables and the size bound
+//   [SECTION] Matching a predecessor and its contexts
+//   [SECTION] Choosing a production: conditions, blocks, probabilities
+//   [SECTION] The step: the string rewritten
+//   [SECTION] Cut: the rest of a branch removed
+
 #include "core/derive/step_rewriter.hpp"
 
 #include <algorithm>
@@ -7,6 +17,8 @@ namespace sprout {
 namespace {
 constexpr std::uint32_t kUnmatched = UINT32_MAX;
 }
+
+// [SECTION] The rule tables and the size bound
 
 StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_rules(rules) {
     const size_t A = g.alphabet.size();
@@ -96,6 +108,8 @@ void StepRewriter::prepare(const ModuleString& in) {
         }
     }
 }
+
+// [SECTION] Matching a predecessor and its contexts
 
 bool StepRewriter::matches(const PatternModule& pm, SymbolId s) const {
     if (pm.wildcard) return true;
@@ -203,6 +217,8 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
     return true;
 }
 
+// [SECTION] Choosing a production: conditions, blocks, probabilities
+
 bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
     if (p.pred.arity > 0)
         std::memcpy(&m_slots[p.pred.firstSlot], m_in->params.data() + m_paramPos,
@@ -261,6 +277,8 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
     }
     return nullptr;
 }
+
+// [SECTION] The step: the string rewritten
 
 bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
                            const std::atomic<bool>* cancel, const std::function<void(double)>& progress,
@@ -375,6 +393,8 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
     if (out.params.capacity() > out.params.size() + out.params.size() / 4 + 1024) out.params.shrinkToFit();
     return true;
 }
+
+// [SECTION] Cut: the rest of a branch removed
 
 void applyCut(ModuleString& s, const Alphabet& alphabet, PodBuffer<std::uint16_t>* ages, PodBuffer<std::uint32_t>* parent,
               PodBuffer<std::int32_t>* rule) {

@@ -1,3 +1,12 @@
+// Expressions: text compiled once to a stack program (ExprCompiler: text -> tree -> code),
+// run (Expr::run) each time a rule is tried or applied.
+//
+// Index of this file:
+//   [SECTION] Built-in functions and constants, and the tree
+//   [SECTION] The compiler: text to tree to code
+//   [SECTION] Running a compiled expression
+//   [SECTION] compileExpr, and the names it knows
+
 #include "core/language/expr.hpp"
 
 #include <charconv>
@@ -7,6 +16,8 @@
 
 namespace sprout {
 namespace {
+
+// [SECTION] Built-in functions and constants, and the tree
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
@@ -110,6 +121,8 @@ double apply(Op op, double x, double y) {
 }
 
 }  // namespace
+
+// [SECTION] The compiler: text to tree to code
 
 class ExprCompiler {
 public:
@@ -538,6 +551,8 @@ private:
     int m_nodes = 0;
 };
 
+// [SECTION] Running a compiled expression
+
 double Expr::run(const double* slots, Rng& rng) const {
     double st[kMaxStack];
     int sp = 0;
@@ -561,6 +576,8 @@ double Expr::run(const double* slots, Rng& rng) const {
     }
     return st[0];
 }
+
+// [SECTION] compileExpr, and the names it knows
 
 std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, const ExprScope& scope,
                                 DiagnosticSink& sink) {

@@ -2,6 +2,14 @@
 // dialects and text pasted from a PDF or a web page, read by the .lsys parser. This file holds
 // the words of those notations (setting aliases, rule labels, other tools' settings) and the
 // pasted characters' replacements; parser_run.cpp's classify() uses them line by line.
+//
+// Index of this file:
+//   [SECTION] The words of the notations
+//   [SECTION] Characters pasted from PDFs and web pages
+//   [SECTION] Settings, constants and rules written with '='
+//   [SECTION] ABOP's lines: successors over several lines, words as modules
+//   [SECTION] Settings applied, and the list of those read
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -11,6 +19,9 @@
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
+
+// [SECTION] The words of the notations
+
 namespace {
 
 std::string lowerCollapsed(std::string_view key) {
@@ -82,109 +93,107 @@ void Parser::warnForeign(const SourceLine& line, std::string_view key) {
     m_notation = true;
 }
 
-// Whether `value` is an expression of numbers and the constants known so far (no parameters).
-bool Parser::isConstantExpr(const SourceLine& line, std::string_view value) {
-    if (trim(value).empty()) return false;
-    DiagnosticSink scratch;
-    ExprScope scope{nullptr, &m_assignedNames, &m_macros};
-    return compileExpr(value, line, scope, scratch).has_value() && scratch.errorCount() == 0;
-}
+// [SECTION] Characters pasted from PDFs and web pages
 
-void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
-                     bool& notation) {
-    // Every replacement keeps the byte length (padded with spaces): columns stay those of the
-    // text as written. `what` (when set) is a warning at the place; `abop` marks ABOP's
-    // printed notation.
-    struct Sub {
-        const char* from;
-        const char* to;
-        const char* what;
-        bool abop;
-        bool lsysOnly;  // not in cpfg files, where the characters mean something else
-    };
-    static const Sub subs[] = {
-        {"\xE2\x86\x92", "-> ", nullptr, true, false},  // → (an accepted arrow, no warning)
-        {"\xE2\x9F\xB6", "-> ", nullptr, true, false},  // ⟶
-        {"\xE2\x87\x92", "-> ", nullptr, true, false},  // ⇒
-        {"\xE2\x9F\xB9", "-> ", nullptr, true, false},  // ⟹
-        {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'", false, false},
-        {"\xE2\x80\x93", "-  ", "the dash '\xE2\x80\x93' was read as '-'", false, false},
-        {"\xC2\xA0", "  ", nullptr, false, false},  // no-break space
-        {"\xE2\x80\x82", "   ", nullptr, false, false},  // en space .. hair space, zero width
-        {"\xE2\x80\x83", "   ", nullptr, false, false},
-        {"\xE2\x80\x84", "   ", nullptr, false, false},
-        {"\xE2\x80\x85", "   ", nullptr, false, false},
-        {"\xE2\x80\x86", "   ", nullptr, false, false},
-        {"\xE2\x80\x87", "   ", nullptr, false, false},
-        {"\xE2\x80\x88", "   ", nullptr, false, false},
-        {"\xE2\x80\x89", "   ", nullptr, false, false},  // thin space
-        {"\xE2\x80\x8A", "   ", nullptr, false, false},
-        {"\xE2\x80\x8B", "   ", nullptr, false, false},
-        {"\xE2\x80\xAF", "   ", nullptr, false, false},  // narrow no-break space
-        {"\xEF\xBB\xBF", "   ", nullptr, false, false},  // a byte order mark inside the text
-        {"\xE2\x80\x98", "'  ", nullptr, false, false},  // smart quotes
-        {"\xE2\x80\x99", "'  ", nullptr, false, false},
-        {"\xE2\x80\x9C", "\"  ", nullptr, false, false},
-        {"\xE2\x80\x9D", "\"  ", nullptr, false, false},
-        {"\xE2\x80\xB2", "'  ", nullptr, false, false},   // prime
-        {"\xE2\x80\xB3", "'' ", nullptr, false, false},   // double prime
-        {"\xC2\xB0", "  ", nullptr, true, false},         // degree sign
-        {"\xC3\x97", "* ", nullptr, false, false},        // ×
-        {"\xC2\xB7", "* ", nullptr, false, false},        // ·
-        {"\xE2\x8B\x85", "*  ", nullptr, false, false},   // ⋅
-        {"\xE2\x89\xA5", ">= ", nullptr, false, false},   // ≥
-        {"\xE2\x89\xA4", "<= ", nullptr, false, false},   // ≤
-        {"\xE2\x89\xA0", "!= ", nullptr, false, false},   // ≠
-        {"\xE2\x88\xA7", "^  ", nullptr, true, false},    // ∧: ABOP's pitch up, printed as a wedge
-        {"\xE2\x88\xA8", "&  ", nullptr, true, false},    // ∨: pitch down in some printings
-        {"\xE2\x82\x80", "0  ", nullptr, true, false},    // subscript digits (p₃)
-        {"\xE2\x82\x81", "1  ", nullptr, true, false},
-        {"\xE2\x82\x82", "2  ", nullptr, true, false},
-        {"\xE2\x82\x83", "3  ", nullptr, true, false},
-        {"\xE2\x82\x84", "4  ", nullptr, true, false},
-        {"\xE2\x82\x85", "5  ", nullptr, true, false},
-        {"\xE2\x82\x86", "6  ", nullptr, true, false},
-        {"\xE2\x82\x87", "7  ", nullptr, true, false},
-        {"\xE2\x82\x88", "8  ", nullptr, true, false},
-        {"\xE2\x82\x89", "9  ", nullptr, true, false},
-        // LaTeX as lecture notes and converted PDFs write it.
-        {"\\longrightarrow", "->             ", nullptr, true, true},
-        {"\\rightarrow", "->         ", nullptr, true, true},
-        {"\\Rightarrow", "->         ", nullptr, true, true},
-        {"\\mapsto", "->     ", nullptr, true, true},
-        {"\\to ", "->  ", nullptr, true, true},
-        {"\\delta", "delta ", nullptr, true, true},
-        {"\\omega", "axiom ", nullptr, true, true},
-        {"^{\\circ}", "        ", nullptr, true, true},
-        {"^\\circ", "      ", nullptr, true, true},
-        {"\\circ", "     ", nullptr, true, true},
-        {"\\wedge", "^     ", nullptr, true, true},
-        {"\\land", "^    ", nullptr, true, true},
-        {"\\cdot", "*    ", nullptr, true, true},
-        {"\\times", "*     ", nullptr, true, true},
-        {"\\&", "& ", nullptr, true, true},
-        {"\\{", "{ ", nullptr, true, true},
-        {"\\}", "} ", nullptr, true, true},
-        {"\\,", "  ", nullptr, true, true},
-        {"\\;", "  ", nullptr, true, true},
-        {"=>", "->", nullptr, true, true},
-    };
+namespace {
+
+// Every replacement keeps the byte length (padded with spaces): columns stay those of the
+// text as written. `what` (when set) is a warning at the place; `abop` marks ABOP's
+// printed notation.
+struct PastedSub {
+    const char* from;
+    const char* to;
+    const char* what;
+    bool abop;
+    bool lsysOnly;  // not in cpfg files, where the characters mean something else
+};
+const PastedSub kPastedSubs[] = {
+    {"\xE2\x86\x92", "-> ", nullptr, true, false},  // → (an accepted arrow, no warning)
+    {"\xE2\x9F\xB6", "-> ", nullptr, true, false},  // ⟶
+    {"\xE2\x87\x92", "-> ", nullptr, true, false},  // ⇒
+    {"\xE2\x9F\xB9", "-> ", nullptr, true, false},  // ⟹
+    {"\xE2\x88\x92", "-  ", "the Unicode minus sign '\xE2\x88\x92' was read as '-'", false, false},
+    {"\xE2\x80\x93", "-  ", "the dash '\xE2\x80\x93' was read as '-'", false, false},
+    {"\xC2\xA0", "  ", nullptr, false, false},  // no-break space
+    {"\xE2\x80\x82", "   ", nullptr, false, false},  // en space .. hair space, zero width
+    {"\xE2\x80\x83", "   ", nullptr, false, false},
+    {"\xE2\x80\x84", "   ", nullptr, false, false},
+    {"\xE2\x80\x85", "   ", nullptr, false, false},
+    {"\xE2\x80\x86", "   ", nullptr, false, false},
+    {"\xE2\x80\x87", "   ", nullptr, false, false},
+    {"\xE2\x80\x88", "   ", nullptr, false, false},
+    {"\xE2\x80\x89", "   ", nullptr, false, false},  // thin space
+    {"\xE2\x80\x8A", "   ", nullptr, false, false},
+    {"\xE2\x80\x8B", "   ", nullptr, false, false},
+    {"\xE2\x80\xAF", "   ", nullptr, false, false},  // narrow no-break space
+    {"\xEF\xBB\xBF", "   ", nullptr, false, false},  // a byte order mark inside the text
+    {"\xE2\x80\x98", "'  ", nullptr, false, false},  // smart quotes
+    {"\xE2\x80\x99", "'  ", nullptr, false, false},
+    {"\xE2\x80\x9C", "\"  ", nullptr, false, false},
+    {"\xE2\x80\x9D", "\"  ", nullptr, false, false},
+    {"\xE2\x80\xB2", "'  ", nullptr, false, false},   // prime
+    {"\xE2\x80\xB3", "'' ", nullptr, false, false},   // double prime
+    {"\xC2\xB0", "  ", nullptr, true, false},         // degree sign
+    {"\xC3\x97", "* ", nullptr, false, false},        // ×
+    {"\xC2\xB7", "* ", nullptr, false, false},        // ·
+    {"\xE2\x8B\x85", "*  ", nullptr, false, false},   // ⋅
+    {"\xE2\x89\xA5", ">= ", nullptr, false, false},   // ≥
+    {"\xE2\x89\xA4", "<= ", nullptr, false, false},   // ≤
+    {"\xE2\x89\xA0", "!= ", nullptr, false, false},   // ≠
+    {"\xE2\x88\xA7", "^  ", nullptr, true, false},    // ∧: ABOP's pitch up, printed as a wedge
+    {"\xE2\x88\xA8", "&  ", nullptr, true, false},    // ∨: pitch down in some printings
+    {"\xE2\x82\x80", "0  ", nullptr, true, false},    // subscript digits (p₃)
+    {"\xE2\x82\x81", "1  ", nullptr, true, false},
+    {"\xE2\x82\x82", "2  ", nullptr, true, false},
+    {"\xE2\x82\x83", "3  ", nullptr, true, false},
+    {"\xE2\x82\x84", "4  ", nullptr, true, false},
+    {"\xE2\x82\x85", "5  ", nullptr, true, false},
+    {"\xE2\x82\x86", "6  ", nullptr, true, false},
+    {"\xE2\x82\x87", "7  ", nullptr, true, false},
+    {"\xE2\x82\x88", "8  ", nullptr, true, false},
+    {"\xE2\x82\x89", "9  ", nullptr, true, false},
+    // LaTeX as lecture notes and converted PDFs write it.
+    {"\\longrightarrow", "->             ", nullptr, true, true},
+    {"\\rightarrow", "->         ", nullptr, true, true},
+    {"\\Rightarrow", "->         ", nullptr, true, true},
+    {"\\mapsto", "->     ", nullptr, true, true},
+    {"\\to ", "->  ", nullptr, true, true},
+    {"\\delta", "delta ", nullptr, true, true},
+    {"\\omega", "axiom ", nullptr, true, true},
+    {"^{\\circ}", "        ", nullptr, true, true},
+    {"^\\circ", "      ", nullptr, true, true},
+    {"\\circ", "     ", nullptr, true, true},
+    {"\\wedge", "^     ", nullptr, true, true},
+    {"\\land", "^    ", nullptr, true, true},
+    {"\\cdot", "*    ", nullptr, true, true},
+    {"\\times", "*     ", nullptr, true, true},
+    {"\\&", "& ", nullptr, true, true},
+    {"\\{", "{ ", nullptr, true, true},
+    {"\\}", "} ", nullptr, true, true},
+    {"\\,", "  ", nullptr, true, true},
+    {"\\;", "  ", nullptr, true, true},
+    {"=>", "->", nullptr, true, true},
+};
+
+// The pasted characters replaced, in one pass.
+void replacePastedCharacters(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
+                             bool& notation) {
     // One pass over the text (it may be a written-out axiom of millions of modules, parsed again
     // at each edit): only the bytes that start a replacement look further.
-    constexpr size_t kSubs = std::size(subs);
+    constexpr size_t kSubs = std::size(kPastedSubs);
     static const std::array<std::vector<std::uint8_t>, 256> byFirstByte = [] {
         std::array<std::vector<std::uint8_t>, 256> t;
-        for (size_t k = 0; k < kSubs; ++k) t[static_cast<unsigned char>(subs[k].from[0])].push_back(std::uint8_t(k));
+        for (size_t k = 0; k < kSubs; ++k) t[static_cast<unsigned char>(kPastedSubs[k].from[0])].push_back(std::uint8_t(k));
         return t;
     }();
     std::array<size_t, kSubs> first, count{};
     first.fill(std::string::npos);
     for (size_t at = 0; at < text.size();) {
         const auto& candidates = byFirstByte[static_cast<unsigned char>(text[at])];
-        const Sub* hit = nullptr;
+        const PastedSub* hit = nullptr;
         size_t k = 0;
         for (std::uint8_t c : candidates) {
-            const Sub& s = subs[c];
+            const PastedSub& s = kPastedSubs[c];
             if ((s.lsysOnly && cpfg) || text.compare(at, std::strlen(s.from), s.from) != 0) continue;
             if (s.from[0] == '=' && at > 0 && std::strchr("=<>!", text[at - 1])) continue;  // "==>"? leave comparisons alone
             hit = &s;
@@ -213,38 +222,44 @@ void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::strin
     }
     // One warning for a character replaced all over a pasted text: at its first place.
     for (size_t k = 0; k < kSubs; ++k)
-        if (subs[k].what && count[k])
-            replaced.emplace_back(first[k], std::string(subs[k].what) +
+        if (kPastedSubs[k].what && count[k])
+            replaced.emplace_back(first[k], std::string(kPastedSubs[k].what) +
                                                 (count[k] > 1 ? " (and in " + std::to_string(count[k] - 1) + (count[k] == 2 ? " more place)" : " more places)") : ""));
-    if (cpfg) return;
-    // Markdown's italics around words, as PDF converters write ABOP's module names
-    // (`*plant* -> *internode* + [*leaf*]`), in a text already in ABOP's notation: a '*' that
-    // opens or closes a word, outside parentheses. `* < + > *` and `x*2` stay.
-    if (notation) {
-        auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
-        auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ')' || c == '('; };
-        int depth = 0;
-        for (size_t i = 0; i < text.size(); ++i) {
-            const char c = text[i];
-            if (c == '\n') depth = 0;
-            else if (c == '(') ++depth;
-            else if (c == ')') depth = std::max(0, depth - 1);
-            if (c != '*' || depth > 0) continue;
-            const char before = i > 0 ? text[i - 1] : ' ', after = i + 1 < text.size() ? text[i + 1] : ' ';
-            const bool opens = letter(after) && !word(before) && before != '*';
-            const bool closes = letter(before) && !word(after) && after != '*';
-            if (opens || closes) text[i] = ' ';
-        }
+}
+
+// Markdown's italics around words, as PDF converters write ABOP's module names
+// (`*plant* -> *internode* + [*leaf*]`), in a text already in ABOP's notation: a '*' that
+// opens or closes a word, outside parentheses. `* < + > *` and `x*2` stay.
+void blankMarkdownItalics(std::string& text) {
+    auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ')' || c == '('; };
+    int depth = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n') depth = 0;
+        else if (c == '(') ++depth;
+        else if (c == ')') depth = std::max(0, depth - 1);
+        if (c != '*' || depth > 0) continue;
+        const char before = i > 0 ? text[i - 1] : ' ', after = i + 1 < text.size() ? text[i + 1] : ' ';
+        const bool opens = letter(after) && !word(before) && before != '*';
+        const bool closes = letter(before) && !word(after) && after != '*';
+        if (opens || closes) text[i] = ' ';
     }
-    // C comments on one line, as ABOP prints its #define lines ("#define r1 0.9 /* ratio */").
+}
+
+// C comments on one line, as ABOP prints its #define lines ("#define r1 0.9 /* ratio */").
+void blankLineComments(std::string& text, bool& notation) {
     for (size_t at = text.find("/*"); at != std::string::npos; at = text.find("/*", at + 2)) {
         const size_t close = text.find("*/", at + 2), eol = text.find('\n', at);
         if (close == std::string::npos || (eol != std::string::npos && close > eol)) continue;
         for (size_t i = at; i < close + 2; ++i) text[i] = ' ';
         notation = true;
     }
-    // Inline LaTeX math: a line that starts with '$' ("$n=5, \delta=18^\circ$", "$p1$: ...")
-    // loses its dollar signs. Elsewhere '$' is ABOP's roll to the horizontal and stays.
+}
+
+// Inline LaTeX math: a line that starts with '$' ("$n=5, \delta=18^\circ$", "$p1$: ...")
+// loses its dollar signs. Elsewhere '$' is ABOP's roll to the horizontal and stays.
+void blankMathDollars(std::string& text, bool& notation) {
     size_t start = 0;
     while (start < text.size()) {
         size_t end = text.find('\n', start);
@@ -259,6 +274,19 @@ void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::strin
         start = end + 1;
     }
 }
+
+}  // namespace
+
+void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
+                     bool& notation) {
+    replacePastedCharacters(text, replaced, cpfg, notation);
+    if (cpfg) return;
+    if (notation) blankMarkdownItalics(text);
+    blankLineComments(text, notation);
+    blankMathDollars(text, notation);
+}
+
+// [SECTION] Settings, constants and rules written with '='
 
 namespace {
 
@@ -298,6 +326,14 @@ std::vector<std::string_view> topLevelParts(std::string_view t) {
 }
 
 }  // namespace
+
+// Whether `value` is an expression of numbers and the constants known so far (no parameters).
+bool Parser::isConstantExpr(const SourceLine& line, std::string_view value) {
+    if (trim(value).empty()) return false;
+    DiagnosticSink scratch;
+    ExprScope scope{nullptr, &m_assignedNames, &m_macros};
+    return compileExpr(value, line, scope, scratch).has_value() && scratch.errorCount() == 0;
+}
 
 // Whether a rule of the text reads `name` (as a word: `&(delta/2)`), so a setting of that
 // name is a variable of the rules too.
@@ -435,6 +471,8 @@ bool Parser::classifyNotation(Line& l, std::string_view t) {
     return true;
 }
 
+// [SECTION] ABOP's lines: successors over several lines, words as modules
+
 void Parser::joinNotationLines() {
     auto blank = [](std::string_view t) {
         t = trim(t);
@@ -518,6 +556,8 @@ void Parser::declareNamedModules() {
     }
     if (!names.empty()) declareModules(SourceLine{}, names);
 }
+
+// [SECTION] Settings applied, and the list of those read
 
 void Parser::applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key) {
     if (m_options.explorer && trim(value).empty() && std::string_view(d.name) != "module") {

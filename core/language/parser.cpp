@@ -1,5 +1,13 @@
 // The .lsys parser's pieces (see parser_run.cpp for the whole file and parser_rules.cpp for
 // rules): module names and tokens, constants and settings' numbers, defines, the axiom.
+//
+// Index of this file:
+//   [SECTION] Module names, tokens and symbols
+//   [SECTION] Constants and settings' numbers
+//   [SECTION] Declared names: modules and defines
+//   [SECTION] The axiom, and quoted names as parameters
+//   [SECTION] Modules contexts ignore
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,6 +18,8 @@
 
 namespace sprout {
 namespace detail {
+
+// [SECTION] Module names, tokens and symbols
 
 Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(options.cpfg), m_options(options) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
@@ -159,6 +169,8 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
     return true;
 }
 
+// [SECTION] Constants and settings' numbers
+
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
     ExprScope scope{nullptr, &m_g.defines, &m_macros};
     auto e = compileExpr(text, line, scope, m_sink);
@@ -231,6 +243,8 @@ std::optional<std::vector<double>> Parser::numbers(const SourceLine& line, std::
     return out;
 }
 
+// [SECTION] Declared names: modules and defines
+
 void Parser::declareModules(const SourceLine& line, std::string_view names) {
     size_t i = 0;
     while (i < names.size()) {
@@ -284,6 +298,8 @@ void Parser::define(const SourceLine& line, std::string_view text) {
         m_g.defineOrder.emplace_back(name);
     }
 }
+
+// [SECTION] The axiom, and quoted names as parameters
 
 void Parser::setAxiom(const SourceLine& line, std::string_view text) {
     if (m_axiomSet) {
@@ -378,6 +394,8 @@ std::optional<std::string_view> Parser::quotedName(std::string_view arg) {
         return std::nullopt;
     return trim(arg.substr(1, arg.size() - 2));
 }
+
+// [SECTION] Modules contexts ignore
 
 void Parser::setIgnore(const SourceLine& line, std::string_view text) {
     std::vector<RawModule> mods;

@@ -59,6 +59,9 @@ inline size_t greekLetterAt(std::string_view s, size_t i) {
     return (a == 0xCE && b >= 0x91) || (a == 0xCF && b <= 0x89) ? 2 : 0;
 }
 
+// A character of a name: a letter, a digit or '_'.
+inline bool isIdentChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
 inline bool isIdentifier(std::string_view s) {
     if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_' || greekLetterAt(s, 0))) return false;
     for (size_t i = 0; i < s.size();) {
@@ -160,8 +163,24 @@ private:
         int includeLine = 0;              // the #include's line in the grammar
     };
 
+    // The whole text's steps (parser_run.cpp), before each line is classified.
+    void splitPlainLines();
+    void warnReplaced(const std::vector<std::pair<size_t, std::string>>& replaced);
+    void refuseBinaryLines();
+    void checkEnvironmentQuery();
     void classify(Line& line, Section& section);
     void parseRule(const SourceLine& line, Section section, size_t equalsArrow = std::string_view::npos);
+    // parseRule's parts (parser_rules.cpp): the line's head, its patterns, the blocks' locals,
+    // the successor and its probability.
+    void unwrapTutorialRule(std::string_view& head, std::string_view& tail);
+    std::string ruleLabel(const SourceLine& line, std::string_view& head, size_t& colon);
+    bool parseRulePatterns(const SourceLine& line, std::string_view patterns, std::vector<std::string>& params,
+                           Production& prod);
+    bool collectBlockLocals(const SourceLine& line, std::string_view preBlock, std::string_view postBlock,
+                            std::vector<std::string>& params,
+                            std::vector<std::pair<std::string, double>>& globalsAssigned);
+    bool splitRuleProbability(const SourceLine& line, std::string_view tail, std::string_view& succText,
+                              Production& prod);
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
     bool readInRules(std::string_view name) const;
@@ -173,13 +192,27 @@ private:
     bool isConstantExpr(const SourceLine& line, std::string_view value);
     void declareNamedModules();  // `SetContour("leaf")`: a word before a quoted name is one module
     void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
-    // cpfg family (core/cpfg/cpfg_lines.cpp): comments, #define, #include, logical lines.
+    // cpfg family (core/language/cpfg/cpfg_lines.cpp): logical lines, what each is.
     void buildCpfgLines();
     bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
                       std::vector<std::string>& stack);
+    std::vector<SourceLine> cpfgPhysicalLines(std::string_view text, bool top, int originBase) const;
+    void joinCpfgLines(std::vector<SourceLine>& body);
+    void joinCpfgStatementBlock(std::vector<SourceLine>& body, size_t i);
+    size_t joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line& out);
     void classifyCpfg(Line& line, Section& section, bool& ended);
-    std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
     void finishCpfg(std::vector<Diagnostic>& diags);
+    // Its C preprocessor (core/language/cpfg/cpfg_preprocessor.cpp): comments, continued
+    // lines, #define, #include, textual macros.
+    static size_t blankComments(std::string& text);
+    void joinCpfgContinuations(std::vector<SourceLine>& lines, bool top);
+    std::vector<SourceLine> preprocessCpfg(const std::vector<SourceLine>& lines, bool top, int includeLine, int depth,
+                                           std::vector<std::string>& stack);
+    void readCpfgDefine(const SourceLine& line, std::string_view rest, bool top);
+    void readCpfgInclude(const SourceLine& line, std::string_view t, std::string_view rest, bool top, int includeLine,
+                         int depth, std::vector<std::string>& stack, std::vector<SourceLine>& body);
+    void putCpfgTextMacros(std::vector<SourceLine>& body);
+    std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
     void loadSurfaceFiles();  // `~s` modules with an `s.s` file beside the grammar
     // Statement blocks (core/cpfg/statements.cpp).
     bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,

@@ -84,48 +84,38 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
     return ok;
 }
 
-void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArrow) {
-    std::string_view text = line.text;
-    size_t arrow = equalsArrow != std::string_view::npos ? equalsArrow : findTopLevel(text, "->", 0, m_cpfg);
-    if (arrow == std::string_view::npos) {  // its '->' inside a bracket or block never closed
-        m_sink.error(line, text, "this rule's '->' is inside a '(' or '{' that is not closed before it");
-        return;
-    }
-    size_t arrowEnd = arrow + (equalsArrow != std::string_view::npos ? 1 : 2);
-    if (equalsArrow == std::string_view::npos && arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's and ABOP's -->
-    std::string_view head = text.substr(0, arrow);
-    std::string_view tail = text.substr(arrowEnd);
-    if (!m_cpfg) {
-        // Tutorials' "Production: 'F' -> 'F-F++F-F'": the word before the rule, and quotes
-        // around both sides (a quote alone is ABOP's colour step, so both sides must have them).
-        const size_t c = findTopLevel(head, ":");
-        if (c != std::string_view::npos) {
-            std::string word(trim(head.substr(0, c)));
-            std::transform(word.begin(), word.end(), word.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-            if (word == "production" || word == "productions" || word == "rule" || word == "rules") {
-                head = head.substr(c + 1);
-                m_notation = true;
-            }
-        }
-        auto quoted = [](std::string_view s) {
-            s = trim(s);
-            return s.size() >= 3 && (s.front() == '\'' || s.front() == '"') && s.back() == s.front() &&
-                   s.find(s.front(), 1) == s.size() - 1;
-        };
-        const size_t lc = findTopLevel(head, ":");
-        std::string_view headRule = lc == std::string_view::npos ? head : head.substr(lc + 1);
-        if (quoted(headRule) && quoted(tail) && lc == std::string_view::npos) {
-            head = trim(head);
-            head = head.substr(1, head.size() - 2);
-            tail = trim(tail);
-            tail = tail.substr(1, tail.size() - 2);
+// Tutorials' "Production: 'F' -> 'F-F++F-F'": the word before the rule, and quotes around
+// both sides (a quote alone is ABOP's colour step, so both sides must have them).
+void Parser::unwrapTutorialRule(std::string_view& head, std::string_view& tail) {
+    const size_t c = findTopLevel(head, ":");
+    if (c != std::string_view::npos) {
+        std::string word(trim(head.substr(0, c)));
+        std::transform(word.begin(), word.end(), word.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
+        if (word == "production" || word == "productions" || word == "rule" || word == "rules") {
+            head = head.substr(c + 1);
             m_notation = true;
         }
     }
+    auto quoted = [](std::string_view s) {
+        s = trim(s);
+        return s.size() >= 3 && (s.front() == '\'' || s.front() == '"') && s.back() == s.front() &&
+               s.find(s.front(), 1) == s.size() - 1;
+    };
+    const size_t lc = findTopLevel(head, ":");
+    std::string_view headRule = lc == std::string_view::npos ? head : head.substr(lc + 1);
+    if (quoted(headRule) && quoted(tail) && lc == std::string_view::npos) {
+        head = trim(head);
+        head = head.substr(1, head.size() - 2);
+        tail = trim(tail);
+        tail = tail.substr(1, tail.size() - 2);
+        m_notation = true;
+    }
+}
 
-    // ABOP labels its productions p1, p2, ...: accept "p1: F -> FF", "P2 :", "p₃:".
+// ABOP labels its productions p1, p2, ...: accept "p1: F -> FF", "P2 :", "p₃:". The label as
+// typed, taken off `head` (`colon` then the condition's, in what is left), or "".
+std::string Parser::ruleLabel(const SourceLine& line, std::string_view& head, size_t& colon) {
     std::string label;
-    size_t colon = findTopLevel(head, ":", 0, m_cpfg);
     if (colon != std::string_view::npos) {
         std::string_view written = trim(head.substr(0, colon));
         // A lone `P :` is a module P with a condition when what follows is one, as in cpfg's
@@ -145,14 +135,13 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
             m_notation = true;
         }
     }
-    std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
-    std::string_view condition = colon == std::string_view::npos ? std::string_view() : head.substr(colon + 1);
+    return label;
+}
 
-    Production prod;
-    prod.line = line.number;
-    prod.lsystem = m_ruleLsystem;
-    prod.label = std::move(label);
-    std::vector<std::string> params;
+// The predecessor with its contexts, `left < pred > right`, into `prod`, their parameters
+// named in `params`; false when an error was given.
+bool Parser::parseRulePatterns(const SourceLine& line, std::string_view patterns, std::vector<std::string>& params,
+                               Production& prod) {
     size_t lt = findTopLevel(patterns, "<");
     size_t gt = findTopLevel(patterns, ">", lt == std::string_view::npos ? 0 : lt + 1);
     std::string_view leftText, rightText, predText = patterns;
@@ -168,25 +157,25 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     if (gt != std::string_view::npos && findTopLevel(rightText, ">") != std::string_view::npos) {
         m_sink.error(line, rightText.substr(findTopLevel(rightText, ">")),
                      "a second '>': write contexts as 'left < module > right'");
-        return;
+        return false;
     }
     if (findTopLevel(predText, "<") != std::string_view::npos) {
         m_sink.error(line, predText.substr(findTopLevel(predText, "<")),
                      "a second '<': write contexts as 'left < module > right'");
-        return;
+        return false;
     }
     std::vector<PatternModule> pred;
     if (lt != std::string_view::npos && trim(leftText).empty()) {
         m_sink.error(line, patterns.substr(lt), "'<' needs a left context before it (or '*' for any)");
-        return;
+        return false;
     }
-    if (!parsePattern(line, leftText, false, true, params, prod.left)) return;
-    if (!parsePattern(line, predText, true, false, params, pred)) return;
+    if (!parsePattern(line, leftText, false, true, params, prod.left)) return false;
+    if (!parsePattern(line, predText, true, false, params, pred)) return false;
     if (gt != std::string_view::npos && trim(rightText).empty()) {
         m_sink.error(line, predText.substr(gt), "'>' needs a right context after it (or '*' for any)");
-        return;
+        return false;
     }
-    if (!parsePattern(line, rightText, true, true, params, prod.right)) return;
+    if (!parsePattern(line, rightText, true, true, params, prod.right)) return false;
     if (pred.size() != 1) {
         std::string_view p = trim(predText);
         if (pred.empty()) {
@@ -198,7 +187,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
             else msg += "; use contexts for neighbours, as in 'A < B > C -> ...'";
             m_sink.error(line, p, msg);
         }
-        return;
+        return false;
     }
     prod.pred = pred[0];
     if (prod.pred.arity < 0) {  // a predecessor without parentheses has no parameters
@@ -210,6 +199,107 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     };
     if (onlyWildcards(prod.left)) prod.left.clear();
     if (onlyWildcards(prod.right)) prod.right.clear();
+    return true;
+}
+
+// The names a production's statement blocks assign become its locals, after its parameters in
+// `params`; L-system Explorer's variables among them go in `globalsAssigned` with their values.
+// False when an error was given.
+bool Parser::collectBlockLocals(const SourceLine& line, std::string_view preBlock, std::string_view postBlock,
+                                std::vector<std::string>& params,
+                                std::vector<std::pair<std::string, double>>& globalsAssigned) {
+    std::vector<std::string> assigned;
+    collectAssigned(preBlock, assigned);
+    collectAssigned(postBlock, assigned);
+    const std::string_view block = preBlock.empty() ? postBlock : preBlock;
+    for (const auto& name : assigned) {
+        if (auto global = m_g.defines.find(name); global != m_g.defines.end()) {
+            if (!m_options.explorer || std::find(params.begin(), params.end(), name) != params.end()) {
+                m_sink.error(line, block, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
+                return false;
+            }
+            // L-system Explorer's `zpos = 0` is a variable its blocks change for the rest
+            // of the derivation; here the change stays in the production, from that value.
+            m_sink.warning(line, block, "the block changes the variable '" + name + "': in Sprout the change is seen by this "
+                                        "production only (each time from " + formatNumber(global->second) + "), not by the next ones");
+            globalsAssigned.emplace_back(name, global->second);
+        }
+        if (std::find(params.begin(), params.end(), name) == params.end()) params.push_back(name);
+    }
+    if (params.size() > 255) {
+        m_sink.error(line, preBlock, "too many parameters and local variables in one production (the limit is 255)");
+        return false;
+    }
+    return true;
+}
+
+// After the arrow: the successor's text in `succText`, and a probability (`: 0.33`, or
+// "{0.33}" at the end outside cpfg) into `prod`. False when an error was given.
+bool Parser::splitRuleProbability(const SourceLine& line, std::string_view tail, std::string_view& succText,
+                                  Production& prod) {
+    if (size_t second = findTopLevel(tail, "->"); second != std::string_view::npos) {
+        m_sink.error(line, tail.substr(second), "a second '->': a rule has one arrow, one rule per line");
+        return false;
+    }
+    size_t probColon = findLastTopLevel(tail, ':');
+    succText = tail;
+    std::string_view probText;
+    if (probColon != std::string_view::npos) {
+        succText = tail.substr(0, probColon);
+        probText = trim(tail.substr(probColon + 1));
+    } else if (!m_cpfg) {
+        // "F -> F+F {0.33}": a probability in braces at the end (a polygon holds turtle moves).
+        std::string_view t = trim(tail);
+        const size_t open = t.rfind('{');
+        if (!t.empty() && t.back() == '}' && open != std::string_view::npos) {
+            std::string_view inside = trim(t.substr(open + 1, t.size() - open - 2));
+            if (!inside.empty() && inside.find_first_not_of("0123456789.eE+-") == std::string_view::npos) {
+                probText = inside;
+                succText = t.substr(0, open);
+                m_notation = true;
+            }
+        }
+    }
+    if (!probText.empty() || probColon != std::string_view::npos) {
+        auto p = constant(line, probText);
+        if (!p) return false;
+        if (!(*p >= 0)) {
+            m_sink.error(line, probText, "a probability cannot be negative");
+            return false;
+        }
+        prod.probability = *p;
+    }
+    if (size_t extra = findTopLevel(succText, ":"); extra != std::string_view::npos) {
+        m_sink.error(line, succText.substr(extra), "a second ':' after '->': a rule has at most one probability");
+        return false;
+    }
+    return true;
+}
+
+void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArrow) {
+    std::string_view text = line.text;
+    size_t arrow = equalsArrow != std::string_view::npos ? equalsArrow : findTopLevel(text, "->", 0, m_cpfg);
+    if (arrow == std::string_view::npos) {  // its '->' inside a bracket or block never closed
+        m_sink.error(line, text, "this rule's '->' is inside a '(' or '{' that is not closed before it");
+        return;
+    }
+    size_t arrowEnd = arrow + (equalsArrow != std::string_view::npos ? 1 : 2);
+    if (equalsArrow == std::string_view::npos && arrow > 0 && text[arrow - 1] == '-') --arrow;  // L-Py's and ABOP's -->
+    std::string_view head = text.substr(0, arrow);
+    std::string_view tail = text.substr(arrowEnd);
+    if (!m_cpfg) unwrapTutorialRule(head, tail);
+
+    size_t colon = findTopLevel(head, ":", 0, m_cpfg);
+    std::string label = ruleLabel(line, head, colon);
+    std::string_view patterns = colon == std::string_view::npos ? head : head.substr(0, colon);
+    std::string_view condition = colon == std::string_view::npos ? std::string_view() : head.substr(colon + 1);
+
+    Production prod;
+    prod.line = line.number;
+    prod.lsystem = m_ruleLsystem;
+    prod.label = std::move(label);
+    std::vector<std::string> params;
+    if (!parseRulePatterns(line, patterns, params, prod)) return;
     // cpfg: `pred : {pre} condition {post} --> succ`, `*` for no condition. Names assigned
     // in the blocks are the production's locals, in slots after its formal parameters.
     std::string_view preBlock, postBlock;
@@ -222,30 +312,8 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     }
     prod.firstLocal = std::uint16_t(params.size());
     std::vector<std::pair<std::string, double>> globalsAssigned;  // L-system Explorer's variables a block changes
-    if (!preBlock.empty() || !postBlock.empty()) {
-        std::vector<std::string> assigned;
-        collectAssigned(preBlock, assigned);
-        collectAssigned(postBlock, assigned);
-        const std::string_view block = preBlock.empty() ? postBlock : preBlock;
-        for (const auto& name : assigned) {
-            if (auto global = m_g.defines.find(name); global != m_g.defines.end()) {
-                if (!m_options.explorer || std::find(params.begin(), params.end(), name) != params.end()) {
-                    m_sink.error(line, block, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
-                    return;
-                }
-                // L-system Explorer's `zpos = 0` is a variable its blocks change for the rest
-                // of the derivation; here the change stays in the production, from that value.
-                m_sink.warning(line, block, "the block changes the variable '" + name + "': in Sprout the change is seen by this "
-                                            "production only (each time from " + formatNumber(global->second) + "), not by the next ones");
-                globalsAssigned.emplace_back(name, global->second);
-            }
-            if (std::find(params.begin(), params.end(), name) == params.end()) params.push_back(name);
-        }
-        if (params.size() > 255) {
-            m_sink.error(line, preBlock, "too many parameters and local variables in one production (the limit is 255)");
-            return;
-        }
-    }
+    if ((!preBlock.empty() || !postBlock.empty()) && !collectBlockLocals(line, preBlock, postBlock, params, globalsAssigned))
+        return;
     prod.slotCount = int(params.size());
 
     ExprScope scope{&params, &m_g.defines, &m_macros};
@@ -270,41 +338,8 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         prod.condition = compileExpr(condition, line, scope, m_sink);
         ok = prod.condition.has_value();
     }
-    if (size_t second = findTopLevel(tail, "->"); second != std::string_view::npos) {
-        m_sink.error(line, tail.substr(second), "a second '->': a rule has one arrow, one rule per line");
-        return;
-    }
-    size_t probColon = findLastTopLevel(tail, ':');
-    std::string_view succText = tail, probText;
-    if (probColon != std::string_view::npos) {
-        succText = tail.substr(0, probColon);
-        probText = trim(tail.substr(probColon + 1));
-    } else if (!m_cpfg) {
-        // "F -> F+F {0.33}": a probability in braces at the end (a polygon holds turtle moves).
-        std::string_view t = trim(tail);
-        const size_t open = t.rfind('{');
-        if (!t.empty() && t.back() == '}' && open != std::string_view::npos) {
-            std::string_view inside = trim(t.substr(open + 1, t.size() - open - 2));
-            if (!inside.empty() && inside.find_first_not_of("0123456789.eE+-") == std::string_view::npos) {
-                probText = inside;
-                succText = t.substr(0, open);
-                m_notation = true;
-            }
-        }
-    }
-    if (!probText.empty() || probColon != std::string_view::npos) {
-        auto p = constant(line, probText);
-        if (!p) return;
-        if (!(*p >= 0)) {
-            m_sink.error(line, probText, "a probability cannot be negative");
-            return;
-        }
-        prod.probability = *p;
-    }
-    if (size_t extra = findTopLevel(succText, ":"); extra != std::string_view::npos) {
-        m_sink.error(line, succText.substr(extra), "a second ':' after '->': a rule has at most one probability");
-        return;
-    }
+    std::string_view succText;
+    if (!splitRuleProbability(line, tail, succText, prod)) return;
     if (m_cpfg && trim(succText) == "*") succText = {};  // cpfg's empty successor
     if (section == Section::Decomposition && prod.hasContext()) {
         m_sink.error(line, patterns, "decomposition rules are context-free: move the context to a production");

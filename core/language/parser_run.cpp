@@ -142,21 +142,12 @@ void Parser::lint() {
     }
 }
 
-ParseResult Parser::run() {
-    std::vector<std::pair<size_t, std::string>> replaced;
-    // Old Mac line ends (a lone CR) end a line too.
-    for (size_t i = 0; i < m_text.size(); ++i)
-        if (m_text[i] == '\r' && (i + 1 == m_text.size() || m_text[i + 1] != '\n')) m_text[i] = '\n';
-    normalizePasted(m_text, replaced, m_cpfg, m_notation);
-    if (m_cpfg) {
-        m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
-        m_g.cutInNextStep = true;
-        buildCpfgLines();
-    }
-    // Split into lines; `original` keeps the typed text for column numbers.
+// Split into lines; `original` keeps the typed text for column numbers (the .lsys family:
+// buildCpfgLines makes a cpfg file's).
+void Parser::splitPlainLines() {
     size_t start = 0;
     int number = 1;
-    while (!m_cpfg && start <= m_text.size()) {
+    while (start <= m_text.size()) {
         size_t end = m_text.find('\n', start);
         if (end == std::string::npos) end = m_text.size();
         Line l;
@@ -167,6 +158,10 @@ ParseResult Parser::run() {
         m_lines.push_back(l);
         start = end + 1;
     }
+}
+
+// The warnings of normalizePasted, at the lines of their offsets.
+void Parser::warnReplaced(const std::vector<std::pair<size_t, std::string>>& replaced) {
     for (const auto& [offset, what] : replaced) {
         for (const auto& l : m_lines) {
             if (l.src.text.data() < m_text.data() || l.src.text.data() > m_text.data() + m_text.size()) continue;
@@ -177,8 +172,11 @@ ParseResult Parser::run() {
             }
         }
     }
-    // Control characters (a binary file, or a paste gone wrong): one error per line, at the
-    // first one, and the line is not read further.
+}
+
+// Control characters (a binary file, or a paste gone wrong): one error per line, at the
+// first one, and the line is not read further.
+void Parser::refuseBinaryLines() {
     int binaryLines = 0;
     for (auto& l : m_lines) {
         // A comment may hold anything but control characters (old files in Latin-1 included).
@@ -209,6 +207,42 @@ ParseResult Parser::run() {
             }
         }
     }
+}
+
+// ?E asked of an environment the grammar does not declare: an error (in L-system
+// Explorer's files a warning).
+void Parser::checkEnvironmentQuery() {
+    if (!m_g.environment.empty() || !m_g.alphabet.findName("?E")) return;
+    // Where it is first written, for the message.
+    for (const auto& l : m_lines) {
+        if (size_t at = l.src.text.find("?E"); at != std::string_view::npos && l.kind != Line::Skip) {
+            if (m_options.explorer)  // the page's JavaScript answers it there; the file cannot carry that
+                m_sink.warning(l.src, l.src.text.substr(at), "?E asks L-system Explorer's environment, a JavaScript function "
+                                                              "of that tool the file does not carry: here ?E keeps the values it "
+                                                              "is given (declare one with 'environment: sphere 0 10 0 8')");
+            else
+                m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
+                                                            "such as 'environment: sphere 0 10 0 8'");
+            break;
+        }
+    }
+}
+
+ParseResult Parser::run() {
+    std::vector<std::pair<size_t, std::string>> replaced;
+    // Old Mac line ends (a lone CR) end a line too.
+    for (size_t i = 0; i < m_text.size(); ++i)
+        if (m_text[i] == '\r' && (i + 1 == m_text.size() || m_text[i + 1] != '\n')) m_text[i] = '\n';
+    normalizePasted(m_text, replaced, m_cpfg, m_notation);
+    if (m_cpfg) {
+        m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
+        m_g.cutInNextStep = true;
+        buildCpfgLines();
+    } else {
+        splitPlainLines();
+    }
+    warnReplaced(replaced);
+    refuseBinaryLines();
     if (!m_cpfg && m_notation) joinNotationLines();
     if (!m_cpfg) declareNamedModules();
     Section section = Section::Productions;
@@ -253,21 +287,7 @@ ParseResult Parser::run() {
         }
     }
     if (m_cpfg) loadSurfaceFiles();
-    if (m_g.environment.empty() && m_g.alphabet.findName("?E")) {
-        // Where it is first written, for the message.
-        for (const auto& l : m_lines) {
-            if (size_t at = l.src.text.find("?E"); at != std::string_view::npos && l.kind != Line::Skip) {
-                if (m_options.explorer)  // the page's JavaScript answers it there; the file cannot carry that
-                    m_sink.warning(l.src, l.src.text.substr(at), "?E asks L-system Explorer's environment, a JavaScript function "
-                                                                  "of that tool the file does not carry: here ?E keeps the values it "
-                                                                  "is given (declare one with 'environment: sphere 0 10 0 8')");
-                else
-                    m_sink.error(l.src, l.src.text.substr(at), "?E asks the environment, but the grammar declares none: add a line "
-                                                                "such as 'environment: sphere 0 10 0 8'");
-                break;
-            }
-        }
-    }
+    checkEnvironmentQuery();
     lint();
     if (m_options.explorer) {
         // L-system Explorer derives once when the file sets no derivation length.

@@ -125,6 +125,20 @@ private:
     [[gnu::always_inline]] inline void turn(const State& t, v4& a, v4& b, const double* p, float sign);
     // What module i (action act, parameters p) does to turtle t: the switch both readers inline.
     [[gnu::always_inline]] inline void apply(State& t, Act act, const double* p, size_t i, int arity = 1);
+    // What apply's longer cases do, one helper each, inlined into its switch as they were
+    // written in it: F and f, $ and @v, [ and ], { . } and }(name), ! and #, ; ' and ,, a label.
+    [[gnu::always_inline]] inline void drawForward(State& t, Act act, const double* p, size_t i);
+    [[gnu::always_inline]] inline void moveForward(State& t, Act act, const double* p, size_t i);
+    [[gnu::always_inline]] inline void levelLeft(State& t);
+    [[gnu::always_inline]] inline void pushBranch(State& t);
+    [[gnu::always_inline]] inline void popBranch(State& t);
+    [[gnu::always_inline]] inline void beginPolygon(const State& t);
+    [[gnu::always_inline]] inline void polygonVertex(const State& t);
+    [[gnu::always_inline]] inline void endPolygon(State& t);
+    [[gnu::always_inline]] inline void endPolygonKept(State& t, const double* p);
+    [[gnu::always_inline]] inline void stepWidth(State& t, Act act, const double* p);
+    [[gnu::always_inline]] inline void stepColour(State& t, Act act, const double* p);
+    [[gnu::always_inline]] inline void addLabel(const State& t, const double* p, int arity);
     // Stems: to a point (LineTo and its kin), from a to b, one segment ahead, a run of them.
     inline void lineTo(State& t, Act act, const double* p, int arity, size_t i);
     inline void stem(const State& t, v4 a, v4 b, size_t i);

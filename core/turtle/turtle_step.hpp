@@ -47,37 +47,125 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
     }
 }
 
+// F and its kin: a segment ahead, or inside { } a polygon's edge, or in a generalized
+// cylinder a control point. One if-else chain, no early return: GCC predicts an early return
+// unlikely, and with them the string turtle's loop was laid out otherwise (2% slower).
+[[gnu::always_inline]] inline void Turtle::drawForward(State& t, Act act, const double* p, size_t i) {
+    float len = p ? float(*p) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
+    len *= growth(i);
+    if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
+        if (m_polygonEdgesDrawn) segment(t, len, i);  // and draws its segment (PlantGL)
+        else t.pos += t.H * len;
+        if (act == Act::Draw) vertex(t);
+    } else if (t.curve >= 0) {  // a generalized cylinder: a control point, no cylinder
+        t.pos += t.H * len;
+        addBound(t.pos);
+        if (m_tropismE != 0) bend(t);
+        curvePoint(t, m_curves[size_t(t.curve)].subdivisions);
+    } else {
+        segment(t, len, i);
+    }
+}
+
+// f and its kin: a step ahead that draws nothing (a polygon's vertex inside { }).
+[[gnu::always_inline]] inline void Turtle::moveForward(State& t, Act act, const double* p, size_t i) {
+    float len = (p ? float(*p) : t.length) * growth(i);
+    t.pos += t.H * len;
+    t.lastSegment = -1;
+    addBound(t.pos);
+    if (act == Act::Move && !m_polygons.empty()) vertex(t);
+}
+
+// $ and @v: L turned horizontal about H.
+[[gnu::always_inline]] inline void Turtle::levelLeft(State& t) {
+    glm::vec3 h = toGlm(t.H);
+    glm::vec3 l = glm::cross(glm::vec3(0, 1, 0), h);
+    float n = glm::length(l);
+    if (n > 1e-6f) {
+        t.L = fromGlm(l / n);
+    }
+}
+
+// [ and ]: the turtle kept and taken back.
+[[gnu::always_inline]] inline void Turtle::pushBranch(State& t) {
+    m_usedBrackets = true;
+    m_stack.push_back(t);  // PodBuffer: no per-push construction
+    t.curve = -1;  // a branch draws its own stem (or starts its own @Gs)
+    t.order = std::uint16_t(std::min<int>(t.order + 1, 65535));
+    if (m_gradient && t.colour < 0) t.stemColour = stemColour(t);
+    t.length *= m_branchLength;
+    t.width *= m_branchWidth;
+    t.lastSegment = -1;  // a branch does not continue its parent's taper
+}
+[[gnu::always_inline]] inline void Turtle::popBranch(State& t) {
+    if (!m_stack.empty()) {  // an unbalanced ']' is harmless
+        t = m_stack.back();
+        m_stack.pop_back();
+    }
+}
+
+// Polygons: { opens one, . adds a vertex (or a contour's point), } closes it, }(name) keeps it.
+[[gnu::always_inline]] inline void Turtle::beginPolygon(const State& t) {
+    m_polygons.emplace_back();
+    m_polygons.back().push_back(toGlm(t.pos));
+    m_polygonFrames.push_back({toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))});
+}
+[[gnu::always_inline]] inline void Turtle::polygonVertex(const State& t) {
+    if (!m_polygons.empty()) vertex(t);
+    else if (m_capturing && m_contour.size() < 4096) m_contour.push_back(glm::vec2(float(t.pos[0]), float(t.pos[1])));
+}
+[[gnu::always_inline]] inline void Turtle::endPolygon(State& t) {
+    if (!m_polygons.empty()) {
+        emitPolygon(t, m_polygons.back());
+        m_polygons.pop_back();
+        m_polygonFrames.pop_back();
+    } else if (t.curve >= 0 && m_g.settings.bracePaths) {  // the end of an L-system Explorer path
+        curveCommand(t, Act::CurveEnd, nullptr);
+    }
+}
+[[gnu::always_inline]] inline void Turtle::endPolygonKept(State& t, const double* p) {
+    if (!m_polygons.empty()) {
+        if (p && *p != m_emptyName) keepPolygon(t, m_polygons.back(), m_polygonFrames.back(), *p);
+        else emitPolygon(t, m_polygons.back());
+        m_polygons.pop_back();
+        m_polygonFrames.pop_back();
+    } else if (t.curve >= 0) {  // a path's end, kept by that name
+        const std::int16_t c = t.curve;
+        curveCommand(t, Act::CurveEnd, nullptr);
+        if (p && *p != m_emptyName) keepTube(size_t(c), *p);
+    }
+}
+
+// ! and #: the width set, or narrowed or widened by the grammar's factor.
+[[gnu::always_inline]] inline void Turtle::stepWidth(State& t, Act act, const double* p) {
+    // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
+    if (p) m_absoluteWidths = true;
+    t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
+    // Taper: the segment before ends as thick as the next one starts.
+    if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
+}
+
+// ; ' and ,: the palette entry set, or the next one (; ') or the previous one (,).
+[[gnu::always_inline]] inline void Turtle::stepColour(State& t, Act act, const double* p) {
+    int index = p ? int(std::clamp(*p, -1e6, 1e6)) : act == Act::ColourNext ? std::max<int>(t.colour, 0) + 1 : std::max<int>(t.colour, 0) - 1;
+    const int n = int(m_palette.size());
+    t.colour = std::int8_t(((index % n) + n) % n);
+    t.stemColour = stemColour(t);
+}
+
+// A label at the turtle: text number p[0], in size p[1] (13 unless given).
+[[gnu::always_inline]] inline void Turtle::addLabel(const State& t, const double* p, int arity) {
+    if (p && *p >= 0 && *p < double(m_g.settings.labels.size()) && m_out.labels.size() < 100000)
+        m_out.labels.push_back({toGlm(t.pos), m_g.settings.labels[size_t(*p)],
+                                arity >= 2 && p[1] > 0 && p[1] < 200 ? float(p[1]) : 13.0f, t.stemColour});
+}
+
 [[gnu::always_inline]] inline void Turtle::apply(State& t, Act act, const double* p, size_t i, int arity) {
     switch (act) {
         case Act::Draw:
-        case Act::DrawNoVertex: {
-            float len = p ? float(*p) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
-            len *= growth(i);
-            if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
-                if (m_polygonEdgesDrawn) segment(t, len, i);  // and draws its segment (PlantGL)
-                else t.pos += t.H * len;
-                if (act == Act::Draw) vertex(t);
-                break;
-            }
-            if (t.curve >= 0) {  // a generalized cylinder: a control point, no cylinder
-                t.pos += t.H * len;
-                addBound(t.pos);
-                if (m_tropismE != 0) bend(t);
-                curvePoint(t, m_curves[size_t(t.curve)].subdivisions);
-                break;
-            }
-            segment(t, len, i);
-            break;
-        }
+        case Act::DrawNoVertex: drawForward(t, act, p, i); break;
         case Act::Move:
-        case Act::MoveNoVertex: {
-            float len = (p ? float(*p) : t.length) * growth(i);
-            t.pos += t.H * len;
-            t.lastSegment = -1;
-            addBound(t.pos);
-            if (act == Act::Move && !m_polygons.empty()) vertex(t);
-            break;
-        }
+        case Act::MoveNoVertex: moveForward(t, act, p, i); break;
         case Act::Left: turn(t, t.H, t.L, p, 1.0f); break;
         case Act::Right: turn(t, t.H, t.L, p, -1.0f); break;
         case Act::Down:
@@ -96,84 +184,23 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
             t.H = -t.H;
             t.L = -t.L;
             break;
-        case Act::Horizontal: {
-            glm::vec3 h = toGlm(t.H);
-            glm::vec3 l = glm::cross(glm::vec3(0, 1, 0), h);
-            float n = glm::length(l);
-            if (n > 1e-6f) {
-                t.L = fromGlm(l / n);
-            }
-            break;
-        }
-        case Act::Push:
-            m_usedBrackets = true;
-            m_stack.push_back(t);  // PodBuffer: no per-push construction
-            t.curve = -1;  // a branch draws its own stem (or starts its own @Gs)
-            t.order = std::uint16_t(std::min<int>(t.order + 1, 65535));
-            if (m_gradient && t.colour < 0) t.stemColour = stemColour(t);
-            t.length *= m_branchLength;
-            t.width *= m_branchWidth;
-            t.lastSegment = -1;  // a branch does not continue its parent's taper
-            break;
-        case Act::Pop:
-            if (!m_stack.empty()) {  // an unbalanced ']' is harmless
-                t = m_stack.back();
-                m_stack.pop_back();
-            }
-            break;
-        case Act::PolyBegin:
-            m_polygons.emplace_back();
-            m_polygons.back().push_back(toGlm(t.pos));
-            m_polygonFrames.push_back({toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))});
-            break;
-        case Act::PolyVertex:
-            if (!m_polygons.empty()) vertex(t);
-            else if (m_capturing && m_contour.size() < 4096) m_contour.push_back(glm::vec2(float(t.pos[0]), float(t.pos[1])));
-            break;
+        case Act::Horizontal: levelLeft(t); break;
+        case Act::Push: pushBranch(t); break;
+        case Act::Pop: popBranch(t); break;
+        case Act::PolyBegin: beginPolygon(t); break;
+        case Act::PolyVertex: polygonVertex(t); break;
         case Act::ContourStart:
         case Act::ContourEnd:
         case Act::ContourUse: contourCommand(t, act, p); break;
-        case Act::PolyEnd:
-            if (!m_polygons.empty()) {
-                emitPolygon(t, m_polygons.back());
-                m_polygons.pop_back();
-                m_polygonFrames.pop_back();
-            } else if (t.curve >= 0 && m_g.settings.bracePaths) {  // the end of an L-system Explorer path
-                curveCommand(t, Act::CurveEnd, nullptr);
-            }
-            break;
-        case Act::PolyEndSave:
-            if (!m_polygons.empty()) {
-                if (p && *p != m_emptyName) keepPolygon(t, m_polygons.back(), m_polygonFrames.back(), *p);
-                else emitPolygon(t, m_polygons.back());
-                m_polygons.pop_back();
-                m_polygonFrames.pop_back();
-            } else if (t.curve >= 0) {  // a path's end, kept by that name
-                const std::int16_t c = t.curve;
-                curveCommand(t, Act::CurveEnd, nullptr);
-                if (p && *p != m_emptyName) keepTube(size_t(c), *p);
-            }
-            break;
+        case Act::PolyEnd: endPolygon(t); break;
+        case Act::PolyEndSave: endPolygonKept(t, p); break;
         case Act::InsertSaved:
             insertKept(t, p, arity);
             break;
         case Act::WidthDec:
-        case Act::WidthInc:
-            // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
-            if (p) m_absoluteWidths = true;
-            t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
-            // Taper: the segment before ends as thick as the next one starts.
-            if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
-            break;
+        case Act::WidthInc: stepWidth(t, act, p); break;
         case Act::ColourNext:
-        case Act::ColourPrev:
-        {
-            int index = p ? int(std::clamp(*p, -1e6, 1e6)) : act == Act::ColourNext ? std::max<int>(t.colour, 0) + 1 : std::max<int>(t.colour, 0) - 1;
-            const int n = int(m_palette.size());
-            t.colour = std::int8_t(((index % n) + n) % n);
-            t.stemColour = stemColour(t);
-        }
-            break;
+        case Act::ColourPrev: stepColour(t, act, p); break;
         case Act::ScaleLength: t.length *= p ? float(*p) : 1.0f; break;
         case Act::ScaleAngle: t.angleScale *= p ? float(*p) : 1.0f; break;
         case Act::ScaleWidth:
@@ -210,11 +237,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::CurveEnd:
         case Act::CurveTangent:
         case Act::CurveEndKeep: curveCommand(t, act, p, arity); break;
-        case Act::Label:
-            if (p && *p >= 0 && *p < double(m_g.settings.labels.size()) && m_out.labels.size() < 100000)
-                m_out.labels.push_back({toGlm(t.pos), m_g.settings.labels[size_t(*p)],
-                                        arity >= 2 && p[1] > 0 && p[1] < 200 ? float(p[1]) : 13.0f, t.stemColour});
-            break;
+        case Act::Label: addLabel(t, p, arity); break;
         case Act::Section:
             t.section = p && *p >= 0 && *p < double(m_g.settings.sections.size()) ? std::int16_t(*p) : std::int16_t(-1);
             break;

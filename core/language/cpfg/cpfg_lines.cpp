@@ -1,9 +1,17 @@
 // The cpfg / lpfg / L-Py family read as it is written (cpfg manual; L-Py documentation):
-// C comments, #define (numbers become sliders, function-like macros are expanded in
-// expressions), #include of files beside the grammar, `Lsystem:` ... `endlsystem`,
-// `derivation length:`, `consider:`, the homomorphism and decomposition sections with
-// `maximum depth:`, productions written over several lines (statement blocks, L-Py's
-// `produce`). Settings of other tools are warnings: the file still opens.
+// `Lsystem:` ... `endlsystem`, `derivation length:`, `consider:`, the homomorphism and
+// decomposition sections with `maximum depth:`, productions written over several lines
+// (statement blocks, L-Py's `produce`). Settings of other tools are warnings: the file still
+// opens. The C preprocessor's part (comments, #define, #include) is cpfg_preprocessor.cpp.
+//
+// Index of this file:
+//   [SECTION] Reading a cpfg line: keys, section words, arrows
+//   [SECTION] The cpfg family's own settings
+//   [SECTION] A file's logical lines
+//   [SECTION] Productions and blocks written over several lines
+//   [SECTION] What each line is
+//   [SECTION] Diagnostics at the lines they were written on
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -19,8 +27,9 @@ namespace sprout::detail {
 namespace {
 
 constexpr int kIncludeLineBase = 1'000'000;  // included lines are numbered apart, then reported at the #include
-constexpr int kMaxIncludeDepth = 16;
 constexpr int kMaxJoinedLines = 40;  // a production written over more lines than this is a mistake
+
+// [SECTION] Reading a cpfg line: keys, section words, arrows
 
 std::string lowerCollapsed(std::string_view s) {
     std::string out;
@@ -36,8 +45,6 @@ std::string lowerCollapsed(std::string_view s) {
     }
     return out;
 }
-
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The arrow of a production outside parentheses and blocks: cpfg's `-->`, or `->`.
 size_t arrowAt(std::string_view s) {
@@ -67,42 +74,7 @@ int openCount(std::string_view s) {
 }
 
 bool startsWithWord(std::string_view t, std::string_view word) {
-    return t.starts_with(word) && (t.size() == word.size() || !identChar(t[word.size()]));
-}
-
-// Comments become spaces (newlines kept), so every position in the text stays where it was.
-// Returns the offset of an unterminated `/*`, or npos.
-size_t blankComments(std::string& text) {
-    size_t i = 0;
-    while (i + 1 < text.size()) {
-        if (text[i] == '"') {  // an #include "name" may hold '//'
-            size_t end = text.find_first_of("\"\n", i + 1);
-            i = end == std::string::npos ? text.size() : end + 1;
-            continue;
-        }
-        if (text[i] == '/' && text[i + 1] == '*') {
-            size_t end = text.find("*/", i + 2);
-            size_t stop = end == std::string::npos ? text.size() : end + 2;
-            for (size_t k = i; k < stop; ++k)
-                if (text[k] != '\n') text[k] = ' ';
-            if (end == std::string::npos) return i;
-            i = stop;
-            continue;
-        }
-        // `//` starts a comment at the start of a line or after a space; glued to a module it
-        // is two rolls (`[//&&l]`), as L-system Explorer reads it.
-        if (text[i] == '/' && text[i + 1] == '/' && (i == 0 || isSpace(text[i - 1]) || text[i - 1] == '\n')) {
-            while (i < text.size() && text[i] != '\n') text[i++] = ' ';
-            continue;
-        }
-        if (text[i] == '/') {  // a run of rolls: none of its slashes starts a comment
-            while (i + 1 < text.size() && text[i] == '/' && text[i + 1] != '*') ++i;
-            if (i + 1 == text.size()) ++i;
-            continue;
-        }
-        ++i;
-    }
-    return std::string::npos;
+    return t.starts_with(word) && (t.size() == word.size() || !isIdentChar(t[word.size()]));
 }
 
 // The key of a `key: value` line in canonical form ("derivation length"), or "" when the
@@ -111,7 +83,7 @@ std::string keyOf(std::string_view t, std::string_view& value) {
     size_t colon = t.find(':');
     if (colon == std::string_view::npos) return "";
     std::string_view key = trim(t.substr(0, colon));
-    if (key.empty() || !std::all_of(key.begin(), key.end(), [](char c) { return identChar(c) || isSpace(c); }))
+    if (key.empty() || !std::all_of(key.begin(), key.end(), [](char c) { return isIdentChar(c) || isSpace(c); }))
         return "";
     value = trim(t.substr(colon + 1));
     return lowerCollapsed(key);
@@ -158,6 +130,17 @@ bool knownKey(const std::string& key) {
         if (key == d.name) return true;
     return false;
 }
+
+// Whether a rule's successor is empty: nothing after its arrow.
+bool successorEmpty(std::string_view r) {
+    const size_t a = arrowAt(r);
+    if (a == std::string_view::npos) return false;
+    size_t k = a;
+    while (k < r.size() && (r[k] == '-' || r[k] == '>')) ++k;
+    return trim(r.substr(k)).empty();
+}
+
+// [SECTION] The cpfg family's own settings
 
 void considerHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setConsider(l, v); }
 void surfaceHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setSurface(l, v); }
@@ -225,324 +208,7 @@ const Directive kGlobalBlock{"global block", globalBlockHandler};
 
 }  // namespace
 
-bool Parser::readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
-                          std::vector<std::string>& stack) {
-    // `text` is m_text itself (comments already blanked) or an included file kept in m_store.
-    const bool top = includeName.empty();
-    const int originBase = top ? 0 : kIncludeLineBase * int(m_origins.size() + 1);
-    if (!top) {
-        Origin o;
-        o.logical = originBase;
-        o.includeName = includeName;
-        o.includeLine = includeLine;
-        m_origins.push_back(o);
-    }
-    struct Physical {
-        SourceLine src;
-    };
-    std::vector<Physical> lines;
-    size_t start = 0;
-    int number = 1;
-    while (start <= text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string_view::npos) end = text.size();
-        SourceLine l;
-        l.number = originBase + number++;
-        l.text = text.substr(start, end - start);
-        if (top) l.original = std::string_view(m_original).substr(start, end - start);
-        if (l.text.ends_with('\r')) l.text.remove_suffix(1);
-        lines.push_back({l});
-        start = end + 1;
-    }
-    // A line that ends with '\\' goes on on the next one (the C preprocessor's continuation,
-    // in multi-line #defines): one line, at the first line's number.
-    for (size_t i = 0; i + 1 < lines.size(); ++i) {
-        std::string_view t = lines[i].src.text;
-        while (!t.empty() && isSpace(t.back())) t.remove_suffix(1);
-        if (!t.ends_with('\\')) continue;
-        std::string joined(t.substr(0, t.size() - 1));
-        size_t j = i;
-        while (j + 1 < lines.size()) {
-            std::string_view next = lines[++j].src.text;
-            lines[j].src.text = next.substr(0, 0);
-            while (!next.empty() && isSpace(next.back())) next.remove_suffix(1);
-            const bool more = next.ends_with('\\');
-            joined += ' ';
-            joined += more ? next.substr(0, next.size() - 1) : next;
-            if (!more) break;
-        }
-        m_store.push_back(std::move(joined));
-        lines[i].src.text = m_store.back();
-        if (top) lines[i].src.original = m_store.back();
-        i = j;
-    }
-
-    // Preprocessor lines first, in order: #define and #include.
-    std::vector<SourceLine> body;
-    for (auto& p : lines) {
-        std::string_view t = trim(p.src.text);
-        if (!t.starts_with("#")) {
-            body.push_back(p.src);
-            continue;
-        }
-        std::string_view word = t.substr(0, t.find_first_of(" \t\"<"));
-        std::string_view rest = trim(t.substr(word.size()));
-        if (word == "#define") {
-            size_t nameEnd = 0;
-            while (nameEnd < rest.size() && identChar(rest[nameEnd])) ++nameEnd;
-            std::string name(rest.substr(0, nameEnd));
-            if (name.empty()) {
-                m_sink.error(p.src, rest, "expected '#define NAME value'");
-                continue;
-            }
-            if (nameEnd < rest.size() && rest[nameEnd] == '(') {  // function-like
-                size_t close = rest.find(')', nameEnd);
-                if (close == std::string_view::npos) {
-                    m_sink.error(p.src, rest.substr(nameEnd), "this '(' is never closed");
-                    continue;
-                }
-                ExprMacro m;
-                std::string_view params = rest.substr(nameEnd + 1, close - nameEnd - 1);
-                size_t a = 0;
-                while (a <= params.size()) {
-                    size_t b = params.find(',', a);
-                    if (b == std::string_view::npos) b = params.size();
-                    std::string_view param = trim(params.substr(a, b - a));
-                    if (!param.empty()) m.params.emplace_back(param);
-                    a = b + 1;
-                }
-                m.body = std::string(trim(rest.substr(close + 1)));
-                if (m.body.empty()) {
-                    m_sink.error(p.src, rest, "'#define " + name + "(...)' needs a body");
-                    continue;
-                }
-                m_macros[name] = std::move(m);
-                continue;
-            }
-            std::string_view value = trim(rest.substr(nameEnd));
-            if (value.empty()) {
-                // `#define DEBUG`: a flag for #ifdef, nothing to compute.
-                m_g.defines.emplace(name, 1.0);
-                continue;
-            }
-            // A number (or an expression of numbers) is a constant with a slider; anything
-            // else (`#define LEAF ~l(2)`) is text put in place where its name is used.
-            DiagnosticSink scratch;
-            ExprScope scope{nullptr, &m_g.defines, &m_macros};
-            if (compileExpr(value, p.src, scope, scratch)) {
-                define(p.src, rest);
-                // A slider writes its value back into the text it edits: only the grammar's
-                // own defines get one, not those of an included file.
-                if (!top && !m_g.defineOrder.empty() && m_g.defineOrder.back() == name) m_g.defineOrder.pop_back();
-            } else {
-                m_textMacros.emplace_back(name, std::string(value));
-            }
-        } else if (word == "#include") {
-            std::string_view name = rest;
-            if ((name.starts_with("\"") && name.ends_with("\"") && name.size() >= 2) ||
-                (name.starts_with("<") && name.ends_with(">") && name.size() >= 2))
-                name = name.substr(1, name.size() - 2);
-            else {
-                m_sink.error(p.src, rest.empty() ? t : rest, "expected '#include \"file\"'");
-                continue;
-            }
-            std::string file(name);
-            if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
-                m_sink.error(p.src, rest, "'" + file + "' includes itself" +
-                                              (stack.size() > 1 && file != stack.back() ? " through '" + stack.back() + "'" : ""));
-                continue;
-            }
-            if (depth >= kMaxIncludeDepth) {
-                m_sink.error(p.src, rest, "#include is nested too deeply (more than 16 files)");
-                continue;
-            }
-            if (!m_options.include) {
-                m_sink.error(p.src, rest, "#include \"" + file + "\" needs the grammar's folder: save the grammar beside it first");
-                continue;
-            }
-            std::string error;
-            auto included = m_options.include(file, error);
-            if (!included) {
-                m_sink.error(p.src, rest, "cannot include '" + file + "': " + error);
-                continue;
-            }
-            m_store.push_back(std::move(*included));
-            std::string& stored = m_store.back();
-            for (size_t k = 0; k < stored.size(); ++k)
-                if (stored[k] == '\r' && (k + 1 == stored.size() || stored[k + 1] != '\n')) stored[k] = '\n';
-            if (size_t open = blankComments(stored); open != std::string::npos) {
-                m_sink.error(p.src, rest, "in '" + file + "': a comment '/*' is never closed with '*/'");
-                continue;
-            }
-            stack.push_back(file);
-            // The included lines take their place here: read them now, in order.
-            std::vector<Line> saved = std::move(m_lines);
-            m_lines.clear();
-            readCpfgFile(stored, file, top ? p.src.number : includeLine, depth + 1, stack);
-            std::vector<Line> inner = std::move(m_lines);
-            m_lines = std::move(saved);
-            stack.pop_back();
-            // Keep the order: flush what came before, then the included lines.
-            for (const auto& l : inner) body.push_back(l.src);
-        } else if (word == "#ignore") {
-            body.push_back(p.src);  // read by the `ignore` directive below
-        } else if (word == "#ifdef" || word == "#ifndef" || word == "#if" || word == "#else" || word == "#endif" ||
-                   word == "#undef" || word == "#elif") {
-            m_sink.warning(p.src, word, "'" + std::string(word) + "' is not supported: every line is read");
-        }
-        // Any other '#' line is a comment (L-Py files use Python's '#').
-    }
-
-    // Textual #defines put in place (the line keeps its number; columns after a replacement
-    // are counted in the replaced text). As the C preprocessor does, a macro is not expanded
-    // again inside its own expansion (`#define a &(a) F` would otherwise grow without end),
-    // and an expansion past 64 KB is refused.
-    if (!m_textMacros.empty()) {
-        for (auto& l : body) {
-            std::vector<std::string> active;
-            bool tooLong = false;
-            std::string expanded = expandTextMacros(l.text, active, tooLong);
-            if (tooLong) {
-                m_sink.error(l, l.text, "the #define names on this line expand to more than 64 KB of text");
-                l.text = l.text.substr(0, 0);
-                continue;
-            }
-            if (expanded != l.text) {
-                m_store.push_back(std::move(expanded));
-                l.text = m_store.back();
-                l.original = m_store.back();
-            }
-        }
-    }
-
-    // Productions written over several lines become one logical line.
-    for (size_t i = 0; i < body.size(); ++i) {
-        std::string_view t = trim(body[i].text);
-        Line out;
-        out.src = body[i];
-        std::string_view value;
-        std::string key = keyOf(t, value);
-        if (isStatementBlockKey(key) && value.starts_with("{") && braceDepth(t) > 0) {
-            // `define: {` or `EndEach: {` with its statements on the lines after: one line.
-            std::string joined(body[i].text);
-            size_t j = i;
-            while (braceDepth(joined) > 0 && j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
-                joined += ' ';
-                joined += body[++j].text;
-            }
-            for (size_t k = i + 1; k <= j; ++k) body[k].text = body[k].text.substr(0, 0);
-            m_store.push_back(std::move(joined));
-            body[i].text = m_store.back();
-            body[i].original = m_store.back();
-            out.src = body[i];
-            t = trim(body[i].text);
-            key = keyOf(t, value);
-        }
-        const bool directive = (!key.empty() && arrowAt(t) == std::string_view::npos && knownKey(key)) ||
-                               !sectionWord(t).empty() || startsWithWord(t, "module");
-        // A rule whose successor is on the lines after its arrow (`M(t) : 1 {...} -->` then the
-        // successor, indented: L-system Explorer's files) goes on to the next line.
-        auto successorEmpty = [](std::string_view r) {
-            const size_t a = arrowAt(r);
-            if (a == std::string_view::npos) return false;
-            size_t k = a;
-            while (k < r.size() && (r[k] == '-' || r[k] == '>')) ++k;
-            return trim(r.substr(k)).empty();
-        };
-        const bool successorNext = arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && successorEmpty(t) &&
-                                   i + 1 < body.size() && !trim(body[i + 1].text).empty() && isSpace(body[i + 1].text[0]) &&
-                                   arrowAt(body[i + 1].text) == std::string_view::npos;
-        bool complete = t.empty() || directive || t.starts_with("#") ||
-                        (arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && !successorNext);
-        if (!complete) {
-            // Join while a block or parenthesis is open, or no arrow has come yet and the next
-            // line continues the production (a block, the arrow, ':' or L-Py's produce).
-            std::string joined(body[i].text);
-            Origin o;
-            o.pieces.emplace_back(0, body[i].number);
-            o.pieceStart.push_back(0);
-            size_t j = i;
-            bool done = false, python = false;
-            while (j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
-                std::string_view cur = trim(joined);
-                std::string_view next = trim(body[j + 1].text);
-                const bool hasArrow = arrowAt(joined) != std::string_view::npos;
-                const bool open = openCount(joined) > 0;
-                const bool produce = startsWithWord(next, "produce") || startsWithWord(next, "nproduce");
-                const bool successor = hasArrow && !open && successorEmpty(joined) && !next.empty();
-                if (!open && !successor && (hasArrow || next.empty())) break;
-                if (!open && !successor && !(cur.ends_with(":") || cur.ends_with("}") || next.starts_with("{") ||
-                               next.starts_with("-->") || next.starts_with("->") || next.starts_with(":") ||
-                               next.starts_with("}") || produce))
-                    break;
-                if (!produce && !open && !successor && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
-                                 startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
-                    m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
-                                                    "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
-                    python = true;
-                    break;
-                }
-                ++j;
-                joined += ' ';
-                o.pieces.emplace_back(joined.size(), body[j].number);
-                o.pieceStart.push_back(0);
-                std::string piece(body[j].text);
-                if (produce) {  // L-Py: `A(x) :` then `produce F(x) A(x+1)`
-                    size_t at = piece.find_first_not_of(" \t");
-                    size_t len = piece[at] == 'n' ? 8 : 7;
-                    piece.replace(at, len, std::string("-->") + std::string(len - 3, ' '));
-                }
-                joined += piece;
-                if (arrowAt(joined) != std::string_view::npos && openCount(joined) <= 0 && !successorEmpty(joined)) {
-                    done = true;
-                    break;
-                }
-            }
-            if (python) {  // reported once, at the Python line; its rule is not read
-                // The rule's indented body goes with it.
-                for (size_t k = i + 1; k < body.size() && (k <= j + 1 || (!body[k].text.empty() && isSpace(body[k].text[0]))); ++k)
-                    body[k].text = body[k].text.substr(0, 0);
-                out.src.text = out.src.text.substr(0, 0);
-            } else if (done) {
-                m_store.push_back(std::move(joined));
-                out.src.text = m_store.back();
-                out.src.original = m_store.back();
-                o.logical = body[i].number;
-                m_origins.push_back(std::move(o));
-                i = j;
-            }
-        }
-        m_lines.push_back(out);
-    }
-    return true;
-}
-
-std::string Parser::expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const {
-    std::string out;
-    size_t i = 0;
-    while (i < text.size() && !tooLong) {
-        if (!(std::isalpha(static_cast<unsigned char>(text[i])) || text[i] == '_') || (i > 0 && identChar(text[i - 1]))) {
-            out += text[i++];
-            continue;
-        }
-        size_t end = i;
-        while (end < text.size() && identChar(text[end])) ++end;
-        const std::string_view word = text.substr(i, end - i);
-        i = end;
-        const std::string* value = nullptr;
-        for (const auto& [name, v] : m_textMacros)
-            if (name == word) value = &v;
-        if (!value || std::find(active.begin(), active.end(), word) != active.end()) {
-            out += word;
-            continue;
-        }
-        active.emplace_back(word);
-        out += expandTextMacros(*value, active, tooLong);
-        active.pop_back();
-        if (out.size() > (64u << 10)) tooLong = true;
-    }
-    return out;
-}
+// [SECTION] A file's logical lines
 
 void Parser::buildCpfgLines() {
     if (size_t open = blankComments(m_text); open != std::string::npos) {
@@ -560,6 +226,153 @@ void Parser::buildCpfgLines() {
     if (!m_options.fileName.empty()) stack.push_back(m_options.fileName);
     readCpfgFile(m_text, "", 0, 0, stack);
 }
+
+bool Parser::readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
+                          std::vector<std::string>& stack) {
+    // `text` is m_text itself (comments already blanked) or an included file kept in m_store.
+    const bool top = includeName.empty();
+    const int originBase = top ? 0 : kIncludeLineBase * int(m_origins.size() + 1);
+    if (!top) {
+        Origin o;
+        o.logical = originBase;
+        o.includeName = includeName;
+        o.includeLine = includeLine;
+        m_origins.push_back(o);
+    }
+    std::vector<SourceLine> lines = cpfgPhysicalLines(text, top, originBase);
+    joinCpfgContinuations(lines, top);
+    std::vector<SourceLine> body = preprocessCpfg(lines, top, includeLine, depth, stack);
+    putCpfgTextMacros(body);
+    joinCpfgLines(body);
+    return true;
+}
+
+// The text's lines as they stand, numbered from originBase + 1 (an included file's apart).
+std::vector<SourceLine> Parser::cpfgPhysicalLines(std::string_view text, bool top, int originBase) const {
+    std::vector<SourceLine> lines;
+    size_t start = 0;
+    int number = 1;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        SourceLine l;
+        l.number = originBase + number++;
+        l.text = text.substr(start, end - start);
+        if (top) l.original = std::string_view(m_original).substr(start, end - start);
+        if (l.text.ends_with('\r')) l.text.remove_suffix(1);
+        lines.push_back(l);
+        start = end + 1;
+    }
+    return lines;
+}
+
+// [SECTION] Productions and blocks written over several lines
+
+// Productions written over several lines become one logical line.
+void Parser::joinCpfgLines(std::vector<SourceLine>& body) {
+    for (size_t i = 0; i < body.size(); ++i) {
+        std::string_view t = trim(body[i].text);
+        Line out;
+        out.src = body[i];
+        std::string_view value;
+        std::string key = keyOf(t, value);
+        if (isStatementBlockKey(key) && value.starts_with("{") && braceDepth(t) > 0) {
+            // `define: {` or `EndEach: {` with its statements on the lines after: one line.
+            joinCpfgStatementBlock(body, i);
+            out.src = body[i];
+            t = trim(body[i].text);
+            key = keyOf(t, value);
+        }
+        const bool directive = (!key.empty() && arrowAt(t) == std::string_view::npos && knownKey(key)) ||
+                               !sectionWord(t).empty() || startsWithWord(t, "module");
+        // A rule whose successor is on the lines after its arrow (`M(t) : 1 {...} -->` then the
+        // successor, indented: L-system Explorer's files) goes on to the next line.
+        const bool successorNext = arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && successorEmpty(t) &&
+                                   i + 1 < body.size() && !trim(body[i + 1].text).empty() && isSpace(body[i + 1].text[0]) &&
+                                   arrowAt(body[i + 1].text) == std::string_view::npos;
+        bool complete = t.empty() || directive || t.starts_with("#") ||
+                        (arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && !successorNext);
+        if (!complete) i = joinCpfgProduction(body, i, out);
+        m_lines.push_back(out);
+    }
+}
+
+// `define: {` ... `}` over several lines: one line, in place of the first.
+void Parser::joinCpfgStatementBlock(std::vector<SourceLine>& body, size_t i) {
+    std::string joined(body[i].text);
+    size_t j = i;
+    while (braceDepth(joined) > 0 && j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
+        joined += ' ';
+        joined += body[++j].text;
+    }
+    for (size_t k = i + 1; k <= j; ++k) body[k].text = body[k].text.substr(0, 0);
+    m_store.push_back(std::move(joined));
+    body[i].text = m_store.back();
+    body[i].original = m_store.back();
+}
+
+// Join while a block or parenthesis is open, or no arrow has come yet and the next line
+// continues the production (a block, the arrow, ':' or L-Py's produce). Returns the last
+// line read into `out` (i when none was joined).
+size_t Parser::joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line& out) {
+    std::string joined(body[i].text);
+    Origin o;
+    o.pieces.emplace_back(0, body[i].number);
+    o.pieceStart.push_back(0);
+    size_t j = i;
+    bool done = false, python = false;
+    while (j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
+        std::string_view cur = trim(joined);
+        std::string_view next = trim(body[j + 1].text);
+        const bool hasArrow = arrowAt(joined) != std::string_view::npos;
+        const bool open = openCount(joined) > 0;
+        const bool produce = startsWithWord(next, "produce") || startsWithWord(next, "nproduce");
+        const bool successor = hasArrow && !open && successorEmpty(joined) && !next.empty();
+        if (!open && !successor && (hasArrow || next.empty())) break;
+        if (!open && !successor && !(cur.ends_with(":") || cur.ends_with("}") || next.starts_with("{") ||
+                       next.starts_with("-->") || next.starts_with("->") || next.starts_with(":") ||
+                       next.starts_with("}") || produce))
+            break;
+        if (!produce && !open && !successor && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
+                         startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
+            m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
+                                            "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
+            python = true;
+            break;
+        }
+        ++j;
+        joined += ' ';
+        o.pieces.emplace_back(joined.size(), body[j].number);
+        o.pieceStart.push_back(0);
+        std::string piece(body[j].text);
+        if (produce) {  // L-Py: `A(x) :` then `produce F(x) A(x+1)`
+            size_t at = piece.find_first_not_of(" \t");
+            size_t len = piece[at] == 'n' ? 8 : 7;
+            piece.replace(at, len, std::string("-->") + std::string(len - 3, ' '));
+        }
+        joined += piece;
+        if (arrowAt(joined) != std::string_view::npos && openCount(joined) <= 0 && !successorEmpty(joined)) {
+            done = true;
+            break;
+        }
+    }
+    if (python) {  // reported once, at the Python line; its rule is not read
+        // The rule's indented body goes with it.
+        for (size_t k = i + 1; k < body.size() && (k <= j + 1 || (!body[k].text.empty() && isSpace(body[k].text[0]))); ++k)
+            body[k].text = body[k].text.substr(0, 0);
+        out.src.text = out.src.text.substr(0, 0);
+    } else if (done) {
+        m_store.push_back(std::move(joined));
+        out.src.text = m_store.back();
+        out.src.original = m_store.back();
+        o.logical = body[i].number;
+        m_origins.push_back(std::move(o));
+        return j;
+    }
+    return i;
+}
+
+// [SECTION] What each line is
 
 void Parser::warnMixed(const SourceLine& line, std::string_view t) {
     if (m_mixed) return;
@@ -673,6 +486,8 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
     }
     l.kind = Line::DirectiveLine;
 }
+
+// [SECTION] Diagnostics at the lines they were written on
 
 void Parser::finishCpfg(std::vector<Diagnostic>& diags) {
     std::map<int, const Origin*> byLine;

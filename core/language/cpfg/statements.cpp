@@ -9,7 +9,6 @@ namespace sprout::detail {
 namespace {
 
 bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Index of the bracket closing the one at `open` (same kind), or npos.
 size_t matching(std::string_view s, size_t open) {
@@ -64,7 +63,7 @@ private:
         if (!identStart(text[i]))
             return fail(text.substr(i), "expected a statement such as 'x = a * 2;' or 'if (x > 1) y = 2;'");
         size_t start = i;
-        while (i < text.size() && identChar(text[i])) ++i;
+        while (i < text.size() && isIdentChar(text[i])) ++i;
         std::string_view name = text.substr(start, i - start);
         i = skipSpaces(text, i);
         if (name == "if") {
@@ -80,7 +79,7 @@ private:
             if (i >= text.size()) return fail(text.substr(start), "'if (...)' needs a statement after it");
             if (!statement(text, i, s.then)) return false;
             size_t j = skipSpaces(text, i);
-            if (text.substr(j, 4) == "else" && (j + 4 >= text.size() || !identChar(text[j + 4]))) {
+            if (text.substr(j, 4) == "else" && (j + 4 >= text.size() || !isIdentChar(text[j + 4]))) {
                 i = skipSpaces(text, j + 4);
                 if (i >= text.size()) return fail(text.substr(j), "'else' needs a statement after it");
                 if (!statement(text, i, s.otherwise)) return false;
@@ -132,12 +131,12 @@ bool Parser::parseBlock(const SourceLine& line, std::string_view text, const std
 
 void Parser::collectAssigned(std::string_view text, std::vector<std::string>& names) {
     for (size_t i = 0; i < text.size();) {
-        if (!identStart(text[i]) || (i > 0 && (identChar(text[i - 1]) || text[i - 1] == '.'))) {
+        if (!identStart(text[i]) || (i > 0 && (isIdentChar(text[i - 1]) || text[i - 1] == '.'))) {
             ++i;
             continue;
         }
         size_t start = i;
-        while (i < text.size() && identChar(text[i])) ++i;
+        while (i < text.size() && isIdentChar(text[i])) ++i;
         std::string name(text.substr(start, i - start));
         size_t j = skipSpaces(text, i);
         if (j < text.size() && text[j] == '=' && (j + 1 >= text.size() || text[j + 1] != '=') && name != "if" &&

@@ -120,23 +120,27 @@ struct Translator {
     }
 };
 
-}  // namespace
+struct LparserRule {
+    char pred;
+    std::string succ;
+    int line;
+};
 
-ImportResult importLparser(std::string_view source, std::string_view name) {
-    ImportResult r;
-    Translator tr;
-    tr.diags = &r.diagnostics;
+// What an Lparser file says, in either of its formats.
+struct LparserFile {
     int recursion = 4;
     double thickness = 10;
     std::string axiom;
     int axiomLine = 0;
-    struct Rule {
-        char pred;
-        std::string succ;
-        int line;
-    };
-    std::vector<Rule> rules;
+    std::vector<LparserRule> rules;
     std::vector<std::string> palette;
+    int lines = 0;  // lines read (the last one, where a missing axiom is reported)
+};
+
+// Reads the file line by line: keywords (`recursion 4`, `rule X = ...`), or the older format
+// of values by position. The angle goes to the translator, which turns by it.
+LparserFile readLparserFile(std::string_view source, Translator& tr, std::vector<Diagnostic>& diags) {
+    LparserFile f;
     std::istringstream in{std::string(source)};
     std::string raw;
     int number = 0;
@@ -155,28 +159,28 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
         std::string rest = trimmed(std::string_view(line).substr(key.size()));
         auto number_ = [&](double& out) {
             if (std::sscanf(rest.c_str(), "%lf", &out) != 1)
-                r.diagnostics.push_back({number, int(key.size() + 2), "'" + key + "' needs a number", Severity::Error});
+                diags.push_back({number, int(key.size() + 2), "'" + key + "' needs a number", Severity::Error});
         };
         if (positional == 0 && (std::isdigit(static_cast<unsigned char>(key[0])) || key[0] == '.')) positional = 1;
         if (positional) {  // recursion, angle, thickness, axiom, rules X=..., @
             if (key == "@") break;
             if (positional <= 3) {
                 double v = std::atof(key.c_str());
-                if (positional == 1) recursion = countOf(v);
+                if (positional == 1) f.recursion = countOf(v);
                 else if (positional == 2) tr.angle = v;
-                else thickness = v;
+                else f.thickness = v;
                 ++positional;
                 continue;
             }
             if (positional == 4) {
-                axiom = line;
-                axiomLine = number;
+                f.axiom = line;
+                f.axiomLine = number;
                 ++positional;
                 continue;
             }
             size_t eq = line.find('=');
-            if (eq == 1) rules.push_back({line[0], line.substr(2), number});
-            else r.diagnostics.push_back({number, 1, "expected a rule such as 'X=F[+X]'", Severity::Error});
+            if (eq == 1) f.rules.push_back({line[0], line.substr(2), number});
+            else diags.push_back({number, 1, "expected a rule such as 'X=F[+X]'", Severity::Error});
             continue;
         }
         double v = 0;
@@ -187,19 +191,19 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
                                                        "switch_yz", "switch_zy", "no_wait", "bounding_box", "seed",
                                                        "color", "axiom", "rule"};
         if (indented && !keywords.count(key) && lastWasString) {
-            if (rules.empty() || lastWasAxiom) axiom += line;
-            else rules.back().succ += line;
+            if (f.rules.empty() || lastWasAxiom) f.axiom += line;
+            else f.rules.back().succ += line;
             continue;
         }
         lastWasString = key == "axiom" || key == "rule";
         lastWasAxiom = key == "axiom";
         if (key == "recursion") {
             number_(v);
-            recursion = countOf(v);
+            f.recursion = countOf(v);
         } else if (key == "angle") {
             number_(tr.angle);
         } else if (key == "thickness") {
-            number_(thickness);
+            number_(f.thickness);
         } else if (key == "min_thickness" || key == "shape" || key == "switch_yz" || key == "switch_zy" ||
                    key == "no_wait" || key == "bounding_box" || key == "seed") {
             // Output and viewer settings of Lparser: nothing to translate.
@@ -208,74 +212,86 @@ ImportResult importLparser(std::string_view source, std::string_view name) {
             int i = 0, red = 0, green = 0, blue = 0;
             std::istringstream numbers(rest);
             if (!(numbers >> i >> red >> green >> blue) || i < 0 || i > 126) {
-                r.diagnostics.push_back({number, 7, "expected 'color INDEX RED GREEN BLUE'", Severity::Error});
+                diags.push_back({number, 7, "expected 'color INDEX RED GREEN BLUE'", Severity::Error});
                 continue;
             }
-            if (palette.empty()) {
+            if (f.palette.empty()) {
                 std::istringstream p(kLparserPalette);
-                for (std::string c; p >> c;) palette.push_back(c);
+                for (std::string c; p >> c;) f.palette.push_back(c);
             }
-            if (palette.size() <= size_t(i)) palette.resize(size_t(i) + 1, "#808080");
+            if (f.palette.size() <= size_t(i)) f.palette.resize(size_t(i) + 1, "#808080");
             char hex[8];
             std::snprintf(hex, sizeof hex, "#%02x%02x%02x", red & 255, green & 255, blue & 255);
-            palette[size_t(i)] = hex;
+            f.palette[size_t(i)] = hex;
         } else if (key == "axiom") {
-            axiom = rest;
-            axiomLine = number;
+            f.axiom = rest;
+            f.axiomLine = number;
         } else if (key == "rule") {
             size_t eq = rest.find('=');
             std::string pred = trimmed(std::string_view(rest).substr(0, eq == std::string::npos ? 0 : eq));
             if (eq == std::string::npos || pred.size() != 1) {
-                r.diagnostics.push_back({number, 6, "expected 'rule X = successor' with a one-character X", Severity::Error});
+                diags.push_back({number, 6, "expected 'rule X = successor' with a one-character X", Severity::Error});
                 continue;
             }
-            rules.push_back({pred[0], trimmed(std::string_view(rest).substr(eq + 1)), number});
+            f.rules.push_back({pred[0], trimmed(std::string_view(rest).substr(eq + 1)), number});
         } else {
-            r.diagnostics.push_back({number, 1, "unknown Lparser keyword '" + key + "' (ignored)", Severity::Warning});
+            diags.push_back({number, 1, "unknown Lparser keyword '" + key + "' (ignored)", Severity::Warning});
         }
     }
-    if (axiom.empty()) r.diagnostics.push_back({std::max(number, 1), 1, "the file has no axiom", Severity::Error});
+    f.lines = number;
+    return f;
+}
+
+// Lparser closes what a string leaves open; listings copied from documents drop a ']'
+// now and then. Balance each string, with a warning.
+std::string balanced(std::string text, int line, std::vector<Diagnostic>& diags) {
+    int depth = 0;
+    std::string out;
+    for (char c : text) {
+        if (c == ']' && depth == 0) {
+            diags.push_back({line, 1, "a ']' closes no branch (dropped)", Severity::Warning});
+            continue;
+        }
+        depth += (c == '[') - (c == ']');
+        out += c;
+    }
+    if (depth > 0) {
+        diags.push_back({line, 1, std::to_string(depth) + " unclosed '[' (closed at the end)", Severity::Warning});
+        out.append(size_t(depth), ']');
+    }
+    return out;
+}
+
+}  // namespace
+
+ImportResult importLparser(std::string_view source, std::string_view name) {
+    ImportResult r;
+    Translator tr;
+    tr.diags = &r.diagnostics;
+    const LparserFile f = readLparserFile(source, tr, r.diagnostics);
+    if (f.axiom.empty()) r.diagnostics.push_back({std::max(f.lines, 1), 1, "the file has no axiom", Severity::Error});
 
     std::ostringstream out;
     out << "# Imported from Lparser: " << name << "\n";
-    out << "n: " << recursion << "\nangle: " << tr.angle << "\n";
+    out << "n: " << f.recursion << "\nangle: " << tr.angle << "\n";
     // Lparser's thickness is a percentage of the segment length.
-    out << "width: " << thickness / 100.0 << "\n";
-    out << "palette: " << (palette.empty() ? kLparserPalette : [&] {
+    out << "width: " << f.thickness / 100.0 << "\n";
+    out << "palette: " << (f.palette.empty() ? kLparserPalette : [&] {
         std::string p;
-        for (const auto& c : palette) p += (p.empty() ? "" : " ") + c;
+        for (const auto& c : f.palette) p += (p.empty() ? "" : " ") + c;
         return p;
     }()) << "\nseed: 1\n";
-    // Lparser closes what a string leaves open; listings copied from documents drop a ']'
-    // now and then. Balance each string, with a warning.
-    auto balance = [&](std::string text, int line) {
-        int depth = 0;
-        std::string out;
-        for (char c : text) {
-            if (c == ']' && depth == 0) {
-                r.diagnostics.push_back({line, 1, "a ']' closes no branch (dropped)", Severity::Warning});
-                continue;
-            }
-            depth += (c == '[') - (c == ']');
-            out += c;
-        }
-        if (depth > 0) {
-            r.diagnostics.push_back({line, 1, std::to_string(depth) + " unclosed '[' (closed at the end)", Severity::Warning});
-            out.append(size_t(depth), ']');
-        }
-        return out;
-    };
-    tr.line = axiomLine;
-    std::string ax = balance(tr.translate(axiom), axiomLine);
+    tr.line = f.axiomLine;
+    std::string ax = balanced(tr.translate(f.axiom), f.axiomLine, r.diagnostics);
     std::vector<std::string> lines;
-    for (const Rule& rule : rules) {
+    for (const LparserRule& rule : f.rules) {
         tr.line = rule.line;
         std::string pred = tr.name(rule.pred);
         if (rule.pred == '(' || rule.pred == ')' || rule.pred == '[' || rule.pred == ']') {
             r.diagnostics.push_back({rule.line, 6, "a rule cannot rewrite a bracket", Severity::Error});
             continue;
         }
-        lines.push_back(pred + " -> " + balance(tr.translate(rule.succ), rule.line));
+        lines.push_back(pred + " -> " + balanced(tr.translate(rule.succ), rule.line, r.diagnostics));
     }
     if (!tr.renamed.empty()) {
         out << "module:";
