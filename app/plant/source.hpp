@@ -1,7 +1,7 @@
 #pragma once
 // What a source names, read: a file of any kind Sprout opens (FILE.l:System picks a Fractint
 // system; Lparser and Fractint files become .lsys text, a PNG gives the grammar it carries),
-// standard input ("-"), or a preset's name. Shared by the CLI's loader (app/cli/load.cpp) and
+// standard input ("-"), or a preset's name. Shared by openPlant (app/plant/open.hpp) and
 // the Python module (python/), which runs L-Py models its own way.
 #include <optional>
 #include <string>

@@ -3,6 +3,8 @@
 // progress (Renderer::Pass), shared by renderer.cpp (set-up), renderer_upload.cpp (the scene
 // on the GPU), renderer_draw.cpp (pictures) and renderer_phases.cpp (a picture's passes).
 #include <cstddef>
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <future>
 #include <memory>
@@ -196,6 +198,29 @@ struct Renderer::Pass {
     bool sketch = false;        // a moving frame that draws the scene's proxy
     const std::atomic<bool>* cancel = nullptr;  // Renderer::prime: stop between passes once set
     RenderStats stats;
+};
+
+// The next piece of a phase: how many of its units it draws, and the move to the next phase.
+// A piece is of one part of one phase only (their costs differ: a triangle covers pixels, a
+// line few), unless all is drawn at once.
+struct Renderer::Piece {
+    const Renderer& r;
+    Pass& p;
+    std::size_t budget;
+    bool wait;
+    std::size_t take(std::size_t total) {
+        p.lastPhase = p.phase;
+        p.lastPart = r.partOf(p);
+        const std::size_t end = wait ? total : std::min(total, r.partEnd(p));
+        const std::size_t n = std::min(end - p.done, budget);
+        p.lastUnits = n;
+        return n;
+    }
+    bool next(int phase) {
+        p.phase = phase, p.done = 0, p.started = false;
+        // Go on to it now only when drawing at once (and not cancelled: Renderer::prime).
+        return wait && !(p.cancel && p.cancel->load(std::memory_order_relaxed));
+    }
 };
 
 }  // namespace sprout::render

@@ -18,29 +18,6 @@ namespace sprout::render {
 
 using detail::kShadowSize;
 
-// The next piece of a phase: how many of its units it draws, and the move to the next phase.
-// A piece is of one part of one phase only (their costs differ: a triangle covers pixels, a
-// line few), unless all is drawn at once.
-struct Renderer::Piece {
-    const Renderer& r;
-    Pass& p;
-    std::size_t budget;
-    bool wait;
-    std::size_t take(std::size_t total) {
-        p.lastPhase = p.phase;
-        p.lastPart = r.partOf(p);
-        const std::size_t end = wait ? total : std::min(total, r.partEnd(p));
-        const std::size_t n = std::min(end - p.done, budget);
-        p.lastUnits = n;
-        return n;
-    }
-    bool next(int phase) {
-        p.phase = phase, p.done = 0, p.started = false;
-        // Go on to it now only when drawing at once (and not cancelled: Renderer::prime).
-        return wait && !(p.cancel && p.cancel->load(std::memory_order_relaxed));
-    }
-};
-
 // The shadow map, from the light: the scene's depth, a range of it a piece.
 bool Renderer::shadowPhase(Piece& piece) {
     Impl& s = *m;
