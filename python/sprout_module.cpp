@@ -22,6 +22,7 @@
 #include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/plant/growth.hpp"
+#include "app/plant/open.hpp"
 #include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
 #include "core/derive/draw.hpp"
@@ -236,16 +237,16 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
     if (kind == FileKind::Lpy && lpy::pythonAvailable()) {
         if (!python) throw py::value_error(name + ": an L-Py model runs Python; python=False refuses to run it");
         lpy::RunOptions ro;
-        ro.path = path;
         ro.steps = steps;
         ro.keepSteps = true;
         ro.drawLater = true;  // open() and derive() derive; a step is drawn when it is asked for
         ro.keepRecord = false;  // and read when it is asked for
-        lpy::Model m;
+        OpenedText opened;
         {
             py::gil_scoped_release release;  // the model takes the GIL itself, and can be cancelled
-            m = lpy::runModel(text, ro);
+            opened = openText(text, kind, path, ro);
         }
+        lpy::Model& m = *opened.model;
         if (!m.ok()) raiseDiagnostics(m.diagnostics, name);
         p.grammar = m.drawable;
         p.lpyDrawer = std::move(m.later);
@@ -262,7 +263,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         p.text = std::move(text);
         return p;
     }
-    ParseResult r = parse(text, parseOptionsFor(kind, path));
+    OpenedText r = openText(text, kind, path);
     if (!r.ok()) raiseDiagnostics(r.diagnostics, name);
     p.grammar = r.grammar;
     p.dialect = r.grammar->dialect;

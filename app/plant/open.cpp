@@ -29,6 +29,22 @@ FileKind sourceKind(const std::string& source) {
     return FileKind::Lsys;
 }
 
+OpenedText openText(const std::string& text, FileKind kind, const std::string& path, const lpy::RunOptions& lpyOptions) {
+    OpenedText out;
+    if (kind == FileKind::Lpy && lpy::pythonAvailable()) {
+        lpy::RunOptions ro = lpyOptions;
+        ro.path = path;
+        out.model = std::make_shared<lpy::Model>(lpy::runModel(text, ro));
+        out.grammar = out.model->drawable;
+        out.diagnostics = out.model->diagnostics;
+        return out;
+    }
+    ParseResult r = parse(text, parseOptionsFor(kind, path));
+    out.grammar = std::move(r.grammar);
+    out.diagnostics = std::move(r.diagnostics);
+    return out;
+}
+
 std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOptions& options, const Report& report) {
     SourceText read = readSource(source);
     for (const auto& d : read.diagnostics) report(formatDiagnostic(d, read.diagnosticsName));
@@ -46,27 +62,26 @@ std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOpti
             return std::nullopt;
         }
         lpy::RunOptions ro;
-        ro.path = includePath;
         ro.steps = options.steps;
         ro.keepSteps = options.keepSteps;
         if (options.maxModules) ro.maxModules = std::size_t(options.maxModules);
         if (options.maxBytes) ro.maxBytes = options.maxBytes;
-        lpy::Model model = lpy::runModel(text, ro);
-        for (const auto& d : model.diagnostics) report(formatDiagnostic(d, out.displayName));
-        if (!model.ok()) return std::nullopt;
-        out.grammar = model.drawable;
-        out.derived = std::move(model.derived);
-        out.steps = std::move(model.steps);
+        OpenedText opened = openText(text, out.kind, includePath, ro);
+        for (const auto& d : opened.diagnostics) report(formatDiagnostic(d, out.displayName));
+        if (!opened.ok()) return std::nullopt;
+        out.grammar = opened.grammar;
+        out.derived = std::move(opened.model->derived);
+        out.steps = std::move(opened.model->steps);
         out.ranPython = true;
         out.dialect = "L-Py";
         out.text = std::move(text);
         return out;
     }
-    ParseResult r = parse(text, parseOptionsFor(out.kind, includePath));
-    for (const auto& d : r.diagnostics) report(formatDiagnostic(d, out.displayName));
-    if (!r.ok()) return std::nullopt;
-    out.grammar = r.grammar;
-    if (out.dialect.empty()) out.dialect = r.grammar->dialect;
+    OpenedText opened = openText(text, out.kind, includePath);
+    for (const auto& d : opened.diagnostics) report(formatDiagnostic(d, out.displayName));
+    if (!opened.ok()) return std::nullopt;
+    out.grammar = opened.grammar;
+    if (out.dialect.empty()) out.dialect = opened.grammar->dialect;
     out.text = std::move(text);
     return out;
 }

@@ -12,6 +12,7 @@
 #include "core/language/file_kind.hpp"
 #include "core/scene/forest.hpp"
 #include "core/language/grammar.hpp"
+#include "lpy/lpy.hpp"
 
 namespace sprout {
 
@@ -37,6 +38,19 @@ struct LoadOptions {
     bool keepSteps = false;  // an L-Py model: keep every step's drawing (growth videos)
     std::uint64_t maxModules = 0, maxBytes = 0;  // an L-Py model's limits (--max-modules, --max-memory; 0: its own)
 };
+
+// A text of `kind` made a plant: its grammar parsed (any grammar kind; `path` the file it came
+// from, for #include and files beside it), or an L-Py model run by its Python (lpy::runModel
+// with `lpyOptions`, the file `path`). The one place a source's text becomes a grammar, for the
+// command line, the viewer's worker and Python's Plant; callers decide whether an L-Py model's
+// Python may run before they call it.
+struct OpenedText {
+    std::shared_ptr<const Grammar> grammar;  // null when it cannot be drawn (its diagnostics say why)
+    std::vector<Diagnostic> diagnostics;
+    std::shared_ptr<lpy::Model> model;  // an L-Py model's run: its steps, its string, what draws later
+    bool ok() const { return grammar != nullptr; }
+};
+OpenedText openText(const std::string& text, FileKind kind, const std::string& path, const lpy::RunOptions& lpyOptions = {});
 
 // Reports diagnostics (errors and warnings); nullopt when the grammar has errors or cannot be
 // read.

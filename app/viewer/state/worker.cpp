@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "app/plant/growth.hpp"
+#include "app/plant/open.hpp"
 #include "core/scene/forest.hpp"
 #include "core/scene/ifs.hpp"
 
@@ -130,13 +131,12 @@ std::shared_ptr<Result> Worker::processLpy(const Request& r, std::shared_ptr<Res
     if (!m_lpy || r.text != m_lpyText || r.path != m_lpyPath || steps != m_lpySteps) {
         m_lpy.reset();
         lpy::RunOptions o;
-        o.path = r.path;
         o.steps = steps;
         o.cancel = &m_cancel;
         o.keepSteps = true;
         o.drawLater = true;
         o.maxModules = std::size_t(std::min<std::uint64_t>(limits.maxModules, 50'000'000));
-        auto model = std::make_shared<lpy::Model>(lpy::runModel(r.text, o));
+        std::shared_ptr<lpy::Model> model = openText(r.text, FileKind::Lpy, r.path, o).model;
         out->deriveMs = millisSince(t0);
         if (model->cancelled || m_cancel) {
             out->cancelled = true;
@@ -228,7 +228,7 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     if (kind == FileKind::Lpy && lpy::pythonAvailable()) return processLpy(r, out);
     auto t0 = std::chrono::steady_clock::now();
     if (r.text != m_cachedText || kind != m_cachedKind || r.path != m_cachedPath || !m_cachedGrammar) {
-        ParseResult parsed = parse(r.text, parseOptionsFor(kind, r.path));
+        OpenedText parsed = openText(r.text, kind, r.path);
         m_cachedText = r.text;
         m_cachedKind = kind;
         m_cachedPath = r.path;
