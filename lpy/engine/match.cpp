@@ -3,12 +3,25 @@
 // left and right of it (skipping branches and the modules a filter ignores), a rule's header
 // at a position, and a body's own context tests. One file: a match and everything it calls,
 // so that it stays inlined; the passes that try the rules are the Engine's (passes.cpp).
+
+// Index of this file:
+//   [SECTION] binding: inheritance, header constants and predicates
+//   [SECTION] a module matched
+//   [SECTION] the bracket index
+//   [SECTION] left contexts
+//   [SECTION] a body's context tests
+//   [SECTION] right contexts
+//   [SECTION] a rule's header
+
 #include <algorithm>
 
 #include "lpy/engine/match.hpp"
 
 namespace sprout::lpy {
 
+//-----------------------------------------------------------------------------
+// [SECTION] binding: inheritance, header constants and predicates
+//-----------------------------------------------------------------------------
 void Matcher::setInheritance(bool on) {
     m_ancestors.clear();
     if (on)
@@ -30,6 +43,9 @@ void Matcher::compile(const PatternModule& p, py::dict& ns) {
     }
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] a module matched
+//-----------------------------------------------------------------------------
 bool Matcher::skipped(int cls, int filter) const {
     if (filter < 0 || cls == ModuleClasses::kPush || cls == ModuleClasses::kPop) return false;
     const ContextFilter& f = m_tr.filters[size_t(filter)];
@@ -130,6 +146,9 @@ bool Matcher::matchModule(const PatternModule& p, const LModule& m, std::vector<
     return k == total;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] the bracket index
+//-----------------------------------------------------------------------------
 namespace {
 // The bracket that closes/opens the one at j, by counting (strings not indexed).
 long partner(const LString& s, long j) {
@@ -159,6 +178,9 @@ void Matcher::matchBrackets(const LString& s) {
     m_matchOf = &s;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] left contexts
+//-----------------------------------------------------------------------------
 // or(...)'s variables: None for each alternative's before and after the one that matched.
 void Matcher::bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound) {
     auto nones = [&](size_t a) {
@@ -256,6 +278,9 @@ bool Matcher::matchLeft(const std::vector<PatternModule>& ps, const LString& s, 
     return true;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] a body's context tests
+//-----------------------------------------------------------------------------
 bool Matcher::inContext(size_t index, bool left, py::handle dict) {
     if (!m_body.s) throw py::value_error(std::string(left ? "InLeftContext" : "InRightContext") + " is called outside a rule's body");
     if (index >= m_tr.contextPatterns.size()) throw py::index_error("no such context pattern");
@@ -275,6 +300,9 @@ bool Matcher::inContext(size_t index, bool left, py::handle dict) {
     return true;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] right contexts
+//-----------------------------------------------------------------------------
 long Matcher::partnerIn(const View& s, size_t j) {
     if (!s.reversed && m_matchOf == s.s && m_match.size() == s.size()) return m_match[j];
     int depth = 0;
@@ -382,6 +410,9 @@ size_t Matcher::matchRight(const std::vector<PatternModule>& ps, const View& s, 
     return j;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] a rule's header
+//-----------------------------------------------------------------------------
 bool Matcher::matchAt(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, py::tuple& args, long& leftEnd,
                      size_t& rightEnd) {
     const size_t len = r.pred.size();

@@ -24,6 +24,14 @@
 // This file is the derivation, with the inner loop and all it calls in one translation unit;
 // what is found before it (the rules compiled, the shapes and their steps) is in
 // native_rules.cpp.
+
+// Index of this file:
+//   [SECTION] the inner loop: a range of modules rewritten
+//   [SECTION] a step's size, and its ranges
+//   [SECTION] the second thread
+//   [SECTION] a step
+//   [SECTION] the derivation
+
 #include <sched.h>
 #include <unistd.h>
 
@@ -43,6 +51,10 @@
 #include "lpy/engine/native_deriver.hpp"
 
 namespace sprout::lpy {
+
+//-----------------------------------------------------------------------------
+// [SECTION] the inner loop: a range of modules rewritten
+//-----------------------------------------------------------------------------
 namespace {
 
 constexpr double kExactInts = 9007199254740992.0;  // 2^53: past it a double is not Python's int
@@ -169,6 +181,9 @@ bool rewriteRange(const NativeDeriver::Tables& t, const NumString& cur, size_t b
 }
 }  // namespace
 
+//-----------------------------------------------------------------------------
+// [SECTION] a step's size, and its ranges
+//-----------------------------------------------------------------------------
 void NativeDeriver::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params,
                         std::uint64_t& read) const {
     const std::uint32_t* from = cur.modules.data();
@@ -189,6 +204,9 @@ bool NativeDeriver::nativeRange(const NumString& cur, size_t begin, size_t end, 
     return checked ? rewriteRange<false, true>(t, cur, begin, end, c) : rewriteRange<false, false>(t, cur, begin, end, c);
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] the second thread
+//-----------------------------------------------------------------------------
 // A second thread for the derivations' big steps: started once for the process, given a job
 // per step, lent to one derivation at a time (another at the same time does without). Between
 // steps it spins a little before it sleeps: starting, waking or joining a thread took 20-150 us
@@ -259,6 +277,9 @@ private:
     std::atomic<bool> m_busy{false};
 };
 
+//-----------------------------------------------------------------------------
+// [SECTION] a step
+//-----------------------------------------------------------------------------
 bool NativeDeriver::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper) {
     const size_t count = cur.size();
     // The fast rules' values need no check when no number of the string is big enough for
@@ -319,6 +340,9 @@ bool NativeDeriver::nativeStep(const NumString& cur, NativeCursor& c, NativeHelp
     return firstOk && secondOk;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] the derivation
+//-----------------------------------------------------------------------------
 bool NativeDeriver::derive(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
                            bool origins, int& iteration) {
     NumString cur, next;
