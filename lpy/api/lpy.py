@@ -151,7 +151,7 @@ class _Option:
         if not 0 <= value < len(self._values):
             return False
         self._state['options'][self.name] = value
-        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Engine::readMatchingOptions)
+        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Matcher::readOptions)
         return True
 
     def currentValue(self):
