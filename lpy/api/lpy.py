@@ -1,6 +1,16 @@
 # openalea.lpy as Sprout provides it to L-Py model files: the control functions of a
 # derivation (from Sprout's engine, _sprout_lpy) and the `context()` that an
 # INITIALISATION block writes its materials, options and parameters into.
+
+# Index of this file:
+#   [SECTION] module classes, the embedded Python, warnings
+#   [SECTION] L-Py's options
+#   [SECTION] LsysContext and the current context
+#   [SECTION] the plotter and the selection
+#   [SECTION] extern and defaultparameters
+#   [SECTION] the turtle of interpretation rules
+#   [SECTION] ParameterSet and makestring
+
 import sys as _sys
 
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
@@ -12,6 +22,7 @@ from _sprout_lpy import __lpy_module_class as _module_class, _class_count
 _state = {}
 
 
+# [SECTION] module classes, the embedded Python, warnings
 class ModuleClassTable:
     """L-Py's table of module classes: every class the process knows, with its aliases."""
 
@@ -87,6 +98,7 @@ def _warn(message):
     _state.setdefault('warnings', []).append((f.f_lineno if f is not None else 0, message))
 
 
+# [SECTION] L-Py's options
 # L-Py's options (src/cpp/lsyscontext.cpp): each with its values, by index, and its default.
 _OPTIONS = [
     ('Module declaration', ['On the fly', 'Mandatory'], 0),
@@ -139,7 +151,7 @@ class _Option:
         if not 0 <= value < len(self._values):
             return False
         self._state['options'][self.name] = value
-        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Engine::readMatchingOptions)
+        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Matcher::readOptions)
         return True
 
     def currentValue(self):
@@ -194,6 +206,7 @@ class _Options:
         return len(self._all)
 
 
+# [SECTION] LsysContext and the current context
 class _Turtle:
     def __init__(self, state):
         self._state = state
@@ -337,6 +350,7 @@ def frameDisplay(*args):
     pass
 
 
+# [SECTION] the plotter and the selection
 _plotter = None
 
 
@@ -362,6 +376,7 @@ def _selection():
     return _plotter.selection()
 
 
+# [SECTION] extern and defaultparameters
 def extern(*names, **defaults):
     """L-Py's extern (openalea.lpy.defaultparameters): extern(a=1) gives a the value 1 unless
     the caller set it (Lsystem(file, {'a': 2})); extern('b') requires b to be set. Both are
@@ -407,6 +422,7 @@ def defaultparameters(function):
     return run
 
 
+# [SECTION] the turtle of interpretation rules
 class _InterpretationTurtle:
     """The `turtle` of interpretation rules and of StartInterpretation(turtle), as far as Sprout
     draws: each drawing call (turtle.left(60), turtle.F(1), turtle.sphere(0.5), named as L-Py's
@@ -469,6 +485,7 @@ class _InterpretationTurtle:
             object.__setattr__(self, name, value)
 
 
+# [SECTION] ParameterSet and makestring
 class ParameterSet:
     def __init__(self, **kwargs):
         self.__dict__.update(kwargs)

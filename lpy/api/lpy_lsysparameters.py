@@ -1,6 +1,15 @@
 # openalea.lpy.lsysparameters as Sprout provides it, after L-Py's lsysparameters and its editor's gui/plugins: the
 # parameters L-Py's editor keeps in an INITIALISATION part (options, materials, scalars and graphical parameters by
 # category, credits), read from an Lsystem's context, put into one, written as code (1.1, 1.2) and as L-Py's JSON.
+
+# Index of this file:
+#   [SECTION] scalars (L-Py's lsysparameters/scalar.py)
+#   [SECTION] curves and patches: compared, written as code and as JSON
+#   [SECTION] materials and textures
+#   [SECTION] the managers of graphical parameters (L-Py's gui/plugins, without their editors)
+#   [SECTION] L-Py's JSON layout (schema/lpy.json and the files it refers to)
+#   [SECTION] the parameters
+
 import json
 import os
 import re
@@ -14,8 +23,7 @@ default_credits = dict.fromkeys('__authors__ __institutes__ __copyright__ __desc
 default_lpycode_version, default_lpyjson_version = 1.2, 1.0
 _IDENT = re.compile(r'^[^\d\W]\w*\Z')  # a name, as the schemas' "pattern" says
 
-
-# -- scalars (L-Py's lsysparameters/scalar.py) ----------------------------------------------------------
+# [SECTION] scalars (L-Py's lsysparameters/scalar.py)
 class BaseScalar(object):
     """A value of the editor's panel: totuple() is how code 1.1 lists it, todict() its JSON."""
     targettype = None
@@ -76,8 +84,7 @@ def scalar_from_json_rep(rep):
     kind = rep.pop('type', None) or {bool: 'Bool', int: 'Integer', float: 'Float'}[type(rep['value'])]
     return _SCALAR_TYPES[kind](**rep)
 
-
-# -- curves and patches: compared, written as code and as JSON ------------------------------------------
+# [SECTION] curves and patches: compared, written as code and as JSON
 # Per PlantGL type: the field of its points (the depth of lists above the points, a point's size, the JSON's
 # array type, None: plain lists) and the fields its JSON keeps (schema/curve.json, patch.json).
 _SHAPES = {
@@ -129,8 +136,7 @@ def _object_from_json(rep):
     obj.name = rep.get('name', '')
     return obj
 
-
-# -- materials and textures -----------------------------------------------------------------------------
+# [SECTION] materials and textures
 # PlantGL lowers a material's diffuse so that no channel of ambient x diffuse passes 255; Sprout's Material
 # keeps what it is given: materials are compared and written here as PlantGL has them.
 _MATERIAL_DEFAULTS = {'ambient': (80, 80, 80), 'diffuse': 2.0, 'specular': (0, 0, 0), 'emission': (0, 0, 0),
@@ -188,8 +194,7 @@ def _appearance_from_json(rep):
     app.name = rep['name']
     return app
 
-
-# -- the managers of graphical parameters (L-Py's gui/plugins, without their editors) -------------------
+# [SECTION] the managers of graphical parameters (L-Py's gui/plugins, without their editors)
 class AbstractObjectManager(object):
     """Names, makes and writes one type of graphical parameter (typename)."""
     is_function = None  # what its JSON says of is_function (None: nothing, not a curve)
@@ -233,8 +238,7 @@ scalartypemap = {int: 'Integer', float: 'Float', bool: 'Bool'}
 graphictypemap = {pgl.NurbsCurve2D: 'Curve2D', pgl.BezierCurve2D: 'Curve2D', pgl.Polyline2D: 'Curve2D',
                   pgl.NurbsPatch: 'NurbsPatch', pgl.NurbsPatch3D: 'NurbsPatch3D'}
 
-
-# -- L-Py's JSON layout (schema/lpy.json and the files it refers to) -------------------------------------
+# [SECTION] L-Py's JSON layout (schema/lpy.json and the files it refers to)
 def _need(ok, where, what):
     if not ok:
         raise ValueError('%s %s' % (where, what))
@@ -299,8 +303,7 @@ _LPY = {'schema!': {'lpy'}, 'version!': 'string', 'options': {'animation_timeste
         'credits': {'...': True, **dict.fromkeys(('authors', 'institutes', 'copyright', 'description', 'references'),
                                                  'string')}}
 
-
-# -- the parameters --------------------------------------------------------------------------------------
+# [SECTION] the parameters
 class Category:
     """A panel of L-Py's editor: its info (name, enabled...), items {name: (manager, object)}, scalars by name."""
     def __init__(self, info, items=None, scalars=None, **params):
@@ -312,15 +315,12 @@ class Category:
     def update_scalar(self, name, value): self.scalars[name].value = value
     def add_item(self, manager, value): self.items[manager.getName(value)] = (manager, value)
     def add_items(self, pairs): self.items.update((m.getName(v), (m, v)) for m, v in pairs)
-
     def add_scalar(self, value):
         value.category = self.info['name']
         self.scalars[value.name] = value
-
     def add_scalars(self, values):
         for v in values:
             self.add_scalar(v)
-
     def update_item(self, name, value):
         self.items[name][0].setName(value, name)
         self.items[name] = (self.items[name][0], value)

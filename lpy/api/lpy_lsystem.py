@@ -1,6 +1,12 @@
 # openalea.lpy's Lsystem as L-Py defines it (src/cpp/lsystem.h, src/wrapper/export_lsystem.cpp,
 # src/openalea/lpy/__init__.py), on Sprout's engine: `_Session` (lpy/api/session.cpp) holds a
 # model's translation, namespace and engine between calls; this class gives it L-Py's API.
+
+# Index of this file:
+#   [SECTION] files, materials and scenes
+#   [SECTION] Lsystem
+#   [SECTION] LsystemIterator
+
 import io as _io
 import os as _os
 
@@ -18,6 +24,7 @@ eForward, eBackward = 0, 1
 eProduction, eDecomposition, eInterpretation = 0, 1, 2
 
 
+# [SECTION] files, materials and scenes
 def _read(filename):
     """A model file's text, as L-Py reads it: UTF-8 (a Latin-1 file read as such), any line
     ends."""
@@ -127,6 +134,7 @@ def _show_in_notebook(scene):
         pass
 
 
+# [SECTION] Lsystem
 class Lsystem:
     """An L-system read from a file or from code, derived and interpreted on demand:
     Lsystem(filename=None, parameters=None); parameters override the model's names (after its
@@ -446,6 +454,7 @@ class Lsystem:
         return self._code
 
 
+# [SECTION] LsystemIterator
 class LsystemIterator:
     """The strings of an Lsystem's derivation, step by step (L-Py's LsystemIterator)."""
 

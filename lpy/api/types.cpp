@@ -3,6 +3,15 @@
 // export_module.cpp, export_moduleclass.cpp): inside a rule's body, in a hook, or in a
 // script that drives an Lsystem. Their names are the running engine's, or the process's
 // table of names outside a derivation (names()).
+
+// Index of this file:
+//   [SECTION] names, values and views
+//   [SECTION] ModuleClass
+//   [SECTION] Module
+//   [SECTION] Lstring's axial tree
+//   [SECTION] Lstring
+//   [SECTION] defineTypes
+
 #include <pybind11/stl.h>
 
 #include <climits>
@@ -17,6 +26,9 @@ namespace py = pybind11;
 namespace sprout::lpy {
 namespace {
 
+//-----------------------------------------------------------------------------
+// [SECTION] names, values and views
+//-----------------------------------------------------------------------------
 const int kDefaultScale = INT_MAX;  // L-Py's ModuleClass.DEFAULT_SCALE
 
 using namespace tree;
@@ -143,12 +155,11 @@ LString fromState(py::handle state) {
     return out;
 }
 
-}  // namespace
-
-void defineTypes(py::module_& m) {
-    definePlantGL(m);
-    defineQuantised(m);
-    definePointGrid(m);
+//-----------------------------------------------------------------------------
+// [SECTION] ModuleClass
+//-----------------------------------------------------------------------------
+// ModuleClass, and the module functions on the table of names.
+void defineModuleClass(py::module_& m) {
     py::class_<PyModuleClass>(m, "ModuleClass")
         .def_property_readonly("name", [](const PyModuleClass& c) { return nameOf(c.cls); })
         .def("__call__", [](const PyModuleClass& c, py::args args) {
@@ -188,7 +199,13 @@ void defineTypes(py::module_& m) {
     });
     // Names declared for the strings read outside a model (LsysContext.declare, declare()).
     m.def("_declare", [](const std::string& name) { return names().intern(name); });
+}
 
+//-----------------------------------------------------------------------------
+// [SECTION] Module
+//-----------------------------------------------------------------------------
+// Module (L-Py's ParamModule): a module of its own or a view of a string's.
+void defineModule(py::module_& m) {
     py::class_<PyModule>(m, "Module")
         .def(py::init([](const std::string& name, py::args args) {
             PyModule out;
@@ -273,8 +290,60 @@ void defineTypes(py::module_& m) {
                         }))
         .def("__str__", [](PyModule& self) { return writeLstring({self.get()}, names()); })
         .def("__repr__", [](PyModule& self) { return writeLstring({self.get()}, names(), true); });
+}
 
-    py::class_<PyLstring>(m, "Lstring")
+//-----------------------------------------------------------------------------
+// [SECTION] Lstring's axial tree
+//-----------------------------------------------------------------------------
+// Lstring's axial tree (L-Py's AxialTree): a module's parent and sons, and in multiscale
+// strings complexes, components, successors and predecessors at a scale (or a level).
+void defineLstringTree(py::class_<PyLstring>& lstring) {
+    lstring
+        .def("parent", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("father", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("direct_child", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("directSon", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("lateral_children", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("lateralSons", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
+        .def("children", [](const PyLstring& s, py::ssize_t i) {
+            const size_t at = checkedIndex(s.get(), i);
+            std::vector<long> out = lateralSonsOf(s.get(), at);
+            if (long d = directSonOf(s.get(), at); d >= 0) out.push_back(d);
+            return listOrNone(out);
+        })
+        .def("sons", [](py::object s, py::ssize_t i) { return s.attr("children")(i); })
+        // Multiscale strings (L-Py's AxialTree): complexes, components, successors and
+        // predecessors at a scale (or a level).
+        .def("complex", [](const PyLstring& s, py::ssize_t i, py::object scale) {
+            const size_t at = checkedIndex(s.get(), i);
+            const Scale sc = scales();
+            return indexOrNone(complexOf(s.get(), at, scale.is_none() ? sc((s.get())[at].cls) + 1 : scale.cast<int>(), sc));
+        }, py::arg("pos"), py::arg("scale") = py::none())
+        .def("components", [](const PyLstring& s, py::ssize_t i) { return componentsOf(s.get(), checkedIndex(s.get(), i), scales()); })
+        .def("components_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return componentsOf(s.get(), checkedIndex(s.get(), i), scales(), &scale);
+        })
+        .def("successor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(successorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
+        })
+        .def("predecessor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(predecessorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
+        })
+        .def("successor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(successorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
+        })
+        .def("predecessor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
+            return indexOrNone(predecessorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
+        });
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] Lstring
+//-----------------------------------------------------------------------------
+// Lstring (L-Py's AxialTree): a string of modules as a Python sequence.
+void defineLstring(py::module_& m) {
+    py::class_<PyLstring> lstring(m, "Lstring");
+    lstring
         .def(py::init([] { return PyLstring{std::make_shared<LString>()}; }))
         .def(py::init([](py::object v) { return makeLstring(v); }))
         // L-Py compares an Lstring with another or with text (`lstring == 'BSABSA'`): the same
@@ -382,49 +451,29 @@ void defineTypes(py::module_& m) {
                 if (depth < 0) return false;
             }
             return depth == 0;
-        })
-        .def("parent", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("father", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("direct_child", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("directSon", [](const PyLstring& s, py::ssize_t i) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("lateral_children", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("lateralSons", [](const PyLstring& s, py::ssize_t i) { return listOrNone(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); })
-        .def("children", [](const PyLstring& s, py::ssize_t i) {
-            const size_t at = checkedIndex(s.get(), i);
-            std::vector<long> out = lateralSonsOf(s.get(), at);
-            if (long d = directSonOf(s.get(), at); d >= 0) out.push_back(d);
-            return listOrNone(out);
-        })
-        .def("sons", [](py::object s, py::ssize_t i) { return s.attr("children")(i); })
-        // Multiscale strings (L-Py's AxialTree): complexes, components, successors and
-        // predecessors at a scale (or a level).
-        .def("complex", [](const PyLstring& s, py::ssize_t i, py::object scale) {
-            const size_t at = checkedIndex(s.get(), i);
-            const Scale sc = scales();
-            return indexOrNone(complexOf(s.get(), at, scale.is_none() ? sc((s.get())[at].cls) + 1 : scale.cast<int>(), sc));
-        }, py::arg("pos"), py::arg("scale") = py::none())
-        .def("components", [](const PyLstring& s, py::ssize_t i) { return componentsOf(s.get(), checkedIndex(s.get(), i), scales()); })
-        .def("components_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return componentsOf(s.get(), checkedIndex(s.get(), i), scales(), &scale);
-        })
-        .def("successor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(successorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
-        })
-        .def("predecessor_at_scale", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(predecessorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
-        })
-        .def("successor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(successorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
-        })
-        .def("predecessor_at_level", [](const PyLstring& s, py::ssize_t i, int scale) {
-            return indexOrNone(predecessorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
-        })
+        });
+    defineLstringTree(lstring);
+    lstring
         .def("__copy__", [](const PyLstring& s) { return PyLstring{std::make_shared<LString>(s.get())}; })
         .def("__deepcopy__", [](const PyLstring& s, py::object) { return PyLstring{std::make_shared<LString>(s.get())}; })
         .def(py::pickle([](const PyLstring& s) { return stateOf(s.get()); },
                         [](py::list state) { return PyLstring{std::make_shared<LString>(fromState(state))}; }))
         .def("__str__", [](const PyLstring& s) { return writeLstring(s.get(), names()); })
         .def("__repr__", [](const PyLstring& s) { return "AxialTree(" + writeLstring(s.get(), names(), true) + ")"; });  // as L-Py writes it
+}
+
+}  // namespace
+
+//-----------------------------------------------------------------------------
+// [SECTION] defineTypes
+//-----------------------------------------------------------------------------
+void defineTypes(py::module_& m) {
+    definePlantGL(m);
+    defineQuantised(m);
+    definePointGrid(m);
+    defineModuleClass(m);
+    defineModule(m);
+    defineLstring(m);
 }
 
 }  // namespace sprout::lpy

@@ -1,5 +1,6 @@
 // L-Py's axial tree navigation (lpy/engine/axial_tree.hpp), written from src/cpp/axialtree_manip.h.
 #include "lpy/engine/axial_tree.hpp"
+#include "lpy/translate/translate.hpp"
 
 #include <climits>
 #include <deque>

@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/lstring.hpp"
 
 namespace sprout::lpy::tree {
 

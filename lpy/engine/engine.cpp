@@ -1,8 +1,8 @@
 // L-Py's derivation (lpy/engine/engine.hpp): the engine's set-up (bind: the rules' functions, header
 // constants and predicates, the rule index) and its steps (derive: the hooks around each
 // production and decomposition pass; interpret). The passes themselves, matching rules module
-// by module, are in match.cpp; Python's values in and out of the strings in
-// values.cpp.
+// by module, are in passes.cpp (a rule's header matched by the Matcher, match.cpp); Python's
+// values in and out of the strings in values.cpp.
 #include "lpy/engine/engine.hpp"
 
 #include <algorithm>
@@ -25,7 +25,8 @@ Engine* setCurrentEngine(Engine* e) {
 }
 
 Engine::Engine(Translation translation, py::dict ns, const RunOptions& options)
-    : m_tr(std::move(translation)), m_ns(std::move(ns)), m_options(options) {}
+    : m_tr(std::move(translation)), m_ns(std::move(ns)), m_options(options), m_matcher(m_tr), m_growth(m_tr, options),
+      m_native(options) {}
 
 Engine::~Engine() {
     if (g_engine == this) g_engine = nullptr;
@@ -67,26 +68,11 @@ void Engine::bind() {
     }
     {
         py::object chosen = options.attr("get")("Module inheritance");
-        m_ancestors.clear();
-        if (!chosen.is_none() && py::bool_(chosen))
-            for (size_t c = 0; c < classes; ++c) m_ancestors.push_back(m_tr.classes.ancestors(int(c)));
+        m_matcher.setInheritance(!chosen.is_none() && py::bool_(chosen));
     }
     // Header constants and predicates, evaluated once (in repetitions and alternatives too, and
     // in the patterns a body tests with InLeftContext).
-    std::function<void(const PatternModule&)> compile = [&](const PatternModule& p) {
-        for (const auto& inner : p.repeat) compile(inner);
-        for (const auto& alt : p.alternatives)
-            for (const auto& inner : alt) compile(inner);
-        for (const auto& a : p.args) {
-            if (a.kind == PatternArg::Kind::Equal)
-                m_constants[&a] = py::reinterpret_steal<py::object>(
-                    PyRun_String(a.expr.c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-            else if (a.kind == PatternArg::Kind::Predicate)
-                m_predicates[&a] = py::reinterpret_steal<py::object>(
-                    PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, m_ns.ptr(), m_ns.ptr()));
-            if (PyErr_Occurred()) throw py::error_already_set();
-        }
-    };
+    auto compile = [&](const PatternModule& p) { m_matcher.compile(p, m_ns); };
     m_functions.clear();
     for (size_t r = 0; r < m_tr.rules.size(); ++r) {
         const Rule& rule = m_tr.rules[r];
@@ -104,8 +90,8 @@ void Engine::bind() {
             else if (size_t(p.cls) < classes) index.byClass[size_t(p.cls)].push_back(int(r) | tag);
             // With inheritance, a rule for A is also tried on the modules derived from A.
             if (p.cls != ModuleClasses::kStar)
-                for (size_t c = 0; c < m_ancestors.size(); ++c)
-                    if (derived(int(c), p.cls)) index.byClass[c].push_back(int(r) | tag);
+                for (size_t c = 0; m_matcher.inherits() && c < classes; ++c)
+                    if (m_matcher.derived(int(c), p.cls)) index.byClass[c].push_back(int(r) | tag);
         };
         add(first, 0);
         if (rule.kind == RuleKind::Production) add(key, 1 << 30);
@@ -139,9 +125,13 @@ void Engine::bind() {
     m_depth[kindIndex(RuleKind::Decomposition)] = depth("__decomposition_max_depth__", 1);
     m_depth[kindIndex(RuleKind::Interpretation)] = depth("__homomorphism_max_depth__", 1);
     if (m_ns.contains("__derivation_length__")) derivationLength = whole("__derivation_length__", 0, 100000);
-    prepareNative();
-    if (!m_ancestors.empty()) m_nativeOk = false;  // the native path matches classes exactly
-    m_predictable = growthPredictable();
+    // The native path: no hooks, query modules or decomposition.
+    bool eligible = m_options.native && !m_queryRules && !m_hasKind[kindIndex(RuleKind::Decomposition)];
+    for (const char* hook : {"Start", "End", "StartEach", "EndEach"})
+        if (eligible && m_ns.contains(hook)) eligible = false;
+    m_native.prepare(m_tr, eligible);
+    if (m_matcher.inherits()) m_native.disable();  // the native path matches classes exactly
+    m_growth.bind();
     // A `turtle` in an interpretation rule's body, or a hook that takes it.
     m_usesTurtle = false;
     for (size_t r = 0; r < m_tr.rules.size(); ++r)
@@ -181,10 +171,10 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
                        std::vector<std::shared_ptr<const ContextMatches>>* contexts, int start, int total) {
     iteration = start;
     stopRequested = false;
-    readMatchingOptions();
+    m_matcher.readOptions();
     if (total < 0) total = start + steps;
     // The native path has no hooks: where it starts matters only to getIterationNb.
-    if (m_nativeOk && start == 0 && total == steps && !debugger) {
+    if (m_native.ok() && start == 0 && total == steps && !debugger) {
         NumString result;
         std::vector<NumString> every;
         if (deriveNumbers(s, steps, everyStep ? &every : nullptr, result, true)) {
@@ -215,7 +205,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         callHook("StartEach", &s, nullptr, &s);
         // Direction, group and the string matching options are read after StartEach (so
         // StartEach may set them).
-        readMatchingOptions();
+        m_matcher.readOptions();
         LString next;
         // As L-Py: the turtle fills the query modules when the rules of the group in use (with
         // group 0's) read one.
@@ -225,7 +215,7 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
             struct Keep {  // where the pass's contexts matched, until it ends (or throws)
                 ContextMatches*& to;
                 ~Keep() { to = nullptr; }
-            } keep{m_contexts = matched.get()};
+            } keep{m_matcher.contexts() = matched.get()};
             if (debugger) debugger.attr("begin")(PyLstring{std::make_shared<LString>(s)}, forwardDirection ? 0 : 1);
             pass(s, next, RuleKind::Production, forwardDirection);
             if (pending) everyStep->push_back(std::move(s)), pending = false;
@@ -260,6 +250,21 @@ LString Engine::derive(LString s, int steps, std::vector<LString>* everyStep,
         }
     }
     return s;
+}
+
+bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
+                           bool origins) {
+    if (!m_native.derive(axiom, steps, everyStep, result, origins, iteration)) return false;
+    ranNative = true;
+    return true;
+}
+
+void Engine::predictGrowth(const LString& s, int steps) const {
+    const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
+    if (!m_hasKind[prod] || m_hasKind[dec] || debugger || selectionAlways || selectionRequested || group != 0 ||
+        m_ns.contains("StartEach") || m_ns.contains("EndEach"))
+        return;
+    m_growth.predict(s, steps, iteration, [this](int cls, int base) { return m_matcher.derived(cls, base); });
 }
 
 void Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,

@@ -11,7 +11,7 @@
 #include <map>
 
 #include "core/derive/derive.hpp"
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/growth.hpp"
 
 namespace sprout::lpy {
 
@@ -36,7 +36,7 @@ struct SizeOf {
 };
 }  // namespace
 
-std::size_t Engine::moduleBytes(const LString& s) const {
+std::size_t GrowthBudget::moduleBytes(const LString& s) {
     if (s.empty()) return sizeof(LModule);
     static const SizeOf* sizeOf = new SizeOf();  // never freed: at exit Python is gone
     const size_t stride = std::max<size_t>(1, s.size() / 64);
@@ -50,7 +50,7 @@ std::size_t Engine::moduleBytes(const LString& s) const {
     return sizeof(LModule) + total / std::max<std::size_t>(n, 1);
 }
 
-void Engine::checkGrowth(const LString& in, const LString& out, std::size_t perModule) const {
+void GrowthBudget::check(const LString& in, const LString& out, std::size_t perModule, int iteration) const {
     const std::uint64_t bytes = std::uint64_t(in.size() + out.size()) * perModule;
     if (out.size() <= m_options.maxModules && bytes <= m_options.maxBytes) return;
     const std::string lower = "lower the derivation length (to " + std::to_string(iteration) + " at most)";
@@ -62,7 +62,7 @@ void Engine::checkGrowth(const LString& in, const LString& out, std::size_t perM
                  humanBytes(m_options.maxBytes) + " with the string before it; " + lower + " or raise the budget (--max-memory)");
 }
 
-void Engine::predictNextStep(const LString& in, std::size_t perModule) const {
+void GrowthBudget::predictNextStep(const LString& in, std::size_t perModule, int iteration) const {
     // The step grows the string as the step before did: refused before it starts when that is
     // over the limits.
     if (m_lastGrowth <= 1) return;
@@ -82,7 +82,7 @@ namespace {
 enum class Match { Never, Maybe, Always };
 
 // Whether a rule's single predecessor module `p` matches a module of class `cls` with `arity`
-// values (-1: unknown), as Engine::matchModule decides.
+// values (-1: unknown), as Matcher::matchModule decides.
 Match matchOf(const PatternModule& p, int cls, int arity, const std::function<bool(int, int)>& derived) {
     if (cls < 0) return Match::Maybe;
     if (p.cls == ModuleClasses::kStar) {
@@ -108,7 +108,7 @@ Match matchOf(const PatternModule& p, int cls, int arity, const std::function<bo
 }
 }  // namespace
 
-bool Engine::growthPredictable() const {
+bool GrowthBudget::growthPredictable() const {
     // A derivation Python could steer (stop it, change the rules' group, insert or replace
     // modules between steps) or cut, or whose rules read several modules: not predicted.
     for (const char* word : {"Stop", "useGroup", "requestSelection", "setSelectionAlwaysRequired"})
@@ -124,11 +124,8 @@ bool Engine::growthPredictable() const {
     return true;
 }
 
-void Engine::predictGrowth(const LString& s, int steps) const {
-    const int prod = kindIndex(RuleKind::Production), dec = kindIndex(RuleKind::Decomposition);
-    if (steps <= 0 || !m_predictable || !m_hasKind[prod] || m_hasKind[dec] || debugger || selectionAlways || selectionRequested ||
-        group != 0 || m_ns.contains("StartEach") || m_ns.contains("EndEach"))
-        return;
+void GrowthBudget::predict(const LString& s, int steps, int iteration, const std::function<bool(int, int)>& derived) const {
+    if (steps <= 0 || !m_predictable) return;
     for (const LModule& m : s)
         if (m.cls == ModuleClasses::kCut) return;
     // The symbols: a class with its count of values (-1: unknown, or the class unknown: a
@@ -146,7 +143,6 @@ void Engine::predictGrowth(const LString& s, int steps) const {
         if (size_t(id) >= count.size()) count.resize(size_t(id) + 1, 0);
         ++count[size_t(id)];
     }
-    auto derivedFn = [this](int cls, int base) { return derived(cls, base); };
     // Per symbol: whether it may stay as it is, may become nothing we can count (a body that
     // may not produce: at least nothing), or the successors it may become (symbol ids).
     struct Fate {
@@ -162,7 +158,7 @@ void Engine::predictGrowth(const LString& s, int steps) const {
         for (size_t ri = 0; ri < m_tr.rules.size() && !f.unknown; ++ri) {
             const Rule& r = m_tr.rules[ri];
             if (r.kind != RuleKind::Production || r.group != 0) continue;
-            Match m = matchOf(r.pred[0], cls, arity, derivedFn);
+            Match m = matchOf(r.pred[0], cls, arity, derived);
             if (m == Match::Never) continue;
             const bool contexts = !r.left.empty() || !r.right.empty() || !r.newLeft.empty() || !r.newRight.empty();
             if (!r.alwaysProduces) {

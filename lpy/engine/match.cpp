@@ -1,23 +1,59 @@
-// L-Py's rules applied along a string (lpy/engine/engine.hpp): a module's pattern matched (its
+// L-Py's rules matched along a string (lpy/engine/match.hpp): a module's pattern matched (its
 // parameters bound as Python values, header constants and predicates checked), the contexts
-// left and right of it (skipping branches and the modules a filter ignores), the rules tried in
-// order for each module and the first that applies called, and the passes that do this over a
-// whole string (production, decomposition, interpretation). One file: the per-module loop and
-// everything it calls, so that it stays inlined.
+// left and right of it (skipping branches and the modules a filter ignores), a rule's header
+// at a position, and a body's own context tests. One file: a match and everything it calls,
+// so that it stays inlined; the passes that try the rules are the Engine's (passes.cpp).
+
+// Index of this file:
+//   [SECTION] binding: inheritance, header constants and predicates
+//   [SECTION] a module matched
+//   [SECTION] the bracket index
+//   [SECTION] left contexts
+//   [SECTION] a body's context tests
+//   [SECTION] right contexts
+//   [SECTION] a rule's header
+
 #include <algorithm>
 
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/match.hpp"
 
 namespace sprout::lpy {
 
-bool Engine::skipped(int cls, int filter) const {
+//-----------------------------------------------------------------------------
+// [SECTION] binding: inheritance, header constants and predicates
+//-----------------------------------------------------------------------------
+void Matcher::setInheritance(bool on) {
+    m_ancestors.clear();
+    if (on)
+        for (size_t c = 0; c < m_tr.classes.size(); ++c) m_ancestors.push_back(m_tr.classes.ancestors(int(c)));
+}
+
+void Matcher::compile(const PatternModule& p, py::dict& ns) {
+    for (const auto& inner : p.repeat) compile(inner, ns);
+    for (const auto& alt : p.alternatives)
+        for (const auto& inner : alt) compile(inner, ns);
+    for (const auto& a : p.args) {
+        if (a.kind == PatternArg::Kind::Equal)
+            m_constants[&a] = py::reinterpret_steal<py::object>(
+                PyRun_String(a.expr.c_str(), Py_eval_input, ns.ptr(), ns.ptr()));
+        else if (a.kind == PatternArg::Kind::Predicate)
+            m_predicates[&a] = py::reinterpret_steal<py::object>(
+                PyRun_String(("lambda " + a.name + ": " + a.expr).c_str(), Py_eval_input, ns.ptr(), ns.ptr()));
+        if (PyErr_Occurred()) throw py::error_already_set();
+    }
+}
+
+//-----------------------------------------------------------------------------
+// [SECTION] a module matched
+//-----------------------------------------------------------------------------
+bool Matcher::skipped(int cls, int filter) const {
     if (filter < 0 || cls == ModuleClasses::kPush || cls == ModuleClasses::kPop) return false;
     const ContextFilter& f = m_tr.filters[size_t(filter)];
     const bool listed = std::find(f.classes.begin(), f.classes.end(), cls) != f.classes.end();
     return f.consider ? !listed : listed;
 }
 
-py::object Engine::nodeOf(const LModule& m) {
+py::object Matcher::nodeOf(const LModule& m) {
     PyModule node;
     if (m_reading && &m >= m_reading->data() && &m < m_reading->data() + m_reading->size()) {
         // A view of the string read (a copy made once a pass, when a pattern asks for one):
@@ -31,7 +67,7 @@ py::object Engine::nodeOf(const LModule& m) {
     return py::cast(std::move(node));
 }
 
-bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
+bool Matcher::matchModule(const PatternModule& p, const LModule& m, std::vector<py::object>& bound) {
     const size_t n = m.args ? size_t(PyTuple_GET_SIZE(m.args.ptr())) : 0;
     // `*(*args)`, `*(**kwds)`: a star module's values are its name, then its parameters.
     bool nameFirst = false;
@@ -110,6 +146,9 @@ bool Engine::matchModule(const PatternModule& p, const LModule& m, std::vector<p
     return k == total;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] the bracket index
+//-----------------------------------------------------------------------------
 namespace {
 // The bracket that closes/opens the one at j, by counting (strings not indexed).
 long partner(const LString& s, long j) {
@@ -125,7 +164,7 @@ long partner(const LString& s, long j) {
 }
 }  // namespace
 
-void Engine::matchBrackets(const LString& s) {
+void Matcher::matchBrackets(const LString& s) {
     m_match.assign(s.size(), -1);
     std::vector<long> stack;
     for (size_t i = 0; i < s.size(); ++i) {
@@ -139,8 +178,11 @@ void Engine::matchBrackets(const LString& s) {
     m_matchOf = &s;
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] left contexts
+//-----------------------------------------------------------------------------
 // or(...)'s variables: None for each alternative's before and after the one that matched.
-void Engine::bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound) {
+void Matcher::bindAlternative(const PatternModule& p, size_t matched, std::vector<py::object>& got, std::vector<py::object>& bound) {
     auto nones = [&](size_t a) {
         const int n = a < p.alternativeVariables.size() ? p.alternativeVariables[a] : 0;
         for (int v = 0; v < n; ++v) bound.push_back(py::none());
@@ -150,7 +192,7 @@ void Engine::bindAlternative(const PatternModule& p, size_t matched, std::vector
     for (size_t a = matched + 1; a < p.alternatives.size(); ++a) nones(a);
 }
 
-bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
+bool Matcher::matchLeft(const std::vector<PatternModule>& ps, const LString& s, long j, int filter, std::vector<py::object>& bound,
                        std::vector<std::uint32_t>* at, long* stop) {
     const size_t kept = at ? at->size() : 0;
     std::vector<std::vector<py::object>> per(ps.size());
@@ -236,7 +278,10 @@ bool Engine::matchLeft(const std::vector<PatternModule>& ps, const LString& s, l
     return true;
 }
 
-bool Engine::inContext(size_t index, bool left, py::handle dict) {
+//-----------------------------------------------------------------------------
+// [SECTION] a body's context tests
+//-----------------------------------------------------------------------------
+bool Matcher::inContext(size_t index, bool left, py::handle dict) {
     if (!m_body.s) throw py::value_error(std::string(left ? "InLeftContext" : "InRightContext") + " is called outside a rule's body");
     if (index >= m_tr.contextPatterns.size()) throw py::index_error("no such context pattern");
     const ContextPattern& p = m_tr.contextPatterns[index];
@@ -255,7 +300,10 @@ bool Engine::inContext(size_t index, bool left, py::handle dict) {
     return true;
 }
 
-long Engine::partnerIn(const View& s, size_t j) {
+//-----------------------------------------------------------------------------
+// [SECTION] right contexts
+//-----------------------------------------------------------------------------
+long Matcher::partnerIn(const View& s, size_t j) {
     if (!s.reversed && m_matchOf == s.s && m_match.size() == s.size()) return m_match[j];
     int depth = 0;
     for (size_t k = j; k < s.size(); ++k) {
@@ -266,7 +314,7 @@ long Engine::partnerIn(const View& s, size_t j) {
     return -1;
 }
 
-size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound,
+size_t Matcher::matchRight(const std::vector<PatternModule>& ps, const View& s, size_t j, int filter, std::vector<py::object>& bound,
                           std::vector<std::uint32_t>* at) {
     constexpr size_t npos = size_t(-1);
     for (const PatternModule& p : ps) {
@@ -362,7 +410,10 @@ size_t Engine::matchRight(const std::vector<PatternModule>& ps, const View& s, s
     return j;
 }
 
-bool Engine::matchAt(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, py::tuple& args, long& leftEnd,
+//-----------------------------------------------------------------------------
+// [SECTION] a rule's header
+//-----------------------------------------------------------------------------
+bool Matcher::matchAt(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, py::tuple& args, long& leftEnd,
                      size_t& rightEnd) {
     const size_t len = r.pred.size();
     if (!forward && at + 1 < len) return false;
@@ -389,7 +440,7 @@ bool Engine::matchAt(const Rule& r, const LString& s, size_t at, bool forward, c
     return true;
 }
 
-py::object Engine::matchRule(size_t rule, const LString& s, long at, bool forward) {
+py::object Matcher::matchRule(size_t rule, const LString& s, long at, bool forward) {
     if (rule >= m_tr.rules.size() || at < 0 || size_t(at) >= s.size()) return py::bool_(false);
     const Rule& r = m_tr.rules[rule];
     matchBrackets(s);
@@ -401,187 +452,6 @@ py::object Engine::matchRule(size_t rule, const LString& s, long at, bool forwar
     if (!matched) return py::bool_(false);
     const long len = long(r.pred.size());
     return py::make_tuple(forward ? at + len : at - len, py::list(args));
-}
-
-bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, const LString& built, size_t& consumed, LString& result) {
-    py::tuple args;
-    long leftEnd = 0;
-    size_t rightEnd = 0;
-    if (!matchAt(r, s, at, forward, built, args, leftEnd, rightEnd)) return false;
-    const size_t len = r.pred.size();
-    m_buffer.clear();
-    m_produced = false;
-    // The body's own context tests (InLeftContext ...) start where the header's ended.
-    struct Restore {
-        BodyContext& now;
-        BodyContext was;
-        ~Restore() { now = was; }
-    } restore{m_body, m_body};
-    m_body = BodyContext{&s, leftEnd, rightEnd, r.filter};
-    py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
-    if (!ret) throw py::error_already_set();
-    const size_t start = forward ? at : at + 1 - len;
-    if (!m_produced && m_buffer.empty()) {
-        if (ret.is_none()) {  // a body that produced nothing: the next rule is tried
-            if (debugger && r.kind == RuleKind::Production) debugMatch("partial_match", &r, start, start + len, forward, built, nullptr, &args);
-            return false;
-        }
-        append(m_buffer, ret);
-    }
-    result = std::move(m_buffer);
-    m_buffer.clear();
-    // A result that starts with None or '*' inserts nothing: the module is deleted.
-    if (!result.empty() && (result[0].cls == ModuleClasses::kStar || result[0].cls == ModuleClasses::kNone)) result.clear();
-    if (debugger && r.kind == RuleKind::Production) debugMatch("total_match", &r, start, start + len, forward, built, &result, &args);
-    consumed = len;
-    return true;
-}
-
-bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed) {
-    auto& byGroup = m_index[kindIndex(kind)];
-    const int cls = s[i].cls;
-    const int tag = forward || kind != RuleKind::Production ? 0 : 1 << 30;
-    const int groups[2] = {group, 0};
-    for (int gi = 0; gi < (group == 0 ? 1 : 2); ++gi) {
-        auto it = byGroup.find(groups[gi]);
-        if (it == byGroup.end()) continue;
-        const Index& index = it->second;
-        static const std::vector<int> none;
-        const std::vector<int>& a = size_t(cls) < index.byClass.size() ? index.byClass[size_t(cls)] : none;
-        const std::vector<int>& b = index.any;
-        // Both lists are in declaration order: merged, each rule tried once.
-        size_t ia = 0, ib = 0;
-        while (ia < a.size() || ib < b.size()) {
-            int pick;
-            if (ib >= b.size() || (ia < a.size() && (a[ia] & ~(1 << 30)) < (b[ib] & ~(1 << 30)))) pick = a[ia++];
-            else pick = b[ib++];
-            if ((pick & (1 << 30)) != tag) continue;
-            const Rule& r = m_tr.rules[size_t(pick & ~(1 << 30))];
-            LString result;
-            if (applies(r, s, i, forward, out, consumed, result)) {
-                // A production's modules come from the module it rewrote; a decomposition's or
-                // an interpretation's from where that module came from (the same step's string).
-                const std::uint32_t parent = kind == RuleKind::Production ? std::uint32_t(i) : s[i].parent;
-                for (LModule& m : result) m.rule = pick & ~(1 << 30), m.parent = parent;
-                if (m_contexts && kind == RuleKind::Production && (!r.left.empty() || !r.right.empty()))
-                    m_contexts->add(parent, m_left, m_right);
-                if (forward) out.insert(out.end(), std::make_move_iterator(result.begin()), std::make_move_iterator(result.end()));
-                else out.insert(out.end(), std::make_move_iterator(result.rbegin()), std::make_move_iterator(result.rend()));
-                return true;
-            }
-        }
-    }
-    return false;
-}
-
-void Engine::checkCancel() {
-    if (m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) throw Cancelled{};
-}
-
-namespace {
-// `%` at i: the rest of its branch goes, its ']' stays (the index of that ']', or the end).
-size_t afterCut(const LString& in, size_t i) {
-    int depth = 0;
-    size_t j = i + 1;
-    for (; j < in.size(); ++j) {
-        if (in[j].cls == ModuleClasses::kPush) ++depth;
-        else if (in[j].cls == ModuleClasses::kPop && depth-- == 0) break;
-    }
-    return j;
-}
-}  // namespace
-
-void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) {
-    struct Reading {  // the string `$A(a)` patterns bind modules of, while this pass runs
-        Engine& e;
-        const LString* was;
-        std::shared_ptr<LString> shared;
-        ~Reading() { e.m_reading = was, e.m_readingShared = std::move(shared); }
-    } reading{*this, m_reading, std::move(m_readingShared)};
-    m_reading = &in;
-    m_readingShared.reset();
-    out.clear();
-    out.reserve(in.size());
-    matchBrackets(in);
-    // The string made is checked as it grows (every 1024 modules read, and at the end), with
-    // the bytes of a module measured on the string read.
-    const std::size_t perModule = moduleBytes(in);
-    if (kind == RuleKind::Production) predictNextStep(in, perModule);
-    struct Growth {  // the next production pass's prediction
-        Engine& e;
-        const LString& in;
-        LString& out;
-        bool production;
-        ~Growth() {
-            if (production && !in.empty()) e.m_lastGrowth = double(out.size()) / double(in.size());
-        }
-    } growth{*this, in, out, kind == RuleKind::Production};
-    if (forward) {
-        for (size_t i = 0; i < in.size();) {
-            if ((i & 1023) == 0) checkCancel(), checkGrowth(in, out, perModule);
-            if (in[i].cls == ModuleClasses::kCut) {
-                i = afterCut(in, i);
-                continue;
-            }
-            size_t consumed = 1;
-            if (tryRules(kind, in, i, true, out, consumed)) {
-                i += std::max<size_t>(consumed, 1);
-                continue;
-            }
-            out.push_back(in[i]);
-            out.back().rule = -1, out.back().parent = std::uint32_t(i);
-            if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, true, out, nullptr, nullptr);
-            ++i;
-        }
-        checkGrowth(in, out, perModule);
-    } else {
-        for (size_t i = in.size(); i-- > 0;) {
-            if ((i & 1023) == 0) checkCancel(), checkGrowth(in, out, perModule);
-            size_t consumed = 1;
-            if (tryRules(kind, in, i, false, out, consumed)) {
-                i -= std::min(i, std::max<size_t>(consumed, 1) - 1);
-                continue;
-            }
-            out.push_back(in[i]);
-            out.back().rule = -1, out.back().parent = std::uint32_t(i);
-            if (debugger && kind == RuleKind::Production) debugMatch("identity", nullptr, i, i, false, out, nullptr, nullptr);
-        }
-        checkGrowth(in, out, perModule);
-        std::reverse(out.begin(), out.end());
-    }
-}
-
-LString Engine::decompose(LString in, int depth, RuleKind kind) {
-    if (depth <= 0) return in;
-    LString out;
-    out.reserve(in.size());
-    matchBrackets(in);
-    for (size_t i = 0; i < in.size();) {
-        if ((i & 1023) == 0) checkCancel();
-        if (in[i].cls == ModuleClasses::kCut) {
-            i = afterCut(in, i);
-            continue;
-        }
-        if (m_turtle && kind == RuleKind::Interpretation) {
-            // The turtle's parameters follow its branches, as the walk reaches them.
-            if (in[i].cls == ModuleClasses::kPush) m_turtle.attr("_push")();
-            else if (in[i].cls == ModuleClasses::kPop) m_turtle.attr("_pop")();
-        }
-        LString piece;
-        size_t consumed = 1;
-        if (tryRules(kind, in, i, true, piece, consumed)) {
-            // The piece is decomposed again on its own (its contexts see only it).
-            if (depth > 1) piece = decompose(std::move(piece), depth - 1, kind);
-            out.insert(out.end(), std::make_move_iterator(piece.begin()), std::make_move_iterator(piece.end()));
-            i += std::max<size_t>(consumed, 1);
-            if (m_matchOf != &in) matchBrackets(in);
-            if (out.size() > m_options.maxModules) throw TooBig("the string grew past " + std::to_string(m_options.maxModules) + " modules");
-            continue;
-        }
-        out.push_back(in[i]);
-        ++i;
-    }
-    return out;
 }
 
 }  // namespace sprout::lpy

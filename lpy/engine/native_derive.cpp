@@ -1,4 +1,4 @@
-// The native path of L-Py models (lpy/engine/engine.hpp): rules written `A(x) --> B(x + 1) C`, whose
+// The native path of L-Py models (lpy/engine/native_deriver.hpp): rules written `A(x) --> B(x + 1) C`, whose
 // bodies are only a successor with arithmetic, are compiled to Sprout's expressions and the
 // model derives on plain numbers, without a Python call per match. A model takes this path
 // only when every production is that simple and nothing else can see the string while it
@@ -24,6 +24,14 @@
 // This file is the derivation, with the inner loop and all it calls in one translation unit;
 // what is found before it (the rules compiled, the shapes and their steps) is in
 // native_rules.cpp.
+
+// Index of this file:
+//   [SECTION] the inner loop: a range of modules rewritten
+//   [SECTION] a step's size, and its ranges
+//   [SECTION] the second thread
+//   [SECTION] a step
+//   [SECTION] the derivation
+
 #include <sched.h>
 #include <unistd.h>
 
@@ -39,9 +47,14 @@
 #include <thread>
 
 #include "core/base/rng.hpp"
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/growth.hpp"
+#include "lpy/engine/native_deriver.hpp"
 
 namespace sprout::lpy {
+
+//-----------------------------------------------------------------------------
+// [SECTION] the inner loop: a range of modules rewritten
+//-----------------------------------------------------------------------------
 namespace {
 
 constexpr double kExactInts = 9007199254740992.0;  // 2^53: past it a double is not Python's int
@@ -63,11 +76,11 @@ bool numberOf(PyObject* v, double& out, bool& isInt) {
 // A fast rule's numbers (N of them; N < 0: `count`, in a loop); checked: whether each is one
 // Python would give (`ints`: those that are ints).
 template <int N, bool kChecked>
-inline void fastValues(const Engine::FastArg* __restrict args, std::uint32_t count, const double* in, std::uint64_t ints,
+inline void fastValues(const NativeDeriver::FastArg* __restrict args, std::uint32_t count, const double* in, std::uint64_t ints,
                        double* __restrict values, bool& bad) {
     const std::uint32_t n = N < 0 ? count : std::uint32_t(N);
     for (std::uint32_t k = 0; k < n; ++k) {
-        const Engine::FastArg& a = args[k];
+        const NativeDeriver::FastArg& a = args[k];
         const double v = in[a.slot] * a.mul + a.add;
         if constexpr (kChecked)
             bad |= !(std::fabs(v) < (ints >> k & 1 ? kExactInts : std::numeric_limits<double>::infinity()));
@@ -83,14 +96,14 @@ inline void copyShapes(const std::uint32_t* __restrict shapes, std::uint32_t cou
 
 // A rule with arguments other than fast ones (Expr calls, always checked), out of the
 // inner loop; false when a value is not one Python would give.
-[[gnu::noinline]] bool generalRule(const Engine::ShapeStep& k, const Engine::Tables& t, const double* in, size_t j,
-                                   Engine::NativeCursor& c) {
-    Rng rng(0);  // the rules use no random numbers (prepareNative)
+[[gnu::noinline]] bool generalRule(const NativeDeriver::ShapeStep& k, const NativeDeriver::Tables& t, const double* in, size_t j,
+                                   NativeDeriver::NativeCursor& c) {
+    Rng rng(0);  // the rules use no random numbers (NativeDeriver::prepare)
     bool bad = false;
-    const Engine::NativeRule& hit = *k.rule;
-    const Engine::FlatOut* o = t.flatOuts + hit.firstOut;
-    const Engine::FlatOut* oEnd = o + hit.outs.size();
-    const Engine::FlatArg* arg = t.flatArgs + hit.firstArg;
+    const NativeDeriver::NativeRule& hit = *k.rule;
+    const NativeDeriver::FlatOut* o = t.flatOuts + hit.firstOut;
+    const NativeDeriver::FlatOut* oEnd = o + hit.outs.size();
+    const NativeDeriver::FlatArg* arg = t.flatArgs + hit.firstArg;
     const std::uint32_t* shape = t.outShapes + k.firstOut;
     const std::uint64_t notInt = ~std::uint64_t(k.ints);
     std::uint32_t* out = c.out;
@@ -114,7 +127,7 @@ inline void copyShapes(const std::uint32_t* __restrict shapes, std::uint32_t cou
 }
 
 template <bool kOrigins, bool kChecked>
-bool rewriteRange(const Engine::Tables& t, const NumString& cur, size_t begin, size_t end, Engine::NativeCursor& c) {
+bool rewriteRange(const NativeDeriver::Tables& t, const NumString& cur, size_t begin, size_t end, NativeDeriver::NativeCursor& c) {
     const std::uint32_t* from = cur.modules.data();
     const double* in = cur.params.data() + c.in;
     // Nothing written aliases the rules or the string read (the compiler would reload them
@@ -124,13 +137,13 @@ bool rewriteRange(const Engine::Tables& t, const NumString& cur, size_t begin, s
     NumString::Origin* __restrict origin = c.origin;
     bool bad = false;
     for (size_t j = begin; j < end; ++j) {
-        const Engine::ShapeStep& k = t.steps[from[j]];
+        const NativeDeriver::ShapeStep& k = t.steps[from[j]];
         const std::uint32_t nIn = k.n, nOuts = k.nOuts, nArgs = k.nArgs;
         const std::uint32_t* shapes = t.outShapes + k.firstOut;
-        if (k.kind == Engine::ShapeStep::Fast) {
+        if (k.kind == NativeDeriver::ShapeStep::Fast) {
             // Unrolled for the usual small rules: a loop of unknown length costs more than
             // the arithmetic.
-            const Engine::FastArg* args = t.fastArgs + k.firstArg;
+            const NativeDeriver::FastArg* args = t.fastArgs + k.firstArg;
             switch (nArgs) {
                 case 0: break;
                 case 1: fastValues<1, kChecked>(args, 1, in, k.outInts, values, bad); break;
@@ -151,13 +164,13 @@ bool rewriteRange(const Engine::Tables& t, const NumString& cur, size_t begin, s
                 for (std::uint32_t o = 0; o < nOuts; ++o) *origin++ = {k.rule->index, std::uint32_t(j)};
             out += nOuts;
             values += nArgs;
-        } else if (k.kind == Engine::ShapeStep::Copy) {
+        } else if (k.kind == NativeDeriver::ShapeStep::Copy) {
             *out++ = *shapes;
             if constexpr (kOrigins) *origin++ = {-1, std::uint32_t(j)};
             for (std::uint32_t a = 0; a < nIn; ++a) values[a] = in[a];
             values += nIn;
         } else {
-            Engine::NativeCursor g{out, values, origin, 0};
+            NativeDeriver::NativeCursor g{out, values, origin, 0};
             bad |= !generalRule(k, t, in, j, g);
             out = g.out, values = g.values, origin = g.origin;
         }
@@ -168,7 +181,10 @@ bool rewriteRange(const Engine::Tables& t, const NumString& cur, size_t begin, s
 }
 }  // namespace
 
-void Engine::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params,
+//-----------------------------------------------------------------------------
+// [SECTION] a step's size, and its ranges
+//-----------------------------------------------------------------------------
+void NativeDeriver::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules, std::uint64_t& params,
                         std::uint64_t& read) const {
     const std::uint32_t* from = cur.modules.data();
     const ShapeStep* steps = m_shapeSteps.data();
@@ -181,13 +197,16 @@ void Engine::nativeSize(const NumString& cur, size_t end, std::uint64_t& modules
     }
 }
 
-bool Engine::nativeRange(const NumString& cur, size_t begin, size_t end, NativeCursor& c, bool checked) const {
+bool NativeDeriver::nativeRange(const NumString& cur, size_t begin, size_t end, NativeCursor& c, bool checked) const {
     const Tables t{m_shapeSteps.data(), m_outShapes.data(), m_flatOuts.data(), m_flatArgs.data(), m_fastArgs.data()};
     if (c.origin)
         return checked ? rewriteRange<true, true>(t, cur, begin, end, c) : rewriteRange<true, false>(t, cur, begin, end, c);
     return checked ? rewriteRange<false, true>(t, cur, begin, end, c) : rewriteRange<false, false>(t, cur, begin, end, c);
 }
 
+//-----------------------------------------------------------------------------
+// [SECTION] the second thread
+//-----------------------------------------------------------------------------
 // A second thread for the derivations' big steps: started once for the process, given a job
 // per step, lent to one derivation at a time (another at the same time does without). Between
 // steps it spins a little before it sleeps: starting, waking or joining a thread took 20-150 us
@@ -258,7 +277,10 @@ private:
     std::atomic<bool> m_busy{false};
 };
 
-bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper) {
+//-----------------------------------------------------------------------------
+// [SECTION] a step
+//-----------------------------------------------------------------------------
+bool NativeDeriver::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* helper) {
     const size_t count = cur.size();
     // The fast rules' values need no check when no number of the string is big enough for
     // one to reach 2^53 (|x * mul + add| <= max|x| * max|mul| + max|add|, with room for
@@ -286,7 +308,7 @@ bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* hel
     constexpr size_t kPiece = 16384;  // modules between two looks at Cancel
     auto run = [&](size_t from, size_t to, NativeCursor& at, bool mainThread) {
         for (size_t j = from; j < to; j += kPiece) {
-            if (mainThread) checkCancel();
+            if (mainThread) checkCancel(m_options);
             else if (m_options.cancel && m_options.cancel->load(std::memory_order_relaxed)) return true;
             if (!nativeRange(cur, j, std::min(to, j + kPiece), at, checked)) return false;
         }
@@ -313,13 +335,16 @@ bool Engine::nativeStep(const NumString& cur, NativeCursor& c, NativeHelper* hel
     } wait{*helper};
     const bool firstOk = run(0, split, c, true);
     helper->wait();
-    checkCancel();  // the second part stopped for it
+    checkCancel(m_options);  // the second part stopped for it
     c = second;
     return firstOk && secondOk;
 }
 
-bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
-                           bool origins) {
+//-----------------------------------------------------------------------------
+// [SECTION] the derivation
+//-----------------------------------------------------------------------------
+bool NativeDeriver::derive(const LString& axiom, int steps, std::vector<NumString>* everyStep, NumString& result,
+                           bool origins, int& iteration) {
     NumString cur, next;
     m_shapes.clear();
     m_shapeIds.clear();
@@ -332,7 +357,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
             double v = 0;
             bool isInt = false;
             if (a >= kMaxNativeArity || !numberOf(PyTuple_GET_ITEM(m.args.ptr(), a), v, isInt)) {
-                m_nativeOk = false;
+                m_ok = false;
                 return false;
             }
             cur.params.push_back(v);
@@ -342,7 +367,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
     }
     // Every shape the string can hold, and what a step does with each, before it grows.
     if (!closeShapes()) {
-        m_nativeOk = false;
+        m_ok = false;
         return false;
     }
     cur.shapes = next.shapes = std::make_shared<const std::vector<NumString::Shape>>(m_shapes);
@@ -353,7 +378,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
     std::unique_lock<std::mutex> lease;
     NativeHelper* helper = nullptr;  // lent at the first big step
     for (int i = 0; i < steps; ++i) {
-        checkCancel();
+        checkCancel(m_options);
         iteration = i;
         const size_t count = cur.size();
         // Room for the new string: an upper bound from the longest successor, or the exact
@@ -388,7 +413,7 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         if (!helper && count >= 8192) helper = NativeHelper::lend(lease);
         bool ok = nativeStep(cur, c, helper);
         if (!ok) {
-            m_nativeOk = false;
+            m_ok = false;
             if (everyStep) everyStep->clear();
             return false;
         }
@@ -401,7 +426,6 @@ bool Engine::deriveNumbers(const LString& axiom, int steps, std::vector<NumStrin
         if (everyStep) everyStep->push_back(cur);
     }
     iteration = std::max(0, steps - 1);
-    ranNative = true;
     result = std::move(cur);
     return true;
 }

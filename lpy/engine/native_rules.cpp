@@ -1,5 +1,5 @@
 // The native path's set-up (lpy/engine/native_derive.cpp says what the path is): which models take it and
-// their rules compiled (prepareNative, when the model is bound), and before each derivation
+// their rules compiled (NativeDeriver::prepare, when the model is bound), and before each derivation
 // every module shape the axiom's can lead to, with what a step does with each (closeShapes);
 // and the native string made into Python's values (toL). Its own file: none of it runs in a
 // step's loop over the modules.
@@ -8,7 +8,8 @@
 #include <cmath>
 
 #include "core/language/source.hpp"
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/engine.hpp"  // Engine::isQuery
+#include "lpy/engine/native_deriver.hpp"
 
 namespace sprout::lpy {
 namespace {
@@ -58,15 +59,13 @@ bool plainArithmetic(std::string_view a, const std::vector<std::string>& names, 
 
 }  // namespace
 
-void Engine::prepareNative() {
-    m_nativeOk = false;
+void NativeDeriver::prepare(const Translation& tr, bool eligible) {
+    m_ok = false;
     m_native.clear();
-    m_nativeByClass.assign(m_tr.classes.size(), {});
-    if (!m_options.native || m_queryRules || m_hasKind[int(RuleKind::Decomposition)]) return;
-    for (const char* hook : {"Start", "End", "StartEach", "EndEach"})
-        if (m_ns.contains(hook)) return;
-    for (size_t r = 0; r < m_tr.rules.size(); ++r) {
-        const Rule& rule = m_tr.rules[r];
+    m_nativeByClass.assign(tr.classes.size(), {});
+    if (!eligible) return;
+    for (size_t r = 0; r < tr.rules.size(); ++r) {
+        const Rule& rule = tr.rules[r];
         if (rule.kind == RuleKind::Interpretation) continue;  // run in Python on the result
         if (!rule.arrow || rule.group != 0 || rule.filter >= 0 || !rule.left.empty() || !rule.newLeft.empty() ||
             !rule.newRight.empty() || !rule.right.empty() || rule.pred.size() != 1)
@@ -74,7 +73,7 @@ void Engine::prepareNative() {
         const PatternModule& p = rule.pred[0];
         if (p.cls == ModuleClasses::kStar || p.isRepeat() || p.isOr() || !p.anyName.empty() || !p.moduleVariable.empty() ||
             p.exactPop || p.cls < 0 ||
-            size_t(p.cls) >= m_tr.classes.size())
+            size_t(p.cls) >= tr.classes.size())
             return;
         std::vector<std::string> names;
         for (const PatternArg& a : p.args) {
@@ -88,7 +87,7 @@ void Engine::prepareNative() {
         if (nr.arity > kMaxNativeArity) return;
         for (const WrittenModule& w : rule.successor) {
             if (!w.variable.empty() || w.cls < 0 || w.cls == ModuleClasses::kCut || w.cls == ModuleClasses::kStar ||
-                w.cls == ModuleClasses::kNone || Engine::isQuery(m_tr.classes.name(w.cls)) ||
+                w.cls == ModuleClasses::kNone || Engine::isQuery(tr.classes.name(w.cls)) ||
                 int(w.args.size()) > kMaxNativeArity)
                 return;
             NativeOut out;
@@ -159,10 +158,10 @@ void Engine::prepareNative() {
         m_fastScale = std::max(m_fastScale, scale);
         m_fastShift = std::max(m_fastShift, shift);
     }
-    m_nativeOk = true;
+    m_ok = true;
 }
 
-LString Engine::toL(const NumString& s) {
+LString NativeDeriver::toL(const NumString& s) {
     LString out;
     out.reserve(s.size());
     const double* v = s.params.data();
@@ -182,7 +181,7 @@ LString Engine::toL(const NumString& s) {
     return out;
 }
 
-const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const {
+const NativeDeriver::NativeRule* NativeDeriver::nativeRule(int cls, std::uint32_t arity) const {
     if (cls < 0 || size_t(cls) >= m_nativeByClass.size()) return nullptr;
     for (int r : m_nativeByClass[size_t(cls)])
         if (std::uint32_t(m_native[size_t(r)].arity) == arity) return &m_native[size_t(r)];
@@ -193,14 +192,14 @@ const Engine::NativeRule* Engine::nativeRule(int cls, std::uint32_t arity) const
 // Python: finding them all would cost more than it saves.
 constexpr size_t kMaxShapes = 1u << 16;
 
-std::uint32_t Engine::shapeOf(const NumString::Shape& shape) {
+std::uint32_t NativeDeriver::shapeOf(const NumString::Shape& shape) {
     const std::uint64_t key = std::uint64_t(std::uint32_t(shape.cls)) << 38 | std::uint64_t(shape.n) << 32 | shape.ints;
     auto [it, made] = m_shapeIds.emplace(key, std::uint32_t(m_shapes.size()));
     if (made) m_shapes.push_back(shape);
     return it->second;
 }
 
-bool Engine::closeShapes() {
+bool NativeDeriver::closeShapes() {
     m_shapeSteps.clear();
     m_outShapes.clear();
     // The shapes found so far are the work list: each one's step may find more.

@@ -1,4 +1,4 @@
-// Multiscale strings (lpy/engine/engine.hpp): module scales (`module I : scale = 2`, the context's
+// Multiscale strings (lpy/engine/match.hpp): module scales (`module I : scale = 2`, the context's
 // setModuleScale) and L-Py's ways of reading a string as a tree (its option 'String matching',
 // src/cpp/matching.cpp): with 'As Multiscale AxialTree' a left context is read from each
 // module to its predecessor at the pattern module's scale, a right context to the next module
@@ -7,11 +7,11 @@
 #include <climits>
 
 #include "lpy/engine/axial_tree.hpp"
-#include "lpy/engine/engine.hpp"
+#include "lpy/engine/match.hpp"
 
 namespace sprout::lpy {
 
-void Engine::readMatchingOptions() {
+void Matcher::readOptions() {
     if (!m_lpyModule) m_lpyModule = py::module_::import("openalea.lpy");
     py::dict state = m_lpyModule.attr("_state");  // the current context's (a model may switch it)
     const long changes = state.contains("changes") ? state["changes"].cast<long>() : 0;
@@ -41,9 +41,9 @@ void Engine::readMatchingOptions() {
     if (!any || m_stringMatching < 2) m_stringMatching = std::min(m_stringMatching, 1);
 }
 
-int Engine::scaleOf(int cls) const { return cls >= 0 && size_t(cls) < m_scale.size() ? m_scale[size_t(cls)] : INT_MAX; }
+int Matcher::scaleOf(int cls) const { return cls >= 0 && size_t(cls) < m_scale.size() ? m_scale[size_t(cls)] : INT_MAX; }
 
-long Engine::predecessorAt(const LString& s, long pos, int target, int filter) {
+long Matcher::predecessorAt(const LString& s, long pos, int target, int filter) {
     if (pos <= 0) return -1;
     const tree::Scale scale = [this](int cls) { return scaleOf(cls); };
     const tree::Skip skip = [this, filter](int cls) { return skipped(cls, filter); };
@@ -51,7 +51,7 @@ long Engine::predecessorAt(const LString& s, long pos, int target, int filter) {
                                  : tree::predecessorAtScale(s, size_t(pos), target, scale, skip);
 }
 
-size_t Engine::nextAt(const LString& s, size_t pos, int target, int filter) {
+size_t Matcher::nextAt(const LString& s, size_t pos, int target, int filter) {
     constexpr size_t npos = size_t(-1);
     // L-Py's next_module_at_scale from the position after the last module matched.
     auto next = [&](size_t j) {
