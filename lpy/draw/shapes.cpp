@@ -46,9 +46,8 @@ bool hullSurface(PyObject* shape, SurfaceFile& sf) {
     // num(v, default) of plantgl_drawing.py: float(v), or the default.
     auto number = [&](const char* field, double fallback) {
         PyObject* v = PyObject_GetAttrString(shape, field);
-        PyObject* f = v ? PyNumber_Float(v) : nullptr;
-        const double x = f ? PyFloat_AS_DOUBLE(f) : fallback;
-        Py_XDECREF(f);
+        double x = fallback;
+        if (!v || !pynum::floatOf(v, x)) x = fallback;
         Py_XDECREF(v);
         PyErr_Clear();
         return x;

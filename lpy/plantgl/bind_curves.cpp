@@ -10,6 +10,7 @@
 
 #include "lpy/plantgl/curves.hpp"
 #include "lpy/plantgl/bindings.hpp"
+#include "lpy/plantgl/py_numbers.hpp"
 
 namespace py = pybind11;
 
@@ -17,23 +18,19 @@ namespace sprout::lpy {
 namespace {
 
 double number(PyObject* v) {
-    const double d = PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyFloat_AsDouble(v);
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    double d;
+    if (!pynum::arithmetic(v, d)) throw py::error_already_set();
     return d;
 }
 
 // A point's first `n` numbers, read as the Python reads them (p[c]): a PlantGL vector's
 // list directly, anything else by indexing (an IndexError where it is shorter).
 void readPoint(py::handle p, int n, std::vector<double>& out) {
-    static PyObject* const vName = PyUnicode_InternFromString("_v");
-    PyObject* v = PyObject_GetAttr(p.ptr(), vName);
-    if (v && PyList_Check(v) && PyList_GET_SIZE(v) >= n) {
+    if (PyObject* v = pynum::vectorList(p.ptr(), n)) {
+        const py::object keep = py::reinterpret_steal<py::object>(v);
         for (int c = 0; c < n; ++c) out.push_back(number(PyList_GET_ITEM(v, c)));
-        Py_DECREF(v);
         return;
     }
-    Py_XDECREF(v);
-    PyErr_Clear();
     for (int c = 0; c < n; ++c) {
         py::object item = py::reinterpret_steal<py::object>(PySequence_GetItem(p.ptr(), c));
         if (!item) throw py::error_already_set();

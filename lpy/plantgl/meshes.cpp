@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "lpy/plantgl/bindings.hpp"
+#include "lpy/plantgl/py_numbers.hpp"
 
 namespace sprout::lpy {
 namespace {
@@ -46,32 +47,18 @@ PyObject* attribute(PyObject* obj, const char* field) {
 
 // float(v), or `fallback` where float() raises TypeError or ValueError (plantgl_drawing's num).
 double num(PyObject* v, double fallback) {
-    if (!v) return fallback;
-    if (PyFloat_CheckExact(v)) return PyFloat_AS_DOUBLE(v);
-    PyObject* f = PyNumber_Float(v);
-    if (f) {
-        const double d = PyFloat_AS_DOUBLE(f);
-        Py_DECREF(f);
-        return d;
-    }
-    if (PyErr_ExceptionMatches(PyExc_TypeError) || PyErr_ExceptionMatches(PyExc_ValueError)) {
-        PyErr_Clear();
-        return fallback;
-    }
+    double d;
+    if (pynum::floatOr(v, fallback, d)) return d;
     PyErr_Clear();
     throw Unknown{};
 }
 
 // float(v) (Vector3's constructor): raises where float() does.
 double exact(PyObject* v) {
-    PyObject* f = PyNumber_Float(v);
-    if (!f) {
-        PyErr_Clear();
-        throw Unknown{};
-    }
-    const double d = PyFloat_AS_DOUBLE(f);
-    Py_DECREF(f);
-    return d;
+    double d;
+    if (pynum::floatOf(v, d)) return d;
+    PyErr_Clear();
+    throw Unknown{};
 }
 
 // num(get(field, fallback), fallback)
