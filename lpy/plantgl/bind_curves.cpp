@@ -88,6 +88,24 @@ std::vector<double> patchRow(py::handle row) {
     return out;
 }
 
+// A volume's control points, [u][v][w] each (x, y, z, w) as the Python reads p[0] to p[3].
+curves::NurbsVolume volumeOf(py::handle grid, std::array<int, 3> degrees, py::tuple knots) {
+    curves::NurbsVolume::Grid ctrl;
+    std::vector<double> xyzw;
+    for (py::handle plane : grid) {
+        ctrl.emplace_back();
+        for (py::handle line : plane) {
+            ctrl.back().emplace_back();
+            for (py::handle p : line) {
+                xyzw.clear();
+                readPoint(p, 4, xyzw);
+                ctrl.back().back().push_back({xyzw[0], xyzw[1], xyzw[2], xyzw[3]});
+            }
+        }
+    }
+    return curves::NurbsVolume(std::move(ctrl), degrees, {numbersOf(knots[0]), numbersOf(knots[1]), numbersOf(knots[2])});
+}
+
 }  // namespace
 
 std::shared_ptr<const curves::Nurbs> nativeNurbs(PyObject* curve, int& stride) {
@@ -159,6 +177,14 @@ void definePlantGL(py::module_& m) {
             for (const curves::Point& q : p.grid(n)) out.append(py::make_tuple(q[0], q[1], q[2]));
             return out;
         });
+
+    // NurbsPatch3D.getPointAt: (control points [u][v][w], (degrees), (knots), u, v, w), the
+    // point's (x, y, z).
+    m.def("_pgl_volume_point", [](py::handle grid, std::array<int, 3> degrees, py::tuple knots, double u, double v,
+                                  double w) { return listOf(volumeOf(grid, degrees, knots).pointAt(u, v, w), 3); });
+    // The uniform clamped knots of n control points of a degree (NurbsCurve2D's and
+    // NurbsPatch3D's default knots).
+    m.def("_pgl_uniform_knots", [](int n, int degree) { return curves::uniformClampedKnots(n, degree); });
 }
 
 }  // namespace sprout::lpy

@@ -17,7 +17,8 @@ from openalea.plantgl._vectors import _Vec, _math
 from openalea.plantgl._scene import *
 from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
 from openalea.plantgl._curves import *
-from openalea.plantgl._curves import _Points, _uniform_clamped_knots
+from openalea.plantgl._curves import _Points
+from openalea.plantgl._curves import _pgl_uniform_knots as _uniform_clamped_knots
 from openalea.plantgl._grids import *
 from openalea.plantgl._drawing import *
 from openalea.plantgl._drawing import _asymmetric_hull, _sprout_triangles
