@@ -88,6 +88,15 @@ std::vector<double> patchRow(py::handle row) {
     return out;
 }
 
+// A patch as _PglPatch makes it: (rows of points, udegree, vdegree, uknots or None, vknots or
+// None).
+std::shared_ptr<curves::NurbsPatch> patchOf(py::handle rows, int udegree, int vdegree, py::handle uknots, py::handle vknots) {
+    std::vector<std::vector<double>> pts;
+    for (py::handle row : rows) pts.push_back(patchRow(row));
+    auto knots = [](py::handle k) { return k.is_none() ? std::vector<double>{} : numbersOf(k); };
+    return std::make_shared<curves::NurbsPatch>(std::move(pts), udegree, vdegree, knots(uknots), knots(vknots));
+}
+
 // A volume's control points, [u][v][w] each (x, y, z, w) as the Python reads p[0] to p[3].
 curves::NurbsVolume volumeOf(py::handle grid, std::array<int, 3> degrees, py::tuple knots) {
     curves::NurbsVolume::Grid ctrl;
@@ -107,6 +116,10 @@ curves::NurbsVolume volumeOf(py::handle grid, std::array<int, 3> degrees, py::tu
 }
 
 }  // namespace
+
+std::vector<curves::Point> patchGrid(PyObject* rows, int udegree, int vdegree, int n) {
+    return patchOf(py::handle(rows), udegree, vdegree, py::none(), py::none())->grid(n);
+}
 
 std::shared_ptr<const curves::Nurbs> nativeNurbs(PyObject* curve, int& stride) {
     py::handle h(curve);
@@ -163,12 +176,7 @@ void definePlantGL(py::module_& m) {
 
     py::class_<curves::NurbsPatch, std::shared_ptr<curves::NurbsPatch>>(m, "_PglPatch")
         // (rows of points, udegree, vdegree, uknots or None, vknots or None)
-        .def(py::init([](py::handle rows, int udegree, int vdegree, py::handle uknots, py::handle vknots) {
-            std::vector<std::vector<double>> pts;
-            for (py::handle row : rows) pts.push_back(patchRow(row));
-            auto knots = [](py::handle k) { return k.is_none() ? std::vector<double>{} : numbersOf(k); };
-            return std::make_shared<curves::NurbsPatch>(std::move(pts), udegree, vdegree, knots(uknots), knots(vknots));
-        }))
+        .def(py::init(&patchOf))
         .def("point", [](const curves::NurbsPatch& p, double u, double v) { return listOf(p.pointAt(u, v), 3); })
         // The drawing's (n + 1)^2 points, as tuples.
         .def("grid", [](const curves::NurbsPatch& p, int n) {

@@ -421,7 +421,7 @@ class NurbsPatch:
         return _of3(self._native().point(u, v))
 
     def _grid(self, n):
-        """The points at (i / n, j / n), i outer, as tuples: the drawing's (plantgl_drawing.py)."""
+        """The points at (i / n, j / n), i outer, as tuples: the drawing's (lpy/plantgl/meshes.cpp)."""
         return self._native().grid(n)
 
     def getUTangentAt(self, u, v):
