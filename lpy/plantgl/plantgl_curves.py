@@ -3,6 +3,13 @@
 # functions made from them (QuantisedFunction, the arc-length mappings), the Discretizer, NURBS
 # patches and volumes: PlantGL's interface, evaluated in C++ (lpy/plantgl/curves.cpp, through
 # bind_curves.cpp: de Boor, the knots, arc lengths are there alone). Its own file: the curves.
+#
+# Index of this file:
+#   [SECTION] Point arrays and their text
+#   [SECTION] NURBS and Bezier curves
+#   [SECTION] Polylines and the Discretizer
+#   [SECTION] QuantisedFunction
+#   [SECTION] Patches and volumes
 import math as _math
 
 from _sprout_lpy import (_PglNurbs, _PglPatch, _pgl_quantised_polyline, _pgl_uniform_knots, _pgl_volume_point,
@@ -14,6 +21,7 @@ from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
 _of2, _of3 = Vector2._of, Vector3._of
 
 
+# [SECTION] Point arrays and their text
 def _point_text(p, n):
     """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
     return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
@@ -88,6 +96,7 @@ def _default_knots(knots, n, degree):
     return all(abs(knots[k] - knots[-1]) < 1e-10 for k in range(size - degree - 1, size))
 
 
+# [SECTION] NURBS and Bezier curves
 class NurbsCurve2D:
     """A 2D NURBS curve; control points are (x, y, weight)."""
     _dim = 2
@@ -223,6 +232,7 @@ class BezierCurve2D(NurbsCurve2D):
     __str__ = __repr__
 
 
+# [SECTION] Polylines and the Discretizer
 class Polyline2D:
     def __init__(self, pointList, width=1, **kwargs):
         self.pointList = [Vector2(p[0], p[1]) for p in pointList]
@@ -284,6 +294,7 @@ class Discretizer:
         self.result = None
 
 
+# [SECTION] QuantisedFunction
 class QuantisedFunction(_QuantisedBase):
     """y = f(x) from a 2D curve, as PlantGL's QuantisedFunction makes it: `sampling` values at
     evenly spaced x over the curve's x range, each the y of the curve's point found by bisecting
@@ -365,6 +376,7 @@ class QuantisedFunction(_QuantisedBase):
         return (1 - diff) * values[floor] + diff * values[floor + 1]
 
 
+# [SECTION] Patches and volumes
 class NurbsPatch:
     """A NURBS surface; control points (x, y, z, w) in rows along u."""
 
