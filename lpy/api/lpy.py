@@ -17,7 +17,7 @@ from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, 
                          getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed,
                          setSelectionAlwaysRequired, isSelectionAlwaysRequired, requestSelection)
 
-from _sprout_lpy import __lpy_module_class as _module_class, _class_count
+from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods
 
 _state = {}
 
@@ -430,22 +430,8 @@ class _InterpretationTurtle:
     the turtle draws it there; the parameters a model gives it (add_parameter) follow the
     turtle's branches: '[' keeps them, ']' brings them back."""
 
-    # PglTurtle's methods, and the module each one is.
-    _modules = {
-        'left': '+', 'right': '-', 'up': '^', 'down': '&', 'rollL': '/', 'rollR': '\\',
-        'iRollL': 'iRollL', 'iRollR': 'iRollR', 'turnAround': '|', 'rollToVert': '@v',
-        'rollToHorizontal': '@h', 'setHead': '@R', 'F': 'F', 'f': 'f', 'nF': 'nF',
-        'sphere': '@O', 'circle': '@o', 'box': '@B', 'quad': '@b', 'label': '@L',
-        'startGC': '@Gc', 'stopGC': '@Ge', 'startPolygon': '{', 'stopPolygon': '}',
-        'polygonPoint': '.', 'push': '[', 'pop': ']', 'setWidth': 'SetWidth',
-        'incWidth': '_', 'decWidth': '!', 'setColor': 'SetColor', 'incColor': ';',
-        'decColor': ',', 'interpolateColors': 'InterpolateColors', 'move': '@M',
-        'moveRel': 'MoveRel', 'lineTo': 'LineTo', 'lineRel': 'LineRel', 'oLineTo': 'OLineTo',
-        'oLineRel': 'OLineRel', 'pinpoint': 'Pinpoint', 'pinpointRel': 'PinpointRel',
-        'setGuide': 'SetGuide', 'endGuide': 'EndGuide', 'sweep': 'Sweep',
-        'setTropism': '@Tp', 'setElasticity': '@Ts', 'setScale': '@D', 'frame': 'Frame',
-        'arrow': 'Arrow', 'surface': '~',
-    }
+    # PglTurtle's methods, and the module each one is (lpy/translate/turtle_vocabulary.hpp).
+    _modules = dict(_turtle_methods())
 
     def __init__(self):
         object.__setattr__(self, '_params', {})

@@ -8,6 +8,7 @@
 
 #include "lpy/api/api.hpp"
 #include "lpy/interpreter/interpreter.hpp"
+#include "lpy/translate/turtle_vocabulary.hpp"
 
 namespace py = pybind11;
 using namespace sprout::lpy;
@@ -58,6 +59,13 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
     for (PyMethodDef& def : produceDefs) m.attr(def.ml_name) = py::reinterpret_steal<py::object>(PyCFunction_New(&def, nullptr));
     m.def("nsproduce", [](py::handle items) { engine().produce(items, false); });
     m.def("Stop", [] { engine().stopRequested = true; });
+    // (PglTurtle's method, its module) of the turtle's vocabulary: lpy.py's interpretation turtle.
+    m.def("_turtle_methods", [] {
+        std::vector<std::pair<std::string, std::string>> out;
+        for (const TurtleWord& w : kTurtleVocabulary)
+            if (w.method) out.emplace_back(w.method, w.names[0]);
+        return out;
+    });
     m.def("forward", [] { engine().forwardDirection = true; });
     m.def("backward", [] { engine().forwardDirection = false; });
     m.def("isForward", [] { return engine().forwardDirection; });

@@ -19,6 +19,7 @@
 #include <unordered_map>
 
 #include "lpy/draw/draw_impl.hpp"
+#include "lpy/translate/turtle_vocabulary.hpp"
 
 namespace sprout::lpy {
 namespace {
@@ -29,67 +30,32 @@ namespace {
 using detail::Drawing;
 using detail::numbers;
 using detail::TurtleState;
-enum class Op : std::uint8_t {
-    Skip, Forward, Move, StepForward, Turn, Around, Vertical, SetHead, MoveTo, LineTo, IncWidth, DecWidth, SetWidth,
-    IncColour, DecColour, SetColour, Sphere, Circle, Surface, PolyBegin, PolyVertex, PolyEnd, Push, Pop,
-    Bare,  // the Sprout module, without parameters
-    Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
-    Point,  // the Sprout module with L-Py's x y z as Sprout's
-    Frame, InterpolateColours, Shape, Label,
-};
+using Op = TurtleOp;
 
 struct Mapping {
     Op op;
     const char* sprout = nullptr;  // the Sprout module, for ops that keep their name
 };
 
+// Each drawn module's mapping, from the turtle's vocabulary (lpy/translate/turtle_vocabulary.hpp).
 const std::unordered_map<std::string, Mapping>& mappings() {
-    static const std::unordered_map<std::string, Mapping> m = {
-        {"F", {Op::Forward, "F"}}, {"f", {Op::Move, "f"}}, {"nF", {Op::StepForward, "F"}},
-        {"+", {Op::Turn, "+"}}, {"-", {Op::Turn, "-"}}, {"^", {Op::Turn, "^"}}, {"&", {Op::Turn, "&"}},
-        // L-Py's / is RollL, about H by +angle (PlantGL: left towards up), which is Sprout's
-        // (ABOP's) \ ; its \ is Sprout's /.
-        {"/", {Op::Turn, "\\"}}, {"\\", {Op::Turn, "/"}}, {"iRollL", {Op::Turn, "\\"}}, {"iRollR", {Op::Turn, "/"}},
-        {"|", {Op::Around, "|"}}, {"@v", {Op::Vertical, "$"}}, {"@R", {Op::SetHead, "@R"}},
-        {"@M", {Op::MoveTo, "@M"}}, {"LineTo", {Op::LineTo, "LineTo"}}, {"OLineTo", {Op::LineTo, "OLineTo"}},
-        {"LineRel", {Op::LineTo, "LineRel"}}, {"OLineRel", {Op::LineTo, "OLineRel"}}, {"MoveRel", {Op::Point, "MoveRel"}},
-        {"Pinpoint", {Op::Point, "Pinpoint"}}, {"PinpointRel", {Op::Point, "PinpointRel"}},
-        // The turtle's frame as three arrows (heading red, up blue, left green), and a colour
-        // between two materials.
-        {"Frame", {Op::Frame}}, {"InterpolateColors", {Op::InterpolateColours}},
-        // A PlantGL shape at the turtle (@g(shape[, scale])): its x along the turtle's up, its y
-        // to the right, its z along the heading (so a shape's coordinates are L-Py's world ones
-        // for a turtle that has not turned, as a guide's are).
-        {"@g", {Op::Shape}},
-        // A text at the turtle (@L(text[, size]): PlantGL's label, facing the viewer).
-        {"@L", {Op::Label}},
-        {"_", {Op::IncWidth}}, {"!", {Op::DecWidth}}, {"SetWidth", {Op::SetWidth}},
-        {";", {Op::IncColour}}, {",", {Op::DecColour}}, {"SetColor", {Op::SetColour}},
-        {"@O", {Op::Sphere, "@O"}}, {"@o", {Op::Circle, "@c"}}, {"~", {Op::Surface, "~l"}},
-        {"{", {Op::PolyBegin, "{"}}, {".", {Op::PolyVertex, "."}}, {"}", {Op::PolyEnd, "}"}},
-        {"[", {Op::Push, "["}}, {"]", {Op::Pop, "]"}},
-        // Generalized cylinders: the stems between StartGC and EndGC are one smooth tube
-        // (Sprout's cpfg @Gs ... @Ge: each F a control point).
-        {"@Gc", {Op::Bare, "@Gs"}}, {"@Ge", {Op::Bare, "@Ge"}},
-        // Tropism: before each F and f, H turns towards the tropism vector by the elasticity
-        // times the angle between them (Sprout's @T with a direction).
-        {"@Tp", {Op::Tropism}}, {"@Ts", {Op::Elasticity}},
-        // Guides: the F and f that follow go along a curve (PlantGL's Turtle2DPath).
-        {"SetGuide", {Op::SetGuide}}, {"EndGuide", {Op::EndGuide}}, {"PositionOnGuide", {Op::PositionOnGuide}},
-        // Cross-sections: the tubes after SetContour(curve) are swept with that curve's shape
-        // (an open curve: a surface, such as a leaf blade); Sweep(path, section, length, dl,
-        // radius, radiusFunction) is SetGuide, SetContour and nF together (PlantGL's sweep).
-        {"SetContour", {Op::SetContour}}, {"Sweep", {Op::Sweep}},
-    };
+    static const std::unordered_map<std::string, Mapping> m = [] {
+        std::unordered_map<std::string, Mapping> out;
+        for (const TurtleWord& w : kTurtleVocabulary)
+            if (w.op != Op::LeftOut && w.op != Op::Silent) out.emplace(w.names[0], Mapping{w.op, w.sprout});
+        return out;
+    }();
     return m;
 }
 
 // Modules that draw nothing in L-Py either (no warning when left out).
 bool silent(const std::string& name) {
-    static const std::set<std::string> s = {"%", "*", "None", "X", "?P", "?H", "?U", "?L", "?R", "?F",
-                                            "@D", "@Di", "@Dd", "SectionResolution", "@2D", "@3D",
-                                            "TextureScale", "TextureUScale", "TextureVScale", "TextureTranslation", "TextureRotation",
-                                            "TextureTransformation", "x", "or", "=]", "?I", "new"};
+    static const std::set<std::string> s = [] {
+        std::set<std::string> out;
+        for (const TurtleWord& w : kTurtleVocabulary)
+            if (w.op == Op::Silent) out.insert(w.names[0]);
+        return out;
+    }();
     return s.count(name) > 0;
 }
 

@@ -19,38 +19,12 @@
 #include <vector>
 
 #include "lpy/draw/draw.hpp"
+#include "lpy/plantgl/py_numbers.hpp"
 
 namespace sprout::lpy::detail {
 
 // A parameter as numbers: a number, or a vector/sequence of numbers (Vector3, tuple).
-inline bool numbers(PyObject* v, std::vector<double>& out) {
-    if (PyFloat_Check(v) || PyLong_Check(v)) {
-        const double d = PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyLong_AsDouble(v);
-        if (PyErr_Occurred()) {
-            PyErr_Clear();
-            return false;
-        }
-        out.push_back(d);
-        return true;
-    }
-    if (PyUnicode_Check(v) || !PySequence_Check(v)) return false;
-    const Py_ssize_t n = PySequence_Size(v);
-    if (n < 0 || n > 16) {
-        PyErr_Clear();
-        return false;
-    }
-    for (Py_ssize_t k = 0; k < n; ++k) {
-        PyObject* item = PySequence_GetItem(v, k);
-        if (!item) {
-            PyErr_Clear();
-            return false;
-        }
-        const bool ok = (PyFloat_Check(item) || PyLong_Check(item)) && numbers(item, out);
-        Py_DECREF(item);
-        if (!ok) return false;
-    }
-    return true;
-}
+using pynum::numbers;
 
 class Writer {
 public:

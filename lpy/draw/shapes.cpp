@@ -8,7 +8,6 @@
 #include <string_view>
 
 #include "core/language/surface_file.hpp"
-#include "lpy/plantgl/asymmetric_hull.hpp"
 #include "lpy/draw/draw_impl.hpp"
 #include "lpy/plantgl/bindings.hpp"
 
@@ -33,8 +32,9 @@ void finishSurface(SurfaceFile& sf) {
 // Oriented(up, -left)); the surface's is heading, left, up.
 glm::vec3 fromShapeFrame(double x, double y, double z) { return {float(z), -float(y), float(x)}; }
 
-// Sprout's AsymmetricHull (openalea.plantgl's, no subclass) read here and meshed in C++, as
-// plantgl_drawing.py's _asymmetric_hull does through Python: a crown model draws thousands.
+// Sprout's AsymmetricHull (openalea.plantgl's, no subclass) given alone: meshed in C++ with its
+// fields read leniently (lpy/plantgl/meshes.cpp's hullMesh), and kept even without triangles,
+// as the drawing always has (a crown model draws thousands).
 bool hullSurface(PyObject* shape, SurfaceFile& sf) {
     PyTypeObject* type = Py_TYPE(shape);
     if (std::string_view(type->tp_name) != "AsymmetricHull") return false;
@@ -43,53 +43,18 @@ bool hullSurface(PyObject* shape, SurfaceFile& sf) {
     Py_XDECREF(module);
     PyErr_Clear();
     if (!ours) return false;
-    // num(v, default) of plantgl_drawing.py: float(v), or the default.
-    auto number = [&](const char* field, double fallback) {
-        PyObject* v = PyObject_GetAttrString(shape, field);
-        PyObject* f = v ? PyNumber_Float(v) : nullptr;
-        const double x = f ? PyFloat_AS_DOUBLE(f) : fallback;
-        Py_XDECREF(f);
-        Py_XDECREF(v);
-        PyErr_Clear();
-        return x;
-    };
-    auto point = [&](const char* field, std::array<double, 3> fallback) {
-        PyObject* v = PyObject_GetAttrString(shape, field);
-        std::array<double, 3> out = fallback;
-        if (v && v != Py_None) {
-            std::vector<double> xyz;
-            if (!numbers(v, xyz)) xyz.clear();
-            out = {0, 0, 0};
-            for (size_t k = 0; k < 3 && k < xyz.size(); ++k) out[k] = xyz[k];
-        }
-        Py_XDECREF(v);
-        PyErr_Clear();
-        return out;
-    };
-    auto count = [&](const char* field, double fallback) {  // int(max(-1e9, min(1e9, v))), as Python's min and max take NaN
-        const double v = number(field, fallback);
-        return int(std::isnan(v) ? 1e9 : std::clamp(v, -1e9, 1e9));
-    };
-    AsymmetricHull h;
-    h.negXRadius = number("negXRadius", 0.5), h.posXRadius = number("posXRadius", 0.5);
-    h.negYRadius = number("negYRadius", 0.5), h.posYRadius = number("posYRadius", 0.5);
-    h.negXHeight = number("negXHeight", 0), h.posXHeight = number("posXHeight", 0);
-    h.negYHeight = number("negYHeight", 0), h.posYHeight = number("posYHeight", 0);
-    h.bottom = point("bottom", {0, 0, -0.5}), h.top = point("top", {0, 0, 0.5});
-    h.bottomShape = number("bottomShape", 2), h.topShape = number("topShape", 2);
-    h.slices = count("slices", 4), h.stacks = count("stacks", 4);
-    const HullMesh mesh = meshOf(h);
+    const ShapeMesh mesh = hullMesh(shape);
     sf.positions.reserve(mesh.points.size());
     for (const auto& q : mesh.points) sf.positions.push_back(fromShapeFrame(q[0], q[1], q[2]));
-    for (const auto& t : mesh.triangles) sf.indices.insert(sf.indices.end(), t.begin(), t.end());
+    for (const auto& t : mesh.triangles)
+        for (long v : t) sf.indices.push_back(std::uint32_t(v));
     return true;
 }
 
 }  // namespace
 
-// @g's shapes: each shape object made into triangles once (by the PlantGL module's
-// _sprout_triangles, or here for a hull), a surface of the drawing named after it; "" for one
-// with no surface.
+// @g's shapes: each shape object made into triangles once (lpy/plantgl/meshes.cpp), a surface
+// of the drawing named after it; "" for one with no surface.
 const std::string& Drawing::shapeSurface(PyObject* shape) {
     auto [it, fresh] = m_shapes.try_emplace(shape);
     if (!fresh || !shape) return it->second;
@@ -103,66 +68,23 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
         keep();
         return it->second;
     }
-    // Made in C++ where it knows the shape (the same numbers as the Python's), else by Python.
     const ShapeMesh mesh = shapeMesh(shape);
-    if (mesh.kind != ShapeMesh::Unknown) {
-        if (mesh.kind == ShapeMesh::Nothing) return it->second;  // as None from the Python: not drawn
-        const size_t np = mesh.points.size(), nt = mesh.triangles.size(), ns = mesh.segments.size();
-        if (np == 0 && nt == 0 && ns == 0) it->second = "-";  // a shape with nothing to draw: no warning
-        bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
-        for (size_t i = 0; i < np && ok; ++i) sf->positions.push_back(fromShapeFrame(mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]));
-        for (size_t i = 0; i < nt && ok; ++i) {
-            for (long v : mesh.triangles[i]) ok = ok && v >= 0 && size_t(v) < np;
-            if (ok)
-                for (long v : mesh.triangles[i]) sf->indices.push_back(std::uint32_t(v));
-        }
-        for (size_t i = 0; i < ns && ok; ++i) {
-            const auto& e = mesh.segments[i];
-            ok = e[0] >= 0 && size_t(e[0]) < np && e[1] >= 0 && size_t(e[1]) < np;
-            if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
-        }
-        if (ok && (!sf->indices.empty() || !sf->lines.empty())) keep();
-        return it->second;
+    if (mesh.kind == ShapeMesh::Nothing) return it->second;  // not drawn
+    const size_t np = mesh.points.size(), nt = mesh.triangles.size(), ns = mesh.segments.size();
+    if (np == 0 && nt == 0 && ns == 0) it->second = "-";  // a shape with nothing to draw: no warning
+    bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
+    for (size_t i = 0; i < np && ok; ++i) sf->positions.push_back(fromShapeFrame(mesh.points[i][0], mesh.points[i][1], mesh.points[i][2]));
+    for (size_t i = 0; i < nt && ok; ++i) {
+        for (long v : mesh.triangles[i]) ok = ok && v >= 0 && size_t(v) < np;
+        if (ok)
+            for (long v : mesh.triangles[i]) sf->indices.push_back(std::uint32_t(v));
     }
-    PyObject* pgl = PyImport_ImportModule("openalea.plantgl.all");
-    PyObject* r = pgl ? PyObject_CallMethod(pgl, "_sprout_triangles", "O", shape) : nullptr;
-    Py_XDECREF(pgl);
-    PyObject *points = nullptr, *triangles = nullptr, *segments = nullptr;
-    const Py_ssize_t parts = r && PyTuple_Check(r) ? PyTuple_GET_SIZE(r) : 0;  // (points, triangles[, segments])
-    bool kept = false;
-    if ((parts == 2 || parts == 3) && (points = PySequence_Fast(PyTuple_GET_ITEM(r, 0), "points")) &&
-        (triangles = PySequence_Fast(PyTuple_GET_ITEM(r, 1), "triangles")) &&
-        (segments = PySequence_Fast(parts == 3 ? PyTuple_GET_ITEM(r, 2) : PyTuple_GET_ITEM(r, 1), "segments"))) {
-        const Py_ssize_t np = PySequence_Fast_GET_SIZE(points), nt = PySequence_Fast_GET_SIZE(triangles),
-                         ns = parts == 3 ? PySequence_Fast_GET_SIZE(segments) : 0;
-        if (np == 0 && nt == 0 && ns == 0) it->second = "-";  // a shape with nothing to draw: no warning
-        bool ok = np > 0 && np < 10'000'000 && nt < 10'000'000 && ns < 10'000'000;
-        for (Py_ssize_t i = 0; i < np && ok; ++i) {
-            std::vector<double> q;
-            ok = numbers(PySequence_Fast_GET_ITEM(points, i), q) && q.size() == 3;
-            if (ok) sf->positions.push_back(fromShapeFrame(q[0], q[1], q[2]));
-        }
-        for (Py_ssize_t i = 0; i < nt && ok; ++i) {
-            std::vector<double> t;
-            ok = numbers(PySequence_Fast_GET_ITEM(triangles, i), t) && t.size() == 3;
-            for (double v : t) ok = ok && v >= 0 && v < double(np);
-            if (ok)
-                for (double v : t) sf->indices.push_back(std::uint32_t(v));
-        }
-        for (Py_ssize_t i = 0; i < ns && ok; ++i) {
-            std::vector<double> e;
-            ok = numbers(PySequence_Fast_GET_ITEM(segments, i), e) && e.size() == 2 && e[0] >= 0 && e[0] < double(np) &&
-                 e[1] >= 0 && e[1] < double(np);
-            if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
-        }
-        kept = ok && (!sf->indices.empty() || !sf->lines.empty());
+    for (size_t i = 0; i < ns && ok; ++i) {
+        const auto& e = mesh.segments[i];
+        ok = e[0] >= 0 && size_t(e[0]) < np && e[1] >= 0 && size_t(e[1]) < np;
+        if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
     }
-    Py_XDECREF(points);
-    Py_XDECREF(triangles);
-    Py_XDECREF(segments);
-    Py_XDECREF(r);
-    if (PyErr_Occurred()) PyErr_Clear();
-    if (kept) keep();
+    if (ok && (!sf->indices.empty() || !sf->lines.empty())) keep();
     return it->second;
 }
 

@@ -135,7 +135,7 @@ void start(void (*defineModule)(py::module_&)) {
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/plantgl/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.
-            for (const char* part : {"vectors", "scene", "curves", "grids", "drawing"})
+            for (const char* part : {"vectors", "scene", "curves", "grids"})
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");

@@ -1,6 +1,6 @@
 #pragma once
 // PlantGL's AsymmetricHull (a tree crown) as PlantGL's discretizer makes it, for `@g` shapes
-// of L-Py models (lpy/plantgl/plantgl_drawing.py hands the hull's fields here).
+// of L-Py models (lpy/plantgl/meshes.cpp reads the hull's fields and hands them here).
 #include <array>
 #include <cstdint>
 #include <vector>

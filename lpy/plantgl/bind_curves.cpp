@@ -10,6 +10,7 @@
 
 #include "lpy/plantgl/curves.hpp"
 #include "lpy/plantgl/bindings.hpp"
+#include "lpy/plantgl/py_numbers.hpp"
 
 namespace py = pybind11;
 
@@ -17,23 +18,19 @@ namespace sprout::lpy {
 namespace {
 
 double number(PyObject* v) {
-    const double d = PyFloat_Check(v) ? PyFloat_AS_DOUBLE(v) : PyFloat_AsDouble(v);
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    double d;
+    if (!pynum::arithmetic(v, d)) throw py::error_already_set();
     return d;
 }
 
 // A point's first `n` numbers, read as the Python reads them (p[c]): a PlantGL vector's
 // list directly, anything else by indexing (an IndexError where it is shorter).
 void readPoint(py::handle p, int n, std::vector<double>& out) {
-    static PyObject* const vName = PyUnicode_InternFromString("_v");
-    PyObject* v = PyObject_GetAttr(p.ptr(), vName);
-    if (v && PyList_Check(v) && PyList_GET_SIZE(v) >= n) {
+    if (PyObject* v = pynum::vectorList(p.ptr(), n)) {
+        const py::object keep = py::reinterpret_steal<py::object>(v);
         for (int c = 0; c < n; ++c) out.push_back(number(PyList_GET_ITEM(v, c)));
-        Py_DECREF(v);
         return;
     }
-    Py_XDECREF(v);
-    PyErr_Clear();
     for (int c = 0; c < n; ++c) {
         py::object item = py::reinterpret_steal<py::object>(PySequence_GetItem(p.ptr(), c));
         if (!item) throw py::error_already_set();
@@ -91,7 +88,38 @@ std::vector<double> patchRow(py::handle row) {
     return out;
 }
 
+// A patch as _PglPatch makes it: (rows of points, udegree, vdegree, uknots or None, vknots or
+// None).
+std::shared_ptr<curves::NurbsPatch> patchOf(py::handle rows, int udegree, int vdegree, py::handle uknots, py::handle vknots) {
+    std::vector<std::vector<double>> pts;
+    for (py::handle row : rows) pts.push_back(patchRow(row));
+    auto knots = [](py::handle k) { return k.is_none() ? std::vector<double>{} : numbersOf(k); };
+    return std::make_shared<curves::NurbsPatch>(std::move(pts), udegree, vdegree, knots(uknots), knots(vknots));
+}
+
+// A volume's control points, [u][v][w] each (x, y, z, w) as the Python reads p[0] to p[3].
+curves::NurbsVolume volumeOf(py::handle grid, std::array<int, 3> degrees, py::tuple knots) {
+    curves::NurbsVolume::Grid ctrl;
+    std::vector<double> xyzw;
+    for (py::handle plane : grid) {
+        ctrl.emplace_back();
+        for (py::handle line : plane) {
+            ctrl.back().emplace_back();
+            for (py::handle p : line) {
+                xyzw.clear();
+                readPoint(p, 4, xyzw);
+                ctrl.back().back().push_back({xyzw[0], xyzw[1], xyzw[2], xyzw[3]});
+            }
+        }
+    }
+    return curves::NurbsVolume(std::move(ctrl), degrees, {numbersOf(knots[0]), numbersOf(knots[1]), numbersOf(knots[2])});
+}
+
 }  // namespace
+
+std::vector<curves::Point> patchGrid(PyObject* rows, int udegree, int vdegree, int n) {
+    return patchOf(py::handle(rows), udegree, vdegree, py::none(), py::none())->grid(n);
+}
 
 std::shared_ptr<const curves::Nurbs> nativeNurbs(PyObject* curve, int& stride) {
     py::handle h(curve);
@@ -148,12 +176,7 @@ void definePlantGL(py::module_& m) {
 
     py::class_<curves::NurbsPatch, std::shared_ptr<curves::NurbsPatch>>(m, "_PglPatch")
         // (rows of points, udegree, vdegree, uknots or None, vknots or None)
-        .def(py::init([](py::handle rows, int udegree, int vdegree, py::handle uknots, py::handle vknots) {
-            std::vector<std::vector<double>> pts;
-            for (py::handle row : rows) pts.push_back(patchRow(row));
-            auto knots = [](py::handle k) { return k.is_none() ? std::vector<double>{} : numbersOf(k); };
-            return std::make_shared<curves::NurbsPatch>(std::move(pts), udegree, vdegree, knots(uknots), knots(vknots));
-        }))
+        .def(py::init(&patchOf))
         .def("point", [](const curves::NurbsPatch& p, double u, double v) { return listOf(p.pointAt(u, v), 3); })
         // The drawing's (n + 1)^2 points, as tuples.
         .def("grid", [](const curves::NurbsPatch& p, int n) {
@@ -162,6 +185,14 @@ void definePlantGL(py::module_& m) {
             for (const curves::Point& q : p.grid(n)) out.append(py::make_tuple(q[0], q[1], q[2]));
             return out;
         });
+
+    // NurbsPatch3D.getPointAt: (control points [u][v][w], (degrees), (knots), u, v, w), the
+    // point's (x, y, z).
+    m.def("_pgl_volume_point", [](py::handle grid, std::array<int, 3> degrees, py::tuple knots, double u, double v,
+                                  double w) { return listOf(volumeOf(grid, degrees, knots).pointAt(u, v, w), 3); });
+    // The uniform clamped knots of n control points of a degree (NurbsCurve2D's and
+    // NurbsPatch3D's default knots).
+    m.def("_pgl_uniform_knots", [](int n, int degree) { return curves::uniformClampedKnots(n, degree); });
 }
 
 }  // namespace sprout::lpy

@@ -1,10 +1,9 @@
-// Sprout's openalea.plantgl on C++ (core/turtle/): Point3Grid's grid (`_sprout_lpy._PointGrid`,
-// which the Python class of lpy/plantgl/plantgl_grids.py holds; a space colonisation model asks
-// it thousands of cone and ball queries a step) and the AsymmetricHull's mesh (`_hull_mesh`,
-// for lpy/plantgl/plantgl_drawing.py; a crown model draws thousands a step).
+// Sprout's openalea.plantgl on C++: Point3Grid's grid (`_sprout_lpy._PointGrid`, which the
+// Python class of lpy/plantgl/plantgl_grids.py holds; a space colonisation model asks it
+// thousands of cone and ball queries a step) and @g's meshes for tests (`_shape_mesh`,
+// lpy/plantgl/meshes.cpp).
 #include <pybind11/stl.h>
 
-#include "lpy/plantgl/asymmetric_hull.hpp"
 #include "lpy/plantgl/point_grid.hpp"
 #include "lpy/plantgl/bindings.hpp"
 
@@ -36,11 +35,10 @@ py::list indices(const std::vector<std::uint32_t>& found) {
 }  // namespace
 
 void definePointGrid(py::module_& m) {
-    // A shape given to @g made in C++ (lpy/plantgl/meshes.cpp) as _sprout_triangles makes it:
-    // (points, triangles, segments), None where it makes None, False where it is left to it.
+    // A shape given to @g as lpy/plantgl/meshes.cpp makes it: (points, triangles, segments), None
+    // where nothing is drawn.
     m.def("_shape_mesh", [](py::handle shape) -> py::object {
         const ShapeMesh mesh = shapeMesh(shape.ptr());
-        if (mesh.kind == ShapeMesh::Unknown) return py::bool_(false);
         if (mesh.kind == ShapeMesh::Nothing) return py::none();
         py::list points, triangles, segments;
         for (const auto& p : mesh.points) points.append(py::make_tuple(p[0], p[1], p[2]));
@@ -48,23 +46,6 @@ void definePointGrid(py::module_& m) {
         for (const auto& e : mesh.segments) segments.append(py::make_tuple(e[0], e[1]));
         return py::make_tuple(points, triangles, segments);
     });
-    // (negX, posX, negY, posY radii), (the same heights), bottom, top, bottomShape, topShape,
-    // slices, stacks -> (points, triangles) as lists of tuples.
-    m.def("_hull_mesh", [](std::array<double, 4> r, std::array<double, 4> h, py::handle bottom, py::handle top, double sb, double st,
-                           int slices, int stacks) {
-        AsymmetricHull hull;
-        hull.negXRadius = r[0], hull.posXRadius = r[1], hull.negYRadius = r[2], hull.posYRadius = r[3];
-        hull.negXHeight = h[0], hull.posXHeight = h[1], hull.negYHeight = h[2], hull.posYHeight = h[3];
-        hull.bottom = vec3(bottom), hull.top = vec3(top);
-        hull.bottomShape = sb, hull.topShape = st, hull.slices = slices, hull.stacks = stacks;
-        const HullMesh mesh = meshOf(hull);
-        py::list points(mesh.points.size()), triangles(mesh.triangles.size());
-        for (size_t k = 0; k < mesh.points.size(); ++k) points[k] = py::make_tuple(mesh.points[k][0], mesh.points[k][1], mesh.points[k][2]);
-        for (size_t k = 0; k < mesh.triangles.size(); ++k)
-            triangles[k] = py::make_tuple(mesh.triangles[k][0], mesh.triangles[k][1], mesh.triangles[k][2]);
-        return py::make_tuple(points, triangles);
-    });
-
     py::class_<PointGrid>(m, "_PointGrid")
         .def(py::init([](py::iterable pts, py::handle size, py::handle lower, py::handle upper) {
                  return PointGrid(points(pts), vec3(size), vec3(lower), vec3(upper));

@@ -16,17 +16,24 @@ namespace sprout::lpy {
 // a subclass that replaces how it is evaluated). Holds the GIL; clears any Python error.
 std::shared_ptr<const curves::Nurbs> nativeNurbs(PyObject* curve, int& stride);
 
-// A PlantGL shape given to @g as plantgl_drawing.py's _sprout_triangles makes it, in C++
-// (lpy/plantgl/meshes.cpp): its points in the shape's frame, triangles and segments indexing
-// them. Nothing where the Python returns None (nothing drawable); Unknown where the Python
-// must make it (what the C++ does not know, or reads its own way). Holds the GIL.
+// A PlantGL shape given to @g made into its points in the shape's frame, and triangles and
+// segments indexing them (lpy/plantgl/meshes.cpp): Nothing where nothing is drawn (no shape,
+// text, a value the shape cannot be made of). Holds the GIL; clears any Python error.
 struct ShapeMesh {
-    enum Kind { Nothing, Mesh, Unknown } kind = Nothing;
+    enum Kind { Nothing, Mesh } kind = Nothing;
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<long, 3>> triangles;
     std::vector<std::array<long, 2>> segments;
 };
 ShapeMesh shapeMesh(PyObject* shape);
+// An AsymmetricHull given alone to @g, its fields read leniently (any value not a number: the
+// field's default), as the drawing has always read it (lpy/draw/shapes.cpp).
+ShapeMesh hullMesh(PyObject* hull);
+
+// The (n + 1)^2 points at (i / n, j / n), i outer, of a NurbsPatch of `rows` (control points,
+// read as plantgl_curves.py's NurbsPatch reads them), the uniform knots (bind_curves.cpp).
+// Throws where the Python patch would raise.
+std::vector<curves::Point> patchGrid(PyObject* rows, int udegree, int vdegree, int n);
 
 namespace py = pybind11;
 // Added to `_sprout_lpy` (lpy/api/types.cpp): PlantGL's curves in C++ (bind_curves.cpp:

@@ -1,4 +1,4 @@
-// PlantGL's curves as lpy/plantgl/plantgl_curves.py evaluates them (lpy/plantgl/curves.hpp).
+// PlantGL's curves as lpy/plantgl/plantgl_curves.py evaluated them in Python (lpy/plantgl/curves.hpp).
 // Each expression keeps the Python's order of operations and its comparisons (Python's
 // min(a, b) keeps a unless b < a; `x or 1.0` replaces only a zero), so that the results are
 // the same doubles. The file is compiled without contracting a * b + c into one rounding
@@ -25,7 +25,7 @@ double distance(const Point& a, const Point& b) {
     return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-// The Python's _de_boor: a point of the B-spline of homogeneous `points` (dim + 1 numbers
+// De Boor (the Python's _de_boor was): a point of the B-spline of homogeneous `points` (dim + 1 numbers
 // used) at t, t clamped to the knots' range.
 Homogeneous deBoor(const std::vector<Homogeneous>& points, int degree, const std::vector<double>& knots, double t, int dim) {
     const int n = int(points.size()) - 1;
@@ -62,10 +62,10 @@ Point cross(const Point& a, const Point& b) {
 }  // namespace
 
 std::vector<double> uniformClampedKnots(int n, int degree) {
-    const int inner = n - degree - 1;
-    std::vector<double> k(degree + 1, 0.0);
+    const int inner = n - degree - 1, ends = std::max(0, degree + 1);  // ([0.0] * (degree + 1): none below 0)
+    std::vector<double> k(size_t(ends), 0.0);
     for (int i = 0; i < inner; ++i) k.push_back(double(i + 1) / double(inner + 1));
-    k.insert(k.end(), degree + 1, 1.0);
+    k.insert(k.end(), size_t(ends), 1.0);
     return k;
 }
 
@@ -332,6 +332,23 @@ std::vector<Point> NurbsPatch::grid(int n) const {
         for (const Nurbs& cu : columns) out.push_back(cu.pointAt(cu.firstKnot() + (cu.lastKnot() - cu.firstKnot()) * u));
     }
     return out;
+}
+
+NurbsVolume::NurbsVolume(Grid ctrl, std::array<int, 3> degrees, std::array<std::vector<double>, 3> knots)
+    : m_ctrl(std::move(ctrl)), m_degrees(degrees), m_knots(std::move(knots)) {}
+
+Point NurbsVolume::pointAt(double u, double v, double w) const {
+    std::vector<Homogeneous> planes, row, line;
+    for (const auto& plane : m_ctrl) {
+        row.clear();
+        for (const auto& points : plane) {
+            line.clear();
+            for (const auto& p : points) line.push_back({p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]});
+            row.push_back(deBoor(line, m_degrees[2], m_knots[2], w, 3));
+        }
+        planes.push_back(deBoor(row, m_degrees[1], m_knots[1], v, 3));
+    }
+    return divided(deBoor(planes, m_degrees[0], m_knots[0], u, 3), 3);
 }
 
 }  // namespace sprout::curves

@@ -1,9 +1,10 @@
 #pragma once
 // PlantGL's curves and the functions made from them, evaluated as L-Py's PlantGL evaluates
-// them (lpy/plantgl/plantgl_curves.py is the same arithmetic in Python, checked against the
-// real PlantGL; lpy/plantgl/bind_curves.cpp lets those classes call this). Every operation is written
-// in the Python's order, so that the numbers are the same to the last bit: a model's drawing
-// must not change when its curves are evaluated here instead of in Python.
+// them: the only evaluation of Sprout's curves, patches and volumes (de Boor, knots, arc
+// length); lpy/plantgl/plantgl_curves.py's classes keep PlantGL's interface and call this
+// through lpy/plantgl/bind_curves.cpp. Every operation is written in the order of the Python
+// it replaced (checked against the real PlantGL), so that the numbers are the same to the last
+// bit.
 #include <array>
 #include <utility>
 #include <vector>
@@ -95,7 +96,24 @@ private:
     std::vector<double> m_uknots;
 };
 
-// The uniform clamped knots of `n` control points (the Python's _uniform_clamped_knots).
+// A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
+// grid [u][v][w]. A point: de Boor at w on the homogeneous points of each line, the results
+// of each plane at v, then the planes' at u (each parameter clamped to its knots).
+class NurbsVolume {
+public:
+    using Grid = std::vector<std::vector<std::vector<std::array<double, 4>>>>;
+    // Throws std::out_of_range where the knots or the degrees do not fit the points.
+    NurbsVolume(Grid ctrl, std::array<int, 3> degrees, std::array<std::vector<double>, 3> knots);
+    Point pointAt(double u, double v, double w) const;
+
+private:
+    Grid m_ctrl;
+    std::array<int, 3> m_degrees;
+    std::array<std::vector<double>, 3> m_knots;
+};
+
+// The uniform clamped knots of `n` control points: degree + 1 zeros, the inner knots evenly
+// spaced, degree + 1 ones (a curve's and a volume's default knots; plantgl_curves.py asks here).
 std::vector<double> uniformClampedKnots(int n, int degree);
 
 }  // namespace sprout::curves

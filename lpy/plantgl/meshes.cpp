@@ -1,26 +1,43 @@
-// The PlantGL shapes a model gives to @g (a Scene, Groups, Shapes, transformed Boxes, Spheres,
-// tubes, discs, meshes, point sets, polylines) made into points, triangles and segments in
-// C++, as lpy/plantgl/plantgl_drawing.py's _sprout_triangles makes them in Python: the same
-// numbers in the same order (its operations written out one by one), so that the drawing is
-// the same. What this does not know (a patch, a crown inside a group, a subclass, a value
-// Python would read its own way or err on) is left to the Python, whole: ShapeMesh::Unknown.
+// The PlantGL shapes a model gives to @g (a Scene, Groups, Shapes, transformed shapes, Boxes,
+// Spheres, tubes, discs, meshes, point sets, polylines, curves, patches, crowns) made into
+// points, triangles and segments: the only meshing of them, written from the Python meshing
+// Sprout had before (plantgl_drawing.py's _sprout_triangles) with the same numbers in the same
+// order (its operations written out one by one), so that the drawing is the same. Where the
+// Python raised, or gave what the drawing refused (a point of fewer than three numbers), the
+// shape is not drawn: Raises.
+//
+// Index of this file:
+//   [SECTION] Python's values, read as the Python meshing read them
+//   [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic)
+//   [SECTION] Meshes put together
+//   [SECTION] Groups and transformations
+//   [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc)
+//   [SECTION] Points, faces, curves and patches
+//   [SECTION] The crown (AsymmetricHull)
+//   [SECTION] The shape's kind, and shapeMesh
 #include <algorithm>
 #include <cmath>
 #include <string_view>
 
+#include "lpy/plantgl/asymmetric_hull.hpp"
 #include "lpy/plantgl/bindings.hpp"
+#include "lpy/plantgl/py_numbers.hpp"
 
 namespace sprout::lpy {
 namespace {
 
-struct Unknown {};  // thrown: the Python draws this object
+// [SECTION] Python's values, read as the Python meshing read them
 
-// A new reference, or Unknown (a Python error is cleared).
+struct Raises {};  // thrown: the shape is not drawn (any Python error is cleared)
+
+[[noreturn]] void raise() {
+    PyErr_Clear();
+    throw Raises{};
+}
+
+// A new reference, or Raises.
 PyObject* own(PyObject* o) {
-    if (!o) {
-        PyErr_Clear();
-        throw Unknown{};
-    }
+    if (!o) raise();
     return o;
 }
 
@@ -36,45 +53,35 @@ struct Ref {  // a new reference, released at the end of the scope
 PyObject* attribute(PyObject* obj, const char* field) {
     PyObject* v = PyObject_GetAttrString(obj, field);
     if (v) return v;
-    if (!PyErr_ExceptionMatches(PyExc_AttributeError)) {
-        PyErr_Clear();
-        throw Unknown{};
-    }
+    if (!PyErr_ExceptionMatches(PyExc_AttributeError)) raise();
     PyErr_Clear();
     return nullptr;
 }
 
-// float(v), or `fallback` where float() raises TypeError or ValueError (plantgl_drawing's num).
-double num(PyObject* v, double fallback) {
+// getattr(obj, field, fallback), `fallback` a new reference (released where not used).
+PyObject* attributeOr(PyObject* obj, const char* field, PyObject* fallback) {
+    PyObject* v = attribute(obj, field);
     if (!v) return fallback;
-    if (PyFloat_CheckExact(v)) return PyFloat_AS_DOUBLE(v);
-    PyObject* f = PyNumber_Float(v);
-    if (f) {
-        const double d = PyFloat_AS_DOUBLE(f);
-        Py_DECREF(f);
-        return d;
-    }
-    if (PyErr_ExceptionMatches(PyExc_TypeError) || PyErr_ExceptionMatches(PyExc_ValueError)) {
-        PyErr_Clear();
-        return fallback;
-    }
-    PyErr_Clear();
-    throw Unknown{};
+    Py_XDECREF(fallback);
+    return v;
 }
+PyObject* none() { return Py_NewRef(Py_None); }
 
-// float(v) (Vector3's constructor): raises where float() does.
-double exact(PyObject* v) {
-    PyObject* f = PyNumber_Float(v);
-    if (!f) {
-        PyErr_Clear();
-        throw Unknown{};
-    }
-    const double d = PyFloat_AS_DOUBLE(f);
-    Py_DECREF(f);
+// num(v, default): float(v), or the default where float() raises TypeError or ValueError.
+double num(PyObject* v, double fallback) {
+    double d;
+    if (!pynum::floatOr(v, fallback, d)) raise();
     return d;
 }
 
-// num(get(field, fallback), fallback)
+// float(v), raising where float() does.
+double exact(PyObject* v) {
+    double d;
+    if (!pynum::floatOf(v, d)) raise();
+    return d;
+}
+
+// num(get(name, fallback), fallback)
 double field(PyObject* obj, const char* name, double fallback) {
     PyObject* v = attribute(obj, name);
     const double d = num(v, fallback);
@@ -82,41 +89,56 @@ double field(PyObject* obj, const char* name, double fallback) {
     return d;
 }
 
-// tuple(v), its first `n` items (new references) in `out`; at least `n` or Unknown.
-std::vector<PyObject*> items(PyObject* v, size_t n) {
-    Ref t(PySequence_Tuple(v));
-    if (size_t(PyTuple_GET_SIZE(t.p)) < n) throw Unknown{};
-    std::vector<PyObject*> out;
-    for (size_t k = 0; k < n; ++k) out.push_back(PyTuple_GET_ITEM(t.p, k));  // borrowed: t lives on below
-    for (PyObject* o : out) Py_INCREF(o);
-    return out;
-}
-
-// A triple of `v` (a sequence of at least 3), each by `read`.
-template <class Read>
-std::array<double, 3> triple(PyObject* v, Read read) {
-    std::vector<PyObject*> xs = items(v, 3);
-    std::array<double, 3> out{};
-    try {
-        for (size_t k = 0; k < 3; ++k) out[k] = read(xs[k]);
-    } catch (...) {
-        for (PyObject* o : xs) Py_DECREF(o);
-        throw;
-    }
-    for (PyObject* o : xs) Py_DECREF(o);
-    return out;
-}
-
 using V3 = std::array<double, 3>;
 
-// A Box's size or a Scaled's scale: (num(v),) * 3 for a number, else num of its first three.
-V3 sizes(PyObject* v, double fallback) {
+// tuple(v)[:3], each item by `read`, zeros after; how many there were in `n`.
+template <class Read>
+V3 upToThree(PyObject* v, Read read, Py_ssize_t& n) {
+    const Ref t(PySequence_Tuple(v));
+    n = std::min<Py_ssize_t>(3, PyTuple_GET_SIZE(t.p));
+    V3 out{0.0, 0.0, 0.0};
+    for (Py_ssize_t k = 0; k < n; ++k) out[size_t(k)] = read(PyTuple_GET_ITEM(t.p, k));
+    return out;
+}
+double num0(PyObject* x) { return num(x, 0); }
+
+// A point as the Python read it, (tuple(q) + (0.0, 0.0))[:3] each by num(x, 0): false where q
+// is empty (the Python's point was two zeros, which the drawing refuses).
+bool point(PyObject* q, V3& p) {
+    Py_ssize_t n = 0;
+    p = upToThree(q, num0, n);
+    return n > 0;
+}
+
+// A Box's size or a Scaled's scale: (num(v),) * 3 for what has no length, else num of
+// tuple(v)[:3] (`n` of them).
+V3 sizes(PyObject* v, double fallback, Py_ssize_t& n) {
     if (!PyObject_HasAttrString(v, "__len__")) {
         const double k = num(v, fallback);
+        n = 3;
         return {k, k, k};
     }
-    return triple(v, [fallback](PyObject* x) { return num(x, fallback); });
+    return upToThree(v, [fallback](PyObject* x) { return num(x, fallback); }, n);
 }
+
+// Vector3(*tuple(v)[:3]) (plantgl_vectors.py): float() of each, zeros after; one item with a
+// length is the vector's numbers itself.
+V3 vector3(PyObject* v) {
+    const Ref t(PySequence_Tuple(v));
+    Py_ssize_t n = 0;
+    if (PyTuple_GET_SIZE(t.p) == 1 && PyObject_HasAttrString(PyTuple_GET_ITEM(t.p, 0), "__len__"))
+        return upToThree(PyTuple_GET_ITEM(t.p, 0), exact, n);
+    return upToThree(t.p, exact, n);
+}
+
+// int(num(get(name, fallback), fallback)) clamped to [low, high]; Raises where int() does.
+long count(PyObject* obj, const char* name, double fallback, long low, long high) {
+    const double v = field(obj, name, fallback);
+    if (!std::isfinite(v)) raise();
+    return long(std::max(double(low), std::min(double(high), std::trunc(v))));
+}
+
+// [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic)
 
 // Vector3(v).normed(): divided by its norm where that is above 0.
 V3 normed(V3 v) {
@@ -149,51 +171,17 @@ V3 times(const M3& m, const V3& p) {
     return out;
 }
 
-struct Mesher {
-    ShapeMesh of(PyObject* obj, int depth);
+// [SECTION] Meshes put together
 
-    // Points (r cos, r sin, z) around the z axis, n of them (plantgl_drawing's ring).
-    static void ring(ShapeMesh& m, double r, double z, long n) {
-        for (long i = 0; i < n; ++i) {
-            const double a = 2 * M_PI * double(i) / double(n);
-            m.points.push_back({r * std::cos(a), r * std::sin(a), z});
-        }
-    }
-    // Rings of (radius, z) swept about z, and caps at the profile's entries `caps` (-1: the last).
-    static ShapeMesh tube(const std::vector<std::array<double, 2>>& profile, long n, std::initializer_list<int> caps) {
-        ShapeMesh m;
-        m.kind = ShapeMesh::Mesh;
-        for (size_t j = 0; j < profile.size(); ++j) {
-            ring(m, profile[j][0], profile[j][1], n);
-            if (j) {
-                const long a = long(j - 1) * n, b = long(j) * n;
-                for (long i = 0; i < n; ++i) {
-                    m.triangles.push_back({a + i, a + (i + 1) % n, b + (i + 1) % n});
-                    m.triangles.push_back({a + i, b + (i + 1) % n, b + i});
-                }
-            }
-        }
-        for (int j : caps) {
-            const auto& [r, z] = profile[j >= 0 ? size_t(j) : profile.size() - 1];
-            if (r > 0) {
-                const long c = long(m.points.size());
-                m.points.push_back({0.0, 0.0, z});
-                const long first = j >= 0 ? j * n : long(profile.size() - 1) * n;
-                for (long i = 0; i < n; ++i) m.triangles.push_back({c, first + (i + 1) % n, first + i});
-            }
-        }
-        return m;
-    }
-    // int(num(get(name, fallback), fallback)) clamped to [low, high]; Unknown where int() raises.
-    static long count(PyObject* obj, const char* name, double fallback, long low, long high) {
-        const double v = field(obj, name, fallback);
-        if (!std::isfinite(v)) throw Unknown{};
-        return long(std::max(double(low), std::min(double(high), std::trunc(v))));
-    }
-};
+ShapeMesh mesh() { return ShapeMesh{ShapeMesh::Mesh, {}, {}, {}}; }
 
-// add(mesh, transform) of _sprout_triangles: its points (transformed), triangles and segments
-// after the points so far.
+// The mesh, or Nothing where it has neither triangles nor segments.
+ShapeMesh result(ShapeMesh m) {
+    m.kind = m.triangles.empty() && m.segments.empty() ? ShapeMesh::Nothing : ShapeMesh::Mesh;
+    return m;
+}
+
+// `mesh`'s points (transformed), triangles and segments after the points so far.
 template <class Transform>
 void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     if (mesh.kind != ShapeMesh::Mesh) return;
@@ -206,143 +194,149 @@ void add(ShapeMesh& to, const ShapeMesh& mesh) {
     add(to, mesh, [](const V3& p) { return p; });
 }
 
-// result(): the mesh, or None where it has neither triangles nor segments.
-ShapeMesh result(ShapeMesh m) {
-    m.kind = m.triangles.empty() && m.segments.empty() ? ShapeMesh::Nothing : ShapeMesh::Mesh;
+// Points (r cos, r sin, z) around the z axis, n of them.
+void ring(ShapeMesh& m, double r, double z, long n) {
+    for (long i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * double(i) / double(n);
+        m.points.push_back({r * std::cos(a), r * std::sin(a), z});
+    }
+}
+
+// Rings of (radius, z) swept about z, and caps at the profile's entries `caps` (-1: the last).
+ShapeMesh tube(const std::vector<std::array<double, 2>>& profile, long n, std::initializer_list<int> caps) {
+    ShapeMesh m = mesh();
+    for (size_t j = 0; j < profile.size(); ++j) {
+        ring(m, profile[j][0], profile[j][1], n);
+        if (j) {
+            const long a = long(j - 1) * n, b = long(j) * n;
+            for (long i = 0; i < n; ++i) {
+                m.triangles.push_back({a + i, a + (i + 1) % n, b + (i + 1) % n});
+                m.triangles.push_back({a + i, b + (i + 1) % n, b + i});
+            }
+        }
+    }
+    for (int j : caps) {
+        const auto& [r, z] = profile[j >= 0 ? size_t(j) : profile.size() - 1];
+        if (r > 0) {
+            const long c = long(m.points.size());
+            m.points.push_back({0.0, 0.0, z});
+            const long first = j >= 0 ? j * n : long(profile.size() - 1) * n;
+            for (long i = 0; i < n; ++i) m.triangles.push_back({c, first + (i + 1) % n, first + i});
+        }
+    }
     return m;
 }
 
-ShapeMesh Mesher::of(PyObject* obj, int depth) {
+// The (n + 1)^2 points of a grid, i outer, as two triangles a cell.
+ShapeMesh gridMesh(std::vector<V3> points, long n) {
+    ShapeMesh m = mesh();
+    m.points = std::move(points);
+    for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j) {
+            m.triangles.push_back({i * (n + 1) + j, (i + 1) * (n + 1) + j, (i + 1) * (n + 1) + j + 1});
+            m.triangles.push_back({i * (n + 1) + j, (i + 1) * (n + 1) + j + 1, i * (n + 1) + j + 1});
+        }
+    return m;
+}
+
+ShapeMesh of(PyObject* obj, int depth);
+
+// [SECTION] Groups and transformations
+
+// A list, a tuple, a Scene or a Group (its geometryList): its shapes' meshes one after the
+// other; an empty group is a shape with nothing to draw.
+ShapeMesh group(PyObject* obj, bool isGroup, int depth) {
+    PyObject* list = isGroup ? attribute(obj, "geometryList") : nullptr;
+    const Ref source(list ? list : Py_NewRef(obj));
+    const Ref seq(PySequence_Fast(source.p, "shapes"));
     ShapeMesh m;
-    if (depth > 32) return m;  // None
-    const std::string_view name(Py_TYPE(obj)->tp_name);
-    if (PyList_Check(obj) || PyTuple_Check(obj) || name == "Scene" || name == "Group") {
-        PyObject* list = name == "Group" ? attribute(obj, "geometryList") : nullptr;
-        const Ref source(list ? list : (Py_INCREF(obj), obj));
-        Ref seq(PySequence_Fast(source.p, "shapes"));
-        for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) add(m, of(PySequence_Fast_GET_ITEM(seq.p, k), depth + 1));
-        m = result(std::move(m));
-        if (m.kind == ShapeMesh::Nothing) m = ShapeMesh{ShapeMesh::Mesh, {}, {}, {}};  // an empty group: a shape with nothing to draw
-        return m;
+    for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) add(m, of(PySequence_Fast_GET_ITEM(seq.p, k), depth + 1));
+    m = result(std::move(m));
+    return m.kind == ShapeMesh::Nothing ? mesh() : m;
+}
+
+ShapeMesh geometryOf(PyObject* obj, int depth) {
+    const Ref g(attributeOr(obj, "geometry", none()));
+    return of(g.p, depth + 1);
+}
+
+// x * p[0] + y * p[1] + z * p[2] of PlantGL's vectors, vector by vector.
+V3 combined(const V3& x, const V3& y, const V3& z, const V3& p) {
+    const V3 a{x[0] * p[0], x[1] * p[0], x[2] * p[0]}, b{y[0] * p[1], y[1] * p[1], y[2] * p[1]};
+    const V3 ab{a[0] + b[0], a[1] + b[1], a[2] + b[2]}, c{z[0] * p[2], z[1] * p[2], z[2] * p[2]};
+    return V3{ab[0] + c[0], ab[1] + c[1], ab[2] + c[2]};
+}
+
+// Scaled, Translated, AxisRotated, EulerRotated, Oriented: the inner shape's mesh, moved.
+ShapeMesh transformed(PyObject* obj, std::string_view name, int depth) {
+    const ShapeMesh inner = geometryOf(obj, depth);
+    if (inner.kind == ShapeMesh::Nothing) return {};
+    // A scale or translation of fewer than three numbers raised at the first point moved.
+    auto check = [&](Py_ssize_t n) {
+        if (n < 3 && !inner.points.empty()) raise();
+    };
+    ShapeMesh m;
+    if (name == "Scaled") {
+        const Ref sv(attributeOr(obj, "scale", PyLong_FromLong(1)));
+        Py_ssize_t n = 0;
+        const V3 s = sizes(sv.p, 1, n);
+        check(n);
+        add(m, inner, [&](const V3& p) { return V3{p[0] * s[0], p[1] * s[1], p[2] * s[2]}; });
+    } else if (name == "Translated") {
+        const Ref tv(attributeOr(obj, "translation", Py_BuildValue("(iii)", 0, 0, 0)));
+        Py_ssize_t n = 0;
+        const V3 t = upToThree(tv.p, num0, n);
+        check(n);
+        add(m, inner, [&](const V3& p) { return V3{p[0] + t[0], p[1] + t[1], p[2] + t[2]}; });
+    } else if (name == "AxisRotated") {
+        const Ref av(attributeOr(obj, "axis", Py_BuildValue("(iii)", 0, 0, 1)));
+        const M3 r = axisRotation(normed(vector3(av.p)), field(obj, "angle", 0));
+        add(m, inner, [&](const V3& p) { return times(r, p); });
+    } else if (name == "EulerRotated") {  // z (azimuth), then y (elevation), then x (roll)
+        const double a = field(obj, "azimuth", 0), e = field(obj, "elevation", 0), ro = field(obj, "roll", 0);
+        const M3 r = times(times(axisRotation({0, 0, 1}, a), axisRotation({0, 1, 0}, e)), axisRotation({1, 0, 0}, ro));
+        add(m, inner, [&](const V3& p) { return times(r, p); });
+    } else {  // Oriented
+        const Ref pv(attributeOr(obj, "primary", Py_BuildValue("(iii)", 1, 0, 0)));
+        const V3 x = normed(vector3(pv.p));
+        const Ref sv(attributeOr(obj, "secondary", Py_BuildValue("(iii)", 0, 1, 0)));
+        const V3 y = normed(vector3(sv.p));
+        const V3 z = normed({x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]});
+        add(m, inner, [&](const V3& p) { return combined(x, y, z, p); });
     }
-    if (name == "Shape") {
-        PyObject* g = attribute(obj, "geometry");
-        const Ref keep(g ? g : (Py_INCREF(Py_None), Py_None));
-        return of(keep.p, depth + 1);
-    }
-    if (name == "Polyline") {
-        PyObject* list = attribute(obj, "pointList");
-        const Ref keep(list ? list : (Py_INCREF(Py_None), Py_None));
-        Ref seq(PySequence_Fast(keep.p, "points"));
-        for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
-            Ref q(PySequence_Tuple(PySequence_Fast_GET_ITEM(seq.p, k)));  // (tuple(q) + (0.0, 0.0))[:3]
-            V3 p{0.0, 0.0, 0.0};
-            for (Py_ssize_t c = 0; c < 3 && c < PyTuple_GET_SIZE(q.p); ++c) p[size_t(c)] = num(PyTuple_GET_ITEM(q.p, c), 0);
-            if (PyTuple_GET_SIZE(q.p) == 0) throw Unknown{};  // (0.0, 0.0)[:3]: two numbers, as Python has it
-            m.points.push_back(p);
-        }
-        for (long k = 0; k + 1 < long(m.points.size()); ++k) m.segments.push_back({k, k + 1});
-        return result(std::move(m));
-    }
-    if (name == "Scaled" || name == "Translated" || name == "AxisRotated" || name == "EulerRotated" || name == "Oriented") {
-        PyObject* g = attribute(obj, "geometry");
-        const Ref keep(g ? g : (Py_INCREF(Py_None), Py_None));
-        const ShapeMesh inner = of(keep.p, depth + 1);
-        if (inner.kind == ShapeMesh::Nothing) return m;
-        if (name == "Scaled") {
-            PyObject* sv = attribute(obj, "scale");
-            const Ref ks(sv ? sv : PyLong_FromLong(1));
-            const V3 s = sizes(ks.p, 1);
-            add(m, inner, [&](const V3& p) { return V3{p[0] * s[0], p[1] * s[1], p[2] * s[2]}; });
-        } else if (name == "Translated") {
-            PyObject* tv = attribute(obj, "translation");
-            if (!tv) throw Unknown{};  // the default (0, 0, 0): rare; the Python
-            const Ref kt(tv);
-            const V3 t = triple(kt.p, [](PyObject* x) { return num(x, 0); });
-            add(m, inner, [&](const V3& p) { return V3{p[0] + t[0], p[1] + t[1], p[2] + t[2]}; });
-        } else if (name == "AxisRotated") {
-            PyObject* av = attribute(obj, "axis");
-            if (!av) throw Unknown{};
-            const Ref ka(av);
-            const M3 r = axisRotation(normed(triple(ka.p, exact)), field(obj, "angle", 0));
-            add(m, inner, [&](const V3& p) { return times(r, p); });
-        } else if (name == "EulerRotated") {
-            const double a = field(obj, "azimuth", 0), e = field(obj, "elevation", 0), ro = field(obj, "roll", 0);
-            const M3 r = times(times(axisRotation({0, 0, 1}, a), axisRotation({0, 1, 0}, e)), axisRotation({1, 0, 0}, ro));
-            add(m, inner, [&](const V3& p) { return times(r, p); });
-        } else {  // Oriented
-            PyObject* pv = attribute(obj, "primary");
-            PyObject* sv = attribute(obj, "secondary");
-            const Ref kp(pv ? pv : Py_BuildValue("(iii)", 1, 0, 0)), ks(sv ? sv : Py_BuildValue("(iii)", 0, 1, 0));
-            const V3 x = normed(triple(kp.p, exact)), y = normed(triple(ks.p, exact));
-            const V3 z = normed({x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]});
-            add(m, inner, [&](const V3& p) {  // x * p[0] + y * p[1] + z * p[2], vector by vector
-                const V3 a{x[0] * p[0], x[1] * p[0], x[2] * p[0]}, b{y[0] * p[1], y[1] * p[1], y[2] * p[1]};
-                const V3 ab{a[0] + b[0], a[1] + b[1], a[2] + b[2]}, c{z[0] * p[2], z[1] * p[2], z[2] * p[2]};
-                return V3{ab[0] + c[0], ab[1] + c[1], ab[2] + c[2]};
-            });
-        }
-        return result(std::move(m));
-    }
-    if (name == "Box") {
-        PyObject* sv = attribute(obj, "size");
-        const Ref args(own(PyObject_GetAttrString(obj, "args")));
-        const Py_ssize_t nargs = PyObject_Length(args.p);
-        if (nargs < 0) throw Unknown{};
-        PyObject* chosen = nargs >= 3 ? PySequence_GetSlice(args.p, 0, 3) : sv ? (Py_INCREF(sv), sv) : Py_BuildValue("(ddd)", 0.5, 0.5, 0.5);
-        Py_XDECREF(sv);
-        const Ref ks(chosen);
-        const V3 s = sizes(ks.p, 0.5);
-        m.kind = ShapeMesh::Mesh;
-        for (int axis = 0; axis < 3; ++axis)
-            for (int sign : {-1, 1}) {
-                const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
-                const long base = long(m.points.size());
-                for (const auto& [du, dv] : {std::array<int, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-                    V3 p{0.0, 0.0, 0.0};
-                    p[size_t(axis)] = sign * s[size_t(axis)], p[size_t(u)] = du * s[size_t(u)], p[size_t(v)] = dv * s[size_t(v)];
-                    m.points.push_back(p);
-                }
-                m.triangles.push_back({base, base + 1, base + 2});
-                m.triangles.push_back({base, base + 2, base + 3});
-            }
-        return m;
-    }
-    if (name != "Sphere" && name != "Cylinder" && name != "Cone" && name != "Frustum" && name != "Paraboloid" && name != "Disc" &&
-        name != "TriangleSet" && name != "QuadSet" && name != "FaceSet" && name != "PointSet")
-        throw Unknown{};  // a curve, a patch, a crown, None, ...: the Python says
-    if (name == "PointSet") {  // (before `slices` in the Python: it never reads it)
-        PyObject* list = attribute(obj, "pointList");
-        const Ref keep(list ? list : PyTuple_New(0));
-        Ref seq(PySequence_Fast(keep.p, "points"));
-        std::vector<V3> points;
-        for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
-            Ref q(PySequence_Tuple(PySequence_Fast_GET_ITEM(seq.p, k)));
-            if (PyTuple_GET_SIZE(q.p) == 0) throw Unknown{};
-            V3 p{0.0, 0.0, 0.0};
-            for (Py_ssize_t c = 0; c < 3 && c < PyTuple_GET_SIZE(q.p); ++c) p[size_t(c)] = num(PyTuple_GET_ITEM(q.p, c), 0);
-            points.push_back(p);
-        }
-        if (points.empty()) return ShapeMesh{ShapeMesh::Mesh, {}, {}, {}};
-        double extent = 0;
-        for (int k = 0; k < 3; ++k) {
-            double lo = points[0][size_t(k)], hi = points[0][size_t(k)];
-            for (const V3& q : points) lo = q[size_t(k)] < lo ? q[size_t(k)] : lo, hi = q[size_t(k)] > hi ? q[size_t(k)] : hi;
-            const double e = hi - lo;
-            if (k == 0 || e > extent) extent = e;
-            if (std::isnan(lo) || std::isnan(hi)) throw Unknown{};  // Python's min and max take NaN their own way
-        }
-        const double r = extent > 0 ? 0.005 * extent : 0.01;
-        static const int dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-        static const int faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-        for (const V3& q : points) {
+    return result(std::move(m));
+}
+
+// [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc)
+
+// Six faces of two triangles, half sizes its size (or its first three arguments).
+ShapeMesh box(PyObject* obj) {
+    const Ref sv(attributeOr(obj, "size", Py_BuildValue("(ddd)", 0.5, 0.5, 0.5)));
+    const Ref args(own(PyObject_GetAttrString(obj, "args")));
+    const Py_ssize_t nargs = PyObject_Length(args.p);
+    if (nargs < 0) raise();
+    const Ref chosen(nargs >= 3 ? PySequence_GetSlice(args.p, 0, 3) : Py_NewRef(sv.p));
+    Py_ssize_t n = 0;
+    const V3 s = sizes(chosen.p, 0.5, n);
+    if (n < 3) raise();  // s[2]
+    ShapeMesh m = mesh();
+    for (int axis = 0; axis < 3; ++axis)
+        for (int sign : {-1, 1}) {
+            const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
             const long base = long(m.points.size());
-            for (const auto& d : dirs) m.points.push_back({q[0] + d[0] * r, q[1] + d[1] * r, q[2] + d[2] * r});
-            for (const auto& f : faces) m.triangles.push_back({base + f[0], base + f[1], base + f[2]});
+            for (const auto& [du, dv] : {std::array<int, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+                V3 p{0.0, 0.0, 0.0};
+                p[size_t(axis)] = sign * s[size_t(axis)], p[size_t(u)] = du * s[size_t(u)], p[size_t(v)] = dv * s[size_t(v)];
+                m.points.push_back(p);
+            }
+            m.triangles.push_back({base, base + 1, base + 2});
+            m.triangles.push_back({base, base + 2, base + 3});
         }
-        return result(std::move(m));
-    }
-    const long slices = count(obj, "slices", 8, 3, 64);
+    return m;
+}
+
+// The shapes of revolution about z, `slices` points a ring; empty (Nothing) for another name.
+ShapeMesh solid(PyObject* obj, std::string_view name, long slices) {
     if (name == "Sphere") {
         const double r = field(obj, "radius", 0.5);
         const long stacks = count(obj, "stacks", 8, 2, 64);
@@ -371,48 +365,231 @@ ShapeMesh Mesher::of(PyObject* obj, int depth) {
     }
     if (name == "Disc") {
         const double r = field(obj, "radius", 0.5);
-        m.kind = ShapeMesh::Mesh;
+        ShapeMesh m = mesh();
         m.points.push_back({0.0, 0.0, 0.0});
         ring(m, r, 0.0, slices);
         for (long i = 0; i < slices; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % slices});
         return m;
     }
-    // TriangleSet, QuadSet, FaceSet
-    PyObject* list = attribute(obj, "pointList");
-    const Ref keepPoints(list ? list : PyTuple_New(0));
-    Ref seq(PySequence_Fast(keepPoints.p, "points"));
-    for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k)
-        m.points.push_back(triple(PySequence_Fast_GET_ITEM(seq.p, k), [](PyObject* x) { return num(x, 0); }));
-    PyObject* faces = attribute(obj, "indexList");
-    const Ref keepFaces(faces ? faces : PyTuple_New(0));
-    Ref fseq(PySequence_Fast(keepFaces.p, "faces"));
+    return {};
+}
+
+// [SECTION] Points, faces, curves and patches
+
+// A polyline's points (a Polyline's pointList, a curve's points()) and the segments between.
+ShapeMesh polyline(PyObject* points) {
+    const Ref seq(PySequence_Fast(points, "points"));
+    ShapeMesh m;
+    bool whole = true;
+    for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
+        V3 p;
+        whole = point(PySequence_Fast_GET_ITEM(seq.p, k), p) && whole;
+        m.points.push_back(p);
+    }
+    for (long k = 0; k + 1 < long(m.points.size()); ++k) m.segments.push_back({k, k + 1});
+    if (!whole && !m.segments.empty()) raise();
+    return result(std::move(m));
+}
+
+// Each point a small octahedron, its size from the set's extent.
+ShapeMesh pointSet(PyObject* obj) {
+    const Ref list(attributeOr(obj, "pointList", PyTuple_New(0)));
+    const Ref seq(PySequence_Fast(list.p, "points"));
+    std::vector<V3> points;
+    for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
+        V3 p;
+        if (!point(PySequence_Fast_GET_ITEM(seq.p, k), p)) raise();  // q[2] of the Python's two zeros
+        points.push_back(p);
+    }
+    if (points.empty()) return mesh();
+    // max(max(q[k]) - min(q[k]) for k in range(3)): Python's min and max keep the first unless
+    // another is smaller (larger), as these comparisons do, NaN included.
+    double extent = 0;
+    for (int k = 0; k < 3; ++k) {
+        double lo = points[0][size_t(k)], hi = points[0][size_t(k)];
+        for (const V3& q : points) lo = q[size_t(k)] < lo ? q[size_t(k)] : lo, hi = q[size_t(k)] > hi ? q[size_t(k)] : hi;
+        const double e = hi - lo;
+        if (k == 0 || e > extent) extent = e;
+    }
+    const double r = extent > 0 ? 0.005 * extent : 0.01;
+    static const int dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const int faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    ShapeMesh m;
+    for (const V3& q : points) {
+        const long base = long(m.points.size());
+        for (const auto& d : dirs) m.points.push_back({q[0] + d[0] * r, q[1] + d[1] * r, q[2] + d[2] * r});
+        for (const auto& f : faces) m.triangles.push_back({base + f[0], base + f[1], base + f[2]});
+    }
+    return result(std::move(m));
+}
+
+// TriangleSet, QuadSet, FaceSet: each face a fan from its first point, the triangles whose
+// points are there (an index below 0 is kept: the drawing refuses it, as it did).
+ShapeMesh faceSet(PyObject* obj) {
+    ShapeMesh m;
+    bool whole = true;
+    const Ref list(attributeOr(obj, "pointList", PyTuple_New(0)));
+    const Ref seq(PySequence_Fast(list.p, "points"));
+    for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
+        Py_ssize_t n = 0;
+        m.points.push_back(upToThree(PySequence_Fast_GET_ITEM(seq.p, k), num0, n));
+        whole = whole && n == 3;
+    }
+    const Ref faces(attributeOr(obj, "indexList", PyTuple_New(0)));
+    const Ref fseq(PySequence_Fast(faces.p, "faces"));
     for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(fseq.p); ++k) {
-        Ref face(PySequence_Fast(PySequence_Fast_GET_ITEM(fseq.p, k), "face"));
+        const Ref face(PySequence_Fast(PySequence_Fast_GET_ITEM(fseq.p, k), "face"));
         std::vector<long> f;
         for (Py_ssize_t j = 0; j < PySequence_Fast_GET_SIZE(face.p); ++j) {
-            PyObject* i = PySequence_Fast_GET_ITEM(face.p, j);
-            if (!PyLong_CheckExact(i)) throw Unknown{};  // int(i) of anything else: the Python
-            const long v = PyLong_AsLong(i);
-            if (v < 0 || (v == -1 && PyErr_Occurred())) throw Unknown{};
+            long v = 0;
+            if (!pynum::intOf(PySequence_Fast_GET_ITEM(face.p, j), v)) raise();
             f.push_back(v);
         }
-        if (f.empty()) throw Unknown{};  // f[0] of an empty face raises in the Python
         for (size_t j = 1; j + 1 < f.size(); ++j)
             if (std::max({f[0], f[j], f[j + 1]}) < long(m.points.size())) m.triangles.push_back({f[0], f[j], f[j + 1]});
     }
-    m.kind = m.triangles.empty() ? ShapeMesh::Nothing : ShapeMesh::Mesh;
+    if (m.triangles.empty()) return {};
+    if (!whole) raise();  // a point of fewer than three numbers, refused by the drawing
+    return result(std::move(m));
+}
+
+// A NurbsPatch (its points at (i / 10, j / 10), from its _grid) or a BezierPatch (a
+// NurbsPatch of its control points, the degrees their counts - 1), two triangles a cell.
+ShapeMesh patch(PyObject* obj, bool bezier) {
+    const long n = 10;
+    std::vector<V3> points;
+    if (!bezier) {
+        const Ref grid(PyObject_CallMethod(obj, "_grid", "l", n));
+        const Ref seq(PySequence_Fast(grid.p, "points"));
+        for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(seq.p); ++k) {
+            std::vector<double> q;  // what the drawing took: three numbers
+            if (!pynum::numbers(PySequence_Fast_GET_ITEM(seq.p, k), q) || q.size() != 3) raise();
+            points.push_back({q[0], q[1], q[2]});
+        }
+    } else {
+        const Ref rows(attributeOr(obj, "ctrlPointMatrix", none()));
+        const Py_ssize_t nu = PyObject_Length(rows.p);
+        if (nu < 0) raise();
+        const Ref first(PySequence_GetItem(rows.p, 0));
+        const Py_ssize_t nv = PyObject_Length(first.p);
+        if (nv < 0) raise();
+        for (const curves::Point& q : patchGrid(rows.p, int(nu - 1), int(nv - 1), int(n))) points.push_back(q);
+    }
+    return gridMesh(std::move(points), n);
+}
+
+// [SECTION] The crown (AsymmetricHull)
+
+// The hull's fields: as the Python meshing read them (num(getattr(obj, f, d), d), the points
+// tuple(v) padded with zeros, num(x, 0) each), or, `lenient`, as the drawing's own reading of a
+// hull given alone read them (any error: the default; a point not all numbers: zeros).
+struct HullReader {
+    PyObject* obj;
+    bool lenient;
+
+    double number(const char* name, double fallback) const {
+        if (!lenient) return field(obj, name, fallback);
+        PyObject* v = PyObject_GetAttrString(obj, name);
+        double x = fallback;
+        if (!v || !pynum::floatOf(v, x)) x = fallback;
+        Py_XDECREF(v);
+        PyErr_Clear();
+        return x;
+    }
+    V3 at(const char* name, V3 fallback) const {
+        if (!lenient) {
+            const Ref v(attributeOr(obj, name, none()));
+            if (v.p == Py_None) return fallback;
+            Py_ssize_t n = 0;
+            return upToThree(v.p, num0, n);
+        }
+        PyObject* v = PyObject_GetAttrString(obj, name);
+        V3 out = fallback;
+        if (v && v != Py_None) {
+            std::vector<double> xyz;
+            if (!pynum::numbers(v, xyz)) xyz.clear();
+            out = {0, 0, 0};
+            for (size_t k = 0; k < 3 && k < xyz.size(); ++k) out[k] = xyz[k];
+        }
+        Py_XDECREF(v);
+        PyErr_Clear();
+        return out;
+    }
+    int count(const char* name, double fallback) const {  // int(max(-1e9, min(1e9, v))), NaN as Python's min takes it
+        const double v = number(name, fallback);
+        return int(std::isnan(v) ? 1e9 : std::clamp(v, -1e9, 1e9));
+    }
+};
+
+ShapeMesh hull(PyObject* obj, bool lenient) {
+    const HullReader r{obj, lenient};
+    AsymmetricHull h;
+    h.negXRadius = r.number("negXRadius", 0.5), h.posXRadius = r.number("posXRadius", 0.5);
+    h.negYRadius = r.number("negYRadius", 0.5), h.posYRadius = r.number("posYRadius", 0.5);
+    h.negXHeight = r.number("negXHeight", 0), h.posXHeight = r.number("posXHeight", 0);
+    h.negYHeight = r.number("negYHeight", 0), h.posYHeight = r.number("posYHeight", 0);
+    h.bottom = r.at("bottom", {0, 0, -0.5}), h.top = r.at("top", {0, 0, 0.5});
+    h.bottomShape = r.number("bottomShape", 2), h.topShape = r.number("topShape", 2);
+    h.slices = r.count("slices", 4), h.stacks = r.count("stacks", 4);
+    const HullMesh hm = meshOf(h);
+    ShapeMesh m = mesh();
+    m.points = hm.points;
+    for (const auto& t : hm.triangles) m.triangles.push_back({long(t[0]), long(t[1]), long(t[2])});
     return m;
+}
+
+// [SECTION] The shape's kind, and shapeMesh
+
+bool oneOf(std::string_view name, std::initializer_list<std::string_view> names) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// The shape's mesh by its class's name, in the order the Python meshing asked.
+ShapeMesh of(PyObject* obj, int depth) {
+    if (depth > 32) return {};
+    const std::string_view name(Py_TYPE(obj)->tp_name);
+    if (PyList_Check(obj) || PyTuple_Check(obj) || name == "Scene" || name == "Group") return group(obj, name == "Group", depth);
+    if (name == "Shape") return geometryOf(obj, depth);
+    if (name == "Polyline") {
+        const Ref list(attributeOr(obj, "pointList", none()));
+        return polyline(list.p);
+    }
+    if (oneOf(name, {"Polyline2D", "NurbsCurve", "NurbsCurve2D", "BezierCurve2D", "BezierCurve"})) {
+        const Ref points(PyObject_CallMethod(obj, "points", nullptr));
+        return polyline(points.p);
+    }
+    if (name == "PointSet") return pointSet(obj);
+    if (oneOf(name, {"Scaled", "Translated", "AxisRotated", "EulerRotated", "Oriented"})) return transformed(obj, name, depth);
+    if (name == "Box") return box(obj);
+    const long slices = count(obj, "slices", 8, 3, 64);  // read of every other shape first
+    if (oneOf(name, {"Sphere", "Cylinder", "Cone", "Frustum", "Paraboloid", "Disc"})) return solid(obj, name, slices);
+    if (name == "AsymmetricHull") return hull(obj, false);
+    if (oneOf(name, {"TriangleSet", "QuadSet", "FaceSet"})) return faceSet(obj);
+    if (name == "NurbsPatch" || name == "BezierPatch") return patch(obj, name == "BezierPatch");
+    return {};  // text, None, what PlantGL draws and Sprout does not
 }
 
 }  // namespace
 
 ShapeMesh shapeMesh(PyObject* obj) {
     try {
-        return Mesher().of(obj, 0);
-    } catch (Unknown&) {
-        if (PyErr_Occurred()) PyErr_Clear();
-        return ShapeMesh{ShapeMesh::Unknown, {}, {}, {}};
+        return of(obj, 0);
+    } catch (Raises&) {
+    } catch (py::error_already_set&) {
+    } catch (std::exception&) {  // a patch's C++ refusing what the Python refused too
     }
+    if (PyErr_Occurred()) PyErr_Clear();
+    return {};
+}
+
+ShapeMesh hullMesh(PyObject* shape) {
+    try {
+        return hull(shape, true);
+    } catch (Raises&) {
+    } catch (std::exception&) {
+    }
+    if (PyErr_Occurred()) PyErr_Clear();
+    return {};
 }
 
 }  // namespace sprout::lpy

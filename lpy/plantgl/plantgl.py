@@ -8,19 +8,17 @@
 #   _curves    point arrays, NURBS / Bezier curves, polylines,    plantgl_curves.py
 #              QuantisedFunction, Discretizer, NurbsPatch
 #   _grids     Grid3Indexing, Point3Grid (space colonisation)     plantgl_grids.py
-#   _drawing   Sprout's drawing of @g's shapes                     plantgl_drawing.py
-#              (lpy/draw/draw.cpp calls _sprout_triangles)
 #
+# (@g's shapes are meshed in C++: lpy/plantgl/meshes.cpp.)
 # The aliases openalea.plantgl.math, .scenegraph, .light are this module (lpy/interpreter/interpreter.cpp).
 from openalea.plantgl._vectors import *
 from openalea.plantgl._vectors import _Vec, _math
 from openalea.plantgl._scene import *
 from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
 from openalea.plantgl._curves import *
-from openalea.plantgl._curves import _Points, _uniform_clamped_knots
+from openalea.plantgl._curves import _Points
+from openalea.plantgl._curves import _pgl_uniform_knots as _uniform_clamped_knots
 from openalea.plantgl._grids import *
-from openalea.plantgl._drawing import *
-from openalea.plantgl._drawing import _asymmetric_hull, _sprout_triangles
 
 
 # What the parts define belongs to this module, as when it was one file: a model printing

@@ -1,10 +1,19 @@
 # openalea.plantgl._curves, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
-# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines) evaluated
-# as PlantGL evaluates them, the functions made from them (QuantisedFunction, the arc-length
-# mappings), the Discretizer, and NURBS patches. Its own file: the curve arithmetic.
+# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines), the
+# functions made from them (QuantisedFunction, the arc-length mappings), the Discretizer, NURBS
+# patches and volumes: PlantGL's interface, evaluated in C++ (lpy/plantgl/curves.cpp, through
+# bind_curves.cpp: de Boor, the knots, arc lengths are there alone). Its own file: the curves.
+#
+# Index of this file:
+#   [SECTION] Point arrays and their text
+#   [SECTION] NURBS and Bezier curves
+#   [SECTION] Polylines and the Discretizer
+#   [SECTION] QuantisedFunction
+#   [SECTION] Patches and volumes
 import math as _math
 
-from _sprout_lpy import _PglNurbs, _PglPatch, _pgl_quantised_polyline, _QuantisedBase
+from _sprout_lpy import (_PglNurbs, _PglPatch, _pgl_quantised_polyline, _pgl_uniform_knots, _pgl_volume_point,
+                         _QuantisedBase)
 from openalea.plantgl import _vectors
 from openalea.plantgl._scene import Polyline
 from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
@@ -12,6 +21,7 @@ from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
 _of2, _of3 = Vector2._of, Vector3._of
 
 
+# [SECTION] Point arrays and their text
 def _point_text(p, n):
     """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
     return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
@@ -86,12 +96,7 @@ def _default_knots(knots, n, degree):
     return all(abs(knots[k] - knots[-1]) < 1e-10 for k in range(size - degree - 1, size))
 
 
-def _uniform_clamped_knots(n, degree):
-    # n control points: degree+1 zeros, the inner knots evenly spaced, degree+1 ones.
-    inner = n - degree - 1
-    return [0.0] * (degree + 1) + [(i + 1) / (inner + 1) for i in range(inner)] + [1.0] * (degree + 1)
-
-
+# [SECTION] NURBS and Bezier curves
 class NurbsCurve2D:
     """A 2D NURBS curve; control points are (x, y, weight)."""
     _dim = 2
@@ -103,7 +108,7 @@ class NurbsCurve2D:
         d = self._dim
         self.ctrlPointList = [[Vector3, Vector4][d - 2](*(tuple(p[:d]) + ((p[d] if len(p) > d else 1.0),))) for p in pts]
         self.degree = max(1, min(int(degree), len(pts) - 1))
-        self.knotList = list(knotList) if knotList else _uniform_clamped_knots(len(pts), self.degree)
+        self.knotList = list(knotList) if knotList else _pgl_uniform_knots(len(pts), self.degree)
         self.stride = int(kwargs.get('stride', stride))
         self.width = width
         self.name = ''
@@ -227,6 +232,7 @@ class BezierCurve2D(NurbsCurve2D):
     __str__ = __repr__
 
 
+# [SECTION] Polylines and the Discretizer
 class Polyline2D:
     def __init__(self, pointList, width=1, **kwargs):
         self.pointList = [Vector2(p[0], p[1]) for p in pointList]
@@ -288,6 +294,7 @@ class Discretizer:
         self.result = None
 
 
+# [SECTION] QuantisedFunction
 class QuantisedFunction(_QuantisedBase):
     """y = f(x) from a 2D curve, as PlantGL's QuantisedFunction makes it: `sampling` values at
     evenly spaced x over the curve's x range, each the y of the curve's point found by bisecting
@@ -369,6 +376,7 @@ class QuantisedFunction(_QuantisedBase):
         return (1 - diff) * values[floor] + diff * values[floor + 1]
 
 
+# [SECTION] Patches and volumes
 class NurbsPatch:
     """A NURBS surface; control points (x, y, z, w) in rows along u."""
 
@@ -425,7 +433,7 @@ class NurbsPatch:
         return _of3(self._native().point(u, v))
 
     def _grid(self, n):
-        """The points at (i / n, j / n), i outer, as tuples: the drawing's (plantgl_drawing.py)."""
+        """The points at (i / n, j / n), i outer, as tuples: the drawing's (lpy/plantgl/meshes.cpp)."""
         return self._native().grid(n)
 
     def getUTangentAt(self, u, v):
@@ -446,23 +454,6 @@ class NurbsPatch:
         return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
 
 
-def _de_boor(points, degree, knots, t):
-    """A point of the B-spline of homogeneous `points` (tuples) at t (de Boor)."""
-    n = len(points) - 1
-    t = max(knots[degree], min(knots[n + 1], t))
-    span = degree
-    while span < n and t >= knots[span + 1]:
-        span += 1
-    d = [list(points[j]) for j in range(span - degree, span + 1)]
-    for r in range(1, degree + 1):
-        for j in range(degree, r - 1, -1):
-            i = j + span - degree
-            den = knots[i + degree - r + 1] - knots[i]
-            a = (t - knots[i]) / den if den else 0.0
-            d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(len(d[j]))]
-    return d[degree]
-
-
 class NurbsPatch3D:
     """A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
     grid [u][v][w]; getPointAt(u, v, w) maps the parameter cube into space."""
@@ -476,9 +467,9 @@ class NurbsPatch3D:
             if not 1 <= degree < dim:
                 raise ValueError("NurbsPatch3D: each degree from 1 to its count of control points - 1")
         self.ctrlPointMatrix = pts
-        self.uknotList = list(uknotList) if uknotList is not None else _uniform_clamped_knots(dims[0], self.udegree)
-        self.vknotList = list(vknotList) if vknotList is not None else _uniform_clamped_knots(dims[1], self.vdegree)
-        self.wknotList = list(wknotList) if wknotList is not None else _uniform_clamped_knots(dims[2], self.wdegree)
+        self.uknotList = list(uknotList) if uknotList is not None else _pgl_uniform_knots(dims[0], self.udegree)
+        self.vknotList = list(vknotList) if vknotList is not None else _pgl_uniform_knots(dims[1], self.vdegree)
+        self.wknotList = list(wknotList) if wknotList is not None else _pgl_uniform_knots(dims[2], self.wdegree)
         self.ustride, self.vstride, self.wstride = ustride, vstride, wstride
         self.name = ''
 
@@ -498,12 +489,7 @@ class NurbsPatch3D:
         return True
 
     def getPointAt(self, u, v, w):
-        def homogeneous(p):
-            return (p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3])
-        planes = []
-        for plane in self.ctrlPointMatrix:
-            row = [_de_boor([homogeneous(p) for p in line], self.wdegree, self.wknotList, w) for line in plane]
-            planes.append(_de_boor(row, self.vdegree, self.vknotList, v))
-        x, y, z, h = _de_boor(planes, self.udegree, self.uknotList, u)
-        h = h or 1.0
-        return Vector3(x / h, y / h, z / h)
+        """de Boor along w on the homogeneous points of each line, then along v, then along u
+        (lpy/plantgl/curves.cpp's NurbsVolume)."""
+        return _of3(_pgl_volume_point(self.ctrlPointMatrix, (self.udegree, self.vdegree, self.wdegree),
+                                      (self.uknotList, self.vknotList, self.wknotList), u, v, w))

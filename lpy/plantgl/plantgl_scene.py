@@ -1,6 +1,6 @@
 # openalea.plantgl._scene, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
 # parts: plantgl.py): colours and materials, the scene objects a model builds for @g (kept with
-# PlantGL's field names; Sprout draws them in plantgl_drawing.py), Scene, BoundingBox, and a
+# PlantGL's field names; Sprout draws them in lpy/plantgl/meshes.cpp), Scene, BoundingBox, and a
 # Viewer and a light model whose calls do nothing. Its own file: what a model stores, apart
 # from the curves and grids it computes with.
 from openalea.plantgl._vectors import Vector3

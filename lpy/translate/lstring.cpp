@@ -1,42 +1,13 @@
-// Module classes and lstrings as L-Py reads them: its predefined modules with their aliases,
-// ModuleClasses, readLstring() (an lstring's text into modules) and the Python expression an
-// lstring becomes. Its own file: the tokeniser every section and rule goes through.
+// Module classes and lstrings as L-Py reads them: its predefined modules with their aliases
+// (turtle_vocabulary.hpp's table), ModuleClasses, readLstring() (an lstring's text into
+// modules) and the Python expression an lstring becomes. Its own file: the tokeniser every section and rule goes through.
 #include <algorithm>
 #include <cctype>
 
 #include "lpy/translate/translate_impl.hpp"
+#include "lpy/translate/turtle_vocabulary.hpp"
 
 namespace sprout::lpy {
-namespace {
-
-// L-Py's predefined modules, each with its aliases (src/cpp/predefinedmodules.cpp). The
-// first six keep the ids ModuleClasses names.
-const std::vector<std::vector<const char*>>& predefined() {
-    static const std::vector<std::vector<const char*>> table = {
-        {"[", "SB"}, {"]", "EB"}, {"%", "Cut"}, {"*", "any"}, {"None"}, {"~", "surface"},
-        {"F"}, {"f"}, {"nF"}, {"+", "Left"}, {"-", "Right"}, {"^", "Up"}, {"&", "Down"},
-        {"/", "RollL"}, {"\\", "RollR"}, {"iRollL"}, {"iRollR"}, {"|", "TurnAround"},
-        {"@v", "RollToVert"}, {"@h", "RollToHorizontal"}, {"@R", "SetHead"}, {"EulerAngles"},
-        {"Pinpoint"}, {"PinpointRel"}, {"@M", "MoveTo"}, {"MoveRel"}, {"LineTo"}, {"LineRel"},
-        {"OLineTo"}, {"OLineRel"}, {"_", "IncWidth"}, {"!", "DecWidth"}, {"SetWidth"},
-        {";", "IncColor"}, {",", "DecColor"}, {"SetColor"}, {"InterpolateColors"},
-        {"TextureBaseColor"}, {"InterpolateTextureBaseColors"}, {"@O", "Sphere"}, {"@o", "Circle"},
-        {"@B", "Box"}, {"@b", "Quad"}, {"@L", "Label"}, {"@Gc", "StartGC"}, {"@Ge", "EndGC"},
-        {"{", "BP"}, {".", "PP"}, {"}", "EP"}, {"SetContour"}, {"SectionResolution"},
-        {"SetGuide"}, {"EndGuide"}, {"PositionOnGuide"}, {"Sweep"}, {"@g", "PglShape"},
-        {"Frame"}, {"Arrow"}, {"@D", "SetScale"}, {"@Di", "MultScale"}, {"@Dd", "DivScale"},
-        {"@Ts", "Elasticity"}, {"@Tp", "Tropism"}, {"LeftReflection"}, {"UpReflection"},
-        {"HeadingReflection"}, {"@2D", "StartScreenProjection"}, {"@3D", "EndScreenProjection"},
-        {"TextureScale"}, {"TextureUScale"}, {"TextureVScale", "TextureVCoeff"},
-        {"TextureTranslation"}, {"TextureRotation"}, {"TextureTransformation"},
-        {"?P", "GetPos"}, {"?H", "GetHead"}, {"?U", "GetUp"}, {"?L", "GetLeft"}, {"?R", "GetRight"},
-        {"?F", "GetFrame"}, {"X", "MouseIns"}, {"x", "repexp", "all"}, {"or", "||"}, {"=]"},
-        {"?I", "GetIterator"}, {"new", "newmodule"},
-    };
-    return table;
-}
-
-}  // namespace
 
 namespace translate_detail {
 
@@ -70,10 +41,12 @@ std::string pythonLstring(const std::vector<WrittenModule>& mods) {
 using namespace translate_detail;
 
 ModuleClasses::ModuleClasses() {
-    for (const auto& names : predefined()) {
+    // L-Py's predefined modules, each with its aliases (lpy/translate/turtle_vocabulary.hpp).
+    for (const TurtleWord& word : kTurtleVocabulary) {
         const int id = int(m_names.size());
-        m_names.emplace_back(names[0]);
-        for (const char* n : names) {
+        m_names.emplace_back(word.names[0]);
+        for (const char* n : word.names) {
+            if (!n) break;
             m_ids.emplace(n, id);
             m_longest = std::max(m_longest, std::string_view(n).size());
         }

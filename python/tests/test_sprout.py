@@ -100,17 +100,18 @@ def test_an_lpy_model_is_derived_by_open_and_drawn_when_asked():
 
 
 def test_an_lpy_crown_is_drawn_as_plantgl_meshes_it():
-    # An AsymmetricHull is meshed in C++ (lpy/draw/shapes.cpp): 4 * slices meridians of
-    # 2 * stacks - 1 points, 2 * (2 * stacks - 1) triangles each; the same mesh as the Python
-    # drawing of PlantGL's shapes gives.
+    # An AsymmetricHull is meshed in C++ (lpy/plantgl/meshes.cpp): 4 * slices meridians of
+    # 2 * stacks - 1 points, 2 * (2 * stacks - 1) triangles each; the same mesh in a group as
+    # alone.
     model = ("from openalea.plantgl.all import *\nAxiom: F(1) @g(AsymmetricHull(1, 2, 1, 2, 0.5, 0, 0, 0.5, "
              "(0, 0, -1), (0, 0, 2), 2, 3, %d, %d))\nderivation length: 0\nproduction:\nendlsystem\n")
     for slices, stacks in ((4, 4), (2, 3), (1, 1)):
         g = sprout.parse(model % (slices, stacks), kind="lpy").geometry()
         assert len(g["triangles"]) == 4 * slices * 2 * (2 * stacks - 1)
     import openalea.plantgl.all as pgl
+    from _sprout_lpy import _shape_mesh
     hull = pgl.AsymmetricHull(1, 2, 1, 2, 0.5, 0, 0, 0.5, (0, 0, -1), (0, 0, 2), 2, 3, 4, 4)
-    points, triangles = pgl._sprout_triangles(hull)
+    points, triangles, segments = _shape_mesh(hull)
     g = sprout.parse(model % (4, 4), kind="lpy").geometry()
     assert len(triangles) == len(g["triangles"])
     # The crown's top, 2 above its base along the turtle's heading (up), at the stem's end.
@@ -246,49 +247,31 @@ def test_a_quantised_function_is_called_in_c_with_the_pythons_numbers():
 
 
 def test_the_shapes_given_to_at_g_are_meshed_in_c_as_the_python_meshes_them():
-    # lpy/plantgl/meshes.cpp makes @g's shapes as plantgl_drawing.py's _sprout_triangles does: the
-    # same points to the bit, the same triangles and segments; what it does not know it leaves
-    # to the Python (False).
-    import random
-    import struct
+    # lpy/plantgl/meshes.cpp makes @g's shapes, all of them now, as the drawing made them when
+    # part of them were the Python's (plantgl_drawing.py's _sprout_triangles, gone since):
+    # 3,000 random shapes of every kind give what data/at_g_meshes.txt recorded then (the same
+    # points to the bit, the same triangles and segments, or the same refusal).
+    import sys
 
     sprout.parse("Axiom: A\nderivation length: 0\nproduction:\nendlsystem\n", kind="lpy")
     import openalea.plantgl.all as pgl
     from _sprout_lpy import _shape_mesh
-    from openalea.plantgl._drawing import _sprout_triangles
 
-    def same_form(r):
-        if r is None:
-            return None
-        return ([tuple(struct.pack("d", float(c)) for c in p) for p in r[0]], [tuple(t) for t in r[1]],
-                [tuple(s) for s in (r[2] if len(r) > 2 else [])])
+    sys.path.insert(0, os.path.dirname(__file__))
+    import at_g_shapes
 
-    rng = random.Random(11)
-    num = lambda: rng.choice([rng.uniform(-3, 3), 0.0, -0.0, 1, rng.randint(1, 70)])
-    vec = lambda: rng.choice([(num(), num(), num()), pgl.Vector3(num(), num(), num())])
-
-    def shape(depth=0):
-        k = rng.randrange(13 if depth < 3 else 8)
-        made = [lambda: pgl.Box(vec()), lambda: pgl.Sphere(num(), rng.randint(-2, 70), rng.randint(-2, 70)),
-                lambda: pgl.Cylinder(num(), num(), True, rng.randint(1, 80)), lambda: pgl.Frustum(num(), num(), num()),
-                lambda: pgl.Paraboloid(num(), num(), num(), True, 9, 5), lambda: pgl.Disc(num()),
-                lambda: pgl.TriangleSet([vec() for _ in range(4)], [[rng.randint(0, 5) for _ in range(3)] for _ in range(3)]),
-                lambda: pgl.PointSet([vec() for _ in range(rng.randint(0, 4))]),
-                lambda: pgl.Scaled(vec(), shape(depth + 1)), lambda: pgl.Translated(vec(), shape(depth + 1)),
-                lambda: pgl.AxisRotated(vec(), num(), shape(depth + 1)), lambda: pgl.Oriented(vec(), vec(), shape(depth + 1)),
-                lambda: pgl.Group([pgl.Shape(shape(depth + 1)) for _ in range(rng.randint(0, 3))])]
-        return made[k]()
-
-    meshed = 0
-    for _ in range(1500):
-        s = shape()
-        c = _shape_mesh(s)
-        if c is not False:
-            assert same_form(c) == same_form(_sprout_triangles(s))
-            meshed += 1
-    assert meshed > 1400
-    # Left to the Python: a curve it samples, a patch, a shape with no geometry.
+    with open(os.path.join(os.path.dirname(__file__), "data", "at_g_meshes.txt")) as f:
+        expected = [line.strip() for line in f if not line.startswith("#")]
+    shapes = at_g_shapes.shapes(pgl, 3000)
+    assert len(expected) == len(shapes) == 3000
+    got = [at_g_shapes.drawn(_shape_mesh(s)) for s in shapes]
+    wrong = [i for i, (g, e) in enumerate(zip(got, expected)) if g != e]
+    assert not wrong, (len(wrong), wrong[:10])
+    assert sum(1 for e in expected if e not in ("none", "empty")) > 2200  # most are drawn
+    assert len(set(got)) > 2000  # and differ
+    # What the Python meshed before: a curve in a group (its polyline after the box), no shape.
     curve = pgl.NurbsCurve([(0, 0, 0, 1), (1, 0, 0, 1), (1, 1, 0, 1)], 2)
-    for s in (pgl.Group([pgl.Box(1), curve]), pgl.Shape(None)):
-        assert _shape_mesh(s) is False
+    points, triangles, segments = _shape_mesh(pgl.Group([pgl.Box(1), curve]))
+    assert (len(points), len(triangles), segments[0]) == (24 + 30, 12, (24, 25))
+    assert _shape_mesh(pgl.Shape(None)) is None
     assert _shape_mesh(pgl.Box(0.5))[1][:2] == [(0, 1, 2), (0, 2, 3)]
