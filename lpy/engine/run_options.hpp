@@ -19,11 +19,11 @@ struct RunOptions {
     // parameters measured): a step that would pass it ends the derivation with a message.
     std::uint64_t maxBytes = defaultMemoryBudget();
     bool native = true;  // produce-only arithmetic rules derive without Python (false: every match calls Python)
-    // With keepSteps: nothing is drawn by the run (`import sprout`: open() and derive() derive;
+    // With keepSteps: nothing is drawn by the run (the `sprout` Python module: open() and derive() derive;
     // the viewer draws the step it shows); Model::later draws a step, or reads it, when asked.
     bool drawLater = false;
     // With keepSteps: the derivation record and where contexts matched (the viewer's inspector
-    // and picking; `import sprout` reads a step's record from Model::later when asked).
+    // and picking; the `sprout` Python module reads a step's record from Model::later when asked).
     bool keepRecord = true;
 };
 

@@ -166,7 +166,7 @@ void start(void (*defineModule)(py::module_&)) {
         }
 #ifndef SPROUT_LPY_IN_EXTENSION
         // A model's Python cannot end Sprout: in Sprout's own process (not a user's Python, where
-        // `import sprout` runs), the calls that would end it raise instead, an error at the
+        // the `sprout` Python module runs), the calls that would end it raise instead, an error at the
         // model's line (sys.exit's SystemExit is turned into the same error where it is caught).
         py::exec(R"PY(
 import os, posix, signal

@@ -123,7 +123,7 @@ class Scene(list):
         from _sprout_lpy import _scene_plant
         maker = _scene_plant()
         if maker is None:
-            raise ValueError("a scene is drawn by Sprout's Python module: import sprout")
+            raise ValueError("a scene is drawn by Sprout's Python module (the sprout package) only")
         return maker(*made)
 
     def render(self, **kwargs):

@@ -1,5 +1,5 @@
 // runModel (lpy/lpy.hpp): an L-Py model file read, run and drawn for the CLI, the viewer and
-// `import sprout`. The interpreter's start, the names and the Python side of the engine are
+// the `sprout` Python module. The interpreter's start, the names and the Python side of the engine are
 // interpreter.cpp's; this file is one run, from the text to what the turtle draws.
 #include <chrono>
 #include <optional>
@@ -294,7 +294,7 @@ Model runModel(std::string_view written, const RunOptions& options) {
         NumString numbers;
         const bool numeric = engine.native() && !engine.interprets() && !options.keepSteps &&
                              engine.deriveNumbers(axiom, steps, nullptr, numbers, false);
-        // Steps kept to be drawn later (`import sprout`), on the native path: kept as numbers,
+        // Steps kept to be drawn later (the `sprout` Python module), on the native path: kept as numbers,
         // made into Python modules only for a step that is drawn.
         std::vector<NumString> everyNumbers;
         const bool numericSteps = !numeric && options.keepSteps && options.drawLater && engine.native() &&
