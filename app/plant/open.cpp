@@ -87,33 +87,47 @@ std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOpti
 }
 
 // A forest scene: its species are presets or files beside the scene file.
+GrownScene growScene(const std::string& text, const std::string& path, std::optional<std::uint64_t> seed,
+                     const GrammarSource& species, const DeriveLimits& limits, Geometry& geometry,
+                     std::vector<ForestPlant>* plants) {
+    GrownScene out;
+    ForestParseResult parsed = parseForest(text, parseOptionsFor(FileKind::Forest, path).include);
+    out.diagnostics = std::move(parsed.diagnostics);
+    if (!parsed.forest) return out;
+    out.parsed = true;
+    if (seed) parsed.forest->seed = *seed;
+    out.seed = parsed.forest->seed;
+    out.environment = parsed.forest->environment;
+    out.built = buildForest(*parsed.forest, species, geometry, out.stats, out.error, limits, plants);
+    return out;
+}
+
 bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
                       Geometry& geometry, ForestStats& fs, std::string& text, const Report& report, Environment* environment,
                       std::uint64_t* usedSeed) {
     std::filesystem::path dir;
-    IncludeReader beside;  // a mesh an environment names, beside the scene
+    std::string path;  // the scene's file: a mesh an environment names is read beside it
     if (std::filesystem::exists(source)) {
         text = readSourceOrChunk(source, "forest").value_or("");
         dir = std::filesystem::path(source).parent_path();
-        beside = parseOptionsFor(FileKind::Forest, source).include;
+        path = source;
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
     }
-    ForestParseResult parsed = parseForest(text, beside);
-    for (const auto& d : parsed.diagnostics) report(formatDiagnostic(d, source));
-    if (!parsed.forest) return false;
-    if (seed) parsed.forest->seed = *seed;
-    if (environment) *environment = parsed.forest->environment;
-    if (usedSeed) *usedSeed = parsed.forest->seed;
     auto species = [&](const std::string& name) -> std::optional<std::string> {
         std::filesystem::path p = dir / name;
         if (std::filesystem::exists(p)) return readFile(p).value_or("");
         if (auto t = presetText(name)) return std::string(*t);
         return std::nullopt;
     };
-    std::string error;
-    if (!buildForest(*parsed.forest, species, geometry, fs, error, limits)) {
-        report(source + ": " + error);
+    GrownScene grown = growScene(text, path, seed, species, limits, geometry);
+    for (const auto& d : grown.diagnostics) report(formatDiagnostic(d, source));
+    if (!grown.parsed) return false;
+    if (environment) *environment = std::move(grown.environment);
+    if (usedSeed) *usedSeed = grown.seed;
+    fs = grown.stats;
+    if (!grown.built) {
+        report(source + ": " + grown.error);
         return false;
     }
     return true;

@@ -60,6 +60,22 @@ std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOpti
 // Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).
 FileKind sourceKind(const std::string& source);
 
+// A forest scene's text grown into one geometry (core/scene's buildForest): its species read by
+// `species`, an environment's files beside `path` (the scene's file; empty: none). The one way
+// a scene grows, for the command line and the viewer's worker.
+struct GrownScene {
+    std::vector<Diagnostic> diagnostics;  // the scene's text's
+    bool parsed = false;                  // the text is a scene (else its diagnostics say why)
+    bool built = false;                   // and it grew (else `error` says why)
+    std::string error;
+    std::uint64_t seed = 1;               // the seed it grew with
+    Environment environment;              // the environment its plants share (empty: none)
+    ForestStats stats;
+};
+GrownScene growScene(const std::string& text, const std::string& path, std::optional<std::uint64_t> seed,
+                     const GrammarSource& species, const DeriveLimits& limits, Geometry& geometry,
+                     std::vector<ForestPlant>* plants = nullptr);
+
 // A forest scene (.forest file or scene preset) built into one geometry, its species presets or
 // files beside the scene's file; `text` is the scene as written. Reports diagnostics; false
 // when it cannot be built.

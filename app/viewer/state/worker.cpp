@@ -75,24 +75,21 @@ void Worker::run() {
 
 
 std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<Result> out) {
-    ForestParseResult parsed = parseForest(r.text, parseOptionsFor(FileKind::Forest, r.path).include);
-    out->diagnostics = parsed.diagnostics;
-    if (!parsed.forest) return out;
-    if (r.seed) parsed.forest->seed = *r.seed;
     auto geometry = std::make_shared<Geometry>();
-    ForestStats stats;
     auto t0 = std::chrono::steady_clock::now();
-    std::string error;
     auto source = speciesSource ? speciesSource : [](const std::string&) { return std::optional<std::string>(); };
     auto plants = std::make_shared<std::vector<ForestPlant>>();
-    if (!buildForest(*parsed.forest, source, *geometry, stats, error, limits, plants.get())) {
-        out->message = error;
+    GrownScene grown = growScene(r.text, r.path, r.seed, source, limits, *geometry, plants.get());
+    out->diagnostics = std::move(grown.diagnostics);
+    if (!grown.parsed) return out;
+    if (!grown.built) {
+        out->message = grown.error;
         return out;
     }
     out->deriveMs = millisSince(t0);
-    out->modules = stats.segments;
-    out->seed = parsed.forest->seed;
-    out->environment = std::make_shared<const Environment>(parsed.forest->environment);
+    out->modules = grown.stats.segments;
+    out->seed = grown.seed;
+    out->environment = std::make_shared<const Environment>(std::move(grown.environment));
     out->forest = std::move(plants);
     if (prepare) out->prepared = prepare(geometry);
     out->geometry = std::move(geometry);
