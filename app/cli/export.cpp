@@ -9,6 +9,7 @@
 #include "app/cli/commands.hpp"
 #include "app/cli/load.hpp"
 #include "app/plant/growth.hpp"
+#include "app/plant/scene.hpp"
 #include "core/environment/environment_drawing.hpp"
 #include "app/export/export.hpp"
 #include "app/plant/presets.hpp"

@@ -11,6 +11,7 @@
 #include "app/animation.hpp"
 #include "app/cli/load.hpp"
 #include "app/plant/presets.hpp"
+#include "app/plant/scene.hpp"
 #include "app/plant/source.hpp"
 #include "core/base/read_file.hpp"
 #include "app/snapshot.hpp"
@@ -76,26 +77,20 @@ int renderIfs(const std::string& source, const SnapshotOptions& o, const std::st
         }
         text = std::move(*t);
     }
-    IfsParseResult parsed = parseIfs(text);
-    for (const auto& d : parsed.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
-    if (!parsed.ifs) return 1;
-    Ifs ifs = *parsed.ifs;
-    if (o.seed) ifs.seed = *o.seed;
-    auto t0 = std::chrono::steady_clock::now();
-    Density density;
-    chaosGame(ifs, o.width, o.height, density, int(std::max(1u, std::thread::hardware_concurrency())));
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    IfsPicture picture = drawIfs(text, o.seed, o.width, o.height, int(std::max(1u, std::thread::hardware_concurrency())));
+    for (const auto& d : picture.diagnostics) std::cerr << formatDiagnostic(d, source) << "\n";
+    if (!picture.parsed) return 1;
     Image img;
     img.width = o.width;
     img.height = o.height;
-    img.rgba = toneMap(density, ifs.colour, 0xF4F2EAFF);
+    img.rgba = std::move(picture.rgba);
     img.text.emplace_back("ifs", text);
     std::string error;
     if (!writePng(out, img, error)) {
         std::cerr << out << ": " << error << "\n";
         return 1;
     }
-    if (stats) std::fprintf(info(out), "%s: %s points of the chaos game in %.0f ms\n", out.c_str(), withThousands(ifs.points).c_str(), ms);
+    if (stats) std::fprintf(info(out), "%s: %s points of the chaos game in %.0f ms\n", out.c_str(), withThousands(picture.points).c_str(), picture.gameMs);
     return 0;
 }
 

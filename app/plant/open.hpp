@@ -10,7 +10,6 @@
 
 #include "core/derive/derive.hpp"
 #include "core/language/file_kind.hpp"
-#include "core/scene/forest.hpp"
 #include "core/language/grammar.hpp"
 #include "lpy/lpy.hpp"
 
@@ -59,29 +58,5 @@ std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOpti
 // What a source (file, PNG written by Sprout, preset or "-") holds, by detectFileKind():
 // Lsys, Cpfg, Ifs or Forest (Lparser and Fractint files are read as the .lsys they become).
 FileKind sourceKind(const std::string& source);
-
-// A forest scene's text grown into one geometry (core/scene's buildForest): its species read by
-// `species`, an environment's files beside `path` (the scene's file; empty: none). The one way
-// a scene grows, for the command line and the viewer's worker.
-struct GrownScene {
-    std::vector<Diagnostic> diagnostics;  // the scene's text's
-    bool parsed = false;                  // the text is a scene (else its diagnostics say why)
-    bool built = false;                   // and it grew (else `error` says why)
-    std::string error;
-    std::uint64_t seed = 1;               // the seed it grew with
-    Environment environment;              // the environment its plants share (empty: none)
-    ForestStats stats;
-};
-GrownScene growScene(const std::string& text, const std::string& path, std::optional<std::uint64_t> seed,
-                     const GrammarSource& species, const DeriveLimits& limits, Geometry& geometry,
-                     std::vector<ForestPlant>* plants = nullptr);
-
-// A forest scene (.forest file or scene preset) built into one geometry, its species presets or
-// files beside the scene's file; `text` is the scene as written. Reports diagnostics; false
-// when it cannot be built.
-// `environment`, when given, receives the scene's shared environment (empty when it has none).
-bool buildForestScene(const std::string& source, std::optional<std::uint64_t> seed, const DeriveLimits& limits,
-                      Geometry& geometry, ForestStats& stats, std::string& text, const Report& report,
-                      Environment* environment = nullptr, std::uint64_t* usedSeed = nullptr);
 
 }  // namespace sprout

@@ -5,6 +5,7 @@
 
 #include "app/plant/growth.hpp"
 #include "app/plant/open.hpp"
+#include "app/plant/scene.hpp"
 #include "core/scene/forest.hpp"
 #include "core/scene/ifs.hpp"
 
@@ -97,24 +98,20 @@ std::shared_ptr<Result> Worker::processScene(const Request& r, std::shared_ptr<R
 }
 
 std::shared_ptr<Result> Worker::processIfs(const Request& r, std::shared_ptr<Result> out) {
-    IfsParseResult parsed = parseIfs(r.text);
-    out->diagnostics = parsed.diagnostics;
-    if (!parsed.ifs) return out;
-    Ifs ifs = *parsed.ifs;
-    if (r.seed) ifs.seed = *r.seed;
-    auto t0 = std::chrono::steady_clock::now();
-    Density d;
     // One thread: the other core keeps the window responsive.
-    if (!chaosGame(ifs, 1024, 768, d, 1, &m_cancel)) {
+    IfsPicture picture = drawIfs(r.text, r.seed, 1024, 768, 1, &m_cancel);
+    out->diagnostics = std::move(picture.diagnostics);
+    if (!picture.parsed) return out;
+    if (!picture.drawn) {
         out->cancelled = true;
         return out;
     }
-    out->deriveMs = millisSince(t0);
-    out->modules = ifs.points;
-    out->seed = ifs.seed;
-    out->image = std::make_shared<const std::vector<std::uint8_t>>(toneMap(d, ifs.colour, 0xF4F2EAFF));
-    out->imageWidth = d.width;
-    out->imageHeight = d.height;
+    out->deriveMs = picture.gameMs;
+    out->modules = picture.points;
+    out->seed = picture.seed;
+    out->image = std::make_shared<const std::vector<std::uint8_t>>(std::move(picture.rgba));
+    out->imageWidth = picture.width;
+    out->imageHeight = picture.height;
     return out;
 }
 
