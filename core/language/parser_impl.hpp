@@ -89,6 +89,16 @@ bool webVariable(std::string_view key);  // a web dialect's setting its rules re
 void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
                      bool& notation);
 
+// cpfg statement blocks in productions (core/language/cpfg/statements.cpp).
+// A block's statements (assignments, if / else) compiled in `scope`, whose params are `params`.
+bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
+                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out);
+// The names a block assigns (`x = ...`), added to `names` once each.
+void collectAssigned(std::string_view text, std::vector<std::string>& names);
+// `{pre} condition {post}` taken apart; false (and an error) when the blocks are misplaced.
+bool splitCpfgCondition(DiagnosticSink& sink, const SourceLine& line, std::string_view text, std::string_view& pre,
+                        std::string_view& condition, std::string_view& post);
+
 class Parser;
 using DirectiveHandler = std::function<void(Parser&, const SourceLine&, std::string_view value)>;
 
@@ -188,12 +198,6 @@ private:
     // themselves are m_cpfgReader's.
     void classifyCpfg(Line& line, Section& section, bool& ended);
     void loadSurfaceFiles();  // `~s` modules with an `s.s` file beside the grammar
-    // Statement blocks (core/cpfg/statements.cpp).
-    bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
-                    std::vector<Statement>& out);
-    void collectAssigned(std::string_view text, std::vector<std::string>& names);
-    bool splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
-                            std::string_view& condition, std::string_view& post);
     bool parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
                       bool allowWildcard, std::vector<std::string>& params,
                       std::vector<PatternModule>& out);
