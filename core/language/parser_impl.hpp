@@ -127,6 +127,7 @@ public:
     // Used by directive handlers.
     Grammar& grammar() { return m_g; }
     DiagnosticSink& sink() { return m_sink; }
+    const ParseOptions& options() const { return m_options; }  // the include reader, the file's name
     bool tokenize(const SourceLine& line, std::string_view text, std::vector<RawModule>& out);
     std::optional<double> constant(const SourceLine& line, std::string_view text);
     std::optional<Jittered> jittered(const SourceLine& line, std::string_view text);
@@ -141,7 +142,6 @@ public:
     static std::optional<std::string_view> quotedName(std::string_view arg);
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
-    void declareEnvironment(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
     void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
     bool cpfg() const { return m_cpfg; }
