@@ -143,9 +143,7 @@ void view(Parser& p, const SourceLine& line, std::string_view value) {
     else p.sink().error(line, value, "expected 'view: 2d', '3d' or 'auto'");
 }
 
-}  // namespace
-
-void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
+void environment(Parser& p, const SourceLine& line, std::string_view text) {
     // Keywords first (obstacle, ground, the shape), then numbers: expressions of defines.
     std::vector<std::string> words;
     std::vector<double> numbers;
@@ -154,14 +152,14 @@ void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
         const bool keyword = isEnvironmentKeyword(token);
         if (keyword) {
             words.emplace_back(token);
-        } else if (std::isalpha(static_cast<unsigned char>(token[0])) && numbers.empty() && !m_g.defines.count(std::string(token))) {
+        } else if (std::isalpha(static_cast<unsigned char>(token[0])) && numbers.empty() && !p.grammar().defines.count(std::string(token))) {
             words.emplace_back(token);  // an unknown kind: declare() names it
         } else {
-            auto v = constant(line, token);
+            auto v = p.constant(line, token);
             if (!v) return;
             if (!inRange(*v, -Environment::kMaxNumber, Environment::kMaxNumber))
-                return m_sink.error(line, token, "'" + std::string(token) + "' is " + formatNumber(*v) +
-                                                     ": an environment's numbers go from -1e9 to 1e9");
+                return p.sink().error(line, token, "'" + std::string(token) + "' is " + formatNumber(*v) +
+                                                        ": an environment's numbers go from -1e9 to 1e9");
             numbers.push_back(*v);
         }
     }
@@ -169,17 +167,19 @@ void Parser::declareEnvironment(const SourceLine& line, std::string_view text) {
     if (words.size() == 2 && words[0] == "mesh" && numbers.empty()) {
         // A closed mesh beside the grammar, read with the same folder rules as #include.
         const std::string& file = words[1];
-        auto fail = [&](const std::string& why) { m_sink.error(line, trim(text), why); };
-        if (!m_options.include) return fail("the mesh '" + file + "' needs the grammar's folder: save the grammar beside it first");
-        auto bytes = m_options.include(file, error);
+        auto fail = [&](const std::string& why) { p.sink().error(line, trim(text), why); };
+        if (!p.options().include) return fail("the mesh '" + file + "' needs the grammar's folder: save the grammar beside it first");
+        auto bytes = p.options().include(file, error);
         if (!bytes) return fail("cannot read the mesh '" + file + "': " + error);
         auto mesh = std::make_shared<TriMesh>();
         if (!mesh->parse(*bytes, error)) return fail("'" + file + "' cannot be the environment: " + error);
-        if (!m_g.environment.declareMesh(std::move(mesh), error)) fail(error);
+        if (!p.grammar().environment.declareMesh(std::move(mesh), error)) fail(error);
         return;
     }
-    if (!m_g.environment.declare(words, numbers, error)) m_sink.error(line, trim(text).empty() ? line.text : trim(text), error);
+    if (!p.grammar().environment.declare(words, numbers, error)) p.sink().error(line, trim(text).empty() ? line.text : trim(text), error);
 }
+
+}  // namespace
 
 const std::vector<Directive>& directives() {
     static const std::vector<Directive> k = {
@@ -200,7 +200,7 @@ const std::vector<Directive>& directives() {
         {"seed", seed, 0},  // before anything that may call rand()
         {"axiom", [](Parser& p, const SourceLine& l, std::string_view v) { p.setAxiom(l, v); }},
         {"ignore", [](Parser& p, const SourceLine& l, std::string_view v) { p.setIgnore(l, v); }},
-        {"environment", [](Parser& p, const SourceLine& l, std::string_view v) { p.declareEnvironment(l, v); }, 1},
+        {"environment", environment, 1},
     };
     return k;
 }

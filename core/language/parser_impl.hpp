@@ -1,7 +1,8 @@
 #pragma once
 // Internals of parse(), shared by parser.cpp (names, modules, numbers, the axiom),
-// parser_rules.cpp (rules), parser_run.cpp (the whole text, lint) and directives.cpp (the
-// `key: value` table).
+// parser_rules.cpp (rules), parser_run.cpp (the whole text, lint), directives.cpp (the
+// `key: value` table) and the cpfg family's files (cpfg/: the Parser owns a CpfgReader that
+// makes the family's text its logical lines).
 #include <array>
 #include <deque>
 #include <functional>
@@ -9,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/language/cpfg/cpfg_reader.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/source.hpp"
 
@@ -87,6 +89,16 @@ bool webVariable(std::string_view key);  // a web dialect's setting its rules re
 void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::string>>& replaced, bool cpfg,
                      bool& notation);
 
+// cpfg statement blocks in productions (core/language/cpfg/statements.cpp).
+// A block's statements (assignments, if / else) compiled in `scope`, whose params are `params`.
+bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
+                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out);
+// The names a block assigns (`x = ...`), added to `names` once each.
+void collectAssigned(std::string_view text, std::vector<std::string>& names);
+// `{pre} condition {post}` taken apart; false (and an error) when the blocks are misplaced.
+bool splitCpfgCondition(DiagnosticSink& sink, const SourceLine& line, std::string_view text, std::string_view& pre,
+                        std::string_view& condition, std::string_view& post);
+
 class Parser;
 using DirectiveHandler = std::function<void(Parser&, const SourceLine&, std::string_view value)>;
 
@@ -115,6 +127,7 @@ public:
     // Used by directive handlers.
     Grammar& grammar() { return m_g; }
     DiagnosticSink& sink() { return m_sink; }
+    const ParseOptions& options() const { return m_options; }  // the include reader, the file's name
     bool tokenize(const SourceLine& line, std::string_view text, std::vector<RawModule>& out);
     std::optional<double> constant(const SourceLine& line, std::string_view text);
     std::optional<Jittered> jittered(const SourceLine& line, std::string_view text);
@@ -129,7 +142,6 @@ public:
     static std::optional<std::string_view> quotedName(std::string_view arg);
     void setIgnore(const SourceLine& line, std::string_view text);
     void setConsider(const SourceLine& line, std::string_view text);
-    void declareEnvironment(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
     void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
     bool cpfg() const { return m_cpfg; }
@@ -153,16 +165,6 @@ private:
         size_t equalsArrow = std::string_view::npos;  // a rule written "F = FF": where its '=' is
         std::uint8_t lsystem = 0;  // the cpfg sub-L-system the line belongs to (0: the main one)
     };
-    // Where the pieces of a cpfg logical line came from: a production joined from several
-    // lines, or a line of an #included file (reported at the #include, naming the file).
-    struct Origin {
-        int logical = 0;                  // the line number the parser used
-        std::vector<std::pair<size_t, int>> pieces;  // byte offset in the joined text -> physical line
-        std::vector<size_t> pieceStart;   // offset of each piece's first byte in its physical line
-        std::string includeName;          // non-empty: the line comes from this included file
-        int includeLine = 0;              // the #include's line in the grammar
-    };
-
     // The whole text's steps (parser_run.cpp), before each line is classified.
     void splitPlainLines();
     void warnReplaced(const std::vector<std::pair<size_t, std::string>>& replaced);
@@ -192,34 +194,10 @@ private:
     bool isConstantExpr(const SourceLine& line, std::string_view value);
     void declareNamedModules();  // `SetContour("leaf")`: a word before a quoted name is one module
     void applyDirective(const Directive& d, const SourceLine& src, std::string_view value, std::string_view key);
-    // cpfg family (core/language/cpfg/cpfg_lines.cpp): logical lines, what each is.
-    void buildCpfgLines();
-    bool readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
-                      std::vector<std::string>& stack);
-    std::vector<SourceLine> cpfgPhysicalLines(std::string_view text, bool top, int originBase) const;
-    void joinCpfgLines(std::vector<SourceLine>& body);
-    void joinCpfgStatementBlock(std::vector<SourceLine>& body, size_t i);
-    size_t joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line& out);
+    // cpfg family: what each logical line is (core/language/cpfg/cpfg_classify.cpp); the lines
+    // themselves are m_cpfgReader's.
     void classifyCpfg(Line& line, Section& section, bool& ended);
-    void finishCpfg(std::vector<Diagnostic>& diags);
-    // Its C preprocessor (core/language/cpfg/cpfg_preprocessor.cpp): comments, continued
-    // lines, #define, #include, textual macros.
-    static size_t blankComments(std::string& text);
-    void joinCpfgContinuations(std::vector<SourceLine>& lines, bool top);
-    std::vector<SourceLine> preprocessCpfg(const std::vector<SourceLine>& lines, bool top, int includeLine, int depth,
-                                           std::vector<std::string>& stack);
-    void readCpfgDefine(const SourceLine& line, std::string_view rest, bool top);
-    void readCpfgInclude(const SourceLine& line, std::string_view t, std::string_view rest, bool top, int includeLine,
-                         int depth, std::vector<std::string>& stack, std::vector<SourceLine>& body);
-    void putCpfgTextMacros(std::vector<SourceLine>& body);
-    std::string expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const;
     void loadSurfaceFiles();  // `~s` modules with an `s.s` file beside the grammar
-    // Statement blocks (core/cpfg/statements.cpp).
-    bool parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
-                    std::vector<Statement>& out);
-    void collectAssigned(std::string_view text, std::vector<std::string>& names);
-    bool splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
-                            std::string_view& condition, std::string_view& post);
     bool parsePattern(const SourceLine& line, std::string_view text, bool allowBrackets,
                       bool allowWildcard, std::vector<std::string>& params,
                       std::vector<PatternModule>& out);
@@ -251,9 +229,8 @@ private:
     bool m_cpfg = false;
     ParseOptions m_options;
     std::deque<std::string> m_store;  // texts the cpfg lines view into (joined, included, expanded)
-    std::vector<Origin> m_origins;
     std::unordered_map<std::string, ExprMacro> m_macros;          // function-like #define
-    std::vector<std::pair<std::string, std::string>> m_textMacros;  // #define NAME text (not a number)
+    CpfgReader m_cpfgReader{*this, m_options, m_store, m_macros};  // the cpfg family's logical lines
     Section m_depthSection = Section::Productions;  // where `maximum depth:` applies (cpfg)
     bool m_considerSet = false;
     std::uint8_t m_lsystem = 0;      // the sub-L-system being read (classifyCpfg)

@@ -305,7 +305,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     std::string_view preBlock, postBlock;
     if (!m_cpfg && colon != std::string_view::npos && trim(condition) == "*") colon = std::string_view::npos;  // ABOP's "A(l) : * -> ..."
     if (m_cpfg && colon != std::string_view::npos) {
-        if (!splitCpfgCondition(line, condition, preBlock, condition, postBlock)) return;
+        if (!splitCpfgCondition(m_sink, line, condition, preBlock, condition, postBlock)) return;
         if (trim(condition) == "*" || (trim(condition).empty() && (!preBlock.empty() || !postBlock.empty())))
             condition = {};
         if (condition.empty()) colon = std::string_view::npos;
@@ -328,8 +328,8 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         init.expr = std::move(*e);
         prod.pre.push_back(std::move(init));
     }
-    if (!preBlock.empty() && !parseBlock(line, preBlock, params, prod.pre)) return;
-    if (!postBlock.empty() && !parseBlock(line, postBlock, params, prod.post)) return;
+    if (!preBlock.empty() && !parseStatements(m_sink, line, preBlock, params, scope, prod.pre)) return;
+    if (!postBlock.empty() && !parseStatements(m_sink, line, postBlock, params, scope, prod.post)) return;
     if (colon != std::string_view::npos) {
         if (trim(condition).empty()) {
             m_sink.error(line, condition, "expected a condition after ':' (e.g. 'A(t) : t > 1 -> F')");

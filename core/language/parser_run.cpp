@@ -237,7 +237,11 @@ ParseResult Parser::run() {
     if (m_cpfg) {
         m_original = m_text;  // normalising keeps byte positions; comments are blanked in m_text
         m_g.cutInNextStep = true;
-        buildCpfgLines();
+        for (const SourceLine& src : m_cpfgReader.read(m_text, m_original)) {
+            Line l;
+            l.src = src;
+            m_lines.push_back(std::move(l));
+        }
     } else {
         splitPlainLines();
     }
@@ -305,7 +309,7 @@ ParseResult Parser::run() {
 
     ParseResult result;
     result.diagnostics = std::move(m_sink.all());
-    if (m_cpfg) finishCpfg(result.diagnostics);
+    if (m_cpfg) m_cpfgReader.placeDiagnostics(result.diagnostics);
     std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
                      [](const Diagnostic& a, const Diagnostic& b) {
                          return a.line != b.line ? a.line < b.line : a.col < b.col;

@@ -1,30 +1,27 @@
-// The cpfg / lpfg / L-Py family read as it is written (cpfg manual; L-Py documentation):
-// `Lsystem:` ... `endlsystem`, `derivation length:`, `consider:`, the homomorphism and
-// decomposition sections with `maximum depth:`, productions written over several lines
-// (statement blocks, L-Py's `produce`). Settings of other tools are warnings: the file still
-// opens. The C preprocessor's part (comments, #define, #include) is cpfg_preprocessor.cpp.
+// The cpfg / lpfg / L-Py family's logical lines (cpfg manual; L-Py documentation): the
+// CpfgReader's part after the preprocessor: a file's lines, productions written over several
+// lines (statement blocks, L-Py's `produce`) made one, and diagnostics moved back to the lines
+// they were written on. The words of a cpfg line, which the Parser's classifyCpfg reads too
+// (cpfg_classify.cpp), are here. The C preprocessor's part (comments, #define, #include) is
+// cpfg_preprocessor.cpp.
 //
 // Index of this file:
 //   [SECTION] Reading a cpfg line: keys, section words, arrows
-//   [SECTION] The cpfg family's own settings
 //   [SECTION] A file's logical lines
 //   [SECTION] Productions and blocks written over several lines
-//   [SECTION] What each line is
 //   [SECTION] Diagnostics at the lines they were written on
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
-#include "core/base/bounded.hpp"
+#include "core/language/cpfg/cpfg_reader.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
 namespace {
+
 
 constexpr int kIncludeLineBase = 1'000'000;  // included lines are numbered apart, then reported at the #include
 constexpr int kMaxJoinedLines = 40;  // a production written over more lines than this is a mistake
@@ -46,6 +43,8 @@ std::string lowerCollapsed(std::string_view s) {
     return out;
 }
 
+}  // namespace
+
 // The arrow of a production outside parentheses and blocks: cpfg's `-->`, or `->`.
 size_t arrowAt(std::string_view s) {
     int depth = 0;
@@ -57,6 +56,8 @@ size_t arrowAt(std::string_view s) {
     }
     return std::string_view::npos;
 }
+
+namespace {
 
 // Open parentheses, and braces before the arrow, in `s` (negative when more close than
 // open). After the arrow a brace is a polygon's start or end, which a successor may leave
@@ -72,6 +73,8 @@ int openCount(std::string_view s) {
     }
     return depth;
 }
+
+}  // namespace
 
 bool startsWithWord(std::string_view t, std::string_view word) {
     return t.starts_with(word) && (t.size() == word.size() || !isIdentChar(t[word.size()]));
@@ -115,6 +118,8 @@ bool isStatementBlockKey(const std::string& key) {
     return key == "define" || key == "start" || key == "starteach" || key == "endeach" || key == "end";
 }
 
+namespace {
+
 // Braces open in `s` (negative when more close than open).
 int braceDepth(std::string_view s) {
     int depth = 0;
@@ -140,96 +145,31 @@ bool successorEmpty(std::string_view r) {
     return trim(r.substr(k)).empty();
 }
 
-// [SECTION] The cpfg family's own settings
-
-void considerHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setConsider(l, v); }
-void surfaceHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setSurface(l, v); }
-void depthHandler(Parser& p, const SourceLine& l, std::string_view v) { p.setMaximumDepth(l, v); }
-void angleFactorHandler(Parser& p, const SourceLine& l, std::string_view v) {
-    auto f = p.constant(l, v);
-    if (!f) return;
-    if (!(*f > 0)) return p.sink().error(l, v, "the angle factor divides 360 degrees: it must be above 0");
-    p.grammar().settings.angle = {360.0 / *f, 0};
-}
-void defineBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
-    // cpfg's `define: { a = 1; b = a * 2; }`: each assignment is a constant (a slider).
-    std::string_view body = trim(v);
-    if (body.starts_with("{")) body.remove_prefix(1);
-    if (body.ends_with("}")) body.remove_suffix(1);
-    size_t start = 0;
-    while (start < body.size()) {
-        size_t end = body.find(';', start);
-        if (end == std::string_view::npos) end = body.size();
-        std::string_view stmt = trim(body.substr(start, end - start));
-        if (stmt.starts_with("array ")) {
-            p.sink().warning(l, stmt, "arrays in 'define:' are not supported: this one is ignored");
-        } else if (!stmt.empty()) {
-            p.define(l, stmt);
-        }
-        start = end + 1;
-    }
-}
-
-const Directive kConsider{"consider", considerHandler};
-const Directive kSurface{"surface", surfaceHandler, 0};  // before rules: it names a module
-const Directive kMaximumDepth{"maximum depth", depthHandler};
-const Directive kAngleFactor{"angle factor", angleFactorHandler};
-const Directive kDefineBlock{"define", defineBlockHandler, 1};
-// `Start: {...}`, `StartEach:`, `EndEach:`, `End:` (cpfg's and L-system Explorer's global
-// blocks): not run. Said once per block, with what it changes.
-void globalBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
-    std::string_view t = trim(l.text);
-    const std::string_view word = trim(t.substr(0, t.find(':')));
-    std::vector<std::string> names;
-    std::string_view body = trim(v);
-    if (body.starts_with("{")) body.remove_prefix(1);
-    if (body.ends_with("}")) body.remove_suffix(1);
-    size_t start = 0;
-    while (start < body.size()) {  // `name = ...;` statements: the names they assign
-        size_t end = body.find(';', start);
-        if (end == std::string_view::npos) end = body.size();
-        std::string_view stmt = trim(body.substr(start, end - start));
-        const size_t eq = stmt.find('=');
-        if (eq != std::string_view::npos && eq > 0 && (eq + 1 == stmt.size() || stmt[eq + 1] != '=') &&
-            std::string_view("<>!=").find(stmt[eq - 1]) == std::string_view::npos) {
-            std::string name(trim(stmt.substr(0, eq)));
-            name = name.substr(0, name.find_first_of(".[ "));
-            if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-        }
-        start = end + 1;
-    }
-    std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-    p.sink().warning(l, word, "'" + std::string(word) + ":' blocks are not run" +
-                                  (list.empty() ? std::string() : " (this one sets " + list + ")") +
-                                  ": the rules use the values set before the axiom");
-}
-const Directive kGlobalBlock{"global block", globalBlockHandler};
-
 }  // namespace
 
 // [SECTION] A file's logical lines
 
-void Parser::buildCpfgLines() {
-    if (size_t open = blankComments(m_text); open != std::string::npos) {
+std::vector<SourceLine> CpfgReader::read(std::string& text, std::string_view original) {
+    m_original = original;
+    if (size_t open = blankComments(text); open != std::string::npos) {
         // Report at the '/*' and read the text before it.
-        size_t lineStart = m_text.rfind('\n', open);
+        size_t lineStart = text.rfind('\n', open);
         lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
         size_t lineEnd = m_original.find('\n', open);
         SourceLine l;
-        l.number = int(std::count(m_text.begin(), m_text.begin() + std::ptrdiff_t(open), '\n')) + 1;
-        l.text = std::string_view(m_text).substr(lineStart, (lineEnd == std::string::npos ? m_text.size() : lineEnd) - lineStart);
-        l.original = std::string_view(m_original).substr(lineStart, l.text.size());
-        m_sink.error(l, l.text.substr(open - lineStart), "this comment '/*' is never closed with '*/'");
+        l.number = int(std::count(text.begin(), text.begin() + std::ptrdiff_t(open), '\n')) + 1;
+        l.text = std::string_view(text).substr(lineStart, (lineEnd == std::string::npos ? text.size() : lineEnd) - lineStart);
+        l.original = m_original.substr(lineStart, l.text.size());
+        m_parser.sink().error(l, l.text.substr(open - lineStart), "this comment '/*' is never closed with '*/'");
     }
     std::vector<std::string> stack;
     if (!m_options.fileName.empty()) stack.push_back(m_options.fileName);
-    readCpfgFile(m_text, "", 0, 0, stack);
+    return readFile(text, "", 0, 0, stack);
 }
 
-bool Parser::readCpfgFile(std::string_view text, const std::string& includeName, int includeLine, int depth,
-                          std::vector<std::string>& stack) {
-    // `text` is m_text itself (comments already blanked) or an included file kept in m_store.
+std::vector<SourceLine> CpfgReader::readFile(std::string_view text, const std::string& includeName, int includeLine,
+                                             int depth, std::vector<std::string>& stack) {
+    // `text` is the grammar's own (comments already blanked) or an included file kept in m_store.
     const bool top = includeName.empty();
     const int originBase = top ? 0 : kIncludeLineBase * int(m_origins.size() + 1);
     if (!top) {
@@ -239,16 +179,17 @@ bool Parser::readCpfgFile(std::string_view text, const std::string& includeName,
         o.includeLine = includeLine;
         m_origins.push_back(o);
     }
-    std::vector<SourceLine> lines = cpfgPhysicalLines(text, top, originBase);
-    joinCpfgContinuations(lines, top);
-    std::vector<SourceLine> body = preprocessCpfg(lines, top, includeLine, depth, stack);
-    putCpfgTextMacros(body);
-    joinCpfgLines(body);
-    return true;
+    std::vector<SourceLine> lines = physicalLines(text, top, originBase);
+    joinContinuations(lines, top);
+    std::vector<SourceLine> body = preprocess(lines, top, includeLine, depth, stack);
+    putTextMacros(body);
+    std::vector<SourceLine> logical;
+    joinLines(body, logical);
+    return logical;
 }
 
 // The text's lines as they stand, numbered from originBase + 1 (an included file's apart).
-std::vector<SourceLine> Parser::cpfgPhysicalLines(std::string_view text, bool top, int originBase) const {
+std::vector<SourceLine> CpfgReader::physicalLines(std::string_view text, bool top, int originBase) const {
     std::vector<SourceLine> lines;
     size_t start = 0;
     int number = 1;
@@ -258,7 +199,7 @@ std::vector<SourceLine> Parser::cpfgPhysicalLines(std::string_view text, bool to
         SourceLine l;
         l.number = originBase + number++;
         l.text = text.substr(start, end - start);
-        if (top) l.original = std::string_view(m_original).substr(start, end - start);
+        if (top) l.original = m_original.substr(start, end - start);
         if (l.text.ends_with('\r')) l.text.remove_suffix(1);
         lines.push_back(l);
         start = end + 1;
@@ -269,17 +210,16 @@ std::vector<SourceLine> Parser::cpfgPhysicalLines(std::string_view text, bool to
 // [SECTION] Productions and blocks written over several lines
 
 // Productions written over several lines become one logical line.
-void Parser::joinCpfgLines(std::vector<SourceLine>& body) {
+void CpfgReader::joinLines(std::vector<SourceLine>& body, std::vector<SourceLine>& lines) {
     for (size_t i = 0; i < body.size(); ++i) {
         std::string_view t = trim(body[i].text);
-        Line out;
-        out.src = body[i];
+        SourceLine out = body[i];
         std::string_view value;
         std::string key = keyOf(t, value);
         if (isStatementBlockKey(key) && value.starts_with("{") && braceDepth(t) > 0) {
             // `define: {` or `EndEach: {` with its statements on the lines after: one line.
-            joinCpfgStatementBlock(body, i);
-            out.src = body[i];
+            joinStatementBlock(body, i);
+            out = body[i];
             t = trim(body[i].text);
             key = keyOf(t, value);
         }
@@ -292,13 +232,13 @@ void Parser::joinCpfgLines(std::vector<SourceLine>& body) {
                                    arrowAt(body[i + 1].text) == std::string_view::npos;
         bool complete = t.empty() || directive || t.starts_with("#") ||
                         (arrowAt(t) != std::string_view::npos && openCount(t) <= 0 && !successorNext);
-        if (!complete) i = joinCpfgProduction(body, i, out);
-        m_lines.push_back(out);
+        if (!complete) i = joinProduction(body, i, out);
+        lines.push_back(out);
     }
 }
 
 // `define: {` ... `}` over several lines: one line, in place of the first.
-void Parser::joinCpfgStatementBlock(std::vector<SourceLine>& body, size_t i) {
+void CpfgReader::joinStatementBlock(std::vector<SourceLine>& body, size_t i) {
     std::string joined(body[i].text);
     size_t j = i;
     while (braceDepth(joined) > 0 && j + 1 < body.size() && j - i < size_t(kMaxJoinedLines)) {
@@ -314,7 +254,7 @@ void Parser::joinCpfgStatementBlock(std::vector<SourceLine>& body, size_t i) {
 // Join while a block or parenthesis is open, or no arrow has come yet and the next line
 // continues the production (a block, the arrow, ':' or L-Py's produce). Returns the last
 // line read into `out` (i when none was joined).
-size_t Parser::joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line& out) {
+size_t CpfgReader::joinProduction(std::vector<SourceLine>& body, size_t i, SourceLine& out) {
     std::string joined(body[i].text);
     Origin o;
     o.pieces.emplace_back(0, body[i].number);
@@ -335,7 +275,7 @@ size_t Parser::joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line&
             break;
         if (!produce && !open && !successor && (startsWithWord(next, "if") || startsWithWord(next, "elif") || startsWithWord(next, "else") ||
                          startsWithWord(next, "for") || startsWithWord(next, "while") || startsWithWord(next, "return"))) {
-            m_sink.error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
+            m_parser.sink().error(body[j + 1], next, "Python code in an L-Py rule is not supported: Sprout reads 'produce ...' alone "
                                             "(write a condition, 'A(x) : x > 1 --> B', instead of 'if')");
             python = true;
             break;
@@ -360,11 +300,11 @@ size_t Parser::joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line&
         // The rule's indented body goes with it.
         for (size_t k = i + 1; k < body.size() && (k <= j + 1 || (!body[k].text.empty() && isSpace(body[k].text[0]))); ++k)
             body[k].text = body[k].text.substr(0, 0);
-        out.src.text = out.src.text.substr(0, 0);
+        out.text = out.text.substr(0, 0);
     } else if (done) {
         m_store.push_back(std::move(joined));
-        out.src.text = m_store.back();
-        out.src.original = m_store.back();
+        out.text = m_store.back();
+        out.original = m_store.back();
         o.logical = body[i].number;
         m_origins.push_back(std::move(o));
         return j;
@@ -372,124 +312,9 @@ size_t Parser::joinCpfgProduction(std::vector<SourceLine>& body, size_t i, Line&
     return i;
 }
 
-// [SECTION] What each line is
-
-void Parser::warnMixed(const SourceLine& line, std::string_view t) {
-    if (m_mixed) return;
-    m_mixed = true;
-    m_sink.warning(line, t, "a line of ABOP's notation or a web tool's in a cpfg file: each line is read as what it is "
-                            "(L-system Explorer's dialect, of the cpfg family)");
-}
-
-void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
-    std::string_view t = trim(l.src.text);
-    l.section = section;
-    if (ended && !t.empty()) {
-        // After `endlsystem`, `lsystem: 2` starts a sub-L-system: its productions rewrite what
-        // stands between `$(2)` and `$`. Anything else there is not read.
-        std::string_view value;
-        if (keyOf(t, value) != "lsystem") return;
-        const auto label = constant(l.src, value);
-        if (!label) return;
-        if (std::find(m_g.subLsystems.begin(), m_g.subLsystems.end(), *label) != m_g.subLsystems.end()) {
-            m_sink.error(l.src, value, "a second sub-L-system with the label " + formatNumber(*label));
-            return;
-        }
-        if (m_g.subLsystems.size() >= 250) {
-            m_sink.error(l.src, value, "more than 250 sub-L-systems");
-            return;
-        }
-        m_g.subLsystems.push_back(*label);
-        m_lsystem = std::uint8_t(m_g.subLsystems.size());
-        ended = false;
-        section = Section::Productions;
-        return;
-    }
-    l.lsystem = m_lsystem;
-    if (ended || t.empty()) return;
-    if (t.starts_with("#ignore")) return classify(l, section);
-    if (t.starts_with("#")) return;
-    if (arrowAt(t) != std::string_view::npos) {
-        l.kind = Line::Rule;
-        return;
-    }
-    // Section keywords stand alone (a word after a ':' is a remark of cpfg's: ignored).
-    const std::string head = sectionWord(t);
-    if (head == "homomorphism" || head == "interpretation") {
-        section = Section::Interpretation;
-        return;
-    }
-    if (head == "decomposition") {
-        section = Section::Decomposition;
-        return;
-    }
-    if (head == "production" || head == "productions") {
-        section = Section::Productions;
-        return;
-    }
-    if (head == "endlsystem") {
-        ended = true;  // what follows (another tool's code, a second L-system) is not read
-        return;
-    }
-    if (head == "group" || head == "endgroup") {
-        m_sink.warning(l.src, t, "production groups are not supported: all productions are used");
-        return;
-    }
-    if (startsWithWord(t, "module")) {  // L-Py: `module Apex(x), Internode`
-        std::string names;
-        int depth = 0;
-        for (char c : t.substr(6)) {
-            if (c == '(') ++depth;
-            else if (c == ')') --depth;
-            else if (depth == 0) names += c;
-        }
-        m_store.push_back(std::move(names));
-        l.kind = Line::DirectiveLine;
-        l.value = m_store.back();
-        for (const auto& d : directives())
-            if (std::string_view(d.name) == "module") l.directive = &d;
-        return;
-    }
-    std::string_view value;
-    std::string key = keyOf(t, value);
-    if (key.empty()) {
-        // Not a cpfg line: read as the .lsys and ABOP notation lines are (`delta=25.7`,
-        // `n=5`, `ω: F`), whichever dialect the file's other lines come from (the web's cpfg
-        // family mixes them). Said once, at the first such line.
-        if (!t.starts_with("//")) warnMixed(l.src, t);
-        return classify(l, section);
-    }
-    l.value = value;
-    if (key == "lsystem") return;
-    std::string name = key;
-    if (auto it = cpfgKeys().find(key); it != cpfgKeys().end()) name = it->second;
-    if (key == "consider") l.directive = &kConsider;
-    else if (key == "surface") l.directive = &kSurface;
-    else if (key == "maximum depth") l.directive = &kMaximumDepth;
-    else if (key == "angle factor") l.directive = &kAngleFactor;
-    else if (key == "define" && value.starts_with("{")) l.directive = &kDefineBlock;
-    else if (isStatementBlockKey(key) && key != "define") l.directive = &kGlobalBlock;
-    else
-        for (const auto& d : directives())
-            if (name == d.name) l.directive = &d;
-    if (!l.directive && (settingAlias(key) || isForeignSetting(key))) {
-        // A setting of the .lsys family's dialects (`dlength: 10`, `stemsize: 0.1`): as the
-        // .lsys reader reads it.
-        warnMixed(l.src, t);
-        l.value = {};
-        return classify(l, section);
-    }
-    if (!l.directive) {
-        m_sink.warning(l.src, trim(l.src.text.substr(0, l.src.text.find(':'))),
-                       "'" + std::string(trim(t.substr(0, t.find(':')))) + ":' is not a setting Sprout knows (another tool's?): ignored");
-        return;
-    }
-    l.kind = Line::DirectiveLine;
-}
-
 // [SECTION] Diagnostics at the lines they were written on
 
-void Parser::finishCpfg(std::vector<Diagnostic>& diags) {
+void CpfgReader::placeDiagnostics(std::vector<Diagnostic>& diags) const {
     std::map<int, const Origin*> byLine;
     for (const auto& o : m_origins)
         if (!o.pieces.empty()) byLine[o.logical] = &o;

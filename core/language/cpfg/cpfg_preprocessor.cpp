@@ -1,10 +1,12 @@
 // The cpfg family's C preprocessor, as the grammar's reader meets it (cpfg manual): C
 // comments, lines continued with '\\', #define (numbers become sliders, function-like macros
 // are expanded in expressions, any other text is put in place where its name is used) and
-// #include of files beside the grammar. cpfg_lines.cpp reads the lines it leaves.
+// #include of files beside the grammar: the CpfgReader's first steps. cpfg_lines.cpp makes
+// the lines it leaves logical lines.
 #include <algorithm>
 #include <cctype>
 
+#include "core/language/cpfg/cpfg_reader.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
@@ -16,7 +18,7 @@ constexpr int kMaxIncludeDepth = 16;
 
 // Comments become spaces (newlines kept), so every position in the text stays where it was.
 // Returns the offset of an unterminated `/*`, or npos.
-size_t Parser::blankComments(std::string& text) {
+size_t CpfgReader::blankComments(std::string& text) {
     size_t i = 0;
     while (i + 1 < text.size()) {
         if (text[i] == '"') {  // an #include "name" may hold '//'
@@ -51,7 +53,7 @@ size_t Parser::blankComments(std::string& text) {
 
 // A line that ends with '\\' goes on on the next one (the C preprocessor's continuation,
 // in multi-line #defines): one line, at the first line's number.
-void Parser::joinCpfgContinuations(std::vector<SourceLine>& lines, bool top) {
+void CpfgReader::joinContinuations(std::vector<SourceLine>& lines, bool top) {
     for (size_t i = 0; i + 1 < lines.size(); ++i) {
         std::string_view t = lines[i].text;
         while (!t.empty() && isSpace(t.back())) t.remove_suffix(1);
@@ -76,7 +78,7 @@ void Parser::joinCpfgContinuations(std::vector<SourceLine>& lines, bool top) {
 
 // Preprocessor lines first, in order: #define and #include. Returns the other lines, an
 // included file's in place of its #include.
-std::vector<SourceLine> Parser::preprocessCpfg(const std::vector<SourceLine>& lines, bool top, int includeLine,
+std::vector<SourceLine> CpfgReader::preprocess(const std::vector<SourceLine>& lines, bool top, int includeLine,
                                                int depth, std::vector<std::string>& stack) {
     std::vector<SourceLine> body;
     for (const auto& src : lines) {
@@ -88,14 +90,14 @@ std::vector<SourceLine> Parser::preprocessCpfg(const std::vector<SourceLine>& li
         std::string_view word = t.substr(0, t.find_first_of(" \t\"<"));
         std::string_view rest = trim(t.substr(word.size()));
         if (word == "#define") {
-            readCpfgDefine(src, rest, top);
+            readDefine(src, rest, top);
         } else if (word == "#include") {
-            readCpfgInclude(src, t, rest, top, includeLine, depth, stack, body);
+            readInclude(src, t, rest, top, includeLine, depth, stack, body);
         } else if (word == "#ignore") {
             body.push_back(src);  // read by the `ignore` directive below
         } else if (word == "#ifdef" || word == "#ifndef" || word == "#if" || word == "#else" || word == "#endif" ||
                    word == "#undef" || word == "#elif") {
-            m_sink.warning(src, word, "'" + std::string(word) + "' is not supported: every line is read");
+            m_parser.sink().warning(src, word, "'" + std::string(word) + "' is not supported: every line is read");
         }
         // Any other '#' line is a comment (L-Py files use Python's '#').
     }
@@ -103,18 +105,18 @@ std::vector<SourceLine> Parser::preprocessCpfg(const std::vector<SourceLine>& li
 }
 
 // `#define NAME value`, `#define NAME(a, b) body` or `#define FLAG` (`rest` follows the word).
-void Parser::readCpfgDefine(const SourceLine& src, std::string_view rest, bool top) {
+void CpfgReader::readDefine(const SourceLine& src, std::string_view rest, bool top) {
     size_t nameEnd = 0;
     while (nameEnd < rest.size() && isIdentChar(rest[nameEnd])) ++nameEnd;
     std::string name(rest.substr(0, nameEnd));
     if (name.empty()) {
-        m_sink.error(src, rest, "expected '#define NAME value'");
+        m_parser.sink().error(src, rest, "expected '#define NAME value'");
         return;
     }
     if (nameEnd < rest.size() && rest[nameEnd] == '(') {  // function-like
         size_t close = rest.find(')', nameEnd);
         if (close == std::string_view::npos) {
-            m_sink.error(src, rest.substr(nameEnd), "this '(' is never closed");
+            m_parser.sink().error(src, rest.substr(nameEnd), "this '(' is never closed");
             return;
         }
         ExprMacro m;
@@ -129,7 +131,7 @@ void Parser::readCpfgDefine(const SourceLine& src, std::string_view rest, bool t
         }
         m.body = std::string(trim(rest.substr(close + 1)));
         if (m.body.empty()) {
-            m_sink.error(src, rest, "'#define " + name + "(...)' needs a body");
+            m_parser.sink().error(src, rest, "'#define " + name + "(...)' needs a body");
             return;
         }
         m_macros[name] = std::move(m);
@@ -138,18 +140,19 @@ void Parser::readCpfgDefine(const SourceLine& src, std::string_view rest, bool t
     std::string_view value = trim(rest.substr(nameEnd));
     if (value.empty()) {
         // `#define DEBUG`: a flag for #ifdef, nothing to compute.
-        m_g.defines.emplace(name, 1.0);
+        m_parser.grammar().defines.emplace(name, 1.0);
         return;
     }
     // A number (or an expression of numbers) is a constant with a slider; anything
     // else (`#define LEAF ~l(2)`) is text put in place where its name is used.
     DiagnosticSink scratch;
-    ExprScope scope{nullptr, &m_g.defines, &m_macros};
+    Grammar& g = m_parser.grammar();
+    ExprScope scope{nullptr, &g.defines, &m_macros};
     if (compileExpr(value, src, scope, scratch)) {
-        define(src, rest);
+        m_parser.define(src, rest);
         // A slider writes its value back into the text it edits: only the grammar's
         // own defines get one, not those of an included file.
-        if (!top && !m_g.defineOrder.empty() && m_g.defineOrder.back() == name) m_g.defineOrder.pop_back();
+        if (!top && !g.defineOrder.empty() && g.defineOrder.back() == name) g.defineOrder.pop_back();
     } else {
         m_textMacros.emplace_back(name, std::string(value));
     }
@@ -157,7 +160,7 @@ void Parser::readCpfgDefine(const SourceLine& src, std::string_view rest, bool t
 
 // `#include "file"`: the file's lines read now and added to `body`, in order (`t` is the
 // whole line, `rest` what follows the word).
-void Parser::readCpfgInclude(const SourceLine& src, std::string_view t, std::string_view rest, bool top,
+void CpfgReader::readInclude(const SourceLine& src, std::string_view t, std::string_view rest, bool top,
                              int includeLine, int depth, std::vector<std::string>& stack,
                              std::vector<SourceLine>& body) {
     std::string_view name = rest;
@@ -165,27 +168,27 @@ void Parser::readCpfgInclude(const SourceLine& src, std::string_view t, std::str
         (name.starts_with("<") && name.ends_with(">") && name.size() >= 2))
         name = name.substr(1, name.size() - 2);
     else {
-        m_sink.error(src, rest.empty() ? t : rest, "expected '#include \"file\"'");
+        m_parser.sink().error(src, rest.empty() ? t : rest, "expected '#include \"file\"'");
         return;
     }
     std::string file(name);
     if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
-        m_sink.error(src, rest, "'" + file + "' includes itself" +
+        m_parser.sink().error(src, rest, "'" + file + "' includes itself" +
                                     (stack.size() > 1 && file != stack.back() ? " through '" + stack.back() + "'" : ""));
         return;
     }
     if (depth >= kMaxIncludeDepth) {
-        m_sink.error(src, rest, "#include is nested too deeply (more than 16 files)");
+        m_parser.sink().error(src, rest, "#include is nested too deeply (more than 16 files)");
         return;
     }
     if (!m_options.include) {
-        m_sink.error(src, rest, "#include \"" + file + "\" needs the grammar's folder: save the grammar beside it first");
+        m_parser.sink().error(src, rest, "#include \"" + file + "\" needs the grammar's folder: save the grammar beside it first");
         return;
     }
     std::string error;
     auto included = m_options.include(file, error);
     if (!included) {
-        m_sink.error(src, rest, "cannot include '" + file + "': " + error);
+        m_parser.sink().error(src, rest, "cannot include '" + file + "': " + error);
         return;
     }
     m_store.push_back(std::move(*included));
@@ -193,33 +196,29 @@ void Parser::readCpfgInclude(const SourceLine& src, std::string_view t, std::str
     for (size_t k = 0; k < stored.size(); ++k)
         if (stored[k] == '\r' && (k + 1 == stored.size() || stored[k + 1] != '\n')) stored[k] = '\n';
     if (size_t open = blankComments(stored); open != std::string::npos) {
-        m_sink.error(src, rest, "in '" + file + "': a comment '/*' is never closed with '*/'");
+        m_parser.sink().error(src, rest, "in '" + file + "': a comment '/*' is never closed with '*/'");
         return;
     }
     stack.push_back(file);
     // The included lines take their place here: read them now, in order.
-    std::vector<Line> saved = std::move(m_lines);
-    m_lines.clear();
-    readCpfgFile(stored, file, top ? src.number : includeLine, depth + 1, stack);
-    std::vector<Line> inner = std::move(m_lines);
-    m_lines = std::move(saved);
+    std::vector<SourceLine> inner = readFile(stored, file, top ? src.number : includeLine, depth + 1, stack);
     stack.pop_back();
     // Keep the order: flush what came before, then the included lines.
-    for (const auto& l : inner) body.push_back(l.src);
+    for (const auto& l : inner) body.push_back(l);
 }
 
 // Textual #defines put in place (the line keeps its number; columns after a replacement
 // are counted in the replaced text). As the C preprocessor does, a macro is not expanded
 // again inside its own expansion (`#define a &(a) F` would otherwise grow without end),
 // and an expansion past 64 KB is refused.
-void Parser::putCpfgTextMacros(std::vector<SourceLine>& body) {
+void CpfgReader::putTextMacros(std::vector<SourceLine>& body) {
     if (m_textMacros.empty()) return;
     for (auto& l : body) {
         std::vector<std::string> active;
         bool tooLong = false;
         std::string expanded = expandTextMacros(l.text, active, tooLong);
         if (tooLong) {
-            m_sink.error(l, l.text, "the #define names on this line expand to more than 64 KB of text");
+            m_parser.sink().error(l, l.text, "the #define names on this line expand to more than 64 KB of text");
             l.text = l.text.substr(0, 0);
             continue;
         }
@@ -231,7 +230,7 @@ void Parser::putCpfgTextMacros(std::vector<SourceLine>& body) {
     }
 }
 
-std::string Parser::expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const {
+std::string CpfgReader::expandTextMacros(std::string_view text, std::vector<std::string>& active, bool& tooLong) const {
     std::string out;
     size_t i = 0;
     while (i < text.size() && !tooLong) {

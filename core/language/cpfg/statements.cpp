@@ -28,9 +28,9 @@ size_t skipSpaces(std::string_view s, size_t i) {
 
 class BlockParser {
 public:
-    BlockParser(Parser& parser, const SourceLine& line, const std::vector<std::string>& params,
-                const std::unordered_map<std::string, ExprMacro>& macros)
-        : m_parser(parser), m_line(line), m_params(params), m_scope{&params, &parser.grammar().defines, &macros} {}
+    BlockParser(DiagnosticSink& sink, const SourceLine& line, const std::vector<std::string>& params,
+                const ExprScope& scope)
+        : m_sink(sink), m_line(line), m_params(params), m_scope(scope) {}
 
     bool statements(std::string_view text, std::vector<Statement>& out) {
         size_t i = 0;
@@ -43,7 +43,7 @@ public:
 
 private:
     bool fail(std::string_view at, std::string message) {
-        m_parser.sink().error(m_line, at, std::move(message));
+        m_sink.error(m_line, at, std::move(message));
         return false;
     }
 
@@ -72,7 +72,7 @@ private:
             if (close == std::string_view::npos) return fail(text.substr(i), "this '(' is never closed");
             Statement s;
             s.kind = Statement::Kind::If;
-            auto test = compileExpr(text.substr(i + 1, close - i - 1), m_line, m_scope, m_parser.sink());
+            auto test = compileExpr(text.substr(i + 1, close - i - 1), m_line, m_scope, m_sink);
             if (!test) return false;
             s.expr = std::move(*test);
             i = skipSpaces(text, close + 1);
@@ -108,7 +108,7 @@ private:
         size_t slot = 0;
         while (slot < m_params.size() && m_params[slot] != name) ++slot;
         s.slot = std::uint16_t(slot);
-        auto value = compileExpr(text.substr(i, end - i), m_line, m_scope, m_parser.sink());
+        auto value = compileExpr(text.substr(i, end - i), m_line, m_scope, m_sink);
         if (!value) return false;
         s.expr = std::move(*value);
         out.push_back(std::move(s));
@@ -116,7 +116,7 @@ private:
         return true;
     }
 
-    Parser& m_parser;
+    DiagnosticSink& m_sink;
     const SourceLine& m_line;
     const std::vector<std::string>& m_params;
     ExprScope m_scope;
@@ -124,12 +124,12 @@ private:
 
 }  // namespace
 
-bool Parser::parseBlock(const SourceLine& line, std::string_view text, const std::vector<std::string>& params,
-                        std::vector<Statement>& out) {
-    return BlockParser(*this, line, params, m_macros).statements(text, out);
+bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
+                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out) {
+    return BlockParser(sink, line, params, scope).statements(text, out);
 }
 
-void Parser::collectAssigned(std::string_view text, std::vector<std::string>& names) {
+void collectAssigned(std::string_view text, std::vector<std::string>& names) {
     for (size_t i = 0; i < text.size();) {
         if (!identStart(text[i]) || (i > 0 && (isIdentChar(text[i - 1]) || text[i - 1] == '.'))) {
             ++i;
@@ -145,14 +145,14 @@ void Parser::collectAssigned(std::string_view text, std::vector<std::string>& na
     }
 }
 
-bool Parser::splitCpfgCondition(const SourceLine& line, std::string_view text, std::string_view& pre,
-                                std::string_view& condition, std::string_view& post) {
+bool splitCpfgCondition(DiagnosticSink& sink, const SourceLine& line, std::string_view text, std::string_view& pre,
+                        std::string_view& condition, std::string_view& post) {
     pre = post = {};
     std::string_view t = trim(text);
     if (t.starts_with("{")) {
         size_t close = matching(t, 0);
         if (close == std::string_view::npos) {
-            m_sink.error(line, t, "this '{' is never closed with '}'");
+            sink.error(line, t, "this '{' is never closed with '}'");
             return false;
         }
         pre = t.substr(1, close - 1);
@@ -171,14 +171,14 @@ bool Parser::splitCpfgCondition(const SourceLine& line, std::string_view text, s
             }
         }
         if (open == std::string_view::npos) {
-            m_sink.error(line, t.substr(t.size() - 1), "this '}' closes a block that was never opened with '{'");
+            sink.error(line, t.substr(t.size() - 1), "this '}' closes a block that was never opened with '{'");
             return false;
         }
         post = t.substr(open + 1, t.size() - open - 2);
         t = trim(t.substr(0, open));
     }
     if (size_t brace = t.find_first_of("{}"); brace != std::string_view::npos) {
-        m_sink.error(line, t.substr(brace), "a block '{ ... }' goes before or after the condition, not inside it");
+        sink.error(line, t.substr(brace), "a block '{ ... }' goes before or after the condition, not inside it");
         return false;
     }
     condition = t;
