@@ -27,14 +27,11 @@ namespace sprout::lpy {
 
 namespace py = pybind11;
 
-
 // A Python error raised while running the model: where in the file, and the message.
 struct ModelError {
     int line = 0, col = 0;
     std::string message;
 };
-
-
 
 class Engine {
 public:
@@ -168,7 +165,6 @@ private:
 Engine* currentEngine();
 // Makes `e` the engine of this thread; gives the one before.
 Engine* setCurrentEngine(Engine* e);
-
 
 // Strings and Python values as an engine reads and writes them, without one (the Python
 // API's Lstrings made outside a derivation): `classes` names the modules (new names are
