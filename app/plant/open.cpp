@@ -46,6 +46,7 @@ OpenedText openText(const std::string& text, FileKind kind, const std::string& p
 
 std::optional<LoadedGrammar> openPlant(const std::string& source, const LoadOptions& options, const Report& report) {
     SourceText read = readSource(source);
+    for (const std::string& note : read.notes) report(note);
     for (const auto& d : read.diagnostics) report(formatDiagnostic(d, read.diagnosticsName));
     if (!read.error.empty()) report(read.error);
     if (!read.ok()) return std::nullopt;

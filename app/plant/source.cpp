@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"
+#include "app/plant/vlab_object.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
 
@@ -29,8 +30,20 @@ SourceText readSource(const std::string& source) {
         out.kind = detectFileKind("", out.text);
     } else if (::stat(path.c_str(), &st) == 0) {
         if (S_ISDIR(st.st_mode)) {
-            out.error = path + ": is a directory, not a grammar file";
-            return out;
+            // A VLab object opens with the L-system its cpfg line runs (vlab_object.hpp).
+            std::optional<VlabObject> object = readVlabObject(path);
+            if (!object) {
+                out.error = path + ": is a directory, not a grammar file";
+                return out;
+            }
+            if (hasErrors(object->diagnostics)) {
+                out.diagnostics = std::move(object->diagnostics);
+                out.diagnosticsName = object->specifications;
+                return out;
+            }
+            for (const Diagnostic& d : object->diagnostics) out.notes.push_back(formatDiagnostic(d, object->specifications));
+            path = object->lsystem;
+            out.displayName = path;
         }
         std::optional<std::string> bytes = readFile(path);
         if (!bytes) {

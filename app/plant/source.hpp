@@ -1,7 +1,7 @@
 #pragma once
 // What a source names, read: a file of any kind Sprout opens (FILE.l:System picks a Fractint
 // system; Lparser and Fractint files become .lsys text, a PNG gives the grammar it carries),
-// standard input ("-"), or a preset's name. Shared by openPlant (app/plant/open.hpp) and
+// standard input ("-"), a VLab object's folder (the L-system its cpfg line runs), or a preset's name. Shared by openPlant (app/plant/open.hpp) and
 // the Python module (python/), which runs L-Py models its own way.
 #include <optional>
 #include <string>
@@ -21,6 +21,9 @@ struct SourceText {
     std::vector<Diagnostic> diagnostics;  // the file's own, at its lines (named `diagnosticsName`)
     std::string diagnosticsName;
     std::string error;         // set when there is no grammar: the whole message, with the name
+    // What the source says beside its grammar, each a whole line with its file: a VLab
+    // object's files that are not read yet (warnings).
+    std::vector<std::string> notes;
     bool ok() const { return error.empty() && !hasErrors(diagnostics); }
 };
 

@@ -294,4 +294,40 @@ TEST(Cli, ExplosiveGrowthIsRefusedBeforeTakingTheMemory) {
     getrusage(RUSAGE_CHILDREN, &usage);
     EXPECT_LT(usage.ru_maxrss, 400L * 1024) << "KB";
 }
+// A VLab object's folder (issue 50): it opens with the L-system its specifications' cpfg line
+// runs (read as cpfg reads its arguments: -M takes a file, -w two numbers), and what is not
+// read yet is named at its column of that line.
+TEST(VlabObject, AFolderOpensWithTheLsystemItsCpfgLineRuns) {
+    namespace fs = std::filesystem;
+    const fs::path folder = fs::path(testing::TempDir()) / ("vlab_object_" + std::to_string(getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "specifications") << "ignore:\n*\nmodel:\n\tgenerate:\n\t\tcpfg -w 300 500 -M shoot.mat shoot.l shoot.v\n";
+    std::ofstream(folder / "shoot.l") << "#define STEPS 3\nLsystem: 1\nderivation length: STEPS\nAxiom: A\nA --> F[+A][-A]\nendlsystem\n";
+    std::ofstream(folder / "shoot.v") << "angle factor: 8\n";
+    const Result direct = runSprout("expand " + (folder / "shoot.l").string());
+    ASSERT_EQ(direct.code, 0) << direct.err;
+    const Result object = runSprout("expand " + folder.string());
+    EXPECT_EQ(object.code, 0) << object.err;
+    EXPECT_EQ(object.out, direct.out);
+    EXPECT_EQ(object.out, "F[+F[+F[+A][-A]][-F[+A][-A]]][-F[+F[+A][-A]][-F[+A][-A]]]\n");
+    const std::string spec = (folder / "specifications").string();
+    EXPECT_NE(object.err.find(spec + ":5:8: warning: '-w 300 500' (its window's size) is not read yet"), std::string::npos) << object.err;
+    EXPECT_NE(object.err.find(spec + ":5:19: warning: '-M shoot.mat' (its material set) is not read yet"), std::string::npos) << object.err;
+    EXPECT_NE(object.err.find(spec + ":5:40: warning: the view file shoot.v is not read yet"), std::string::npos) << object.err;
+    EXPECT_EQ(runSprout("render " + folder.string() + " -o " + (folder / "shot.png").string() + " --size 160x120").code, 0);
+    EXPECT_TRUE(fs::exists(folder / "shot.png"));
+
+    // A cpfg option cpfg does not know, or a line with no L-system, is said at its column.
+    std::ofstream(folder / "specifications") << "model:\n\tcpfg -Q shoot.l shoot.v\n";
+    EXPECT_EQ(runSprout("expand " + folder.string()).err, spec + ":2:7: cpfg has no option '-Q'\n");
+    std::ofstream(folder / "specifications") << "model:\n  cpfg -M shoot.mat\n";
+    const Result none = runSprout("expand " + folder.string());
+    EXPECT_EQ(none.code, 1);
+    EXPECT_NE(none.err.find(spec + ":2:3: cpfg's line names no L-system\n"), std::string::npos) << none.err;
+    std::ofstream(folder / "specifications") << "model:\n  lpfg plant.l\n";
+    EXPECT_EQ(runSprout("expand " + folder.string()).err,
+              spec + ": no line of it runs cpfg: Sprout opens the VLab objects whose model cpfg draws\n");
+    fs::remove_all(folder);
+}
+
 }  // namespace

@@ -1,0 +1,115 @@
+#include "app/plant/vlab_object.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "core/base/read_file.hpp"
+
+namespace sprout {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Word {
+    std::string text;
+    int col = 0;  // 1-based
+};
+
+std::vector<Word> wordsOf(const std::string& line) {
+    std::vector<Word> out;
+    for (size_t i = 0; i < line.size();) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        const size_t begin = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        if (i > begin) out.push_back({line.substr(begin, i - begin), int(begin) + 1});
+    }
+    return out;
+}
+
+// How many arguments cpfg's option takes (control.c, ReadCommandLine); -1: an option it refuses.
+int argumentsOf(const std::string& option) {
+    static const char* outputs[] = {"rgb", "png", "bmp", "gif", "jpg", "pbm", "tiff", "ras", "tga",
+                                    "rle", "ray", "ps",  "str", "vv",  "strb", "gls", "obj"};
+    const std::string name = option.substr(1);
+    for (const char* o : outputs)
+        if (name == o) return 1;  // an output file
+    switch (name.empty() ? '\0' : name[0]) {
+        case 'a': case 'c': case 'd': case 'g': case 'h': case 'p': case 's': case 'v': case 'V': return 0;
+        case 'b': case 'C': case 'S': case 'e': case 'M': case 'P': return 1;
+        case 'm': return name == "mb" ? 0 : 1;
+        case 'r': return name == "rmode" ? 1 : 0;
+        case 'w':
+            if (name == "wt") return 1;
+            if (name == "wnb" || name == "wnm") return 0;
+            return 2;  // -wr, -wpr, -wp, and -w: two numbers
+        default: return -1;
+    }
+}
+
+// What an option of the picture or the derivation does in cpfg, for the warning that says it is
+// not read yet; empty for the options that concern cpfg's own window and files only.
+std::string notReadYet(const std::string& option) {
+    const std::string name = option.substr(1);
+    if (name[0] == 'M') return "its material set";
+    if (name[0] == 'm' && name != "mb") return "its colour map";
+    if (name == "e") return "its environment";
+    if (name == "a") return "starting in animation";
+    if (name == "w") return "its window's size";
+    return {};
+}
+
+}  // namespace
+
+std::optional<VlabObject> readVlabObject(const std::string& folder) {
+    const fs::path specifications = fs::path(folder) / "specifications";
+    std::error_code ec;
+    if (!fs::is_regular_file(specifications, ec)) return std::nullopt;
+    VlabObject out;
+    out.specifications = specifications.string();
+    auto error = [&](int line, int col, std::string message) {
+        out.diagnostics.push_back({line, col, std::move(message), Severity::Error});
+    };
+    auto warning = [&](int line, int col, std::string message) {
+        out.diagnostics.push_back({line, col, std::move(message), Severity::Warning});
+    };
+    std::istringstream in(readFile(specifications).value_or(""));
+    std::string text;
+    for (int number = 1; std::getline(in, text); ++number) {
+        const std::vector<Word> words = wordsOf(text);
+        if (words.empty() || words[0].text != "cpfg") continue;
+        std::string* files[] = {&out.lsystem, &out.view, &out.animation};
+        size_t positional = 0;
+        for (size_t k = 1; k < words.size(); ++k) {
+            const Word& w = words[k];
+            if (w.text[0] == '-') {
+                const int n = argumentsOf(w.text);
+                if (n < 0) {
+                    error(number, w.col, "cpfg has no option '" + w.text + "'");
+                    return out;
+                }
+                if (n > 0 && k + size_t(n) >= words.size()) {
+                    error(number, w.col, "cpfg's option '" + w.text + "' takes " + std::to_string(n) + " argument" + (n > 1 ? "s" : ""));
+                    return out;
+                }
+                std::string what = notReadYet(w.text);
+                std::string given = w.text;
+                for (int a = 0; a < n; ++a) given += " " + words[k + 1 + size_t(a)].text;
+                if (!what.empty()) warning(number, w.col, "'" + given + "' (" + what + ") is not read yet");
+                k += size_t(n);
+            } else if (positional < 3) {
+                *files[positional++] = (fs::path(folder) / w.text).string();
+                if (positional == 2) warning(number, w.col, "the view file " + w.text + " is not read yet");
+                if (positional == 3) warning(number, w.col, "the animation file " + w.text + " is not read yet");
+            } else {
+                error(number, w.col, "cpfg takes an L-system, a view file and an animation file; '" + w.text + "' is one more");
+                return out;
+            }
+        }
+        if (out.lsystem.empty()) error(number, words[0].col, "cpfg's line names no L-system");
+        return out;
+    }
+    error(0, 0, "no line of it runs cpfg: Sprout opens the VLab objects whose model cpfg draws");
+    return out;
+}
+
+}  // namespace sprout
