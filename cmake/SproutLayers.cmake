@@ -19,6 +19,9 @@
 # Also run as a script (cmake -DSPROUT_ROOT=DIR -P cmake/SproutLayers.cmake): the test
 # tests/layers/ runs it over the tree, and over trees with a wrong include, which must fail.
 
+# core/'s stages, in order (core/CMakeLists.txt builds them, packaging/ installs them).
+set(SPROUT_STAGES base language turtle environment derive scene)
+
 # Usage: sprout_check_layer(FOLDER [FILES glob...] [EXCEPT name...] ALLOWED prefix... [FORBIDDEN prefix...])
 # FILES: globs under FOLDER (default: every C/C++ source under it, recursively); EXCEPT: files
 # of FOLDER left to a check of their own.
@@ -96,7 +99,7 @@ endfunction()
 function(sprout_check_layers)
   # core/'s stages (core/CMakeLists.txt links them in the same order), each allowed those below.
   set(below "")
-  foreach(stage base language turtle environment derive scene)
+  foreach(stage ${SPROUT_STAGES})
     list(APPEND below core/${stage}/)
     sprout_check_layer(core/${stage} ALLOWED ${below})
   endforeach()

@@ -25,7 +25,6 @@
 #include "app/plant/open.hpp"
 #include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
-#include "core/derive/draw.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/import/import.hpp"

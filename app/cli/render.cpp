@@ -19,15 +19,12 @@
 #include "core/language/import/import.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/scene/forest.hpp"
-#include "core/scene/ifs.hpp"
 
 #include <algorithm>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <thread>
 #include <unistd.h>

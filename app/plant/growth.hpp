@@ -27,7 +27,6 @@ public:
     std::shared_ptr<const ModuleString> step(int n) { return m_derivation.step(n); }
     std::shared_ptr<const PodBuffer<std::uint16_t>> ages(int n) const { return m_derivation.ages(n); }
     std::uint64_t seed() const { return m_derivation.seed(); }
-    const Grammar& grammar() const { return m_derivation.grammar(); }
     // The derivation itself: its statistics and records (`sprout expand --stats`, provenance).
     Derivation& derivation() { return m_derivation; }
 

@@ -1,11 +1,5 @@
 #include "app/plant/open.hpp"
 
-#include <cstdio>
-#include <fstream>
-#include <iostream>
-#include <iterator>
-#include <sstream>
-#include <filesystem>
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"

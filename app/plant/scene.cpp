@@ -10,6 +10,15 @@
 
 namespace sprout {
 
+std::optional<std::string> speciesText(const std::string& name, const std::vector<std::filesystem::path>& folders) {
+    for (const std::filesystem::path& folder : folders) {
+        const std::filesystem::path p = folder / name;
+        if (std::filesystem::exists(p)) return readFile(p).value_or("");
+    }
+    if (auto t = presetText(name)) return std::string(*t);
+    return std::nullopt;
+}
+
 GrownScene growScene(const std::string& text, const std::string& path, std::optional<std::uint64_t> seed,
                      const GrammarSource& species, const DeriveLimits& limits, Geometry& geometry,
                      std::vector<ForestPlant>* plants) {
@@ -37,12 +46,7 @@ bool buildForestScene(const std::string& source, std::optional<std::uint64_t> se
     } else if (auto preset = presetText(source)) {
         text = std::string(*preset);
     }
-    auto species = [&](const std::string& name) -> std::optional<std::string> {
-        std::filesystem::path p = dir / name;
-        if (std::filesystem::exists(p)) return readFile(p).value_or("");
-        if (auto t = presetText(name)) return std::string(*t);
-        return std::nullopt;
-    };
+    auto species = [&](const std::string& name) { return speciesText(name, {dir}); };
     GrownScene grown = growScene(text, path, seed, species, limits, geometry);
     for (const auto& d : grown.diagnostics) report(formatDiagnostic(d, source));
     if (!grown.parsed) return false;

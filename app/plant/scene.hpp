@@ -4,6 +4,7 @@
 // the command line and the viewer's worker.
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ struct GrownScene {
 GrownScene growScene(const std::string& text, const std::string& path, std::optional<std::uint64_t> seed,
                      const GrammarSource& species, const DeriveLimits& limits, Geometry& geometry,
                      std::vector<ForestPlant>* plants = nullptr);
+
+// A forest scene's species `name`: the file of that name in the first of `folders` where one
+// is (its text), else the preset of that name; nullopt when there is neither.
+std::optional<std::string> speciesText(const std::string& name, const std::vector<std::filesystem::path>& folders);
 
 // A forest scene (.forest file or scene preset) built into one geometry, its species presets or
 // files beside the scene's file; `text` is the scene as written. Reports diagnostics; false

@@ -1,9 +1,7 @@
 #include "app/plant/source.hpp"
 
-#include <fstream>
 #include <iostream>
 #include <iterator>
-#include <sstream>
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"

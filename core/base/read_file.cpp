@@ -6,21 +6,21 @@
 
 namespace sprout {
 
-std::optional<std::string> readFile(const std::filesystem::path& path, ReadFailure* why) {
-    auto fail = [why](ReadFailure f) -> std::optional<std::string> {
-        if (why) *why = f;
-        return std::nullopt;
-    };
+std::optional<std::string> readFile(const std::filesystem::path& path) {
     std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    // errno says it too, for messages written with strerror.
-    if (status.type() == std::filesystem::file_type::not_found) return errno = ENOENT, fail(ReadFailure::Missing);
-    if (status.type() == std::filesystem::file_type::directory) return errno = EISDIR, fail(ReadFailure::Directory);
+    const auto type = std::filesystem::status(path, ec).type();
+    if (type == std::filesystem::file_type::not_found) {
+        errno = ENOENT;
+        return std::nullopt;
+    }
+    if (type == std::filesystem::file_type::directory) {
+        errno = EISDIR;
+        return std::nullopt;
+    }
     std::ifstream in(path, std::ios::binary);
-    if (!in) return fail(ReadFailure::Unreadable);
+    if (!in) return std::nullopt;
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return fail(ReadFailure::Unreadable);
-    if (why) *why = ReadFailure::None;
+    if (in.bad()) return std::nullopt;
     return bytes;
 }
 

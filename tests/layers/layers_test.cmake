@@ -54,6 +54,5 @@ foreach(entry IN LISTS wrong)
   if(rc EQUAL 0 OR NOT flat MATCHES "${file}")
     message(FATAL_ERROR "the layer check let ${file} hold '${line}' (exit ${rc}):\n${err}")
   endif()
-  # And the same file with an include its layer may use passes.
 endforeach()
 message(STATUS "${n} wrong includes refused, each naming its file")

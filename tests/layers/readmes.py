@@ -7,10 +7,12 @@ Usage: readmes.py SOURCE_DIR (prints each file no README names and exits 1, or e
 import pathlib, sys
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
 missing = []
+checked = 0
 for top in ["core", "app", "lpy", "python"]:
     for p in sorted((root / top).rglob("*")):
-        if not p.is_file() or p.suffix not in (".cpp", ".hpp", ".h", ".c", ".py") or "tests" in p.parts:
+        if not p.is_file() or p.suffix not in (".cpp", ".hpp", ".h", ".c", ".py") or "tests" in p.relative_to(root).parts:
             continue
+        checked += 1
         d = p.parent
         while not (d / "README.md").exists() and d != root / top:
             d = d.parent
@@ -23,5 +25,7 @@ for top in ["core", "app", "lpy", "python"]:
         stem_forms = {p.name, rel, p.stem + ".{hpp,cpp}", p.stem + ".{h,c}"}
         if not any(f in text for f in stem_forms):
             missing.append(f"{p.relative_to(root)}: not named by {readme.relative_to(root)}")
-print("\n".join(missing) if missing else "every file is named by its folder's README")
+if checked == 0:
+    missing.append(f"{root}: no source file under core/, app/, lpy/ or python/ (not Sprout's tree?)")
+print("\n".join(missing) if missing else f"each of {checked} files is named by its folder's README")
 sys.exit(1 if missing else 0)

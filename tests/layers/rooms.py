@@ -99,11 +99,13 @@ def index_problems(rel, text, comment):
 
 def rooms(root):
     bad = []
+    read = 0
     for folder in FOLDERS:
         for p in sorted((root / folder).rglob("*")):
             if p.suffix not in SUFFIXES or not p.is_file():
                 continue
             text = p.read_text(encoding="utf-8")
+            read += 1
             n = text.count("\n")
             rel = p.relative_to(root)
             if n > MAX_FILE:
@@ -120,6 +122,8 @@ def rooms(root):
                 for start, end in cpp_functions(text):
                     if end - start + 1 > MAX_FUNCTION:
                         bad.append(f"{rel}:{start}: a function of {end - start + 1} lines (over {MAX_FUNCTION})")
+    if read == 0:
+        bad.append(f"{root}: no source file under {', '.join(FOLDERS)} (not Sprout's tree?)")
     return bad
 
 

@@ -1,13 +1,11 @@
 #include "app/viewer/state/worker.hpp"
 
 #include <chrono>
-#include <sstream>
 
 #include "app/plant/growth.hpp"
 #include "app/plant/open.hpp"
 #include "app/plant/scene.hpp"
 #include "core/scene/forest.hpp"
-#include "core/scene/ifs.hpp"
 
 namespace sprout::viewer {
 namespace {

@@ -32,7 +32,7 @@
 #include "app/args.hpp"
 #include "app/image.hpp"
 #include "app/plant/presets.hpp"
-#include "core/base/read_file.hpp"
+#include "app/plant/scene.hpp"
 #include "app/viewer/window/app.hpp"
 #include "app/viewer/window/viewer.hpp"
 #include "app/viewer/window/window_input.hpp"
@@ -164,13 +164,11 @@ void connectWorker(App& app) {
         render::Renderer::prepareForViewer(g, *p, owner);
         return p;
     };
-    app.state.worker().speciesSource = [&app](const std::string& name) -> std::optional<std::string> {
-        for (const auto& base : {app.state.path(), app.state.importedFrom()}) {
-            if (base.empty()) continue;
-            if (auto text = readFile(base.parent_path() / name)) return text;
-        }
-        if (auto t = presetText(name)) return std::string(*t);
-        return std::nullopt;
+    app.state.worker().speciesSource = [&app](const std::string& name) {
+        std::vector<std::filesystem::path> folders;
+        for (const auto& base : {app.state.path(), app.state.importedFrom()})
+            if (!base.empty()) folders.push_back(base.parent_path());
+        return speciesText(name, folders);
     };
 }
 
