@@ -80,10 +80,16 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
         axiomAges->resizeUninitialized(m_grammar->axiom.size());
         std::fill(axiomAges->data(), axiomAges->data() + axiomAges->size(), std::uint16_t(0));
     }
-    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries && !m_options.trackOrigins) m_d0l = std::make_unique<D0LExpander>(*m_grammar);
+    if (D0LExpander::applicable(*m_grammar) && !m_options.trackAges && !m_options.holdQueries &&
+        !m_options.trackOrigins && !m_grammar->hasGlobals())
+        m_d0l = std::make_unique<D0LExpander>(*m_grammar);
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
+    if (m_rewriter && !m_grammar->startBlock.empty()) {  // cpfg's Start: block, before the axiom is decomposed
+        Rng rng = Rng::forStream(m_seed, 0);
+        runStatements(m_grammar->startBlock, m_rewriter->slots(), rng);
+    }
     auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
     std::shared_ptr<Origins> axiomOrigins;
     if (m_options.trackOrigins) {
@@ -155,6 +161,7 @@ DeriveOutcome Derivation::predictDecomposition(int step, const ModuleString& s) 
 
 DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins) {
     if (m_decomposer) {
+        if (m_rewriter && !m_grammar->globals.empty()) m_decomposer->copyGlobals(*m_rewriter);  // cpfg's globals
         if (DeriveOutcome predicted = predictDecomposition(step, s); !predicted.ok()) return predicted;
         // Repeated passes of the (context-free) decomposition rules: pass d rewrites what
         // pass d-1 produced, which is applying them depth-first to each module (cpfg / lpfg).
@@ -421,6 +428,7 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
                      origins ? &cutRule : nullptr);
             src = &cutCopy;
         }
+        if (!m_grammar->startEachBlock.empty()) runStatements(m_grammar->startEachBlock, m_rewriter->slots(), rng);
         if (!m_rewriter->rewrite(*src, *out, rng, m_options.cancel, progress, ages || origins ? &ageArgs : nullptr))
             return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
         if (origins && src == &cutCopy)
@@ -429,6 +437,7 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
             DeriveOutcome f = finishStep(k, *out, ages.get(), origins.get());
             if (!f.ok()) return f;
         }
+        if (!m_grammar->endEachBlock.empty()) runStatements(m_grammar->endEachBlock, m_rewriter->slots(), rng);
         if (ages) m_ages.push_back(std::move(ages));
         if (origins) m_origins.push_back(std::move(origins));
         record(k, *out, millisSince(t0));

@@ -43,6 +43,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         m_maxLenAll = std::max(m_maxLenAll, m_maxLen[s]);
         m_maxParamsAll = std::max(m_maxParamsAll, m_maxParams[s]);
     }
+    if (!g.globals.empty()) slots = kGlobalSlot + g.globals.size();  // cpfg's global variables after the locals
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
@@ -138,7 +139,7 @@ bool StepRewriter::contextOf(const ModuleString& in, size_t i, const Production&
         for (size_t k = 0; k < in.size(); ++k) m_offset[k] = o, o += m_arity[in.symbols.data()[k]];
     }
     if (m_match.size() != in.size()) m_match.assign(in.size(), kUnmatched);
-    m_slots.resize(std::max<size_t>(m_slots.size(), size_t(p.slotCount) + 1));
+    m_slots.resize(std::max<size_t>(m_slots.size(), size_t(p.slotCount) + 1));  // never shrinks: globals stay
     m_bound = &left;
     bool ok = matchLeft(p, i);
     std::reverse(left.begin(), left.end());
@@ -176,7 +177,7 @@ bool StepRewriter::matchLeft(const Production& p, size_t i) {
 bool StepRewriter::matchRight(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     const size_t N = m_in->size();
-    size_t j = i + 1;
+    size_t j = i + 1 + p.predRest.size();  // after the whole strict predecessor
     auto skipIgnored = [&] {
         while (j < N && sym[j] != Alphabet::kPush && sym[j] != Alphabet::kPop &&
                m_g.ignored[m_g.alphabet[sym[j]].nameId])
@@ -223,6 +224,11 @@ bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
     if (p.pred.arity > 0)
         std::memcpy(&m_slots[p.pred.firstSlot], m_in->params.data() + m_paramPos,
                     size_t(p.pred.arity) * sizeof(double));
+    for (size_t k = 0; k < p.predRest.size(); ++k) {  // cpfg: `AB --> C` rewrites A and the B after it
+        const size_t j = i + 1 + k;
+        if (j >= m_in->size() || !matches(p.predRest[k], m_in->symbols.data()[j])) return false;
+        bind(p.predRest[k], j);
+    }
     if (!p.left.empty() && !matchLeft(p, i)) return false;
     if (!p.right.empty() && !matchRight(p, i)) return false;
     // cpfg blocks: locals start at 0 each time; the pre-condition block runs before the
@@ -236,9 +242,23 @@ bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
 
 void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng) {
     for (const Statement& s : block) {
-        if (s.kind == Statement::Kind::Assign) slots[s.slot] = s.expr.eval(slots, rng);
-        else if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);
-        else runStatements(s.otherwise, slots, rng);
+        switch (s.kind) {
+            case Statement::Kind::Assign: slots[s.slot] = s.expr.eval(slots, rng); break;
+            case Statement::Kind::Eval: s.expr.eval(slots, rng); break;
+            case Statement::Kind::If:
+                if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);
+                else runStatements(s.otherwise, slots, rng);
+                break;
+            case Statement::Kind::While:
+                for (int n = 0; n < Statement::kMaxLoop && s.expr.eval(slots, rng) != 0; ++n) runStatements(s.then, slots, rng);
+                break;
+            case Statement::Kind::Do:
+                for (int n = 0; n < Statement::kMaxLoop; ++n) {
+                    runStatements(s.then, slots, rng);
+                    if (s.expr.eval(slots, rng) == 0) break;
+                }
+                break;
+        }
     }
 }
 
@@ -380,6 +400,9 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
         }
         pp += a;
         ++i;
+        if (p && !p->predRest.empty()) {  // the strict predecessor's other modules are rewritten with it
+            for (size_t k = 0; k < p->predRest.size() && i < N; ++k) pp += arity[sym[i++]];
+        }
     }
     out.symbols.resizeUninitialized(size_t(ds - out.symbols.data()));
     out.params.resizeUninitialized(size_t(dp - out.params.data()));

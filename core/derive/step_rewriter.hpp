@@ -2,6 +2,7 @@
 // One parallel rewriting step for any grammar: stochastic, context-sensitive (ABOP bracket
 // semantics), parametric with conditions, cut. Used for derivation steps and, with the
 // interpretation rules, for the cpfg homomorphism.
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,14 @@ public:
     // order. False when the context does not match there.
     bool contextOf(const ModuleString& in, size_t i, const Production& p, std::vector<std::size_t>& left,
                    std::vector<std::size_t>& right);
+
+    // The slots the rules' expressions read; cpfg's global variables are slots kGlobalSlot + i
+    // (expr.hpp), kept here from step to step.
+    double* slots() { return m_slots.data(); }
+    void copyGlobals(const StepRewriter& from) {
+        std::copy(from.m_slots.begin() + kGlobalSlot, from.m_slots.begin() + kGlobalSlot + std::ptrdiff_t(m_g.globals.size()),
+                  m_slots.begin() + kGlobalSlot);
+    }
 
 private:
     const Production* select(size_t i, Rng& rng);

@@ -9,6 +9,7 @@
 
 #include "core/language/expr.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -98,6 +99,31 @@ NodePtr makeConst(double v) {
     n->op = Op::Const;
     n->value = v;
     return n;
+}
+
+// cpfg's bran(a, b): a sample of the beta distribution (cpfg's utility.c, Cheng's algorithm BA).
+double betaSample(double a, double b, Rng& rng) {
+    const double s = a + b;
+    const double lambda = std::min(a, b) <= 1 ? std::min(a, b) : std::sqrt((2 * a * b - s) / (s - 2));
+    const double u = a + lambda;
+    if (!(s > 0) || !(lambda > 0) || !std::isfinite(s)) return std::nan("");
+    double u1, u2, v, y;
+    for (int tries = 0; tries < 10'000; ++tries) {
+        do u1 = rng.uniform(); while (u1 == 0);
+        do u2 = rng.uniform(); while (u2 == 0);
+        v = (1 / lambda) * std::log(u1 / (1 - u1));
+        y = a * std::exp(v);
+        if (!(s * std::log(s / (b + y)) + u * v - std::log(4.0) < std::log(u1 * u1 * u2))) return y / (b + y);
+    }
+    return y / (b + y);
+}
+
+// cpfg's biran(n, p): the number of n coins that fall below p.
+double binomialSample(double n, double p, Rng& rng) {
+    int count = 0;
+    const int trials = int(std::clamp(n, 0.0, 1e6));
+    for (int i = 0; i < trials; ++i) count += rng.uniform() <= p;
+    return count;
 }
 
 double apply(Op op, double x, double y) {
@@ -422,6 +448,16 @@ private:
                 }
             }
         }
+        if (m_scope.globals) {
+            for (size_t i = 0; i < m_scope.globals->size(); ++i) {
+                if ((*m_scope.globals)[i] == name) {
+                    auto n = std::make_unique<Node>();
+                    n->op = Op::Slot;
+                    n->slot = std::uint16_t(kGlobalSlot + i);
+                    return n;
+                }
+            }
+        }
         if (m_scope.defines) {
             auto it = m_scope.defines->find(name);
             if (it != m_scope.defines->end()) return makeConst(it->second);
@@ -431,6 +467,7 @@ private:
 
         std::vector<std::string> known;
         if (m_scope.params) known = *m_scope.params;
+        if (m_scope.globals) known.insert(known.end(), m_scope.globals->begin(), m_scope.globals->end());
         if (m_scope.defines)
             for (auto& [d, _] : *m_scope.defines) known.push_back(d);
         for (auto& [d, _] : builtinConstants()) known.push_back(d);
@@ -476,6 +513,21 @@ private:
                 m_callStart = start;
                 return expandMacro(name, it->second, args, depth);
             }
+        }
+        if (name == "bran" || name == "biran") {  // cpfg: beta and binomial samples
+            if (!arity(2)) return makeConst(0);
+            auto n = std::make_unique<Node>();
+            n->op = name == "bran" ? Op::Beta : Op::Binomial;
+            n->a = std::move(args[0]);
+            n->b = std::move(args[1]);
+            return n;
+        }
+        if (name == "srand") {  // cpfg: starts the random numbers again from this seed
+            if (!arity(1)) return makeConst(0);
+            auto n = std::make_unique<Node>();
+            n->op = Op::Srand;
+            n->a = std::move(args[0]);
+            return n;
         }
         // cpfg's names: ran(x) is uniform in [0, x), nran(mean, sigma) normal, random(a, b) uniform.
         if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss" || name == "ran" ||
@@ -533,7 +585,8 @@ private:
         int arity = (n.a ? 1 : 0) + (n.b ? 1 : 0) + (n.c ? 1 : 0);
         depth += 1 - arity;
         maxDepth = std::max(maxDepth, depth);
-        if (n.op == Op::Rand || n.op == Op::Normal) e.m_usesRandom = true;
+        if (n.op == Op::Rand || n.op == Op::Normal || n.op == Op::Beta || n.op == Op::Binomial || n.op == Op::Srand)
+            e.m_usesRandom = true;
         e.m_code.push_back(in);
     }
 
@@ -566,6 +619,9 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Call2: --sp; st[sp - 1] = kFunctions2[in.fn].fn(st[sp - 1], st[sp]); break;
             case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.uniform(); break;
             case Op::Normal: --sp; st[sp - 1] = rng.normal(st[sp - 1], st[sp]); break;
+            case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
+            case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
+            case Op::Srand: rng = Rng(std::uint64_t(std::int64_t(st[sp - 1]))); st[sp - 1] = 0; break;
             case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
             case Op::Add: --sp; st[sp - 1] += st[sp]; break;
             case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;
@@ -585,7 +641,7 @@ std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, c
 }
 
 std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random"};
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand"};
     for (auto& f : kFunctions1) names.push_back(f.name);
     for (auto& f : kFunctions2) names.push_back(f.name);
     return names;

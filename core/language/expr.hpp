@@ -19,6 +19,7 @@ namespace sprout {
 enum class Op : std::uint8_t {
     Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select, Call1, Call2, Rand, Normal,
+    Beta, Binomial, Srand,  // cpfg's bran(a, b), biran(n, p) and srand(seed)
 };
 
 struct Instr {
@@ -102,10 +103,15 @@ struct ExprMacro {
     std::string body;
 };
 
+// cpfg's global variables (assigned in the Start:, StartEach:, EndEach: and End: blocks) live
+// in the slots from here on, after a production's parameters and locals (at most 255).
+constexpr std::uint16_t kGlobalSlot = 256;
+
 struct ExprScope {
     const std::vector<std::string>* params = nullptr;  // slot i is named params[i]
     const std::unordered_map<std::string, double>* defines = nullptr;
     const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
+    const std::vector<std::string>* globals = nullptr;  // slot kGlobalSlot + i is named globals[i]
 };
 
 // Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.

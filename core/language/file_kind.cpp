@@ -182,6 +182,7 @@ ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
     ParseOptions o;
     o.cpfg = cpfgFamily(kind);
     o.explorer = (kind == FileKind::Lsys || kind == FileKind::Cpfg) && hasExtension(path, ".ls");
+    o.tabContinues = kind == FileKind::Cpfg && !o.explorer;
     if (!path.empty()) {  // #include (cpfg) and files an environment names read beside the grammar
         const size_t slash = path.find_last_of('/');
         o.include = includeFromFolder(slash == std::string::npos ? "." : path.substr(0, slash));

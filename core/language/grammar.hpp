@@ -72,9 +72,12 @@ struct PatternModule {
 // A cpfg statement in a production's block: `x = expr;` or `if (c) ... else ...`. Locals
 // are slots after the formal parameters, so the condition and successor read them.
 struct Statement {
-    enum class Kind : std::uint8_t { Assign, If } kind = Kind::Assign;
+    // Eval: an expression run for what it does (cpfg's `srand(3);`); While, Do: `then` is the
+    // loop's body (run at most kMaxLoop times).
+    enum class Kind : std::uint8_t { Assign, If, Eval, While, Do } kind = Kind::Assign;
+    static constexpr int kMaxLoop = 1'000'000;
     std::uint16_t slot = 0;      // Assign: where the value goes
-    Expr expr;                   // Assign: the value; If: the test
+    Expr expr;                   // Assign: the value; If, While, Do: the test
     std::vector<Statement> then, otherwise;
 };
 
@@ -89,6 +92,7 @@ struct Production {
     std::string label;  // ABOP's "p1:" before the rule, as written (empty: none)
     std::vector<PatternModule> left;   // in text order; matched right to left
     PatternModule pred;
+    std::vector<PatternModule> predRest;  // cpfg: the strict predecessor's next modules (`AB --> C`), matched in a row
     std::vector<PatternModule> right;  // in text order
     std::optional<Expr> condition;
     std::vector<Statement> pre, post;  // cpfg blocks: before the condition, after it holds
@@ -97,7 +101,7 @@ struct Production {
     double probability = -1;  // < 0: deterministic
     int slotCount = 0;        // formal parameters across left, pred and right
     std::uint8_t lsystem = 0; // cpfg's sub-L-system it belongs to: 0 the main one, k subLsystems[k-1]
-    bool hasContext() const { return !left.empty() || !right.empty(); }
+    bool hasContext() const { return !left.empty() || !right.empty() || !predRest.empty(); }
     bool stochastic() const { return probability >= 0; }
     bool hasBlocks() const { return !pre.empty() || !post.empty(); }
 };
@@ -123,6 +127,12 @@ struct Grammar {
     // `$(2)` and `$` a step rewrites with sub-L-system 2's productions (L-system Explorer).
     std::vector<double> subLsystems;
     Settings settings;
+    // cpfg's global variables, by the slot kGlobalSlot + i (expr.hpp), and the blocks that run
+    // before the derivation (Start:), before and after each step (StartEach:, EndEach:) and
+    // after it (End:), with a production's blocks, in order, left to right.
+    std::vector<std::string> globals;
+    std::vector<Statement> startBlock, startEachBlock, endEachBlock, endBlock;
+    bool hasGlobals() const { return !globals.empty() || !startBlock.empty() || !startEachBlock.empty() || !endEachBlock.empty(); }
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;
     Environment environment;  // what ?E modules ask after each step (`environment:` lines)
@@ -177,6 +187,10 @@ struct ParseOptions {
     IncludeReader include;   // null: `#include` is an error (text typed with no folder)
     std::string fileName;    // the grammar's own name, so that it cannot include itself
     bool explorer = false;   // an L-system Explorer file (`.ls`, not Lparser's): that tool's defaults
+    // cpfg's own lexer (lsys_input.l): a newline followed by a tab does not end a line, so a
+    // line that starts with a tab goes on the one before (a successor over several lines).
+    // Set for cpfg's `.l` files, not L-Py's (Python indents with tabs) nor Explorer's.
+    bool tabContinues = false;
 };
 
 ParseResult parse(std::string_view text);

@@ -144,6 +144,9 @@ public:
     void setConsider(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
     void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
+    // cpfg's `Start: {...}`, `StartEach:`, `EndEach:`, `End:`: the names they assign become
+    // global variables (statements.cpp).
+    void readGlobalBlock(const SourceLine& line, const std::string& key, std::string_view body);
     bool cpfg() const { return m_cpfg; }
 
     enum class Section { Productions, Interpretation, Decomposition };

@@ -62,7 +62,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
                             const std::vector<std::string>& params, Successor& out, int net) {
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
-    ExprScope scope{&params, &m_g.defines, &m_macros};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals};
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -176,6 +176,11 @@ bool Parser::parseRulePatterns(const SourceLine& line, std::string_view patterns
         return false;
     }
     if (!parsePattern(line, rightText, true, true, params, prod.right)) return false;
+    if (pred.size() > 1 && m_options.tabContinues) {  // cpfg: a strict predecessor of several modules
+        prod.predRest.assign(pred.begin() + 1, pred.end());
+        for (PatternModule& m : prod.predRest) m.arity = std::max(m.arity, 0);
+        pred.resize(1);
+    }
     if (pred.size() != 1) {
         std::string_view p = trim(predText);
         if (pred.empty()) {
@@ -213,6 +218,9 @@ bool Parser::collectBlockLocals(const SourceLine& line, std::string_view preBloc
     collectAssigned(postBlock, assigned);
     const std::string_view block = preBlock.empty() ? postBlock : preBlock;
     for (const auto& name : assigned) {
+        if (std::find(m_g.globals.begin(), m_g.globals.end(), name) != m_g.globals.end() &&
+            std::find(params.begin(), params.end(), name) == params.end())
+            continue;  // cpfg: a global variable (assigned in a Start: block before), not a local
         if (auto global = m_g.defines.find(name); global != m_g.defines.end()) {
             if (!m_options.explorer || std::find(params.begin(), params.end(), name) != params.end()) {
                 m_sink.error(line, block, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
@@ -316,7 +324,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         return;
     prod.slotCount = int(params.size());
 
-    ExprScope scope{&params, &m_g.defines, &m_macros};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals};
     bool ok = true;
     for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
         Statement init;

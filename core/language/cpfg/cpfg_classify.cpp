@@ -48,9 +48,9 @@ const Directive kSurface{"surface", surfaceHandler, 0};  // before rules: it nam
 const Directive kMaximumDepth{"maximum depth", depthHandler};
 const Directive kAngleFactor{"angle factor", angleFactorHandler};
 const Directive kDefineBlock{"define", defineBlockHandler, 1};
-// `Start: {...}`, `StartEach:`, `EndEach:`, `End:` (cpfg's and L-system Explorer's global
-// blocks): not run. Said once per block, with what it changes.
-void globalBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
+// L-system Explorer's global blocks (its `.ls` files, whose variables are not cpfg's): not
+// run. Said once per block, with what it changes.
+void explorerGlobalBlock(Parser& p, const SourceLine& l, std::string_view v) {
     std::string_view t = trim(l.text);
     const std::string_view word = trim(t.substr(0, t.find(':')));
     std::vector<std::string> names;
@@ -76,6 +76,16 @@ void globalBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
     p.sink().warning(l, word, "'" + std::string(word) + ":' blocks are not run" +
                                   (list.empty() ? std::string() : " (this one sets " + list + ")") +
                                   ": the rules use the values set before the axiom");
+}
+// `Start: {...}`, `StartEach:`, `EndEach:`, `End:` (cpfg's global blocks): their statements
+// run around the derivation and its steps.
+void globalBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
+    if (p.options().explorer) return explorerGlobalBlock(p, l, v);
+    std::string_view t = trim(l.text);
+    std::string_view value;
+    std::string key = keyOf(t, value);
+    key.erase(std::remove(key.begin(), key.end(), ' '), key.end());
+    p.readGlobalBlock(l, key, v);
 }
 const Directive kGlobalBlock{"global block", globalBlockHandler};
 

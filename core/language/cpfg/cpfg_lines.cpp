@@ -184,6 +184,7 @@ std::vector<SourceLine> CpfgReader::readFile(std::string_view text, const std::s
     std::vector<SourceLine> body = preprocess(lines, top, includeLine, depth, stack);
     putTextMacros(body);
     std::vector<SourceLine> logical;
+    if (m_options.tabContinues) joinTabLines(body);
     joinLines(body, logical);
     return logical;
 }
@@ -208,6 +209,34 @@ std::vector<SourceLine> CpfgReader::physicalLines(std::string_view text, bool to
 }
 
 // [SECTION] Productions and blocks written over several lines
+
+// cpfg's lexer reads a newline followed by a tab as a space: each line that starts with a tab
+// goes on the line before it (whatever that line is), which keeps the joined text.
+void CpfgReader::joinTabLines(std::vector<SourceLine>& body) {
+    for (size_t i = 0; i < body.size(); ++i) {
+        size_t j = i;
+        while (j + 1 < body.size() && body[j + 1].text.starts_with('\t')) ++j;
+        if (j == i) continue;
+        std::string joined(body[i].text);
+        Origin o;
+        o.logical = body[i].number;
+        o.pieces.emplace_back(0, body[i].number);
+        o.pieceStart.push_back(0);
+        for (size_t k = i + 1; k <= j; ++k) {
+            joined += ' ';
+            o.pieces.emplace_back(joined.size(), body[k].number);
+            o.pieceStart.push_back(0);
+            joined += body[k].text;
+            body[k].text = body[k].text.substr(0, 0);
+            body[k].original = body[k].text;
+        }
+        m_store.push_back(std::move(joined));
+        body[i].text = m_store.back();
+        body[i].original = m_store.back();
+        m_origins.push_back(std::move(o));
+        i = j;
+    }
+}
 
 // Productions written over several lines become one logical line.
 void CpfgReader::joinLines(std::vector<SourceLine>& body, std::vector<SourceLine>& lines) {

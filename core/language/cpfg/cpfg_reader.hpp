@@ -64,6 +64,7 @@ private:
     std::vector<SourceLine> readFile(std::string_view text, const std::string& includeName, int includeLine,
                                      int depth, std::vector<std::string>& stack);
     std::vector<SourceLine> physicalLines(std::string_view text, bool top, int originBase) const;
+    void joinTabLines(std::vector<SourceLine>& body);
     void joinLines(std::vector<SourceLine>& body, std::vector<SourceLine>& out);
     void joinStatementBlock(std::vector<SourceLine>& body, size_t i);
     size_t joinProduction(std::vector<SourceLine>& body, size_t i, SourceLine& out);

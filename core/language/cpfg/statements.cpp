@@ -42,6 +42,30 @@ public:
     }
 
 private:
+    // The ';' that ends a statement from `i`, outside parentheses (or the end of the block).
+    static size_t statementEnd(std::string_view text, size_t i) {
+        int depth = 0;
+        for (; i < text.size(); ++i) {
+            if (text[i] == '(') ++depth;
+            else if (text[i] == ')') --depth;
+            else if (text[i] == ';' && depth <= 0) break;
+        }
+        return i;
+    }
+
+    // `(test)` at `i` (after `while`): compiled into `out`; `i` moves past the ')'.
+    bool test(std::string_view text, size_t& i, const char* word, Expr& out) {
+        if (i >= text.size() || text[i] != '(')
+            return fail(text.substr(std::min(i, text.size())), std::string("expected '(' after '") + word + "'");
+        const size_t close = matching(text, i);
+        if (close == std::string_view::npos) return fail(text.substr(i), "this '(' is never closed");
+        auto e = compileExpr(text.substr(i + 1, close - i - 1), m_line, m_scope, m_sink);
+        if (!e) return false;
+        out = std::move(*e);
+        i = close + 1;
+        return true;
+    }
+
     bool fail(std::string_view at, std::string message) {
         m_sink.error(m_line, at, std::move(message));
         return false;
@@ -87,26 +111,54 @@ private:
             out.push_back(std::move(s));
             return true;
         }
-        if (name == "while" || name == "for" || name == "do")
-            return fail(name, "'" + std::string(name) + "' loops are not supported in blocks: use a production that repeats");
+        if (name == "while") {
+            Statement s;
+            s.kind = Statement::Kind::While;
+            if (!test(text, i, "while", s.expr)) return false;
+            i = skipSpaces(text, i);
+            if (i >= text.size()) return fail(text.substr(start), "'while (...)' needs a statement after it");
+            if (!statement(text, i, s.then)) return false;
+            out.push_back(std::move(s));
+            return true;
+        }
+        if (name == "do") {
+            Statement s;
+            s.kind = Statement::Kind::Do;
+            if (i >= text.size()) return fail(text.substr(start), "'do' needs a statement after it");
+            if (!statement(text, i, s.then)) return false;
+            i = skipSpaces(text, i);
+            if (text.substr(i, 5) != "while") return fail(text.substr(i), "expected 'while (...)' after the body of 'do'");
+            i = skipSpaces(text, i + 5);
+            if (!test(text, i, "while", s.expr)) return false;
+            out.push_back(std::move(s));
+            return true;
+        }
+        if (name == "for") return fail(name, "'for' is not part of cpfg's language: write 'while (...) { ... }'");
         if (name == "else") return fail(name, "'else' without an 'if' before it");
-        if (i < text.size() && text[i] == '(')
-            return fail(name, "'" + std::string(name) + "(...)' is not a statement Sprout runs: blocks hold assignments and if / else");
+        if (i < text.size() && text[i] == '(') {  // a call run for what it does: srand(3); printf(...);
+            const size_t end = statementEnd(text, i);
+            Statement s;
+            s.kind = Statement::Kind::Eval;
+            auto value = compileExpr(text.substr(start, end - start), m_line, m_scope, m_sink);
+            if (!value) return false;
+            s.expr = std::move(*value);
+            out.push_back(std::move(s));
+            i = end < text.size() ? end + 1 : end;
+            return true;
+        }
         if (i >= text.size() || text[i] != '=' || (i + 1 < text.size() && text[i + 1] == '='))
             return fail(text.substr(start), "expected '=' after '" + std::string(name) + "', as in '" + std::string(name) + " = 1;'");
         ++i;
-        // The value runs to the ';' outside parentheses (or to the end of the block).
-        size_t end = i;
-        int depth = 0;
-        for (; end < text.size(); ++end) {
-            if (text[end] == '(') ++depth;
-            else if (text[end] == ')') --depth;
-            else if (text[end] == ';' && depth <= 0) break;
-        }
+        const size_t end = statementEnd(text, i);
         Statement s;
         s.kind = Statement::Kind::Assign;
         size_t slot = 0;
         while (slot < m_params.size() && m_params[slot] != name) ++slot;
+        if (slot == m_params.size() && m_scope.globals) {  // cpfg's global variable
+            size_t g = 0;
+            while (g < m_scope.globals->size() && (*m_scope.globals)[g] != name) ++g;
+            if (g < m_scope.globals->size()) slot = kGlobalSlot + g;
+        }
         s.slot = std::uint16_t(slot);
         auto value = compileExpr(text.substr(i, end - i), m_line, m_scope, m_sink);
         if (!value) return false;
@@ -127,6 +179,26 @@ private:
 bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
                      const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out) {
     return BlockParser(sink, line, params, scope).statements(text, out);
+}
+
+void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std::string_view v) {
+    std::string_view body = trim(v);
+    if (!body.starts_with("{") || !body.ends_with("}"))
+        return m_sink.error(line, body, "expected a block of statements in braces, as in '" + key + ": { n = 0; }'");
+    body = body.substr(1, body.size() - 2);
+    std::vector<std::string> assigned;
+    collectAssigned(body, assigned);
+    for (const auto& name : assigned) {
+        if (m_g.defines.count(name))
+            return m_sink.error(line, body, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
+        if (std::find(m_g.globals.begin(), m_g.globals.end(), name) == m_g.globals.end()) m_g.globals.push_back(name);
+    }
+    if (m_g.globals.size() > 4096) return m_sink.error(line, body, "too many global variables (the limit is 4096)");
+    std::vector<Statement>& out = key == "start" ? m_g.startBlock : key == "starteach" ? m_g.startEachBlock
+                                : key == "endeach" ? m_g.endEachBlock : m_g.endBlock;
+    const std::vector<std::string> none;
+    ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals};
+    parseStatements(m_sink, line, body, none, scope, out);
 }
 
 void collectAssigned(std::string_view text, std::vector<std::string>& names) {
