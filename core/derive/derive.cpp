@@ -160,7 +160,7 @@ DeriveOutcome Derivation::predictDecomposition(int step, const ModuleString& s) 
 }
 
 DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::uint16_t>* ages, Origins* origins) {
-    if (m_decomposer) {
+    if (m_decomposer && (step > 0 || m_grammar->decomposeAxiom)) {
         if (m_rewriter && !m_grammar->globals.empty()) m_decomposer->copyGlobals(*m_rewriter);  // cpfg's globals
         if (DeriveOutcome predicted = predictDecomposition(step, s); !predicted.ok()) return predicted;
         // Repeated passes of the (context-free) decomposition rules: pass d rewrites what

@@ -152,8 +152,13 @@ bool StepRewriter::contextOf(const ModuleString& in, size_t i, const Production&
 bool StepRewriter::matchLeft(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     std::ptrdiff_t j = std::ptrdiff_t(i) - 1;
+    bool wrapped = false;
     for (std::ptrdiff_t k = std::ptrdiff_t(p.left.size()) - 1; k >= 0; --k) {
         for (;;) {
+            if (j < 0 && m_g.ring && !wrapped && m_in->size() > 1) {  // cpfg's ring: on from the last module
+                wrapped = true;
+                j = std::ptrdiff_t(m_in->size()) - 1;
+            }
             if (j < 0) return false;
             SymbolId s = sym[j];
             if (s == Alphabet::kPop) {
@@ -178,6 +183,7 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     const size_t N = m_in->size();
     size_t j = i + 1 + p.predRest.size();  // after the whole strict predecessor
+    bool wrapped = false;
     auto skipIgnored = [&] {
         while (j < N && sym[j] != Alphabet::kPush && sym[j] != Alphabet::kPop &&
                m_g.ignored[m_g.alphabet[sym[j]].nameId])
@@ -198,6 +204,10 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             continue;
         }
         for (;;) {
+            if (j >= N && m_g.ring && !wrapped && N > 1) {  // cpfg's ring: on from the first module
+                wrapped = true;
+                j = 0;
+            }
             if (j >= N) return false;
             SymbolId s = sym[j];
             if (s == Alphabet::kPush) {

@@ -123,6 +123,13 @@ struct Grammar {
     // cpfg's cut: a '%' stays in the string of the step that made it and removes the rest of
     // its branch while the next step is derived. In .lsys it cuts at once (ABOP 1.10.3).
     bool cutInNextStep = false;
+    // cpfg's `ring lsystem`: the string's last module is the left context of its first, and
+    // the first the right context of the last.
+    bool ring = false;
+    // Whether the decomposition rules rewrite the axiom before the first step (lpfg and L-Py);
+    // cpfg applies them within each step only (generate.c, ApplyProd), so its step 0 is the
+    // axiom as written.
+    bool decomposeAxiom = true;
     // cpfg's sub-L-systems (`lsystem: 2` after the main one's `endlsystem`), by label: between
     // `$(2)` and `$` a step rewrites with sub-L-system 2's productions (L-system Explorer).
     std::vector<double> subLsystems;

@@ -349,7 +349,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     std::string_view succText;
     if (!splitRuleProbability(line, tail, succText, prod)) return;
     if (m_cpfg && trim(succText) == "*") succText = {};  // cpfg's empty successor
-    if (section == Section::Decomposition && prod.hasContext()) {
+    if (section == Section::Decomposition && (!prod.left.empty() || !prod.right.empty())) {
         m_sink.error(line, patterns, "decomposition rules are context-free: move the context to a production");
         return;
     }

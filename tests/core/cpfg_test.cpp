@@ -273,7 +273,8 @@ TEST(Cpfg, SurfaceFileIsPlacedInTheTurtlesFrame) {
               "POINT line and patches of 16 control points)");
 }
 
-// Decomposition that never ends is refused with the step and the depth.
+// Decomposition that never ends is refused with the step and the depth (cpfg decomposes
+// within the steps, not the axiom: step 1).
 TEST(Cpfg, EndlessDecompositionIsRefused) {
     ParseResult r = parse("derivation length: 1\nAxiom: A\ndecomposition\nmaximum depth: 5\nA --> B A\n",
                           parseOptionsFor(FileKind::Cpfg, ""));
@@ -281,7 +282,7 @@ TEST(Cpfg, EndlessDecompositionIsRefused) {
     DeriveResult d = derive(r.grammar, 1);
     EXPECT_FALSE(d.outcome.ok());
     EXPECT_EQ(d.outcome.message,
-              "step 0: the decomposition rules still apply after 5 levels (maximum depth): they never end. A decomposition "
+              "step 1: the decomposition rules still apply after 5 levels (maximum depth): they never end. A decomposition "
               "must end in modules no decomposition rule rewrites; raise 'maximum depth:' if it is this deep on purpose");
 }
 

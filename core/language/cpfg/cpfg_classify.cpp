@@ -150,6 +150,10 @@ void Parser::classifyCpfg(Line& l, Section& section, bool& ended) {
         ended = true;  // what follows (another tool's code, a second L-system) is not read
         return;
     }
+    if (head == "ring lsystem") {  // cpfg: the string is a ring, its ends neighbours for contexts
+        m_g.ring = true;
+        return;
+    }
     if (head == "group" || head == "endgroup") {
         m_sink.warning(l.src, t, "production groups are not supported: all productions are used");
         return;

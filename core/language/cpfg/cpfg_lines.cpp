@@ -106,7 +106,7 @@ const std::map<std::string, std::string>& cpfgKeys() {
 std::string sectionWord(std::string_view t) {
     std::string head = lowerCollapsed(t.substr(0, t.find(':')));
     static const char* words[] = {"homomorphism", "interpretation", "decomposition", "production", "productions",
-                                  "endlsystem", "group", "endgroup"};
+                                  "endlsystem", "group", "endgroup", "ring lsystem"};
     for (const char* w : words)
         if (head == w) return head;
     return "";

@@ -130,6 +130,11 @@ void CpfgReader::readDefine(const SourceLine& src, std::string_view rest, bool t
             a = b + 1;
         }
         m.body = std::string(trim(rest.substr(close + 1)));
+        // `#define f(x) \\` then the body on the next line: the C preprocessor joins the lines
+        // and keeps the first backslash, a stray character cpfg's lexer passes over.
+        for (size_t k = 0; k < m.body.size(); ++k)
+            if (m.body[k] == '\\' && (k + 1 == m.body.size() || isSpace(m.body[k + 1]))) m.body[k] = ' ';
+        m.body = std::string(trim(m.body));
         if (m.body.empty()) {
             m_parser.sink().error(src, rest, "'#define " + name + "(...)' needs a body");
             return;
