@@ -208,7 +208,7 @@ bool cameraCommand(const Command& c) {
     if (n == "viewpoint:") c.three(o.viewpoint);
     else if (n == "view reference point:") c.three(o.reference);
     else if (n == "twist:") {
-        // cpfg reads an integer; its view-up vector turns by a tenth of it (interpret.c)
+        // cpfg reads an integer; its view-up vector turns by a tenth of a degree for each (interpret.c)
         c.one(o.twist, "a number");
     } else if (n == "projection:") {
         const std::string w = c.values.word();

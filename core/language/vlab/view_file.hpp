@@ -69,7 +69,7 @@ struct ViewFile {
     int shadeMode = 1;
     // The camera (cpfg's VIEWPARAM).
     Vec3 viewpoint{0, 0, 1}, reference{0, 0, 0};  // `viewpoint:`, `view reference point:`
-    double twist = 0;                      // `twist:`, in degrees about the viewing direction
+    double twist = 0;                      // `twist:`, in tenths of a degree about the viewing direction (IRIS GL's unit)
     bool perspective = false;              // `projection: perspective` (default parallel)
     double viewingAngle = 45;              // degrees (perspective)
     double front = -100000, back = 100000; // `front distance:`, `back distance:`
