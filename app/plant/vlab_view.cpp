@@ -128,6 +128,28 @@ void applyVlabPicture(const VlabPicture& p, Settings& st) {
     st.picture = picture;
 }
 
+std::optional<VlabObject> vlabObjectAt(const std::string& path) {
+    std::error_code ec;
+    const fs::path p(path);
+    const fs::path folder = fs::is_directory(p, ec) ? p : p.parent_path();
+    if (!fs::is_regular_file(folder / "specifications", ec)) return std::nullopt;
+    return readVlabObject(folder.empty() ? "." : folder.string());
+}
+
+VlabSummary summarizeVlabObject(const VlabObject& object) {
+    VlabSummary out;
+    const fs::path folder = fs::path(object.specifications).parent_path();
+    out.folder = folder.string();
+    out.description = readFile(folder / "description.txt").value_or("");
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(folder, ec))
+        if (e.is_regular_file(ec)) out.files.push_back(e.path().filename().string());
+    std::sort(out.files.begin(), out.files.end());
+    for (const Diagnostic& d : object.diagnostics) out.notes.push_back(formatDiagnostic(d, object.specifications));
+    for (std::string& n : readVlabPicture(object).notes) out.notes.push_back(std::move(n));
+    return out;
+}
+
 bool applyVlabObjectOf(const std::string& lsystemPath, Settings& settings) {
     if (lsystemPath.empty()) return false;
     std::error_code ec;

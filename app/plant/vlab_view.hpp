@@ -32,6 +32,19 @@ struct VlabPicture {
 // The object's files read (missing ones are notes).
 VlabPicture readVlabPicture(const VlabObject& object);
 
+// The VLab object `path` opens: the folder itself, or the folder of a file in it, when that
+// folder has a `specifications` (File > Open and `sprout FOLDER` in the viewer).
+std::optional<VlabObject> vlabObjectAt(const std::string& path);
+
+// What the viewer's panel shows of an object: its folder, its description.txt, its files, and
+// what is wrong in them.
+struct VlabSummary {
+    std::string folder, description;
+    std::vector<std::string> files;
+    std::vector<std::string> notes;
+};
+VlabSummary summarizeVlabObject(const VlabObject& object);
+
 // `picture` applied to a grammar's settings (its derivation length already read).
 void applyVlabPicture(const VlabPicture& picture, Settings& settings);
 
