@@ -107,7 +107,7 @@ TEST(VlabViewFile, WrongValuesNameTheLineAndWhatWasExpected) {
     EXPECT_FALSE(v.ok());
     EXPECT_TRUE(hasMessage(v.diagnostics, 1, "'viewpoint:' expects three numbers x,y,z; found ' 0,1'", Severity::Error));
     EXPECT_TRUE(hasMessage(v.diagnostics, 2, "'angle factor:' expects a number", Severity::Error));
-    EXPECT_TRUE(hasMessage(v.diagnostics, 3, "pixel, polygon or cylinder", Severity::Error));
+    EXPECT_TRUE(hasMessage(v.diagnostics, 3, "unknown line style 'dotted' (expected pixel, polygon or cylinder)", Severity::Warning));
     EXPECT_TRUE(hasMessage(v.diagnostics, 4, "a letter, a file and a size", Severity::Error));
     EXPECT_EQ(v.viewpoint, (Vec3{0, 0, 1}));  // the default kept
 }

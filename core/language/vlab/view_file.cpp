@@ -159,7 +159,7 @@ bool turtleCommand(const Command& c) {
         if (w == "pixel" || w == "1") o.lineStyle = LineStyle::Pixel;
         else if (w == "polygon" || w == "2") o.lineStyle = LineStyle::Polygon;
         else if (w == "cylinder" || w == "3") o.lineStyle = LineStyle::Cylinder;
-        else return c.expected("pixel, polygon or cylinder"), true;
+        else return c.warn("unknown line style '" + w + "' (expected pixel, polygon or cylinder): cpfg keeps the one it had"), true;
         o.lineStyleSet = true;
     } else if (n == "tropism direction:") {
         Vec3 v{};
