@@ -148,7 +148,10 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
     const std::string target = wantsVideo && !result.video ? out.substr(0, out.find_last_of('.')) + ".png" : out;
 
     const bool kept = !ao.steps.empty();
-    const int n = kept ? int(ao.steps.size()) - 1 : o.iterations.value_or(grammar->settings.iterations);
+    const bool shown = !kept && ao.kind == AnimationKind::Growth && !ao.shownSteps.empty();
+    const int n = kept ? int(ao.steps.size()) - 1
+                  : shown ? *std::max_element(ao.shownSteps.begin(), ao.shownSteps.end())
+                          : o.iterations.value_or(grammar->settings.iterations);
     DeriveOptions dopts;
     dopts.seed = o.seed;
     dopts.limits = o.limits;
@@ -159,7 +162,8 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
         error = outcome.message;
         return false;
     }
-    const int frames = ao.frames > 0 ? ao.frames
+    const int frames = shown ? int(ao.shownSteps.size())
+                       : ao.frames > 0 ? ao.frames
                        : ao.kind == AnimationKind::Growth ? std::max(2, n * ao.fps / 2 + 1)
                                                           : ao.fps * 5;
     auto context = HeadlessContext::create(o.width, o.height, error);
@@ -206,8 +210,8 @@ bool renderAnimation(std::shared_ptr<const Grammar> grammar, const SnapshotOptio
         if (ao.kind == AnimationKind::Growth) {
             // Time runs from the axiom (step 0) to step n; within a step its new segments grow in.
             double t = frames > 1 ? double(n) * k / (frames - 1) : n;
-            int step = int(std::ceil(t - 1e-9));
-            float fraction = step == 0 ? 1.0f : float(1.0 - (step - t));
+            int step = shown ? ao.shownSteps[size_t(k)] : int(std::ceil(t - 1e-9));
+            float fraction = shown || step == 0 ? 1.0f : float(1.0 - (step - t));
             interpretStep(step, std::clamp(fraction, 0.0f, 1.0f));
             geometry.bounds = grown;
             geometry.planarCurve = planar;  // an axiom that draws nothing is no 2D curve

@@ -20,6 +20,9 @@ struct AnimationOptions {
     // An L-Py model's kept steps (step 0 .. n, each a grammar whose axiom is the string to
     // draw): growth shows them in turn instead of deriving `grammar`.
     std::vector<std::shared_ptr<const Grammar>> steps;
+    // Growth shows these derivation steps, one a frame (a VLab object's animation file: first
+    // frame to last by step); empty: from the axiom to step n, growing smoothly.
+    std::vector<int> shownSteps;
     std::function<void(int frame, int frames)> progress;
 };
 

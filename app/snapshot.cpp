@@ -5,6 +5,8 @@
 #include <mutex>
 #include <thread>
 
+#include <glm/geometric.hpp>
+
 #include "app/headless.hpp"
 #include "app/plant/growth.hpp"
 
@@ -116,8 +118,44 @@ bool overlayEnvironment(render::Renderer& renderer, const SnapshotOptions& o, co
     return true;
 }
 
+render::Camera pictureCamera(const PictureView& p, const Bounds& bounds, float aspect) {
+    auto vec = [](const std::array<double, 3>& a) { return glm::vec3(float(a[0]), float(a[1]), float(a[2])); };
+    render::ViewDirection v;
+    v.eye = vec(p.eye);
+    v.target = vec(p.target);
+    v.roll = float(p.twist);
+    v.perspective = p.perspective;
+    v.fovY = float(p.viewingAngle);
+    v.scale = float(p.scale);
+    return render::frameView(bounds, aspect, v);
+}
+
+void usePictureView(const PictureView& p, SnapshotOptions& o, bool sizeGiven) {
+    o.picture = p;
+    if (!sizeGiven && p.width > 0 && p.height > 0) {
+        o.width = p.width;
+        o.height = p.height;
+    }
+    if (p.background) {
+        const glm::vec3 c(float(*p.background >> 16 & 0xFF) / 255.0f, float(*p.background >> 8 & 0xFF) / 255.0f,
+                          float(*p.background & 0xFF) / 255.0f);
+        o.render.backgroundTop = o.render.backgroundBottom = c;
+        o.render.ground = false;  // cpfg's window: the plant on its background
+    }
+    if (p.ink)
+        o.render.curveInk = glm::vec3(float(*p.ink >> 16 & 0xFF) / 255.0f, float(*p.ink >> 8 & 0xFF) / 255.0f, float(*p.ink & 0xFF) / 255.0f);
+    const glm::vec3 light(float(p.light[0]), float(p.light[1]), float(p.light[2]));
+    if (glm::length(light) > 0) o.render.sunDirection = glm::normalize(light);
+}
+
 render::Camera snapshotCamera(const Geometry& g, const SnapshotOptions& o) {
     const float aspect = float(o.width) / float(o.height);
+    if (o.picture && !o.yaw && !o.pitch && o.view == render::ViewPreset::Auto) {
+        render::Camera camera = pictureCamera(*o.picture, g.bounds, aspect);
+        if (o.distance) camera.distance = *o.distance;
+        if (o.target) camera.target = *o.target;
+        return camera;
+    }
     render::Camera camera = render::frameGeometry(g, aspect, o.view);
     if (o.yaw || o.pitch) {
         // An explicit direction: keep the framing distance of a 3D view.

@@ -34,7 +34,15 @@ struct SnapshotOptions {
     bool showEnvironment = false;
     EnvironmentView environmentView;
     std::shared_ptr<const Environment> environment;
+    // A VLab object's view (Settings::picture): the camera when no view, yaw or pitch is given.
+    std::optional<PictureView> picture;
 };
+
+// `o` made to show `picture` as cpfg would: its camera (snapshotCamera), its light and
+// background, and its window's size unless `sizeGiven`.
+void usePictureView(const PictureView& picture, SnapshotOptions& o, bool sizeGiven);
+// The renderer's camera for a VLab object's view of `bounds`.
+render::Camera pictureCamera(const PictureView& picture, const Bounds& bounds, float aspect);
 
 struct Snapshot {
     Image image;

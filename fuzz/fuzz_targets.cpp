@@ -17,6 +17,9 @@
 #include "core/language/file_kind.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/import/import.hpp"
+#include "core/language/vlab/animation_file.hpp"
+#include "core/language/vlab/colours.hpp"
+#include "core/language/vlab/view_file.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
@@ -155,6 +158,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (char c : t.mainCode) mainLines += c == '\n';
     if (tag == std::string::npos && mainLines != lines) fail("the translation lost or added lines");
     (void)detectFileKind("model.lpy", input);
+#elif defined(SPROUT_FUZZ_VLAB)
+    // A VLab object's other files: the same bytes as a view file, an animation file, a
+    // material set and a colour map.
+    const vlab::ViewFile v = vlab::readViewFile(input);
+    for (const auto& d : v.diagnostics)
+        if (d.line < 1) fail("a view file's message has no line");
+    const vlab::AnimationFile a = vlab::readAnimationFile(input);
+    if (a.frames(1000).size() > 100000) fail("too many frames");
+    std::string error;
+    if (!vlab::readMaterials(input, error) && error.empty()) fail("a refused material set says nothing");
+    if (!vlab::readColourMap(input, error) && error.empty()) fail("a refused colour map says nothing");
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
 #endif

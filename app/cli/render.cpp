@@ -197,6 +197,8 @@ int renderVideo(const LoadedGrammar& loaded, AnimationKind kind, const SnapshotO
     if (fps) ao.fps = int(*fps);
     ao.recipe = recipe;
     ao.steps = loaded.steps;
+    // A VLab object's animation file says which steps growth shows, unless --frames does.
+    if (const auto& p = loaded.grammar->settings.picture; p && !frames && !o.iterations) ao.shownSteps = p->frames;
     const bool tty = isatty(2);
     if (tty)
         ao.progress = [&](int k, int total) {
@@ -301,6 +303,8 @@ int runRender(int argc, char** argv) {
     auto loaded = loadGrammar(source, lo);
     if (!loaded) return 1;
     if (n && !loaded->ranPython) o.iterations = int(*n);
+    // A VLab object's view: its camera, light, background and window size (app/snapshot.hpp).
+    if (const auto& p = loaded->grammar->settings.picture) usePictureView(*p, o, args.value("--size").has_value());
     if (seed) o.seed = std::uint64_t(*seed);
 
     // The grammar travels inside the PNG, so the picture can be opened again: with -n and

@@ -4,6 +4,7 @@
 
 #include "app/plant/presets.hpp"
 #include "app/plant/source.hpp"
+#include "app/plant/vlab_view.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
 #include "lpy/lpy.hpp"
@@ -34,6 +35,15 @@ OpenedText openText(const std::string& text, FileKind kind, const std::string& p
     }
     ParseResult r = parse(text, parseOptionsFor(kind, path));
     out.grammar = std::move(r.grammar);
+    // A VLab object's L-system draws as its view, colours and window say (vlab_view.hpp).
+    if (out.grammar && cpfgFamily(kind)) {
+        Settings settings = out.grammar->settings;
+        if (applyVlabObjectOf(path, settings)) {
+            auto g = std::make_shared<Grammar>(*out.grammar);
+            g->settings = std::move(settings);
+            out.grammar = std::move(g);
+        }
+    }
     out.diagnostics = std::move(r.diagnostics);
     return out;
 }

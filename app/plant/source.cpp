@@ -6,6 +6,7 @@
 
 #include "app/plant/presets.hpp"
 #include "app/plant/vlab_object.hpp"
+#include "app/plant/vlab_view.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
 
@@ -40,6 +41,7 @@ SourceText readSource(const std::string& source) {
                 return out;
             }
             for (const Diagnostic& d : object->diagnostics) out.notes.push_back(formatDiagnostic(d, object->specifications));
+            for (std::string& note : readVlabPicture(*object).notes) out.notes.push_back(std::move(note));
             path = object->lsystem;
             out.displayName = path;
         }

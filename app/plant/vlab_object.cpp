@@ -3,7 +3,12 @@
 #include <filesystem>
 #include <sstream>
 
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+
 #include "core/base/read_file.hpp"
+#include "core/language/vlab/colours.hpp"
 
 namespace sprout {
 namespace {
@@ -50,12 +55,28 @@ int argumentsOf(const std::string& option) {
 // not read yet; empty for the options that concern cpfg's own window and files only.
 std::string notReadYet(const std::string& option) {
     const std::string name = option.substr(1);
-    if (name[0] == 'M') return "its material set";
-    if (name[0] == 'm' && name != "mb") return "its colour map";
     if (name == "e") return "its environment";
     if (name == "a") return "starting in animation";
-    if (name == "w") return "its window's size";
     return {};
+}
+
+// What the options that concern the picture say (vlab_view.cpp applies them): material sets,
+// colour maps, the reference set, the window's size. False, with a warning, for a set number
+// cpfg ignores or a size that is no number.
+void recordPictureOption(VlabObject& out, const std::string& folder, const Word& option, const std::vector<Word>& args, int line) {
+    const std::string& o = option.text;
+    auto warn = [&](std::string m) { out.diagnostics.push_back({line, option.col, std::move(m), Severity::Warning}); };
+    if ((o[1] == 'M' || o[1] == 'm') && o != "-mb") {
+        std::optional<int> set = vlab::colourSetNumber(o);
+        if (!set) return warn("'" + o + "': cpfg's colour sets are 0 to 11; ignored, as cpfg does");
+        out.colourFiles.push_back({*set, o[1] == 'M', (fs::path(folder) / args[0].text).string(), line, args[0].col});
+    } else if (o.size() > 2 && o[1] == 'c' && std::isdigit(static_cast<unsigned char>(o[2]))) {
+        out.referenceSet = std::clamp(std::atoi(o.c_str() + 2), 0, 11);
+    } else if (o == "-w") {
+        const int w = std::atoi(args[0].text.c_str()), h = std::atoi(args[1].text.c_str());
+        if (w >= 16 && h >= 16 && w <= 8192 && h <= 8192) out.width = w, out.height = h;
+        else warn("'-w " + args[0].text + " " + args[1].text + "': a window's size is two numbers from 16 to 8192; ignored");
+    }
 }
 
 }  // namespace
@@ -91,6 +112,7 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
                     error(number, w.col, "cpfg's option '" + w.text + "' takes " + std::to_string(n) + " argument" + (n > 1 ? "s" : ""));
                     return out;
                 }
+                recordPictureOption(out, folder, w, {words.begin() + long(k) + 1, words.begin() + long(k) + 1 + n}, number);
                 std::string what = notReadYet(w.text);
                 std::string given = w.text;
                 for (int a = 0; a < n; ++a) given += " " + words[k + 1 + size_t(a)].text;
@@ -98,8 +120,6 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
                 k += size_t(n);
             } else if (positional < 3) {
                 *files[positional++] = (fs::path(folder) / w.text).string();
-                if (positional == 2) warning(number, w.col, "the view file " + w.text + " is not read yet");
-                if (positional == 3) warning(number, w.col, "the animation file " + w.text + " is not read yet");
             } else {
                 error(number, w.col, "cpfg takes an L-system, a view file and an animation file; '" + w.text + "' is one more");
                 return out;

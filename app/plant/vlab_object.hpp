@@ -3,8 +3,9 @@
 // commands VLab runs, among them cpfg's command line (`cpfg -M plant.mat plant.l plant.v plant.a`).
 // That line is read as cpfg reads its arguments (VLab's cpfg/control.c: its options, each with
 // the arguments it takes, then the L-system, the view file and the animation file), so that the
-// object opens with the L-system it runs. What the object's other files say (view, animation,
-// materials, colour maps, environment, window) is not read yet: a warning names each.
+// object opens with the L-system it runs. Its view file, animation file, material sets, colour
+// maps and window size are applied to the plant and its picture (vlab_view.hpp); what is not
+// read yet (the environment, starting in animation) is a warning naming it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,16 @@ namespace sprout {
 struct VlabObject {
     std::string specifications;         // the folder's `specifications` file
     std::string lsystem, view, animation;  // paths of the files cpfg's line names ("": none)
+    // -M[n] FILE (material set n) and -m[n] FILE (colour map n); cpfg's later kind wins.
+    struct ColourFile {
+        int set = 1;
+        bool material = false;
+        std::string path;
+        int line = 0, col = 0;  // of the option, in `specifications`
+    };
+    std::vector<ColourFile> colourFiles;
+    int referenceSet = 1;      // -cN: `;(k)` is colour index 256 N + k
+    int width = 0, height = 0; // -w W H: the window's size
     // At the cpfg line's options: errors (no cpfg line, an option cpfg does not know, no
     // L-system) and warnings (what is not read yet).
     std::vector<Diagnostic> diagnostics;

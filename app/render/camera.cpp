@@ -22,7 +22,12 @@ glm::vec3 Camera::eye() const {
 
 glm::mat4 Camera::view() const {
     glm::vec3 up = std::fabs(pitch) > 89.0f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
-    return glm::lookAt(eye(), target, up);
+    const glm::vec3 from = eye();
+    if (roll != 0) {  // the up vector turned about the viewing direction
+        const glm::vec3 forward = glm::normalize(target - from);
+        up = glm::vec3(glm::rotate(glm::mat4(1), glm::radians(roll), forward) * glm::vec4(up, 0));
+    }
+    return glm::lookAt(from, target, up);
 }
 
 glm::mat4 Camera::projection(float aspect, float near, float far) const {
@@ -79,6 +84,38 @@ Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool pla
         }
         c.distance = need;
     }
+    return c;
+}
+
+Camera frameView(const Bounds& bounds, float aspect, const ViewDirection& v) {
+    Camera c;
+    glm::vec3 d = v.eye - v.target;
+    d = glm::length(d) > 0 ? glm::normalize(d) : glm::vec3(0, 0, 1);  // cpfg: the same points fall back to +Z
+    c.yaw = glm::degrees(std::atan2(d.x, d.z));
+    c.pitch = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+    c.roll = v.roll;
+    c.orthographic = !v.perspective;
+    c.fovY = std::clamp(v.fovY, 1.0f, 170.0f);
+    const glm::vec3 size = bounds.empty ? glm::vec3(1) : bounds.size();
+    c.target = bounds.empty ? glm::vec3(0) : bounds.centre();
+    // The box's corners across the view, whichever way the roll turns the frame.
+    const glm::vec3 up = std::fabs(d.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+    const glm::vec3 right = glm::normalize(glm::cross(up, d)), camUp = glm::cross(d, right);
+    float across = 1e-4f, depth = 0;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner = (bounds.empty ? glm::vec3(-0.5f) : bounds.min) - c.target +
+                                 glm::vec3(i & 1 ? size.x : 0, i & 2 ? size.y : 0, i & 4 ? size.z : 0);
+        const float r = std::fabs(glm::dot(corner, right)), u = std::fabs(glm::dot(corner, camUp));
+        const float k = v.roll == 0 ? std::max(u, r / aspect) : std::max(u, r) * std::max(1.0f, 1.0f / aspect);
+        across = std::max(across, k);
+        depth = std::max(depth, std::fabs(glm::dot(corner, d)));
+    }
+    const float margin = 1.05f;
+    c.orthoHeight = 2 * across * margin;
+    c.distance = c.orthographic ? depth * 2 + 1 : depth + across * margin / std::tan(glm::radians(c.fovY) / 2);
+    const float distance = c.distance;
+    if (v.scale > 0) c.zoom(1.0f / v.scale);
+    if (c.orthographic) c.distance = distance;  // closer by its height: the camera stays out of the plant
     return c;
 }
 

@@ -16,6 +16,7 @@ struct Camera {
     float fovY = 35;   // degrees (perspective)
     bool orthographic = false;
     float orthoHeight = 10;  // visible height (orthographic)
+    float roll = 0;    // degrees the picture turns about the viewing direction (cpfg's twist)
 
     // Closer (k < 1) or farther (k > 1), distance and orthographic height together, kept
     // between 1e-6 and 1e12 whatever the wheel, the keys or a script ask: a zoom to 0 or to
@@ -31,6 +32,20 @@ enum class ViewPreset { Auto, Front, Side, Top, Iso };
 // A camera that shows the whole of `bounds` with a margin, from the given direction.
 // Planar curves get an orthographic front view; flat plants (z = 0) a front view.
 Camera frameBounds(const Bounds& bounds, float aspect, ViewPreset view, bool planarCurve);
+
+// A view given as cpfg's view file gives it: from `eye` towards `target`, turned by `roll`
+// degrees, parallel or perspective (`fovY`), closer by `scale`.
+struct ViewDirection {
+    glm::vec3 eye{0, 0, 1}, target{0, 0, 0};
+    float roll = 0;
+    bool perspective = false;
+    float fovY = 45;
+    float scale = 1;
+};
+
+// A camera that looks along `view`'s direction at the centre of `bounds`, which fill the frame
+// (cpfg's automatic window), then zoomed by its scale.
+Camera frameView(const Bounds& bounds, float aspect, const ViewDirection& view);
 
 // The same direction, fitted to the plant's own points rather than its bounding box: a
 // round crown fills the frame instead of its box's projection.

@@ -29,6 +29,22 @@ struct Jittered {
 enum class Toggle { Auto, On, Off };
 enum class ViewHint { Auto, Flat, Solid };  // `view: 2d` / `view: 3d`
 
+// The picture a VLab object's view file, animation file and cpfg line ask for (app/plant/
+// vlab_view.cpp): cpfg's camera, light, background, window and animated steps. Unset for
+// other grammars, whose pictures are framed by the renderer's own choice.
+struct PictureView {
+    std::array<double, 3> eye{0, 0, 1}, target{0, 0, 0};  // viewpoint, view reference point
+    double twist = 0;         // degrees about the viewing direction
+    bool perspective = false; // false: parallel projection
+    double viewingAngle = 45; // degrees, perspective
+    double scale = 1;         // scale factor: > 1 closer
+    std::array<double, 3> light{1, 0, 0};  // towards the light
+    std::optional<std::uint32_t> background;  // 0xRRGGBB
+    std::optional<std::uint32_t> ink;  // 0xRRGGBB: a planar curve's colour (its initial colour)
+    int width = 0, height = 0;  // -w: the window's size (0: unset)
+    std::vector<int> frames;    // the derivation steps an animation shows (empty: all)
+};
+
 struct Settings {
     int iterations = 0;
     Jittered angle{90, 0};  // degrees
@@ -41,6 +57,13 @@ struct Settings {
     std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
     double tropismStrength = 0;
     std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
+    // cpfg's colour index and width steps (a VLab object's view file): the index the turtle
+    // starts with (-1: none, colours by branch order), what `;` and `,` add, and, when set,
+    // what `!` and `#` subtract and add (instead of widthFactor's product).
+    int initialColour = -1;
+    int colourIncrement = 1;
+    std::optional<double> widthIncrement;
+    std::optional<PictureView> picture;  // a VLab object's picture
     // Cross-sections for generalized cylinders, by SetContour(k): x y pairs, the stem's radius
     // one unit (x along the turtle's left, y along its up); closed when the last point is the
     // first. Made by the L-Py drawing (PlantGL's SetContour and Sweep curves).

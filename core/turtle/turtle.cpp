@@ -65,7 +65,10 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : toFloat(st.branchWidth);
     m_palette = st.palette;
     if (m_palette.empty()) m_palette.assign(std::begin(kDefaultPalette), std::end(kDefaultPalette));
-    if (m_palette.size() > 127) m_palette.resize(127);  // the state keeps the index in a byte
+    if (m_palette.size() > 32767) m_palette.resize(32767);  // the state keeps the index in 16 bits
+    m_colourStep = st.colourIncrement;
+    m_widthSteps = st.widthIncrement.has_value();
+    m_widthStep = toFloat(st.widthIncrement.value_or(0));
     // Colour by branch order: bark at the trunk, approaching the tip colour with each
     // order (t = 1 - 0.55^order), so no pass is needed to find the deepest order first.
     float t = 0;
@@ -74,6 +77,10 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     m_state.length = toFloat(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
     m_state.width = m_autoWidth ? 1.0f : toFloat(st.width);
     m_min = m_max = m_state.pos;
+    if (st.initialColour >= 0) {  // cpfg's initial color: a palette index from the start
+        m_state.colour = std::int16_t(st.initialColour % int(m_palette.size()));
+        m_gradient = false;
+    }
     m_state.stemColour = stemColour(m_state);
     // Runs of F can be batched when nothing changes from one segment to the next.
     m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !(o.ages && o.growStep >= 0);

@@ -35,7 +35,7 @@ public:
     bool treeApplicable() const {
         return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
                !m_opt.segmentModules && !m_opt.surfaceModules &&
-               m_surfaceFiles.empty() &&
+               m_surfaceFiles.empty() && m_palette.size() <= 127 && m_colourStep == 1 && !m_widthSteps &&
                simpleInterpretation(m_g);
     }
     static bool simpleInterpretation(const Grammar& g) {
@@ -245,6 +245,9 @@ private:
     bool m_polygonEdgesDrawn = false;  // Settings::polygonEdgesDrawn
     glm::vec3 m_tropism;
     float m_tropismE, m_widthFactor, m_branchLength, m_branchWidth;
+    int m_colourStep = 1;           // what ; and , add and take (cpfg's color increment)
+    float m_widthStep = 0;          // cpfg's line width increment: ! and # take and add it
+    bool m_widthSteps = false;      // ! and # add m_widthStep instead of multiplying by m_widthFactor
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
     bool m_hasCurves = false;
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile

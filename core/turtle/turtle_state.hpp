@@ -97,7 +97,7 @@ struct State {
     float width = 1;  // diameter
     std::int32_t lastSegment = -1;  // the segment this branch's next segment continues
     std::uint16_t order = 0;
-    std::int8_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
+    std::int16_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
     std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
     std::int16_t section = -1;  // Settings::sections index of the next @Gs's cross-section; -1: round
     float angleScale = 1;     // @A: factor on the default turning angle

@@ -140,16 +140,18 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 [[gnu::always_inline]] inline void Turtle::stepWidth(State& t, Act act, const double* p) {
     // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
     if (p) m_absoluteWidths = true;
-    t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
+    if (m_widthSteps && !p) t.width = std::max(0.0f, t.width + (act == Act::WidthDec ? -m_widthStep : m_widthStep));
+    else t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
     // Taper: the segment before ends as thick as the next one starts.
     if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
 }
 
 // ; ' and ,: the palette entry set, or the next one (; ') or the previous one (,).
 [[gnu::always_inline]] inline void Turtle::stepColour(State& t, Act act, const double* p) {
-    int index = p ? int(std::clamp(*p, -1e6, 1e6)) : act == Act::ColourNext ? std::max<int>(t.colour, 0) + 1 : std::max<int>(t.colour, 0) - 1;
+    int index = p ? int(std::clamp(*p, -1e6, 1e6))
+                  : act == Act::ColourNext ? std::max<int>(t.colour, 0) + m_colourStep : std::max<int>(t.colour, 0) - m_colourStep;
     const int n = int(m_palette.size());
-    t.colour = std::int8_t(((index % n) + n) % n);
+    t.colour = std::int16_t(((index % n) + n) % n);
     t.stemColour = stemColour(t);
 }
 

@@ -294,7 +294,7 @@ void Turtle::place(const Block& b, State& t) {
     t.length *= b.length;
     t.width *= b.width;
     if (b.colour >= 0) {
-        t.colour = std::int8_t((from + b.colour) % palette);
+        t.colour = std::int16_t((from + b.colour) % palette);
         t.stemColour = stemColour(t);
     }
     if (b.lastSegment >= 0) t.lastSegment = std::int32_t(base) + b.lastSegment;

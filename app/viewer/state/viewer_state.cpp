@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "app/plant/text_edit.hpp"
+#include "app/plant/vlab_view.hpp"
 #include "core/base/read_file.hpp"
 #include "lpy/lpy.hpp"
 #include "core/language/import/import.hpp"
@@ -207,7 +208,27 @@ void ViewerState::waitForPlant() {
     if (r->ok()) m_plant = r;
 }
 
-bool ViewerState::open(const fs::path& path, std::string& error, const std::string& system) {
+bool ViewerState::open(const fs::path& given, std::string& error, const std::string& system) {
+    // A VLab object: its L-system opens, and the object is kept for the panel.
+    fs::path path = given;
+    std::optional<VlabSummary> object;
+    if (std::optional<VlabObject> o = vlabObjectAt(given.string())) {
+        for (const Diagnostic& d : o->diagnostics)
+            if (d.severity == Severity::Error && fs::is_directory(given)) {  // a file in it still opens as it is
+                error = formatDiagnostic(d, o->specifications);
+                return false;
+            }
+        if (!hasErrors(o->diagnostics)) {
+            path = o->lsystem;
+            object = summarizeVlabObject(*o);
+        }
+    }
+    if (!openFile(path, error, system)) return false;
+    m_vlab = std::move(object);
+    return true;
+}
+
+bool ViewerState::openFile(const fs::path& path, std::string& error, const std::string& system) {
     auto text = readFile(path);
     if (!text) {
         error = "cannot open " + path.string() + ": " + std::strerror(errno);
@@ -239,6 +260,7 @@ bool ViewerState::open(const fs::path& path, std::string& error, const std::stri
 void ViewerState::openText(std::string text, fs::path path, std::string preset) {
     m_path = std::move(path);
     m_preset = std::move(preset);
+    m_vlab.reset();
     m_importedFrom.clear();
     m_importSystems.clear();
     std::error_code ec;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/plant/vlab_view.hpp"
 #include "app/viewer/state/trust.hpp"
 #include "app/viewer/state/worker.hpp"
 
@@ -84,9 +85,14 @@ public:
     // Opens a .lsys file, or imports an Lparser .ls / Fractint .l one (`system` picks one
     // of a Fractint file's systems); an import has no path until it is saved as .lsys.
     bool open(const std::filesystem::path& path, std::string& error, const std::string& system = {});
+    // The file as it is (open() without looking for a VLab object around it).
+    bool openFile(const std::filesystem::path& path, std::string& error, const std::string& system = {});
     // The file an import came from, and a Fractint file's systems to choose from.
     const std::filesystem::path& importedFrom() const { return m_importedFrom; }
     const std::vector<std::string>& importSystems() const { return m_importSystems; }
+    // The VLab object open (a folder, or a file in it, with a `specifications`): open() opens
+    // the L-system its cpfg line runs, whose view and colours the worker applies.
+    const std::optional<VlabSummary>& vlabObject() const { return m_vlab; }
     // A preset (named `preset`) or a restore; a path when the text is that file's.
     void openText(std::string text, std::filesystem::path path = {}, std::string preset = {});
     // The panel's title: the file name, the preset's name, or "untitled".
@@ -125,6 +131,7 @@ private:
     FileKind m_kind = FileKind::Lsys;
     std::string m_preset;  // the preset opened, until saved under a name
     std::filesystem::path m_importedFrom;
+    std::optional<VlabSummary> m_vlab;
     std::vector<std::string> m_importSystems;
     std::filesystem::file_time_type m_fileTime{};
     std::filesystem::path m_autosaveDir;

@@ -16,6 +16,7 @@
 
 #include "app/image.hpp"
 #include "app/labels.hpp"
+#include "app/snapshot.hpp"
 #include "app/viewer/window/app.hpp"
 #include "core/environment/environment_drawing.hpp"
 
@@ -127,6 +128,15 @@ void App::frame() {
             camera = render::frameGeometry(*plant->geometry, aspect, render::ViewPreset::Auto);
             camera.yaw = yaw;
             camera.pitch = pitch;
+        }
+        // A VLab object's view: its camera, and its background and light in the view's options.
+        const auto& picture = plant->grammar ? plant->grammar->settings.picture : std::nullopt;
+        if (picture && !keep) {
+            camera = pictureCamera(*picture, plant->geometry->bounds, aspect);
+            SnapshotOptions o;
+            o.render = view.render;
+            usePictureView(*picture, o, true);
+            view.render = o.render;
         }
     }
     needsRedraw = true;

@@ -197,6 +197,8 @@ void drawPanel(App& app) {
             }
         }
     }
+    if (const auto& object = app.state.vlabObject())
+        if (ImGui::CollapsingHeader("VLab object", ImGuiTreeNodeFlags_DefaultOpen)) vlabSection(app, *object);
     if (ImGui::CollapsingHeader("Grammar", ImGuiTreeNodeFlags_DefaultOpen)) grammarSection(app);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);

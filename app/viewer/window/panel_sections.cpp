@@ -141,11 +141,26 @@ void parameterSection(App& app) {
     }
 }
 
+void vlabSection(App& app, const VlabSummary& object) {
+    ImGui::TextColored(kDim, "%s", object.folder.c_str());
+    if (!object.description.empty()) ImGui::TextWrapped("%s", object.description.c_str());
+    std::string files;
+    for (const auto& f : object.files) files += (files.empty() ? "" : "  ") + f;
+    ImGui::TextColored(kDim, "files:");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", files.c_str());
+    for (const auto& n : object.notes) ImGui::TextColored(kWarning, "%s", n.c_str());
+}
+
 void growthSection(App& app) {
     auto plant = app.state.plant();
     if (!plant) return;
     int step = plant->displayStep;
-    if (ImGui::SliderInt("step", &step, 0, plant->iterations)) app.state.setDisplayStep(step);
+    // A VLab object's animation file: the steps from its first frame to its last.
+    int first = 0, last = plant->iterations;
+    if (const auto& p = plant->grammar ? plant->grammar->settings.picture : std::nullopt; p && !p->frames.empty())
+        first = std::min(p->frames.front(), last), last = std::max(first, std::min(p->frames.back(), last));
+    if (ImGui::SliderInt("step", &step, first, last)) app.state.setDisplayStep(step);
     if (ImGui::Button("|<")) app.state.setDisplayStep(0);
     ImGui::SameLine();
     if (ImGui::Button("<")) app.state.stepBy(-1);

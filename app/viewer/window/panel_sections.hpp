@@ -12,9 +12,10 @@ inline const ImVec4 kError(1.0f, 0.45f, 0.4f, 1), kWarning(1.0f, 0.8f, 0.35f, 1)
 // panel_grammar.cpp: the grammar's editor and its messages; which rule made a picked branch.
 void grammarSection(App& app);
 void whySection(App& app);
-// panel_sections.cpp: parameters (or an IFS's maps), growth, the environment, view and light,
+// panel_sections.cpp: a VLab object, parameters (or an IFS's maps), growth, the environment, view and light,
 // presets.
 void parameterSection(App& app);
+void vlabSection(App& app, const VlabSummary& object);  // a VLab object's description, files, notes
 void growthSection(App& app);
 void environmentSection(App& app, const Environment& env);
 void viewSection(App& app);

@@ -1,0 +1,162 @@
+// A VLab object's picture (issue 50): its view file's camera, its colour map's or material
+// set's colours, its window size and its animation file's steps, as `sprout render FOLDER`
+// draws them. The objects are written here, their binary files too.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "app/image.hpp"
+#include "tests/app/run_sprout.hpp"
+
+using namespace sprout_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Object {
+    fs::path folder;
+    explicit Object(const std::string& name) : folder(fs::path(testing::TempDir()) / (name + "_" + std::to_string(getpid()))) {
+        fs::create_directories(folder);
+        write("plant.l", "Lsystem: 1\nderivation length: 4\nAxiom: A\nA --> F[+A][-A]\nendlsystem\n");
+    }
+    ~Object() { fs::remove_all(folder); }
+    void write(const std::string& name, const std::string& bytes) const { std::ofstream(folder / name, std::ios::binary) << bytes; }
+    void cpfg(const std::string& line) const { write("specifications", "plant.l\nplant.v\nignore:\n*\nmodel:\n\t" + line + "\n"); }
+    // The folder rendered; the picture read back.
+    sprout::Image render(const std::string& options = "--size 320x240") const {
+        const std::string png = (folder / "shot.png").string();
+        const Result r = runSprout("render " + folder.string() + " -o " + png + " " + options);
+        EXPECT_EQ(r.code, 0) << r.err;
+        sprout::Image image;
+        std::string error;
+        EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
+        return image;
+    }
+};
+
+const std::string kView = "angle factor: 8\ninitial color: 5\nline style: cylinder\ninitial line width: 0.25\n";
+
+// A colour map of 256 RGB triples: colour 0 `background`, colour 5 `plant`, the rest grey.
+std::string colourMap(std::uint32_t background, std::uint32_t plant) {
+    std::string bytes(768, char(128));
+    for (auto [k, c] : {std::pair<int, std::uint32_t>{0, background}, {5, plant}})
+        for (int i = 0; i < 3; ++i) bytes[size_t(3 * k + i)] = char(c >> (16 - 8 * i) & 0xFF);
+    return bytes;
+}
+
+int count(const sprout::Image& im, bool (*test)(const std::uint8_t*)) {
+    int n = 0;
+    for (size_t i = 0; i + 3 < im.rgba.size(); i += 4) n += test(&im.rgba[i]);
+    return n;
+}
+bool blue(const std::uint8_t* p) { return p[2] > 120 && p[0] < 60 && p[1] < 60; }
+bool red(const std::uint8_t* p) { return p[0] > 100 && p[1] < 50 && p[2] < 50; }
+bool yellow(const std::uint8_t* p) { return p[0] > 220 && p[1] > 220 && p[2] < 40; }
+
+// The columns and rows where the picture is not its corner's colour.
+struct Extent {
+    int width = 0, height = 0;
+};
+Extent extent(const sprout::Image& im) {
+    const std::uint8_t* bg = im.rgba.data();
+    int x0 = im.width, x1 = -1, y0 = im.height, y1 = -1;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const std::uint8_t* p = &im.rgba[(size_t(y) * size_t(im.width) + size_t(x)) * 4];
+            if (std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 60)
+                x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        }
+    return {x1 - x0 + 1, y1 - y0 + 1};
+}
+
+TEST(VlabPicture, TheColourMapColoursThePlantAndItsBackground) {
+    Object o("vlab_map");
+    o.write("plant.v", kView);
+    o.write("plant.map", colourMap(0xFFFF00, 0x0000FF));
+    o.cpfg("cpfg plant.l plant.v");
+    const sprout::Image without = o.render();
+    o.cpfg("cpfg -m plant.map plant.l plant.v");
+    const sprout::Image with = o.render();
+    EXPECT_EQ(count(without, blue), 0);
+    EXPECT_GT(count(with, blue), 300) << "colour 5 of the map draws the plant";
+    EXPECT_TRUE(yellow(with.rgba.data())) << "colour 0 of the map is the background";
+    EXPECT_FALSE(yellow(without.rgba.data()));
+    // Another map, another colour: the same pixels now red.
+    o.write("plant.map", colourMap(0xFFFF00, 0xFF0000));
+    EXPECT_GT(count(o.render(), red), 300);
+}
+
+TEST(VlabPicture, TheMaterialSetColoursThePlant) {
+    Object o("vlab_mat");
+    o.write("plant.v", kView);
+    // medit's records: index, transparency, ambient, diffuse, emission, specular, shininess.
+    std::string mat;
+    mat += std::string{0, 0, 0, 0, 0, 0, 0, 0, char(255), char(255), 0, 0, 0, 0, 0};  // 0: emits yellow (the background)
+    mat += std::string{5, 0, 20, 0, 0, char(220), 0, 0, 0, 0, 0, 60, 60, 60, 30};      // 5: diffuse red
+    o.write("plant.mat", mat);
+    o.cpfg("cpfg -M plant.mat plant.l plant.v");
+    const sprout::Image with = o.render();
+    EXPECT_GT(count(with, red), 300);
+    EXPECT_TRUE(yellow(with.rgba.data()));
+    // A material set cut short: the file, the byte and what was expected; cpfg's defaults drawn.
+    o.write("plant.mat", mat.substr(0, 20));
+    const Result r = runSprout("render " + o.folder.string() + " -o " + (o.folder / "cut.png").string() + " --size 64x48");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find((o.folder / "plant.mat").string() + ": byte 15: a material of 5 bytes; expected 15"), std::string::npos) << r.err;
+}
+
+TEST(VlabPicture, TheViewFilesCameraFramesThePicture) {
+    Object o("vlab_camera");
+    o.cpfg("cpfg -m plant.map plant.l plant.v");
+    o.write("plant.map", colourMap(0xFFFFFF, 0x0000FF));
+    auto view = [&](const std::string& camera, const std::string& options = "--size 320x240") {
+        o.write("plant.v", kView + camera);
+        return o.render(options);
+    };
+    const sprout::Image frontImage = view("viewpoint: 0,0,1\nview reference point: 0,0,0\n");
+    const Extent front = extent(frontImage);
+    ASSERT_GT(front.width, 100);
+    // From the side the flat plant is edge-on: only its stems' thickness is left across.
+    const Extent side = extent(view("viewpoint: 1,0,0\nview reference point: 0,0,0\n"));
+    EXPECT_LT(side.width, front.width / 3) << side.width << " " << front.width;
+    EXPECT_NEAR(side.height, front.height, front.height / 10);
+    // A twist of 900 tenths of a degree turns the picture a quarter: the wide plant stands tall.
+    const Extent turned = extent(view("viewpoint: 0,0,1\ntwist: 900\n"));
+    EXPECT_NEAR(double(turned.width) / turned.height, double(front.height) / front.width, 0.08) << turned.width << "x" << turned.height;
+    // The scale factor: half as big.
+    const Extent half = extent(view("scale factor: 0.5\n"));
+    EXPECT_NEAR(double(half.height) / front.height, 0.5, 0.06);
+    // Perspective against parallel, seen from above and aside: not the same picture.
+    const sprout::Image parallel = view("viewpoint: 3,2,3\nprojection: parallel\n");
+    const sprout::Image perspective = view("viewpoint: 3,2,3\nprojection: perspective\nviewing angle: 70\n");
+    int differ = 0;
+    for (size_t i = 0; i < parallel.rgba.size(); i += 4) differ += std::abs(parallel.rgba[i + 2] - perspective.rgba[i + 2]) > 60;
+    EXPECT_GT(differ, 500);
+    // -w: the window's size, unless --size says otherwise.
+    o.cpfg("cpfg -w 200 150 -m plant.map plant.l plant.v");
+    const sprout::Image small = view("", "");
+    EXPECT_EQ(small.width, 200);
+    EXPECT_EQ(small.height, 150);
+}
+
+TEST(VlabPicture, TheAnimationFileSaysWhichStepsGrowthShows) {
+    Object o("vlab_animation");
+    o.write("plant.v", kView);
+    o.write("plant.a", "double buffer: on\nfirst frame: 1\nlast frame: 4\nstep: 2\n");
+    o.cpfg("cpfg plant.l plant.v plant.a");
+    const std::string base = (o.folder / "grow").string();
+    const Result r = runSprout("render " + o.folder.string() + " --animate growth --size 96x64 -o " + base + ".png");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(base + "_0001.png"));  // step 1
+    EXPECT_TRUE(fs::exists(base + "_0002.png"));  // step 3
+    EXPECT_FALSE(fs::exists(base + "_0003.png"));
+    // A wrong value in the animation file: its file and line, and what was expected.
+    o.write("plant.a", "first frame: 1\nstep: often\n");
+    const Result bad = runSprout("expand " + o.folder.string());
+    EXPECT_NE(bad.err.find((o.folder / "plant.a").string() + ":2:1: 'step:' expects a whole number; found 'often'"), std::string::npos) << bad.err;
+}
+
+}  // namespace

@@ -1,0 +1,59 @@
+// The viewer opens a VLab object (issue 50): its folder, or any file in it, opens the L-system
+// its cpfg line runs, drawn with the object's view and colours, and the panel gets its
+// description and files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "app/viewer/state/viewer_state.hpp"
+
+namespace sprout::viewer {
+namespace {
+namespace fs = std::filesystem;
+
+TEST(ViewerVlabObject, AFolderOrAFileInItOpensTheObject) {
+    const fs::path folder = fs::path(testing::TempDir()) / ("sprout_viewer_vlab_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "specifications") << "plant.l\nplant.v\ndescription.txt\nignore:\n*\nmodel:\n\tcpfg -m plant.map plant.l plant.v plant.a\n";
+    std::ofstream(folder / "plant.l") << "Lsystem: 1\nderivation length: 5\nAxiom: A\nA --> F[+A][-A]\nendlsystem\n";
+    std::ofstream(folder / "plant.v") << "angle factor: 12\ninitial color: 3\nviewpoint: 1,0,0\n";
+    std::ofstream(folder / "plant.a") << "first frame: 2\nlast frame: 4\n";
+    std::ofstream(folder / "description.txt") << "A small shrub, for the test.\n";
+    std::string map(768, '\0');
+    map[9] = char(255);  // colour 3: red
+    std::ofstream(folder / "plant.map", std::ios::binary) << map;
+
+    for (const fs::path& opened : {folder, folder / "plant.v", folder / "description.txt"}) {
+        ViewerState s(folder / "autosave");
+        std::string error;
+        ASSERT_TRUE(s.open(opened, error)) << opened << ": " << error;
+        EXPECT_EQ(s.path(), folder / "plant.l") << opened;
+        ASSERT_TRUE(s.vlabObject());
+        EXPECT_EQ(s.vlabObject()->description, "A small shrub, for the test.\n");
+        EXPECT_NE(std::find(s.vlabObject()->files.begin(), s.vlabObject()->files.end(), "plant.map"), s.vlabObject()->files.end());
+        s.waitForPlant();
+        ASSERT_TRUE(s.plant() && s.plant()->grammar);
+        const Settings& st = s.plant()->grammar->settings;
+        EXPECT_DOUBLE_EQ(st.angle.mean, 30);  // the view file's angle factor
+        ASSERT_EQ(st.palette.size(), 256u);   // the colour map
+        EXPECT_EQ(st.palette[3], 0xFF0000FFu);
+        EXPECT_EQ(st.initialColour, 3);
+        ASSERT_TRUE(st.picture);
+        EXPECT_EQ(st.picture->eye, (std::array<double, 3>{1, 0, 0}));
+        EXPECT_EQ(st.picture->frames, (std::vector<int>{2, 3, 4}));  // the growth slider's range
+        // Every stem drawn in colour 3.
+        ASSERT_FALSE(s.plant()->geometry->cylinders.empty());
+        EXPECT_EQ(s.plant()->geometry->cylinders.front().colour, 0xFF0000FFu);
+    }
+    // Another file opened: no object any more.
+    ViewerState s(folder / "autosave");
+    s.openText("axiom: F\n", folder.parent_path() / "elsewhere.lsys");
+    EXPECT_FALSE(s.vlabObject());
+    fs::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace sprout::viewer
