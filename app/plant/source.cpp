@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"
+#include "app/plant/vlab_environment.hpp"
 #include "app/plant/vlab_object.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
@@ -40,6 +41,15 @@ SourceText readSource(const std::string& source) {
                 return out;
             }
             for (const Diagnostic& d : object->diagnostics) out.notes.push_back(formatDiagnostic(d, object->specifications));
+            if (!object->environment.empty()) {  // -e: its messages here; openText gives the parser its program
+                ObjectEnvironment env = readObjectEnvironment(object->environment);
+                if (env.failed) {
+                    for (size_t k = 0; k + 1 < env.messages.size(); ++k) out.notes.push_back(env.messages[k]);
+                    out.error = env.messages.back();
+                    return out;
+                }
+                for (std::string& m : env.messages) out.notes.push_back(std::move(m));
+            }
             path = object->lsystem;
             out.displayName = path;
         }

@@ -52,7 +52,6 @@ std::string notReadYet(const std::string& option) {
     const std::string name = option.substr(1);
     if (name[0] == 'M') return "its material set";
     if (name[0] == 'm' && name != "mb") return "its colour map";
-    if (name == "e") return "its environment";
     if (name == "a") return "starting in animation";
     if (name == "w") return "its window's size";
     return {};
@@ -91,6 +90,7 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
                     error(number, w.col, "cpfg's option '" + w.text + "' takes " + std::to_string(n) + " argument" + (n > 1 ? "s" : ""));
                     return out;
                 }
+                if (w.text == "-e") out.environment = (fs::path(folder) / words[k + 1].text).string();  // vlab_environment.hpp
                 std::string what = notReadYet(w.text);
                 std::string given = w.text;
                 for (int a = 0; a < n; ++a) given += " " + words[k + 1 + size_t(a)].text;

@@ -16,6 +16,7 @@ namespace sprout {
 struct VlabObject {
     std::string specifications;         // the folder's `specifications` file
     std::string lsystem, view, animation;  // paths of the files cpfg's line names ("": none)
+    std::string environment;            // `-e FILE.e`: the environment file's path (vlab_environment.hpp reads it)
     // At the cpfg line's options: errors (no cpfg line, an option cpfg does not know, no
     // L-system) and warnings (what is not read yet).
     std::vector<Diagnostic> diagnostics;

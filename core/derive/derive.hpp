@@ -131,6 +131,8 @@ private:
     std::unique_ptr<class D0LExpander> m_d0l;
     std::unique_ptr<class StepRewriter> m_rewriter;
     std::unique_ptr<class StepRewriter> m_decomposer;
+    // A cpfg environment program's run (`-e`): its state goes from step to step.
+    std::unique_ptr<ProgramRun> m_environmentRun;
     DeriveOutcome m_axiomOutcome;  // the axiom's decomposition, reported by deriveTo
 };
 

@@ -177,6 +177,9 @@ struct ParseOptions {
     IncludeReader include;   // null: `#include` is an error (text typed with no folder)
     std::string fileName;    // the grammar's own name, so that it cannot include itself
     bool explorer = false;   // an L-system Explorer file (`.ls`, not Lparser's): that tool's defaults
+    // A VLab object's `-e FILE.e` environment program (readEnviroFile): the grammar's
+    // environment.program, which answers its ?E modules.
+    std::shared_ptr<const EnvironmentProgram> environmentProgram = nullptr;
 };
 
 ParseResult parse(std::string_view text);
