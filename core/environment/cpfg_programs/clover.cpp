@@ -135,7 +135,8 @@ bool readSgi(const std::string& bytes, SgiImage& img, std::string& error) {
         }
         size_t at = u32(512 + 4 * r), end = at + u32(512 + 4 * count + 4 * r);
         if (end > bytes.size() || end < at) {
-            error = "row " + std::to_string(r) + " of the SGI image lies beyond the file's end (truncated)";
+            error = "row " + std::to_string(r % size_t(img.ysize) + 1) + " of channel " + std::to_string(r / size_t(img.ysize) + 1) +
+                    " of the SGI image lies beyond the file's end (truncated)";
             return false;
         }
         size_t x = 0;

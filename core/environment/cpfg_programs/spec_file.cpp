@@ -6,11 +6,11 @@
 namespace sprout::cpfgprog {
 
 void Sink::warning(int line, std::string message) const {
-    if (out) out->push_back({file, {line, 0, std::move(message), Severity::Warning}});
+    if (out) out->push_back({file, {line, line > 0 ? 1 : 0, std::move(message), Severity::Warning}});
 }
 
 void Sink::error(int line, std::string message) const {
-    if (out) out->push_back({file, {line, 0, std::move(message), Severity::Error}});
+    if (out) out->push_back({file, {line, line > 0 ? 1 : 0, std::move(message), Severity::Error}});
 }
 
 std::vector<SpecLine> specLines(std::string_view text) {
