@@ -41,17 +41,16 @@ SourceText readSource(const std::string& source) {
                 return out;
             }
             for (const Diagnostic& d : object->diagnostics) out.notes.push_back(formatDiagnostic(d, object->specifications));
-            if (!object->environment.empty()) {  // -e: its messages here; openText gives the parser its program
-                ObjectEnvironment env = readObjectEnvironment(object->environment);
-                if (env.failed) {
-                    for (size_t k = 0; k + 1 < env.messages.size(); ++k) out.notes.push_back(env.messages[k]);
-                    out.error = env.messages.back();
-                    return out;
-                }
-                for (std::string& m : env.messages) out.notes.push_back(std::move(m));
-            }
             path = object->lsystem;
             out.displayName = path;
+        }
+        // A VLab object's environment (-e): its messages here; openText gives the parser its program.
+        if (ObjectEnvironment env = objectEnvironment(path); env.failed) {
+            for (size_t k = 0; k + 1 < env.messages.size(); ++k) out.notes.push_back(env.messages[k]);
+            out.error = env.messages.back();
+            return out;
+        } else {
+            for (std::string& m : env.messages) out.notes.push_back(std::move(m));
         }
         std::optional<std::string> bytes = readFile(path);
         if (!bytes) {
