@@ -1,7 +1,7 @@
 // cpfg's environment programs (`cpfg -e FILE.e`), provided natively
 // (core/environment/cpfg_programs/): what each answers the ?E modules, on small objects of our
 // own. The expected strings were obtained from the reference cpfg (VLab's, with its honda81,
-// ecosystem and clover built, and the CelticKnot object's obcheck.c compiled for this check
+// ecosystem, clover and chiba built, and the CelticKnot object's obcheck.c compiled for this check
 // only) run on these same objects: `cpfg -g -str out.str -m M.map -e a.e a.l a.v`.
 #include <gtest/gtest.h>
 
@@ -128,6 +128,22 @@ TEST(CpfgPrograms, CloverAnswersTheLightUnderTheLeaves) {
                                  "full light is taken everywhere"}));
 }
 
+// chiba: the light reaching each sphere ?E(radius) (0: the file's radius) from the sky's samples
+// or the given sources, and with four parameters the brightest direction.
+TEST(CpfgPrograms, ChibaAnswersTheLightReachingEachSphere) {
+    Files f{{"a.e", enviroE("chiba c.spec", " %g %g %g")}, {"c.spec", "grid size: 4 4 4\nnumber of samples: 32\nradius: 0.5\n"}};
+    const std::string lsystem = "Lsystem: 1\nderivation length: 1\nAxiom: [?E(1,0,0,0)][f(1.5)?E(0)][f(3)?E(0.8)][+(80)f(1.1)?E(0.6,0,0,0)]"
+                                "[&(90)f(2)?E(1)]\n?E(v) --> R(v)\n?E(v,x,y,z) --> R(v,x,y,z)\nendlsystem\n";
+    EXPECT_EQ(expandWith(f, lsystem), "[R(0.9446,0.364185,0.906025,0.215611)][f(1.5)R(0.920784)][f(3)R(1)]"
+                                      "[+(80)f(1.1)R(0.92405,-0.523687,0.84999,0.0571683)][&(90)f(2)R(0.964977)]");
+    f["c.spec"] = "grid size: 3 3 3\nsource direction: 0 1 0 2\nsource direction: 1 1 0 1\nestimate intersection area: on\n";
+    EXPECT_EQ(expandWith(f, lsystem), "[R(0.482463,0.316482,0.948598,0)][f(1.5)R(0.99959)][f(3)R(1)]"
+                                      "[+(80)f(1.1)R(0.525629,0.21863,0.975808,0)][&(90)f(2)R(0.6)]");
+    f["c.spec"] = "grid size: 0 4 4\n";
+    EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/c.spec:1:1: 'grid size': expected three whole numbers of voxels, at "
+                                                      "least 1 each and 16000000 in all at most"});
+}
+
 // obcheck (the CelticKnot object's program): ?E(0) starts a segment, ?E(v) ends it and is answered
 // whether it crosses an obstacle of obstacles.dat; at once, in the turtle's order.
 TEST(CpfgPrograms, ObcheckAnswersWhetherAPathCrossesAnObstacle) {
@@ -146,7 +162,7 @@ TEST(CpfgPrograms, ObcheckAnswersWhetherAPathCrossesAnObstacle) {
 TEST(CpfgPrograms, TheEnvironmentFileSaysWhatItCannotRun) {
     Files f{{"a.e", enviroE("./soil -e a.e s.spec", " %g %g %g")}};
     EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/a.e:1:1: warning: the environment program 'soil' is not one Sprout "
-                                                      "provides (it provides honda81, ecosystem, clover and obcheck): ?E keeps "
+                                                      "provides (it provides honda81, ecosystem, clover, chiba and obcheck): ?E keeps "
                                                       "its values"});
     EXPECT_EQ(expandWith(f, "Lsystem: 1\nderivation length: 2\nAxiom: ?E(3)\n?E(x) --> F?E(x+1)\nendlsystem\n", true), "FF?E(5)");
     f = {{"a.e", "executable: honda81 d.spec\nturtle position: %d %s\ncommunication type: smoke\nturtle colour: %g\n"}};

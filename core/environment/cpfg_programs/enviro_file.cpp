@@ -11,7 +11,7 @@
 namespace sprout {
 
 const std::vector<std::string>& providedEnvironmentPrograms() {
-    static const std::vector<std::string> names{"honda81", "ecosystem", "clover", "obcheck"};
+    static const std::vector<std::string> names{"honda81", "ecosystem", "clover", "chiba", "obcheck"};
     return names;
 }
 
@@ -142,6 +142,7 @@ EnviroRead readEnviroText(const std::string& path, const std::string& text, cons
     if (command.program == "honda81") p = cpfgprog::makeHonda81(specPath, body, specSink);
     else if (command.program == "ecosystem") p = cpfgprog::makeEcosystem(specPath, body, specSink);
     else if (command.program == "clover") p = cpfgprog::makeClover(specPath, body, specSink, read);
+    else if (command.program == "chiba") p = cpfgprog::makeChiba(specPath, body, specSink);
     else p = cpfgprog::makeObcheck(specPath, body, specSink);
     if (!p) {
         out.program = silent();

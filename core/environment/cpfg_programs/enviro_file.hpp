@@ -29,7 +29,7 @@ struct EnviroRead {
     std::vector<EnviroDiagnostic> diagnostics;  // warnings; an error when program is null
 };
 
-// The programs Sprout provides: honda81, ecosystem, clover and obcheck (the CelticKnot object's).
+// The programs Sprout provides: honda81, ecosystem, clover, chiba and obcheck (the CelticKnot object's).
 const std::vector<std::string>& providedEnvironmentPrograms();
 
 // Reads `path` (a .e file) and the files its program names, beside it (a name that leads

@@ -53,6 +53,7 @@ std::shared_ptr<EnvironmentProgram> makeHonda81(const std::string& specName, con
 std::shared_ptr<EnvironmentProgram> makeEcosystem(const std::string& specName, const std::string& text, const Sink& sink);
 std::shared_ptr<EnvironmentProgram> makeClover(const std::string& specName, const std::string& text, const Sink& sink,
                                                const FileReader& read);
+std::shared_ptr<EnvironmentProgram> makeChiba(const std::string& specName, const std::string& text, const Sink& sink);
 std::shared_ptr<EnvironmentProgram> makeObcheck(const std::string& specName, const std::string& text, const Sink& sink);
 
 }  // namespace sprout::cpfgprog
