@@ -19,7 +19,9 @@ struct ObjectEnvironment {
 // beside it has a `specifications` naming it, with -e); none for any other file.
 ObjectEnvironment objectEnvironment(const std::string& lsystemPath);
 
-// The environment file `enviroFile` read (readEnviroFile), its messages formatted.
-ObjectEnvironment readObjectEnvironment(const std::string& enviroFile);
+// The environment file `enviroFile` read (readEnviroFile), its messages formatted; when the
+// view file `viewFile` says `environment display: before`, the program is asked after each step
+// (EnvironmentProgram::afterStep).
+ObjectEnvironment readObjectEnvironment(const std::string& enviroFile, const std::string& viewFile = "");
 
 }  // namespace sprout

@@ -35,8 +35,9 @@ std::vector<std::string> messagesOf(const Files& files) {
 }
 
 // The L-system derived with the .e file's program answering its ?E, as `sprout expand` prints it.
-std::string expandWith(const Files& files, const std::string& lsystem, bool warned = false) {
+std::string expandWith(const Files& files, const std::string& lsystem, bool warned = false, bool afterStep = false) {
     EnviroRead env = readEnviro(files);
+    if (env.program) env.program->afterStep = afterStep;
     if (!warned)
         for (const EnviroDiagnostic& d : env.diagnostics) ADD_FAILURE() << d.text();
     ParseOptions o;
@@ -181,6 +182,18 @@ TEST(CpfgPrograms, TheEnvironmentFileSaysWhatItCannotRun) {
               std::vector<std::string>{"obj/a.e:1:1: warning: obcheck takes its specification file: 'executable: obcheck FILE'; it "
                                        "does not start, and ?E keeps its values"});
     EXPECT_EQ(readEnviroFile("/nonexistent/a.e").diagnostics.at(0).diagnostic.severity, Severity::Error);
+}
+
+// When the program is asked: as each step begins, of the string before it (cpfg's default), so a
+// step's string shows its ?E as the rules wrote them; or, with the view file's `environment
+// display: before`, on the axiom and after each step, so the string shows the answers.
+TEST(CpfgPrograms, TheViewFileSaysWhenTheProgramIsAsked) {
+    Files f{{"a.e", enviroE("honda81 d.spec", " %.4f %.4f %.4f")}, {"d.spec", "radius: 0.5\n3d case: on\n"}};
+    const std::string lsystem = "Lsystem: 1\nderivation length: 3\nAxiom: ?E(1)\n?E(x) : x==1 --> [+(60)F?E(0)][-(60)F?E(0)]\nendlsystem\n";
+    EXPECT_EQ(expandWith(f, lsystem), "[+(60)F[+(60)F[+(60)F?E(0)][-(60)F?E(0)]][-(60)F[+(60)F?E(0)][-(60)F?E(0)]]][-(60)F[+(60)F"
+                                      "[+(60)F?E(0)][-(60)F?E(0)]][-(60)F[+(60)F?E(0)][-(60)F?E(0)]]]");
+    EXPECT_EQ(expandWith(f, lsystem, false, true), "[+(60)F[+(60)F[+(60)F?E(1)][-(60)F?E(1)]][-(60)F[+(60)F?E(1)][-(60)F?E(0)]]]"
+                                                   "[-(60)F[+(60)F[+(60)F?E(0)][-(60)F?E(1)]][-(60)F[+(60)F?E(1)][-(60)F?E(1)]]]");
 }
 
 // The manual's Sierpinski object (honda81): cpfg's string at 6 steps.

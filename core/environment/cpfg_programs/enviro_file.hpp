@@ -25,7 +25,8 @@ struct EnviroDiagnostic {
 struct EnviroRead {
     // The program (a SilentProgram, answering nothing, when the .e file names one Sprout does
     // not provide or one that cannot start); null when the .e file itself cannot be read.
-    std::shared_ptr<const EnvironmentProgram> program;
+    // Not yet const: the opener may set what the view file says (EnvironmentProgram::afterStep).
+    std::shared_ptr<EnvironmentProgram> program;
     std::vector<EnviroDiagnostic> diagnostics;  // warnings; an error when program is null
 };
 

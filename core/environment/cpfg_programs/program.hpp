@@ -57,6 +57,11 @@ public:
     std::string enviroFile;     // the .e file's path
     TurtleFormats formats;
     bool sendsQueries = true;   // false: `strings only: on` (the program gets no ?E)
+    // When cpfg asks it: false (cpfg's default, `environment display: after` in the view file)
+    // as each step begins, of the string before it, so a step's string shows its ?E unanswered;
+    // true (`environment display: before`) on the axiom and after each step, before it is
+    // shown. The view file's reader sets it before the program is handed to the parser.
+    bool afterStep = false;
     // A fresh run, for a derivation from its axiom.
     virtual std::unique_ptr<ProgramRun> start() const = 0;
     // The turtle's state at one ?E as this program receives it (through the .e formats).
