@@ -27,9 +27,9 @@ bool displaysBefore(const std::string& viewFile) {
 
 }  // namespace
 
-ObjectEnvironment readObjectEnvironment(const std::string& enviroFile, const std::string& viewFile) {
+ObjectEnvironment readObjectEnvironment(const std::string& enviroFile, const std::string& viewFile, const std::string& folder) {
     ObjectEnvironment out;
-    EnviroRead r = readEnviroFile(enviroFile);
+    EnviroRead r = readEnviroFile(enviroFile, folder);
     if (r.program) r.program->afterStep = displaysBefore(viewFile);
     out.program = std::move(r.program);
     for (const EnviroDiagnostic& d : r.diagnostics) {
@@ -48,7 +48,7 @@ ObjectEnvironment objectEnvironment(const std::string& lsystemPath) {
     std::optional<VlabObject> object = readVlabObject(folder.string());
     if (!object || object->environment.empty() || object->lsystem.empty()) return {};
     if (!fs::equivalent(fs::path(object->lsystem), l, ec)) return {};
-    return readObjectEnvironment(object->environment, object->view);
+    return readObjectEnvironment(object->environment, object->view, folder.string());
 }
 
 }  // namespace sprout

@@ -19,9 +19,10 @@ struct ObjectEnvironment {
 // beside it has a `specifications` naming it, with -e); none for any other file.
 ObjectEnvironment objectEnvironment(const std::string& lsystemPath);
 
-// The environment file `enviroFile` read (readEnviroFile), its messages formatted; when the
-// view file `viewFile` says `environment display: before`, the program is asked after each step
-// (EnvironmentProgram::afterStep).
-ObjectEnvironment readObjectEnvironment(const std::string& enviroFile, const std::string& viewFile = "");
+// The environment file `enviroFile` read (readEnviroFile; the program's files in `folder`, the
+// object's, where cpfg runs it), its messages formatted; when the view file `viewFile` says
+// `environment display: before`, the program is asked after each step (afterStep).
+ObjectEnvironment readObjectEnvironment(const std::string& enviroFile, const std::string& viewFile = "",
+                                        const std::string& folder = "");
 
 }  // namespace sprout

@@ -53,7 +53,8 @@ Command commandOf(const std::string& line) {
 
 }  // namespace
 
-EnviroRead readEnviroText(const std::string& path, const std::string& text, const cpfgprog::FileReader& read) {
+EnviroRead readEnviroText(const std::string& path, const std::string& text, const cpfgprog::FileReader& read,
+                          const std::string& folder) {
     EnviroRead out;
     const Sink sink{&out.diagnostics, path};
     const std::vector<std::string> keywords{"communication type", "executable", "turtle position", "turtle heading",
@@ -135,7 +136,7 @@ EnviroRead readEnviroText(const std::string& path, const std::string& text, cons
     if (!specText)
         sink.warning(executableLine, command.program + "'s specification file " + spec + " cannot be read" + (why.empty() ? "" : ": " + why) +
                                          "; it takes its defaults");
-    const std::string specPath = (std::filesystem::path(path).parent_path() / spec).string();
+    const std::string specPath = (std::filesystem::path(folder.empty() ? std::filesystem::path(path).parent_path().string() : folder) / spec).string();
     const Sink specSink{&out.diagnostics, specPath};
     const std::string body = specText.value_or("");
     std::shared_ptr<EnvironmentProgram> p;
@@ -156,18 +157,17 @@ EnviroRead readEnviroText(const std::string& path, const std::string& text, cons
     return out;
 }
 
-EnviroRead readEnviroFile(const std::string& path) {
-    const std::string folder = std::filesystem::path(path).parent_path().string();
-    IncludeReader read = includeFromFolder(folder.empty() ? "." : folder);
+EnviroRead readEnviroFile(const std::string& path, const std::string& folder) {
+    const std::string own = std::filesystem::path(path).parent_path().string();
     std::string why;
-    const std::string name = std::filesystem::path(path).filename().string();
-    std::optional<std::string> text = read(name, why);
+    std::optional<std::string> text = includeFromFolder(own.empty() ? "." : own)(std::filesystem::path(path).filename().string(), why);
     if (!text) {
         EnviroRead out;
         out.diagnostics.push_back({path, {0, 0, "the environment file cannot be read" + (why.empty() ? "" : ": " + why), Severity::Error}});
         return out;
     }
-    return readEnviroText(path, *text, read);
+    const std::string base = folder.empty() ? own : folder;
+    return readEnviroText(path, *text, includeFromFolder(base.empty() ? "." : base), base);
 }
 
 }  // namespace sprout

@@ -33,12 +33,14 @@ struct EnviroRead {
 // The programs Sprout provides: honda81, ecosystem, clover, chiba and obcheck (the CelticKnot object's).
 const std::vector<std::string>& providedEnvironmentPrograms();
 
-// Reads `path` (a .e file) and the files its program names, beside it (a name that leads
-// outside that folder is refused).
-EnviroRead readEnviroFile(const std::string& path);
+// Reads `path` (a .e file) and the files its program names, in `folder` (where cpfg runs it: the
+// object's folder; empty: the .e file's own). A name that leads outside that folder is refused.
+EnviroRead readEnviroFile(const std::string& path, const std::string& folder = "");
 
-// The same from the .e file's text; `read(name, error)` gives the program's files.
+// The same from the .e file's text; `read(name, error)` gives the program's files, which are
+// named in messages as in `folder` (empty: the .e file's).
 EnviroRead readEnviroText(const std::string& path, const std::string& text,
-                          const std::function<std::optional<std::string>(const std::string&, std::string&)>& read);
+                          const std::function<std::optional<std::string>(const std::string&, std::string&)>& read,
+                          const std::string& folder = "");
 
 }  // namespace sprout
