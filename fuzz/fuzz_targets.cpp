@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "core/derive/derive.hpp"
+#include "core/environment/cpfg_programs/enviro_file.hpp"
 #include "core/language/expr.hpp"
 #include "core/language/file_kind.hpp"
 #include "core/language/grammar.hpp"
@@ -110,6 +111,32 @@ using namespace sprout;
     interpret(*d->step(n), *r.grammar, {n, d->seed(), nullptr}, g);
 }
 
+// A cpfg environment (`-e`): the input is a .e file, its program's specification and an image,
+// parted by lines "@@"; read, and the program asked over a few steps of ?E of every kind.
+[[maybe_unused]] void runEnvironment(const std::string& input) {
+    std::vector<std::string> parts;
+    for (size_t at = 0;;) {
+        const size_t end = input.find("\n@@\n", at);
+        parts.push_back(input.substr(at, end == std::string::npos ? std::string::npos : end - at));
+        if (end == std::string::npos || parts.size() == 3) break;
+        at = end + 4;
+    }
+    auto read = [&](const std::string& name, std::string& error) -> std::optional<std::string> {
+        const size_t k = name.size() > 4 && name.compare(name.size() - 4, 4, ".rgb") == 0 ? 2 : 1;
+        if (k < parts.size()) return parts[k];
+        error = "not in the input";
+        return std::nullopt;
+    };
+    EnviroRead e = readEnviroText("fuzz.e", parts[0], read);
+    if (!e.program) return;
+    ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
+    o.environmentProgram = e.program;
+    ParseResult r = parse("Lsystem: 1\nderivation length: 4\nAxiom: A(1)\nA(x) --> [+(37)f(x)?E(x)][-(20)f(x/2)?E(1,x)]"
+                          "[&(30)f(0.3)?E(0,x)?E(2,x)?E(0)?E(x,1,2)]A(x+0.7)\nendlsystem\n", o);
+    int n = 0;
+    (void)deriveSome(r, 4, n);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -144,6 +171,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (r.ok()) deriveAndDraw(r.text, 4);
 #elif defined(SPROUT_FUZZ_CPFG)
     deriveAndDrawCpfg(input, 5);
+#elif defined(SPROUT_FUZZ_ENVIRO)
+    runEnvironment(input);
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);

@@ -5,6 +5,7 @@
 #include "app/plant/presets.hpp"
 #include "app/plant/source.hpp"
 #include "app/plant/vlab_view.hpp"
+#include "app/plant/vlab_environment.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
 #include "lpy/lpy.hpp"
@@ -33,7 +34,9 @@ OpenedText openText(const std::string& text, FileKind kind, const std::string& p
         out.diagnostics = out.model->diagnostics;
         return out;
     }
-    ParseResult r = parse(text, parseOptionsFor(kind, path));
+    ParseOptions po = parseOptionsFor(kind, path);
+    if (po.cpfg && !path.empty()) po.environmentProgram = objectEnvironment(path).program;  // a VLab object's -e
+    ParseResult r = parse(text, po);
     out.grammar = std::move(r.grammar);
     // A VLab object's L-system draws as its view, colours and window say (vlab_view.hpp).
     if (out.grammar && cpfgFamily(kind)) {

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"
+#include "app/plant/vlab_environment.hpp"
 #include "app/plant/vlab_object.hpp"
 #include "app/plant/vlab_view.hpp"
 #include "core/base/read_file.hpp"
@@ -44,6 +45,14 @@ SourceText readSource(const std::string& source) {
             for (std::string& note : readVlabPicture(*object).notes) out.notes.push_back(std::move(note));
             path = object->lsystem;
             out.displayName = path;
+        }
+        // A VLab object's environment (-e): its messages here; openText gives the parser its program.
+        if (ObjectEnvironment env = objectEnvironment(path); env.failed) {
+            for (size_t k = 0; k + 1 < env.messages.size(); ++k) out.notes.push_back(env.messages[k]);
+            out.error = env.messages.back();
+            return out;
+        } else {
+            for (std::string& m : env.messages) out.notes.push_back(std::move(m));
         }
         std::optional<std::string> bytes = readFile(path);
         if (!bytes) {

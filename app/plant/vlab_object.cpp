@@ -55,7 +55,6 @@ int argumentsOf(const std::string& option) {
 // not read yet; empty for the options that concern cpfg's own window and files only.
 std::string notReadYet(const std::string& option) {
     const std::string name = option.substr(1);
-    if (name == "e") return "its environment";
     if (name == "a") return "starting in animation";
     return {};
 }
@@ -113,6 +112,7 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
                     return out;
                 }
                 recordPictureOption(out, folder, w, {words.begin() + long(k) + 1, words.begin() + long(k) + 1 + n}, number);
+                if (w.text == "-e") out.environment = (fs::path(folder) / words[k + 1].text).string();  // vlab_environment.hpp
                 std::string what = notReadYet(w.text);
                 std::string given = w.text;
                 for (int a = 0; a < n; ++a) given += " " + words[k + 1 + size_t(a)].text;

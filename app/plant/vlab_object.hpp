@@ -27,6 +27,7 @@ struct VlabObject {
     std::vector<ColourFile> colourFiles;
     int referenceSet = 1;      // -cN: `;(k)` is colour index 256 N + k
     int width = 0, height = 0; // -w W H: the window's size
+    std::string environment;            // `-e FILE.e`: the environment file's path (vlab_environment.hpp reads it)
     // At the cpfg line's options: errors (no cpfg line, an option cpfg does not know, no
     // L-system) and warnings (what is not read yet).
     std::vector<Diagnostic> diagnostics;

@@ -90,6 +90,10 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
         Rng rng = Rng::forStream(m_seed, 0);
         runStatements(m_grammar->startBlock, m_rewriter->slots(), rng);
     }
+    if (m_grammar->environment.program) {
+        m_environmentRun = m_grammar->environment.program->start();
+        m_programBefore = !m_grammar->environment.program->afterStep;
+    }
     auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
     std::shared_ptr<Origins> axiomOrigins;
     if (m_options.trackOrigins) {
@@ -210,7 +214,7 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
     }
     if (m_grammar->hasQueries() && !m_options.holdQueries) {
         std::string error;
-        if (!answerQueries(*m_grammar, s, step, m_seed, &error)) {
+        if (!answerQueries(*m_grammar, s, step, m_seed, &error, m_environmentRun.get(), !m_programBefore)) {
             DeriveOutcome o;
             o.status = DeriveStatus::Failed;
             o.step = step;
@@ -379,7 +383,18 @@ DeriveOutcome Derivation::predictGrowth(int n) const {
 DeriveOutcome Derivation::deriveGeneral(int n) {
     if (DeriveOutcome predicted = predictGrowth(n); !predicted.ok()) return predicted;
     for (int k = m_reached + 1; k <= n; ++k) {
-        const ModuleString& in = *m_steps[size_t(k - 1)];
+        // A cpfg environment program (-e) is asked as the step begins, of the string before it
+        // (cpfg's default, `environment display: after`): that step is kept as it was shown.
+        // With `environment display: before` it was asked as that step was finished.
+        ModuleString asked;
+        const bool askFirst = m_environmentRun && m_programBefore && !m_options.holdQueries;
+        if (askFirst) {
+            asked = *m_steps[size_t(k - 1)];
+            std::string error;
+            if (!answerQueries(*m_grammar, asked, k - 1, m_seed, &error, m_environmentRun.get()))
+                return {DeriveStatus::Failed, k, 0, 0, "step " + std::to_string(k) + ": " + error};
+        }
+        const ModuleString& in = askFirst ? asked : *m_steps[size_t(k - 1)];
         std::uint64_t modules, params;
         m_rewriter->bound(in, modules, params, false);
         DeriveOutcome o = checkSize(k, modules, params);

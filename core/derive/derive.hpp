@@ -131,6 +131,9 @@ private:
     std::unique_ptr<class D0LExpander> m_d0l;
     std::unique_ptr<class StepRewriter> m_rewriter;
     std::unique_ptr<class StepRewriter> m_decomposer;
+    // A cpfg environment program's run (`-e`): its state goes from step to step.
+    std::unique_ptr<ProgramRun> m_environmentRun;
+    bool m_programBefore = false;  // asked as each step begins (EnvironmentProgram::afterStep false)
     DeriveOutcome m_axiomOutcome;  // the axiom's decomposition, reported by deriveTo
 };
 

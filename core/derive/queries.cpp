@@ -3,6 +3,9 @@
 // environment's answer there (core/environment/environment.hpp). One plant or a forest's
 // plants together, in one shared environment.
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,9 +17,10 @@
 
 namespace sprout {
 
-bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error) {
+bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error, ProgramRun* run,
+                   bool askProgram) {
     std::vector<QueryTarget> one{{&grammar, &s, step, seed}};
-    return answerQueriesTogether(grammar.environment, seed, one, error);
+    return answerQueriesTogether(grammar.environment, seed, one, error, run, askProgram);
 }
 
 namespace {
@@ -27,9 +31,59 @@ glm::dvec3 turnBy(const glm::dvec3& v, double yaw) {
     return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
 }
 
+// What a cpfg program answers arrives as text (%g) read back: 0.3, not the float nearest it.
+double fromText(float v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", double(v));
+    return std::strtod(buf, nullptr) + 0.0;
+}
+
+// A cpfg environment program (`-e`): every ?E of every plant, in the turtle's order, is sent
+// with the turtle where it stands, then the answers are set (libs/comm's semantics: only the
+// parameters the program sets; no more than the ?E has).
+template <class Pass, class ToWorld>
+void answerByProgram(const EnvironmentProgram& program, ProgramRun& run, std::vector<QueryTarget>& targets,
+                     std::vector<Pass>& passes, ToWorld toWorld) {
+    std::vector<ProgramQuery> queries;
+    std::vector<std::pair<double*, unsigned>> where;
+    for (size_t t = 0; t < targets.size(); ++t) {
+        if (!passes[t].answerable) continue;
+        ModuleString& s = *targets[t].string;
+        const Alphabet& alphabet = targets[t].grammar->alphabet;
+        size_t q = 0, pp = 0;
+        for (size_t i = 0; i < s.size(); ++i) {
+            const SymbolId id = s.symbols[i];
+            const unsigned a = alphabet[id].arity;
+            if (passes[t].kind[id]) {
+                const QueryFrame& f = passes[t].frames[q++];
+                if (passes[t].kind[id] == 'E') {
+                    ProgramQuery query;
+                    for (unsigned k = 0; k < a; ++k) query.params.push_back(throughText(s.params[pp + k]));
+                    const glm::dvec3 p = toWorld(targets[t], f.position);
+                    const glm::dvec3 h = turnBy(glm::dvec3(f.heading), targets[t].yaw), l = turnBy(glm::dvec3(f.left), targets[t].yaw),
+                                     u = turnBy(glm::dvec3(f.up), targets[t].yaw);
+                    const float pf[3] = {float(p.x), float(p.y), float(p.z)}, hf[3] = {float(h.x), float(h.y), float(h.z)},
+                                lf[3] = {float(l.x), float(l.y), float(l.z)}, uf[3] = {float(u.x), float(u.y), float(u.z)};
+                    program.receive(pf, hf, lf, uf, query);
+                    queries.push_back(std::move(query));
+                    where.push_back({s.params.data() + pp, a});
+                }
+            }
+            pp += a;
+        }
+    }
+    if (program.sendsQueries) run.pass(queries);
+    for (size_t k = 0; k < queries.size(); ++k) {
+        const ProgramQuery& q = queries[k];
+        for (size_t i = 0; i < q.answer.size() && i < where[k].second; ++i)
+            if (i < q.set.size() && q.set[i]) where[k].first[i] = fromText(q.answer[i]);
+    }
+}
+
 }  // namespace
 
-bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets, std::string* error) {
+bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets, std::string* error,
+                           ProgramRun* run, bool askProgram) {
     if (targets.empty()) return true;
     struct Pass {
         std::vector<QueryFrame> frames;
@@ -79,6 +133,11 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
         const glm::dvec3 v = turnBy(glm::dvec3(out[0], out[1], out[2]), -q.yaw);
         for (int k = 0; k < 3; ++k) out[k] = std::round(v[k] * 1e5) / 1e5 + 0.0;
     };
+    if (env.isProgram() && askProgram) {
+        std::unique_ptr<ProgramRun> own;
+        if (!run) own = env.program->start(), run = own.get();
+        answerByProgram(*env.program, *run, targets, passes, toWorld);
+    }
     if (env.isAttraction()) {
         // Space colonisation answers every bud at once, of every plant: a point pulls only its
         // nearest bud.
@@ -121,7 +180,7 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
             const unsigned a = alphabet[id].arity;
             if (kind[id] == 'E') {  // a communication module: the environment answers (open L-systems)
                 const QueryFrame& f = passes[t].frames[q++];
-                if (env.isAttraction()) {  // answered above: the ?E only uses up its frame here
+                if (env.isAttraction() || env.isProgram()) {  // answered above: the ?E only uses up its frame here
                 } else if (env.empty()) {  // no environment (an L-system Explorer file's ?E): it keeps its values
                 } else {
                     const glm::dvec3 p = toWorld(target, f.position), h = turnBy(glm::dvec3(f.heading), target.yaw);

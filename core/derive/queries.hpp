@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/environment/cpfg_programs/program.hpp"
 #include "core/language/grammar.hpp"
 
 namespace sprout {
@@ -13,8 +14,12 @@ namespace sprout {
 // cpfg query modules: interprets `s` with the turtle and writes the frame at each ?P ?H ?U ?L
 // into its parameters (position, heading, up, left; as many as the module has).
 // ?E modules are answered by the grammar's environment; false with `error` when it cannot
-// (a light grid that would be too big).
-bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error = nullptr);
+// (a light grid that would be too big). A cpfg environment program (`-e`) answers in `run`, the
+// derivation's run of it (null: a fresh run, which remembers nothing of the steps before); with
+// `askProgram` false its ?E are left as they are (cpfg asks it as the next step begins, so the
+// string of a step shows the ?E unanswered: Derivation does so).
+bool answerQueries(const Grammar& grammar, ModuleString& s, int step, std::uint64_t seed, std::string* error = nullptr,
+                   ProgramRun* run = nullptr, bool askProgram = true);
 
 // One string whose query modules are answered together with others (a forest sharing one
 // environment): its grammar, step and seed, and where the plant stands: its own frame turned
@@ -31,6 +36,6 @@ struct QueryTarget {
 };
 // `envSeed` seeds the environment's own randomness (attraction points).
 bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::vector<QueryTarget>& targets,
-                           std::string* error = nullptr);
+                           std::string* error = nullptr, ProgramRun* run = nullptr, bool askProgram = true);
 
 }  // namespace sprout

@@ -39,6 +39,11 @@
 //       pulls the one bud nearest to it, if that bud is within R (default 4).
 //       ?E(x, y, z, count): the mean direction to the points pulling this bud (unit, or 0 0 0)
 //       and how many they are.
+//
+// A cpfg environment program (`cpfg -e FILE.e`: honda81, ecosystem, clover, a VLab object's
+// obcheck) is not declared by a line: the object's .e file is read by readEnviroFile
+// (core/environment/cpfg_programs/enviro_file.hpp) and handed to the parser
+// (ParseOptions::environmentProgram); it answers the ?E modules as that program does.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -79,7 +84,12 @@ struct EnvShape {
     void box(glm::dvec3& lo, glm::dvec3& hi) const;        // its axis-aligned bounding box
 };
 
+// A cpfg environment program, as read from a .e file (core/environment/cpfg_programs/).
+class EnvironmentProgram;
+
 struct Environment {
+    // A cpfg environment program: when set, it answers every ?E (the shapes below are unused).
+    std::shared_ptr<const EnvironmentProgram> program;
     std::vector<EnvShape> region;     // topiary: the union of these
     std::vector<EnvShape> obstacles;  // to grow around
     std::optional<double> ground;     // the ground plane's height
@@ -92,7 +102,8 @@ struct Environment {
     int attractionPoints = 0;
     double influence = 4, kill = 1;
     bool isAttraction() const { return attractionShape.has_value(); }
-    bool empty() const { return region.empty() && obstacles.empty() && !ground && lightVoxel <= 0 && !attractionShape; }
+    bool isProgram() const { return program != nullptr; }
+    bool empty() const { return !program && region.empty() && obstacles.empty() && !ground && lightVoxel <= 0 && !attractionShape; }
     bool isRegion() const { return !region.empty(); }
     bool isLight() const { return lightVoxel > 0; }
 

@@ -221,6 +221,9 @@ struct ParseOptions {
     // line that starts with a tab goes on the one before (a successor over several lines).
     // Set for cpfg's `.l` files, not L-Py's (Python indents with tabs) nor Explorer's.
     bool tabContinues = false;
+    // A VLab object's `-e FILE.e` environment program (readEnviroFile): the grammar's
+    // environment.program, which answers its ?E modules.
+    std::shared_ptr<const EnvironmentProgram> environmentProgram = nullptr;
 };
 
 ParseResult parse(std::string_view text);

@@ -25,6 +25,7 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
     m_text = std::string(text);
     m_original = m_text;
+    m_g.environment.program = options.environmentProgram;  // a VLab object's -e program
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
     // generalized cylinders and query modules; the Lparser extensions; L-system Explorer's
     // move without drawing, home, contours and their use, radius spline).
