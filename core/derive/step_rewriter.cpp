@@ -45,6 +45,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     }
     if (!g.globals.empty()) slots = kGlobalSlot + g.globals.size();  // cpfg's global variables after the locals
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
+    for (size_t i = 0; i < g.globals.size() && i < g.globalInit.size(); ++i) m_slots[kGlobalSlot + i] = g.globalInit[i];
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
     for (const Production& p : rules.productions) {
@@ -253,7 +254,10 @@ bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
 void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng) {
     for (const Statement& s : block) {
         switch (s.kind) {
-            case Statement::Kind::Assign: slots[s.slot] = s.expr.eval(slots, rng); break;
+            case Statement::Kind::Assign:
+                if (s.size) slots[s.slot + arrayOffset(s.index.eval(slots, rng), s.size)] = s.expr.eval(slots, rng);
+                else slots[s.slot] = s.expr.eval(slots, rng);
+                break;
             case Statement::Kind::Eval: s.expr.eval(slots, rng); break;
             case Statement::Kind::If:
                 if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);

@@ -2,12 +2,13 @@
 // run (Expr::run) each time a rule is tried or applied.
 //
 // Index of this file:
-//   [SECTION] Built-in functions and constants, and the tree
+//   [SECTION] The tree
 //   [SECTION] The compiler: text to tree to code
-//   [SECTION] Running a compiled expression
 //   [SECTION] compileExpr, and the names it knows
+// The built-in functions and the running of a compiled program are expr_run.cpp.
 
 #include "core/language/expr.hpp"
+#include "core/language/expr_builtins.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -18,59 +19,11 @@
 namespace sprout {
 namespace {
 
-// [SECTION] Built-in functions and constants, and the tree
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+using namespace expr_detail;
 constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
-constexpr int kMaxStack = 256;     // evaluation stack of one program
 constexpr int kMaxNodes = 2000;    // operations in one expression
 
-using Fn1 = double (*)(double);
-using Fn2 = double (*)(double, double);
-
-struct Function1 { const char* name; Fn1 fn; };
-struct Function2 { const char* name; Fn2 fn; };
-
-const Function1 kFunctions1[] = {
-    {"sin", [](double x) { return std::sin(x * kDeg); }},
-    {"cos", [](double x) { return std::cos(x * kDeg); }},
-    {"tan", [](double x) { return std::tan(x * kDeg); }},
-    {"asin", [](double x) { return std::asin(x) / kDeg; }},
-    {"acos", [](double x) { return std::acos(x) / kDeg; }},
-    {"atan", [](double x) { return std::atan(x) / kDeg; }},
-    {"sqrt", [](double x) { return std::sqrt(x); }},
-    {"exp", [](double x) { return std::exp(x); }},
-    {"log", [](double x) { return std::log(x); }},
-    {"abs", [](double x) { return std::fabs(x); }},
-    {"floor", [](double x) { return std::floor(x); }},
-    {"ceil", [](double x) { return std::ceil(x); }},
-    {"round", [](double x) { return std::round(x); }},
-    {"sign", [](double x) { return double((x > 0) - (x < 0)); }},
-    {"trunc", [](double x) { return std::trunc(x); }},
-    {"fabs", [](double x) { return std::fabs(x); }},
-    // mathjs's (L-system Explorer's expressions): fix rounds towards zero.
-    {"fix", [](double x) { return std::trunc(x); }},
-    {"cbrt", [](double x) { return std::cbrt(x); }},
-    {"log10", [](double x) { return std::log10(x); }},
-    {"log2", [](double x) { return std::log2(x); }},
-    {"square", [](double x) { return x * x; }},
-    {"cube", [](double x) { return x * x * x; }},
-};
-const Function2 kFunctions2[] = {
-    {"atan2", [](double y, double x) { return std::atan2(y, x) / kDeg; }},
-    {"min", [](double a, double b) { return std::fmin(a, b); }},
-    {"max", [](double a, double b) { return std::fmax(a, b); }},
-    {"pow", [](double a, double b) { return std::pow(a, b); }},
-    {"mod", [](double a, double b) { return b == 0 ? a : a - b * std::floor(a / b); }},  // mathjs: the divisor's sign
-    {"hypot", [](double a, double b) { return std::hypot(a, b); }},
-};
-
-const std::unordered_map<std::string, double>& builtinConstants() {
-    static const std::unordered_map<std::string, double> k{
-        {"pi", 3.14159265358979323846}, {"e", 2.71828182845904523536},
-        {"golden", 137.50776405003785}};  // the golden angle in degrees (phyllotaxis)
-    return k;
-}
+// [SECTION] The tree
 
 struct Node {
     Op op;
@@ -99,51 +52,6 @@ NodePtr makeConst(double v) {
     n->op = Op::Const;
     n->value = v;
     return n;
-}
-
-// cpfg's bran(a, b): a sample of the beta distribution (cpfg's utility.c, Cheng's algorithm BA).
-double betaSample(double a, double b, Rng& rng) {
-    const double s = a + b;
-    const double lambda = std::min(a, b) <= 1 ? std::min(a, b) : std::sqrt((2 * a * b - s) / (s - 2));
-    const double u = a + lambda;
-    if (!(s > 0) || !(lambda > 0) || !std::isfinite(s)) return std::nan("");
-    double u1, u2, v, y;
-    for (int tries = 0; tries < 10'000; ++tries) {
-        do u1 = rng.uniform(); while (u1 == 0);
-        do u2 = rng.uniform(); while (u2 == 0);
-        v = (1 / lambda) * std::log(u1 / (1 - u1));
-        y = a * std::exp(v);
-        if (!(s * std::log(s / (b + y)) + u * v - std::log(4.0) < std::log(u1 * u1 * u2))) return y / (b + y);
-    }
-    return y / (b + y);
-}
-
-// cpfg's biran(n, p): the number of n coins that fall below p.
-double binomialSample(double n, double p, Rng& rng) {
-    int count = 0;
-    const int trials = int(std::clamp(n, 0.0, 1e6));
-    for (int i = 0; i < trials; ++i) count += rng.uniform() <= p;
-    return count;
-}
-
-double apply(Op op, double x, double y) {
-    switch (op) {
-        case Op::Add: return x + y;
-        case Op::Sub: return x - y;
-        case Op::Mul: return x * y;
-        case Op::Div: return x / y;
-        case Op::Mod: return std::fmod(x, y);
-        case Op::Pow: return std::pow(x, y);
-        case Op::Lt: return x < y;
-        case Op::Le: return x <= y;
-        case Op::Gt: return x > y;
-        case Op::Ge: return x >= y;
-        case Op::Eq: return x == y;
-        case Op::Ne: return x != y;
-        case Op::And: return (x != 0) && (y != 0);
-        case Op::Or: return (x != 0) || (y != 0);
-        default: return 0;
-    }
 }
 
 }  // namespace
@@ -437,6 +345,10 @@ private:
         }
         std::string name(m_text.substr(start, m_pos - start));
         if (peek("(")) return parseCall(name, start, depth);
+        if (m_scope.arrays) {
+            for (const GlobalArray& a : *m_scope.arrays)
+                if (a.name == name) return parseArrayElement(a, start, depth);
+        }
         if (auto arg = m_args.find(name); arg != m_args.end()) return clone(arg->second);
         if (m_scope.params) {
             for (size_t i = 0; i < m_scope.params->size(); ++i) {
@@ -479,6 +391,54 @@ private:
         else msg += ": not a parameter of this rule or a defined constant";
         fail(start, msg);
         return makeConst(0);
+    }
+
+    // `a[i][j]`: the element's slot, from the indices in row-major order.
+    NodePtr parseArrayElement(const GlobalArray& a, size_t start, int depth) {
+        NodePtr index;
+        for (size_t k = 0; k < a.dims.size(); ++k) {
+            if (!accept("[")) {
+                fail(m_pos < m_text.size() ? m_pos : start, "'" + a.name + "' is an array of " +
+                     std::to_string(a.dims.size()) + " dimension" + (a.dims.size() == 1 ? "" : "s") +
+                     ": give each index in brackets, as in " + a.name + "[0]");
+                return makeConst(0);
+            }
+            NodePtr i = parseTernary(depth + 1);
+            if (m_failed) return makeConst(0);
+            if (!accept("]")) {
+                fail(m_pos < m_text.size() ? m_pos : start, "expected ']' after the index of '" + a.name + "'");
+                return makeConst(0);
+            }
+            auto floorOf = std::make_unique<Node>();  // cpfg truncates an index to an integer
+            floorOf->op = Op::Call1;
+            floorOf->fn = truncIndex();
+            floorOf->a = std::move(i);
+            if (!index) {
+                index = std::move(floorOf);
+            } else {
+                auto mul = std::make_unique<Node>();
+                mul->op = Op::Mul;
+                mul->a = std::move(index);
+                mul->b = makeConst(a.dims[k]);
+                auto add = std::make_unique<Node>();
+                add->op = Op::Add;
+                add->a = std::move(mul);
+                add->b = std::move(floorOf);
+                index = std::move(add);
+            }
+        }
+        auto n = std::make_unique<Node>();
+        n->op = Op::Index;
+        n->slot = std::uint16_t(kGlobalSlot + a.first);
+        n->value = a.size();
+        n->a = std::move(index);
+        return n;
+    }
+
+    static std::uint8_t truncIndex() {
+        for (size_t i = 0; i < std::size(kFunctions1); ++i)
+            if (std::string_view(kFunctions1[i].name) == "trunc") return std::uint8_t(i);
+        return 0;
     }
 
     NodePtr parseCall(const std::string& name, size_t start, int depth) {
@@ -603,35 +563,6 @@ private:
     bool m_failed = false;
     int m_nodes = 0;
 };
-
-// [SECTION] Running a compiled expression
-
-double Expr::run(const double* slots, Rng& rng) const {
-    double st[kMaxStack];
-    int sp = 0;
-    for (const Instr& in : m_code) {
-        switch (in.op) {
-            case Op::Const: st[sp++] = in.value; break;
-            case Op::Slot: st[sp++] = slots[in.slot]; break;
-            case Op::Neg: st[sp - 1] = -st[sp - 1]; break;
-            case Op::Not: st[sp - 1] = st[sp - 1] == 0; break;
-            case Op::Call1: st[sp - 1] = kFunctions1[in.fn].fn(st[sp - 1]); break;
-            case Op::Call2: --sp; st[sp - 1] = kFunctions2[in.fn].fn(st[sp - 1], st[sp]); break;
-            case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.uniform(); break;
-            case Op::Normal: --sp; st[sp - 1] = rng.normal(st[sp - 1], st[sp]); break;
-            case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
-            case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
-            case Op::Srand: rng = Rng(std::uint64_t(std::int64_t(st[sp - 1]))); st[sp - 1] = 0; break;
-            case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
-            case Op::Add: --sp; st[sp - 1] += st[sp]; break;
-            case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;
-            case Op::Mul: --sp; st[sp - 1] *= st[sp]; break;
-            case Op::Div: --sp; st[sp - 1] /= st[sp]; break;
-            default: --sp; st[sp - 1] = apply(in.op, st[sp - 1], st[sp]); break;
-        }
-    }
-    return st[0];
-}
 
 // [SECTION] compileExpr, and the names it knows
 

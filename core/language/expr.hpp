@@ -20,6 +20,7 @@ enum class Op : std::uint8_t {
     Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select, Call1, Call2, Rand, Normal,
     Beta, Binomial, Srand,  // cpfg's bran(a, b), biran(n, p) and srand(seed)
+    Index,                  // cpfg's arrays: slots[slot + index], value = the array's size
 };
 
 struct Instr {
@@ -107,12 +108,33 @@ struct ExprMacro {
 // in the slots from here on, after a production's parameters and locals (at most 255).
 constexpr std::uint16_t kGlobalSlot = 256;
 
+// cpfg's array of global variables (`define: { array a[3][4] = {...}; }`): its elements are the
+// global slots kGlobalSlot + first ... in row-major order.
+struct GlobalArray {
+    std::string name;
+    std::uint16_t first = 0;
+    std::vector<int> dims;
+    int size() const {
+        int n = 1;
+        for (int d : dims) n *= d;
+        return n;
+    }
+};
+
 struct ExprScope {
     const std::vector<std::string>* params = nullptr;  // slot i is named params[i]
     const std::unordered_map<std::string, double>* defines = nullptr;
     const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
     const std::vector<std::string>* globals = nullptr;  // slot kGlobalSlot + i is named globals[i]
+    const std::vector<GlobalArray>* arrays = nullptr;
 };
+
+// Where an array's flat index `at` falls in an array of `size` elements: out of range it is
+// the nearest end (cpfg does not check; Sprout never reads outside).
+inline std::uint16_t arrayOffset(double at, double size) {
+    if (!(at > 0)) return 0;
+    return std::uint16_t(at >= size - 1 ? size - 1 : at);
+}
 
 // Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.
 std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, const ExprScope& scope,

@@ -100,6 +100,8 @@ struct Statement {
     enum class Kind : std::uint8_t { Assign, If, Eval, While, Do } kind = Kind::Assign;
     static constexpr int kMaxLoop = 1'000'000;
     std::uint16_t slot = 0;      // Assign: where the value goes
+    std::uint16_t size = 0;      // Assign to an array's element: the array's size (0: a variable)
+    Expr index;                  // ... and its flat index, from `slot`
     Expr expr;                   // Assign: the value; If, While, Do: the test
     std::vector<Statement> then, otherwise;
 };
@@ -160,7 +162,9 @@ struct Grammar {
     // cpfg's global variables, by the slot kGlobalSlot + i (expr.hpp), and the blocks that run
     // before the derivation (Start:), before and after each step (StartEach:, EndEach:) and
     // after it (End:), with a production's blocks, in order, left to right.
-    std::vector<std::string> globals;
+    std::vector<std::string> globals;    // an array's elements after its name: "" (never a name)
+    std::vector<double> globalInit;      // their values before the Start: block (arrays' initialisers)
+    std::vector<GlobalArray> arrays;
     std::vector<Statement> startBlock, startEachBlock, endEachBlock, endBlock;
     bool hasGlobals() const { return !globals.empty() || !startBlock.empty() || !startEachBlock.empty() || !endEachBlock.empty(); }
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts

@@ -147,6 +147,8 @@ public:
     // cpfg's `Start: {...}`, `StartEach:`, `EndEach:`, `End:`: the names they assign become
     // global variables (statements.cpp).
     void readGlobalBlock(const SourceLine& line, const std::string& key, std::string_view body);
+    // `array a[3], b[2][4] = {...}` in cpfg's `define:` block: global arrays.
+    void defineArrays(const SourceLine& line, std::string_view statement);
     bool cpfg() const { return m_cpfg; }
 
     enum class Section { Productions, Interpretation, Decomposition };

@@ -62,7 +62,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
                             const std::vector<std::string>& params, Successor& out, int net) {
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
-    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -324,7 +324,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         return;
     prod.slotCount = int(params.size());
 
-    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
     bool ok = true;
     for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
         Statement init;
@@ -354,6 +354,8 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         return;
     }
     int net = prod.pred.symbol == Alphabet::kPush ? 1 : prod.pred.symbol == Alphabet::kPop ? -1 : 0;
+    for (const PatternModule& m : prod.predRest)  // cpfg's `[f(y)P(r)] --> *`: the brackets it rewrites
+        net += m.symbol == Alphabet::kPush ? 1 : m.symbol == Alphabet::kPop ? -1 : 0;
     if (!parseSuccessor(line, succText, params, prod.successor, net) || !ok) return;
     RuleSet& target = section == Section::Interpretation   ? m_g.interpretation
                       : section == Section::Decomposition ? m_g.decomposition

@@ -34,8 +34,8 @@ void defineBlockHandler(Parser& p, const SourceLine& l, std::string_view v) {
         size_t end = body.find(';', start);
         if (end == std::string_view::npos) end = body.size();
         std::string_view stmt = trim(body.substr(start, end - start));
-        if (stmt.starts_with("array ")) {
-            p.sink().warning(l, stmt, "arrays in 'define:' are not supported: this one is ignored");
+        if (stmt.starts_with("array") && stmt.size() > 5 && isSpace(stmt[5])) {
+            p.defineArrays(l, stmt.substr(5));
         } else if (!stmt.empty()) {
             p.define(l, stmt);
         }

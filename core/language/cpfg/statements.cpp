@@ -46,7 +46,11 @@ private:
     static size_t statementEnd(std::string_view text, size_t i) {
         int depth = 0;
         for (; i < text.size(); ++i) {
-            if (text[i] == '(') ++depth;
+            if (text[i] == '"') {  // a string (printf's format) to its closing quote
+                for (++i; i < text.size() && text[i] != '"'; ++i)
+                    if (text[i] == '\\') ++i;
+                if (i >= text.size()) return text.size();
+            } else if (text[i] == '(') ++depth;
             else if (text[i] == ')') --depth;
             else if (text[i] == ';' && depth <= 0) break;
         }
@@ -64,6 +68,27 @@ private:
         out = std::move(*e);
         i = close + 1;
         return true;
+    }
+
+    // The flat index of `a[i][j]` (row-major, each index truncated as cpfg does).
+    Expr indexOf(std::string_view element, const GlobalArray& array) {
+        std::string flat;
+        size_t k = element.find('[');
+        for (size_t d = 0; d < array.dims.size() && k != std::string_view::npos; ++d) {
+            const size_t close = matching(element, k);
+            if (close == std::string_view::npos) break;
+            if (!flat.empty()) flat = "(" + flat + ")*" + std::to_string(array.dims[d]) + "+";
+            flat += "trunc(" + std::string(element.substr(k + 1, close - k - 1)) + ")";
+            k = element.find('[', close);
+        }
+        // The element was compiled as written already (its mistakes said there): this text is
+        // Sprout's own, so a scratch line and sink.
+        SourceLine line;
+        line.text = flat;
+        line.original = flat;
+        DiagnosticSink scratch;
+        auto e = compileExpr(flat, line, m_scope, scratch);
+        return e ? std::move(*e) : Expr::constant(0);
     }
 
     bool fail(std::string_view at, std::string message) {
@@ -137,6 +162,10 @@ private:
         if (name == "else") return fail(name, "'else' without an 'if' before it");
         if (i < text.size() && text[i] == '(') {  // a call run for what it does: srand(3); printf(...);
             const size_t end = statementEnd(text, i);
+            if (name == "printf" || name == "fprintf" || name == "fflush") {  // cpfg's messages: nothing in the model
+                i = end < text.size() ? end + 1 : end;
+                return true;
+            }
             Statement s;
             s.kind = Statement::Kind::Eval;
             auto value = compileExpr(text.substr(start, end - start), m_line, m_scope, m_sink);
@@ -146,14 +175,35 @@ private:
             i = end < text.size() ? end + 1 : end;
             return true;
         }
+        Statement s;
+        s.kind = Statement::Kind::Assign;
+        if (i < text.size() && text[i] == '[') {  // cpfg: `a[i][j] = ...`, an element of a global array
+            const GlobalArray* array = nullptr;
+            if (m_scope.arrays)
+                for (const GlobalArray& a : *m_scope.arrays)
+                    if (a.name == name) array = &a;
+            if (!array) return fail(name, "'" + std::string(name) + "' is not an array: declare it in 'define: { array " + std::string(name) + "[10]; }'");
+            size_t end = i;
+            while (end < text.size() && text[end] == '[') {
+                const size_t close = matching(text, end);
+                if (close == std::string_view::npos) return fail(text.substr(end), "this '[' is never closed with ']'");
+                end = skipSpaces(text, close + 1);
+            }
+            std::string element(text.substr(start, end - start));  // compiled as a read, then made a write
+            auto read = compileExpr(element, m_line, m_scope, m_sink);
+            if (!read) return false;
+            s.index = indexOf(text.substr(start, end - start), *array);
+            s.slot = std::uint16_t(kGlobalSlot + array->first);
+            s.size = std::uint16_t(array->size());
+            i = end;
+        }
         if (i >= text.size() || text[i] != '=' || (i + 1 < text.size() && text[i + 1] == '='))
             return fail(text.substr(start), "expected '=' after '" + std::string(name) + "', as in '" + std::string(name) + " = 1;'");
         ++i;
         const size_t end = statementEnd(text, i);
-        Statement s;
-        s.kind = Statement::Kind::Assign;
         size_t slot = 0;
         while (slot < m_params.size() && m_params[slot] != name) ++slot;
+        if (s.size) slot = s.slot;
         if (slot == m_params.size() && m_scope.globals) {  // cpfg's global variable
             size_t g = 0;
             while (g < m_scope.globals->size() && (*m_scope.globals)[g] != name) ++g;
@@ -191,14 +241,86 @@ void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std
     for (const auto& name : assigned) {
         if (m_g.defines.count(name))
             return m_sink.error(line, body, "'" + name + "' is a constant (#define) and cannot be assigned in a block: use another name");
-        if (std::find(m_g.globals.begin(), m_g.globals.end(), name) == m_g.globals.end()) m_g.globals.push_back(name);
+        if (std::find(m_g.globals.begin(), m_g.globals.end(), name) == m_g.globals.end() &&
+            std::none_of(m_g.arrays.begin(), m_g.arrays.end(), [&](const GlobalArray& a) { return a.name == name; })) {
+            m_g.globals.push_back(name);
+            m_g.globalInit.push_back(0);
+        }
     }
     if (m_g.globals.size() > 4096) return m_sink.error(line, body, "too many global variables (the limit is 4096)");
     std::vector<Statement>& out = key == "start" ? m_g.startBlock : key == "starteach" ? m_g.startEachBlock
                                 : key == "endeach" ? m_g.endEachBlock : m_g.endBlock;
     const std::vector<std::string> none;
-    ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals};
+    ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
     parseStatements(m_sink, line, body, none, scope, out);
+}
+
+void Parser::defineArrays(const SourceLine& line, std::string_view text) {
+    // Definitions separated by commas outside brackets and braces.
+    std::vector<std::string_view> defs;
+    int depth = 0;
+    size_t from = 0;
+    for (size_t k = 0; k <= text.size(); ++k) {
+        const char c = k < text.size() ? text[k] : ',';
+        if (c == '[' || c == '{' || c == '(') ++depth;
+        else if (c == ']' || c == '}' || c == ')') --depth;
+        else if (c == ',' && depth <= 0) {
+            defs.push_back(trim(text.substr(from, k - from)));
+            from = k + 1;
+        }
+    }
+    for (std::string_view def : defs) {
+        size_t k = 0;
+        while (k < def.size() && isIdentChar(def[k])) ++k;
+        GlobalArray a;
+        a.name = std::string(def.substr(0, k));
+        if (a.name.empty() || !identStart(a.name[0]))
+            return m_sink.error(line, def, "expected an array's name and size, as in 'array a[10]'");
+        int size = 1;
+        for (k = skipSpaces(def, k); k < def.size() && def[k] == '[';) {
+            const size_t close = matching(def, k);
+            if (close == std::string_view::npos) return m_sink.error(line, def.substr(k), "this '[' is never closed with ']'");
+            auto n = constant(line, def.substr(k + 1, close - k - 1));
+            if (!n) return;
+            if (!(*n >= 1 && *n <= 65536)) return m_sink.error(line, def.substr(k), "an array's size must be a whole number from 1 to 65536");
+            a.dims.push_back(int(*n));
+            size *= int(*n);
+            k = skipSpaces(def, close + 1);
+        }
+        if (a.dims.empty()) return m_sink.error(line, def, "expected the size of '" + a.name + "' in brackets, as in '" + a.name + "[10]'");
+        if (m_g.globals.size() + size_t(size) > 65536 - kGlobalSlot)
+            return m_sink.error(line, def, "the arrays are too big: at most 65000 elements in all");
+        std::vector<double> values;
+        if (k < def.size() && def[k] == '=') {
+            std::string_view init = trim(def.substr(k + 1));
+            size_t v = 0;
+            while (v < init.size()) {
+                while (v < init.size() && (init[v] == '{' || init[v] == '}' || init[v] == ',' || isSpace(init[v]))) ++v;
+                size_t e = v;
+                int d = 0;
+                while (e < init.size() && !(d == 0 && (init[e] == ',' || init[e] == '}' || init[e] == '{'))) {
+                    d += init[e] == '(' ? 1 : init[e] == ')' ? -1 : 0;
+                    ++e;
+                }
+                if (e > v) {
+                    auto n = constant(line, trim(init.substr(v, e - v)));
+                    if (!n) return;
+                    values.push_back(*n);
+                }
+                v = e;
+            }
+            if (values.size() > size_t(size))
+                return m_sink.error(line, init, "'" + a.name + "' holds " + std::to_string(size) + " values, but " +
+                                                    std::to_string(values.size()) + " are given");
+        } else if (k < def.size()) {
+            return m_sink.error(line, def.substr(k), "expected '= {...}' or nothing after the size of '" + a.name + "'");
+        }
+        a.first = std::uint16_t(m_g.globals.size());
+        m_g.globals.push_back(a.name + "[]");  // never an identifier: read through the array
+        for (int e = 1; e < size; ++e) m_g.globals.emplace_back();
+        for (int e = 0; e < size; ++e) m_g.globalInit.push_back(size_t(e) < values.size() ? values[size_t(e)] : 0.0);
+        m_g.arrays.push_back(std::move(a));
+    }
 }
 
 void collectAssigned(std::string_view text, std::vector<std::string>& names) {

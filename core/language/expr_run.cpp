@@ -1,0 +1,96 @@
+// Expressions run: the built-in functions and constants, the binary operators, cpfg's random
+// samples, and Expr::run, the stack machine a compiled expression is (expr.cpp compiles it).
+#include <algorithm>
+#include <cmath>
+
+#include "core/language/expr.hpp"
+#include "core/language/expr_builtins.hpp"
+
+namespace sprout {
+namespace expr_detail {
+
+const std::unordered_map<std::string, double>& builtinConstants() {
+    static const std::unordered_map<std::string, double> k{
+        {"pi", 3.14159265358979323846}, {"e", 2.71828182845904523536},
+        {"golden", 137.50776405003785}};  // the golden angle in degrees (phyllotaxis)
+    return k;
+}
+
+// cpfg's bran(a, b): a sample of the beta distribution (cpfg's utility.c, Cheng's algorithm BA).
+double betaSample(double a, double b, Rng& rng) {
+    const double s = a + b;
+    const double lambda = std::min(a, b) <= 1 ? std::min(a, b) : std::sqrt((2 * a * b - s) / (s - 2));
+    const double u = a + lambda;
+    if (!(s > 0) || !(lambda > 0) || !std::isfinite(s)) return std::nan("");
+    double u1, u2, v, y;
+    for (int tries = 0; tries < 10'000; ++tries) {
+        do u1 = rng.uniform(); while (u1 == 0);
+        do u2 = rng.uniform(); while (u2 == 0);
+        v = (1 / lambda) * std::log(u1 / (1 - u1));
+        y = a * std::exp(v);
+        if (!(s * std::log(s / (b + y)) + u * v - std::log(4.0) < std::log(u1 * u1 * u2))) return y / (b + y);
+    }
+    return y / (b + y);
+}
+
+// cpfg's biran(n, p): the number of n coins that fall below p.
+double binomialSample(double n, double p, Rng& rng) {
+    int count = 0;
+    const int trials = int(std::clamp(n, 0.0, 1e6));
+    for (int i = 0; i < trials; ++i) count += rng.uniform() <= p;
+    return count;
+}
+
+double apply(Op op, double x, double y) {
+    switch (op) {
+        case Op::Add: return x + y;
+        case Op::Sub: return x - y;
+        case Op::Mul: return x * y;
+        case Op::Div: return x / y;
+        case Op::Mod: return std::fmod(x, y);
+        case Op::Pow: return std::pow(x, y);
+        case Op::Lt: return x < y;
+        case Op::Le: return x <= y;
+        case Op::Gt: return x > y;
+        case Op::Ge: return x >= y;
+        case Op::Eq: return x == y;
+        case Op::Ne: return x != y;
+        case Op::And: return (x != 0) && (y != 0);
+        case Op::Or: return (x != 0) || (y != 0);
+        default: return 0;
+    }
+}
+
+}  // namespace expr_detail
+
+using namespace expr_detail;
+
+double Expr::run(const double* slots, Rng& rng) const {
+    double st[kMaxStack];
+    int sp = 0;
+    for (const Instr& in : m_code) {
+        switch (in.op) {
+            case Op::Const: st[sp++] = in.value; break;
+            case Op::Slot: st[sp++] = slots[in.slot]; break;
+            case Op::Neg: st[sp - 1] = -st[sp - 1]; break;
+            case Op::Not: st[sp - 1] = st[sp - 1] == 0; break;
+            case Op::Call1: st[sp - 1] = kFunctions1[in.fn].fn(st[sp - 1]); break;
+            case Op::Call2: --sp; st[sp - 1] = kFunctions2[in.fn].fn(st[sp - 1], st[sp]); break;
+            case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.uniform(); break;
+            case Op::Normal: --sp; st[sp - 1] = rng.normal(st[sp - 1], st[sp]); break;
+            case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
+            case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
+            case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
+            case Op::Srand: rng = Rng(std::uint64_t(std::int64_t(st[sp - 1]))); st[sp - 1] = 0; break;
+            case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
+            case Op::Add: --sp; st[sp - 1] += st[sp]; break;
+            case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;
+            case Op::Mul: --sp; st[sp - 1] *= st[sp]; break;
+            case Op::Div: --sp; st[sp - 1] /= st[sp]; break;
+            default: --sp; st[sp - 1] = apply(in.op, st[sp - 1], st[sp]); break;
+        }
+    }
+    return st[0];
+}
+
+}  // namespace sprout
