@@ -86,9 +86,13 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
+    if (m_grammar->cpfgRandom)
+        // cpfg's derivation as `cpfg -g` writes it leaves drand48 unseeded whatever the
+        // `seed:` (only its window's first run calls seed48): Sprout's --seed gives others.
+        m_cpfgRng = Rng::cpfg(std::int64_t(m_options.seed ? *m_options.seed : 0));
     if (m_rewriter && !m_grammar->startBlock.empty()) {  // cpfg's Start: block, before the axiom is decomposed
         Rng rng = Rng::forStream(m_seed, 0);
-        runStatements(m_grammar->startBlock, m_rewriter->slots(), rng);
+        runStatements(m_grammar->startBlock, m_rewriter->slots(), m_cpfgRng ? *m_cpfgRng : rng);
     }
     if (m_grammar->environment.program) {
         m_environmentRun = m_grammar->environment.program->start();
@@ -181,8 +185,8 @@ DeriveOutcome Derivation::finishStep(int step, ModuleString& s, PodBuffer<std::u
             StepRewriter::Ages ageArgs{};
             if (ages) ageArgs = {ages->data(), &outAges, std::uint16_t(std::min(step, 65535))};
             if (origins) ageArgs.parent = &passOrigins.parent, ageArgs.rule = &passOrigins.rule;
-            Rng rng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
-            if (!m_decomposer->rewrite(s, out, rng, m_options.cancel, {}, ages || origins ? &ageArgs : nullptr))
+            Rng passRng = Rng::forStream(m_seed, 0xdec0000ull + std::uint64_t(step) * 1024 + std::uint64_t(pass));
+            if (!m_decomposer->rewrite(s, out, m_cpfgRng ? *m_cpfgRng : passRng, m_options.cancel, {}, ages || origins ? &ageArgs : nullptr))
                 return {DeriveStatus::Cancelled, step, 0, 0, "cancelled"};
             if (sameString(out, s)) break;
             if (pass == depth) {
@@ -406,7 +410,8 @@ DeriveOutcome Derivation::deriveGeneral(int n) {
         if (cancelled()) return {DeriveStatus::Cancelled, k, 0, 0, "cancelled"};
         auto t0 = std::chrono::steady_clock::now();
         auto out = std::make_shared<ModuleString>();
-        Rng rng = Rng::forStream(m_seed, std::uint64_t(k));
+        Rng stepRng = Rng::forStream(m_seed, std::uint64_t(k));
+        Rng& rng = m_cpfgRng ? *m_cpfgRng : stepRng;  // cpfg: one stream through the derivation
         std::function<void(double)> progress;
         if (m_options.progress) progress = [&](double f) { m_options.progress(k, n, f); };
         std::shared_ptr<PodBuffer<std::uint16_t>> ages;

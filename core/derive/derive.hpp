@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,7 @@ private:
     std::unique_ptr<class D0LExpander> m_d0l;
     std::unique_ptr<class StepRewriter> m_rewriter;
     std::unique_ptr<class StepRewriter> m_decomposer;
+    std::optional<Rng> m_cpfgRng;  // cpfg's random numbers, one stream through the steps (Grammar::cpfgRandom)
     // A cpfg environment program's run (`-e`): its state goes from step to step.
     std::unique_ptr<ProgramRun> m_environmentRun;
     bool m_programBefore = false;  // asked as each step begins (EnvironmentProgram::afterStep false)

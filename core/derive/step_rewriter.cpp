@@ -45,6 +45,7 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     }
     if (!g.globals.empty()) slots = kGlobalSlot + g.globals.size();  // cpfg's global variables after the locals
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
+    m_cpfgDraw = &rules == &g.rules && g.cpfgRandom && g.settings.seedGiven;
     for (size_t i = 0; i < g.globals.size() && i < g.globalInit.size(); ++i) m_slots[kGlobalSlot + i] = g.globalInit[i];
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
@@ -276,7 +277,38 @@ void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng)
     }
 }
 
+// cpfg's SelectProc (generate.c): the applicable productions (each of probability 1 unless
+// given), then one drand48 draw scaled by their total, in single precision as cpfg computes it.
+const Production* StepRewriter::selectCpfg(size_t i, Rng& rng) {
+    m_candidates.clear();
+    float total = 0;
+    std::uint32_t lastTested = 0;
+    bool tested = false;
+    const std::uint8_t in = m_subStack.empty() ? 0 : m_subStack.back();
+    if (m_hasRules[m_in->symbols[i]]) {
+        for (std::uint32_t k : m_rules.bySymbol[m_in->symbols[i]]) {
+            const Production& p = m_rules.productions[k];
+            if (p.lsystem != in) continue;
+            lastTested = k;
+            tested = true;
+            if (!applicable(p, i, rng)) continue;
+            m_candidates.push_back(k);
+            total += float(p.stochastic() ? p.probability : 1.0);
+        }
+    }
+    float scaled = total * float(rng.uniform());
+    for (std::uint32_t c : m_candidates) {
+        const Production& p = m_rules.productions[c];
+        if ((scaled -= float(p.stochastic() ? p.probability : 1.0)) <= 0) {
+            if (!tested || c != lastTested) applicable(p, i, rng);  // re-bind its slots
+            return &p;
+        }
+    }
+    return nullptr;
+}
+
 const Production* StepRewriter::select(size_t i, Rng& rng) {
+    if (m_cpfgDraw) return selectCpfg(i, rng);
     const auto& list = m_rules.bySymbol[m_in->symbols[i]];
     const auto& prods = m_rules.productions;
     const std::uint8_t in = m_subStack.empty() ? 0 : m_subStack.back();
@@ -352,7 +384,7 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
             if (cancel && cancel->load(std::memory_order_relaxed)) return false;
             if (progress) progress(double(i) / double(N));
         }
-        if (!hasRules[sym[i]]) {  // a run of modules no rule rewrites: copy it whole
+        if (!hasRules[sym[i]] && !m_cpfgDraw) {  // a run of modules no rule rewrites: copy it whole
             size_t j = i, pc = 0;
             if (m_parametric) {
                 while (j < N && !hasRules[sym[j]]) pc += arity[sym[j++]];
@@ -375,7 +407,7 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
         }
         m_paramPos = pp;
         const unsigned a = arity[sym[i]];
-        const Production* p = m_always[sym[i]];
+        const Production* p = m_cpfgDraw ? nullptr : m_always[sym[i]];
         if (p) {
             for (unsigned k = 0; k < a; ++k) m_slots[k] = par[pp + k];
         } else {

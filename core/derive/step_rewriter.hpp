@@ -52,6 +52,7 @@ public:
 
 private:
     const Production* select(size_t i, Rng& rng);
+    const Production* selectCpfg(size_t i, Rng& rng);
     bool matches(const PatternModule& pm, SymbolId s) const;
     bool matchLeft(const Production& p, size_t i);
     bool matchRight(const Production& p, size_t i);
@@ -77,6 +78,9 @@ private:
     bool m_needBrackets = false;  // contexts: bracket matching and parameter offsets
     bool m_parametric = false;
     bool m_cut = false;
+    // cpfg's stochastic L-system (a `seed:`): one draw for every module, the production chosen
+    // among all those that apply (selectCpfg).
+    bool m_cpfgDraw = false;
 
     // Scratch for the current step.
     const ModuleString* m_in = nullptr;

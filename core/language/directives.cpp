@@ -52,11 +52,15 @@ void seed(Parser& p, const SourceLine& line, std::string_view value) {
         }
         v = v * 10 + std::uint64_t(c - '0');
     }
+    if (!ok && p.cpfg()) {  // cpfg: an expression (`seed: SEED`)
+        if (auto c = p.constant(line, value); c && *c >= 0 && *c < 1e18) ok = true, v = std::uint64_t(*c);
+    }
     if (!ok) {
         p.sink().error(line, value, "the seed must be a whole number such as 'seed: 42'");
         return;
     }
     p.grammar().settings.seed = v;
+    p.grammar().settings.seedGiven = true;
 }
 
 std::optional<std::uint32_t> colour(std::string_view word) {

@@ -24,8 +24,8 @@ double betaSample(double a, double b, Rng& rng) {
     if (!(s > 0) || !(lambda > 0) || !std::isfinite(s)) return std::nan("");
     double u1, u2, v, y;
     for (int tries = 0; tries < 10'000; ++tries) {
-        do u1 = rng.uniform(); while (u1 == 0);
-        do u2 = rng.uniform(); while (u2 == 0);
+        do u1 = rng.exprUniform(); while (u1 == 0);
+        do u2 = rng.exprUniform(); while (u2 == 0);
         v = (1 / lambda) * std::log(u1 / (1 - u1));
         y = a * std::exp(v);
         if (!(s * std::log(s / (b + y)) + u * v - std::log(4.0) < std::log(u1 * u1 * u2))) return y / (b + y);
@@ -37,7 +37,7 @@ double betaSample(double a, double b, Rng& rng) {
 double binomialSample(double n, double p, Rng& rng) {
     int count = 0;
     const int trials = int(std::clamp(n, 0.0, 1e6));
-    for (int i = 0; i < trials; ++i) count += rng.uniform() <= p;
+    for (int i = 0; i < trials; ++i) count += rng.exprUniform() <= p;
     return count;
 }
 
@@ -76,12 +76,12 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Not: st[sp - 1] = st[sp - 1] == 0; break;
             case Op::Call1: st[sp - 1] = kFunctions1[in.fn].fn(st[sp - 1]); break;
             case Op::Call2: --sp; st[sp - 1] = kFunctions2[in.fn].fn(st[sp - 1], st[sp]); break;
-            case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.uniform(); break;
-            case Op::Normal: --sp; st[sp - 1] = rng.normal(st[sp - 1], st[sp]); break;
+            case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.exprUniform(); break;
+            case Op::Normal: --sp; st[sp - 1] = rng.exprNormal(st[sp - 1], st[sp]); break;
             case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
             case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
             case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
-            case Op::Srand: rng = Rng(std::uint64_t(std::int64_t(st[sp - 1]))); st[sp - 1] = 0; break;
+            case Op::Srand: rng.exprSeed(std::int64_t(st[sp - 1])); st[sp - 1] = 0; break;
             case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
             case Op::Add: --sp; st[sp - 1] += st[sp]; break;
             case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;

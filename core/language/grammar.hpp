@@ -80,6 +80,7 @@ struct Settings {
     std::uint32_t barkColour = 0x6B4A2EFF, tipColour = 0x7DB344FF;
     ViewHint view = ViewHint::Auto;
     std::uint64_t seed = 1;
+    bool seedGiven = false;  // cpfg: a `seed:` line makes the L-system stochastic
 };
 
 // One module of a predecessor or context: a name, and either named formal parameters or
@@ -155,6 +156,10 @@ struct Grammar {
     // cpfg applies them within each step only (generate.c, ApplyProd), so its step 0 is the
     // axiom as written.
     bool decomposeAxiom = true;
+    // cpfg's random numbers (Rng::cpfg): one stream through the derivation, and with a `seed:`
+    // one draw for each module of each step, choosing among its applicable productions (each
+    // of probability 1 unless given), as cpfg's generate.c does.
+    bool cpfgRandom = false;
     // cpfg's sub-L-systems (`lsystem: 2` after the main one's `endlsystem`), by label: between
     // `$(2)` and `$` a step rewrites with sub-L-system 2's productions (L-system Explorer).
     std::vector<double> subLsystems;

@@ -75,3 +75,21 @@ TEST(Stochastic, WarnsWhenProbabilitiesDoNotAddUpToOne) {
 
 }  // namespace
 }  // namespace sprout::test
+
+// cpfg's generator is drand48's: the values glibc gives for the same states (checked with a C
+// program calling drand48, erand48 and seed48), so cpfg's stochastic objects derive its strings.
+TEST(Stochastic, CpfgRandomNumbersAreDrand48s) {
+    using sprout::Rng;
+    Rng unseeded = Rng::cpfg(0);  // cpfg -g: drand48 never seeded
+    EXPECT_DOUBLE_EQ(unseeded.uniform(), 3.907985046680551e-14);
+    EXPECT_DOUBLE_EQ(unseeded.exprUniform(), 0.17082803610628972);  // erand48 of {0x330E, 0, 0}
+    Rng seeded = Rng::cpfg(2454);  // seed48({2454, 0, 155})
+    EXPECT_DOUBLE_EQ(seeded.uniform(), 0.73544233498333611);
+    // srand(a) starts the expressions' stream at {0x330E, a, a >> 16}, and nrand's first
+    // value after it is drawn (before any srand, cpfg's first nran is the mean).
+    Rng fresh = Rng::cpfg(0);
+    EXPECT_EQ(fresh.exprNormal(5, 2), 5.0);
+    fresh.exprSeed(0);
+    Rng again = Rng::cpfg(0);
+    EXPECT_DOUBLE_EQ(again.exprUniform(), fresh.exprUniform());
+}
