@@ -59,8 +59,12 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     if (&rules == &g.rules && !g.subLsystems.empty()) {
         m_subMark.assign(A, 0);
         for (size_t s = 0; s < A; ++s) {
-            if (g.alphabet[SymbolId(s)].name != "$") continue;
-            m_subMark[s] = m_arity[s] > 0 ? 1 : 2;
+            const std::string& name = g.alphabet[SymbolId(s)].name;
+            // cpfg calls a sub-L-system with ?(k, scale) (generate.c: a '?' with parameters)
+            // and L-system Explorer with $(k); both return with $.
+            const bool call = (name == "$" || (name == "?" && g.cpfgRandom)) && m_arity[s] > 0;
+            if (!call && name != "$") continue;
+            m_subMark[s] = call ? 1 : 2;
             m_hasRules[s] = 1;  // the copy of runs without rules stops there
         }
     }
