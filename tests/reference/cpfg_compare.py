@@ -14,7 +14,8 @@ numbers equal to 1e-5 (relative; 1e-9 absolute near zero). Prints a line per obj
 figures; exits 1 when fewer than --at-least objects give cpfg's string.
 
 --write-expected DIR writes cpfg's strings as DIR/NAME.str (test data for
-VlabObject.ManualObjectsDeriveCpfgsStrings, made by this script: see that folder's README).
+VlabObject.ManualObjectsDeriveCpfgsStrings, made by this script: see that folder's README);
+--expected DIR compares with those instead of running cpfg (that test, without the reference).
 --time prints both programs' times per object and the median ratio (bench/cpfg_vs_reference.sh).
 
 Not part of the README's test command or CI: ctest runs it under the label `reference` when
@@ -109,6 +110,18 @@ def run_cpfg(bin_dir, folder, timeout=300):
             continue
         args.append(words[i])
         i += 1
+    # An environment program of the object's own (`executable: ./obcheck ...`) that is not built
+    # in its folder: cpfg runs without it and its ?E keep their values, not the object's string.
+    if "-e" in args and args.index("-e") + 1 < len(args):
+        try:
+            with open(os.path.join(folder, args[args.index("-e") + 1]), encoding="latin-1") as f:
+                for line in f:
+                    if line.startswith("executable:"):
+                        program = line.split(":", 1)[1].split()
+                        if program and program[0].startswith("./") and not os.path.exists(os.path.join(folder, program[0])):
+                            return None, "its environment program %s is the object's own C, not built" % program[0], 0.0
+        except OSError:
+            pass
     scratch = tempfile.mkdtemp(prefix="cpfg-ref-")
     try:
         work = os.path.join(scratch, "object")
@@ -154,15 +167,25 @@ def main():
     ap.add_argument("--at-least", type=int, default=0)
     ap.add_argument("--write-expected", default="")
     ap.add_argument("--time", action="store_true")
+    ap.add_argument("--expected", default="", help="compare with the strings kept in this folder instead of running cpfg")
     a = ap.parse_args()
-    if not os.path.exists(os.path.join(a.cpfg_bin, "cpfg")):
+    if a.expected and not os.path.isdir(a.objects):
+        print("no %s: skipped" % a.objects)
+        return 77
+    if not a.expected and not os.path.exists(os.path.join(a.cpfg_bin, "cpfg")):
         print("no reference cpfg (SPROUT_CPFG_REFERENCE): skipped")
         return 77
     same, refused, ratios = 0, 0, []
     found = [f for f in objects(a.objects) if a.only in f]
+    if a.expected:
+        found = [f for f in found if os.path.exists(os.path.join(a.expected, os.path.basename(f) + ".str"))]
     for folder in found:
         name = os.path.relpath(folder, a.objects)
-        theirs, why, t_cpfg = run_cpfg(a.cpfg_bin, folder)
+        if a.expected:
+            with open(os.path.join(a.expected, os.path.basename(folder) + ".str"), encoding="latin-1") as f:
+                theirs, why, t_cpfg = f.read(), None, 0.0
+        else:
+            theirs, why, t_cpfg = run_cpfg(a.cpfg_bin, folder)
         if theirs is None:
             refused += 1
             print("%-40s cpfg refuses it (%s)" % (name, why))
