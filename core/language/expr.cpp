@@ -2,74 +2,31 @@
 // run (Expr::run) each time a rule is tried or applied.
 //
 // Index of this file:
-//   [SECTION] Built-in functions and constants, and the tree
+//   [SECTION] The tree (the built-in functions and constants: expr_builtins.hpp)
 //   [SECTION] The compiler: text to tree to code
 //   [SECTION] Running a compiled expression
 //   [SECTION] compileExpr, and the names it knows
 
 #include "core/language/expr.hpp"
+#include "core/language/expr_builtins.hpp"
+#include "core/language/vlab/curve_files.hpp"
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 
 namespace sprout {
 namespace {
 
-// [SECTION] Built-in functions and constants, and the tree
+// [SECTION] The tree (the built-in functions and constants: expr_builtins.hpp)
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
 constexpr int kMaxStack = 256;     // evaluation stack of one program
 constexpr int kMaxNodes = 2000;    // operations in one expression
 
-using Fn1 = double (*)(double);
-using Fn2 = double (*)(double, double);
-
-struct Function1 { const char* name; Fn1 fn; };
-struct Function2 { const char* name; Fn2 fn; };
-
-const Function1 kFunctions1[] = {
-    {"sin", [](double x) { return std::sin(x * kDeg); }},
-    {"cos", [](double x) { return std::cos(x * kDeg); }},
-    {"tan", [](double x) { return std::tan(x * kDeg); }},
-    {"asin", [](double x) { return std::asin(x) / kDeg; }},
-    {"acos", [](double x) { return std::acos(x) / kDeg; }},
-    {"atan", [](double x) { return std::atan(x) / kDeg; }},
-    {"sqrt", [](double x) { return std::sqrt(x); }},
-    {"exp", [](double x) { return std::exp(x); }},
-    {"log", [](double x) { return std::log(x); }},
-    {"abs", [](double x) { return std::fabs(x); }},
-    {"floor", [](double x) { return std::floor(x); }},
-    {"ceil", [](double x) { return std::ceil(x); }},
-    {"round", [](double x) { return std::round(x); }},
-    {"sign", [](double x) { return double((x > 0) - (x < 0)); }},
-    {"trunc", [](double x) { return std::trunc(x); }},
-    {"fabs", [](double x) { return std::fabs(x); }},
-    // mathjs's (L-system Explorer's expressions): fix rounds towards zero.
-    {"fix", [](double x) { return std::trunc(x); }},
-    {"cbrt", [](double x) { return std::cbrt(x); }},
-    {"log10", [](double x) { return std::log10(x); }},
-    {"log2", [](double x) { return std::log2(x); }},
-    {"square", [](double x) { return x * x; }},
-    {"cube", [](double x) { return x * x * x; }},
-};
-const Function2 kFunctions2[] = {
-    {"atan2", [](double y, double x) { return std::atan2(y, x) / kDeg; }},
-    {"min", [](double a, double b) { return std::fmin(a, b); }},
-    {"max", [](double a, double b) { return std::fmax(a, b); }},
-    {"pow", [](double a, double b) { return std::pow(a, b); }},
-    {"mod", [](double a, double b) { return b == 0 ? a : a - b * std::floor(a / b); }},  // mathjs: the divisor's sign
-    {"hypot", [](double a, double b) { return std::hypot(a, b); }},
-};
-
-const std::unordered_map<std::string, double>& builtinConstants() {
-    static const std::unordered_map<std::string, double> k{
-        {"pi", 3.14159265358979323846}, {"e", 2.71828182845904523536},
-        {"golden", 137.50776405003785}};  // the golden angle in degrees (phyllotaxis)
-    return k;
-}
+using namespace expr_builtins;
 
 struct Node {
     Op op;
@@ -98,26 +55,6 @@ NodePtr makeConst(double v) {
     n->op = Op::Const;
     n->value = v;
     return n;
-}
-
-double apply(Op op, double x, double y) {
-    switch (op) {
-        case Op::Add: return x + y;
-        case Op::Sub: return x - y;
-        case Op::Mul: return x * y;
-        case Op::Div: return x / y;
-        case Op::Mod: return std::fmod(x, y);
-        case Op::Pow: return std::pow(x, y);
-        case Op::Lt: return x < y;
-        case Op::Le: return x <= y;
-        case Op::Gt: return x > y;
-        case Op::Ge: return x >= y;
-        case Op::Eq: return x == y;
-        case Op::Ne: return x != y;
-        case Op::And: return (x != 0) && (y != 0);
-        case Op::Or: return (x != 0) || (y != 0);
-        default: return 0;
-    }
 }
 
 }  // namespace
@@ -426,8 +363,21 @@ private:
             auto it = m_scope.defines->find(name);
             if (it != m_scope.defines->end()) return makeConst(it->second);
         }
+        // A function set's function by its name (cpfg defines it: -DNAME=id).
+        if (m_scope.curves)
+            if (const int id = m_scope.curves->functionId(name)) return makeConst(id);
         auto k = builtinConstants().find(name);
         if (k != builtinConstants().end()) return makeConst(k->second);
+        if (m_funcArg) {  // func(NAME, x): NAME should be a function of the set
+            std::vector<std::string> names = m_scope.curves ? m_scope.curves->functionNames() : std::vector<std::string>{};
+            std::string msg = "unknown function '" + name + "' in func()";
+            std::string guess = closestMatch(name, names);
+            if (!guess.empty()) msg += " — did you mean '" + guess + "'?";
+            else if (names.empty()) msg += ": no function set names its functions (func's first argument is then a function's number, 1 for the first)";
+            else msg += ": the function set does not name one so";
+            fail(start, msg);
+            return makeConst(0);
+        }
 
         std::vector<std::string> known;
         if (m_scope.params) known = *m_scope.params;
@@ -450,7 +400,9 @@ private:
         std::vector<NodePtr> args;
         if (!accept(")")) {
             do {
+                m_funcArg = name == "func" && args.empty();
                 args.push_back(parseTernary(depth + 1));
+                m_funcArg = false;
                 if (m_failed) return makeConst(0);
             } while (accept(","));
             if (!accept(")")) {
@@ -477,6 +429,7 @@ private:
                 return expandMacro(name, it->second, args, depth);
             }
         }
+        if (name == "func") return funcCall(start, std::move(args));
         // cpfg's names: ran(x) is uniform in [0, x), nran(mean, sigma) normal, random(a, b) uniform.
         if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss" || name == "ran" ||
             name == "nran" || name == "random") {
@@ -523,6 +476,46 @@ private:
         return makeConst(0);
     }
 
+    // cpfg's func(id, x): the id-th function of the view file (a number, or a function set's
+    // name); an id with no function gives 0 there, as in cpfg, and a warning here.
+    NodePtr funcCall(size_t start, std::vector<NodePtr> args) {
+        if (!m_scope.curves) {
+            fail(start, "func() needs cpfg's functions: the view file's 'function:' or 'function set:' lines "
+                        "(open the VLab object's folder)");
+            return makeConst(0);
+        }
+        if (args.size() != 2) {
+            fail(start, "'func' takes 2 arguments (a function and x), not " + std::to_string(args.size()));
+            return makeConst(0);
+        }
+        const CurveTables& t = *m_scope.curves;
+        if (args[0]->op == Op::Const && !(args[0]->value >= 1 && args[0]->value < double(t.functions.size()) + 1))
+            warn(start, "func(" + formatId(args[0]->value) + ", ...): there " + (t.functions.size() == 1 ? "is " : "are ") +
+                            std::to_string(t.functions.size()) + " function" + (t.functions.size() == 1 ? "" : "s") +
+                            " (numbered from 1): it gives 0, as in cpfg");
+        if (args[0]->op == Op::Const && args[1]->op == Op::Const) return makeConst(t.func(args[0]->value, args[1]->value));
+        auto n = std::make_unique<Node>();
+        n->op = Op::Func;
+        n->a = std::move(args[0]);
+        n->b = std::move(args[1]);
+        return n;
+    }
+    static std::string formatId(double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%g", v);
+        return b;
+    }
+    // A warning at `at` (inside a #define's body: at its use).
+    void warn(size_t at, std::string msg) {
+        ExprCompiler* root = this;
+        while (root->m_parent) {
+            at = root->m_reportAt;
+            msg = "in '#define " + root->m_macroName + "': " + msg;
+            root = root->m_parent;
+        }
+        root->m_sink.warning(root->m_line, root->m_text.substr(std::min(at, root->m_text.size())), std::move(msg));
+    }
+
     void emit(const Node& n, Expr& e, int& depth, int& maxDepth) {
         for (const Node* child : {n.a.get(), n.b.get(), n.c.get()})
             if (child) emit(*child, e, depth, maxDepth);
@@ -534,6 +527,7 @@ private:
         depth += 1 - arity;
         maxDepth = std::max(maxDepth, depth);
         if (n.op == Op::Rand || n.op == Op::Normal) e.m_usesRandom = true;
+        if (n.op == Op::Func) e.m_curves = m_scope.curves;
         e.m_code.push_back(in);
     }
 
@@ -548,6 +542,7 @@ private:
     std::unordered_map<std::string, const Node*> m_args;  // macro parameters -> argument trees
     size_t m_pos = 0;
     bool m_failed = false;
+    bool m_funcArg = false;     // compiling func()'s first argument
     int m_nodes = 0;
 };
 
@@ -566,6 +561,7 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Call2: --sp; st[sp - 1] = kFunctions2[in.fn].fn(st[sp - 1], st[sp]); break;
             case Op::Rand: --sp; st[sp - 1] = st[sp - 1] + (st[sp] - st[sp - 1]) * rng.uniform(); break;
             case Op::Normal: --sp; st[sp - 1] = rng.normal(st[sp - 1], st[sp]); break;
+            case Op::Func: --sp; st[sp - 1] = m_curves->func(st[sp - 1], st[sp]); break;
             case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
             case Op::Add: --sp; st[sp - 1] += st[sp]; break;
             case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;
@@ -585,7 +581,7 @@ std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, c
 }
 
 std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random"};
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "func"};
     for (auto& f : kFunctions1) names.push_back(f.name);
     for (auto& f : kFunctions2) names.push_back(f.name);
     return names;

@@ -16,9 +16,12 @@
 
 namespace sprout {
 
+struct CurveTables;  // core/language/vlab/curve_files.hpp
+
 enum class Op : std::uint8_t {
     Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select, Call1, Call2, Rand, Normal,
+    Func,  // cpfg's func(id, x): a function of the grammar's CurveTables
 };
 
 struct Instr {
@@ -93,6 +96,7 @@ private:
     bool m_usesRandom = false;
     double m_value = 0;
     std::vector<Instr> m_code;
+    const CurveTables* m_curves = nullptr;  // func()'s functions (the Grammar keeps them)
 };
 
 // A function-like cpfg `#define in(x, y) (x > 0 && y > 0)`: its body is compiled at each
@@ -106,6 +110,8 @@ struct ExprScope {
     const std::vector<std::string>* params = nullptr;  // slot i is named params[i]
     const std::unordered_map<std::string, double>* defines = nullptr;
     const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
+    // cpfg's functions for func(id, x), and their names (a function set's); null: func() is unknown.
+    const CurveTables* curves = nullptr;
 };
 
 // Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.

@@ -17,6 +17,7 @@
 #include "core/language/expr.hpp"
 #include "core/language/module_string.hpp"
 #include "core/language/surface_file.hpp"
+#include "core/language/vlab/curve_files.hpp"
 
 namespace sprout {
 
@@ -128,6 +129,8 @@ struct Grammar {
     Environment environment;  // what ?E modules ask after each step (`environment:` lines)
     // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
     std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
+    // cpfg's functions (func(id, x)) and contours (@#(id)) from the view file: ParseOptions::curves.
+    std::shared_ptr<const CurveTables> curves;
     std::vector<std::string> defineOrder;  // for sliders, in file order
     // How the text was read, for a user who pasted it: the dialect (".lsys", "ABOP notation",
     // "cpfg"; the loader names Lparser, Fractint and L-Py) and each setting taken from it.
@@ -177,6 +180,9 @@ struct ParseOptions {
     IncludeReader include;   // null: `#include` is an error (text typed with no folder)
     std::string fileName;    // the grammar's own name, so that it cannot include itself
     bool explorer = false;   // an L-system Explorer file (`.ls`, not Lparser's): that tool's defaults
+    // cpfg's functions and contours, read from the files a VLab object's view file names
+    // (core/language/vlab/): func(id, x) and its names, @#(id). Kept by the Grammar.
+    std::shared_ptr<const CurveTables> curves{};
 };
 
 ParseResult parse(std::string_view text);

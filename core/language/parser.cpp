@@ -25,6 +25,7 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // UTF-8 byte order mark
     m_text = std::string(text);
     m_original = m_text;
+    m_g.curves = options.curves;  // func() and @# use them at derive and draw time
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
     // generalized cylinders and query modules; the Lparser extensions; L-system Explorer's
     // move without drawing, home, contours and their use, radius spline).
@@ -172,7 +173,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
 // [SECTION] Constants and settings' numbers
 
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
-    ExprScope scope{nullptr, &m_g.defines, &m_macros};
+    ExprScope scope{nullptr, &m_g.defines, &m_macros, m_options.curves.get()};
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     double v;
