@@ -17,6 +17,7 @@
 #include "core/language/file_kind.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/import/import.hpp"
+#include "core/language/vlab/curve_files.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
@@ -141,6 +142,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (r.ok()) deriveAndDraw(r.text, 4);
 #elif defined(SPROUT_FUZZ_CPFG)
     deriveAndDrawCpfg(input, 5);
+#elif defined(SPROUT_FUZZ_VLAB)
+    // cpfg's function and contour files, each format read, evaluated and sampled; then func()
+    // and @# in a small grammar with what was read.
+    auto tables = std::make_shared<CurveTables>();
+    FunctionRead f = readFunction(input, "fuzz.func", 100);
+    for (double x : {-1.0, 0.0, 0.37, 1.0, 2.0}) (void)f.function(x);
+    tables->addFunction(f.function);
+    for (const CurveFunction& g : readFunctionSet(input, "fuzz.fset").functions) (void)g(0.5);
+    ContourRead c = readContour(input, "fuzz.con");
+    if (c.contour) {
+        for (int sides : {3, 8, 1024})
+            if (c.contour->sampled(sides).size() != size_t(sides) + 1) fail("a contour sampled to the wrong count");
+        tables->contours.emplace(1, *c.contour);
+    }
+    for (const Contour& k : readContourSet(input, "fuzz.cset").contours) (void)k.sampled(8);
+    ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
+    o.curves = tables;
+    ParseResult r = parse("Lsystem: 1\nderivation length: 2\nAxiom: #(1) @#(1) @Gs A(0) @Ge\n"
+                          "A(t) --> F(func(1, t / 2)) A(t + 1)\nendlsystem\n", o);
+    int n = 0;
+    if (auto d = deriveSome(r, 2, n)) {
+        Geometry g;
+        interpret(*d->step(n), *r.grammar, {n, d->seed(), nullptr}, g);
+    }
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);

@@ -149,7 +149,7 @@ TEST(VlabFiles, BadFilesSayWhereAndWhatWasExpected) {
     EXPECT_EQ(firstProblem(readFunction("fver 1 1\nname: f\nsamples: 10\nflip: off\npoints: 5\n0 0\n0.5 1\n", "f.func", 1).diagnostics),
               "f.func:8:1: the file ends after 2 of its 5 points (expected 'x y [multiplicity]')");
     EXPECT_EQ(firstProblem(readFunction("fver 1 1\nname: f\nsamples: ten\n", "f.func", 1).diagnostics),
-              "f.func:3:10: expected SAMPLES after 'samples:' (a whole number from -1000000 to 100000)");
+              "f.func:3:10: expected SAMPLES after 'samples:' (a whole number from -1000000 to 10000)");
     EXPECT_EQ(firstProblem(readFunction("fver 2 0\n", "f.func", 1).diagnostics),
               "f.func:1:6: unsupported function format 2.0 (cpfg reads 'fver 1 1')");
     EXPECT_EQ(firstProblem(readFunction("\x7f" "ELF\x01\x02", "f.func", 1).diagnostics),

@@ -7,6 +7,7 @@
 //   [SECTION] Reading a function
 //   [SECTION] Function sets, files, diagnostics
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/language/vlab/curve_files.hpp"
@@ -22,7 +23,7 @@ namespace {
 // [SECTION] Evaluation (SplineFunction::P, N, _Value, _Precompute)
 
 constexpr int kOrder = 4;            // cubic (cpfg's t = 4)
-constexpr int kMaxSamples = 100000;  // a table's size (cpfg has no bound)
+constexpr int kMaxSamples = 10000;   // a table's size (cpfg has no bound; its editors write 10 to 1000)
 constexpr int kMaxPoints = 100000;   // control points, multiplicities expanded
 constexpr int kMaxMultiplicity = 1000;
 
@@ -64,7 +65,10 @@ std::array<double, 2> CurveFunction::point(double d) const {
     const int n = int(m_points.size()) - 1;
     const double u = d * (n - kOrder + 2);
     double x = 0, y = 0;
-    for (int k = 0; k <= n; k++) {
+    // cpfg sums over every point; only those of u's knot span and the three before it are not
+    // 0 (adding an exact 0 changes no sum), so the sum runs over a margin around them.
+    const int span = int(std::clamp(std::floor(u), -1.0, double(n)));
+    for (int k = std::max(0, span - 1); k <= std::min(n, span + 4); k++) {
         const double b = basis(k, kOrder, u, n);
         x += m_points[size_t(k)][0] * b;
         y += m_points[size_t(k)][1] * b;
@@ -220,6 +224,9 @@ std::optional<CurveFunction> readOne(LineReader& in, const std::string& stem, in
         }
         std::vector<std::array<double, 2>> points;
         if (!readPoints(in, *count, false, points)) return std::nullopt;
+        if (samples > kMaxSamples)
+            in.error(line, 1, "the view file's " + std::to_string(samples) + " samples are more than 10000: the curve is "
+                              "evaluated without a table", true);
         return CurveFunction(stem, std::move(points), samples);  // the view file's samples
     }
     if (w[0].text != "fver") {
