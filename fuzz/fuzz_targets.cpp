@@ -159,7 +159,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Contour& k : readContourSet(input, "fuzz.cset").contours) (void)k.sampled(8);
     ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
     o.curves = tables;
-    ParseResult r = parse("Lsystem: 1\nderivation length: 2\nAxiom: #(1) @#(1) @Gs A(0) @Ge\n"
+    ParseResult r = parse("Lsystem: 1\nderivation length: 2\nAxiom: #(1) @!(5) @#(1) @Gs A(0) @Ge\n"
                           "A(t) --> F(func(1, t / 2)) A(t + 1)\nendlsystem\n", o);
     int n = 0;
     if (auto d = deriveSome(r, 2, n)) {

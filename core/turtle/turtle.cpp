@@ -39,20 +39,13 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
         }
         // cpfg's @#(id): the contour `contour: id FILE` names (core/language/vlab/) for the tubes to come.
         if (g.curves && g.alphabet[SymbolId(s)].name == "@#") m_actions[s] = Act::ContourUse;
+        if (g.curves && g.alphabet[SymbolId(s)].name == "@!") m_actions[s] = Act::ContourSides;
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
         m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section || m_actions[s] == Act::ContourUse;
         if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {
             m_actions[s] = Act::SurfaceFile;
             m_surfaceFiles.resize(g.alphabet.size(), nullptr);
             m_surfaceFiles[s] = f->second.get();
-        }
-    }
-    if (g.curves) {  // the view file's contours, sampled as cpfg samples them (`contour sides:`)
-        for (const auto& [id, contour] : g.curves->contours) {
-            if (g.settings.sections.size() + m_contours.size() >= 32767) break;
-            m_contourIds.emplace(double(id), std::int16_t(g.settings.sections.size() + m_contours.size()));
-            auto& section = m_contours.emplace_back();
-            for (const std::array<float, 2>& p : g.curves->section(id)) section.emplace_back(p[0], p[1]);
         }
     }
     const auto& strings = g.alphabet.strings();

@@ -252,6 +252,21 @@ TEST(VlabLanguage, ContourIsTheTubesCrossSection) {
         const glm::vec3 want(cpfg[k][1], 0, cpfg[k][0]);
         EXPECT_NEAR(glm::length(g.polygons.positions[k] - want), 0.0f, 1e-5f) << "ring point " << k;
     }
+    // @!(5): the turtle's sides for the contours chosen after it (cpfg's MakeContour at 5 sides);
+    // in a branch only: after it, `contour sides:` (8) again.
+    ParseResult five = parseWith("Lsystem: 1\nderivation length: 0\nAxiom: [@!(5) @#(1) #(2) @Gs F(1) @Ge] @#(1) #(2) @Gs F(1) @Ge\nendlsystem\n",
+                                 growthTables());
+    ASSERT_TRUE(five.ok());
+    Geometry g5;
+    interpret(five.grammar->axiom, *five.grammar, {0, 1, nullptr}, g5);
+    const std::array<float, 2> cpfg5[5] = {{0.666666687f, 0}, {-0.119877189f, 0.665683091f}, {-1.19523215f, 0.343314618f},
+                                           {-1.1305275f, -0.433975369f}, {-0.0642294884f, -0.763029575f}};
+    for (size_t k = 0; k < 5; ++k)
+        EXPECT_NEAR(glm::length(g5.polygons.positions[k] - glm::vec3(cpfg5[k][1], 0, cpfg5[k][0])), 0.0f, 1e-5f) << k;
+    // The second tube: 8 sides again (2 rings of 5 and two caps of 6 before it).
+    ASSERT_GE(g5.polygons.positions.size(), 22u + 8);
+    for (size_t k = 0; k < 8; ++k)
+        EXPECT_NEAR(glm::length(g5.polygons.positions[22 + k] - glm::vec3(cpfg[k][1], 0, cpfg[k][0])), 0.0f, 1e-5f) << k;
     // No contour 2: cpfg's circle (Sprout's round tube).
     ParseResult round = parseWith("Lsystem: 1\nderivation length: 0\nAxiom: #(2) @#(2) @Gs F(1) @Ge\nendlsystem\n", growthTables());
     Geometry c;

@@ -374,11 +374,11 @@ double CurveTables::func(double id, double x) const {
     return functions[size_t(int(id)) - 1](x);
 }
 
-std::vector<std::array<float, 2>> CurveTables::section(int id) const {
+std::vector<std::array<float, 2>> CurveTables::section(int id, int sides) const {
     auto it = contours.find(id);
     if (it == contours.end()) return {};
     std::vector<std::array<float, 2>> out;
-    for (const std::array<float, 3>& p : it->second.sampled(contourSides)) out.push_back({-p[1], p[0]});
+    for (const std::array<float, 3>& p : it->second.sampled(sides > 0 ? sides : contourSides)) out.push_back({-p[1], p[0]});
     return out;
 }
 

@@ -138,9 +138,9 @@ struct CurveTables {
     // cpfg's func(id, x): (int)id; out of range is 0 (cpfg warns and gives 0).
     double func(double id, double x) const;
     // The cross-section of `@#(id)` as Sprout's generalized cylinder takes it (x along the
-    // turtle's left, y along its up, the radius one unit): cpfg's points at contourSides,
-    // (x, y) -> (-y, x). Empty for an id with no contour (cpfg's circle).
-    std::vector<std::array<float, 2>> section(int id) const;
+    // turtle's left, y along its up, the radius one unit): cpfg's points at `sides` (0:
+    // contourSides), (x, y) -> (-y, x). Empty for an id with no contour (cpfg's circle).
+    std::vector<std::array<float, 2>> section(int id, int sides = 0) const;
 };
 
 }  // namespace sprout
