@@ -3,7 +3,8 @@
 # configuration with the file and the line. docs/architecture.md draws them.
 #
 #   core/    only core/, its six stages in order: base, language, turtle, environment,
-#            derive, scene, each using only those before it
+#            derive, scene, each using only those before it; core/language/vlab/ (VLab's
+#            object files) only core/base/, the Diagnostic and itself
 #   lpy/     core/ and lpy/, its folders in this order, each using only those before it:
 #              translate and plantgl (side by side), engine, draw, interpreter, api, run
 #              (which defines lpy.hpp). lpy.hpp, its public face, includes core/ and
@@ -103,6 +104,8 @@ function(sprout_check_layers)
     list(APPEND below core/${stage}/)
     sprout_check_layer(core/${stage} ALLOWED ${below})
   endforeach()
+  # VLab's files: read by the language, below it (core/base and the Diagnostic only).
+  sprout_check_layer(core/language/vlab ALLOWED core/base/ core/language/vlab/ core/language/diagnostic.hpp)
   sprout_check_layer(core ALLOWED core/)
   # lpy/, folder by folder, each allowed the ones before it.
   set(below core/)

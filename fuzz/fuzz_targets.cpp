@@ -21,6 +21,7 @@
 #include "core/language/vlab/animation_file.hpp"
 #include "core/language/vlab/colours.hpp"
 #include "core/language/vlab/view_file.hpp"
+#include "core/language/vlab/curve_files.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
@@ -173,6 +174,40 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     deriveAndDrawCpfg(input, 5);
 #elif defined(SPROUT_FUZZ_ENVIRO)
     runEnvironment(input);
+#elif defined(SPROUT_FUZZ_VLAB)
+    // cpfg's function and contour files, each format read, evaluated and sampled; then func()
+    // and @# in a small grammar with what was read.
+    auto tables = std::make_shared<CurveTables>();
+    FunctionRead f = readFunction(input, "fuzz.func", 100);
+    for (double x : {-1.0, 0.0, 0.37, 1.0, 2.0}) (void)f.function(x);
+    tables->addFunction(f.function);
+    for (const CurveFunction& g : readFunctionSet(input, "fuzz.fset").functions) (void)g(0.5);
+    ContourRead c = readContour(input, "fuzz.con");
+    if (c.contour) {
+        for (int sides : {3, 8, 1024})
+            if (c.contour->sampled(sides).size() != size_t(sides) + 1) fail("a contour sampled to the wrong count");
+        tables->contours.emplace(1, *c.contour);
+    }
+    for (const Contour& k : readContourSet(input, "fuzz.cset").contours) (void)k.sampled(8);
+    ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
+    o.curves = tables;
+    ParseResult r = parse("Lsystem: 1\nderivation length: 2\nAxiom: #(1) @!(5) @#(1) @Gs A(0) @Ge\n"
+                          "A(t) --> F(func(1, t / 2)) A(t + 1)\nendlsystem\n", o);
+    int n = 0;
+    if (auto d = deriveSome(r, 2, n)) {
+        Geometry g;
+        interpret(*d->step(n), *r.grammar, {n, d->seed(), nullptr}, g);
+    }
+    // A VLab object's other files: the same bytes as a view file, an animation file, a
+    // material set and a colour map.
+    const vlab::ViewFile v = vlab::readViewFile(input);
+    for (const auto& d : v.diagnostics)
+        if (d.line < 1) fail("a view file's message has no line");
+    const vlab::AnimationFile a = vlab::readAnimationFile(input);
+    if (a.frames(1000).size() > 100000) fail("too many frames");
+    std::string error;
+    if (!vlab::readMaterials(input, error) && error.empty()) fail("a refused material set says nothing");
+    if (!vlab::readColourMap(input, error) && error.empty()) fail("a refused colour map says nothing");
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);
@@ -187,17 +222,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (char c : t.mainCode) mainLines += c == '\n';
     if (tag == std::string::npos && mainLines != lines) fail("the translation lost or added lines");
     (void)detectFileKind("model.lpy", input);
-#elif defined(SPROUT_FUZZ_VLAB)
-    // A VLab object's other files: the same bytes as a view file, an animation file, a
-    // material set and a colour map.
-    const vlab::ViewFile v = vlab::readViewFile(input);
-    for (const auto& d : v.diagnostics)
-        if (d.line < 1) fail("a view file's message has no line");
-    const vlab::AnimationFile a = vlab::readAnimationFile(input);
-    if (a.frames(1000).size() > 100000) fail("too many frames");
-    std::string error;
-    if (!vlab::readMaterials(input, error) && error.empty()) fail("a refused material set says nothing");
-    if (!vlab::readColourMap(input, error) && error.empty()) fail("a refused colour map says nothing");
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
 #endif

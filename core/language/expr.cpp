@@ -9,10 +9,12 @@
 
 #include "core/language/expr.hpp"
 #include "core/language/expr_builtins.hpp"
+#include "core/language/vlab/curve_files.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 
@@ -374,8 +376,21 @@ private:
             auto it = m_scope.defines->find(name);
             if (it != m_scope.defines->end()) return makeConst(it->second);
         }
+        // A function set's function by its name (cpfg defines it: -DNAME=id).
+        if (m_scope.curves)
+            if (const int id = m_scope.curves->functionId(name)) return makeConst(id);
         auto k = builtinConstants().find(name);
         if (k != builtinConstants().end()) return makeConst(k->second);
+        if (m_funcArg) {  // func(NAME, x): NAME should be a function of the set
+            std::vector<std::string> names = m_scope.curves ? m_scope.curves->functionNames() : std::vector<std::string>{};
+            std::string msg = "unknown function '" + name + "' in func()";
+            std::string guess = closestMatch(name, names);
+            if (!guess.empty()) msg += " — did you mean '" + guess + "'?";
+            else if (names.empty()) msg += ": no function set names its functions (func's first argument is then a function's number, 1 for the first)";
+            else msg += ": the function set does not name one so";
+            fail(start, msg);
+            return makeConst(0);
+        }
 
         std::vector<std::string> known;
         if (m_scope.params) known = *m_scope.params;
@@ -447,7 +462,9 @@ private:
         std::vector<NodePtr> args;
         if (!accept(")")) {
             do {
+                m_funcArg = name == "func" && args.empty();
                 args.push_back(parseTernary(depth + 1));
+                m_funcArg = false;
                 if (m_failed) return makeConst(0);
             } while (accept(","));
             if (!accept(")")) {
@@ -489,6 +506,7 @@ private:
             n->a = std::move(args[0]);
             return n;
         }
+        if (name == "func") return funcCall(start, std::move(args));
         // cpfg's names: ran(x) is uniform in [0, x), nran(mean, sigma) normal, random(a, b) uniform.
         if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss" || name == "ran" ||
             name == "nran" || name == "random") {
@@ -535,6 +553,46 @@ private:
         return makeConst(0);
     }
 
+    // cpfg's func(id, x): the id-th function of the view file (a number, or a function set's
+    // name); an id with no function gives 0 there, as in cpfg, and a warning here.
+    NodePtr funcCall(size_t start, std::vector<NodePtr> args) {
+        if (!m_scope.curves) {
+            fail(start, "func() needs cpfg's functions: the view file's 'function:' or 'function set:' lines "
+                        "(open the VLab object's folder)");
+            return makeConst(0);
+        }
+        if (args.size() != 2) {
+            fail(start, "'func' takes 2 arguments (a function and x), not " + std::to_string(args.size()));
+            return makeConst(0);
+        }
+        const CurveTables& t = *m_scope.curves;
+        if (args[0]->op == Op::Const && !(args[0]->value >= 1 && args[0]->value < double(t.functions.size()) + 1))
+            warn(start, "func(" + formatId(args[0]->value) + ", ...): there " + (t.functions.size() == 1 ? "is " : "are ") +
+                            std::to_string(t.functions.size()) + " function" + (t.functions.size() == 1 ? "" : "s") +
+                            " (numbered from 1): it gives 0, as in cpfg");
+        if (args[0]->op == Op::Const && args[1]->op == Op::Const) return makeConst(t.func(args[0]->value, args[1]->value));
+        auto n = std::make_unique<Node>();
+        n->op = Op::Func;
+        n->a = std::move(args[0]);
+        n->b = std::move(args[1]);
+        return n;
+    }
+    static std::string formatId(double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%g", v);
+        return b;
+    }
+    // A warning at `at` (inside a #define's body: at its use).
+    void warn(size_t at, std::string msg) {
+        ExprCompiler* root = this;
+        while (root->m_parent) {
+            at = root->m_reportAt;
+            msg = "in '#define " + root->m_macroName + "': " + msg;
+            root = root->m_parent;
+        }
+        root->m_sink.warning(root->m_line, root->m_text.substr(std::min(at, root->m_text.size())), std::move(msg));
+    }
+
     void emit(const Node& n, Expr& e, int& depth, int& maxDepth) {
         for (const Node* child : {n.a.get(), n.b.get(), n.c.get()})
             if (child) emit(*child, e, depth, maxDepth);
@@ -547,6 +605,7 @@ private:
         maxDepth = std::max(maxDepth, depth);
         if (n.op == Op::Rand || n.op == Op::Normal || n.op == Op::Beta || n.op == Op::Binomial || n.op == Op::Srand)
             e.m_usesRandom = true;
+        if (n.op == Op::Func) e.m_curves = m_scope.curves;
         e.m_code.push_back(in);
     }
 
@@ -561,6 +620,7 @@ private:
     std::unordered_map<std::string, const Node*> m_args;  // macro parameters -> argument trees
     size_t m_pos = 0;
     bool m_failed = false;
+    bool m_funcArg = false;     // compiling func()'s first argument
     int m_nodes = 0;
 };
 
@@ -572,7 +632,7 @@ std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, c
 }
 
 std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand"};
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func"};
     for (auto& f : kFunctions1) names.push_back(f.name);
     for (auto& f : kFunctions2) names.push_back(f.name);
     return names;

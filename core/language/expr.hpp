@@ -16,11 +16,14 @@
 
 namespace sprout {
 
+struct CurveTables;  // core/language/vlab/curve_files.hpp
+
 enum class Op : std::uint8_t {
     Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
     Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select, Call1, Call2, Rand, Normal,
     Beta, Binomial, Srand,  // cpfg's bran(a, b), biran(n, p) and srand(seed)
     Index,                  // cpfg's arrays: slots[slot + index], value = the array's size
+    Func,  // cpfg's func(id, x): a function of the grammar's CurveTables
 };
 
 struct Instr {
@@ -95,6 +98,7 @@ private:
     bool m_usesRandom = false;
     double m_value = 0;
     std::vector<Instr> m_code;
+    const CurveTables* m_curves = nullptr;  // func()'s functions (the Grammar keeps them)
 };
 
 // A function-like cpfg `#define in(x, y) (x > 0 && y > 0)`: its body is compiled at each
@@ -127,6 +131,8 @@ struct ExprScope {
     const std::unordered_map<std::string, ExprMacro>* macros = nullptr;
     const std::vector<std::string>* globals = nullptr;  // slot kGlobalSlot + i is named globals[i]
     const std::vector<GlobalArray>* arrays = nullptr;
+    // cpfg's functions for func(id, x), and their names (a function set's); null: func() is unknown.
+    const CurveTables* curves = nullptr;
 };
 
 // Where an array's flat index `at` falls in an array of `size` elements: out of range it is

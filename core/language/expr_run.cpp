@@ -5,6 +5,7 @@
 
 #include "core/language/expr.hpp"
 #include "core/language/expr_builtins.hpp"
+#include "core/language/vlab/curve_files.hpp"
 
 namespace sprout {
 namespace expr_detail {
@@ -80,6 +81,7 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Normal: --sp; st[sp - 1] = rng.exprNormal(st[sp - 1], st[sp]); break;
             case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
             case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
+            case Op::Func: --sp; st[sp - 1] = m_curves->func(st[sp - 1], st[sp]); break;
             case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
             case Op::Srand: rng.exprSeed(std::int64_t(st[sp - 1])); st[sp - 1] = 0; break;
             case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;

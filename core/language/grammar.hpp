@@ -17,6 +17,7 @@
 #include "core/language/expr.hpp"
 #include "core/language/module_string.hpp"
 #include "core/language/surface_file.hpp"
+#include "core/language/vlab/curve_files.hpp"
 
 namespace sprout {
 
@@ -177,6 +178,8 @@ struct Grammar {
     Environment environment;  // what ?E modules ask after each step (`environment:` lines)
     // cpfg surface files by module name ("~s"): `surface: s leaf.s` or an `s.s` beside the grammar.
     std::unordered_map<std::string, std::shared_ptr<const SurfaceFile>> surfaceFiles;
+    // cpfg's functions (func(id, x)) and contours (@#(id)) from the view file: ParseOptions::curves.
+    std::shared_ptr<const CurveTables> curves;
     std::vector<std::string> defineOrder;  // for sliders, in file order
     // How the text was read, for a user who pasted it: the dialect (".lsys", "ABOP notation",
     // "cpfg"; the loader names Lparser, Fractint and L-Py) and each setting taken from it.
@@ -233,6 +236,9 @@ struct ParseOptions {
     // A VLab object's `-e FILE.e` environment program (readEnviroFile): the grammar's
     // environment.program, which answers its ?E modules.
     std::shared_ptr<const EnvironmentProgram> environmentProgram = nullptr;
+    // cpfg's functions and contours, read from the files a VLab object's view file names
+    // (core/language/vlab/): func(id, x) and its names, @#(id). Kept by the Grammar.
+    std::shared_ptr<const CurveTables> curves{};
 };
 
 ParseResult parse(std::string_view text);

@@ -26,13 +26,15 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     m_text = std::string(text);
     m_original = m_text;
     m_g.environment.program = options.environmentProgram;  // a VLab object's -e program
+    m_g.curves = options.curves;  // func() and @# use them at derive and draw time
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
     // generalized cylinders and query modules; the Lparser extensions; L-system Explorer's
-    // move without drawing, home, contours and their use, radius spline).
+    // move without drawing, home, contours and their use, radius spline; cpfg's @!, the sides of
+    // its contours).
     m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T",
                      "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L", "?E",
                      "@m", "@H", "@#", "@Gr", "@Cs", "@Ce", "@Ca", "@Cb", "@Cc", "@Cm", "@Cn", "@Ct", "@Ds", "@De",
-                     "@Di", "@bo", "@bd"};
+                     "@Di", "@bo", "@bd", "@!"};
     indexModuleNames();
 }
 
@@ -173,7 +175,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
 // [SECTION] Constants and settings' numbers
 
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
-    ExprScope scope{nullptr, &m_g.defines, &m_macros};
+    ExprScope scope{nullptr, &m_g.defines, &m_macros, nullptr, nullptr, m_options.curves.get()};
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     double v;

@@ -62,7 +62,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
                             const std::vector<std::string>& params, Successor& out, int net) {
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
-    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -324,7 +324,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         return;
     prod.slotCount = int(params.size());
 
-    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
+    ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
     bool ok = true;
     for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
         Statement init;

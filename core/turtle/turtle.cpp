@@ -37,6 +37,9 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
             else if (name == "@Ce" || name == "@De") m_actions[s] = Act::ContourEnd;
             else if (name == "@#") m_actions[s] = Act::ContourUse;
         }
+        // cpfg's @#(id): the contour `contour: id FILE` names (core/language/vlab/) for the tubes to come.
+        if (g.curves && g.alphabet[SymbolId(s)].name == "@#") m_actions[s] = Act::ContourUse;
+        if (g.curves && g.alphabet[SymbolId(s)].name == "@!") m_actions[s] = Act::ContourSides;
         m_colourModules |= m_actions[s] == Act::ColourNext || m_actions[s] == Act::ColourPrev;
         m_hasCurves |= m_actions[s] == Act::CurveStart || m_actions[s] == Act::Section || m_actions[s] == Act::ContourUse;
         if (auto f = g.surfaceFiles.find(g.alphabet[SymbolId(s)].name); f != g.surfaceFiles.end()) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <unordered_map>
 #include <vector>
 #include <glm/geometric.hpp>
@@ -235,6 +236,8 @@ private:
     std::vector<glm::vec2> m_contour;
     std::vector<std::vector<glm::vec2>> m_contours;
     std::unordered_map<double, std::int16_t> m_contourIds;
+    // The view file's contours (Grammar::curves), by id and sides, sampled when first chosen.
+    std::map<std::pair<int, int>, std::int16_t> m_fileContours;
     void contourCommand(State& t, Act act, const double* p);
     void keepTube(std::size_t curve, double name);
     std::vector<std::uint32_t> m_palette;

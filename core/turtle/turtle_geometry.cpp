@@ -1,10 +1,19 @@
 // The geometry the turtle emits beyond stems: polygons ({ . }, @c discs), predefined
 // surfaces and spheres, cpfg's point and heading commands, generalized cylinders, and the
 // finish of a drawing (automatic widths, bounds, planar curves).
+//
+// Index of this file:
+//   [SECTION] Generalized cylinders and their contours
+//   [SECTION] cpfg's point and heading commands
+//   [SECTION] Polygons and kept surfaces
+//   [SECTION] Surfaces, the finish, bounds
+#include "core/base/bounded.hpp"
 #include "core/turtle/turtle_impl.hpp"
 
 namespace sprout {
 namespace turtle_impl {
+
+// [SECTION] Generalized cylinders and their contours
 
 // Generalized cylinders: @Gs starts one at the turtle, @Gc(n) adds a control point (and
 // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
@@ -77,6 +86,25 @@ void Turtle::contourCommand(State& t, Act act, const double* p) {
         for (const glm::vec2& q : m_contour) section.push_back(2.0f * q);  // the tool's size is a diameter
         return;
     }
+    if (act == Act::ContourSides) {  // cpfg: @! alone is 8 sides, fewer than 3 are 3
+        t.sides = std::int16_t(p ? std::clamp(saturate<int>(p[0]), 3, 1024) : 8);
+        return;
+    }
+    // cpfg's @#(id) with the view file's contour id: sampled at the turtle's sides (@!), else
+    // at `contour sides:`, once for each count.
+    if (m_g.curves && p && m_g.curves->contours.count(saturate<int>(p[0]))) {
+        const int id = saturate<int>(p[0]), sides = t.sides > 0 ? t.sides : m_g.curves->contourSides;
+        auto found = m_fileContours.find({id, sides});
+        if (found == m_fileContours.end()) {
+            const size_t fixed = m_g.settings.sections.size();
+            if (fixed + m_contours.size() >= 32767) return;
+            found = m_fileContours.emplace(std::pair(id, sides), std::int16_t(fixed + m_contours.size())).first;
+            auto& section = m_contours.emplace_back();
+            for (const std::array<float, 2>& q : m_g.curves->section(id, sides)) section.emplace_back(q[0], q[1]);
+        }
+        t.section = found->second;
+        return;
+    }
     // @#(id): that contour for the paths to come; an id never defined (the tool's 'default'): round.
     auto it = p ? m_contourIds.find(p[0]) : m_contourIds.end();
     t.section = it == m_contourIds.end() ? std::int16_t(-1) : it->second;
@@ -92,6 +120,8 @@ void Turtle::curvePoint(const State& t, int subdivisions) {
     }
     c.curve.points.push_back({p, glm::normalize(toGlm(t.H)), t.width * 0.5f, t.stemColour, subdivisions});
 }
+
+// [SECTION] cpfg's point and heading commands
 
 // cpfg's @M(x,y,z), @R(hx,hy,hz[,ux,uy,uz]) and @c(r): rare, so out of the hot switch.
 void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
@@ -145,6 +175,8 @@ void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
 }
 
 namespace {
+// [SECTION] Polygons and kept surfaces
+
 // Two outline points are one when they are apart by no more than float rounding can put
 // them at their distance from the origin: a few hundred ulps, relative. An absolute 1e-6 was
 // one ulp at 10 units, so whether an outline's closing point was dropped depended on how its
@@ -237,6 +269,8 @@ void Turtle::insertKept(const State& t, const double* p, int arity) {
     }
     for (std::uint32_t i : kept.indices) m.indices.push_back(base + i);
 }
+
+// [SECTION] Surfaces, the finish, bounds
 
 void Turtle::surface(const State& t, Act act, const double* p, float grow) {
     SurfaceInstance s;

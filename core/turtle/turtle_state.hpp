@@ -29,6 +29,7 @@ enum class Act : std::uint8_t {
     // Its contours: @Cs (@Ds) starts one, each '.' adds the turtle's point, @Ce(id) (@De) ends
     // and names it, @#(id) makes it the cross-section of the paths started after it.
     ContourStart, ContourEnd, ContourUse,
+    ContourSides,  // cpfg's @!(n): the sides of the view file's contours chosen after it
 };
 
 inline Act actionOf(const std::string& name) {
@@ -100,6 +101,7 @@ struct State {
     std::int16_t colour = -1;  // palette index set by ; , ' (wrapped); -1: none set
     std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
     std::int16_t section = -1;  // Settings::sections index of the next @Gs's cross-section; -1: round
+    std::int16_t sides = 0;     // cpfg's @!(n) for the view file's contours; 0: `contour sides:`
     float angleScale = 1;     // @A: factor on the default turning angle
     // Resolved when the colour or the branch order changes: measured faster than looking it
     // up at every segment, even though it makes the state 80 bytes instead of 64.

@@ -193,7 +193,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::PolyVertex: polygonVertex(t); break;
         case Act::ContourStart:
         case Act::ContourEnd:
-        case Act::ContourUse: contourCommand(t, act, p); break;
+        case Act::ContourUse:
+        case Act::ContourSides: contourCommand(t, act, p); break;
         case Act::PolyEnd: endPolygon(t); break;
         case Act::PolyEndSave: endPolygonKept(t, p); break;
         case Act::InsertSaved:

@@ -251,7 +251,7 @@ void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std
     std::vector<Statement>& out = key == "start" ? m_g.startBlock : key == "starteach" ? m_g.startEachBlock
                                 : key == "endeach" ? m_g.endEachBlock : m_g.endBlock;
     const std::vector<std::string> none;
-    ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays};
+    ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
     parseStatements(m_sink, line, body, none, scope, out);
 }
 

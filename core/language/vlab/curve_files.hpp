@@ -1,0 +1,146 @@
+#pragma once
+// cpfg's FUNCTIONS and CONTOURS: the files VLab's editors write (funcedit: `.func`, gallery:
+// `.fset` and `.cset`, cuspy: `.con`), read the way cpfg reads them, and evaluated the way cpfg
+// evaluates them, so that `func(id, x)` gives the numbers cpfg's derivation gets and `@#(n)`
+// the cross-section cpfg draws.
+//
+//   Functions (cpfg/splinefun.cpp): a cubic B-spline through the control points (x, y) (each
+//   repeated by its multiplicity), its x increasing from 0 to 1. func(id, x) clamps x to
+//   [0, 1]; with `samples:` (or a view file's count) over 2 it is a table of that many values,
+//   linearly interpolated, else the curve itself, found by bisection on x to 0.001. `flip:` is
+//   the editor's view only: cpfg ignores it (funcedit writes the points unflipped).
+//   Contours (cpfg/general.c): a uniform cubic B-spline through the control points (closed:
+//   wrapping round), resampled to `sides` points equally spaced along its length (cpfg's
+//   `contour sides:`, 8 by default); a closed contour is turned so that its first point lies
+//   on the x axis. cpfg draws x along the turtle's up and y along its right (-left).
+//
+// Every reader returns what it read and the problems found, each at its line and column with
+// what was expected there; it never throws, and nothing in a file can make it loop long.
+// Includes only core/base.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sprout {
+
+// A problem in a function or contour file: "FILE:line:col: message" by text().
+struct CurveFileDiagnostic {
+    std::string file;
+    int line = 0;  // 1-based; 0: the file as a whole (it cannot be read)
+    int col = 0;   // 1-based
+    std::string message;
+    bool warning = false;  // read anyway (an unsupported detail cpfg skips too)
+    std::string text() const;
+};
+
+// [SECTION] Functions
+
+class CurveFunction {
+public:
+    // cpfg's default when a file cannot be read: 0 everywhere (points (0,0) x3 and (1,0)).
+    CurveFunction();
+    // `points` with their multiplicities already expanded (at least 4); `samples` > 2: a table.
+    CurveFunction(std::string name, std::vector<std::array<double, 2>> points, int samples);
+
+    const std::string& name() const { return m_name; }  // `name:` (the file's stem for the old format)
+    int samples() const { return m_samples; }           // > 2: evaluated from a table
+    const std::vector<std::array<double, 2>>& points() const { return m_points; }
+    double operator()(double x) const;  // cpfg's SplineFunction::GetValue
+    double curveValue(double x) const;  // the curve itself (bisection), as the table is made
+
+private:
+    std::array<double, 2> point(double d) const;
+    std::string m_name;
+    std::vector<std::array<double, 2>> m_points;
+    int m_samples = 0;
+    std::vector<double> m_table;
+};
+
+struct FunctionRead {
+    CurveFunction function;  // the default (0 everywhere) when the file could not be read, as cpfg
+    std::vector<CurveFileDiagnostic> diagnostics;
+    bool ok() const;
+};
+struct FunctionSetRead {
+    std::vector<CurveFunction> functions;  // func(i) is functions[i-1]; names from `name:`
+    std::vector<CurveFileDiagnostic> diagnostics;
+    bool ok() const;
+};
+
+// A `.func` file: `fver 1 1` (name:, samples:, flip:, points: n, then `x y [multiplicity]`
+// lines) or the first format (`range: 0 1`, `points: n`, `x y` lines). `samples` is the count
+// of the view file's `function: FILE SAMPLES` line (-1 when it has none): the first format
+// uses it, `fver 1 1` its own `samples:`.
+FunctionRead readFunction(std::string_view text, const std::string& fileName, int samples);
+FunctionRead loadFunction(const std::filesystem::path& path, int samples);
+// A `.fset` file (`funcgalleryver 1 1`, `items: n`, n functions in `fver 1 1`).
+FunctionSetRead readFunctionSet(std::string_view text, const std::string& fileName);
+FunctionSetRead loadFunctionSet(const std::filesystem::path& path);
+
+// [SECTION] Contours
+
+struct Contour {
+    std::string name;
+    bool closed = true;
+    int dim = 3;  // 2 for the first format's 2D points
+    std::vector<std::array<float, 3>> points;  // control points, multiplicities expanded
+    // cpfg's MakeContour: `sides` (3..1024) points equally spaced along the curve in x y;
+    // closed: sides + 1 points, the last the first; open: sides + 1 points, end to end.
+    std::vector<std::array<float, 3>> sampled(int sides) const;
+};
+
+struct ContourRead {
+    std::optional<Contour> contour;  // none when the file cannot be read (cpfg: the circle)
+    std::vector<CurveFileDiagnostic> diagnostics;
+    bool ok() const;
+};
+struct ContourSetRead {
+    std::vector<Contour> contours;  // in file order, named by `name:`
+    std::vector<CurveFileDiagnostic> diagnostics;
+    bool ok() const;
+};
+
+// A `.con` file: `cver 1 1` / `1 2` / `1 3` (name:, points: n total, type: open|closed or
+// or|oe|cr|ce, samples:, then `x y z multiplicity` lines) or the first format (`n dim
+// closed|open`, then n points of dim coordinates).
+ContourRead readContour(std::string_view text, const std::string& fileName);
+ContourRead loadContour(const std::filesystem::path& path);
+// A `.cset` file (`contourgalleryver 1 1`, `items: n`, n contours in `cver`).
+ContourSetRead readContourSet(std::string_view text, const std::string& fileName);
+ContourSetRead loadContourSet(const std::filesystem::path& path);
+
+// [SECTION] What a grammar uses
+
+// The functions and contours a cpfg grammar runs with (from its view file's `function:`,
+// `function set:`, `contour:` and `contour sides:` lines), kept by the Grammar (ParseOptions::
+// curves) so that func() and @# use them at derive and draw time. Immutable once parsed.
+struct CurveTables {
+    std::vector<CurveFunction> functions;  // func(id, x): functions[id - 1]
+    // cpfg defines each function of a function set by its name (`-DNAME=id`), but only while
+    // the view file's last function line is a `function set:`.
+    bool functionsFromSet = false;
+    std::map<int, Contour> contours;  // by the id of `contour: ID FILE` (0 is cpfg's circle)
+    int contourSides = 8;             // `contour sides:`
+
+    // A `function:` line: appended (its id is the count after it), names no longer defined.
+    void addFunction(CurveFunction f);
+    // A `function set:` line: the set replaces every function read before (cpfg resets them).
+    void setFunctionSet(std::vector<CurveFunction> set);
+    // The id a name stands for in expressions (a function set's function), or 0.
+    int functionId(std::string_view name) const;
+    std::vector<std::string> functionNames() const;
+    // cpfg's func(id, x): (int)id; out of range is 0 (cpfg warns and gives 0).
+    double func(double id, double x) const;
+    // The cross-section of `@#(id)` as Sprout's generalized cylinder takes it (x along the
+    // turtle's left, y along its up, the radius one unit): cpfg's points at `sides` (0:
+    // contourSides), (x, y) -> (-y, x). Empty for an id with no contour (cpfg's circle).
+    std::vector<std::array<float, 2>> section(int id, int sides = 0) const;
+};
+
+}  // namespace sprout
