@@ -70,6 +70,7 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
         }
     } else {
         const double* p = s.params.data();
+        const bool floats = alphabet.floatParameters;
         for (std::size_t i = 0; i < N; ++i) {
             const SymbolInfo& info = alphabet[sym[i]];
             if (info.nameArgs) {  // a parameter written as a quoted name prints as that name
@@ -89,7 +90,8 @@ bool writeString(const ModuleString& s, const Alphabet& alphabet) {
                 *at++ = '(';
                 for (int k = 0; k < info.arity; ++k) {
                     if (k) *at++ = ',';
-                    at = std::to_chars(at, at + 25, p[k]).ptr;
+                    if (floats && double(float(p[k])) == p[k]) at = std::to_chars(at, at + 25, float(p[k])).ptr;  // cpfg's
+                    else at = std::to_chars(at, at + 25, p[k]).ptr;
                 }
                 *at++ = ')';
                 p += info.arity;

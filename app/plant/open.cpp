@@ -5,6 +5,7 @@
 #include "app/plant/presets.hpp"
 #include "app/plant/source.hpp"
 #include "app/plant/vlab_view.hpp"
+#include "app/plant/vlab_curves.hpp"
 #include "app/plant/vlab_environment.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/import/import.hpp"
@@ -35,7 +36,10 @@ OpenedText openText(const std::string& text, FileKind kind, const std::string& p
         return out;
     }
     ParseOptions po = parseOptionsFor(kind, path);
-    if (po.cpfg && !path.empty()) po.environmentProgram = objectEnvironment(path).program;  // a VLab object's -e
+    if (po.cpfg && !path.empty()) {
+        po.environmentProgram = objectEnvironment(path).program;  // a VLab object's -e
+        readVlabCurves(path, po);                                 // its functions, contours, surfaces
+    }
     ParseResult r = parse(text, po);
     out.grammar = std::move(r.grammar);
     // A VLab object's L-system draws as its view, colours and window say (vlab_view.hpp).

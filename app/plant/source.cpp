@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include "app/plant/presets.hpp"
+#include "app/plant/vlab_curves.hpp"
 #include "app/plant/vlab_environment.hpp"
 #include "app/plant/vlab_object.hpp"
 #include "app/plant/vlab_view.hpp"
@@ -53,6 +54,10 @@ SourceText readSource(const std::string& source) {
             return out;
         } else {
             for (std::string& m : env.messages) out.notes.push_back(std::move(m));
+        }
+        {  // its functions', contours' and surfaces' problems (openText reads them for the parse)
+            ParseOptions scratch;
+            for (std::string& m : readVlabCurves(path, scratch).problems) out.notes.push_back(std::move(m));
         }
         std::optional<std::string> bytes = readFile(path);
         if (!bytes) {

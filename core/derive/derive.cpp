@@ -99,6 +99,8 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
         m_programBefore = !m_grammar->environment.program->afterStep;
     }
     auto axiom = std::make_shared<ModuleString>(m_grammar->axiom);
+    if (m_grammar->cpfgRandom)  // cpfg's string keeps parameters as floats
+        for (size_t k = 0; k < axiom->params.size(); ++k) axiom->params.data()[k] = double(float(axiom->params.data()[k]));
     std::shared_ptr<Origins> axiomOrigins;
     if (m_options.trackOrigins) {
         axiomOrigins = std::make_shared<Origins>();

@@ -430,7 +430,11 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
             if (dParent)
                 for (size_t j = 0; j < n; ++j)
                     *dParent++ = std::uint32_t(i), *dRule++ = std::int32_t(p - m_rules.productions.data());
-            for (const Expr& e : succ.args) *dp++ = e.eval(m_slots.data(), rng);
+            if (m_g.cpfgRandom) {  // cpfg keeps a module's parameters as floats in its string
+                for (const Expr& e : succ.args) *dp++ = double(float(e.eval(m_slots.data(), rng)));
+            } else {
+                for (const Expr& e : succ.args) *dp++ = e.eval(m_slots.data(), rng);
+            }
         } else {
             *ds++ = sym[i];
             for (unsigned k = 0; k < a; ++k) *dp++ = par[pp + k];

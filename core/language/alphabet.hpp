@@ -30,6 +30,9 @@ public:
     static constexpr SymbolId kCut = 2;   // %
     static constexpr size_t kMaxSymbols = 65535;
     static constexpr int kMaxArity = 32;
+    // cpfg's strings keep parameters as floats: written back as the shortest text that gives
+    // the same float (0.6, not 0.6000000238418579).
+    bool floatParameters = false;
 
     Alphabet();
 

@@ -2,9 +2,8 @@
 // run (Expr::run) each time a rule is tried or applied.
 //
 // Index of this file:
-//   [SECTION] The tree
 //   [SECTION] The compiler: text to tree to code
-//   [SECTION] compileExpr, and the names it knows
+//   [SECTION] compileExpr
 // The built-in functions and the running of a compiled program are expr_run.cpp.
 
 #include "core/language/expr.hpp"
@@ -19,44 +18,8 @@
 #include <memory>
 
 namespace sprout {
-namespace {
 
 using namespace expr_detail;
-constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
-constexpr int kMaxNodes = 2000;    // operations in one expression
-
-// [SECTION] The tree
-
-struct Node {
-    Op op;
-    std::uint8_t fn = 0;
-    std::uint16_t slot = 0;
-    double value = 0;
-    std::unique_ptr<Node> a, b, c;
-};
-using NodePtr = std::unique_ptr<Node>;
-
-NodePtr clone(const Node* n) {
-    if (!n) return nullptr;
-    auto c = std::make_unique<Node>();
-    c->op = n->op;
-    c->fn = n->fn;
-    c->slot = n->slot;
-    c->value = n->value;
-    c->a = clone(n->a.get());
-    c->b = clone(n->b.get());
-    c->c = clone(n->c.get());
-    return c;
-}
-
-NodePtr makeConst(double v) {
-    auto n = std::make_unique<Node>();
-    n->op = Op::Const;
-    n->value = v;
-    return n;
-}
-
-}  // namespace
 
 // [SECTION] The compiler: text to tree to code
 
@@ -624,18 +587,12 @@ private:
     int m_nodes = 0;
 };
 
-// [SECTION] compileExpr, and the names it knows
+// [SECTION] compileExpr
 
 std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, const ExprScope& scope,
                                 DiagnosticSink& sink) {
     return ExprCompiler(text, line, scope, sink).compile();
 }
 
-std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func"};
-    for (auto& f : kFunctions1) names.push_back(f.name);
-    for (auto& f : kFunctions2) names.push_back(f.name);
-    return names;
-}
 
 }  // namespace sprout

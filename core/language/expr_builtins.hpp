@@ -1,7 +1,9 @@
 #pragma once
 // The expressions' built-in functions and constants, which the compiler (expr.cpp) folds and
-// names and the run (expr_run.cpp) calls. Internal to core/language.
+// names and the run (expr_run.cpp) calls, and the compiler's tree. Internal to core/language.
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
@@ -57,5 +59,38 @@ const std::unordered_map<std::string, double>& builtinConstants();
 double apply(Op op, double x, double y);
 double betaSample(double a, double b, Rng& rng);
 double binomialSample(double n, double p, Rng& rng);
+
+constexpr int kMaxDepth = 100;     // nesting bound: no input can overflow the parser's stack
+constexpr int kMaxNodes = 2000;    // operations in one expression
+
+// The tree an expression is parsed into, before its code is emitted (expr.cpp).
+struct Node {
+    Op op;
+    std::uint8_t fn = 0;
+    std::uint16_t slot = 0;
+    double value = 0;
+    std::unique_ptr<Node> a, b, c;
+};
+using NodePtr = std::unique_ptr<Node>;
+
+inline NodePtr clone(const Node* n) {
+    if (!n) return nullptr;
+    auto c = std::make_unique<Node>();
+    c->op = n->op;
+    c->fn = n->fn;
+    c->slot = n->slot;
+    c->value = n->value;
+    c->a = clone(n->a.get());
+    c->b = clone(n->b.get());
+    c->c = clone(n->c.get());
+    return c;
+}
+
+inline NodePtr makeConst(double v) {
+    auto n = std::make_unique<Node>();
+    n->op = Op::Const;
+    n->value = v;
+    return n;
+}
 
 }  // namespace sprout::expr_detail

@@ -95,4 +95,11 @@ double Expr::run(const double* slots, Rng& rng) const {
     return st[0];
 }
 
+std::vector<std::string> builtinFunctionNames() {
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func"};
+    for (auto& f : kFunctions1) names.push_back(f.name);
+    for (auto& f : kFunctions2) names.push_back(f.name);
+    return names;
+}
+
 }  // namespace sprout

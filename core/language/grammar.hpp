@@ -157,7 +157,8 @@ struct Grammar {
     // cpfg applies them within each step only (generate.c, ApplyProd), so its step 0 is the
     // axiom as written.
     bool decomposeAxiom = true;
-    // cpfg's random numbers (Rng::cpfg): one stream through the derivation, and with a `seed:`
+    // cpfg's numbers: parameters kept in the string as floats (rounded as each is written);
+    // its random numbers (Rng::cpfg): one stream through the derivation, and with a `seed:`
     // one draw for each module of each step, choosing among its applicable productions (each
     // of probability 1 unless given), as cpfg's generate.c does.
     bool cpfgRandom = false;
@@ -236,6 +237,10 @@ struct ParseOptions {
     // A VLab object's `-e FILE.e` environment program (readEnviroFile): the grammar's
     // environment.program, which answers its ?E modules.
     std::shared_ptr<const EnvironmentProgram> environmentProgram = nullptr;
+    // A VLab object's view file's `surface: p petal.s 2` lines: the surface file of `~p`,
+    // read beside the grammar (an `.s` named as the module, or a `surface:` line in the
+    // grammar, comes first).
+    std::vector<std::pair<std::string, std::string>> surfaces;
     // cpfg's functions and contours, read from the files a VLab object's view file names
     // (core/language/vlab/): func(id, x) and its names, @#(id). Kept by the Grammar.
     std::shared_ptr<const CurveTables> curves{};

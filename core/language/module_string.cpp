@@ -22,6 +22,10 @@ void appendModule(std::string& out, const SymbolInfo& symbol, const double* para
             out += '\'';  // a quoted name, as written
             out += alphabet->strings()[size_t(v)];
             out += '\'';
+        } else if (alphabet && alphabet->floatParameters && double(float(v)) == v) {
+            char buf[32];
+            auto r = std::to_chars(buf, buf + sizeof buf, float(v));
+            out.append(buf, r.ptr);
         } else {
             appendNumber(out, v);
         }

@@ -239,6 +239,7 @@ ParseResult Parser::run() {
         m_g.cutInNextStep = true;
         m_g.decomposeAxiom = !m_options.tabContinues;  // cpfg decomposes within its steps only
         m_g.cpfgRandom = m_options.tabContinues;
+        m_g.alphabet.floatParameters = m_options.tabContinues;
         for (const SourceLine& src : m_cpfgReader.read(m_text, m_original)) {
             Line l;
             l.src = src;

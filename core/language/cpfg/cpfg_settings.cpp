@@ -55,6 +55,19 @@ void Parser::setSurface(const SourceLine& line, std::string_view text) {
 
 void Parser::loadSurfaceFiles() {
     if (!m_options.include) return;
+    for (const auto& [letter, file] : m_options.surfaces) {  // a VLab object's view file names them
+        const std::string name = "~" + letter;
+        if (m_g.surfaceFiles.count(name)) continue;
+        std::string error;
+        auto bytes = m_options.include(file, error);
+        auto surface = bytes ? parseSurfaceFile(*bytes, error) : std::nullopt;
+        if (!surface) {
+            m_sink.add({0, 0, "the view file's surface '" + file + "' cannot be read (" + error + "): '" + name +
+                                  "' is drawn as the built-in shape", Severity::Warning});
+            continue;
+        }
+        m_g.surfaceFiles[name] = std::make_shared<const SurfaceFile>(std::move(*surface));
+    }
     for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
         const std::string& name = m_g.alphabet[SymbolId(s)].name;
         if (name.size() < 2 || name[0] != '~' || m_g.surfaceFiles.count(name)) continue;

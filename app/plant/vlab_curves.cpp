@@ -1,0 +1,58 @@
+#include "app/plant/vlab_curves.hpp"
+
+#include <filesystem>
+#include <memory>
+
+#include "app/plant/vlab_view.hpp"
+#include "core/base/read_file.hpp"
+#include "core/language/vlab/curve_files.hpp"
+#include "core/language/vlab/view_file.hpp"
+
+namespace sprout {
+
+namespace fs = std::filesystem;
+
+VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options) {
+    VlabCurves out;
+    const std::optional<VlabObject> object = vlabObjectAt(lsystemPath);
+    if (!object || object->view.empty()) return out;
+    std::error_code ec;
+    if (!fs::equivalent(object->lsystem, lsystemPath, ec)) return out;
+    out.object = true;
+    const std::optional<std::string> text = readFile(object->view);
+    if (!text) return out;  // the view file's own reader says so (vlab_view.cpp)
+    const vlab::ViewFile view = vlab::readViewFile(*text);
+    const fs::path folder = fs::path(object->view).parent_path();
+    auto tables = std::make_shared<CurveTables>();
+    tables->contourSides = view.contourSides;
+    bool any = false;
+    auto note = [&](const auto& diagnostics) {
+        for (const auto& d : diagnostics) out.problems.push_back(d.text());
+    };
+    // In the view file's order, as cpfg reads it (a function set replaces the functions before).
+    for (const vlab::FileReference& f : view.files) {
+        const fs::path path = folder / f.file;
+        if (f.command == "function") {
+            FunctionRead r = loadFunction(path, f.numbers.empty() ? -1 : int(f.numbers[0]));
+            note(r.diagnostics);
+            tables->addFunction(std::move(r.function));
+            any = true;
+        } else if (f.command == "function set") {
+            FunctionSetRead r = loadFunctionSet(path);
+            note(r.diagnostics);
+            tables->setFunctionSet(std::move(r.functions));
+            any = true;
+        } else if (f.command == "contour" && !f.numbers.empty()) {
+            ContourRead r = loadContour(path);
+            note(r.diagnostics);
+            if (r.contour) tables->contours.emplace(int(f.numbers[0]), std::move(*r.contour));
+            any = true;
+        } else if (f.command == "surface" && f.id) {
+            options.surfaces.emplace_back(std::string(1, f.id), f.file);
+        }
+    }
+    if (any) options.curves = std::move(tables);
+    return out;
+}
+
+}  // namespace sprout
