@@ -47,6 +47,12 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
     m_cpfgDraw = &rules == &g.rules && g.cpfgRandom && g.settings.seedGiven;
     for (size_t i = 0; i < g.globals.size() && i < g.globalInit.size(); ++i) m_slots[kGlobalSlot + i] = g.globalInit[i];
+    if (&rules != &g.rules && !g.startBlock.empty()) {
+        // The homomorphism reads the globals as the Start: block sets them (the derivation's
+        // own rewriter keeps them from step to step; the decomposition copies them).
+        Rng rng = g.cpfgRandom ? Rng::cpfg(0) : Rng(0);
+        runStatements(g.startBlock, m_slots.data(), rng);
+    }
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
     for (const Production& p : rules.productions) {

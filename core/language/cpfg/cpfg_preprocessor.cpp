@@ -81,27 +81,104 @@ void CpfgReader::joinContinuations(std::vector<SourceLine>& lines, bool top) {
 std::vector<SourceLine> CpfgReader::preprocess(const std::vector<SourceLine>& lines, bool top, int includeLine,
                                                int depth, std::vector<std::string>& stack) {
     std::vector<SourceLine> body;
+    // #if / #ifdef / #ifndef ... #elif / #else ... #endif, as the C preprocessor cpfg runs:
+    // per open #if, whether its lines are read now and whether a branch was taken already.
+    struct Conditional { bool reading, taken, outer; };
+    std::vector<Conditional> open;
+    auto reading = [&] { return open.empty() || open.back().reading; };
     for (const auto& src : lines) {
         std::string_view t = trim(src.text);
+        std::string_view word = t.starts_with("#") ? t.substr(0, t.find_first_of(" \t\"<(")) : std::string_view();
+        std::string_view rest = trim(t.substr(word.size()));
+        if (word == "#if" || word == "#ifdef" || word == "#ifndef") {
+            const bool outer = reading();
+            const bool holds = outer && condition(src, word, rest);
+            open.push_back({outer && holds, holds, outer});
+            continue;
+        }
+        if (word == "#elif" || word == "#else" || word == "#endif") {
+            if (open.empty()) {
+                m_parser.sink().error(src, word, "'" + std::string(word) + "' without an '#if' before it");
+                continue;
+            }
+            Conditional& c = open.back();
+            if (word == "#endif") {
+                open.pop_back();
+            } else {
+                const bool holds = c.outer && !c.taken && (word == "#else" || condition(src, "#if", rest));
+                c.reading = holds;
+                c.taken = c.taken || holds;
+            }
+            continue;
+        }
+        if (!reading()) continue;
         if (!t.starts_with("#")) {
             body.push_back(src);
             continue;
         }
-        std::string_view word = t.substr(0, t.find_first_of(" \t\"<"));
-        std::string_view rest = trim(t.substr(word.size()));
+        if (word == "#undef") {
+            const std::string name(rest.substr(0, rest.find_first_of(" \t")));
+            m_parser.grammar().defines.erase(name);
+            m_macros.erase(name);
+            std::erase_if(m_textMacros, [&](const auto& m) { return m.first == name; });
+            continue;
+        }
         if (word == "#define") {
             readDefine(src, rest, top);
         } else if (word == "#include") {
             readInclude(src, t, rest, top, includeLine, depth, stack, body);
         } else if (word == "#ignore") {
             body.push_back(src);  // read by the `ignore` directive below
-        } else if (word == "#ifdef" || word == "#ifndef" || word == "#if" || word == "#else" || word == "#endif" ||
-                   word == "#undef" || word == "#elif") {
-            m_parser.sink().warning(src, word, "'" + std::string(word) + "' is not supported: every line is read");
         }
         // Any other '#' line is a comment (L-Py files use Python's '#').
     }
+    if (!open.empty()) m_parser.sink().error(lines.back(), lines.back().text, "an '#if' is never closed with '#endif'");
     return body;
+}
+
+// Whether an #if's, #ifdef's or #ifndef's condition holds: a name defined, or an expression
+// of the defined numbers that is not 0 (`defined(NAME)` too; an unknown name is 0, as in C).
+bool CpfgReader::condition(const SourceLine& line, std::string_view word, std::string_view rest) {
+    auto defined = [&](std::string_view name) {
+        const std::string n(trim(name));
+        return m_parser.grammar().defines.count(n) > 0 || m_macros.count(n) > 0 ||
+               std::any_of(m_textMacros.begin(), m_textMacros.end(), [&](const auto& m) { return m.first == n; });
+    };
+    if (word == "#ifdef") return defined(rest);
+    if (word == "#ifndef") return !defined(rest);
+    std::string text;  // defined(X) and unknown names made numbers
+    for (size_t i = 0; i < rest.size();) {
+        if (std::isalpha(static_cast<unsigned char>(rest[i])) || rest[i] == '_') {
+            size_t j = i;
+            while (j < rest.size() && isIdentChar(rest[j])) ++j;
+            std::string_view name = rest.substr(i, j - i);
+            if (name == "defined") {
+                size_t k = j;
+                while (k < rest.size() && (rest[k] == ' ' || rest[k] == '(')) ++k;
+                size_t e = k;
+                while (e < rest.size() && isIdentChar(rest[e])) ++e;
+                text += defined(rest.substr(k, e - k)) ? "1" : "0";
+                while (e < rest.size() && (rest[e] == ' ' || rest[e] == ')')) ++e;
+                i = e;
+                continue;
+            }
+            text += defined(name) || (j < rest.size() && rest[j] == '(') ? std::string(name) : "0";
+            i = j;
+            continue;
+        }
+        text += rest[i++];
+    }
+    SourceLine scratchLine = line;
+    scratchLine.text = text;
+    scratchLine.original = text;
+    DiagnosticSink scratch;
+    ExprScope scope{nullptr, &m_parser.grammar().defines, &m_macros};
+    auto e = compileExpr(text, scratchLine, scope, scratch);
+    if (!e || !e->isConstant()) {
+        m_parser.sink().warning(line, rest, "this '#if' is not a condition of defined numbers: read as false");
+        return false;
+    }
+    return e->constantValue() != 0;
 }
 
 // `#define NAME value`, `#define NAME(a, b) body` or `#define FLAG` (`rest` follows the word).

@@ -87,8 +87,11 @@ void Parser::loadSurfaceFiles() {
 void Parser::setMaximumDepth(const SourceLine& line, std::string_view text) {
     auto v = constant(line, text);
     if (!v) return;
-    if (*v != std::floor(*v) || *v < 1 || *v > 1000) {
-        m_sink.error(line, text, "maximum depth must be a whole number from 1 to 1000");
+    // cpfg takes the expression's whole part (lsys_input.y: (int) Eval); homomorphisms of
+    // thousands of levels (a leaf drawn segment by segment) are cpfg's own examples.
+    if (m_options.tabContinues && *v >= 1) v = std::floor(*v);
+    if (*v != std::floor(*v) || *v < 1 || *v > 100000) {
+        m_sink.error(line, text, "maximum depth must be a whole number from 1 to 100000");
         return;
     }
     if (m_depthSection == Section::Interpretation) m_g.interpretationDepth = int(*v);
