@@ -86,10 +86,13 @@ Derivation::Derivation(std::shared_ptr<const Grammar> grammar, DeriveOptions opt
     else m_rewriter = std::make_unique<StepRewriter>(*m_grammar, m_grammar->rules);
     if (!m_grammar->decomposition.productions.empty())
         m_decomposer = std::make_unique<StepRewriter>(*m_grammar, m_grammar->decomposition);
-    if (m_grammar->cpfgRandom)
+    if (m_grammar->cpfgRandom) {
         // cpfg's derivation as `cpfg -g` writes it leaves drand48 unseeded whatever the
-        // `seed:` (only its window's first run calls seed48): Sprout's --seed gives others.
-        m_cpfgRng = Rng::cpfg(std::int64_t(m_options.seed ? *m_options.seed : 0));
+        // `seed:` (only its window's first run calls seed48): a seed other than the grammar's
+        // own (--seed, the viewer's reseed) gives other plants; the grammar's own gives cpfg's.
+        const bool other = m_options.seed && *m_options.seed != m_grammar->settings.seed;
+        m_cpfgRng = Rng::cpfg(other ? std::int64_t(*m_options.seed) : 0);
+    }
     if (m_rewriter && !m_grammar->startBlock.empty()) {  // cpfg's Start: block, before the axiom is decomposed
         Rng rng = Rng::forStream(m_seed, 0);
         runStatements(m_grammar->startBlock, m_rewriter->slots(), m_cpfgRng ? *m_cpfgRng : rng);

@@ -3,6 +3,7 @@
 
 #include <map>
 
+#include "core/language/file_kind.hpp"
 #include "test_util.hpp"
 
 namespace sprout::test {
@@ -92,4 +93,20 @@ TEST(Stochastic, CpfgRandomNumbersAreDrand48s) {
     fresh.exprSeed(0);
     Rng again = Rng::cpfg(0);
     EXPECT_DOUBLE_EQ(again.exprUniform(), fresh.exprUniform());
+}
+
+// A cpfg L-system derives cpfg's string whether the caller passes no seed or the grammar's own
+// (the viewer always passes one); another seed gives another plant.
+TEST(Stochastic, CpfgSeedOfItsOwnGivesCpfgsString) {
+    using namespace sprout;
+    ParseResult r = parse("Lsystem: 1\nseed: 5\nderivation length: 4\nAxiom: F\nF --> F[+F]F : 1\nF --> F[-F]F : 1\n"
+                          "F --> FF : 1\nendlsystem\n", parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    auto stringWith = [&](std::optional<std::uint64_t> seed) {
+        DeriveOptions o;
+        o.seed = seed;
+        return toString(*derive(r.grammar, 4, o).string, r.grammar->alphabet);
+    };
+    EXPECT_EQ(stringWith(std::nullopt), stringWith(5));
+    EXPECT_NE(stringWith(std::nullopt), stringWith(99));
 }
