@@ -230,7 +230,9 @@ void CpfgReader::readDefine(const SourceLine& src, std::string_view rest, bool t
     DiagnosticSink scratch;
     Grammar& g = m_parser.grammar();
     ExprScope scope{nullptr, &g.defines, &m_macros};
-    if (compileExpr(value, src, scope, scratch)) {
+    // A random value (`#define ANGLE nran(80, 4)`) is text too: each use draws its own, as
+    // the C preprocessor puts the call in place.
+    if (auto e = compileExpr(value, src, scope, scratch); e && !e->usesRandom()) {
         m_parser.define(src, rest);
         // A slider writes its value back into the text it edits: only the grammar's
         // own defines get one, not those of an included file.
