@@ -149,6 +149,7 @@ public:
     void readGlobalBlock(const SourceLine& line, const std::string& key, std::string_view body);
     // `array a[3], b[2][4] = {...}` in cpfg's `define:` block: global arrays.
     void defineArrays(const SourceLine& line, std::string_view statement);
+    void atModules(RuleSet& rules);  // cpfg's `@` and the letter after it (parser_run.cpp)
     bool cpfg() const { return m_cpfg; }
 
     enum class Section { Productions, Interpretation, Decomposition };

@@ -228,6 +228,28 @@ void Parser::checkEnvironmentQuery() {
     }
 }
 
+// cpfg reads `@o(r)` as two modules, `@` and `o(r)`, so a production for `o` rewrites the `o`
+// after an `@` too; Sprout's `@o` is one module. Where a production for a letter X (no context,
+// one module) begins its successor with X again (`o(r) --> o(r+0.03)`), the same production is
+// added for `@X`, its successor beginning with `@X`: the string cpfg derives.
+void Parser::atModules(RuleSet& rules) {
+    const size_t count = rules.productions.size();
+    for (size_t k = 0; k < count; ++k) {
+        const Production& p = rules.productions[k];
+        const SymbolInfo& pred = m_g.alphabet[p.pred.symbol];
+        if (pred.name.size() != 1 || p.hasContext() || p.successor.symbols.empty() ||
+            p.successor.symbols.front() != p.pred.symbol)
+            continue;
+        const auto at = m_g.alphabet.find("@" + pred.name, pred.arity);
+        if (!at) continue;
+        Production copy = p;
+        copy.pred.symbol = *at;
+        copy.pred.name = m_g.alphabet[*at].nameId;
+        copy.successor.symbols.front() = *at;
+        rules.productions.push_back(std::move(copy));
+    }
+}
+
 ParseResult Parser::run() {
     std::vector<std::pair<size_t, std::string>> replaced;
     // Old Mac line ends (a lone CR) end a line too.
@@ -281,6 +303,7 @@ ParseResult Parser::run() {
     if (!m_axiomSet && m_sink.errorCount() == 0)
         m_sink.add({1, 1, "the grammar has no axiom: add a line such as 'axiom: F'", Severity::Error});
 
+    if (m_options.tabContinues) atModules(m_g.rules);
     m_g.rules.index(m_g.alphabet.size());
     m_g.interpretation.index(m_g.alphabet.size());
     m_g.decomposition.index(m_g.alphabet.size());
