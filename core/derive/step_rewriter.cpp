@@ -46,6 +46,8 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
     if (!g.globals.empty()) slots = kGlobalSlot + g.globals.size();  // cpfg's global variables after the locals
     m_slots.assign(std::max<size_t>(slots, 1), 0.0);
     m_cpfgDraw = &rules == &g.rules && g.cpfgRandom && g.settings.seedGiven;
+    if (g.cpfgRandom)
+        if (auto eq = g.alphabet.find("=", 0)) m_skipToBranchEnd = *eq;
     for (size_t i = 0; i < g.globals.size() && i < g.globalInit.size(); ++i) m_slots[kGlobalSlot + i] = g.globalInit[i];
     if (&rules != &g.rules && !g.startBlock.empty()) {
         // The homomorphism reads the globals as the Start: block sets them (the derivation's
@@ -202,6 +204,11 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             ++j;
     };
     for (const PatternModule& pm : p.right) {
+        if (!pm.wildcard && pm.symbol == m_skipToBranchEnd) {  // cpfg's `=`: on to this branch's end
+            while (j < N && sym[j] != Alphabet::kPop)
+                j = sym[j] == Alphabet::kPush && m_match[j] != kUnmatched ? m_match[j] + 1 : j + 1;
+            continue;
+        }
         if (!pm.wildcard && pm.symbol == Alphabet::kPush) {
             skipIgnored();
             if (j >= N || sym[j] != Alphabet::kPush) return false;

@@ -81,6 +81,8 @@ private:
     // cpfg's stochastic L-system (a `seed:`): one draw for every module, the production chosen
     // among all those that apply (selectCpfg).
     bool m_cpfgDraw = false;
+    // cpfg's `=` in a right context (generate.c, RconDiff): skip to the end of the branch.
+    SymbolId m_skipToBranchEnd = SymbolId(-1);
 
     // Scratch for the current step.
     const ModuleString* m_in = nullptr;
