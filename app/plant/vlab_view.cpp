@@ -147,6 +147,9 @@ VlabSummary summarizeVlabObject(const VlabObject& object) {
     std::sort(out.files.begin(), out.files.end());
     for (const Diagnostic& d : object.diagnostics) out.notes.push_back(formatDiagnostic(d, object.specifications));
     for (std::string& n : readVlabPicture(object).notes) out.notes.push_back(std::move(n));
+    out.panels = vlabPanelsOf(folder.string(), fs::path(object.lsystem).filename().string());
+    for (const VlabPanel& p : out.panels)
+        for (const std::string& n : p.problems) out.notes.push_back(n);
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/plant/vlab_object.hpp"
+#include "app/plant/vlab_panel.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/vlab/animation_file.hpp"
 #include "core/language/vlab/view_file.hpp"
@@ -42,6 +43,7 @@ struct VlabSummary {
     std::string folder, description;
     std::vector<std::string> files;
     std::vector<std::string> notes;
+    std::vector<VlabPanel> panels;  // its L-system's control panels (vlab_panel.hpp)
 };
 VlabSummary summarizeVlabObject(const VlabObject& object);
 

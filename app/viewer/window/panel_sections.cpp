@@ -150,6 +150,30 @@ void vlabSection(App& app, const VlabSummary& object) {
     ImGui::SameLine();
     ImGui::TextWrapped("%s", files.c_str());
     for (const auto& n : object.notes) ImGui::TextColored(kWarning, "%s", n.c_str());
+    // Its control panels: each slider or button rewrites its #define, as VLab's panel does.
+    auto plant = app.state.plant();
+    if (!plant || !plant->grammar) return;
+    for (const VlabPanel& panel : object.panels) {
+        ImGui::Separator();
+        ImGui::TextUnformatted(panel.name.empty() ? "panel" : panel.name.c_str());
+        for (const VlabPanelItem& item : panel.items) {
+            auto it = plant->grammar->defines.find(item.define);
+            if (it == plant->grammar->defines.end()) continue;  // not a number the grammar defines
+            const std::string id = item.label + "##" + item.define + (item.slider ? "" : std::to_string(item.value));
+            if (item.slider) {
+                float f = toFloat(it->second);
+                const bool whole = item.divisor == 1 && item.min == std::floor(item.min) && item.max == std::floor(item.max);
+                if (whole) {
+                    int v = int(std::lround(it->second));
+                    if (ImGui::SliderInt(id.c_str(), &v, int(item.min), int(item.max))) app.state.setDefineValue(item.define, float(v));
+                } else if (ImGui::SliderFloat(id.c_str(), &f, float(item.min), float(item.max), "%.3g")) {
+                    app.state.setDefineValue(item.define, f);
+                }
+            } else if (ImGui::RadioButton(id.c_str(), it->second == item.value)) {
+                app.state.setDefineValue(item.define, float(item.value));
+            }
+        }
+    }
 }
 
 void growthSection(App& app) {
