@@ -14,6 +14,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <type_traits>
 
 namespace sprout::vlab {
 
@@ -100,7 +101,13 @@ struct Command {
     bool one(T& into, const char* what = "a number") const {
         auto n = values.number();
         if (!n) return expected(what), false;
-        into = T(*n);
+        if constexpr (std::is_integral_v<T>) {
+            // A whole number from the file: far out of range is the nearest end, never UB.
+            if (!std::isfinite(*n)) return expected(what), false;
+            into = T(std::clamp(*n, -1e9, 1e9));
+        } else {
+            into = T(*n);
+        }
         return true;
     }
     bool three(Vec3& into) const {
@@ -139,10 +146,10 @@ bool turtleCommand(const Command& c) {
     } else if (n == "initial color:") {
         int k = 0;
         if (c.one(k, "a colour index")) o.initialColour = k;
-        if (auto b = c.values.number()) o.initialColourBack = int(*b);
+        if (auto b = c.values.number(); b && std::isfinite(*b)) o.initialColourBack = int(std::clamp(*b, -1e9, 1e9));
     } else if (n == "color increment:") {
         c.one(o.colourIncrement, "a colour index step");
-        if (auto b = c.values.number()) o.colourIncrementBack = int(*b);
+        if (auto b = c.values.number(); b && std::isfinite(*b)) o.colourIncrementBack = int(std::clamp(*b, -1e9, 1e9));
     } else if (n == "initial line width:") {
         double w = 0;
         if (!c.one(w, "a width, then optionally 'pixels' or 'polygons'")) return true;
