@@ -37,7 +37,8 @@ double betaSample(double a, double b, Rng& rng) {
 // cpfg's biran(n, p): the number of n coins that fall below p.
 double binomialSample(double n, double p, Rng& rng) {
     int count = 0;
-    const int trials = int(std::clamp(n, 0.0, 1e6));
+    if (!(n > 0)) return 0;  // also NaN
+    const int trials = int(std::min(n, 1e6));
     for (int i = 0; i < trials; ++i) count += rng.exprUniform() <= p;
     return count;
 }
@@ -83,7 +84,10 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
             case Op::Func: --sp; st[sp - 1] = m_curves->func(st[sp - 1], st[sp]); break;
             case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
-            case Op::Srand: rng.exprSeed(std::int64_t(st[sp - 1])); st[sp - 1] = 0; break;
+            case Op::Srand:  // cpfg casts to a long: out of range or NaN is 0 here, never UB
+                rng.exprSeed(std::fabs(st[sp - 1]) < 9e18 ? std::int64_t(st[sp - 1]) : 0);
+                st[sp - 1] = 0;
+                break;
             case Op::Select: sp -= 2; st[sp - 1] = st[sp - 1] != 0 ? st[sp] : st[sp + 1]; break;
             case Op::Add: --sp; st[sp - 1] += st[sp]; break;
             case Op::Sub: --sp; st[sp - 1] -= st[sp]; break;

@@ -162,7 +162,8 @@ void vlabSection(App& app, const VlabSummary& object) {
             const std::string id = item.label + "##" + item.define + (item.slider ? "" : std::to_string(item.value));
             if (item.slider) {
                 float f = toFloat(it->second);
-                const bool whole = item.divisor == 1 && item.min == std::floor(item.min) && item.max == std::floor(item.max);
+                const bool whole = item.divisor == 1 && item.min == std::floor(item.min) && item.max == std::floor(item.max) &&
+                                   std::fabs(item.min) < 1e9 && std::fabs(item.max) < 1e9;
                 if (whole) {
                     int v = int(std::lround(it->second));
                     if (ImGui::SliderInt(id.c_str(), &v, int(item.min), int(item.max))) app.state.setDefineValue(item.define, float(v));

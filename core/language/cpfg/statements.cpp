@@ -276,7 +276,7 @@ void Parser::defineArrays(const SourceLine& line, std::string_view text) {
         a.name = std::string(def.substr(0, k));
         if (a.name.empty() || !identStart(a.name[0]))
             return m_sink.error(line, def, "expected an array's name and size, as in 'array a[10]'");
-        int size = 1;
+        std::int64_t size = 1;
         for (k = skipSpaces(def, k); k < def.size() && def[k] == '[';) {
             const size_t close = matching(def, k);
             if (close == std::string_view::npos) return m_sink.error(line, def.substr(k), "this '[' is never closed with ']'");
@@ -284,7 +284,8 @@ void Parser::defineArrays(const SourceLine& line, std::string_view text) {
             if (!n) return;
             if (!(*n >= 1 && *n <= 65536)) return m_sink.error(line, def.substr(k), "an array's size must be a whole number from 1 to 65536");
             a.dims.push_back(int(*n));
-            size *= int(*n);
+            size *= std::int64_t(*n);
+            if (size > 65536) return m_sink.error(line, def, "the arrays are too big: at most 65000 elements in all");
             k = skipSpaces(def, close + 1);
         }
         if (a.dims.empty()) return m_sink.error(line, def, "expected the size of '" + a.name + "' in brackets, as in '" + a.name + "[10]'");
