@@ -38,14 +38,10 @@ double fromText(float v) {
     return std::strtod(buf, nullptr) + 0.0;
 }
 
-// A cpfg environment program (`-e`): every ?E of every plant, in the turtle's order, is sent
-// with the turtle where it stands, then the answers are set (libs/comm's semantics: only the
-// parameters the program sets; no more than the ?E has).
-template <class Pass, class ToWorld>
-void answerByProgram(const EnvironmentProgram& program, ProgramRun& run, std::vector<QueryTarget>& targets,
-                     std::vector<Pass>& passes, ToWorld toWorld) {
-    std::vector<ProgramQuery> queries;
-    std::vector<std::pair<double*, unsigned>> where;
+// Each ?E of every plant whose pass is answerable, in the turtle's order: `fn(plant, its
+// frame, its parameters, their count)`; the other query modules use up their frames.
+template <class Pass, class Fn>
+void forEachE(std::vector<QueryTarget>& targets, std::vector<Pass>& passes, Fn fn) {
     for (size_t t = 0; t < targets.size(); ++t) {
         if (!passes[t].answerable) continue;
         ModuleString& s = *targets[t].string;
@@ -56,22 +52,33 @@ void answerByProgram(const EnvironmentProgram& program, ProgramRun& run, std::ve
             const unsigned a = alphabet[id].arity;
             if (passes[t].kind[id]) {
                 const QueryFrame& f = passes[t].frames[q++];
-                if (passes[t].kind[id] == 'E') {
-                    ProgramQuery query;
-                    for (unsigned k = 0; k < a; ++k) query.params.push_back(throughText(s.params[pp + k]));
-                    const glm::dvec3 p = toWorld(targets[t], f.position);
-                    const glm::dvec3 h = turnBy(glm::dvec3(f.heading), targets[t].yaw), l = turnBy(glm::dvec3(f.left), targets[t].yaw),
-                                     u = turnBy(glm::dvec3(f.up), targets[t].yaw);
-                    const float pf[3] = {float(p.x), float(p.y), float(p.z)}, hf[3] = {float(h.x), float(h.y), float(h.z)},
-                                lf[3] = {float(l.x), float(l.y), float(l.z)}, uf[3] = {float(u.x), float(u.y), float(u.z)};
-                    program.receive(pf, hf, lf, uf, query);
-                    queries.push_back(std::move(query));
-                    where.push_back({s.params.data() + pp, a});
-                }
+                if (passes[t].kind[id] == 'E') fn(t, f, s.params.data() + pp, a);
             }
             pp += a;
         }
     }
+}
+
+// A cpfg environment program (`-e`): every ?E of every plant, in the turtle's order, is sent
+// with the turtle where it stands, then the answers are set (libs/comm's semantics: only the
+// parameters the program sets; no more than the ?E has).
+template <class Pass, class ToWorld>
+void answerByProgram(const EnvironmentProgram& program, ProgramRun& run, std::vector<QueryTarget>& targets,
+                     std::vector<Pass>& passes, ToWorld toWorld) {
+    std::vector<ProgramQuery> queries;
+    std::vector<std::pair<double*, unsigned>> where;
+    forEachE(targets, passes, [&](size_t t, const QueryFrame& f, double* params, unsigned a) {
+        ProgramQuery query;
+        for (unsigned k = 0; k < a; ++k) query.params.push_back(throughText(params[k]));
+        const glm::dvec3 p = toWorld(targets[t], f.position);
+        const glm::dvec3 h = turnBy(glm::dvec3(f.heading), targets[t].yaw), l = turnBy(glm::dvec3(f.left), targets[t].yaw),
+                         u = turnBy(glm::dvec3(f.up), targets[t].yaw);
+        const float pf[3] = {float(p.x), float(p.y), float(p.z)}, hf[3] = {float(h.x), float(h.y), float(h.z)},
+                    lf[3] = {float(l.x), float(l.y), float(l.z)}, uf[3] = {float(u.x), float(u.y), float(u.z)};
+        program.receive(pf, hf, lf, uf, query);
+        queries.push_back(std::move(query));
+        where.push_back({params, a});
+    });
     if (program.sendsQueries) run.pass(queries);
     for (size_t k = 0; k < queries.size(); ++k) {
         const ProgramQuery& q = queries[k];
@@ -145,26 +152,12 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
         std::vector<double*> params;
         std::vector<int> arities;
         std::vector<size_t> owner;
-        for (size_t t = 0; t < targets.size(); ++t) {
-            if (!passes[t].answerable) continue;
-            ModuleString& s = *targets[t].string;
-            const Alphabet& alphabet = targets[t].grammar->alphabet;
-            size_t q = 0, pp = 0;
-            for (size_t i = 0; i < s.size(); ++i) {
-                const SymbolId id = s.symbols[i];
-                const unsigned a = alphabet[id].arity;
-                if (passes[t].kind[id]) {
-                    const QueryFrame& f = passes[t].frames[q++];
-                    if (passes[t].kind[id] == 'E') {
-                        buds.push_back(toWorld(targets[t], f.position));
-                        params.push_back(s.params.data() + pp);  // a ?E without parameters: none there
-                        arities.push_back(int(a));
-                        owner.push_back(t);
-                    }
-                }
-                pp += a;
-            }
-        }
+        forEachE(targets, passes, [&](size_t t, const QueryFrame& f, double* p, unsigned a) {
+            buds.push_back(toWorld(targets[t], f.position));
+            params.push_back(p);  // a ?E without parameters: none there
+            arities.push_back(int(a));
+            owner.push_back(t);
+        });
         answerAttraction(env, buds, freePoints(env, *grown, envSeed), params, arities);
         for (size_t b = 0; b < buds.size(); ++b) directionBack(targets[owner[b]], params[b], std::min(arities[b], 3));
     }

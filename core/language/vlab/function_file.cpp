@@ -155,6 +155,24 @@ bool readPoints(LineReader& in, long count, bool withMultiplicity, std::vector<s
     return true;
 }
 
+// `points: N` and the points after it: at least 4 (cpfg's minimum), also once multiplicities
+// are counted; false after saying why.
+bool readFunctionPoints(LineReader& in, bool withMultiplicity, std::vector<std::array<double, 2>>& points) {
+    const int pointsLine = in.lineNo();
+    std::optional<long> count = in.keyedInt("points:", 0, kMaxPoints, "COUNT");
+    if (!count) return false;
+    if (*count < 4) {
+        in.error(pointsLine, 1, "a function needs at least 4 points (cpfg: 'not enough points specified')");
+        return false;
+    }
+    if (!readPoints(in, *count, withMultiplicity, points)) return false;
+    if (points.size() < 4) {
+        in.error(pointsLine, 1, "a function needs at least 4 points once multiplicities are counted");
+        return false;
+    }
+    return true;
+}
+
 // `fver 1 1` after its first line: name:, samples:, [background: + backgroundXY:],
 // [markers: n + n lines], flip:, points: n, the points.
 std::optional<CurveFunction> readFver(LineReader& in, const std::string& stem) {
@@ -179,19 +197,8 @@ std::optional<CurveFunction> readFver(LineReader& in, const std::string& stem) {
     }
     in.skipBlank();
     if (in.peek().substr(0, 5) == "flip:") in.advance();  // the editor's view: cpfg ignores it
-    const int pointsLine = in.lineNo();
-    std::optional<long> count = in.keyedInt("points:", 0, kMaxPoints, "COUNT");
-    if (!count) return std::nullopt;
-    if (*count < 4) {
-        in.error(pointsLine, 1, "a function needs at least 4 points (cpfg: 'not enough points specified')");
-        return std::nullopt;
-    }
     std::vector<std::array<double, 2>> points;
-    if (!readPoints(in, *count, true, points)) return std::nullopt;
-    if (points.size() < 4) {
-        in.error(pointsLine, 1, "a function needs at least 4 points once multiplicities are counted");
-        return std::nullopt;
-    }
+    if (!readFunctionPoints(in, true, points)) return std::nullopt;
     return CurveFunction(fname, std::move(points), int(*samples));
 }
 
@@ -215,15 +222,8 @@ std::optional<CurveFunction> readOne(LineReader& in, const std::string& stem, in
             in.error(line, w.size() > 1 ? w[1].col : 1, "expected 'range: LOW HIGH' (two numbers)");
             return std::nullopt;
         }
-        const int pointsLine = in.lineNo();
-        std::optional<long> count = in.keyedInt("points:", 0, kMaxPoints, "COUNT");
-        if (!count) return std::nullopt;
-        if (*count < 4) {
-            in.error(pointsLine, 1, "a function needs at least 4 points (cpfg: 'not enough points specified')");
-            return std::nullopt;
-        }
         std::vector<std::array<double, 2>> points;
-        if (!readPoints(in, *count, false, points)) return std::nullopt;
+        if (!readFunctionPoints(in, false, points)) return std::nullopt;
         if (samples > kMaxSamples)
             in.error(line, 1, "the view file's " + std::to_string(samples) + " samples are more than 10000: the curve is "
                               "evaluated without a table", true);
