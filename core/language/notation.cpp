@@ -195,7 +195,7 @@ void replacePastedCharacters(std::string& text, std::vector<std::pair<size_t, st
         for (std::uint8_t c : candidates) {
             const PastedSub& s = kPastedSubs[c];
             if ((s.lsysOnly && cpfg) || text.compare(at, std::strlen(s.from), s.from) != 0) continue;
-            if (s.from[0] == '=' && at > 0 && std::strchr("=<>!", text[at - 1])) continue;  // "==>"? leave comparisons alone
+            if (s.from[0] == '=' && at > 0 && text[at - 1] != '\0' && std::strchr("=<>!", text[at - 1])) continue;  // "==>"? leave comparisons alone
             hit = &s;
             k = c;
             break;
@@ -298,7 +298,7 @@ size_t assignment(std::string_view t) {
         if (c == '(' || c == '{' || c == '[') ++depth;
         else if (c == ')' || c == '}' || c == ']') depth = std::max(0, depth - 1);
         else if (c == '=' && depth == 0) {
-            const bool before = i > 0 && std::strchr("=<>!", t[i - 1]) != nullptr;
+            const bool before = i > 0 && t[i - 1] != '\0' && std::strchr("=<>!", t[i - 1]) != nullptr;
             const bool after = i + 1 < t.size() && (t[i + 1] == '=' || t[i + 1] == '>');
             if (!before && !after) return i;
         }

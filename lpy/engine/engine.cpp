@@ -347,7 +347,7 @@ void Engine::endEach(LString& s) {
 }
 
 bool Engine::isQuery(const std::string& name) {
-    return name.size() == 2 && name[0] == '?' && std::strchr("PHULRF", name[1]) != nullptr;
+    return name.size() == 2 && name[0] == '?' && name[1] != '\0' && std::strchr("PHULRF", name[1]) != nullptr;
 }
 
 bool Engine::interprets() const {

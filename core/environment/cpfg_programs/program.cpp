@@ -23,7 +23,8 @@ bool formatTurtleValues(const std::string& format, const float* values, int n, s
         }
         // %[flags][width][.precision][l|L]conversion
         size_t j = i + 1;
-        while (j < format.size() && std::strchr("-+ #0", format[j])) ++j;
+        // (strchr finds the terminator too: a NUL in the format is no flag and no conversion)
+        while (j < format.size() && format[j] != '\0' && std::strchr("-+ #0", format[j])) ++j;
         int width = 0, precision = 0;
         while (j < format.size() && format[j] >= '0' && format[j] <= '9') width = std::min(width * 10 + (format[j++] - '0'), 1000);
         if (j < format.size() && format[j] == '.') {
@@ -32,7 +33,7 @@ bool formatTurtleValues(const std::string& format, const float* values, int n, s
         }
         std::string spec = format.substr(i, j - i);
         while (j < format.size() && (format[j] == 'l' || format[j] == 'L')) ++j;
-        if (j >= format.size() || !std::strchr("eEfFgG", format[j])) {
+        if (j >= format.size() || format[j] == '\0' || !std::strchr("eEfFgG", format[j])) {
             if (error)
                 *error = "expected a number's conversion (%f, %g or %e, with a width and a precision if any) at '" +
                          format.substr(i, std::min<size_t>(j + 1, format.size()) - i) + "'";

@@ -57,7 +57,7 @@ struct Translator {
             std::string param;
             // Text copied from documents sometimes lost the '(' of a parameter: `".7)` for
             // `"(.7)`. A number closed by ')' right after a command is read as its parameter.
-            if (i + 1 < s.size() && s[i + 1] != '(' && std::strchr("\"';:?!~t+-&^<>c", c)) {
+            if (i + 1 < s.size() && s[i + 1] != '(' && c != '\0' && std::strchr("\"';:?!~t+-&^<>c", c)) {
                 size_t j = i + 1;
                 while (j < s.size() && (std::isdigit(static_cast<unsigned char>(s[j])) || s[j] == '.' || s[j] == '-')) ++j;
                 if (j > i + 1 && j < s.size() && s[j] == ')') {
