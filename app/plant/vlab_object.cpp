@@ -51,14 +51,6 @@ int argumentsOf(const std::string& option) {
     }
 }
 
-// What an option of the picture or the derivation does in cpfg, for the warning that says it is
-// not read yet; empty for the options that concern cpfg's own window and files only.
-std::string notReadYet(const std::string& option) {
-    const std::string name = option.substr(1);
-    if (name == "a") return "starting in animation";
-    return {};
-}
-
 // What the options that concern the picture say (vlab_view.cpp applies them): material sets,
 // colour maps, the reference set, the window's size. False, with a warning, for a set number
 // cpfg ignores or a size that is no number.
@@ -89,9 +81,6 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
     auto error = [&](int line, int col, std::string message) {
         out.diagnostics.push_back({line, col, std::move(message), Severity::Error});
     };
-    auto warning = [&](int line, int col, std::string message) {
-        out.diagnostics.push_back({line, col, std::move(message), Severity::Warning});
-    };
     std::istringstream in(readFile(specifications).value_or(""));
     std::string text;
     for (int number = 1; std::getline(in, text); ++number) {
@@ -113,10 +102,7 @@ std::optional<VlabObject> readVlabObject(const std::string& folder) {
                 }
                 recordPictureOption(out, folder, w, {words.begin() + long(k) + 1, words.begin() + long(k) + 1 + n}, number);
                 if (w.text == "-e") out.environment = (fs::path(folder) / words[k + 1].text).string();  // vlab_environment.hpp
-                std::string what = notReadYet(w.text);
-                std::string given = w.text;
-                for (int a = 0; a < n; ++a) given += " " + words[k + 1 + size_t(a)].text;
-                if (!what.empty()) warning(number, w.col, "'" + given + "' (" + what + ") is not read yet");
+                if (w.text == "-a") out.animate = true;  // the viewer opens playing the animation file's frames
                 k += size_t(n);
             } else if (positional < 3) {
                 *files[positional++] = (fs::path(folder) / w.text).string();

@@ -4,8 +4,9 @@
 // That line is read as cpfg reads its arguments (VLab's cpfg/control.c: its options, each with
 // the arguments it takes, then the L-system, the view file and the animation file), so that the
 // object opens with the L-system it runs. Its view file, animation file, material sets, colour
-// maps and window size are applied to the plant and its picture (vlab_view.hpp); what is not
-// read yet (the environment, starting in animation) is a warning naming it.
+// maps and window size are applied to the plant and its picture (vlab_view.hpp); `-a` opens the
+// viewer playing the animation file's frames; options of cpfg's own window and files are read
+// for their arguments and left alone.
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct VlabObject {
     std::vector<ColourFile> colourFiles;
     int referenceSet = 1;      // -cN: `;(k)` is colour index 256 N + k
     int width = 0, height = 0; // -w W H: the window's size
+    bool animate = false;               // -a: cpfg starts in animation mode (the viewer opens playing)
     std::string environment;            // `-e FILE.e`: the environment file's path (vlab_environment.hpp reads it)
     // At the cpfg line's options: errors (no cpfg line, an option cpfg does not know, no
     // L-system) and warnings (what is not read yet).

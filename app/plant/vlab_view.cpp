@@ -141,6 +141,7 @@ VlabSummary summarizeVlabObject(const VlabObject& object) {
     const fs::path folder = fs::path(object.specifications).parent_path();
     out.folder = folder.string();
     out.description = readFile(folder / "description.txt").value_or("");
+    out.animate = object.animate;
     std::error_code ec;
     for (const auto& e : fs::directory_iterator(folder, ec))
         if (e.is_regular_file(ec)) out.files.push_back(e.path().filename().string());

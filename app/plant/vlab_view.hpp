@@ -44,6 +44,7 @@ struct VlabSummary {
     std::vector<std::string> files;
     std::vector<std::string> notes;
     std::vector<VlabPanel> panels;  // its L-system's control panels (vlab_panel.hpp)
+    bool animate = false;           // cpfg's -a: the viewer opens playing
 };
 VlabSummary summarizeVlabObject(const VlabObject& object);
 

@@ -31,6 +31,17 @@ glm::dvec3 turnBy(const glm::dvec3& v, double yaw) {
     return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
 }
 
+// A float turtle's value to the digits it holds (7 significant), so that its last bits do not
+// show as 2.9999998; below 5e-7 it is 0 (a unit vector's rounding noise). Rounding to a fixed
+// 1e-5 instead lost digits that cpfg's double turtle keeps: a ?H's y of 0.53 read 1e-5 apart.
+double turtleDigits(float v) {
+    const double d = v;
+    if (!std::isfinite(d)) return d;
+    if (std::fabs(d) < 5e-7) return 0.0;
+    const double scale = std::pow(10.0, 6 - int(std::floor(std::log10(std::fabs(d)))));
+    return std::round(d * scale) / scale + 0.0;
+}
+
 // What a cpfg program answers arrives as text (%g) read back: 0.3, not the float nearest it.
 double fromText(float v) {
     char buf[64];
@@ -194,8 +205,7 @@ bool answerQueriesTogether(const Environment& env, std::uint64_t envSeed, std::v
             } else if (kind[id]) {
                 const QueryFrame& f = passes[t].frames[q++];
                 const glm::vec3& v = kind[id] == 'P' ? f.position : kind[id] == 'H' ? f.heading : kind[id] == 'U' ? f.up : f.left;
-                // Rounded to 1e-5: the float turtle's last bits would otherwise show as 2.9999998.
-                for (unsigned k = 0; k < a && k < 3; ++k) s.params[pp + k] = std::round(double(v[int(k)]) * 1e5) / 1e5 + 0.0;
+                for (unsigned k = 0; k < a && k < 3; ++k) s.params[pp + k] = turtleDigits(v[int(k)]);
             }
             pp += a;
         }

@@ -52,6 +52,15 @@ TEST(ViewerVlabObject, AFolderOrAFileInItOpensTheObject) {
     ViewerState s(folder / "autosave");
     s.openText("axiom: F\n", folder.parent_path() / "elsewhere.lsys");
     EXPECT_FALSE(s.vlabObject());
+    EXPECT_FALSE(s.playing());
+    // cpfg -a: the object opens playing its animation; without it, still.
+    std::ofstream(folder / "specifications") << "plant.l\nmodel:\n\tcpfg -a plant.l plant.v plant.a\n";
+    ViewerState playing(folder / "autosave");
+    std::string error;
+    ASSERT_TRUE(playing.open(folder, error)) << error;
+    EXPECT_TRUE(playing.playing());
+    ASSERT_TRUE(playing.vlabObject());
+    EXPECT_TRUE(playing.vlabObject()->notes.empty()) << playing.vlabObject()->notes.front();
     fs::remove_all(folder);
 }
 

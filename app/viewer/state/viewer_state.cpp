@@ -225,6 +225,10 @@ bool ViewerState::open(const fs::path& given, std::string& error, const std::str
     }
     if (!openFile(path, error, system)) return false;
     m_vlab = std::move(object);
+    if (m_vlab && m_vlab->animate) {  // cpfg -a: the animation file's frames play from its first
+        setDisplayStep(0);
+        setPlaying(true);
+    }
     return true;
 }
 
