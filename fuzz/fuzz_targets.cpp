@@ -104,6 +104,13 @@ using namespace sprout;
     // (unbalanced successors, stray lines, sub-L-systems, paths) are fuzzed too.
     ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
     o.explorer = text.size() % 2 == 1;
+    // fopen's files for reading: a data file's text is the input's last line (fscanf reads it).
+    const std::string data = text.substr(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+    o.include = [&](const std::string& name, std::string& error) -> std::optional<std::string> {
+        if (name.size() > 4 && name.compare(name.size() - 4, 4, ".dat") == 0) return data;
+        error = "not in the fuzz input";
+        return std::nullopt;
+    };
     ParseResult r = parse(text, o);
     int n = 0;
     auto d = deriveSome(r, maxSteps, n);

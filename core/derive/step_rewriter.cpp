@@ -10,6 +10,8 @@
 
 #include "core/derive/step_rewriter.hpp"
 
+#include "core/language/cpfg/user_files.hpp"
+
 #include <algorithm>
 #include <cstring>
 
@@ -277,6 +279,8 @@ void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng)
                 else slots[s.slot] = s.expr.eval(slots, rng);
                 break;
             case Statement::Kind::Eval: s.expr.eval(slots, rng); break;
+            case Statement::Kind::Open: runOpen(s, slots); break;
+            case Statement::Kind::Scan: runScan(s, slots, rng); break;
             case Statement::Kind::If:
                 if (s.expr.eval(slots, rng) != 0) runStatements(s.then, slots, rng);
                 else runStatements(s.otherwise, slots, rng);

@@ -94,18 +94,34 @@ struct PatternModule {
     std::uint16_t firstSlot = 0;  // where this module's parameters are bound
 };
 
+// A file a cpfg model opens (`fp = fopen("data.txt", "r");`, core/language/cpfg/user_files.cpp):
+// one opened for reading is read whole, from the model's folder, when the grammar is read, and
+// fscanf reads on from the offset kept in the hidden global slot `cursor`; what a model writes
+// (fprintf) is not written.
+struct UserFile {
+    std::string name, mode;
+    bool readable = false;      // opened for reading, and read
+    std::string text;
+    std::uint16_t cursor = 0;   // the global slot of the offset fscanf reads from next
+};
+
 // A cpfg statement in a production's block: `x = expr;` or `if (c) ... else ...`. Locals
 // are slots after the formal parameters, so the condition and successor read them.
 struct Statement {
     // Eval: an expression run for what it does (cpfg's `srand(3);`); While, Do: `then` is the
-    // loop's body (run at most kMaxLoop times).
-    enum class Kind : std::uint8_t { Assign, If, Eval, While, Do } kind = Kind::Assign;
+    // loop's body (run at most kMaxLoop times). Open: `slot = fopen(...)`, the file `file`;
+    // Scan: `fscanf(expr, format, &targets...)`, its count into `slot` when `size` is 1.
+    enum class Kind : std::uint8_t { Assign, If, Eval, While, Do, Open, Scan } kind = Kind::Assign;
     static constexpr int kMaxLoop = 1'000'000;
     std::uint16_t slot = 0;      // Assign: where the value goes
     std::uint16_t size = 0;      // Assign to an array's element: the array's size (0: a variable)
     Expr index;                  // ... and its flat index, from `slot`
-    Expr expr;                   // Assign: the value; If, While, Do: the test
+    Expr expr;                   // Assign: the value; If, While, Do: the test; Scan: the file
     std::vector<Statement> then, otherwise;
+    std::uint16_t file = 0;                         // Open: the index of its file in `files`
+    std::vector<std::uint16_t> targets;             // Scan: the slots its numbers go to
+    std::vector<std::string> pieces;                // Scan: the format, one conversion a piece (%lf, %d)
+    std::shared_ptr<const std::vector<UserFile>> files;  // Open, Scan: the grammar's files
 };
 
 struct Successor {
@@ -173,6 +189,7 @@ struct Grammar {
     std::vector<double> globalInit;      // their values before the Start: block (arrays' initialisers)
     std::vector<GlobalArray> arrays;
     std::vector<Statement> startBlock, startEachBlock, endEachBlock, endBlock;
+    std::shared_ptr<std::vector<UserFile>> userFiles;  // what fopen opens (null: none)
     bool hasGlobals() const { return !globals.empty() || !startBlock.empty() || !startEachBlock.empty() || !endEachBlock.empty(); }
     std::vector<bool> ignored;  // by NameId: skipped when matching contexts
     std::unordered_map<std::string, double> defines;

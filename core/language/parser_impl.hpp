@@ -91,8 +91,11 @@ void normalizePasted(std::string& text, std::vector<std::pair<size_t, std::strin
 
 // cpfg statement blocks in productions (core/language/cpfg/statements.cpp).
 // A block's statements (assignments, if / else) compiled in `scope`, whose params are `params`.
+// `files`: fopen and fscanf are read (cpfg/user_files.hpp); null: they are errors.
+struct FileCalls;
 bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
-                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out);
+                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out,
+                     FileCalls* files = nullptr);
 // The names a block assigns (`x = ...`), added to `names` once each.
 void collectAssigned(std::string_view text, std::vector<std::string>& names);
 // `{pre} condition {post}` taken apart; false (and an error) when the blocks are misplaced.

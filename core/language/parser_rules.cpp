@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "core/base/bounded.hpp"
+#include "core/language/cpfg/user_files.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout {
@@ -336,8 +337,9 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         init.expr = std::move(*e);
         prod.pre.push_back(std::move(init));
     }
-    if (!preBlock.empty() && !parseStatements(m_sink, line, preBlock, params, scope, prod.pre)) return;
-    if (!postBlock.empty() && !parseStatements(m_sink, line, postBlock, params, scope, prod.post)) return;
+    FileCalls files{m_g, m_options.include};
+    if (!preBlock.empty() && !parseStatements(m_sink, line, preBlock, params, scope, prod.pre, &files)) return;
+    if (!postBlock.empty() && !parseStatements(m_sink, line, postBlock, params, scope, prod.post, &files)) return;
     if (colon != std::string_view::npos) {
         if (trim(condition).empty()) {
             m_sink.error(line, condition, "expected a condition after ':' (e.g. 'A(t) : t > 1 -> F')");

@@ -1,8 +1,14 @@
 // cpfg statement blocks in productions: `pred : { x = a*2; } x > 1 { y = x+1; } --> F(y)`.
 // The blocks hold assignments and if / else; names they assign are the production's locals
 // (slots after its formal parameters), visible in the condition and the successor.
+//
+// Index of this file:
+//   [SECTION] The block parser (statements, calls, assignments)
+//   [SECTION] Global blocks and arrays
+//   [SECTION] Locals and conditions
 #include <cctype>
 
+#include "core/language/cpfg/user_files.hpp"
 #include "core/language/parser_impl.hpp"
 
 namespace sprout::detail {
@@ -26,11 +32,13 @@ size_t skipSpaces(std::string_view s, size_t i) {
     return i;
 }
 
+// [SECTION] The block parser (statements, calls, assignments)
+
 class BlockParser {
 public:
     BlockParser(DiagnosticSink& sink, const SourceLine& line, const std::vector<std::string>& params,
-                const ExprScope& scope)
-        : m_sink(sink), m_line(line), m_params(params), m_scope(scope) {}
+                const ExprScope& scope, FileCalls* files)
+        : m_sink(sink), m_line(line), m_params(params), m_scope(scope), m_files(files) {}
 
     bool statements(std::string_view text, std::vector<Statement>& out) {
         size_t i = 0;
@@ -89,6 +97,37 @@ private:
         DiagnosticSink scratch;
         auto e = compileExpr(flat, line, m_scope, scratch);
         return e ? std::move(*e) : Expr::constant(0);
+    }
+
+    // The function `text` calls when it is one call and nothing else (`fopen(...)`), or "".
+    static std::string_view callOf(std::string_view text) {
+        size_t a = skipSpaces(text, 0), b = a;
+        while (b < text.size() && isIdentChar(text[b])) ++b;
+        const size_t open = skipSpaces(text, b);
+        if (b == a || open >= text.size() || text[open] != '(') return {};
+        const size_t close = matching(text, open);
+        if (close == std::string_view::npos || skipSpaces(text, close + 1) < text.size()) return {};
+        return text.substr(a, b - a);
+    }
+
+    // fopen / fscanf with `(args)` (user_files.hpp).
+    bool fileCall(std::string_view name, std::string_view parenthesised, Statement& s) {
+        if (!m_files) return fail(name, "'" + std::string(name) + "' is not available here");
+        const size_t close = parenthesised.empty() ? std::string_view::npos : matching(parenthesised, 0);
+        if (close == std::string_view::npos) return fail(parenthesised.empty() ? name : parenthesised, "this '(' is never closed");
+        if (skipSpaces(parenthesised, close + 1) < parenthesised.size())
+            return fail(parenthesised.substr(close + 1), "expected ';' after '" + std::string(name) + "(...)'");
+        const std::string_view args = parenthesised.substr(1, close - 1);
+        if (name == "fopen") return compileFopen(*m_files, m_sink, m_line, args, s);
+        auto slotOf = [&](std::string_view v) -> std::optional<std::uint16_t> {
+            for (size_t k = 0; k < m_params.size(); ++k)
+                if (m_params[k] == v) return std::uint16_t(k);
+            if (m_scope.globals)
+                for (size_t g = 0; g < m_scope.globals->size(); ++g)
+                    if ((*m_scope.globals)[g] == v) return std::uint16_t(kGlobalSlot + g);
+            return std::nullopt;
+        };
+        return compileFscanf(*m_files, m_sink, m_line, args, m_scope, slotOf, s);
     }
 
     bool fail(std::string_view at, std::string message) {
@@ -162,7 +201,14 @@ private:
         if (name == "else") return fail(name, "'else' without an 'if' before it");
         if (i < text.size() && text[i] == '(') {  // a call run for what it does: srand(3); printf(...);
             const size_t end = statementEnd(text, i);
-            if (name == "printf" || name == "fprintf" || name == "fflush") {  // cpfg's messages: nothing in the model
+            if (noEffectCall(name)) {  // cpfg's messages, files written, animation: nothing in the model
+                i = end < text.size() ? end + 1 : end;
+                return true;
+            }
+            if (name == "fscanf" || name == "fopen") {
+                Statement s;
+                if (!fileCall(name, text.substr(i, end - i), s)) return false;
+                out.push_back(std::move(s));
                 i = end < text.size() ? end + 1 : end;
                 return true;
             }
@@ -210,6 +256,20 @@ private:
             if (g < m_scope.globals->size()) slot = kGlobalSlot + g;
         }
         s.slot = std::uint16_t(slot);
+        if (std::string_view call = callOf(text.substr(i, end - i)); call == "fopen" || call == "fscanf") {
+            if (s.size) return fail(text.substr(start), "'" + std::string(call) + "' gives its value to a variable, not to an array's element");
+            if (slot == m_params.size()) return fail(text.substr(start), "'" + std::string(name) + "' cannot be assigned here");
+            const std::string_view value = text.substr(i, end - i);
+            const size_t open = value.find('(');
+            const size_t close = matching(value, open);
+            if (close == std::string_view::npos) return fail(value.substr(open), "this '(' is never closed");
+            if (!fileCall(call, value.substr(open, close - open + 1), s)) return false;
+            s.slot = std::uint16_t(slot);
+            s.size = 1;  // its value (the file's id, the count read) goes to `slot`
+            out.push_back(std::move(s));
+            i = end < text.size() ? end + 1 : end;
+            return true;
+        }
         auto value = compileExpr(text.substr(i, end - i), m_line, m_scope, m_sink);
         if (!value) return false;
         s.expr = std::move(*value);
@@ -222,14 +282,18 @@ private:
     const SourceLine& m_line;
     const std::vector<std::string>& m_params;
     ExprScope m_scope;
+    FileCalls* m_files;
 };
 
 }  // namespace
 
 bool parseStatements(DiagnosticSink& sink, const SourceLine& line, std::string_view text,
-                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out) {
-    return BlockParser(sink, line, params, scope).statements(text, out);
+                     const std::vector<std::string>& params, const ExprScope& scope, std::vector<Statement>& out,
+                     FileCalls* files) {
+    return BlockParser(sink, line, params, scope, files).statements(text, out);
 }
+
+// [SECTION] Global blocks and arrays
 
 void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std::string_view v) {
     std::string_view body = trim(v);
@@ -252,7 +316,8 @@ void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std
                                 : key == "endeach" ? m_g.endEachBlock : m_g.endBlock;
     const std::vector<std::string> none;
     ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
-    parseStatements(m_sink, line, body, none, scope, out);
+    FileCalls files{m_g, m_options.include};
+    parseStatements(m_sink, line, body, none, scope, out, &files);
 }
 
 void Parser::defineArrays(const SourceLine& line, std::string_view text) {
@@ -324,6 +389,8 @@ void Parser::defineArrays(const SourceLine& line, std::string_view text) {
     }
 }
 
+// [SECTION] Locals and conditions
+
 void collectAssigned(std::string_view text, std::vector<std::string>& names) {
     for (size_t i = 0; i < text.size();) {
         if (!identStart(text[i]) || (i > 0 && (isIdentChar(text[i - 1]) || text[i - 1] == '.'))) {
@@ -334,8 +401,12 @@ void collectAssigned(std::string_view text, std::vector<std::string>& names) {
         while (i < text.size() && isIdentChar(text[i])) ++i;
         std::string name(text.substr(start, i - start));
         size_t j = skipSpaces(text, i);
-        if (j < text.size() && text[j] == '=' && (j + 1 >= text.size() || text[j + 1] != '=') && name != "if" &&
-            name != "else" && std::find(names.begin(), names.end(), name) == names.end())
+        // `x = ...`, or fscanf's `&x` (not `a &&x`)
+        const bool assigned = j < text.size() && text[j] == '=' && (j + 1 >= text.size() || text[j + 1] != '=');
+        size_t before = start;
+        while (before > 0 && isSpace(text[before - 1])) --before;
+        const bool address = before > 0 && text[before - 1] == '&' && (before < 2 || text[before - 2] != '&');
+        if ((assigned || address) && name != "if" && name != "else" && std::find(names.begin(), names.end(), name) == names.end())
             names.push_back(name);
     }
 }
