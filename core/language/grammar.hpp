@@ -55,6 +55,9 @@ struct Settings {
     double branchLength = 1;  // branch_scale: factors applied at each `[`
     double branchWidth = 1;
     double stepScale = 1;     // step_scale: length factor per derivation step
+    // cpfg's turtle scale (the view file's initial scale: and scale multiplier:): F's length,
+    // widths set by number and sizes are multiplied by the scale, which @D, @Di, @Dd change.
+    double initialScale = 1, scaleMultiplier = 1;
     std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
     double tropismStrength = 0;
     std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette

@@ -34,7 +34,9 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     m_moduleNames = {"~leaf", "~petal", "@O", "@o", "~l", "~p", "~L", "~P", "@L", "@A", "@W", "@T",
                      "@M", "@R", "@v", "@c", "@b", "@Gs", "@Gc", "@Ge", "@Gt", "?P", "?H", "?U", "?L", "?E",
                      "@m", "@H", "@#", "@Gr", "@Cs", "@Ce", "@Ca", "@Cb", "@Cc", "@Cm", "@Cn", "@Ct", "@Ds", "@De",
-                     "@Di", "@bo", "@bd", "@!"};
+                     "@Di", "@bo", "@bd", "@!",
+                     // cpfg's scale, tropism elasticity and twist, texture, patch and circle modules (blackbox.c)
+                     "@D", "@Dd", "@Ts", "@Ti", "@Td", "@Tp", "@Tf", "@Tx", "@PS", "@PC", "@PD", "@bc"};
     indexModuleNames();
 }
 

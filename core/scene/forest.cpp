@@ -63,7 +63,9 @@ ForestParseResult parseForest(std::string_view text, const IncludeReader& includ
         }
     }
     if (hasEnvironment) {
-        ParseResult e = parse(environmentText + "axiom: F\n", ParseOptions{false, include, ""});
+        ParseOptions environmentOptions;
+        environmentOptions.include = include;
+        ParseResult e = parse(environmentText + "axiom: F\n", environmentOptions);
         for (const Diagnostic& d : e.diagnostics)
             if (d.severity == Severity::Error) r.diagnostics.push_back(d);
         if (e.grammar) f.environment = e.grammar->environment;

@@ -22,6 +22,15 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     for (size_t s = 0; s < g.alphabet.size(); ++s) {
         m_arity[s] = g.alphabet[SymbolId(s)].arity;
         m_actions[s] = actionOf(g.alphabet[SymbolId(s)].name);
+        if (g.dialect == "cpfg") {  // cpfg's @ modules (blackbox.c), not Lparser's extensions
+            const std::string& name = g.alphabet[SymbolId(s)].name;
+            if (name == "@L") m_actions[s] = Act::CpfgLabel;
+            else if (name == "@T" || name == "@A" || name == "@W") m_actions[s] = Act::None;
+            else if (name == "@D") m_actions[s] = Act::ScaleSet;
+            else if (name == "@Di") m_actions[s] = Act::ScaleMul;
+            else if (name == "@Dd") m_actions[s] = Act::ScaleDiv;
+            m_scaled |= m_actions[s] == Act::ScaleSet || m_actions[s] == Act::ScaleMul || m_actions[s] == Act::ScaleDiv;
+        }
         if (st.bracePaths && m_arity[s] > 0) {
             // A surface is kept by a quoted name (`}('leaf')`, `@Ge(8, 'leaf')`); a number there
             // (`}(0)`, the end of a path) keeps nothing, as in that tool (0 is no name in JavaScript).
@@ -78,6 +87,11 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     for (int o = 0; o < kOrderColours; ++o, t = 1 - (1 - t) * 0.55f)
         m_byOrder[o] = lerpColour(st.barkColour, st.tipColour, t);
     m_state.length = toFloat(st.step.mean * std::pow(st.stepScale, o.derivationSteps));
+    m_cpfg = g.dialect == "cpfg";
+    m_scaled = m_cpfg && (m_scaled || st.initialScale != 1);
+    m_invStep = m_state.length != 0 && std::isfinite(m_state.length) ? 1.0f / m_state.length : 1.0f;
+    m_scaleMultiplier = toFloat(st.scaleMultiplier);
+    if (m_scaled) m_state.length *= toFloat(st.initialScale);
     m_state.width = m_autoWidth ? 1.0f : toFloat(st.width);
     m_min = m_max = m_state.pos;
     if (st.initialColour >= 0) {  // cpfg's initial color: a palette index from the start

@@ -34,7 +34,7 @@ public:
     // or on the module's index (jitter, tropism, growth), and interpretation rules (if any)
     // that map each symbol to one fixed string.
     bool treeApplicable() const {
-        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves &&
+        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves && !m_scaled &&
                !m_opt.segmentModules && !m_opt.surfaceModules &&
                m_surfaceFiles.empty() && m_palette.size() <= 127 && m_colourStep == 1 && !m_widthSteps &&
                simpleInterpretation(m_g);
@@ -175,6 +175,7 @@ private:
     // makes n the pieces of each following span), @Ge(n) adds the last one, @Gt(s) sets the
     // tangents' length in chords. Every F in between is a control point too.
     [[gnu::noinline]] void curveCommand(State& t, Act act, const double* p, int arity = 1);
+    [[gnu::noinline]] void forkCurve(State& t, std::int16_t parent);
     void curvePoint(const State& t, int subdivisions);
     void placeSurfaceFile(const State& t, SymbolId id, const double* p);
 
@@ -253,6 +254,12 @@ private:
     bool m_widthSteps = false;      // ! and # add m_widthStep instead of multiplying by m_widthFactor
     bool m_gradient, m_autoWidth, m_usedBrackets = false, m_colourModules = false, m_plainRuns = false;
     bool m_hasCurves = false;
+    // cpfg's files (Grammar::dialect "cpfg"): @O, @c take diameters; with a scale (m_scaled:
+    // @D modules or an initial scale), the scale is t.length over the step, m_invStep.
+    bool m_cpfg = false, m_scaled = false;
+    float m_invStep = 1, m_scaleMultiplier = 1;
+    float scaleOf(const State& t) const { return m_scaled ? t.length * m_invStep : 1.0f; }
+    void cpfgLabel(const State& t, const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;

@@ -52,6 +52,23 @@ void Turtle::curveCommand(State& t, Act act, const double* p, int arity) {
     }
 }
 
+// cpfg's turtle carries its generalized cylinder into a branch (the state is copied at '['):
+// the branch's tube goes on from the parent's last control point, with its contour and
+// tangents, and ends at the branch's @Ge (Horneophyton's forking stems).
+void Turtle::forkCurve(State& t, std::int16_t parent) {
+    if (m_curves.size() >= 32767) return;
+    OpenCurve fork;
+    const OpenCurve& from = m_curves[size_t(parent)];
+    fork.subdivisions = from.subdivisions;
+    fork.start = from.start;
+    fork.curve.left = toGlm(t.L);
+    fork.curve.tangentScale = from.curve.tangentScale;
+    fork.curve.section = from.curve.section;
+    if (!from.curve.points.empty()) fork.curve.points.push_back(from.curve.points.back());
+    m_curves.push_back(std::move(fork));
+    t.curve = std::int16_t(m_curves.size() - 1);
+}
+
 void Turtle::keepTube(std::size_t curve, double name) {
     if (m_saved.size() >= 4096 && !m_saved.count(name)) return;
     OpenCurve& c = m_curves[curve];
@@ -161,8 +178,9 @@ void Turtle::cpfgCommand(State& t, Act act, const double* p, int arity) {
         t.L = fromGlm(glm::normalize(l));
         return;
     }
-    // @c(r): a disc of radius r across the heading, as a 24-sided polygon.
-    const float r = p ? float(p[0]) : t.width * 0.5f;
+    // @c(r): a disc of radius r across the heading, as a 24-sided polygon (cpfg's @c(d): of
+    // diameter d, times the turtle's scale).
+    const float r = p ? (m_cpfg ? float(p[0]) * scaleOf(t) * 0.5f : float(p[0])) : t.width * 0.5f;
     if (!(r > 0)) return;
     const glm::vec3 c = toGlm(t.pos), l = toGlm(t.L), u = toGlm(up(t));
     std::vector<glm::vec3> pts;
@@ -270,6 +288,44 @@ void Turtle::insertKept(const State& t, const double* p, int arity) {
     for (std::uint32_t i : kept.indices) m.indices.push_back(base + i);
 }
 
+// cpfg's @L("format", x, ...): the format printed with the numbers after it (blackbox.c's
+// Label: %f, %g, %e, %d take the next number; %% is a percent sign), at the turtle.
+void Turtle::cpfgLabel(const State& t, const double* p, int arity) {
+    const auto& strings = m_g.alphabet.strings();
+    if (!p || arity < 1 || !(*p >= 0 && *p < double(strings.size())) || m_out.labels.size() >= 100000) return;
+    const std::string& format = strings[size_t(*p)];
+    std::string text;
+    int next = 1;
+    for (size_t k = 0; k < format.size() && text.size() < 1000; ++k) {
+        if (format[k] != '%' || k + 1 >= format.size()) {
+            text += format[k];
+            continue;
+        }
+        size_t j = k + 1;
+        while (j < format.size() && std::strchr("-+ #0123456789.l", format[j]) && format[j] != '\0') ++j;
+        if (j >= format.size() || format[j] == '\0' || !std::strchr("fgeEGd%", format[j])) {
+            text += format[k];
+            continue;
+        }
+        if (format[j] == '%') {
+            text += '%';
+        } else if (next < arity) {
+            // The conversion as written (flags, width up to 2 digits, precision), without 'l'.
+            std::string spec;
+            for (size_t c = k; c <= j; ++c)
+                if (format[c] != 'l') spec += format[c];
+            if (spec.size() > 8) spec = std::string("%") + format[j];
+            char buf[128];
+            if (format[j] == 'd') std::snprintf(buf, sizeof buf, spec.c_str(), int(std::clamp(p[next], -2e9, 2e9)));
+            else std::snprintf(buf, sizeof buf, spec.c_str(), p[next]);
+            ++next;
+            text += buf;
+        }
+        k = j;
+    }
+    m_out.labels.push_back({toGlm(t.pos), std::move(text), 13.0f, t.stemColour});
+}
+
 // [SECTION] Surfaces, the finish, bounds
 
 void Turtle::surface(const State& t, Act act, const double* p, float grow) {
@@ -280,6 +336,7 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
     if (act == Act::Sphere) {
         s.kind = SurfaceKind::Sphere;
         s.size = p ? float(*p) : t.width;  // radius
+        if (m_cpfg) s.size = (p ? s.size * scaleOf(t) : s.size) * 0.5f;  // cpfg's @O(d): a diameter
     } else {
         s.kind = act == Act::Leaf ? SurfaceKind::Leaf : SurfaceKind::Petal;
         s.size = p ? float(*p) : t.length;

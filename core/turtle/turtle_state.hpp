@@ -30,6 +30,9 @@ enum class Act : std::uint8_t {
     // and names it, @#(id) makes it the cross-section of the paths started after it.
     ContourStart, ContourEnd, ContourUse,
     ContourSides,  // cpfg's @!(n): the sides of the view file's contours chosen after it
+    // cpfg's turtle scale: @D(s) sets it, @Di(s) multiplies it by s (the view file's scale
+    // multiplier without one), @Dd(s) divides it; and @L("format", x...), a label.
+    ScaleSet, ScaleMul, ScaleDiv, CpfgLabel,
 };
 
 inline Act actionOf(const std::string& name) {

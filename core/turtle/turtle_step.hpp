@@ -51,7 +51,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 // cylinder a control point. One if-else chain, no early return: GCC predicts an early return
 // unlikely, and with them the string turtle's loop was laid out otherwise (2% slower).
 [[gnu::always_inline]] inline void Turtle::drawForward(State& t, Act act, const double* p, size_t i) {
-    float len = p ? float(*p) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
+    float len = p ? float(*p) * scaleOf(t) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
     len *= growth(i);
     if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
         if (m_polygonEdgesDrawn) segment(t, len, i);  // and draws its segment (PlantGL)
@@ -69,7 +69,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 
 // f and its kin: a step ahead that draws nothing (a polygon's vertex inside { }).
 [[gnu::always_inline]] inline void Turtle::moveForward(State& t, Act act, const double* p, size_t i) {
-    float len = (p ? float(*p) : t.length) * growth(i);
+    float len = (p ? float(*p) * scaleOf(t) : t.length) * growth(i);
     t.pos += t.H * len;
     t.lastSegment = -1;
     addBound(t.pos);
@@ -90,7 +90,9 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 [[gnu::always_inline]] inline void Turtle::pushBranch(State& t) {
     m_usedBrackets = true;
     m_stack.push_back(t);  // PodBuffer: no per-push construction
+    const std::int16_t parentCurve = t.curve;
     t.curve = -1;  // a branch draws its own stem (or starts its own @Gs)
+    if (parentCurve >= 0 && m_cpfg) forkCurve(t, parentCurve);  // cpfg: it goes on from the last control point
     t.order = std::uint16_t(std::min<int>(t.order + 1, 65535));
     if (m_gradient && t.colour < 0) t.stemColour = stemColour(t);
     t.length *= m_branchLength;
@@ -140,8 +142,9 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 [[gnu::always_inline]] inline void Turtle::stepWidth(State& t, Act act, const double* p) {
     // A width given as a number is absolute: no automatic scaling then (ABOP 2.8).
     if (p) m_absoluteWidths = true;
-    if (m_widthSteps && !p) t.width = std::max(0.0f, t.width + (act == Act::WidthDec ? -m_widthStep : m_widthStep));
-    else t.width = p ? float(*p) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
+    // cpfg: a width set or stepped by number is times the turtle's scale (@D).
+    if (m_widthSteps && !p) t.width = std::max(0.0f, t.width + (act == Act::WidthDec ? -m_widthStep : m_widthStep) * scaleOf(t));
+    else t.width = p ? float(*p) * scaleOf(t) : act == Act::WidthDec ? t.width * m_widthFactor : t.width / m_widthFactor;
     // Taper: the segment before ends as thick as the next one starts.
     if (t.lastSegment >= 0) m_seg->at(size_t(t.lastSegment)).endRadius = t.width * 0.5f;
 }
@@ -241,6 +244,17 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::CurveTangent:
         case Act::CurveEndKeep: curveCommand(t, act, p, arity); break;
         case Act::Label: addLabel(t, p, arity); break;
+        case Act::CpfgLabel: cpfgLabel(t, p, arity); break;
+        case Act::ScaleSet:
+            if (p && std::isfinite(*p)) t.length = float(*p) / m_invStep;
+            break;
+        case Act::ScaleMul:
+        case Act::ScaleDiv: {
+            // blackbox.c: a factor of 0 is refused; without one, the view file's multiplier
+            const float f = p ? (std::isfinite(*p) && *p != 0 ? float(*p) : 1.0f) : m_scaleMultiplier;
+            t.length = act == Act::ScaleMul ? t.length * f : t.length / f;
+            break;
+        }
         case Act::Section:
             t.section = p && *p >= 0 && *p < double(m_g.settings.sections.size()) ? std::int16_t(*p) : std::int16_t(-1);
             break;

@@ -199,8 +199,35 @@ TEST(Cpfg, DiscIsAPolygonAcrossTheHeading) {
     ASSERT_EQ(g.polygons.positions.size(), 24u);
     for (const auto& p : g.polygons.positions) {
         EXPECT_NEAR(p.y, 2.0f, 1e-5f);  // across the heading (+Y), at the turtle
-        EXPECT_NEAR(std::hypot(p.x, p.z), 0.8f, 1e-5f);
+        EXPECT_NEAR(std::hypot(p.x, p.z), 0.4f, 1e-5f);  // cpfg's @c(d): a diameter
     }
+}
+
+// cpfg's turtle scale (blackbox.c): @D(s) sets it, @Di(s) multiplies, @Dd without a number
+// divides by the view file's scale multiplier; F's number, widths and @O's diameter are times
+// it; @L("format", x) is a label, not Lparser's length factor.
+TEST(Cpfg, TurtleScaleSizesWhatFollowsAndLabelsArePrinted) {
+    ParseResult r = parse("Lsystem: 1\nderivation length: 0\n"
+                          "Axiom: F(1) @D(2) F(1) #(0.5) F @Di(0.5) F(3) @O(1) @Dd F(1) @L(\"n=%g!\", 3.5) F(1)\nendlsystem\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    auto g = std::make_shared<Grammar>(*r.grammar);
+    g->settings.scaleMultiplier = 4;  // the view file's `scale multiplier: 4`
+    Geometry out;
+    interpret(g->axiom, *g, {0, 1, nullptr}, out);
+    ASSERT_EQ(out.cylinders.size(), 6u);
+    auto length = [&](size_t k) { return glm::length(out.cylinders[k].end - out.cylinders[k].start); };
+    EXPECT_FLOAT_EQ(length(0), 1);    // scale 1
+    EXPECT_FLOAT_EQ(length(1), 2);    // @D(2)
+    EXPECT_FLOAT_EQ(length(2), 2);    // F: the step times the scale
+    EXPECT_FLOAT_EQ(out.cylinders[2].startRadius, 0.5f);  // #(0.5) times 2, a diameter of 1
+    EXPECT_FLOAT_EQ(length(3), 3);    // @Di(0.5): scale 1
+    EXPECT_FLOAT_EQ(length(4), 0.25f);  // @Dd: 1 / 4
+    EXPECT_FLOAT_EQ(length(5), 0.25f);  // @L changes no length
+    ASSERT_EQ(out.surfaces.size(), 1u);
+    EXPECT_FLOAT_EQ(out.surfaces[0].size, 0.5f);  // @O(1) at scale 1: radius 0.5
+    ASSERT_EQ(out.labels.size(), 1u);
+    EXPECT_EQ(out.labels[0].text, "n=3.5!");
 }
 
 TEST(Cpfg, MoveToStartsANewStemThere) {
@@ -215,6 +242,22 @@ TEST(Cpfg, MoveToStartsANewStemThere) {
 
 // A generalized cylinder is one tube through the turtle's positions: no cylinders, rings of
 // 12 vertices at the radius around the curve, which passes through every control point.
+// cpfg copies the turtle's generalized cylinder into a branch: each branch's tube goes on from
+// the last control point before '[' and ends at its own @Ge (Horneophyton's forking stems).
+TEST(Cpfg, GeneralizedCylinderGoesOnIntoEachBranch) {
+    ParseResult r = parse("derivation length: 0\nwidth: 0.2\nAxiom: @Gs f(1) @Gc(2) [+(90) f(1) @Ge(2)] [-(90) f(1) @Ge(2)]\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_FALSE(g.polygons.positions.empty());
+    float left = 0, right = 0, top = 0;
+    for (const auto& p : g.polygons.positions) left = std::min(left, p.x), right = std::max(right, p.x), top = std::max(top, p.y);
+    EXPECT_NEAR(left, -1.0f, 0.15f);  // the branches' tubes reach their tips, a step to each side
+    EXPECT_NEAR(right, 1.0f, 0.15f);
+    EXPECT_LT(top, 1.3f);  // and start at the fork: nothing drawn twice up the stem
+}
+
 TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
     ParseResult r = parse("derivation length: 0\nwidth: 0.5\nAxiom: @Gs F(1) +(30) F(1) @Gc(5) +(30) F(1) @Ge(5)\n",
                           parseOptionsFor(FileKind::Cpfg, ""));
