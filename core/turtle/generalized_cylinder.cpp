@@ -67,11 +67,19 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
             n = std::min(-n, 1 + int(bend / (4 * kPi / 180)));
         }
         n = std::clamp(n, 1, 64);
+        // The radius along the span (cpfg's radius tangents; linear by default).
+        const glm::vec2 linear(1, b.radius - a.radius);
+        glm::vec2 r0 = a.radiusOut, r1 = b.radiusIn;
+        if (b.scaleRadius) r0.y *= chord, r1.y *= chord;
+        if (r0 == glm::vec2(0)) r0 = linear;
+        if (r1 == glm::vec2(0)) r1 = linear;
+        const glm::vec2 c2 = 3.0f * linear - 2.0f * r0 - r1, c3 = -2.0f * linear + r0 + r1;
         for (int k = 1; k <= n; ++k) {
-            const float s = float(k) / float(n);
+            const float q = float(k) / float(n);
+            const float s = std::clamp(((c3.x * q + c2.x) * q + r0.x) * q, 0.0f, 1.0f);
+            const float radius = k == n ? b.radius : ((c3.y * q + c2.y) * q + r0.y) * q + a.radius;
             samples.push_back({hermite(a.position, t0, b.position, t1, s),
-                               safeNormalize(hermiteTangent(a.position, t0, b.position, t1, s), dir[i]),
-                               a.radius + (b.radius - a.radius) * s, b.colour});
+                               safeNormalize(hermiteTangent(a.position, t0, b.position, t1, s), dir[i]), radius, b.colour});
         }
     }
     if (samples.size() < 2) return;
@@ -117,7 +125,8 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         const float r = s.r * radiusScale;
         for (std::uint32_t k = 0; k < sides; ++k) {
             mesh.positions.push_back(s.p + r * (ring[k].x * u + ring[k].y * w));
-            mesh.normals.push_back(safeNormalize(across[k].x * u + across[k].y * w, w));
+            // A negative radius (cpfg's radius tangents can take it through 0) turns the section over.
+            mesh.normals.push_back((r < 0 ? -1.0f : 1.0f) * safeNormalize(across[k].x * u + across[k].y * w, w));
             mesh.colours.push_back(s.colour);
         }
     }

@@ -19,6 +19,12 @@ struct CurvePoint {
     float radius;
     std::uint32_t colour;
     int subdivisions;   // pieces of the span that ends here; -n: up to n, as the span bends
+    // cpfg's @Gr radius tangents (general.c): the span is a Hermite curve in (t, radius) from
+    // (0, r0) to (1, r1), its tangents `radiusIn` (at this point, ending the span before) and
+    // the previous point's `radiusOut`; (0, 0): linear. `scaleRadius`: their radius parts are
+    // times the span's length (@Gr(1)).
+    glm::vec2 radiusIn{0, 0}, radiusOut{0, 0};
+    bool scaleRadius = false;
 };
 
 struct GeneralizedCylinder {

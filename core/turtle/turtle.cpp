@@ -29,6 +29,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
             else if (name == "@D") m_actions[s] = Act::ScaleSet;
             else if (name == "@Di") m_actions[s] = Act::ScaleMul;
             else if (name == "@Dd") m_actions[s] = Act::ScaleDiv;
+            else if (name == "@Gr") m_actions[s] = Act::RadiusTangents;
             m_scaled |= m_actions[s] == Act::ScaleSet || m_actions[s] == Act::ScaleMul || m_actions[s] == Act::ScaleDiv;
         }
         if (st.bracePaths && m_arity[s] > 0) {

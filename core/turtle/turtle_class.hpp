@@ -260,6 +260,10 @@ private:
     float m_invStep = 1, m_scaleMultiplier = 1;
     float scaleOf(const State& t) const { return m_scaled ? t.length * m_invStep : 1.0f; }
     void cpfgLabel(const State& t, const double* p, int arity);
+    // cpfg's @Gr: the radius tangents the next control points take (turtle-wide, not per branch).
+    glm::vec2 m_radiusIn{0, 0}, m_radiusOut{0, 0};
+    bool m_scaleRadius = false;
+    void radiusTangents(const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;

@@ -135,7 +135,24 @@ void Turtle::curvePoint(const State& t, int subdivisions) {
         c.curve.points.back().subdivisions = subdivisions;
         return;
     }
-    c.curve.points.push_back({p, glm::normalize(toGlm(t.H)), t.width * 0.5f, t.stemColour, subdivisions});
+    c.curve.points.push_back({p, glm::normalize(toGlm(t.H)), t.width * 0.5f, t.stemColour, subdivisions, m_radiusIn,
+                              m_radiusOut, m_scaleRadius});
+}
+
+// blackbox.c's @Gr: one number switches the scaling of the tangents by the span's length; two
+// (an angle in degrees and a length) set both tangents, four set the one ending the span and
+// the one starting the next.
+void Turtle::radiusTangents(const double* p, int arity) {
+    if (!p || arity < 1 || !finite(p, std::min(arity, 4))) return;
+    if (arity == 1) {
+        m_scaleRadius = *p != 0;
+        return;
+    }
+    auto tangent = [](double degrees, double length) {
+        return glm::vec2(float(std::cos(degrees * kPi / 180) * length), float(std::sin(degrees * kPi / 180) * length));
+    };
+    m_radiusIn = m_radiusOut = tangent(p[0], p[1]);
+    if (arity >= 4) m_radiusOut = tangent(p[2], p[3]);
 }
 
 // [SECTION] cpfg's point and heading commands

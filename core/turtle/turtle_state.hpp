@@ -33,6 +33,7 @@ enum class Act : std::uint8_t {
     // cpfg's turtle scale: @D(s) sets it, @Di(s) multiplies it by s (the view file's scale
     // multiplier without one), @Dd(s) divides it; and @L("format", x...), a label.
     ScaleSet, ScaleMul, ScaleDiv, CpfgLabel,
+    RadiusTangents,  // cpfg's @Gr(a1, l1, a2, l2) and @Gr(flag): the tubes' radius along a span
 };
 
 inline Act actionOf(const std::string& name) {

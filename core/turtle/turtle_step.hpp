@@ -245,6 +245,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::CurveEndKeep: curveCommand(t, act, p, arity); break;
         case Act::Label: addLabel(t, p, arity); break;
         case Act::CpfgLabel: cpfgLabel(t, p, arity); break;
+        case Act::RadiusTangents: radiusTangents(p, arity); break;
         case Act::ScaleSet:
             if (p && std::isfinite(*p)) t.length = float(*p) / m_invStep;
             break;

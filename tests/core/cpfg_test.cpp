@@ -258,6 +258,22 @@ TEST(Cpfg, GeneralizedCylinderGoesOnIntoEachBranch) {
     EXPECT_LT(top, 1.3f);  // and start at the fork: nothing drawn twice up the stem
 }
 
+// cpfg's @Gr radius tangents (general.c): the radius along a span is a Hermite curve in
+// (t, radius); here from 0 to 0 with tangents (0, -0.5) and (0, 0.5): 0.5 q^2 - 0.5 q, widest
+// (0.125) half way. Without them the tube would have no width (FernLeaf's leaflets).
+TEST(Cpfg, RadiusTangentsShapeTheTube) {
+    ParseResult r = parse("Lsystem: 1\nderivation length: 0\n"
+                          "Axiom: !(0) @Gr(0,0,-90,0.5) @Gs f(1) !(0) @Gr(90,0.5,0,0) @Ge(8)\nendlsystem\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_FALSE(g.polygons.positions.empty());
+    float widest = 0;
+    for (const auto& p : g.polygons.positions) widest = std::max(widest, std::hypot(p.x, p.z));
+    EXPECT_NEAR(widest, 0.125f, 0.005f);
+}
+
 TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
     ParseResult r = parse("derivation length: 0\nwidth: 0.5\nAxiom: @Gs F(1) +(30) F(1) @Gc(5) +(30) F(1) @Ge(5)\n",
                           parseOptionsFor(FileKind::Cpfg, ""));
