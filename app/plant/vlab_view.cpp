@@ -102,6 +102,7 @@ void applyVlabPicture(const VlabPicture& p, Settings& st) {
         }
         // Lines with a width in the turtle's units are solids, never a flat curve's ink.
         if (v->lineStyleSet && v->lineStyle != vlab::LineStyle::Pixel) st.view = ViewHint::Solid;
+        for (const vlab::Movement& m : v->movements) st.movements.push_back({m.torque, m.direction, m.angle, m.elasticity, m.step});
         st.initialScale = v->initialScale;  // cpfg's turtle scale, which @D, @Di, @Dd change
         st.scaleMultiplier = v->scaleMultiplier;
         if (v->tropismDirection) {

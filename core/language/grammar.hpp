@@ -60,6 +60,16 @@ struct Settings {
     double initialScale = 1, scaleMultiplier = 1;
     std::array<double, 3> tropism{0, 0, 0};  // tropism: x y z e (ABOP 2.2)
     double tropismStrength = 0;
+    // cpfg's tropisms and torques (the view file's `tropism:` and `torque:` lines; movements.c):
+    // before each F, f, G and g the heading bends towards the sum of the tropisms' directions,
+    // each weighted by its elasticity (one at an angle bends towards that angle to it), and
+    // the up vector turns by the torques; @Ts, @Ti, @Td change a turtle's elasticities.
+    struct Movement {
+        bool torque = false;
+        std::array<double, 3> direction{0, 0, 0};  // times the intensity
+        double angle = 0, elasticity = 0, step = 0;
+    };
+    std::vector<Movement> movements;
     std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
     // cpfg's colour index and width steps (a VLab object's view file): the index the turtle
     // starts with (-1: none, colours by branch order), what `;` and `,` add, and, when set,

@@ -30,6 +30,9 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
             else if (name == "@Di") m_actions[s] = Act::ScaleMul;
             else if (name == "@Dd") m_actions[s] = Act::ScaleDiv;
             else if (name == "@Gr") m_actions[s] = Act::RadiusTangents;
+            else if (name == "@Ts") m_actions[s] = Act::ElasticSet;
+            else if (name == "@Ti") m_actions[s] = Act::ElasticInc;
+            else if (name == "@Td") m_actions[s] = Act::ElasticDec;
             m_scaled |= m_actions[s] == Act::ScaleSet || m_actions[s] == Act::ScaleMul || m_actions[s] == Act::ScaleDiv;
         }
         if (st.bracePaths && m_arity[s] > 0) {
@@ -92,6 +95,8 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     m_scaled = m_cpfg && (m_scaled || st.initialScale != 1);
     m_invStep = m_state.length != 0 && std::isfinite(m_state.length) ? 1.0f / m_state.length : 1.0f;
     m_scaleMultiplier = toFloat(st.scaleMultiplier);
+    m_moves = m_cpfg && !st.movements.empty();
+    for (size_t k = 0; k < st.movements.size() && k < m_elastic.size(); ++k) m_elastic[k] = toFloat(st.movements[k].elasticity);
     if (m_scaled) m_state.length *= toFloat(st.initialScale);
     m_state.width = m_autoWidth ? 1.0f : toFloat(st.width);
     m_min = m_max = m_state.pos;
@@ -101,7 +106,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     }
     m_state.stemColour = stemColour(m_state);
     // Runs of F can be batched when nothing changes from one segment to the next.
-    m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !(o.ages && o.growStep >= 0);
+    m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !m_moves && !(o.ages && o.growStep >= 0);
 }
 
 // Strings without parameters (most D0L plants) take a loop with no parameter walk.

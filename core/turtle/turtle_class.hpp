@@ -34,7 +34,7 @@ public:
     // or on the module's index (jitter, tropism, growth), and interpretation rules (if any)
     // that map each symbol to one fixed string.
     bool treeApplicable() const {
-        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves && !m_scaled &&
+        return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves && !m_scaled && !m_moves &&
                !m_opt.segmentModules && !m_opt.surfaceModules &&
                m_surfaceFiles.empty() && m_palette.size() <= 127 && m_colourStep == 1 && !m_widthSteps &&
                simpleInterpretation(m_g);
@@ -264,6 +264,13 @@ private:
     glm::vec2 m_radiusIn{0, 0}, m_radiusOut{0, 0};
     bool m_scaleRadius = false;
     void radiusTangents(const double* p, int arity);
+    // cpfg's tropisms and torques (Settings::movements): the turtle's elasticities, kept with
+    // its state at '[' and ']'.
+    bool m_moves = false;
+    std::array<float, 10> m_elastic{};
+    std::vector<std::array<float, 10>> m_elasticStack;
+    [[gnu::noinline]] void movementAdjust(State& t);
+    void elasticity(Act act, const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;

@@ -34,6 +34,7 @@ enum class Act : std::uint8_t {
     // multiplier without one), @Dd(s) divides it; and @L("format", x...), a label.
     ScaleSet, ScaleMul, ScaleDiv, CpfgLabel,
     RadiusTangents,  // cpfg's @Gr(a1, l1, a2, l2) and @Gr(flag): the tubes' radius along a span
+    ElasticSet, ElasticInc, ElasticDec,  // cpfg's @Ts, @Ti, @Td(id, value): a tropism's elasticity
 };
 
 inline Act actionOf(const std::string& name) {

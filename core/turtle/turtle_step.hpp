@@ -51,6 +51,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 // cylinder a control point. One if-else chain, no early return: GCC predicts an early return
 // unlikely, and with them the string turtle's loop was laid out otherwise (2% slower).
 [[gnu::always_inline]] inline void Turtle::drawForward(State& t, Act act, const double* p, size_t i) {
+    if (m_moves) movementAdjust(t);  // cpfg: the tropisms bend the heading before each step
     float len = p ? float(*p) * scaleOf(t) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
     len *= growth(i);
     if (!m_polygons.empty()) {  // inside { }, F outlines the polygon (cpfg)
@@ -69,6 +70,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 
 // f and its kin: a step ahead that draws nothing (a polygon's vertex inside { }).
 [[gnu::always_inline]] inline void Turtle::moveForward(State& t, Act act, const double* p, size_t i) {
+    if (m_moves) movementAdjust(t);
     float len = (p ? float(*p) * scaleOf(t) : t.length) * growth(i);
     t.pos += t.H * len;
     t.lastSegment = -1;
@@ -90,6 +92,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 [[gnu::always_inline]] inline void Turtle::pushBranch(State& t) {
     m_usedBrackets = true;
     m_stack.push_back(t);  // PodBuffer: no per-push construction
+    if (m_moves) m_elasticStack.push_back(m_elastic);
     const std::int16_t parentCurve = t.curve;
     t.curve = -1;  // a branch draws its own stem (or starts its own @Gs)
     if (parentCurve >= 0 && m_cpfg) forkCurve(t, parentCurve);  // cpfg: it goes on from the last control point
@@ -103,6 +106,10 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
     if (!m_stack.empty()) {  // an unbalanced ']' is harmless
         t = m_stack.back();
         m_stack.pop_back();
+        if (m_moves && !m_elasticStack.empty()) {
+            m_elastic = m_elasticStack.back();
+            m_elasticStack.pop_back();
+        }
     }
 }
 
@@ -246,6 +253,9 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::Label: addLabel(t, p, arity); break;
         case Act::CpfgLabel: cpfgLabel(t, p, arity); break;
         case Act::RadiusTangents: radiusTangents(p, arity); break;
+        case Act::ElasticSet:
+        case Act::ElasticInc:
+        case Act::ElasticDec: elasticity(act, p, arity); break;
         case Act::ScaleSet:
             if (p && std::isfinite(*p)) t.length = float(*p) / m_invStep;
             break;

@@ -274,6 +274,38 @@ TEST(Cpfg, RadiusTangentsShapeTheTube) {
     EXPECT_NEAR(widest, 0.125f, 0.005f);
 }
 
+// cpfg's tropisms (movements.c): before each F the heading turns towards the tropism's
+// direction by |H x eT| radians; @Ts(1, 0) sets its elasticity to 0 (kept in a branch only);
+// a tropism at 90 degrees (plagiotropism) bends the heading to the plane across it.
+TEST(Cpfg, TropismsBendTheHeadingAndElasticityModulesChangeThem) {
+    ParseResult r = parse("Lsystem: 1\nderivation length: 0\nAxiom: &(90) F F [@Ts(1,0) F F] F @Ts(1,0) F F\nendlsystem\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    auto g = std::make_shared<Grammar>(*r.grammar);
+    g->settings.movements.push_back({false, {0, 1, 0}, 0, 0.2, 0});  // tropism: T: 0 1 0 E: 0.2
+    Geometry out;
+    interpret(g->axiom, *g, {0, 1, nullptr}, out);
+    ASSERT_EQ(out.cylinders.size(), 7u);
+    auto dir = [&](size_t k) { return glm::normalize(out.cylinders[k].end - out.cylinders[k].start); };
+    // &(90): the heading starts across +y; the first F turns it by 0.2 rad (|H x eT| = 0.2).
+    EXPECT_NEAR(std::asin(dir(0).y), 0.2f, 1e-4f);
+    EXPECT_GT(dir(1).y, dir(0).y);
+    EXPECT_NEAR(glm::length(dir(3) - dir(2)), 0.0f, 1e-5f);  // in the branch: elasticity 0, straight
+    EXPECT_NEAR(glm::length(dir(2) - dir(1)), 0.0f, 1e-5f);
+    EXPECT_GT(dir(4).y, dir(1).y);  // after ']' the elasticity is back
+    EXPECT_NEAR(glm::length(dir(6) - dir(4)), 0.0f, 1e-5f);  // @Ts(1,0): straight on
+    // A plagiotropism (A: 90) takes a heading along +y down towards the horizontal plane.
+    g->settings.movements = {{false, {0, 1, 0}, 90, 0.3, 0}};
+    ParseResult up = parse("Lsystem: 1\nderivation length: 0\nAxiom: &(10) F F F F F F F F F F F F\nendlsystem\n",
+                           parseOptionsFor(FileKind::Cpfg, ""));
+    auto g2 = std::make_shared<Grammar>(*up.grammar);
+    g2->settings.movements = g->settings.movements;
+    Geometry flat;
+    interpret(g2->axiom, *g2, {0, 1, nullptr}, flat);
+    const glm::vec3 last = glm::normalize(flat.cylinders.back().end - flat.cylinders.back().start);
+    EXPECT_LT(std::fabs(last.y), 0.05f);
+}
+
 TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
     ParseResult r = parse("derivation length: 0\nwidth: 0.5\nAxiom: @Gs F(1) +(30) F(1) @Gc(5) +(30) F(1) @Ge(5)\n",
                           parseOptionsFor(FileKind::Cpfg, ""));

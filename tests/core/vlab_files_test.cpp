@@ -112,6 +112,22 @@ TEST(VlabViewFile, WrongValuesNameTheLineAndWhatWasExpected) {
     EXPECT_EQ(v.viewpoint, (Vec3{0, 0, 1}));  // the default kept
 }
 
+// movements.c's read_movement: T's direction made unit (or of length I, at most as long as T),
+// A, E, S by their first letter; a tropism without a direction is an error at its line.
+TEST(VlabViewFile, TropismAndTorqueLinesAreMovements) {
+    const ViewFile v = readViewFile("tropism: T: 0 2 0 I: 0.5 A: 90 E: 0.3 S: 0.1\ntorque: T: 3,0,4\ntropism: A: 10\n");
+    ASSERT_EQ(v.movements.size(), 2u);
+    EXPECT_FALSE(v.movements[0].torque);
+    EXPECT_NEAR(v.movements[0].direction[1], 0.5, 1e-12);
+    EXPECT_DOUBLE_EQ(v.movements[0].angle, 90);
+    EXPECT_DOUBLE_EQ(v.movements[0].elasticity, 0.3);
+    EXPECT_DOUBLE_EQ(v.movements[0].step, 0.1);
+    EXPECT_TRUE(v.movements[1].torque);
+    EXPECT_NEAR(v.movements[1].direction[0], 0.6, 1e-12);
+    EXPECT_NEAR(v.movements[1].direction[2], 0.8, 1e-12);
+    EXPECT_TRUE(hasMessage(v.diagnostics, 3, "a direction 'T: x y z' that is not 0 0 0", Severity::Error));
+}
+
 TEST(VlabAnimationFile, ReadsTheFramesAndTheFlags) {
     const AnimationFile a = readAnimationFile(
         "double buffer: off\nclear between frames: on\nswap interval: 0\nfirst frame: 2\nlast frame: 10\nstep: 3\nwhat: 1\n");

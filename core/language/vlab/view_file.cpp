@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <type_traits>
 
@@ -131,6 +132,58 @@ Vec3 unit(Vec3 v) {
 
 // [SECTION] The turtle's commands
 
+// `tropism: T: 0 1 0 A: 90 E: 0.1 S: 0.05` (movements.c): fields by their first letter.
+void movementCommand(const Command& c) {
+    Movement m;
+    m.torque = c.name == "torque:";
+    m.line = c.line;
+    std::vector<std::string> words;
+    for (std::string w = c.values.rest(), cur; char ch : w + " ") {
+        if (ch == ' ' || ch == '\t' || ch == ':' || ch == ',') {
+            if (!cur.empty()) words.push_back(cur), cur.clear();
+        } else {
+            cur += ch;
+        }
+    }
+    double intensity = 1;
+    bool direction = false, intensityGiven = false;
+    auto number = [&](size_t& k, double& into) {
+        if (k + 1 >= words.size()) return false;
+        char* end = nullptr;
+        const double v = std::strtod(words[k + 1].c_str(), &end);
+        if (end == words[k + 1].c_str() || *end != '\0' || !std::isfinite(v)) return false;
+        into = v;
+        ++k;
+        return true;
+    };
+    for (size_t k = 0; k < words.size(); ++k) {
+        const char f = words[k][0];
+        bool ok = true;
+        if (f == 'T') {
+            for (double& x : m.direction) ok = ok && number(k, x);
+            direction = ok;
+        } else if (f == 'I') {
+            ok = intensityGiven = number(k, intensity);
+        } else if (f == 'A') {
+            ok = number(k, m.angle);
+        } else if (f == 'E') {
+            ok = number(k, m.elasticity);
+        } else if (f == 'S') {
+            ok = number(k, m.step);
+        } else {
+            return c.warn("unknown field '" + words[k] + "' (cpfg reads T:, I:, A:, E: and S:): the line is left out, as cpfg leaves it");
+        }
+        if (!ok) return c.expected("'T: x y z' and then I:, A:, E: or S: with a number each");
+    }
+    const double n = std::sqrt(m.direction[0] * m.direction[0] + m.direction[1] * m.direction[1] + m.direction[2] * m.direction[2]);
+    if (!direction || n == 0) return c.expected("a direction 'T: x y z' that is not 0 0 0");
+    // cpfg: the direction made unit, or with I: its length I, at most 1 (as long as T's)
+    const double scale = intensityGiven ? std::clamp(intensity / n, -1.0, 1.0) : 1 / n;
+    for (double& x : m.direction) x *= scale;
+    if (c.out.movements.size() >= 10) return c.warn("cpfg keeps at most 10 tropisms and torques: this one is left out");
+    c.out.movements.push_back(m);
+}
+
 bool turtleCommand(const Command& c) {
     ViewFile& o = c.out;
     const std::string& n = c.name;
@@ -171,6 +224,8 @@ bool turtleCommand(const Command& c) {
     } else if (n == "tropism direction:") {
         Vec3 v{};
         if (c.three(v)) o.tropismDirection = unit(v);
+    } else if (n == "tropism:" || n == "torque:") {
+        return movementCommand(c), true;
     } else if (n == "initial elasticity:") {
         c.one(o.elasticity);
     } else if (n == "elasticity increment:") {
@@ -321,7 +376,7 @@ bool fileCommand(const Command& c) {
 // Commands cpfg reads that concern its own window, its other renderers or its environment
 // programs: kept as written.
 bool keptCommand(const Command& c) {
-    static const char* kept[] = {"font:", "winfont:", "tropism:", "torque:", "rayshade objects:", "rayshade scale:",
+    static const char* kept[] = {"font:", "winfont:", "rayshade objects:", "rayshade scale:",
                                  "environment display:", "generate on view change:", "concave polygons:",
                                  "shadow map:", "PS linecap:"};
     for (const char* k : kept)

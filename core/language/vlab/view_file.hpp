@@ -47,6 +47,17 @@ struct OtherCommand {
     int line = 0;
 };
 
+// cpfg's `tropism: T: x y z [I: intensity] [A: angle] [E: elasticity] [S: step]` and
+// `torque: T: ...` (movements.c's read_movement): the direction times the intensity, the
+// angle it tends to make with the heading (90: plagiotropism), the elasticity, and the step
+// that @Ti and @Td add and take without a value.
+struct Movement {
+    bool torque = false;
+    Vec3 direction{0, 0, 0};
+    double angle = 0, elasticity = 0, step = 0;
+    int line = 0;
+};
+
 struct ViewFile {
     // The turtle (cpfg's DRAWPARAM), with cpfg's defaults (InitializeParameters).
     std::optional<double> angleIncrement;  // degrees; `angle factor: n` gives 360 / n (default 45)
@@ -59,6 +70,7 @@ struct ViewFile {
     bool lineStyleSet = false;
     std::optional<Vec3> tropismDirection;  // unit length
     double elasticity = 0, elasticityIncrement = 0;
+    std::vector<Movement> movements;       // `tropism:` and `torque:` lines, at most 10 (cpfg's MAXMOVEMENTS)
     bool twistOfCylinders = false;         // `twist of cylinders: on`
     bool taperedLines = true;
     int contourSides = 8;                  // `contour sides:`, or 2^(level+1) by `polygonization level:`
