@@ -64,5 +64,40 @@ TEST(ViewerVlabObject, AFolderOrAFileInItOpensTheObject) {
     fs::remove_all(folder);
 }
 
+// A VLab object's panel (panel.l, `panel panel.l | awkped plant.l`): the viewer shows its
+// slider (vlabObject()->panels) and moving it rewrites the #define and derives again, as the
+// panel's messages do in VLab.
+TEST(ViewerVlabObject, APanelSliderRewritesItsDefineAndTheObjectGrowsAgain) {
+    const fs::path folder = fs::path(testing::TempDir()) / ("sprout_viewer_panel_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "specifications") << "plant.l\npanel.l\nmodel:\n\tcpfg plant.l plant.v\npanel:\n\tpanel panel.l | awkped plant.l\n";
+    std::ofstream(folder / "plant.l") << "#define STEPS 2\nLsystem: 1\nderivation length: STEPS\nAxiom: A\nA --> F[+A]A\nendlsystem\n";
+    std::ofstream(folder / "plant.v") << "angle factor: 8\n";
+    std::ofstream(folder / "panel.l") << "target: Lsystem\npanel name: Growth\n\ntype: SLIDER\nname: Steps\nmin/max: 1 8\n"
+                                          "value: 2\nmessage: d STEPS %d 1\n";
+    ViewerState s(folder / "autosave");
+    std::string error;
+    ASSERT_TRUE(s.open(folder, error)) << error;
+    ASSERT_TRUE(s.vlabObject());
+    ASSERT_EQ(s.vlabObject()->panels.size(), 1u);
+    ASSERT_EQ(s.vlabObject()->panels[0].items.size(), 1u);
+    const auto& slider = s.vlabObject()->panels[0].items[0];
+    EXPECT_TRUE(slider.slider);
+    EXPECT_EQ(slider.define, "STEPS");
+    s.waitForPlant();
+    ASSERT_TRUE(s.plant());
+    EXPECT_EQ(s.plant()->iterations, 2);
+    const size_t before = s.plant()->geometry->cylinders.size();
+    s.setDefineValue(slider.define, 5);  // what the panel's slider does when dragged to 5
+    EXPECT_NE(s.text().find("#define STEPS 5"), std::string::npos) << s.text();
+    s.waitForPlant();
+    ASSERT_TRUE(s.plant());
+    EXPECT_EQ(s.plant()->iterations, 5);
+    EXPECT_GT(s.plant()->geometry->cylinders.size(), before);
+    EXPECT_TRUE(s.vlabObject());  // still the object
+    fs::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace sprout::viewer
