@@ -19,10 +19,12 @@
 #include "core/language/grammar.hpp"
 #include "core/language/import/import.hpp"
 #include "core/language/vlab/animation_file.hpp"
+#include "core/language/vlab/background_scene.hpp"
 #include "core/language/vlab/colours.hpp"
 #include "core/language/vlab/view_file.hpp"
 #include "core/language/vlab/curve_files.hpp"
 #include "core/base/rng.hpp"
+#include "core/turtle/background_scene.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
 
@@ -147,6 +149,27 @@ using namespace sprout;
 
 }  // namespace
 
+// The same bytes as a background scene (cpfg's `background scene:`), which may #include
+// "part.dat" (its first half), read and drawn: every message at a line, every point finite.
+[[maybe_unused]] void fuzzBackgroundScene(const std::string& input) {
+    vlab::BackgroundScene scene;
+    vlab::readBackgroundScene(input, "fuzz.dat", scene,
+                              [&](const std::string&, const std::string& name, std::string& path, std::string& error) {
+                                  path = name;
+                                  if (name != "part.dat") error = "no such file";
+                                  return name == "part.dat" ? std::optional<std::string>(input.substr(0, input.size() / 2))
+                                                            : std::optional<std::string>();
+                              });
+    for (const auto& p : scene.problems)
+        if (p.diagnostic.line < 1) fail("a background scene's message has no line");
+    scene.sides = 3 + int(input.size() % 20);
+    Geometry g;
+    if (drawBackgroundScene(scene, g) > kMaxBackgroundTriangles) fail("too many background triangles");
+    for (const glm::vec3& p : g.polygons.positions)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) fail("a background scene's point is not finite");
+    if (g.polygons.indices.size() / 3 > kMaxBackgroundTriangles || !g.bounds.empty) fail("the background scene's triangles");
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string input(reinterpret_cast<const char*>(data), size);
 #if defined(SPROUT_FUZZ_PARSER)
@@ -215,6 +238,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::string error;
     if (!vlab::readMaterials(input, error) && error.empty()) fail("a refused material set says nothing");
     if (!vlab::readColourMap(input, error) && error.empty()) fail("a refused colour map says nothing");
+    fuzzBackgroundScene(input);
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);

@@ -44,7 +44,8 @@ std::string rgb(std::uint32_t c) {
 bool writeSvg(const Geometry& g, const std::string& path, const ExportOptions& o, ExportStats& st, std::string& error) {
     // The plane: drop the axis along which the plant is flattest (planar systems), else the
     // front view (x right, y up) the renderer shows.
-    const glm::vec3 size = g.bounds.empty ? glm::vec3(1.0f) : g.bounds.size();
+    const Bounds bounds = g.extent();  // the plant and a VLab object's background scene
+    const glm::vec3 size = bounds.empty ? glm::vec3(1.0f) : bounds.size();
     Projection pr;
     if (g.planarCurve) {
         int flat = size.x <= size.y && size.x <= size.z ? 0 : size.y <= size.z ? 1 : 2;
@@ -56,8 +57,8 @@ bool writeSvg(const Geometry& g, const std::string& path, const ExportOptions& o
     pr.scale = 1000.0f / big;
     const float margin = 20.0f;
     const float W = w * pr.scale + 2 * margin, H = h * pr.scale + 2 * margin;
-    pr.ou = (g.bounds.empty ? 0 : g.bounds.min[pr.u]) - margin / pr.scale;
-    pr.ov = (g.bounds.empty ? 0 : g.bounds.min[pr.v]) - margin / pr.scale;
+    pr.ou = (bounds.empty ? 0 : bounds.min[pr.u]) - margin / pr.scale;
+    pr.ov = (bounds.empty ? 0 : bounds.min[pr.v]) - margin / pr.scale;
     pr.height = H;
     const float minWidth = 0.6f;  // a hairline still shows
 

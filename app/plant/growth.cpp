@@ -1,5 +1,7 @@
 #include "app/plant/growth.hpp"
 
+#include "app/plant/vlab_background.hpp"
+
 namespace sprout {
 
 Growth::Growth(std::shared_ptr<const Grammar> grammar, DeriveOptions options) : m_derivation(std::move(grammar), std::move(options)) {}
@@ -13,7 +15,9 @@ DeriveOutcome Growth::grow(int n, const DeriveLimits& limits) {
 }
 
 TurtleStats Growth::draw(int n, const TurtleOptions& options, Geometry& out) {
-    return interpret(*m_derivation.step(n), m_derivation.grammar(), options, out);
+    const TurtleStats stats = interpret(*m_derivation.step(n), m_derivation.grammar(), options, out);
+    drawPictureBackground(m_derivation.grammar().settings, out);  // a VLab object's background scene
+    return stats;
 }
 
 bool growAndDraw(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options, Geometry& out,
@@ -30,7 +34,9 @@ bool growAndDraw(std::shared_ptr<const Grammar> grammar, int n, const DeriveOpti
 }
 
 TurtleStats drawAsIs(const ModuleString& s, const Grammar& grammar, const TurtleOptions& options, Geometry& out) {
-    return interpret(s, grammar, options, out);
+    const TurtleStats stats = interpret(s, grammar, options, out);
+    drawPictureBackground(grammar.settings, out);
+    return stats;
 }
 
 }  // namespace sprout

@@ -21,7 +21,8 @@ public:
     // Step n derived and checked against what the turtle may draw within `limits` (too many
     // segments or polygons: TooBig, at once, not after the turtle ran out of memory).
     DeriveOutcome grow(int n, const DeriveLimits& limits);
-    // Step n drawn by the turtle, once derive() or grow() reached it.
+    // Step n drawn by the turtle, once derive() or grow() reached it, with a VLab object's
+    // background scene after it (vlab_background.hpp).
     TurtleStats draw(int n, const TurtleOptions& options, Geometry& out);
     // Step n as derived, its modules' ages (DeriveOptions::trackAges) and its seed.
     std::shared_ptr<const ModuleString> step(int n) { return m_derivation.step(n); }
@@ -39,8 +40,9 @@ private:
 bool growAndDraw(std::shared_ptr<const Grammar> grammar, int n, const DeriveOptions& options, Geometry& out,
                  std::string& error, std::uint64_t* seed = nullptr);
 
-// A string drawn as it is with `grammar`'s interpretation: an L-Py model's kept drawing (a
-// grammar with no rules whose axiom is its string), a step Python's Plant keeps.
+// A string drawn as it is with `grammar`'s interpretation (and its background scene): an L-Py
+// model's kept drawing (a grammar with no rules whose axiom is its string), a step Python's
+// Plant keeps.
 TurtleStats drawAsIs(const ModuleString& s, const Grammar& grammar, const TurtleOptions& options, Geometry& out);
 
 }  // namespace sprout

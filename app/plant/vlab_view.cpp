@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "app/plant/vlab_background.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/vlab/colours.hpp"
 
@@ -87,6 +88,7 @@ VlabPicture readVlabPicture(const VlabObject& object) {
         }
     }
     readColours(object, out);
+    if (out.view) out.backgroundScene = readVlabBackground(object, *out.view, out.notes);
     out.width = object.width;
     out.height = object.height;
     return out;
@@ -125,6 +127,7 @@ void applyVlabPicture(const VlabPicture& p, Settings& st) {
         picture.ink = st.palette[size_t(st.initialColour) % st.palette.size()] >> 8;
     }
     picture.background = p.background;
+    picture.backgroundScene = p.backgroundScene;
     picture.width = p.width;
     picture.height = p.height;
     if (p.animation) picture.frames = p.animation->frames(st.iterations);

@@ -5,6 +5,7 @@
 // light, background, window size and animated steps its Settings::picture, which the
 // renderer's callers frame the picture with (app/snapshot, the viewer).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "app/plant/vlab_panel.hpp"
 #include "core/language/grammar.hpp"
 #include "core/language/vlab/animation_file.hpp"
+#include "core/language/vlab/background_scene.hpp"
 #include "core/language/vlab/view_file.hpp"
 
 namespace sprout {
@@ -25,6 +27,8 @@ struct VlabPicture {
     std::vector<std::uint32_t> palette;
     std::optional<std::uint32_t> background;  // 0xRRGGBB: colour 0 of the map, or material 0's emission
     int width = 0, height = 0;
+    // The view file's `background scene:`, read (vlab_background.hpp); null when none is drawn.
+    std::shared_ptr<const vlab::BackgroundScene> backgroundScene;
     // What is wrong in these files, each a whole line with its file (FILE:line:col: or
     // FILE: byte N:); cpfg goes on with its defaults, and so does Sprout.
     std::vector<std::string> notes;

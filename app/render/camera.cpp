@@ -144,7 +144,9 @@ Camera frameGeometry(const Geometry& g, float aspect, ViewPreset view) {
         pts.push_back({s.position, 0});  // a blade: its base and tip
         pts.push_back({s.position + s.heading * s.size, 0});
     }
-    for (std::size_t i = 0; i < g.polygons.positions.size(); i += stride) pts.push_back({g.polygons.positions[i], 0});
+    for (std::size_t i = 0; i < g.polygons.positions.size(); i += stride)
+        if (i < g.backdropFirst || i - g.backdropFirst >= g.backdropCount)  // a background scene is not framed
+            pts.push_back({g.polygons.positions[i], 0});
     if (pts.empty()) return c;
     const glm::vec3 dir = glm::normalize(c.eye() - c.target);
     const glm::vec3 up = std::fabs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);

@@ -64,7 +64,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     const UnitMeshes& meshes = unitMeshes();
     out = PreparedScene();
     out.detail = detail;
-    out.bounds = g.bounds;
+    out.bounds = g.extent();  // the plant and a VLab object's background scene: the clip planes hold both
     out.planarCurve = g.planarCurve;
     out.cylinders = g.cylinders.size();
     out.surfaces = g.surfaces.size();
@@ -227,10 +227,11 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         // is clustered on a grid of 1/200 of the scene (about two pixels of a framed view at
         // half size), or coarser while that leaves more than kMovingTriangles (down to 1/50),
         // with the stems' lines.
-        const glm::vec3 size = g.bounds.empty ? glm::vec3(1) : g.bounds.size();
+        const Bounds all = g.extent();
+        const glm::vec3 size = all.empty ? glm::vec3(1) : all.size();
         const float extent = std::max({size.x, size.y, size.z, 1e-6f});
         for (float cells : {200.0f, 140.0f, 100.0f, 70.0f, 50.0f}) {
-            out.proxyBaked = clusterMesh(out.baked, g.bounds, extent / cells);
+            out.proxyBaked = clusterMesh(out.baked, all, extent / cells);
             if (out.proxyBaked.indices.size() / 3 <= PreparedScene::kMovingTriangles) break;
         }
         out.proxy = out.lines;

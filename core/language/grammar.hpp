@@ -21,6 +21,10 @@
 
 namespace sprout {
 
+namespace vlab {
+struct BackgroundScene;  // core/language/vlab/background_scene.hpp
+}
+
 // A value with optional seeded jitter: `angle: 22 ~ 4` is mean 22, sigma 4.
 struct Jittered {
     double mean = 0;
@@ -44,6 +48,8 @@ struct PictureView {
     std::optional<std::uint32_t> ink;  // 0xRRGGBB: a planar curve's colour (its initial colour)
     int width = 0, height = 0;  // -w: the window's size (0: unset)
     std::vector<int> frames;    // the derivation steps an animation shows (empty: all)
+    // `background scene:`: drawn after the plant (app/plant/growth.cpp), null when none.
+    std::shared_ptr<const vlab::BackgroundScene> backgroundScene;
 };
 
 struct Settings {

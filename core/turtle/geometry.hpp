@@ -75,6 +75,17 @@ struct Geometry {
         std::uint32_t colour;  // 0xRRGGBBAA
     };
     std::vector<Label> labels;
+    // A VLab object's background scene (cpfg's `background scene:`, background_scene.hpp): its
+    // triangles are in `polygons`, the vertices from `backdropFirst` (`backdropCount` of them).
+    // `bounds` leaves them out, as cpfg frames the plant alone; `backdrop` holds theirs.
+    Bounds backdrop;
+    std::uint32_t backdropFirst = 0, backdropCount = 0;
+    // All that is drawn: the plant's bounds and the background scene's (clip planes, exports).
+    Bounds extent() const {
+        Bounds b = bounds;
+        b.add(backdrop);
+        return b;
+    }
 
     void clear();  // keeps capacity: re-interpretation reuses the buffers
     std::uint64_t bytes() const;  // what its instances, triangles and labels take

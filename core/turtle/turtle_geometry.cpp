@@ -522,6 +522,8 @@ void Geometry::clear() {
     polygons.clear();
     labels.clear();
     bounds = {};
+    backdrop = {};
+    backdropFirst = backdropCount = 0;
     planarCurve = false;
 }
 

@@ -352,7 +352,21 @@ bool fileCommand(const Command& c) {
         f.file = c.values.word();
         if (!id || f.file.empty()) return c.expected("a contour's number and its file"), true;
         f.numbers.push_back(*id);
-    } else if (n == "function:" || n == "curve:" || n == "function set:" || n == "blob:" || n == "background scene:") {
+    } else if (n == "background scene:") {
+        // cpfg (ReadBackgroundSceneFile): the rest of the line, files separated by spaces,
+        // commas or semicolons, read one after the other.
+        const std::string rest = c.values.rest();
+        for (size_t i = 0; i < rest.size();) {
+            const size_t end = std::min(rest.find_first_of(" \t,;", i), rest.size());
+            if (end > i) {
+                f.file = rest.substr(i, end - i);
+                c.out.files.push_back(f);
+            }
+            i = end + 1;
+        }
+        if (f.file.empty()) c.expected("a file");
+        return true;
+    } else if (n == "function:" || n == "curve:" || n == "function set:" || n == "blob:") {
         f.file = c.values.word();
         if (f.file.empty()) return c.expected("a file"), true;
         while (auto v = c.values.number()) f.numbers.push_back(*v);
