@@ -205,8 +205,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 #elif defined(SPROUT_FUZZ_ENVIRO)
     runEnvironment(input);
 #elif defined(SPROUT_FUZZ_VLAB)
-    // cpfg's function and contour files, each format read, evaluated and sampled; then func()
-    // and @# in a small grammar with what was read.
+    // cpfg's function, contour and curve files, each format read, evaluated and sampled; then
+    // func(), curveX(), curveGAL() and @# in a small grammar with what was read.
     auto tables = std::make_shared<CurveTables>();
     FunctionRead f = readFunction(input, "fuzz.func", 100);
     for (double x : {-1.0, 0.0, 0.37, 1.0, 2.0}) (void)f.function(x);
@@ -219,10 +219,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         tables->contours.emplace(1, *c.contour);
     }
     for (const Contour& k : readContourSet(input, "fuzz.cset").contours) (void)k.sampled(8);
+    CurveRead crv = readCurve(input, "fuzz.crv", 20);  // a `curve:` line's file
+    if (!crv.ok() && crv.diagnostics.empty()) fail("a refused curve says nothing");
+    for (double t : {-1.0, 0.0, 0.37, 1.0, 2.0}) (void)crv.curve.at(t);
+    tables->curves.push_back(crv.curve);
     ParseOptions o = parseOptionsFor(FileKind::Cpfg, "");
     o.curves = tables;
     ParseResult r = parse("Lsystem: 1\nderivation length: 2\nAxiom: #(1) @!(5) @#(1) @Gs A(0) @Ge\n"
-                          "A(t) --> F(func(1, t / 2)) A(t + 1)\nendlsystem\n", o);
+                          "A(t) --> F(func(1, t / 2)) f(curveX(1, t / 2) + curveGAL(1)) A(t + 1)\nendlsystem\n", o);
     int n = 0;
     if (auto d = deriveSome(r, 2, n)) {
         Geometry g;

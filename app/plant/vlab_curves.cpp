@@ -1,5 +1,6 @@
 #include "app/plant/vlab_curves.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 
@@ -41,6 +42,21 @@ VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options)
             FunctionSetRead r = loadFunctionSet(path);
             note(r.diagnostics);
             tables->setFunctionSet(std::move(r.functions));
+            any = true;
+        } else if (f.command == "curve") {  // ids from 1 in the lines' order, a file unread too (cpfg)
+            int samples = 100;                // cpfg's `curve: FILE [SAMPLES]`
+            if (!f.numbers.empty()) {
+                const double n = std::trunc(f.numbers[0]);  // fscanf's %d
+                const int most = CurveXYZ::kMaxSamples;
+                samples = !(n >= 2) ? 2 : n > most ? most : int(n);
+                if (samples != n)
+                    out.problems.push_back(object->view + ":" + std::to_string(f.line) + ": 'curve: " + f.file +
+                                           " SAMPLES' measures the curve at 2 to " + std::to_string(most) +
+                                           " points (cpfg's count, 100 by default): " + std::to_string(samples) + " used");
+            }
+            CurveRead r = loadCurve(path, samples);
+            note(r.diagnostics);
+            tables->curves.push_back(std::move(r.curve));
             any = true;
         } else if (f.command == "contour" && !f.numbers.empty()) {
             ContourRead r = loadContour(path);

@@ -1,6 +1,6 @@
 #pragma once
-// A VLab object's functions, contours and surfaces: the files its view file names
-// (`function:`, `function set:`, `contour:`, `contour sides:`, `surface:`), read
+// A VLab object's functions, curves, contours and surfaces: the files its view file names
+// (`function:`, `function set:`, `curve:`, `contour:`, `contour sides:`, `surface:`), read
 // (core/language/vlab/curve_files.hpp) into what the parse of its L-system takes
 // (ParseOptions::curves and ::surfaces). openText calls it for an L-system inside an object.
 #include <string>

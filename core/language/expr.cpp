@@ -469,7 +469,7 @@ private:
             n->a = std::move(args[0]);
             return n;
         }
-        if (name == "func") return funcCall(start, std::move(args));
+        if (const std::optional<CurveCall> c = curveCallNamed(name)) return funcCall(*c, name, start, std::move(args));
         // cpfg's names: ran(x) is uniform in [0, x), nran(mean, sigma) normal, random(a, b) uniform.
         if (name == "rand" || name == "uniform" || name == "normal" || name == "gauss" || name == "ran" ||
             name == "nran" || name == "random") {
@@ -516,34 +516,33 @@ private:
         return makeConst(0);
     }
 
-    // cpfg's func(id, x): the id-th function of the view file (a number, or a function set's
-    // name); an id with no function gives 0 there, as in cpfg, and a warning here.
-    NodePtr funcCall(size_t start, std::vector<NodePtr> args) {
+    // cpfg's func(id, x), curveX/Y/Z(id, t) and curveGAL(id): the id-th function (a number, or
+    // a function set's name) or curve of the view file; an id with none gives 0 there, as in
+    // cpfg, and a warning here.
+    NodePtr funcCall(CurveCall c, const std::string& name, size_t start, std::vector<NodePtr> args) {
+        const bool func = c == CurveCall::Func;
         if (!m_scope.curves) {
-            fail(start, "func() needs cpfg's functions: the view file's 'function:' or 'function set:' lines "
-                        "(open the VLab object's folder)");
+            fail(start, name + "() needs cpfg's " + (func ? "functions: the view file's 'function:' or 'function set:' lines" :
+                                                            "curves: the view file's 'curve:' lines") + " (open the VLab object's folder)");
             return makeConst(0);
         }
-        if (args.size() != 2) {
-            fail(start, "'func' takes 2 arguments (a function and x), not " + std::to_string(args.size()));
+        const size_t want = c == CurveCall::CurveLength ? 1 : 2;
+        if (args.size() != want) {
+            fail(start, "'" + name + "' takes " + (want == 1 ? "1 argument (a curve)" : func ? "2 arguments (a function and x)" :
+                                                   "2 arguments (a curve and t in [0, 1])") + ", not " + std::to_string(args.size()));
             return makeConst(0);
         }
+        if (want == 1) args.push_back(makeConst(0));  // curveGAL(id): the second is not used
         const CurveTables& t = *m_scope.curves;
-        if (args[0]->op == Op::Const && !(args[0]->value >= 1 && args[0]->value < double(t.functions.size()) + 1))
-            warn(start, "func(" + formatId(args[0]->value) + ", ...): there " + (t.functions.size() == 1 ? "is " : "are ") +
-                            std::to_string(t.functions.size()) + " function" + (t.functions.size() == 1 ? "" : "s") +
-                            " (numbered from 1): it gives 0, as in cpfg");
-        if (args[0]->op == Op::Const && args[1]->op == Op::Const) return makeConst(t.func(args[0]->value, args[1]->value));
+        if (args[0]->op == Op::Const)
+            if (std::string problem = t.idProblem(c, args[0]->value); !problem.empty()) warn(start, std::move(problem));
+        if (args[0]->op == Op::Const && args[1]->op == Op::Const) return makeConst(t.call(c, args[0]->value, args[1]->value));
         auto n = std::make_unique<Node>();
         n->op = Op::Func;
+        n->fn = std::uint8_t(c);
         n->a = std::move(args[0]);
         n->b = std::move(args[1]);
         return n;
-    }
-    static std::string formatId(double v) {
-        char b[32];
-        std::snprintf(b, sizeof b, "%g", v);
-        return b;
     }
     // A warning at `at` (inside a #define's body: at its use).
     void warn(size_t at, std::string msg) {

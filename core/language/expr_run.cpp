@@ -82,7 +82,7 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Normal: --sp; st[sp - 1] = rng.exprNormal(st[sp - 1], st[sp]); break;
             case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
             case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
-            case Op::Func: --sp; st[sp - 1] = m_curves->func(st[sp - 1], st[sp]); break;
+            case Op::Func: --sp; st[sp - 1] = m_curves->call(CurveCall(in.fn), st[sp - 1], st[sp]); break;
             case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
             case Op::Srand:  // cpfg casts to a long: out of range or NaN is 0 here, never UB
                 rng.exprSeed(std::fabs(st[sp - 1]) < 9e18 ? std::int64_t(st[sp - 1]) : 0);
@@ -100,7 +100,8 @@ double Expr::run(const double* slots, Rng& rng) const {
 }
 
 std::vector<std::string> builtinFunctionNames() {
-    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func"};
+    std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func",
+                                   "curveX", "curveY", "curveZ", "curveGAL"};
     for (auto& f : kFunctions1) names.push_back(f.name);
     for (auto& f : kFunctions2) names.push_back(f.name);
     return names;

@@ -13,6 +13,10 @@
 //   wrapping round), resampled to `sides` points equally spaced along its length (cpfg's
 //   `contour sides:`, 8 by default); a closed contour is turned so that its first point lies
 //   on the x axis. cpfg draws x along the turtle's up and y along its right (-left).
+//   Curves (cpfg/curveXYZ.cpp, the `curve:` lines' files, cuspy's `version: 1.4`): control
+//   points in 3D, a B-spline (open, closed, end-point or phantom), Bezier segments or a Bezier
+//   surface; curveX/Y/Z(id, t) is the point at the fraction t of its length (measured along
+//   `samples` points of it), curveGAL(id) that length.
 //
 // Every reader returns what it read and the problems found, each at its line and column with
 // what was expected there; it never throws, and nothing in a file can make it loop long.
@@ -115,11 +119,75 @@ ContourRead loadContour(const std::filesystem::path& path);
 ContourSetRead readContourSet(std::string_view text, const std::string& fileName);
 ContourSetRead loadContourSet(const std::filesystem::path& path);
 
+// [SECTION] Curves
+
+// A `curve:` line's curve: cpfg's CCurveXYZ, evaluated in its order of operations.
+class CurveXYZ {
+public:
+    // cpfg's `type:` (bspline, bspline-closed, bspline-endpoint, bspline-phantom, bezier,
+    // bezier-surface; any other word is bspline).
+    enum class Type : std::uint8_t { BSpline, Closed, Endpoint, Phantom, Bezier, BezierSurface };
+    struct Point {
+        std::array<double, 3> p{0, 0, 0};
+        int multiplicity = 1;
+    };
+    static constexpr int kMaxSamples = 100000;
+
+    // cpfg's curve when its file cannot be read (CCurveXYZ's first curve, kept): the Bezier
+    // surface of a 4 x 4 grid of points from -1.5 to 1.5.
+    explicit CurveXYZ(int samples = 100);
+    // `points` as the file gives them (cpfg's createPPoints repeats each by its multiplicity,
+    // adds the closed curve's first three again or the phantom ends); `samples` (2 ..
+    // kMaxSamples, else the nearest) points along it measure its length.
+    CurveXYZ(std::string name, Type type, const std::vector<Point>& points, int samples);
+
+    const std::string& name() const { return m_name; }
+    Type type() const { return m_type; }
+    int samples() const { return m_samples; }
+    const std::vector<std::array<double, 3>>& points() const { return m_points; }  // expanded
+    double length() const { return m_length; }  // curveGAL: the polyline through the samples
+    // curveX/Y/Z(id, t) (cpfg's CurveCXS, calcAValue): t clamped to [0, 1] is a fraction of
+    // the length, found between two samples and interpolated there; NaN gives NaN.
+    std::array<double, 3> at(double t) const;
+    // The curve at its parameter t in [0, 1] (cpfg's calcPValue(0, t, s)); s: across a surface.
+    std::array<double, 3> atParameter(double t, double s = 0) const;
+
+private:
+    std::string m_name;
+    Type m_type = Type::BSpline;
+    int m_samples = 100;
+    std::vector<std::array<double, 3>> m_points;
+    std::vector<double> m_arc;  // the length up to each sample over the whole (cpfg's _l)
+    double m_length = 0;
+};
+
+struct CurveRead {
+    CurveXYZ curve;  // as cpfg has it: read up to the first problem (unread points at 0, 0, 0)
+    std::vector<CurveFileDiagnostic> diagnostics;
+    bool ok() const;
+};
+
+// A curve file as cpfg's CCurveXYZ::readCurve reads it, line by line: `//` comments,
+// `version:`, `contact:`, `end:`, `heading:`, `up:`, `size:`, `range:` (read, not used),
+// `points: N` (a curve of N points; inside one, the curve of the point before it, which cpfg
+// keeps but does not draw), `dimension: D` (2 to 4 numbers a point: x y [z [multiplicity]]),
+// `type:`, then the points; other lines with a ':' are skipped. Reading stops at the first
+// problem, as cpfg's does. `samples` is the `curve:` line's count (cpfg's 100 without one).
+// A file that cannot be read is cpfg's default curve, CurveXYZ(samples), and a diagnostic.
+CurveRead readCurve(std::string_view text, const std::string& fileName, int samples);
+CurveRead loadCurve(const std::filesystem::path& path, int samples);
+
 // [SECTION] What a grammar uses
 
-// The functions and contours a cpfg grammar runs with (from its view file's `function:`,
-// `function set:`, `contour:` and `contour sides:` lines), kept by the Grammar (ParseOptions::
-// curves) so that func() and @# use them at derive and draw time. Immutable once parsed.
+// The functions of curves and function files a grammar calls (Op::Func's `fn`).
+enum class CurveCall : std::uint8_t { Func, CurveX, CurveY, CurveZ, CurveLength };
+// func, curveX, curveY, curveZ, curveGAL; nullopt for another name.
+std::optional<CurveCall> curveCallNamed(std::string_view name);
+
+// The functions, curves and contours a cpfg grammar runs with (from its view file's
+// `function:`, `function set:`, `curve:`, `contour:` and `contour sides:` lines), kept by the
+// Grammar (ParseOptions::curves) so that func(), curveX() ... and @# use them at derive and
+// draw time. Immutable once parsed.
 struct CurveTables {
     std::vector<CurveFunction> functions;  // func(id, x): functions[id - 1]
     // cpfg defines each function of a function set by its name (`-DNAME=id`), but only while
@@ -135,8 +203,16 @@ struct CurveTables {
     // The id a name stands for in expressions (a function set's function), or 0.
     int functionId(std::string_view name) const;
     std::vector<std::string> functionNames() const;
+    std::vector<CurveXYZ> curves;     // curveX(id, t): curves[id - 1], in the `curve:` lines' order
+
     // cpfg's func(id, x): (int)id; out of range is 0 (cpfg warns and gives 0).
     double func(double id, double x) const;
+    // func(id, x), curveX/Y/Z(id, x) or curveGAL(id) (x unused): (int)id, from 1; an id out
+    // of range gives 0, as in cpfg.
+    double call(CurveCall c, double id, double x) const;
+    // What is wrong with a constant id (none, too big ...) for `c`, as a warning; "" when it is
+    // one of them.
+    std::string idProblem(CurveCall c, double id) const;
     // The cross-section of `@#(id)` as Sprout's generalized cylinder takes it (x along the
     // turtle's left, y along its up, the radius one unit): cpfg's points at `sides` (0:
     // contourSides), (x, y) -> (-y, x). Empty for an id with no contour (cpfg's circle).
