@@ -159,4 +159,39 @@ TEST(VlabPicture, TheAnimationFileSaysWhichStepsGrowthShows) {
     EXPECT_NE(bad.err.find((o.folder / "plant.a").string() + ":2:1: 'step:' expects a whole number; found 'often'"), std::string::npos) << bad.err;
 }
 
+// Issue 50: every object of VLab's manuals (../shared/corpus/vlab-manuals) opens as an object
+// and draws with `sprout render FOLDER`: exit 0, and a picture with something on it (pixels
+// other than the background's, the corner's colour). Names every one that does not.
+TEST(VlabPicture, EveryManualObjectDraws) {
+    const fs::path root = fs::path(SPROUT_SHARED_DIR) / "corpus" / "vlab-manuals";
+    if (!fs::is_directory(root)) GTEST_SKIP() << root << " is not here";
+    std::vector<fs::path> objects;
+    for (const auto& e : fs::recursive_directory_iterator(root))
+        if (e.path().filename() == "specifications") objects.push_back(e.path().parent_path());
+    std::sort(objects.begin(), objects.end());
+    const fs::path png = fs::path(testing::TempDir()) / ("vlab_manual_" + std::to_string(getpid()) + ".png");
+    std::string failures;
+    int drawn = 0;
+    for (const fs::path& folder : objects) {
+        const std::string name = fs::relative(folder, root).string();
+        fs::remove(png);
+        const Result r = runSprout("render " + folder.string() + " -o " + png.string() + " --size 160x160");
+        sprout::Image img;
+        std::string error;
+        if (r.code != 0 || !sprout::readPng(png.string(), img, error)) {
+            failures += "  " + name + ": " + (r.code != 0 ? r.err : error) + "\n";
+            continue;
+        }
+        size_t other = 0;
+        for (size_t i = 0; i + 3 < img.rgba.size(); i += 4)
+            other += std::abs(int(img.rgba[i]) - img.rgba[0]) + std::abs(int(img.rgba[i + 1]) - img.rgba[1]) +
+                         std::abs(int(img.rgba[i + 2]) - img.rgba[2]) > 24;
+        if (other * 500 < img.rgba.size() / 4) failures += "  " + name + ": the picture is empty\n";
+        else ++drawn;
+    }
+    fs::remove(png);
+    EXPECT_EQ(objects.size(), 29u);
+    EXPECT_EQ(drawn, int(objects.size())) << failures;
+}
+
 }  // namespace

@@ -99,5 +99,32 @@ TEST(ViewerVlabObject, APanelSliderRewritesItsDefineAndTheObjectGrowsAgain) {
     fs::remove_all(folder);
 }
 
+// Issue 50: every object of VLab's manuals opens in the viewer (File > Open on its folder) and
+// its plant is derived and drawn there (the window draws the same geometry: window tests).
+TEST(ViewerVlabObject, EveryManualObjectOpensAndDraws) {
+    const fs::path root = fs::path(SPROUT_SHARED_DIR) / "corpus" / "vlab-manuals";
+    if (!fs::is_directory(root)) GTEST_SKIP() << root << " is not here";
+    std::string failures;
+    int opened = 0;
+    for (const auto& e : fs::recursive_directory_iterator(root)) {
+        if (e.path().filename() != "specifications") continue;
+        const fs::path folder = e.path().parent_path();
+        ++opened;
+        ViewerState s(fs::path(testing::TempDir()) / ("sprout_viewer_manual_" + std::to_string(::getpid())));
+        std::string error;
+        if (!s.open(folder, error)) {
+            failures += "  " + folder.filename().string() + ": " + error + "\n";
+            continue;
+        }
+        s.waitForPlant();
+        const auto plant = s.plant();
+        if (!s.vlabObject() || !plant || !plant->geometry ||
+            plant->geometry->cylinders.size() + plant->geometry->surfaces.size() + plant->geometry->polygons.indices.size() == 0)
+            failures += "  " + folder.filename().string() + ": nothing drawn\n";
+    }
+    EXPECT_EQ(opened, 29);
+    EXPECT_TRUE(failures.empty()) << failures;
+}
+
 }  // namespace
 }  // namespace sprout::viewer
