@@ -33,6 +33,9 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
             else if (name == "@Ts") m_actions[s] = Act::ElasticSet;
             else if (name == "@Ti") m_actions[s] = Act::ElasticInc;
             else if (name == "@Td") m_actions[s] = Act::ElasticDec;
+            else if (name == "@PS") m_actions[s] = Act::PatchStart;
+            else if (name == "@PC") m_actions[s] = Act::PatchPoint;
+            else if (name == "@PD") m_actions[s] = Act::PatchDraw;
             m_scaled |= m_actions[s] == Act::ScaleSet || m_actions[s] == Act::ScaleMul || m_actions[s] == Act::ScaleDiv;
         }
         if (st.bracePaths && m_arity[s] > 0) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <array>
 #include <map>
 #include <unordered_map>
 #include <vector>
@@ -271,6 +272,14 @@ private:
     std::vector<std::array<float, 10>> m_elasticStack;
     [[gnu::noinline]] void movementAdjust(State& t);
     void elasticity(Act act, const double* p, int arity);
+    // cpfg's L-system defined surfaces (patches.c): 4 x 4 control points where the turtle stood.
+    struct Patch {
+        int basis = 1;  // 1 Bezier, 2 B-spline, 3 Cardinal
+        std::array<glm::vec3, 16> points{};
+        std::uint16_t assigned = 0;  // a bit per point
+    };
+    std::map<double, Patch> m_patches;
+    [[gnu::noinline]] void patchCommand(const State& t, Act act, const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     struct OpenCurve {
         GeneralizedCylinder curve;

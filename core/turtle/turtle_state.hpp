@@ -35,6 +35,7 @@ enum class Act : std::uint8_t {
     ScaleSet, ScaleMul, ScaleDiv, CpfgLabel,
     RadiusTangents,  // cpfg's @Gr(a1, l1, a2, l2) and @Gr(flag): the tubes' radius along a span
     ElasticSet, ElasticInc, ElasticDec,  // cpfg's @Ts, @Ti, @Td(id, value): a tropism's elasticity
+    PatchStart, PatchPoint, PatchDraw,   // cpfg's @PS(id, basis), @PC(id, row, col), @PD(id, s, t)
 };
 
 inline Act actionOf(const std::string& name) {

@@ -256,6 +256,9 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
         case Act::ElasticSet:
         case Act::ElasticInc:
         case Act::ElasticDec: elasticity(act, p, arity); break;
+        case Act::PatchStart:
+        case Act::PatchPoint:
+        case Act::PatchDraw: patchCommand(t, act, p, arity); break;
         case Act::ScaleSet:
             if (p && std::isfinite(*p)) t.length = float(*p) / m_invStep;
             break;

@@ -306,6 +306,26 @@ TEST(Cpfg, TropismsBendTheHeadingAndElasticityModulesChangeThem) {
     EXPECT_LT(std::fabs(last.y), 0.05f);
 }
 
+// cpfg's L-system defined surfaces (patches.c): @PC puts control points where the turtle is,
+// @PD(id, s, t) draws the Bezier patch as s x t quads: its corners are the corner points, and
+// the four inner points raised to 1 lift its middle to (3/8 + 3/8)^2 = 0.5625 (the two inner
+// Bezier weights at 1/2 are 3/8 each, in each direction).
+TEST(Cpfg, LsystemDefinedSurfaceIsDrawnThroughItsControlPoints) {
+    ParseResult r = parse("Lsystem: 1\nderivation length: 0\nAxiom: @PS(1,1) @M(0,0,0) @PC(1,0,0) @M(1,0,0) @PC(1,0,1) @M(2,0,0) @PC(1,0,2) @M(3,0,0) @PC(1,0,3) @M(0,1,0) @PC(1,1,0) @M(1,1,1) @PC(1,1,1) @M(2,1,1) @PC(1,1,2) @M(3,1,0) @PC(1,1,3) @M(0,2,0) @PC(1,2,0) @M(1,2,1) @PC(1,2,1) @M(2,2,1) @PC(1,2,2) @M(3,2,0) @PC(1,2,3) @M(0,3,0) @PC(1,3,0) @M(1,3,0) @PC(1,3,1) @M(2,3,0) @PC(1,3,2) @M(3,3,0) @PC(1,3,3) @PD(1,4,4) @PD(2)\nendlsystem\n",
+                          parseOptionsFor(FileKind::Cpfg, ""));
+    ASSERT_TRUE(r.ok());
+    Geometry g;
+    interpret(r.grammar->axiom, *r.grammar, {0, 1, nullptr}, g);
+    ASSERT_EQ(g.polygons.positions.size(), 25u);  // 5 x 5 vertices; patch 2 has no points: nothing
+    ASSERT_EQ(g.polygons.indices.size(), 4u * 4 * 6);
+    EXPECT_NEAR(glm::length(g.polygons.positions.front() - glm::vec3(0, 0, 0)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(g.polygons.positions.back() - glm::vec3(3, 3, 0)), 0.0f, 1e-5f);
+    const glm::vec3 middle = g.polygons.positions[12];
+    EXPECT_NEAR(middle.x, 1.5f, 1e-5f);
+    EXPECT_NEAR(middle.y, 1.5f, 1e-5f);
+    EXPECT_NEAR(middle.z, 0.5625f, 1e-5f);  // (3/8 + 3/8)^2
+}
+
 TEST(Cpfg, GeneralizedCylinderIsOneSmoothTube) {
     ParseResult r = parse("derivation length: 0\nwidth: 0.5\nAxiom: @Gs F(1) +(30) F(1) @Gc(5) +(30) F(1) @Ge(5)\n",
                           parseOptionsFor(FileKind::Cpfg, ""));
