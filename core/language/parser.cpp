@@ -176,6 +176,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
 
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
     ExprScope scope{nullptr, &m_g.defines, &m_macros, nullptr, nullptr, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     double v;

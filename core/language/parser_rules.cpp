@@ -64,6 +64,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
     ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -326,6 +327,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     prod.slotCount = int(params.size());
 
     ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     bool ok = true;
     for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
         Statement init;
