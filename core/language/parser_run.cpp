@@ -98,6 +98,17 @@ void Parser::lint() {
     // A deterministic context-free rule without a condition always applies, so later rules
     // for the same module are dead: say so rather than leave the user wondering.
     for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation, &m_g.decomposition}) {
+        // cpfg's stochastic L-system (a `seed:`) chooses among every production that applies,
+        // each of weight 1 unless given: none hides another, and weights need not add up to 1.
+        // Without `seed:` its probabilities are left out, as cpfg warns.
+        if (m_g.cpfgRandom && rs == &m_g.rules) {
+            for (const Production& p : rs->productions)
+                if (p.stochastic() && !m_g.settings.seedGiven)
+                    m_sink.add({p.line, 1, "a probability without 'seed:': left out, as cpfg leaves it out (the first production "
+                                           "that applies rewrites; a 'seed:' line makes the L-system stochastic)",
+                                Severity::Warning});
+            if (m_g.settings.seedGiven) continue;
+        }
         for (const auto& list : rs->bySymbol) {
             // Each sub-L-system's productions are their own (the first's lsystem is the one checked).
             const Production* total = nullptr;
@@ -117,7 +128,9 @@ void Parser::lint() {
                     continue;
                 }
                 bool unconditional = !p.condition && !p.hasContext();
-                if (unconditional && p.stochastic()) {
+                if (p.probabilityExpr) {
+                    guarded = true;  // cpfg's probability of the parameters
+                } else if (unconditional && p.stochastic()) {
                     probSum += p.probability;
                     ++probCount;
                 } else if (p.stochastic()) {
@@ -126,7 +139,7 @@ void Parser::lint() {
                     total = &p;
                 }
             }
-            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6) {
+            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6 && !(m_g.cpfgRandom && rs == &m_g.rules)) {
                 const Production& p = rs->productions[list.front()];
                 std::string sum, rest;
                 appendNumber(sum, probSum);
