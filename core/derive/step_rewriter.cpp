@@ -202,16 +202,21 @@ bool StepRewriter::matchLeft(const Production& p, size_t i) {
 }
 
 // The right context skips side branches and fails at the `]` that ends the current
-// branch; `[` and `]` written in the context match a branch start and a branch end.
+// branch; `[` and `]` written in the context match a branch start and a branch end. In cpfg
+// (generate.c, RconDiff) a bracket `ignore:` or `consider:` leaves out is passed like any
+// module left out, into a branch or out of it, and a `]` in the context matches the next
+// module only.
 bool StepRewriter::matchRight(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     const size_t N = m_in->size();
     size_t j = i + 1 + p.predRest.size();  // after the whole strict predecessor
     bool wrapped = false;
+    const bool cpfg = m_g.cpfgRandom;
+    auto left = [&](SymbolId s) {  // a module the context passes over
+        return m_g.ignored[m_g.alphabet[s].nameId] && (cpfg || (s != Alphabet::kPush && s != Alphabet::kPop));
+    };
     auto skipIgnored = [&] {
-        while (j < N && sym[j] != Alphabet::kPush && sym[j] != Alphabet::kPop &&
-               m_g.ignored[m_g.alphabet[sym[j]].nameId])
-            ++j;
+        while (j < N && left(sym[j])) ++j;
     };
     for (const PatternModule& pm : p.right) {
         if (!pm.wildcard && pm.symbol == m_skipToBranchEnd) {  // cpfg's `=`: on to this branch's end
@@ -225,7 +230,7 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             ++j;
             continue;
         }
-        if (!pm.wildcard && pm.symbol == Alphabet::kPop) {
+        if (!pm.wildcard && pm.symbol == Alphabet::kPop && !cpfg) {
             while (j < N && sym[j] != Alphabet::kPop)
                 j = sym[j] == Alphabet::kPush && m_match[j] != kUnmatched ? m_match[j] + 1 : j + 1;
             if (j >= N) return false;
@@ -239,13 +244,13 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             }
             if (j >= N) return false;
             SymbolId s = sym[j];
-            if (s == Alphabet::kPush) {
+            if (left(s)) {
+                ++j;
+            } else if (s == Alphabet::kPush) {
                 if (m_match[j] == kUnmatched) return false;
                 j = m_match[j] + 1;
-            } else if (s == Alphabet::kPop) {
+            } else if (s == Alphabet::kPop && !(cpfg && pm.symbol == Alphabet::kPop && !pm.wildcard)) {
                 return false;
-            } else if (m_g.ignored[m_g.alphabet[s].nameId]) {
-                ++j;
             } else {
                 break;
             }

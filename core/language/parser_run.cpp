@@ -324,7 +324,9 @@ ParseResult Parser::run() {
     if (m_considerSet) {  // cpfg `consider:`: only the listed modules count for contexts
         m_g.ignored.assign(m_g.alphabet.nameCount(), true);
         for (NameId n : m_considered) m_g.ignored[n] = false;
-        for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+        // cpfg leaves out the brackets it does not list too: its right context then passes
+        // them (generate.c); its left context follows them always.
+        for (size_t s = 0; s < m_g.alphabet.size() && !m_options.tabContinues; ++s) {
             const auto& sym = m_g.alphabet[SymbolId(s)];
             if (sym.name == "[" || sym.name == "]") m_g.ignored[sym.nameId] = false;
         }
