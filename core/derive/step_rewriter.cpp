@@ -57,6 +57,14 @@ StepRewriter::StepRewriter(const Grammar& g, const RuleSet& rules) : m_g(g), m_r
         Rng rng = g.cpfgRandom ? Rng::cpfg(0) : Rng(0);
         runStatements(g.startBlock, m_slots.data(), rng);
     }
+    m_persistLocals = g.cpfgRandom;
+    m_ignoreProbabilities = g.cpfgRandom && !g.settings.seedGiven;
+    m_keepState = m_persistLocals || std::any_of(rules.productions.begin(), rules.productions.end(),
+                                                 [](const Production& p) { return p.stochastic(); });
+    if (m_keepState) {
+        m_state.resize(rules.productions.size());
+        for (size_t k = 0; k < rules.productions.size(); ++k) m_state[k].assign(size_t(rules.productions[k].slotCount), 0.0);
+    }
     if (&rules == &g.rules) m_cut |= g.usesCut();  // a '%' in the axiom is cut at the first step
     if (g.cutInNextStep) m_cut = false;  // cpfg: the derivation cuts the input instead
     for (const Production& p : rules.productions) {
@@ -194,16 +202,21 @@ bool StepRewriter::matchLeft(const Production& p, size_t i) {
 }
 
 // The right context skips side branches and fails at the `]` that ends the current
-// branch; `[` and `]` written in the context match a branch start and a branch end.
+// branch; `[` and `]` written in the context match a branch start and a branch end. In cpfg
+// (generate.c, RconDiff) a bracket `ignore:` or `consider:` leaves out is passed like any
+// module left out, into a branch or out of it, and a `]` in the context matches the next
+// module only.
 bool StepRewriter::matchRight(const Production& p, size_t i) {
     const SymbolId* sym = m_in->symbols.data();
     const size_t N = m_in->size();
     size_t j = i + 1 + p.predRest.size();  // after the whole strict predecessor
     bool wrapped = false;
+    const bool cpfg = m_g.cpfgRandom;
+    auto left = [&](SymbolId s) {  // a module the context passes over
+        return m_g.ignored[m_g.alphabet[s].nameId] && (cpfg || (s != Alphabet::kPush && s != Alphabet::kPop));
+    };
     auto skipIgnored = [&] {
-        while (j < N && sym[j] != Alphabet::kPush && sym[j] != Alphabet::kPop &&
-               m_g.ignored[m_g.alphabet[sym[j]].nameId])
-            ++j;
+        while (j < N && left(sym[j])) ++j;
     };
     for (const PatternModule& pm : p.right) {
         if (!pm.wildcard && pm.symbol == m_skipToBranchEnd) {  // cpfg's `=`: on to this branch's end
@@ -217,7 +230,7 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             ++j;
             continue;
         }
-        if (!pm.wildcard && pm.symbol == Alphabet::kPop) {
+        if (!pm.wildcard && pm.symbol == Alphabet::kPop && !cpfg) {
             while (j < N && sym[j] != Alphabet::kPop)
                 j = sym[j] == Alphabet::kPush && m_match[j] != kUnmatched ? m_match[j] + 1 : j + 1;
             if (j >= N) return false;
@@ -231,13 +244,13 @@ bool StepRewriter::matchRight(const Production& p, size_t i) {
             }
             if (j >= N) return false;
             SymbolId s = sym[j];
-            if (s == Alphabet::kPush) {
+            if (left(s)) {
+                ++j;
+            } else if (s == Alphabet::kPush) {
                 if (m_match[j] == kUnmatched) return false;
                 j = m_match[j] + 1;
-            } else if (s == Alphabet::kPop) {
+            } else if (s == Alphabet::kPop && !(cpfg && pm.symbol == Alphabet::kPop && !pm.wildcard)) {
                 return false;
-            } else if (m_g.ignored[m_g.alphabet[s].nameId]) {
-                ++j;
             } else {
                 break;
             }
@@ -262,13 +275,32 @@ bool StepRewriter::applicable(const Production& p, size_t i, Rng& rng) {
     }
     if (!p.left.empty() && !matchLeft(p, i)) return false;
     if (!p.right.empty() && !matchRight(p, i)) return false;
-    // cpfg blocks: locals start at 0 each time; the pre-condition block runs before the
-    // condition, the post-condition block only when it holds.
-    for (int k = p.firstLocal; k < p.slotCount; ++k) m_slots[size_t(k)] = 0;
+    // Blocks: the pre-condition block runs before the condition (finish() runs the other).
+    // Locals start at 0 each time; in cpfg they keep the values the production last left.
+    const double* kept = m_persistLocals ? m_state[size_t(&p - m_rules.productions.data())].data() : nullptr;
+    for (int k = p.firstLocal; k < p.slotCount; ++k) m_slots[size_t(k)] = kept ? kept[k] : 0;
     if (!p.pre.empty()) runStatements(p.pre, m_slots.data(), rng);
-    if (p.condition && p.condition->eval(m_slots.data(), rng) == 0) return false;
-    if (!p.post.empty()) runStatements(p.post, m_slots.data(), rng);
-    return true;
+    const bool holds = !p.condition || p.condition->eval(m_slots.data(), rng) != 0;
+    m_lastEvaluated = &p;
+    if (m_keepState) saveState(p);
+    return holds;
+}
+
+void StepRewriter::saveState(const Production& p) {
+    std::copy_n(m_slots.begin(), p.slotCount, m_state[size_t(&p - m_rules.productions.data())].begin());
+}
+
+void StepRewriter::restoreState(const Production& p) {
+    const auto& kept = m_state[size_t(&p - m_rules.productions.data())];
+    std::copy(kept.begin(), kept.end(), m_slots.begin());
+}
+
+void StepRewriter::finish(const Production& p, Rng& rng) {
+    if (m_lastEvaluated != &p && m_keepState) restoreState(p);
+    m_lastEvaluated = &p;
+    if (p.post.empty()) return;
+    runStatements(p.post, m_slots.data(), rng);
+    if (m_keepState) saveState(p);
 }
 
 void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng) {
@@ -302,29 +334,24 @@ void runStatements(const std::vector<Statement>& block, double* slots, Rng& rng)
 // given), then one drand48 draw scaled by their total, in single precision as cpfg computes it.
 const Production* StepRewriter::selectCpfg(size_t i, Rng& rng) {
     m_candidates.clear();
+    m_weights.clear();
     float total = 0;
-    std::uint32_t lastTested = 0;
-    bool tested = false;
     const std::uint8_t in = m_subStack.empty() ? 0 : m_subStack.back();
     if (m_hasRules[m_in->symbols[i]]) {
         for (std::uint32_t k : m_rules.bySymbol[m_in->symbols[i]]) {
             const Production& p = m_rules.productions[k];
-            if (p.lsystem != in) continue;
-            lastTested = k;
-            tested = true;
-            if (!applicable(p, i, rng)) continue;
+            if (p.lsystem != in || !applicable(p, i, rng)) continue;
+            // Its probability (cpfg keeps it as a float), evaluated as it applies.
+            const float w = float(p.probabilityExpr ? p.probabilityExpr->eval(m_slots.data(), rng)
+                                                    : p.stochastic() ? p.probability : 1.0);
             m_candidates.push_back(k);
-            total += float(p.stochastic() ? p.probability : 1.0);
+            m_weights.push_back(w);
+            total += w;
         }
     }
-    float scaled = total * float(rng.uniform());
-    for (std::uint32_t c : m_candidates) {
-        const Production& p = m_rules.productions[c];
-        if ((scaled -= float(p.stochastic() ? p.probability : 1.0)) <= 0) {
-            if (!tested || c != lastTested) applicable(p, i, rng);  // re-bind its slots
-            return &p;
-        }
-    }
+    float scaled = float(double(total) * rng.uniform());
+    for (size_t c = 0; c < m_candidates.size(); ++c)
+        if ((scaled -= m_weights[c]) <= 0) return &m_rules.productions[m_candidates[c]];
     return nullptr;
 }
 
@@ -336,17 +363,15 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
     for (size_t k = 0; k < list.size(); ++k) {
         const Production& p = prods[list[k]];
         if (p.lsystem != in || !applicable(p, i, rng)) continue;
-        if (!p.stochastic()) return &p;
+        if (!p.stochastic() || m_ignoreProbabilities) return &p;
         // Stochastic: choose among the applicable stochastic rules for this module by their
         // probabilities. If they add up to less than 1, the module stays unchanged for the
         // rest; more than 1, they are weights.
         m_candidates.assign(1, list[k]);
         double total = p.probability;
-        std::uint32_t lastTested = list[k];  // whose parameters the slots hold now
         for (size_t k2 = k + 1; k2 < list.size(); ++k2) {
             const Production& q = prods[list[k2]];
             if (!q.stochastic() || q.lsystem != in) continue;
-            lastTested = list[k2];
             if (applicable(q, i, rng)) {
                 m_candidates.push_back(list[k2]);
                 total += q.probability;
@@ -354,10 +379,7 @@ const Production* StepRewriter::select(size_t i, Rng& rng) {
         }
         double r = rng.uniform() * std::max(total, 1.0);
         for (auto c : m_candidates) {
-            if (r < prods[c].probability) {
-                if (c != lastTested) applicable(prods[c], i, rng);  // re-bind its slots
-                return &prods[c];
-            }
+            if (r < prods[c].probability) return &prods[c];
             r -= prods[c].probability;
         }
         return nullptr;
@@ -434,6 +456,7 @@ bool StepRewriter::rewrite(const ModuleString& in, ModuleString& out, Rng& rng,
         } else {
             p = select(i, rng);
         }
+        if (p && p != m_always[sym[i]]) finish(*p, rng);
         if (p) {
             const auto& succ = p->successor;
             const size_t n = succ.symbols.size();

@@ -57,7 +57,12 @@ private:
     bool matchLeft(const Production& p, size_t i);
     bool matchRight(const Production& p, size_t i);
     void bind(const PatternModule& pm, size_t j);
+    // Whether `p` applies at module i: its modules and contexts matched and bound, its
+    // pre-condition block run, its condition true. Its post-condition block is finish()'s.
     bool applicable(const Production& p, size_t i, Rng& rng);
+    void finish(const Production& p, Rng& rng);  // `p` chosen: its slots back, its post block run
+    void saveState(const Production& p);
+    void restoreState(const Production& p);
     void prepare(const ModuleString& in);
 
     const Grammar& m_g;
@@ -91,6 +96,16 @@ private:
     size_t m_paramPos = 0;                 // parameter offset of the module being rewritten
     std::vector<double> m_slots;
     std::vector<std::uint32_t> m_candidates;
+    std::vector<float> m_weights;  // selectCpfg: each candidate's probability
+    // Per production, its slots (parameters and locals) as its last evaluation left them, when
+    // m_keepState: the production chosen among several gets its own back, and in cpfg
+    // (m_persistLocals) its locals keep their values from one application to the next, as
+    // each production's symbol table keeps them (generate.c).
+    std::vector<std::vector<double>> m_state;
+    bool m_keepState = false;
+    bool m_persistLocals = false;
+    bool m_ignoreProbabilities = false;  // cpfg without `seed:`: the first production that applies
+    const Production* m_lastEvaluated = nullptr;  // whose values m_slots holds
     std::vector<std::size_t>* m_bound = nullptr;  // contextOf: where matched modules are
 };
 

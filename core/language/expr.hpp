@@ -5,6 +5,7 @@
 //
 // Trigonometric functions work in degrees, like the grammar's `angle` and like cpfg.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,6 +18,9 @@
 namespace sprout {
 
 struct CurveTables;  // core/language/vlab/curve_files.hpp
+namespace expr_detail {
+struct Node;  // expr_builtins.hpp
+}
 
 enum class Op : std::uint8_t {
     Const, Slot, Add, Sub, Mul, Div, Mod, Pow, Neg, Not,
@@ -24,6 +28,9 @@ enum class Op : std::uint8_t {
     Beta, Binomial, Srand,  // cpfg's bran(a, b), biran(n, p) and srand(seed)
     Index,                  // cpfg's arrays: slots[slot + index], value = the array's size
     Func,  // cpfg's func(id, x): a function of the grammar's CurveTables
+    // cpfg's own: `/` dividing by 1 where the divisor is 0, `%` of the operands made ints (a
+    // divisor 0 gives NaN: cpfg stops), an array's index held in [0, value - 1] (generate.c)
+    DivC, ModC, Clamp,
 };
 
 struct Instr {
@@ -37,7 +44,9 @@ class Expr {
 public:
     // SlotOpConst / ConstOpSlot: `x*0.7`, `t+1`, `2/x`... the shapes most successor
     // parameters take, evaluated without the interpreter loop (same operation, same rounding).
-    enum class Kind : std::uint8_t { Const, Slot, SlotOpConst, ConstOpSlot, Program };
+    // CpfgTree: an expression of cpfg's with ||, && or ?:, run as cpfg's Eval runs it (its
+    // short-circuits, and the values its skips leave on the stack), from the tree.
+    enum class Kind : std::uint8_t { Const, Slot, SlotOpConst, ConstOpSlot, Program, CpfgTree };
 
     static Expr constant(double v) {
         Expr e;
@@ -53,7 +62,8 @@ public:
             case Kind::Slot: return slots[m_slot];
             case Kind::SlotOpConst: return binary(m_op, slots[m_slot], m_value);
             case Kind::ConstOpSlot: return binary(m_op, m_value, slots[m_slot]);
-            default: return run(slots, rng);
+            case Kind::Program: return run(slots, rng);
+            default: return runCpfgTree(slots, rng);
         }
     }
     Kind kind() const { return m_kind; }
@@ -83,6 +93,7 @@ public:
 private:
     friend class ExprCompiler;
     double run(const double* slots, Rng& rng) const;
+    double runCpfgTree(const double* slots, Rng& rng) const;
     static double binary(Op op, double a, double b) {
         switch (op) {
             case Op::Add: return a + b;
@@ -98,6 +109,7 @@ private:
     bool m_usesRandom = false;
     double m_value = 0;
     std::vector<Instr> m_code;
+    std::shared_ptr<const expr_detail::Node> m_tree;  // CpfgTree
     const CurveTables* m_curves = nullptr;  // func()'s functions (the Grammar keeps them)
 };
 
@@ -133,6 +145,11 @@ struct ExprScope {
     const std::vector<GlobalArray>* arrays = nullptr;
     // cpfg's functions for func(id, x), and their names (a function set's); null: func() is unknown.
     const CurveTables* curves = nullptr;
+    // cpfg's own expressions (a .l file; lsys_input.y, generate.c): `^` left-associative and
+    // below unary minus and `!` (-x^2 is (-x)^2), `<>` for `!=`, trunc(x) rounding (floor(x +
+    // 0.5)), x/0 is x, `%` of ints, ||, && and ?: evaluated as cpfg's Eval does, an array's
+    // indices each held in its range, and an unknown name 0 (a warning), not an error.
+    bool cpfg = false;
 };
 
 // Where an array's flat index `at` falls in an array of `size` elements: out of range it is
@@ -145,6 +162,11 @@ inline std::uint16_t arrayOffset(double at, double size) {
 // Compiles `text`, a view into `line.text`; on failure reports to `sink` and returns nullopt.
 std::optional<Expr> compileExpr(std::string_view text, const SourceLine& line, const ExprScope& scope,
                                 DiagnosticSink& sink);
+// The flat index of the element `text` (`a[i][j]`) of `array`, as reading it computes it (for
+// an assignment to it); nullopt when `text` is not such an element. `cpfgMisread`: where cpfg
+// assigns instead, for ExprScope::cpfg (`a[floor(x)] = v` assigns v to x: the slot of x), or -1.
+std::optional<Expr> compileArrayIndex(std::string_view text, const GlobalArray& array, const SourceLine& line,
+                                      const ExprScope& scope, DiagnosticSink& sink, int* cpfgMisread = nullptr);
 
 // Names of the built-in functions (for suggestions and documentation).
 std::vector<std::string> builtinFunctionNames();

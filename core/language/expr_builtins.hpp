@@ -69,6 +69,9 @@ struct Node {
     std::uint8_t fn = 0;
     std::uint16_t slot = 0;
     double value = 0;
+    // A constant folded from operators or a call: cpfg's Eval treats it as the operator it was
+    // (its short-circuits look at whether an operand is one), not as a number written.
+    bool compound = false;
     std::unique_ptr<Node> a, b, c;
 };
 using NodePtr = std::unique_ptr<Node>;
@@ -80,6 +83,7 @@ inline NodePtr clone(const Node* n) {
     c->fn = n->fn;
     c->slot = n->slot;
     c->value = n->value;
+    c->compound = n->compound;
     c->a = clone(n->a.get());
     c->b = clone(n->b.get());
     c->c = clone(n->c.get());
@@ -92,5 +96,15 @@ inline NodePtr makeConst(double v) {
     n->value = v;
     return n;
 }
+
+// A constant computed from operators or a call (Node::compound).
+inline NodePtr folded(double v) {
+    NodePtr n = makeConst(v);
+    n->compound = true;
+    return n;
+}
+
+// cpfg's Eval (generate.c) on a tree: the value, with cpfg's short-circuits (expr_run.cpp).
+double runCpfg(const Node& root, const double* slots, Rng& rng, const CurveTables* curves);
 
 }  // namespace sprout::expr_detail

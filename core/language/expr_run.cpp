@@ -50,6 +50,12 @@ double apply(Op op, double x, double y) {
         case Op::Mul: return x * y;
         case Op::Div: return x / y;
         case Op::Mod: return std::fmod(x, y);
+        case Op::DivC: return x / (y == 0 ? 1 : y);  // cpfg warns and divides by 1
+        case Op::ModC: {  // cpfg: (double)((int)x % (int)y); x86 makes an int of what none holds INT_MIN
+            auto asInt = [](double v) { return v > -2147483649.0 && v < 2147483648.0 ? std::int64_t(v) : std::int64_t(INT32_MIN); };
+            const std::int64_t a = asInt(x), b = asInt(y);
+            return b == 0 ? std::nan("") : double(a % b);  // cpfg stops (SIGFPE) at a divisor 0
+        }
         case Op::Pow: return std::pow(x, y);
         case Op::Lt: return x < y;
         case Op::Le: return x <= y;
@@ -63,14 +69,10 @@ double apply(Op op, double x, double y) {
     }
 }
 
-}  // namespace expr_detail
+namespace {
 
-using namespace expr_detail;
-
-double Expr::run(const double* slots, Rng& rng) const {
-    double st[kMaxStack];
-    int sp = 0;
-    for (const Instr& in : m_code) {
+// One instruction on the stack `st` of `sp` values.
+inline void step(const Instr& in, double* st, int& sp, const double* slots, Rng& rng, const CurveTables* curves) {
         switch (in.op) {
             case Op::Const: st[sp++] = in.value; break;
             case Op::Slot: st[sp++] = slots[in.slot]; break;
@@ -82,7 +84,8 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Normal: --sp; st[sp - 1] = rng.exprNormal(st[sp - 1], st[sp]); break;
             case Op::Beta: --sp; st[sp - 1] = betaSample(st[sp - 1], st[sp], rng); break;
             case Op::Binomial: --sp; st[sp - 1] = binomialSample(st[sp - 1], st[sp], rng); break;
-            case Op::Func: --sp; st[sp - 1] = m_curves->call(CurveCall(in.fn), st[sp - 1], st[sp]); break;
+            case Op::Func: --sp; st[sp - 1] = curves->call(CurveCall(in.fn), st[sp - 1], st[sp]); break;
+            case Op::Clamp: st[sp - 1] = st[sp - 1] < 0 ? 0 : st[sp - 1] >= in.value ? in.value - 1 : st[sp - 1]; break;
             case Op::Index: st[sp - 1] = slots[in.slot + arrayOffset(st[sp - 1], in.value)]; break;
             case Op::Srand:  // cpfg casts to a long: out of range or NaN is 0 here, never UB
                 rng.exprSeed(std::fabs(st[sp - 1]) < 9e18 ? std::int64_t(st[sp - 1]) : 0);
@@ -95,9 +98,80 @@ double Expr::run(const double* slots, Rng& rng) const {
             case Op::Div: --sp; st[sp - 1] /= st[sp]; break;
             default: --sp; st[sp - 1] = apply(in.op, st[sp - 1], st[sp]); break;
         }
+}
+
+// cpfg's Eval (generate.c) walks an expression as a postfix list with a stack. After an
+// operand that is itself an operation (not a name nor a number) and is not its operator's
+// last, it looks at the operator: `||` with a true operand and `&&` with a false one are
+// skipped (not applied; the operand's value is the result), a `?:` whose condition is false
+// skips its second operand (a 0 in its place), one whose second operand is 0 skips its third,
+// and one whose condition is true ends after its second (not applied: the condition's value
+// stays on the stack, under the result, where an operator above takes it as its operand). A
+// skipped operator is looked at so by the operator above it, whichever operand it is.
+class CpfgEval {
+public:
+    CpfgEval(const double* slots, Rng& rng, const CurveTables* curves) : m_slots(slots), m_rng(rng), m_curves(curves) {}
+    double value(const Node& root) {
+        run(root);
+        return m_st[m_sp - 1];
     }
+
+private:
+    static bool operation(const Node& n) { return n.op == Op::Const ? n.compound : n.op != Op::Slot; }
+    void push(double v) { m_st[m_sp++] = v; }
+    // `n` evaluated onto the stack; true when it ended in a skip.
+    bool run(const Node& n) {
+        const Node* operands[3] = {n.a.get(), n.b.get(), n.c.get()};
+        const int count = (n.a ? 1 : 0) + (n.b ? 1 : 0) + (n.c ? 1 : 0);
+        int jumped = -1;
+        for (int i = 0; i < count; ++i) {
+            if (i == jumped) continue;
+            const bool skipped = run(*operands[i]);
+            if (!operation(*operands[i]) || !(i < count - 1 || skipped)) continue;
+            const double top = m_st[m_sp - 1];
+            if (n.op == Op::Or && top != 0) return true;
+            if (n.op == Op::And && top == 0) return true;
+            if (n.op == Op::Select && i < count - 1) {
+                if (top == 0) {
+                    push(0);
+                    jumped = i + 1;
+                }
+                if (i + 1 == count - 1 && m_st[m_sp - 2] != 0) return true;
+            }
+        }
+        Instr in{n.op};
+        in.fn = n.fn;
+        in.slot = n.slot;
+        in.value = n.value;
+        step(in, m_st, m_sp, m_slots, m_rng, m_curves);
+        return false;
+    }
+
+    double m_st[2 * kMaxStack];
+    int m_sp = 0;
+    const double* m_slots;
+    Rng& m_rng;
+    const CurveTables* m_curves;
+};
+
+}  // namespace
+
+double runCpfg(const Node& root, const double* slots, Rng& rng, const CurveTables* curves) {
+    return CpfgEval(slots, rng, curves).value(root);
+}
+
+}  // namespace expr_detail
+
+using namespace expr_detail;
+
+double Expr::run(const double* slots, Rng& rng) const {
+    double st[kMaxStack];
+    int sp = 0;
+    for (const Instr& in : m_code) step(in, st, sp, slots, rng, m_curves);
     return st[0];
 }
+
+double Expr::runCpfgTree(const double* slots, Rng& rng) const { return runCpfg(*m_tree, slots, rng, m_curves); }
 
 std::vector<std::string> builtinFunctionNames() {
     std::vector<std::string> names{"rand", "uniform", "normal", "gauss", "ran", "nran", "random", "bran", "biran", "srand", "func",

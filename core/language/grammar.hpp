@@ -161,6 +161,9 @@ struct Production {
     std::uint16_t firstLocal = 0;      // slots from here to slotCount are the blocks' locals
     Successor successor;
     double probability = -1;  // < 0: deterministic
+    // cpfg's probability written as an expression of the production's parameters (`: x`),
+    // evaluated when the production applies; `probability` is then 1 (not deterministic).
+    std::optional<Expr> probabilityExpr;
     int slotCount = 0;        // formal parameters across left, pred and right
     std::uint8_t lsystem = 0; // cpfg's sub-L-system it belongs to: 0 the main one, k subLsystems[k-1]
     bool hasContext() const { return !left.empty() || !right.empty() || !predRest.empty(); }

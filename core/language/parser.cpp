@@ -178,6 +178,7 @@ bool Parser::checkBrackets(const SourceLine& line, std::string_view text,
 
 std::optional<double> Parser::constant(const SourceLine& line, std::string_view text) {
     ExprScope scope{nullptr, &m_g.defines, &m_macros, nullptr, nullptr, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     auto e = compileExpr(text, line, scope, m_sink);
     if (!e) return std::nullopt;
     double v;
@@ -410,7 +411,7 @@ void Parser::setIgnore(const SourceLine& line, std::string_view text) {
             m_sink.error(line, m.name, "list only module names after 'ignore:', without parameters");
             return;
         }
-        if (m.name == "[" || m.name == "]") {
+        if ((m.name == "[" || m.name == "]") && !m_options.tabContinues) {  // cpfg: its right context passes them
             // Written in other tools' files (L-system Explorer's `ignore: ]`): left out, not an error.
             m_sink.warning(line, m.name, "brackets are not ignored (left out of 'ignore:'): they define the branches contexts follow");
             continue;

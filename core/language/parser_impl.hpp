@@ -190,8 +190,9 @@ private:
     bool collectBlockLocals(const SourceLine& line, std::string_view preBlock, std::string_view postBlock,
                             std::vector<std::string>& params,
                             std::vector<std::pair<std::string, double>>& globalsAssigned);
+    // `scope`: the production's names, which a cpfg probability may read (null: a constant).
     bool splitRuleProbability(const SourceLine& line, std::string_view tail, std::string_view& succText,
-                              Production& prod);
+                              Production& prod, const ExprScope* scope = nullptr);
     // `key = value` or `key: value` in ABOP's notation; false when the line is none of them.
     bool classifyNotation(Line& l, std::string_view t);
     bool readInRules(std::string_view name) const;

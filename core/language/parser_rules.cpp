@@ -64,6 +64,7 @@ bool Parser::parseSuccessor(const SourceLine& line, std::string_view text,
     std::vector<RawModule> mods;
     if (!tokenize(line, text, mods) || !checkBrackets(line, text, mods, net)) return false;
     ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     bool ok = true;
     for (const auto& m : mods) {
         auto id = symbolFor(line, m.name, int(m.args.size()));
@@ -245,7 +246,7 @@ bool Parser::collectBlockLocals(const SourceLine& line, std::string_view preBloc
 // After the arrow: the successor's text in `succText`, and a probability (`: 0.33`, or
 // "{0.33}" at the end outside cpfg) into `prod`. False when an error was given.
 bool Parser::splitRuleProbability(const SourceLine& line, std::string_view tail, std::string_view& succText,
-                                  Production& prod) {
+                                  Production& prod, const ExprScope* scope) {
     if (size_t second = findTopLevel(tail, "->"); second != std::string_view::npos) {
         m_sink.error(line, tail.substr(second), "a second '->': a rule has one arrow, one rule per line");
         return false;
@@ -268,6 +269,15 @@ bool Parser::splitRuleProbability(const SourceLine& line, std::string_view tail,
                 m_notation = true;
             }
         }
+    }
+    if (m_options.tabContinues && !probText.empty() && scope) {
+        // cpfg: `--> succ : x` is evaluated as the production applies, with its parameters.
+        auto e = compileExpr(probText, line, *scope, m_sink);
+        if (!e) return false;
+        prod.probability = e->isConstant() ? e->constantValue() : 1;
+        if (!e->isConstant()) prod.probabilityExpr = std::move(*e);
+        probText = {};
+        probColon = std::string_view::npos;
     }
     if (!probText.empty() || probColon != std::string_view::npos) {
         auto p = constant(line, probText);
@@ -326,6 +336,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
     prod.slotCount = int(params.size());
 
     ExprScope scope{&params, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     bool ok = true;
     for (const auto& [name, value] : globalsAssigned) {  // the local starts at the variable's value
         Statement init;
@@ -349,7 +360,7 @@ void Parser::parseRule(const SourceLine& line, Section section, size_t equalsArr
         ok = prod.condition.has_value();
     }
     std::string_view succText;
-    if (!splitRuleProbability(line, tail, succText, prod)) return;
+    if (!splitRuleProbability(line, tail, succText, prod, &scope)) return;
     if (m_cpfg && trim(succText) == "*") succText = {};  // cpfg's empty successor
     if (section == Section::Decomposition && (!prod.left.empty() || !prod.right.empty())) {
         m_sink.error(line, patterns, "decomposition rules are context-free: move the context to a production");

@@ -1,6 +1,11 @@
 // The .lsys parser over a whole text: pasted characters normalized, each line classified
 // (setting, rule, section), the warnings of a finished grammar (lint), and the Grammar's own
 // questions about itself.
+//
+// Index of this file:
+//   [SECTION] Lines: classified, linted, checked
+//   [SECTION] The whole parse
+//   [SECTION] The Grammar's questions about itself
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -11,6 +16,8 @@
 
 namespace sprout {
 namespace detail {
+// [SECTION] Lines: classified, linted, checked
+
 void Parser::classify(Line& l, Section& section) {
     std::string_view t = trim(l.src.text);
     if (t.empty()) return;
@@ -98,6 +105,17 @@ void Parser::lint() {
     // A deterministic context-free rule without a condition always applies, so later rules
     // for the same module are dead: say so rather than leave the user wondering.
     for (const RuleSet* rs : {&m_g.rules, &m_g.interpretation, &m_g.decomposition}) {
+        // cpfg's stochastic L-system (a `seed:`) chooses among every production that applies,
+        // each of weight 1 unless given: none hides another, and weights need not add up to 1.
+        // Without `seed:` its probabilities are left out, as cpfg warns.
+        if (m_g.cpfgRandom && rs == &m_g.rules) {
+            for (const Production& p : rs->productions)
+                if (p.stochastic() && !m_g.settings.seedGiven)
+                    m_sink.add({p.line, 1, "a probability without 'seed:': left out, as cpfg leaves it out (the first production "
+                                           "that applies rewrites; a 'seed:' line makes the L-system stochastic)",
+                                Severity::Warning});
+            if (m_g.settings.seedGiven) continue;
+        }
         for (const auto& list : rs->bySymbol) {
             // Each sub-L-system's productions are their own (the first's lsystem is the one checked).
             const Production* total = nullptr;
@@ -117,7 +135,9 @@ void Parser::lint() {
                     continue;
                 }
                 bool unconditional = !p.condition && !p.hasContext();
-                if (unconditional && p.stochastic()) {
+                if (p.probabilityExpr) {
+                    guarded = true;  // cpfg's probability of the parameters
+                } else if (unconditional && p.stochastic()) {
                     probSum += p.probability;
                     ++probCount;
                 } else if (p.stochastic()) {
@@ -126,7 +146,7 @@ void Parser::lint() {
                     total = &p;
                 }
             }
-            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6) {
+            if (probCount > 0 && !guarded && std::abs(probSum - 1.0) > 1e-6 && !(m_g.cpfgRandom && rs == &m_g.rules)) {
                 const Production& p = rs->productions[list.front()];
                 std::string sum, rest;
                 appendNumber(sum, probSum);
@@ -250,6 +270,8 @@ void Parser::atModules(RuleSet& rules) {
     }
 }
 
+// [SECTION] The whole parse
+
 ParseResult Parser::run() {
     std::vector<std::pair<size_t, std::string>> replaced;
     // Old Mac line ends (a lone CR) end a line too.
@@ -311,7 +333,9 @@ ParseResult Parser::run() {
     if (m_considerSet) {  // cpfg `consider:`: only the listed modules count for contexts
         m_g.ignored.assign(m_g.alphabet.nameCount(), true);
         for (NameId n : m_considered) m_g.ignored[n] = false;
-        for (size_t s = 0; s < m_g.alphabet.size(); ++s) {
+        // cpfg leaves out the brackets it does not list too: its right context then passes
+        // them (generate.c); its left context follows them always.
+        for (size_t s = 0; s < m_g.alphabet.size() && !m_options.tabContinues; ++s) {
             const auto& sym = m_g.alphabet[SymbolId(s)];
             if (sym.name == "[" || sym.name == "]") m_g.ignored[sym.nameId] = false;
         }
@@ -349,6 +373,8 @@ ParseResult Parser::run() {
 
 ParseResult parse(std::string_view text) { return detail::Parser(text).run(); }
 ParseResult parse(std::string_view text, const ParseOptions& options) { return detail::Parser(text, options).run(); }
+
+// [SECTION] The Grammar's questions about itself
 
 void RuleSet::index(size_t alphabetSize) {
     bySymbol.assign(alphabetSize, {});

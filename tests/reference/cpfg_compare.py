@@ -80,6 +80,8 @@ def modules(text):
 def close(a, b):
     if isinstance(a, str) or isinstance(b, str):
         return a == b
+    if a == b:  # infinities too
+        return True
     if math.isnan(a) or math.isnan(b):
         return math.isnan(a) and math.isnan(b)
     return abs(a - b) <= max(1e-9, 1e-5 * max(abs(a), abs(b)))

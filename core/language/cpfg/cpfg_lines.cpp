@@ -89,7 +89,11 @@ std::string keyOf(std::string_view t, std::string_view& value) {
     if (key.empty() || !std::all_of(key.begin(), key.end(), [](char c) { return isIdentChar(c) || isSpace(c); }))
         return "";
     value = trim(t.substr(colon + 1));
-    return lowerCollapsed(key);
+    std::string k = lowerCollapsed(key);
+    // cpfg's lexer (lsys_input.l) takes the space in these as optional.
+    if (k == "derivationlength") return "derivation length";
+    if (k == "start each" || k == "end each") k.erase(k.find(' '), 1);
+    return k;
 }
 
 // The cpfg settings Sprout reads, by their cpfg names, and the .lsys directive they set.

@@ -5,6 +5,7 @@
 // the lines it leaves logical lines.
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 
 #include "core/language/cpfg/cpfg_reader.hpp"
 #include "core/language/parser_impl.hpp"
@@ -168,6 +169,9 @@ bool CpfgReader::condition(const SourceLine& line, std::string_view word, std::s
         }
         text += rest[i++];
     }
+    std::vector<std::string> active;  // `#define TWO 1+1` is text: put in place first
+    bool tooLong = false;
+    text = expandTextMacros(text, active, tooLong);
     SourceLine scratchLine = line;
     scratchLine.text = text;
     scratchLine.original = text;
@@ -179,6 +183,29 @@ bool CpfgReader::condition(const SourceLine& line, std::string_view word, std::s
         return false;
     }
     return e->constantValue() != 0;
+}
+
+// Whether `v` is one value wherever its text is put: a number, a name or a call, or a
+// parenthesised expression, after signs (which bind tightest in cpfg). Not `1+1`, `2*x`, `a^b`.
+bool CpfgReader::wholeValue(std::string_view v) {
+    size_t i = 0;
+    while (i < v.size() && (v[i] == '-' || v[i] == '+' || v[i] == '!' || isSpace(v[i]))) ++i;
+    if (i == v.size()) return false;
+    if (std::isdigit(static_cast<unsigned char>(v[i])) || v[i] == '.') {  // a number, all of it
+        double d = 0;
+        auto r = std::from_chars(v.data() + i, v.data() + v.size(), d);
+        return r.ec == std::errc() && trim(v.substr(size_t(r.ptr - v.data()))).empty();
+    }
+    while (i < v.size() && isIdentChar(v[i])) ++i;
+    while (i < v.size() && isSpace(v[i])) ++i;
+    if (i == v.size()) return true;  // a name
+    if (v[i] != '(') return false;
+    int depth = 0;
+    for (size_t k = i; k < v.size(); ++k) {  // a call or parentheses closed at the end
+        depth += v[k] == '(' ? 1 : v[k] == ')' ? -1 : 0;
+        if (depth == 0) return trim(v.substr(k + 1)).empty();
+    }
+    return false;
 }
 
 // `#define NAME value`, `#define NAME(a, b) body` or `#define FLAG` (`rest` follows the word).
@@ -231,8 +258,9 @@ void CpfgReader::readDefine(const SourceLine& src, std::string_view rest, bool t
     Grammar& g = m_parser.grammar();
     ExprScope scope{nullptr, &g.defines, &m_macros};
     // A random value (`#define ANGLE nran(80, 4)`) is text too: each use draws its own, as
-    // the C preprocessor puts the call in place.
-    if (auto e = compileExpr(value, src, scope, scratch); e && !e->usesRandom()) {
+    // the C preprocessor puts the call in place. So is an expression whose operators the
+    // text around a use could take apart (`#define TWO 1+1`: TWO*3 is 1+1*3, 4).
+    if (auto e = compileExpr(value, src, scope, scratch); e && !e->usesRandom() && wholeValue(value)) {
         m_parser.define(src, rest);
         // A slider writes its value back into the text it edits: only the grammar's
         // own defines get one, not those of an included file.

@@ -75,6 +75,7 @@ private:
     std::vector<SourceLine> preprocess(const std::vector<SourceLine>& lines, bool top, int includeLine, int depth,
                                        std::vector<std::string>& stack);
     void readDefine(const SourceLine& line, std::string_view rest, bool top);
+    static bool wholeValue(std::string_view value);  // a #define's value that is one value where put
     bool condition(const SourceLine& line, std::string_view word, std::string_view rest);
     void readInclude(const SourceLine& line, std::string_view t, std::string_view rest, bool top, int includeLine,
                      int depth, std::vector<std::string>& stack, std::vector<SourceLine>& body);

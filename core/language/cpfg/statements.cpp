@@ -78,24 +78,12 @@ private:
         return true;
     }
 
-    // The flat index of `a[i][j]` (row-major, each index truncated as cpfg does).
-    Expr indexOf(std::string_view element, const GlobalArray& array) {
-        std::string flat;
-        size_t k = element.find('[');
-        for (size_t d = 0; d < array.dims.size() && k != std::string_view::npos; ++d) {
-            const size_t close = matching(element, k);
-            if (close == std::string_view::npos) break;
-            if (!flat.empty()) flat = "(" + flat + ")*" + std::to_string(array.dims[d]) + "+";
-            flat += "trunc(" + std::string(element.substr(k + 1, close - k - 1)) + ")";
-            k = element.find('[', close);
-        }
-        // The element was compiled as written already (its mistakes said there): this text is
-        // Sprout's own, so a scratch line and sink.
-        SourceLine line;
-        line.text = flat;
-        line.original = flat;
+    // The flat index of `a[i][j]`, as a read of it computes it (compileArrayIndex); `misread`
+    // the slot cpfg assigns instead, or -1.
+    Expr indexOf(std::string_view element, const GlobalArray& array, int& misread) {
+        // The element was compiled as a read already (its mistakes said there): a scratch sink.
         DiagnosticSink scratch;
-        auto e = compileExpr(flat, line, m_scope, scratch);
+        auto e = compileArrayIndex(element, array, m_line, m_scope, scratch, &misread);
         return e ? std::move(*e) : Expr::constant(0);
     }
 
@@ -201,14 +189,11 @@ private:
         if (name == "else") return fail(name, "'else' without an 'if' before it");
         if (i < text.size() && text[i] == '(') {  // a call run for what it does: srand(3); printf(...);
             const size_t end = statementEnd(text, i);
-            if (noEffectCall(name)) {  // cpfg's messages, files written, animation: nothing in the model
-                i = end < text.size() ? end + 1 : end;
-                return true;
-            }
-            if (name == "fscanf" || name == "fopen") {
+            // cpfg's messages, files written, animation: nothing in the model; its files read
+            if (noEffectCall(name) || name == "fscanf" || name == "fopen") {
                 Statement s;
-                if (!fileCall(name, text.substr(i, end - i), s)) return false;
-                out.push_back(std::move(s));
+                if (!noEffectCall(name) && !fileCall(name, text.substr(i, end - i), s)) return false;
+                if (!noEffectCall(name)) out.push_back(std::move(s));
                 i = end < text.size() ? end + 1 : end;
                 return true;
             }
@@ -223,7 +208,9 @@ private:
         }
         Statement s;
         s.kind = Statement::Kind::Assign;
-        if (i < text.size() && text[i] == '[') {  // cpfg: `a[i][j] = ...`, an element of a global array
+        bool element = false;  // an array's element (or where cpfg assigns instead): s.slot is set
+        if (i < text.size() && text[i] == '[') {
+            element = true;  // cpfg: `a[i][j] = ...`, an element of a global array
             const GlobalArray* array = nullptr;
             if (m_scope.arrays)
                 for (const GlobalArray& a : *m_scope.arrays)
@@ -238,9 +225,17 @@ private:
             std::string element(text.substr(start, end - start));  // compiled as a read, then made a write
             auto read = compileExpr(element, m_line, m_scope, m_sink);
             if (!read) return false;
-            s.index = indexOf(text.substr(start, end - start), *array);
+            int misread = -1;
+            s.index = indexOf(text.substr(start, end - start), *array, misread);
             s.slot = std::uint16_t(kGlobalSlot + array->first);
             s.size = std::uint16_t(array->size());
+            if (misread >= 0) {  // cpfg assigns to the index's variable (compileArrayIndex)
+                m_sink.warning(m_line, text.substr(start, end - start),
+                               "cpfg assigns this value to the variable of the index, not to the array's element "
+                               "(its first index begins with a one-operand function or sign): so does Sprout");
+                s.slot = std::uint16_t(misread);
+                s.size = 0;
+            }
             i = end;
         }
         if (i >= text.size() || text[i] != '=' || (i + 1 < text.size() && text[i + 1] == '='))
@@ -249,7 +244,7 @@ private:
         const size_t end = statementEnd(text, i);
         size_t slot = 0;
         while (slot < m_params.size() && m_params[slot] != name) ++slot;
-        if (s.size) slot = s.slot;
+        if (element) slot = s.slot;
         if (slot == m_params.size() && m_scope.globals) {  // cpfg's global variable
             size_t g = 0;
             while (g < m_scope.globals->size() && (*m_scope.globals)[g] != name) ++g;
@@ -316,6 +311,7 @@ void Parser::readGlobalBlock(const SourceLine& line, const std::string& key, std
                                 : key == "endeach" ? m_g.endEachBlock : m_g.endBlock;
     const std::vector<std::string> none;
     ExprScope scope{&none, &m_g.defines, &m_macros, &m_g.globals, &m_g.arrays, m_options.curves.get()};
+    scope.cpfg = m_options.tabContinues;
     FileCalls files{m_g, m_options.include};
     parseStatements(m_sink, line, body, none, scope, out, &files);
 }
