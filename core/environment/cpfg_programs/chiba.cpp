@@ -127,12 +127,18 @@ private:
                 if (range[c][1] >= float(s[c])) range[c][1] = float(s[c] - 1);
             }
             const float limit = (l.radius + reach + half) * (l.radius + reach + half);
+            // Kept in the grid whatever the bounds: a position that is not finite gives NaN ones.
+            int lo[3], hi[3];
+            for (int c = 0; c < 3; ++c) {
+                lo[c] = std::max(toInt(range[c][0]), 0);
+                hi[c] = std::min(toInt(range[c][1]), s[c] - 1);
+            }
             float pt[3];
-            for (int z = toInt(range[2][0]); z <= toInt(range[2][1]); ++z) {
+            for (int z = lo[2]; z <= hi[2]; ++z) {
                 pt[2] = float(double(m_pos[2]) + (double(float(z)) + 0.5) / double(float(s[2])) * double(m_range[2]));
-                for (int y = toInt(range[1][0]); y <= toInt(range[1][1]); ++y) {
+                for (int y = lo[1]; y <= hi[1]; ++y) {
                     pt[1] = float(double(m_pos[1]) + (double(float(y)) + 0.5) / double(float(s[1])) * double(m_range[1]));
-                    for (int x = toInt(range[0][0]); x <= toInt(range[0][1]); ++x) {
+                    for (int x = lo[0]; x <= hi[0]; ++x) {
                         pt[0] = float(double(m_pos[0]) + (double(float(x)) + 0.5) / double(float(s[0])) * double(m_range[0]));
                         float v[3] = {l.pos[0] - pt[0], l.pos[1] - pt[1], l.pos[2] - pt[2]};
                         if (v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= limit)
