@@ -12,6 +12,7 @@
 #   [SECTION] ParameterSet and makestring
 
 import sys as _sys
+from types import ModuleType  # in L-Py's namespace, as its __init__ imports it
 
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
                          getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed,
