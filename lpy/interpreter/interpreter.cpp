@@ -152,7 +152,8 @@ void start(void (*defineModule)(py::module_&)) {
             // Python running Sprout has one (lpy/api/lpy.py's _Embedded).
             lpyEmbed.attr("_embed")("openalea.mtg", "from .mtg import *\n", "<sprout>/openalea/mtg/__init__.py");
             const std::pair<const char*, const char*> mtgParts[] = {{"mtg", "mtg_mtg"}, {"tree", "mtg_tree"},
-                {"traversal", "mtg_traversal"}, {"algo", "mtg_algo"}, {"io", "mtg_io"}, {"_read", "mtg_read"}, {"_write", "mtg_write"}};
+                {"traversal", "mtg_traversal"}, {"algo", "mtg_algo"}, {"io", "mtg_io"}, {"_read", "mtg_read"}, {"_write", "mtg_write"}, {"aml", "mtg_aml"},
+                {"dataframe", "mtg_dataframe"}};
             for (const auto& [name, stem] : mtgParts)
                 lpyEmbed.attr("_embed")(std::string("openalea.mtg.") + name, std::string(embedded(stem)),
                                         std::string("<sprout>/openalea/mtg/") + name + ".py");

@@ -181,3 +181,26 @@ def test_a_model_makes_its_axiom_from_an_mtg_file_and_walks_it(tmp_path):
     # each axis: E1 2.5 + 1.25, A2's E1 0.75 + 0.5.
     assert str(s) == '[P[A[E(3.75)E(1.25)[A[E(1.25)E(0.5)]E(4.0)]]]]'
     assert lsys.sizes == [(6, [0.5, 1.25, 1.25, 3.75, 4.0])]
+
+
+def test_amls_functions_on_the_active_mtg(tmp_path):
+    from openalea.mtg import aml
+    path = tmp_path / 'plant.mtg'
+    path.write_text(TEXT)
+    g = aml.MTG(str(path))
+    assert aml.Active() is g and aml.VtxList(Scale=3) == [3, 4, 6, 7, 8]
+    assert aml.Label(aml.VtxList(Scale=3)) == ['E1', 'E2', 'E1', 'E2', 'E3']
+    assert (aml.Class(5), aml.Index(5), aml.Feature(6, 'length'), aml.ClassScale('E')) == ('A', 2, 0.75, 3)
+    assert (aml.Father(7), aml.Sons(3), aml.Location(5), aml.Order(7), aml.Rank(8), aml.Height(7)) == (6, [4], 4, 1, 2, 3)
+    assert aml.Components(1, Scale=3) == [3, 4, 8, 6, 7] and aml.ComponentRoots(1, Scale=3) == [3]
+    with pytest.raises(NotImplementedError):
+        aml.Coord(1, 2)
+
+
+def test_an_mtg_as_a_dataframe():
+    pd = pytest.importorskip('pandas')
+    from openalea.mtg.dataframe import to_dataframe
+    df = to_dataframe(read_mtg(TEXT))
+    assert isinstance(df, pd.DataFrame) and len(df) == 9
+    assert df.loc[6, 'length'] == 0.75 and df.loc[6, 'kind'] == 'shoot' and df.loc[6, 'parent'] == 4
+    assert df.loc[6, 'complex'] == 5 and df.loc[6, 'scale'] == 3 and df.loc[6, 'order'] == 1
