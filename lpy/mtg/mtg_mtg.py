@@ -496,6 +496,58 @@ def random_tree(mtg, root, nb_children=3, nb_vertices=20):
     return pending[-1]
 
 
+def random_mtg(tree, nb_scales):
+    """An MTG of nb_scales scales over tree: at each coarser scale, a random part of the
+    vertices of the scale below starts a complex."""
+    import random
+    n = len(tree)
+    colors = {nb_scales - 1: tree.vertices()}
+    for s in range(nb_scales - 2, 0, -1):
+        n = random.randint(1, n)
+        chosen = sorted(random.sample(colors[s + 1], n))
+        if tree.root not in chosen:
+            chosen.insert(0, tree.root)
+        colors[s] = chosen
+    return colored_tree(tree, colors)[0]
+
+
+def colored_tree(tree, colors):
+    """The MTG whose finest scale is tree, each scale s's complexes starting at the vertices
+    colors[s]; and the map from its finest vertices' ids to tree's."""
+    nb_scales = max(colors.keys()) + 1
+    ids, count = {}, 1
+    for scale in range(1, nb_scales):
+        ids[scale] = {}
+        for v in colors[scale]:
+            ids[scale][v] = count
+            count += 1
+    g = MTG()
+    index = ids[1]
+    for v in colors[1]:
+        g.add_component(g.root, index[v])
+    for scale in range(2, nb_scales):
+        previous, index = index, ids[scale]
+        for v in colors[scale]:
+            complex_id, component_id = previous.get(v), index.get(v)
+            if complex_id:
+                g.add_component(complex_id, component_id)
+            elif component_id:
+                g._scale[component_id] = scale
+    finest = tree.max_scale() if isinstance(tree, MTG) else None
+    for k, v in tree._parent.items():
+        if v is not None and (finest is None or tree.scale(v) == finest):
+            g._parent[index[k]] = index[v]
+    for parent, children in tree._children.items():
+        if finest is None or tree.scale(parent) == finest:
+            g._children[index[parent]] = [index[c] for c in children]
+    for pname, prop in tree.properties().items():
+        values = g._properties.setdefault(pname, {})
+        for v, value in prop.items():
+            if finest is None or tree.scale(v) == finest:
+                values[index[v]] = value
+    return fat_mtg(g), dict(zip(index.values(), index.keys()))
+
+
 def display_tree(tree, vid, tab='', labels={}, edge_type={}):
     labels = labels or tree.property('label')
     edge_type = edge_type or tree.property('edge_type')
