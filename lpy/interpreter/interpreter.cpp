@@ -150,7 +150,7 @@ void start(void (*defineModule)(py::module_&)) {
                                     "<sprout>/openalea/plantgl/scenegraph/nurbspatch_nd.py");
             // openalea.mtg (lpy/mtg/): imported on demand, a real openalea.mtg first where the
             // Python running Sprout has one (lpy/api/lpy.py's _Embedded).
-            lpyEmbed.attr("_embed")("openalea.mtg", "from .mtg import *\n", "<sprout>/openalea/mtg/__init__.py");
+            lpyEmbed.attr("_embed")("openalea.mtg", std::string(embedded("mtg_package")), "<sprout>/openalea/mtg/__init__.py");
             const std::pair<const char*, const char*> mtgParts[] = {{"mtg", "mtg_mtg"}, {"tree", "mtg_tree"},
                 {"traversal", "mtg_traversal"}, {"algo", "mtg_algo"}, {"io", "mtg_io"}, {"_read", "mtg_read"}, {"_write", "mtg_write"}, {"aml", "mtg_aml"},
                 {"dataframe", "mtg_dataframe"}};

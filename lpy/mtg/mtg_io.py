@@ -12,13 +12,23 @@
 #   [SECTION] MTG files read (Reader)
 
 import re
+from string import Template
+from warnings import warn
 
 from .mtg import *
 from .mtg import fat_mtg
 from . import traversal
+from .traversal import iter_mtg, iter_mtg_with_filter
 from ._write import Writer, write_mtg, display, mtg_display
 
 debug = 0
+logger = None  # openalea.core's logger where it is installed: not in Sprout
+
+
+def log(*args):
+    """Prints its arguments when `debug` is set (openalea.mtg's trace of the reader)."""
+    if debug:
+        print('  '.join(map(str, args)))
 
 
 # [SECTION] labels
@@ -348,6 +358,20 @@ def mtg2axialtree(g, parameters=None, axial_tree=None):
     for _ in traversal.iter_mtg2_with_filter(g, next(g.roots_iter(scale=0)), pre, post):
         pass
     return tree
+
+
+def read_lsystem_string(string, symbol_at_scale, functional_symbol={}, mtg=None):
+    """openalea.mtg's reader of cpfg-era strings with PlantGL's turtle: not in Sprout's."""
+    raise NotImplementedError('read_lsystem_string (a cpfg string walked by PlantGL\'s turtle) is not in '
+                              'Sprout\'s openalea.mtg: make the MTG with axialtree2mtg, or install openalea.mtg')
+
+
+def mtg2mss(name, mtg, scene, envelop_type='CvxHull'):
+    """The multiscale structure of openalea.fractalysis (which it needs, as openalea.mtg does)."""
+    from openalea.fractalysis.light import ssFromDict
+    layers = [dict((vid, mtg.components(vid)) for vid in mtg.vertices_iter(scale=scale))
+              for scale in range(1, mtg.nb_scales() - 1)]
+    return ssFromDict(name, scene, layers, envelop_type)
 
 
 def lpy2mtg(axial_tree, lsystem, scene=None):

@@ -13,6 +13,8 @@
 
 import re
 import copy
+import random
+import warnings
 
 from . import traversal
 from . import algo
@@ -499,7 +501,6 @@ def random_tree(mtg, root, nb_children=3, nb_vertices=20):
 def random_mtg(tree, nb_scales):
     """An MTG of nb_scales scales over tree: at each coarser scale, a random part of the
     vertices of the scale below starts a complex."""
-    import random
     n = len(tree)
     colors = {nb_scales - 1: tree.vertices()}
     for s in range(nb_scales - 2, 0, -1):
