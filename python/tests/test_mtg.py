@@ -1,7 +1,8 @@
 """openalea.mtg as L-Py models use it (issue 51): Sprout's own where the real one is not
 installed (lpy/mtg/). The expected vertices, properties and texts below were worked out by hand
 and checked against openalea.mtg itself (its repository's src/, pure Python, run on the same
-inputs beside Sprout's openalea.lpy): they agree to the last id and digit."""
+inputs beside Sprout's openalea.lpy): they agree to the last id and digit. The models' strings
+and MTGs are also those the reference L-Py 3.15.4 gives with that openalea.mtg."""
 import pytest
 
 import sprout
