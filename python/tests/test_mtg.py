@@ -205,3 +205,15 @@ def test_an_mtg_as_a_dataframe():
     assert isinstance(df, pd.DataFrame) and len(df) == 9
     assert df.loc[6, 'length'] == 0.75 and df.loc[6, 'kind'] == 'shoot' and df.loc[6, 'parent'] == 4
     assert df.loc[6, 'complex'] == 5 and df.loc[6, 'scale'] == 3 and df.loc[6, 'order'] == 1
+
+
+def test_a_tuple_added_to_an_lstring_is_a_module():
+    # L-Py's AxialTree += ('A', x, ...): the module A(x, ...) (mtg2axialtree builds strings so);
+    # 'A(1,2.5)[Bz]' is the reference L-Py's.
+    from openalea.lpy import AxialTree
+    s = AxialTree()
+    s += ('A', 1, 2.5)
+    s += '['
+    s += ('Bz',)
+    s += ']'
+    assert str(s) == 'A(1,2.5)[Bz]' and len(s) == 4 and s[0][1] == 2.5 and s[2].name == 'Bz'
