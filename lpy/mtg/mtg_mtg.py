@@ -252,6 +252,15 @@ class MTG(PropertyTree):
         print(io.display(self, max_scale=max_scale, display_id=display_id, display_scale=display_scale,
                          nb_tab=nb_tab, **kwds))
 
+    def plot_property(self, prop, **kwds):
+        """The property against each vertex's height (matplotlib), coloured by order."""
+        import matplotlib
+        import matplotlib.pyplot
+        values = self.property(prop)
+        colors, orders, heights = list(matplotlib.colors.cnames.keys()), algo.orders(self), algo.heights(self)
+        for v in values:
+            matplotlib.pyplot.plot(heights[v], values[v], 'o', color=colors[orders[v]])
+
     # [SECTION] sub-MTGs, labels, the vertex as an object
     def sub_mtg(self, vtx_id, copy=True):
         """The MTG below vtx_id, renumbered from 0 (copy=False: not supported, a copy is made)."""
