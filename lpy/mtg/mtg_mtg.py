@@ -263,7 +263,10 @@ class MTG(PropertyTree):
 
     # [SECTION] sub-MTGs, labels, the vertex as an object
     def sub_mtg(self, vtx_id, copy=True):
-        """The MTG below vtx_id, renumbered from 0 (copy=False: not supported, a copy is made)."""
+        """The MTG below vtx_id, a copy renumbered from 0."""
+        if not copy:
+            raise NotImplementedError('MTG.sub_mtg(vtx_id, copy=False) (the MTG cut down in place) is not in '
+                                      "Sprout's openalea.mtg: use the copy it returns by default")
         ids = {vtx_id: 0}
         g = MTG()
         for name in self.properties():
