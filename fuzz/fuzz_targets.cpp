@@ -257,6 +257,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (char c : t.mainCode) mainLines += c == '\n';
     if (tag == std::string::npos && mainLines != lines) fail("the translation lost or added lines");
     (void)detectFileKind("model.lpy", input);
+    // The file's bytes decoded as L-Py's Python decodes them: UTF-8, its lines kept.
+    const std::string utf8 = lpy::modelTextAsUtf8(input);
+    if (std::count(utf8.begin(), utf8.end(), '\n') != std::count(input.begin(), input.end(), '\n'))
+        fail("decoding a model file lost or added lines");
+    for (size_t k = 0; k < utf8.size();) {
+        const unsigned char c = static_cast<unsigned char>(utf8[k]);
+        const size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+        if (n == 0 || k + n > utf8.size()) fail("a decoded model file is not UTF-8");
+        for (size_t j = 1; j < n; ++j)
+            if ((static_cast<unsigned char>(utf8[k + j]) & 0xC0) != 0x80) fail("a decoded model file is not UTF-8");
+        k += n;
+    }
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
 #endif

@@ -14,8 +14,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   libtinyobjloader-dev libxml2-utils
   python3-dev pybind11-dev
-  # L-Py models import numpy as often as math (the corpus test counts on it)
-  python3-numpy
+  # L-Py models import numpy as often as math (the corpus test counts on it), and scipy,
+  # matplotlib and pandas often enough: the scientific Python they take for granted
+  python3-numpy python3-scipy python3-matplotlib python3-pandas
   # the editor shows pasted notation (δ ω → − p₁) with DejaVu Sans Mono's glyphs
   fonts-dejavu-core
 )
@@ -29,7 +30,7 @@ if [ "$mode" = test ]; then packages+=(lintian desktop-file-utils shared-mime-in
 # The documentation site, built and checked by the tests (mkdocs build --strict).
 if [ "$mode" = test ]; then packages+=(mkdocs mkdocs-material mkdocstrings mkdocstrings-python-handlers); fi
 # `import sprout`: its pytest suite, the notebook's slider, and the Dask sweep example.
-if [ "$mode" = test ]; then packages+=(python3-pytest python3-ipywidgets python3-dask python3-distributed python3-pandas); fi
+if [ "$mode" = test ]; then packages+=(python3-pytest python3-ipywidgets python3-dask python3-distributed); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -12,6 +12,7 @@
 #   [SECTION] ParameterSet and makestring
 
 import sys as _sys
+from types import ModuleType  # in L-Py's namespace, as its __init__ imports it
 
 from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
                          getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed,
@@ -49,13 +50,22 @@ class _Embedded:
     them as files."""
 
     sources = {}  # name: (source, file)
+    # Packages (with modules of their own) used from the Python that runs Sprout where they
+    # are installed there (a real openalea.mtg), Sprout's own otherwise.
+    installed_first = ('openalea.mtg',)
 
     @classmethod
     def find_spec(cls, name, path=None, target=None):
         if name not in cls.sources:
             return None
         import importlib.util
-        return importlib.util.spec_from_loader(name, cls, origin=cls.sources[name][1])
+        if name in cls.installed_first:
+            import importlib.machinery, os
+            folders = [os.path.join(p, *name.split('.')[:-1]) for p in _sys.path if isinstance(p, str)]
+            real = importlib.machinery.PathFinder.find_spec(name, [f for f in folders if os.path.isdir(f)])
+            if real is not None:
+                return real
+        return importlib.util.spec_from_loader(name, cls, origin=cls.sources[name][1], is_package=name in cls.installed_first)
 
     @staticmethod
     def create_module(spec):
@@ -79,7 +89,10 @@ def _begin(ns, file, context=None):
     """A new run: the model's namespace and file in a context of its own (`context`: an
     Lsystem's), made current; nothing remembered from an earlier run."""
     # On-demand modules keep state of their own (__lpyfuture__'s kept strings): imported afresh.
+    # (openalea.mtg keeps none: an MTG read before a run stays one of the same class.)
     for name in _Embedded.sources:
+        if name == 'openalea.mtg' or name.startswith('openalea.mtg.'):
+            continue
         _sys.modules.pop(name, None)
         globals().pop(name.rpartition('.')[2], None)
     if context is None:

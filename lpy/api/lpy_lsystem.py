@@ -26,14 +26,11 @@ eProduction, eDecomposition, eInterpretation = 0, 1, 2
 
 # [SECTION] files, materials and scenes
 def _read(filename):
-    """A model file's text, as L-Py reads it: UTF-8 (a Latin-1 file read as such), any line
-    ends."""
+    """A model file's text, as L-Py's Python reads it: by its coding cookie, otherwise UTF-8
+    with any other byte read as Latin-1 (lpy/translate/encoding.cpp), any line ends."""
+    from _sprout_lpy import _model_text
     with open(filename, 'rb') as f:
-        data = f.read()
-    try:
-        text = data.decode('utf-8')
-    except UnicodeDecodeError:
-        text = data.decode('latin-1')
+        text = _model_text(f.read())
     return text.replace('\r\n', '\n').replace('\r', '\n')
 
 

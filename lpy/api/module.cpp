@@ -66,6 +66,8 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
             if (w.method) out.emplace_back(w.method, w.names[0]);
         return out;
     });
+    // A model file's bytes as L-Py's Python decodes them (translate.hpp): Lsystem(file).
+    m.def("_model_text", [](const py::bytes& data) { return modelTextAsUtf8(std::string(data)); });
     m.def("forward", [] { engine().forwardDirection = true; });
     m.def("backward", [] { engine().forwardDirection = false; });
     m.def("isForward", [] { return engine().forwardDirection; });

@@ -58,11 +58,15 @@ py::dict namespaceNow() {
     return e ? e->ns() : looseNamespace();
 }
 
-// `s += 'B'`, `s + other`: text is read as an lstring, anything else as produce takes it.
+// `s += 'B'`, `s + other`: text is read as an lstring, a tuple ('A', x, y) is the module
+// A(x, y) (L-Py's ParamModule(tuple)), anything else as produce takes it.
 void extend(LString& s, py::handle v) {
     if (py::isinstance<py::str>(v)) {
         LString more = parseLstring(v.cast<std::string>(), names(), namespaceNow());
         s.insert(s.end(), more.begin(), more.end());
+    } else if (PyTuple_Check(v.ptr()) && PyTuple_GET_SIZE(v.ptr()) > 0 && PyUnicode_Check(PyTuple_GET_ITEM(v.ptr(), 0))) {
+        const int cls = names().intern(py::reinterpret_borrow<py::str>(PyTuple_GET_ITEM(v.ptr(), 0)).cast<std::string>());
+        s.push_back({cls, py::reinterpret_steal<py::tuple>(PyTuple_GetSlice(v.ptr(), 1, PyTuple_GET_SIZE(v.ptr())))});
     } else {
         appendValue(s, v, names().size());
     }

@@ -41,8 +41,11 @@ public:
     // The production pass about to read `in` refused when it would grow the string as the
     // pass before did (grew) past the limits.
     void predictNextStep(const LString& in, std::size_t perModule, int iteration) const;
+    // Measured on a string of some size only: what a few modules became is what one rule made
+    // (an axiom's Init that makes a whole string, as L-Py's lsystem5.lpy does from an MTG), no
+    // rate of growth; check() still measures the pass that follows as it makes it.
     void grew(const LString& in, const LString& out) {
-        if (!in.empty()) m_lastGrowth = double(out.size()) / double(in.size());
+        m_lastGrowth = in.size() >= 64 ? double(out.size()) / double(in.size()) : 1;
     }
     // When the model is bound: whether growth can be predicted (nothing Python may steer the
     // derivation with, no cut, rules of one module).

@@ -148,6 +148,15 @@ void start(void (*defineModule)(py::module_&)) {
             lpyEmbed.attr("_embed")("openalea.plantgl.scenegraph.nurbspatch_nd",
                                     "from openalea.plantgl.all import NurbsPatch3D, Vector3, Vector4\n",
                                     "<sprout>/openalea/plantgl/scenegraph/nurbspatch_nd.py");
+            // openalea.mtg (lpy/mtg/): imported on demand, a real openalea.mtg first where the
+            // Python running Sprout has one (lpy/api/lpy.py's _Embedded).
+            lpyEmbed.attr("_embed")("openalea.mtg", std::string(embedded("mtg_package")), "<sprout>/openalea/mtg/__init__.py");
+            const std::pair<const char*, const char*> mtgParts[] = {{"mtg", "mtg_mtg"}, {"tree", "mtg_tree"},
+                {"traversal", "mtg_traversal"}, {"algo", "mtg_algo"}, {"io", "mtg_io"}, {"_read", "mtg_read"}, {"_write", "mtg_write"}, {"aml", "mtg_aml"},
+                {"dataframe", "mtg_dataframe"}};
+            for (const auto& [name, stem] : mtgParts)
+                lpyEmbed.attr("_embed")(std::string("openalea.mtg.") + name, std::string(embedded(stem)),
+                                        std::string("<sprout>/openalea/mtg/") + name + ".py");
             // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py), part of openalea.lpy.
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
             installModule("openalea.lpy._matching", embedded("lpy_matching"), "<sprout>/openalea/lpy/_matching.py");

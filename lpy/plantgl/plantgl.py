@@ -47,3 +47,17 @@ def pgl_support_extension(name):
     """Whether PlantGL was built with an optional extension (CGAL, Qt, ...): Sprout's PlantGL
     has none of them."""
     return False
+
+
+# Names PlantGL's `all` gives beside its own, that a model's namespace holds (L-Py runs
+# `from openalea.plantgl.all import *` in it): its modules import them and export them with
+# theirs: sqrt and pi (scenegraph's nurbsshape: models take them for granted), deepcopy
+# (algo), pj (all itself), the modules importlib, warnings and openalea, and pgl (this
+# module: light's `import openalea.plantgl.all as pgl`).
+from math import sqrt, pi
+from copy import deepcopy
+from os.path import join as pj
+import importlib
+import warnings
+import openalea
+pgl = __import__('sys').modules[__name__]

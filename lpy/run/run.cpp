@@ -225,8 +225,9 @@ public:
 
 Model runModel(std::string_view written, const RunOptions& options) {
     Model out;
-    // %pastefile / %pastemodule lines first, as L-Py reads a file.
-    const std::string pasted = pasteFiles(written, pasteReader(options.path), out.diagnostics);
+    // %pastefile / %pastemodule lines first, as L-Py reads a file; then the bytes decoded as
+    // its Python decodes them (a Latin-1 file opens).
+    const std::string pasted = modelTextAsUtf8(pasteFiles(written, pasteReader(options.path), out.diagnostics));
     if (hasErrors(out.diagnostics)) return out;
     const std::string_view text = pasted;
     try {

@@ -172,6 +172,11 @@ struct Translation {
 using PasteReader = std::function<std::optional<std::string>(const std::string& name, bool module)>;
 std::string pasteFiles(std::string_view text, const PasteReader& read, std::vector<Diagnostic>& diags);
 
+// A model file's bytes as UTF-8 text, decoded as L-Py's Python reads the file: by its coding
+// cookie (Latin-1, Windows-1252), otherwise as UTF-8 with any byte that is not UTF-8 read as
+// Latin-1 (encoding.cpp). A UTF-8 file comes back as it is, less a byte order mark.
+std::string modelTextAsUtf8(std::string_view bytes);
+
 // `seed`: a table whose ids the translation keeps (ModuleClasses::seededFrom).
 Translation translate(std::string_view text, const ModuleClasses* seed = nullptr);
 
