@@ -122,12 +122,17 @@ void start(void (*defineModule)(py::module_&)) {
 #endif
         {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
+            // openalea.lpy's parts that need no L-system (version, options, extern), ParameterSet
+            // and LsysContext (lpy/api/lpy_base.py, lpy_parameterset.py, lpy_context.py): the
+            // package imports them.
+            for (const auto& [name, stem] : {std::pair<const char*, const char*>{"_base", "lpy_base"},
+                                             {"parameterset", "lpy_parameterset"}, {"_context", "lpy_context"}})
+                installModule(std::string("openalea.lpy.") + name, embedded(stem), std::string("<sprout>/openalea/lpy/") + name + ".py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
             // Modules of L-Py's package a model may import, imported on demand: its experimental
             // string controls and its parameter sets (lpy/api/lpy_*.py).
             const std::pair<const char*, const char*> onDemand[] = {
-                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"parameterset", "lpy_parameterset"},
-                {"lsysparameters", "lpy_lsysparameters"}};
+                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"lsysparameters", "lpy_lsysparameters"}};
             for (const auto& [name, stem] : onDemand)
                 py::module_::import("openalea.lpy")
                     .attr("_embed")(std::string("openalea.lpy.") + name, std::string(embedded(stem)),
