@@ -23,6 +23,7 @@ from openalea.lpy._context import *  # noqa: F401,F403
 import openalea.lpy._context as _cm
 
 parameterset = _sys.modules['openalea.lpy.parameterset']
+__version__ = _sys.modules['openalea.lpy.__version__']
 _state = _cm._current._state  # the current context's (set again as it changes)
 
 

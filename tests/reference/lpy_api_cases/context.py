@@ -170,15 +170,18 @@ def context_initialise():
 @case("LsysContext.makeCurrent", "LsysContext.done", "LsysContext.isCurrent", "LsysContext.currentContext",
       "LsysContext.current", "context", "execContext")
 def context_current():
+    # A context is told by a name in its namespace: L-Py's context() gives a new Python object
+    # for the same context at each call.
     from openalea.lpy import LsysContext, context, execContext
 
     c = LsysContext()
+    c['mark'] = 'c'
     before = context()
     c.makeCurrent()
-    out = [c.isCurrent(), LsysContext.currentContext() is c, LsysContext.current() is c, context() is c, execContext() is c,
-           before.isCurrent()]
+    out = [c.isCurrent(), LsysContext.currentContext().get('mark', None), LsysContext.current().get('mark', None),
+           context().get('mark', None), execContext().get('mark', None), before.isCurrent(), context().isCurrent()]
     c.done()
-    out += [c.isCurrent(), context() is before]
+    out += [c.isCurrent(), context().get('mark', None), before.isCurrent()]
     return out
 
 
@@ -193,12 +196,14 @@ def context_done_not_current():
 def context_default_and_global():
     import sys
 
-    from openalea.lpy import LsysContext, context
+    from openalea.lpy import LsysContext
 
     d = LsysContext.defaultContext()
+    d['default_mark'] = 'd'
     g = LsysContext.globalContext()
-    return [d is LsysContext.default(), d is LsysContext.defaultContext(), g is LsysContext.globalContext(), g is context(),
-            g.globals() is sys.modules['__main__'].__dict__, d.isCurrent(), d.done()]
+    return [LsysContext.default().get('default_mark', None), LsysContext.defaultContext().get('default_mark', None),
+            g.get('default_mark', None), g.isCurrent(), g.globals() is sys.modules['__main__'].__dict__,
+            'default_mark' in g.locals(), d.isCurrent(), d.done(), d.globals() is d.locals()]
 
 
 @case("LsysContext.declare", "LsysContext.undeclare", "LsysContext.isDeclared", "LsysContext.declaredModules",
@@ -242,7 +247,7 @@ def context_turtle_and_options():
     from openalea.lpy import LsysContext
 
     c = LsysContext()
-    return [c.turtle is c.turtle, c.options is c.options, len(c.options) > 10]
+    return [c.turtle is c.turtle, len(c.options) > 10, c.options.find('Optimization').name]
 
 
 # [SECTION] the functions on the current context
@@ -562,6 +567,13 @@ def turtle_interpretation_unbalanced():
     from openalea.lpy import LsysContext, Lstring, turtle_interpretation
 
     return turtle_interpretation(Lstring('F[F'), LsysContext().turtle)
+
+
+@case("pproduce")
+def pproduce_without_id():
+    from openalea.lpy import pproduce
+
+    return pproduce()
 
 
 @case("helpTurtle")
