@@ -69,7 +69,9 @@ def _cython_available():
 
 
 # L-Py's options of a context, in its order: (name, comment, category, global, default,
-# [(value, comment)]). The Compiler has Cython only where pyximport is installed, as in L-Py.
+# [(value, comment)]). The Compiler has Cython only where pyximport is installed, as in L-Py;
+# 'Multicore parallel rewriting' is L-Py's only where it is built with MULTICORE_ENABLED (not by
+# default), so not here.
 def _option_table():
     dis, en = 'Disabled', 'Enabled'
     return [
@@ -101,12 +103,10 @@ def _option_table():
          [(dis, 'Disable early return.'), (en, 'Enable early return.')]),
         ('Warning with Turtle inconsistency', 'Set whether a warning/error is raised when an invalid value is found during turtle processing.',
          'Processing', False, 1, [(dis, 'Disable warnings/errors.'), (en, 'Enable warnings/errors.')]),
-        ('Turtle Path Optimization', 'Set whether the Turtle use a cache with the path.', 'Processing', False, 0,
+        ('Turtle Path Optimization', 'Set whether the Turtle use a cache with the path.', 'Processing', False, 1,
          [(dis, 'Disable Cache.'), (en, 'Enable Cache.')]),
         ('Turtle in Interpretation rules', 'Set whether the Turtle is given in the interpretation rules.', 'Processing', False, 1,
          [(dis, 'Disable.'), (en, 'Enable.')]),
-        ('Multicore parallel rewriting', 'Set whether the string rewriting should be made on multiple cores.', 'Processing', False, 0,
-         [(dis, 'Disable multicore rewriting.'), (en, 'Enable multicore rewriting.')]),
         ('Bracket mapping optimization', 'Specify the level of optimization of mapping brackets for lstring traversal.', 'Processing', False, 0,
          [(dis, 'Disable brackets mapping optimization.'), ('On the fly', 'Enable brackets mapping on the fly.'),
           ('As preprocessing', 'Compute brackets mapping as preprocessing of each step.')]),
@@ -116,21 +116,25 @@ def _option_table():
 
 
 class LsysOptionValue:
-    """One value of an option (L-Py's LsysOptionValue): its name and comment; activate() makes
-    it the option's selection."""
+    """One value of an option (L-Py's LsysOptionValue): its name and comment."""
 
-    def __init__(self, name, comment='', option=None):
-        self.name, self.comment, self._option = name, comment, option
+    name = comment = ''
+
+    def __init__(self, name, comment=''):
+        self.name, self.comment = name, comment
 
     def activate(self):
-        if self._option is not None:
-            self._option._select(self._option._values.index(self))
+        """L-Py's calls the setting's function with this value and leaves the option's selection
+        as it is; Sprout's engine reads its settings from the selections, so nothing changes."""
 
 
 class LsysOption:
     """An option (L-Py's LsysOption): its values by index, the one selected (`selection`), its
     default. An option of a context keeps its selection in the context, where Sprout's engine
     reads it."""
+
+    name = comment = category = ''
+    default_value_id = 0
 
     def __init__(self, name, comment='', category=''):
         self.name, self.comment, self.category = name, comment, category
@@ -194,6 +198,9 @@ class LsysOption:
         return self._values[index]
 
 
+setattr(LsysOption, 'global', False)  # a keyword of Python's: read with getattr(option, 'global')
+
+
 class LsysOptions:
     """A context's options (L-Py's LsysOptions), by index (options[i]) or by name (find)."""
 
@@ -202,7 +209,7 @@ class LsysOptions:
         if store is not None:
             for name, comment, category, is_global, default, values in _option_table():
                 option = LsysOption(name, comment, category)
-                option._values = [LsysOptionValue(v, c, option) for v, c in values]
+                option._values = [LsysOptionValue(v, c) for v, c in values]
                 option.default_value_id, option._store = default, store
                 setattr(option, 'global', is_global)
                 option._changed = changed
@@ -339,7 +346,7 @@ def determine_lpymodule_path(fn):
 
 # [SECTION] the turtle's help
 # L-Py's predefined modules in the order it makes them (src/cpp/predefinedmodules.cpp): name,
-# alias, category (PredefinedModuleClass::eCategory) and documentation.
+# aliases (', ' between two), category (PredefinedModuleClass::eCategory) and documentation.
 _CATEGORIES = ['None', 'Structure', 'Rotation', 'Position', 'Scale', 'Primitive', 'Width', 'Color', 'Tropism', 'Request',
                'Texture', 'String Manipulation', 'Pattern Matching', 'User Defined']
 _PREDEFINED = [
@@ -353,7 +360,7 @@ _PREDEFINED = [
     ('X', 'MouseIns', 11, 'Module inserted just before module selected by user in visualisation.'),
     ('%', 'Cut', 11, 'Cut the remainder of the current branch in the string.'),
     ('*', 'any', 12, 'Used to match any module in rules predecessor. First argument will become name of the module.'),
-    ('x', 'repexp', 12, 'Used to specify matching of a repetition of modules.'),
+    ('x', 'repexp, all', 12, 'Used to specify matching of a repetition of modules.'),
     ('or', '||', 12, 'Used to specify an alternative matching of modules.'),
     ('?P', 'GetPos', 9, "Request position vector information. Params : 'x,y,z' or 'v' (optional, default=Vector3, filled by Turtle)."),
     ('?H', 'GetHead', 9, "Request heading vector information. Params : 'x,y,z' or 'v' (optional, default=Vector3, filled by Turtle)."),
@@ -440,7 +447,7 @@ def helpTurtle(command=None):
     if command is not None:
         command = str(command)
         for name, alias, category, doc in _PREDEFINED:
-            if command in (name, alias):
+            if command == name or command in alias.split(', '):
                 return doc
         from _sprout_lpy import ModuleClass
         found = ModuleClass.get(command)  # a module of the model's: its documentation, if any

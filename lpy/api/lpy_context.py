@@ -162,8 +162,10 @@ class LsysContext:
         self._set('stop', True)
 
     def useGroup(self, gid):
-        if isinstance(gid, float) or not isinstance(gid, int) or gid < 0:
-            raise TypeError("useGroup(gid): a group is a number from 0")
+        if isinstance(gid, float) or not isinstance(gid, int):
+            raise TypeError("useGroup(gid): a group is a number from 0, not %s" % type(gid).__name__)
+        if gid < 0:
+            raise OverflowError("can't convert negative value to unsigned int")
         self._set('group', int(gid))
 
     def getGroup(self):

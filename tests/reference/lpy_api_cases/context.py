@@ -350,7 +350,8 @@ def functions_in_a_run():
 def options_table():
     from openalea.lpy import LsysContext
 
-    o = LsysContext().options
+    c = LsysContext()  # kept: its options live as long as it does
+    o = c.options
     out = []
     for i in range(len(o)):
         opt = o[i]
@@ -365,7 +366,8 @@ def options_table():
 def options_select():
     from openalea.lpy import LsysContext
 
-    o = LsysContext().options
+    c = LsysContext()  # kept: its options live as long as it does
+    o = c.options
     opt = o.find('Optimization')
     out = [opt.setSelection(0), opt.selection, opt.currentValue(), opt.isToDefault(), opt.setSelection('Level 2'),
            opt.currentValue(), opt.setSelection('bogus'), opt.setSelection(10), opt.selection]
@@ -384,21 +386,24 @@ def options_select():
 def option_invalid_selection():
     from openalea.lpy import LsysContext
 
-    LsysContext().options.find('Optimization').selection = 7
+    c = LsysContext()
+    c.options.find('Optimization').selection = 7
 
 
 @case("LsysOptions.__getitem__")
 def options_index_out_of_range():
     from openalea.lpy import LsysContext
 
-    return LsysContext().options[100]
+    c = LsysContext()
+    return c.options[100]
 
 
 @case("LsysOption.__getitem__")
 def option_index_out_of_range():
     from openalea.lpy import LsysContext
 
-    return LsysContext().options.find('Optimization')[3]
+    c = LsysContext()
+    return c.options.find('Optimization')[3]
 
 
 @case("LsysOption", "LsysOptions", "LsysOption.setSelection", "LsysOptions.find")
@@ -424,7 +429,8 @@ def version():
             get_version_majorminor(__version_number__), version_string(0), version_string(0, '$Rev: 1234 $')]
 
 
-@case("ParameterSet", "parameterset")
+@case("ParameterSet", "parameterset", "ParameterSet.get", "ParameterSet.hasattr", "ParameterSet.set", "ParameterSet.setdefault",
+      "ParameterSet.parameter_names", "ParameterSet.rename", "ParameterSet.copy")
 def parameter_set():
     from openalea.lpy import ParameterSet, parameterset
 
@@ -441,30 +447,29 @@ def parameter_set():
     return out
 
 
-@case("ParameterSet")
+@case("ParameterSet.setdefault")
 def parameter_set_setdefault_odd():
     from openalea.lpy import ParameterSet
 
     return ParameterSet().setdefault('e')
 
 
-@case("ParameterSet")
+@case("ParameterSet.setdefault")
 def parameter_set_setdefault_pairs():
     from openalea.lpy import ParameterSet
 
     return ParameterSet().setdefault('e', 1)
 
 
-@case("extern", "defaultparameters")
-def extern_and_defaultparameters():
+@case("extern")
+def extern_values():
+    # (defaultparameters has no case: L-Py's calls inspect.getargspec, which Python 3.11 no
+    # longer has, so it raises AttributeError there; Sprout's runs.)
     ns = {}
-    exec('\n'.join(['from openalea.lpy import extern, defaultparameters', 'b = 20', 'extern(a=1, b=2)', 'extern("b")',
-                    '@defaultparameters', 'def params():', '    u = 1', '    v = 2',
-                    '@defaultparameters', 'def scaled(i):', '    w = i * 2', 'scaled(4)', '']), ns)
-    from openalea.lpy.defaultparameters import extern as extern2, defaultparameters as dp2
+    exec('\n'.join(['from openalea.lpy import extern', 'b = 20', 'extern(a=1, b=2)', 'extern("b")', '']), ns)
+    from openalea.lpy.defaultparameters import extern as extern2
     import openalea.lpy as lpy
-    return [ns['a'], ns['b'], sorted(ns['__externs__']), ns['u'], ns['v'], ns['w'], extern2 is lpy.extern,
-            dp2 is lpy.defaultparameters]
+    return [ns['a'], ns['b'], sorted(ns['__externs__']), extern2 is lpy.extern]
 
 
 @case("extern")
@@ -553,7 +558,8 @@ def plotter():
 def turtle_interpretations():
     from openalea.lpy import LsysContext, Lstring, turtle_interpretation, turtle_partial_interpretation
 
-    t = LsysContext().turtle
+    c = LsysContext()  # kept: its turtle lives as long as it does
+    t = c.turtle
     out = [turtle_interpretation(Lstring('FF'), t), len(t.getScene())]
     turtle_partial_interpretation(Lstring('F'), t)
     out.append(len(t.getScene()))
@@ -566,7 +572,22 @@ def turtle_interpretations():
 def turtle_interpretation_unbalanced():
     from openalea.lpy import LsysContext, Lstring, turtle_interpretation
 
-    return turtle_interpretation(Lstring('F[F'), LsysContext().turtle)
+    import os
+    import sys
+
+    c = LsysContext()
+    # L-Py's C++ prints the turtle's stack size to the process's stdout (file 1), where the
+    # cases' results go: sent elsewhere for the call.
+    sys.stdout.flush()
+    kept = os.dup(1)
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    try:
+        return turtle_interpretation(Lstring('F[F'), c.turtle)
+    finally:
+        os.dup2(kept, 1)
+        os.close(kept)
+        os.close(devnull)
 
 
 @case("pproduce")
