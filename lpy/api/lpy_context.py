@@ -116,8 +116,10 @@ class LsysContext:
         self._kind = _kind
         self._state = dict(ns={} if _ns is None else _ns, file=None, materials={}, angle=None, warnings=[], options={},
                            timestep=DEFAULT_TIMESTEP, scales={}, declared=[], production=[])
-        self._control = dict(forward=True, group=0, frame=False, selectionAlways=False, selectionRequested=False,
-                             stop=False, iteration=0, animating=False)
+        # The control of a derivation, shared with the engine that runs this context's model
+        # (lpy/interpreter/interpreter.cpp's EngineScope): it takes it, and gives it back.
+        self._control = self._state['control'] = dict(forward=True, group=0, frame=False, selectionAlways=False,
+                                                      selectionRequested=False, stop=False, iteration=0, animating=False)
         self._turtle = _Turtle(self._state)
         self._options = LsysOptions(self._state['options'], self._option_changed)
         if _ns is None and _kind == 'local':

@@ -82,16 +82,50 @@ py::dict looseNamespace() {
     return *ns;
 }
 
+namespace {
+// The control of a derivation (direction, group of rules, selection, frame display, iteration)
+// is the current context's (openalea.lpy's LsysContext, lpy/api/lpy_context.py) and the engine's
+// while the engine runs that context's model (the context's namespace is the engine's): the
+// engine takes it when it starts to run, the context gets it back when the engine stops.
+void shareControl(Engine* e, bool starting) {
+    if (!e) return;
+    try {
+        py::dict state = py::module_::import("openalea.lpy").attr("_state");
+        if (!state.contains("control") || !state.contains("ns") || !py::object(state["ns"]).is(e->ns())) return;
+        py::dict c = state["control"];
+        if (starting) {
+            e->forwardDirection = c["forward"].cast<bool>();
+            e->group = c["group"].cast<int>();
+            e->selectionAlways = c["selectionAlways"].cast<bool>();
+            e->selectionRequested = c["selectionRequested"].cast<bool>();
+            return;
+        }
+        c["forward"] = e->forwardDirection;
+        c["group"] = e->group;
+        c["selectionAlways"] = e->selectionAlways;
+        c["selectionRequested"] = e->selectionRequested;
+        c["frame"] = e->frameDisplayed;
+        c["iteration"] = e->iteration;
+        c["animating"] = e->animating;
+    } catch (py::error_already_set& err) {
+        err.discard_as_unraisable("sharing the control of a derivation with its context");
+    } catch (std::exception&) {
+    }
+}
+}  // namespace
+
 EngineScope::EngineScope(Engine* e) : m_engine(e), m_before(currentEngine()) {
     // The names the engine before made go to the table first, and this engine catches up.
     if (m_before) registry().adopt(m_before->classes(), false);
     if (m_engine) m_engine->classes().adopt(registry(), true);
+    if (m_engine != m_before) shareControl(m_engine, true);
     setCurrentEngine(m_engine);
 }
 
 EngineScope::~EngineScope() {
     if (m_engine) registry().adopt(m_engine->classes(), false);
     if (m_before) m_before->classes().adopt(registry(), true);
+    if (m_engine != m_before) shareControl(m_engine, false);
     setCurrentEngine(m_before);
 }
 

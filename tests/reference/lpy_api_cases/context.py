@@ -602,3 +602,22 @@ def help_turtle():
     from openalea.lpy import helpTurtle
 
     return [helpTurtle(), helpTurtle('F'), helpTurtle('+'), helpTurtle('Left'), helpTurtle('@Gc'), helpTurtle('NoSuchModule')]
+
+
+@case("LsysContext.useGroup", "LsysContext.getIterationNb", "LsysContext.isFrameDisplayed", "LsysContext.backward",
+      "LsysContext.isForward")
+def context_control_around_a_run():
+    # What is set on an Lsystem's context before a derivation steers it; what the derivation
+    # leaves is read from the context after it.
+    from openalea.lpy import Lsystem
+
+    lsys = Lsystem()
+    lsys.setCode('Axiom: A\nproduction:\nA --> AB\ngroup 1:\nB --> C\nendgroup\nendlsystem\n')
+    plain = str(lsys.derive(lsys.axiom, 0, 2))
+    lsys.context().useGroup(1)
+    grouped = str(lsys.derive(lsys.axiom, 0, 3))
+    out = [plain, grouped, lsys.context().getGroup(), lsys.context().getIterationNb(), lsys.context().isFrameDisplayed()]
+    lsys.context().useGroup(0)
+    lsys.context().backward()
+    out += [str(lsys.derive(lsys.axiom, 0, 2)), lsys.context().isForward()]
+    return out
