@@ -56,6 +56,11 @@ def _warn(message):
         lpy._warn(message)
 
 
+def _predefined(name):
+    from openalea.lpy._base import _PREDEFINED
+    return any(name == row[0] or name in row[1].split(', ') for row in _PREDEFINED)
+
+
 def _running():
     return _control('iteration') is not None
 
@@ -112,7 +117,7 @@ class LsysContext:
 
     InitialisationFunctionName = '__initialiseContext__'
 
-    def __init__(self, _ns=None, _kind='local'):
+    def __init__(self, *, _ns=None, _kind='local'):
         self._kind = _kind
         self._state = dict(ns={} if _ns is None else _ns, file=None, materials={}, angle=None, warnings=[], options={},
                            timestep=DEFAULT_TIMESTEP, scales={}, declared=[], production=[])
@@ -200,13 +205,26 @@ class LsysContext:
         return self._get('animating')
 
     def nproduce(self, lstring):
-        """Adds modules to the production under way (a list of modules, or an Lstring)."""
+        """Adds modules to the production under way (an Lstring, a list of modules, or their
+        text)."""
+        if isinstance(lstring, str):
+            lstring = Lstring(lstring)
         if not isinstance(lstring, (Lstring, list)):
-            raise TypeError("LsysContext.nproduce(lstring): an Lstring or a list of modules")
+            raise TypeError("LsysContext.nproduce(lstring): an Lstring, a list of modules or their text")
         if self is _current and _running():
             _nsproduce(lstring)
         else:
-            self._state['production'].append(Lstring(lstring) if isinstance(lstring, list) else lstring)
+            for module in Lstring(lstring) if isinstance(lstring, list) else lstring:
+                self._state['production'].append(module)
+
+    # L-Py's buffer of nproduce outside a rule (what the next produce will start with).
+    @property
+    def __production_buffer__(self):
+        return Lstring(list(self._state['production']))
+
+    @__production_buffer__.setter
+    def __production_buffer__(self, lstring):
+        self._state['production'] = list(Lstring(lstring) if not isinstance(lstring, Lstring) else lstring)
 
     # -- settings ------------------------------------------------------------------------
     @property
@@ -253,12 +271,12 @@ class LsysContext:
 
     def undeclare(self, modules):
         """Undeclares modules. As in L-Py, a string read in this context declared the modules it
-        named on the fly (Sprout does not list those): a module Sprout knows is undeclared
-        silently; a name no module has is an error."""
+        named on the fly (Sprout does not list those): a module of the model's Sprout knows is
+        undeclared silently; a predefined module or a name no module has is an error."""
         for name in _module_names(modules):
             if name in self._state['declared']:
                 self._state['declared'].remove(name)
-            elif ModuleClass.get(name) is None:
+            elif ModuleClass.get(name) is None or _predefined(name):
                 raise ValueError("Cannot undeclare module '%s'. Not declared in this scope." % name)
 
     def isDeclared(self, module):
@@ -297,7 +315,7 @@ class LsysContext:
 
     has_key = __contains__
 
-    def get(self, name, defaultvalue=None):
+    def get(self, name, defaultvalue):  # both needed, as L-Py's (a C++ default Boost.Python does not see)
         if name in self.locals():
             return self.locals()[name]
         return self.globals().get(name, defaultvalue)
@@ -305,7 +323,7 @@ class LsysContext:
     def __getitem__(self, name):
         if name not in self:
             raise KeyError(name)
-        return self.get(name)
+        return self.get(name, None)
 
     def __setitem__(self, name, value):
         self.locals()[name] = value
@@ -321,7 +339,7 @@ class LsysContext:
         if not code:
             return None
         with _Maintained(self):
-            return eval(code, self.globals(), {})
+            return eval(compile(code, '<string>', 'eval'), self.globals(), {})
 
     def compile(self, code, *more):
         """compile(code) runs the code in the namespace; compile(name, code) runs it and gives
@@ -331,14 +349,14 @@ class LsysContext:
             if not code:
                 return None
             exec(code, self.globals(), self.locals())
-            return self.get(name)
+            return self.get(name, None)
         with _Maintained(self):
             exec(code, self.globals(), self.locals())
 
     # -- the functions of a model ----------------------------------------------------------
     def _call(self, name):
         with _Maintained(self):
-            return self.get(name)() if name in self else None
+            return self.get(name, None)() if name in self else None
 
     def start(self):
         return self._call('Start')
@@ -378,7 +396,7 @@ class LsysContext:
     def _initialise(self):
         if LsysContext.InitialisationFunctionName not in self:
             return False
-        self.get(LsysContext.InitialisationFunctionName)(self)
+        self.get(LsysContext.InitialisationFunctionName, None)(self)
         return True
 
     def initialiseFrom(self, code):

@@ -621,3 +621,50 @@ def context_control_around_a_run():
     lsys.context().backward()
     out += [str(lsys.derive(lsys.axiom, 0, 2)), lsys.context().isForward()]
     return out
+
+
+@case("LsysContext.get")
+def context_get_needs_a_default():
+    from openalea.lpy import LsysContext
+
+    c = LsysContext()
+    c['x'] = 1
+    return c.get('x')
+
+
+@case("LsysContext")
+def context_takes_no_argument():
+    from openalea.lpy import LsysContext
+
+    return LsysContext(1)
+
+
+@case("LsysContext.evaluate")
+def context_evaluate_indented():
+    from openalea.lpy import LsysContext
+
+    return LsysContext().evaluate(' 3')
+
+
+@case("LsysContext.undeclare")
+def context_undeclare_predefined():
+    from openalea.lpy import LsysContext
+
+    return LsysContext().undeclare('F')
+
+
+@case("LsysContext.nproduce", "nsproduce")
+def context_production_buffer():
+    from openalea.lpy import LsysContext, Lstring, nsproduce
+
+    c = LsysContext()
+    c.nproduce('A B')
+    c.nproduce(Lstring('C(1)'))
+    out = [str(c.__production_buffer__)]
+    c.makeCurrent()
+    try:
+        nsproduce('D')
+        out.append(str(c.__production_buffer__))
+    finally:
+        c.done()
+    return out
