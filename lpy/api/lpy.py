@@ -15,6 +15,9 @@
 import sys as _sys
 
 from _sprout_lpy import Lstring, Module, ModuleClass
+# The getters rules call at each match, in C++ (lpy/api/module.cpp): the running engine's value,
+# or the current context's.
+from _sprout_lpy import getIterationNb, getGroup, isForward, isFrameDisplayed, isAnimationEnabled, isSelectionAlwaysRequired
 from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods
 from openalea.lpy._base import *  # noqa: F401,F403
 from openalea.lpy._base import __version_number__, __revision_str__  # noqa: F401
@@ -117,28 +120,12 @@ def forward():
     _cm._current.forward()
 
 
-def isForward():
-    return _cm._current.isForward()
-
-
 def useGroup(gid):
     _cm._current.useGroup(gid)
 
 
-def getGroup():
-    return _cm._current.getGroup()
-
-
 def frameDisplay(enabled=True):
     _cm._current.frameDisplay(enabled)
-
-
-def isFrameDisplayed():
-    return _cm._current.isFrameDisplayed()
-
-
-def isSelectionAlwaysRequired():
-    return _cm._current.isSelectionAlwaysRequired()
 
 
 def setSelectionAlwaysRequired(enabled):
@@ -147,14 +134,6 @@ def setSelectionAlwaysRequired(enabled):
 
 def requestSelection(message):
     _cm._current.requestSelection(message)
-
-
-def getIterationNb():
-    return _cm._current.getIterationNb()
-
-
-def isAnimationEnabled():
-    return _cm._current.isAnimationEnabled()
 
 
 def declare(modules):

@@ -100,6 +100,20 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
         if (name == "animating") return py::bool_(e->animating);
         throw py::key_error(name);
     }, py::arg("name"), py::arg("value") = py::none());
+    // The getters a model's rules call at each match: the running engine's value at once,
+    // otherwise the current context's (openalea.lpy's functions of the same names).
+    auto getter = [&m](const char* name, py::object (*ofEngine)(Engine&)) {
+        m.def(name, [name, ofEngine]() -> py::object {
+            if (Engine* e = currentEngine()) return ofEngine(*e);
+            return py::module_::import("openalea.lpy._context").attr("_current").attr(name)();
+        });
+    };
+    getter("getIterationNb", [](Engine& e) -> py::object { return py::int_(e.iteration); });
+    getter("getGroup", [](Engine& e) -> py::object { return py::int_(e.group); });
+    getter("isForward", [](Engine& e) -> py::object { return py::bool_(e.forwardDirection); });
+    getter("isFrameDisplayed", [](Engine& e) -> py::object { return py::bool_(e.frameDisplayed); });
+    getter("isAnimationEnabled", [](Engine& e) -> py::object { return py::bool_(e.animating); });
+    getter("isSelectionAlwaysRequired", [](Engine& e) -> py::object { return py::bool_(e.selectionAlways); });
     // InLeftContext / InRightContext in a rule's body (lpy/translate/contexts.cpp).
     m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
     // `produce A(**p)`: p's values in the order of A's declared parameters.
