@@ -275,10 +275,13 @@ def _owner_of(turtle):
 
 def plot(lstring, turtle=None):
     """Draws a string with the current context's turtle (or `turtle`): its scene goes to the
-    registered plotter (registerPlotter)."""
+    registered plotter (registerPlotter), or is shown in Jupyter."""
     scene = _scene_of(lstring, _owner_of(_turtle_of(turtle)) if turtle is not None else context())
     if _plotter is not None:
         _plotter.plot(scene)
+    else:  # L-Py shows it in PlantGL's viewer; Sprout in Jupyter, as Lsystem.plot does
+        from openalea.lpy._lsystem import _show_in_notebook
+        _show_in_notebook(scene)
 
 
 def turtle_interpretation(lstring, turtle, matching=None):
