@@ -287,6 +287,8 @@ def plot(lstring, turtle=None):
 def turtle_interpretation(lstring, turtle, matching=None):
     """The string interpreted by a context's turtle, from its start: turtle.getScene() is the
     scene it drew."""
+    if not isinstance(lstring, Lstring):
+        raise TypeError("turtle_interpretation(lstring, turtle): an Lstring, not %s" % type(lstring).__name__)
     t = _turtle_of(turtle)
     if not lstring.wellBracketed():
         raise ValueError("Ill-formed string: unmatched brackets")
@@ -295,6 +297,8 @@ def turtle_interpretation(lstring, turtle, matching=None):
 
 def turtle_partial_interpretation(lstring, turtle):
     """The string interpreted by a context's turtle, its shapes added to what it drew before."""
+    if not isinstance(lstring, Lstring):
+        raise TypeError("turtle_partial_interpretation(lstring, turtle): an Lstring, not %s" % type(lstring).__name__)
     t = _turtle_of(turtle)
     scene = _scene_of(lstring, _owner_of(t))
     before = t._state.get('scene')

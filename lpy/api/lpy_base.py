@@ -60,6 +60,29 @@ LPY_VERSION_STR = version_string(__version_number__, __revision_str__)
 
 
 # [SECTION] options
+# The arguments L-Py's C++ takes, checked as Boost.Python converts them: a string, a flag (what
+# has a truth value of its own: a number, None, a bool; not a string or a list), a count (an
+# int, not a float; negative, an OverflowError).
+def _text(value, what):
+    if not isinstance(value, str):
+        raise TypeError("%s: a string, not %s" % (what, type(value).__name__))
+    return value
+
+
+def _flag(value, what):
+    if not hasattr(type(value), '__bool__'):
+        raise TypeError("%s: True or False, not %s" % (what, type(value).__name__))
+    return bool(value)
+
+
+def _count(value, what):
+    if not isinstance(value, int):
+        raise TypeError("%s: an integer, not %s" % (what, type(value).__name__))
+    if value < 0:
+        raise OverflowError("can't convert negative value to unsigned int")
+    return int(value)
+
+
 def _cython_available():
     import importlib.util
     try:
@@ -137,7 +160,8 @@ class LsysOption:
     default_value_id = 0
 
     def __init__(self, name, comment='', category=''):
-        self.name, self.comment, self.category = name, comment, category
+        self.name, self.comment, self.category = _text(name, 'LsysOption(name)'), _text(comment, 'LsysOption(comment)'), \
+            _text(category, 'LsysOption(category)')
         self.default_value_id = 0
         setattr(self, 'global', False)
         self._values, self._store = [], {}
@@ -190,7 +214,8 @@ class LsysOption:
         return len(self._values)
 
     def __getitem__(self, index):
-        index = int(index)
+        if not isinstance(index, int):
+            raise TypeError("LsysOption[index]: an integer, not %s" % type(index).__name__)
         if index < 0:
             index += len(self._values)
         if not 0 <= index < len(self._values):
@@ -216,12 +241,15 @@ class LsysOptions:
                 self._all.append(option)
 
     def find(self, name):
+        _text(name, 'LsysOptions.find(name)')
         for option in self._all:
             if option.name == name:
                 return option
         return None
 
     def setSelection(self, name, value):
+        if isinstance(value, float) or not isinstance(value, (str, int)):
+            raise TypeError("LsysOptions.setSelection(name, value): a value's name or its index")
         option = self.find(name)
         return False if option is None else option.setSelection(value)
 
@@ -232,11 +260,9 @@ class LsysOptions:
     def activateSelection(self, name):
         return self.find(name) is not None
 
-    def __getitem__(self, key):
-        if isinstance(key, str):  # Sprout's: an option's selection by its name
-            option = self.find(key)
-            return None if option is None else option.selection
-        index = int(key)
+    def __getitem__(self, index):
+        if not isinstance(index, int):
+            raise TypeError("LsysOptions[index]: an integer, not %s (find(name) gives an option by its name)" % type(index).__name__)
         if index < 0:
             index += len(self._all)
         if not 0 <= index < len(self._all):
@@ -445,7 +471,7 @@ def helpTurtle(command=None):
     """L-Py's helpTurtle(): every predefined module by category, with its aliases and what it
     does; helpTurtle(name): the documentation of that module ('' for none)."""
     if command is not None:
-        command = str(command)
+        _text(command, 'helpTurtle(module)')
         for name, alias, category, doc in _PREDEFINED:
             if command == name or command in alias.split(', '):
                 return doc

@@ -15,7 +15,7 @@
 import sys as _sys
 
 from _sprout_lpy import _control, _nsproduce, _declare, ModuleClass, Lstring
-from openalea.lpy._base import LsysOptions
+from openalea.lpy._base import LsysOptions, _text, _flag, _count
 
 __all__ = ['LsysContext']
 
@@ -68,6 +68,8 @@ def _running():
 def _module_names(text):
     """The names of a module list ('A, B(x, y), C'): each name before its parameters."""
     names, depth, word = [], 0, ''
+    if str(text).count('(') != str(text).count(')'):
+        raise SyntaxError("Invalid syntax in module declaration: Wait for ')'.")
     for ch in str(text) + ',':
         if ch == '(':
             depth += 1
@@ -169,17 +171,13 @@ class LsysContext:
         self._set('stop', True)
 
     def useGroup(self, gid):
-        if isinstance(gid, float) or not isinstance(gid, int):
-            raise TypeError("useGroup(gid): a group is a number from 0, not %s" % type(gid).__name__)
-        if gid < 0:
-            raise OverflowError("can't convert negative value to unsigned int")
-        self._set('group', int(gid))
+        self._set('group', _count(gid, 'useGroup(gid)'))
 
     def getGroup(self):
         return self._get('group')
 
     def frameDisplay(self, enabled=True):
-        self._set('frame', bool(enabled))
+        self._set('frame', _flag(enabled, 'frameDisplay(enabled)'))
 
     def isFrameDisplayed(self):
         return self._get('frame')
@@ -188,13 +186,13 @@ class LsysContext:
         return self._get('selectionAlways')
 
     def setSelectionAlwaysRequired(self, enabled):
-        enabled = bool(enabled)
+        enabled = _flag(enabled, 'setSelectionAlwaysRequired(enabled)')
         if self._get('selectionAlways') != enabled:
             self._set('selectionAlways', enabled)
             self._state['options']['Selection Always Required'] = int(enabled)
 
     def requestSelection(self, message):
-        self._control['message'] = str(message)
+        self._control['message'] = _text(message, 'requestSelection(message)')
         self._set('selectionRequested', True)
         self.frameDisplay(True)
 
@@ -241,6 +239,8 @@ class LsysContext:
 
     @animation_timestep.setter
     def animation_timestep(self, value):
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise TypeError("animation_timestep: a number, not %s" % type(value).__name__)
         self._state['timestep'] = float(value)
 
     def is_animation_timestep_to_default(self):
@@ -265,7 +265,7 @@ class LsysContext:
     # -- modules -------------------------------------------------------------------------
     def declare(self, modules):
         """Declares modules ('A, B(x, y)') for the strings this context reads."""
-        for name in _module_names(modules):
+        for name in _module_names(_text(modules, 'declare(modules)')):
             _declare(name)
             self._state['declared'].append(name)
 
@@ -273,20 +273,22 @@ class LsysContext:
         """Undeclares modules. As in L-Py, a string read in this context declared the modules it
         named on the fly (Sprout does not list those): a module of the model's Sprout knows is
         undeclared silently; a predefined module or a name no module has is an error."""
-        for name in _module_names(modules):
+        for name in _module_names(_text(modules, 'undeclare(modules)')):
             if name in self._state['declared']:
                 self._state['declared'].remove(name)
             elif ModuleClass.get(name) is None or _predefined(name):
                 raise ValueError("Cannot undeclare module '%s'. Not declared in this scope." % name)
 
     def isDeclared(self, module):
-        return str(module) in self._state['declared']
+        return _text(module, 'isDeclared(module)') in self._state['declared']
 
     def declaredModules(self):
         return [ModuleClass.get(name) for name in self._state['declared']]
 
     def setModuleScale(self, modules, scale):
-        for name in _module_names(modules):
+        if not isinstance(scale, int):
+            raise TypeError("setModuleScale(modules, scale): the scale is an integer, not %s" % type(scale).__name__)
+        for name in _module_names(_text(modules, 'setModuleScale(modules)')):
             self._state['scales'][name] = int(scale)
             self._state['changes'] = self._state.get('changes', 0) + 1
 
@@ -300,9 +302,13 @@ class LsysContext:
         return self._state['ns']
 
     def getNamespace(self, d):
+        if not isinstance(d, dict):
+            raise TypeError("getNamespace(d): a dict, not %s" % type(d).__name__)
         d.update(self.locals())
 
     def updateNamespace(self, d):
+        if not isinstance(d, dict):
+            raise TypeError("updateNamespace(d): a dict, not %s" % type(d).__name__)
         self.locals().update(d)
 
     def clearNamespace(self):
@@ -311,12 +317,13 @@ class LsysContext:
             self._initialise_namespace()
 
     def __contains__(self, name):
+        _text(name, 'a name of the context')
         return name in self.locals() or name in self.globals()
 
     has_key = __contains__
 
     def get(self, name, defaultvalue):  # both needed, as L-Py's (a C++ default Boost.Python does not see)
-        if name in self.locals():
+        if _text(name, 'a name of the context') in self.locals():
             return self.locals()[name]
         return self.globals().get(name, defaultvalue)
 
@@ -326,17 +333,17 @@ class LsysContext:
         return self.get(name, None)
 
     def __setitem__(self, name, value):
-        self.locals()[name] = value
+        self.locals()[_text(name, 'a name of the context')] = value
 
     def __delitem__(self, name):
-        if name in self.locals():
+        if _text(name, 'a name of the context') in self.locals():
             del self.locals()[name]
         else:
             del self.globals()[name]
 
     def evaluate(self, code):
         """The value of a Python expression in the context's namespace (None for no code)."""
-        if not code:
+        if not _text(code, 'evaluate(code)'):
             return None
         with _Maintained(self):
             return eval(compile(code, '<string>', 'eval'), self.globals(), {})
@@ -345,13 +352,13 @@ class LsysContext:
         """compile(code) runs the code in the namespace; compile(name, code) runs it and gives
         the value it left under `name` (None for no code)."""
         if more:
-            name, code = code, more[0]
+            name, code = _text(code, 'compile(name, code)'), _text(more[0], 'compile(name, code)')
             if not code:
                 return None
             exec(code, self.globals(), self.locals())
             return self.get(name, None)
         with _Maintained(self):
-            exec(code, self.globals(), self.locals())
+            exec(_text(code, 'compile(code)'), self.globals(), self.locals())
 
     # -- the functions of a model ----------------------------------------------------------
     def _call(self, name):
@@ -403,7 +410,7 @@ class LsysContext:
         """Runs the INITIALISATION part of a model's code, then initialise(): where the part
         begins, or None without one."""
         with _Maintained(self):
-            pos = code.find(INITIALISATION_TAG)
+            pos = _text(code, 'initialiseFrom(code)').find(INITIALISATION_TAG)
             if pos < 0:
                 return None
             self.compile(code[pos:])

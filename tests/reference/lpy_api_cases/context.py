@@ -668,3 +668,45 @@ def context_production_buffer():
     finally:
         c.done()
     return out
+
+
+def _error_of(call):
+    """The exception a call raises, by name (Boost.Python's ArgumentError is Python's TypeError)."""
+    try:
+        call()
+    except Exception as e:  # the error is the result
+        name = type(e).__name__
+        return 'TypeError' if name == 'ArgumentError' else name
+    return None
+
+
+@case("LsysContext.declare", "LsysContext.undeclare", "LsysContext.isDeclared", "LsysContext.setModuleScale",
+      "LsysContext.frameDisplay", "LsysContext.setSelectionAlwaysRequired", "LsysContext.requestSelection",
+      "LsysContext.__setitem__", "LsysContext.__getitem__", "LsysContext.__contains__", "LsysContext.evaluate",
+      "LsysContext.compile", "LsysContext.initialiseFrom", "LsysContext.updateNamespace", "LsysContext.getNamespace",
+      "LsysContext.animation_timestep", "LsysContext.useGroup", "LsysContext.nproduce", "declare")
+def context_bad_arguments():
+    from openalea.lpy import LsysContext, declare
+
+    c = LsysContext()
+    calls = [lambda: c.declare(5), lambda: c.undeclare(5), lambda: c.isDeclared(5), lambda: c.setModuleScale('A', 'x'),
+             lambda: c.setModuleScale('A', 2.5), lambda: c.frameDisplay('x'), lambda: c.frameDisplay(None),
+             lambda: c.frameDisplay(1), lambda: c.setSelectionAlwaysRequired('x'), lambda: c.requestSelection(5),
+             lambda: c.__setitem__(5, 1), lambda: c.__getitem__(5), lambda: 5 in c, lambda: c.evaluate(5), lambda: c.compile(5),
+             lambda: c.initialiseFrom(5), lambda: c.updateNamespace(5), lambda: c.getNamespace(5),
+             lambda: setattr(c, 'animation_timestep', 'x'), lambda: c.useGroup(2.0), lambda: c.useGroup(True),
+             lambda: c.nproduce(5), lambda: declare('A(')]
+    return [_error_of(call) for call in calls]
+
+
+@case("LsysOptions.setSelection", "LsysOptions.find", "LsysOptions.__getitem__", "LsysOption", "LsysOption.setSelection",
+      "helpTurtle", "generateScene", "turtle_interpretation", "nsproduce")
+def options_and_functions_bad_arguments():
+    from openalea.lpy import LsysContext, LsysOption, Lstring, helpTurtle, generateScene, turtle_interpretation, nsproduce
+
+    c = LsysContext()
+    o = c.options
+    calls = [lambda: o.setSelection('Optimization', 1.5), lambda: o.find(5), lambda: o[1.5], lambda: o['Optimization'],
+             lambda: o.find('Optimization').setSelection(None), lambda: LsysOption(5), lambda: helpTurtle(5),
+             lambda: generateScene('F'), lambda: turtle_interpretation('F', c.turtle), lambda: nsproduce(5)]
+    return [_error_of(call) for call in calls]
