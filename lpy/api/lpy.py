@@ -186,20 +186,24 @@ def pInRightContext(patternid, parameters=None):
     return _in_context(patternid, False, {} if parameters is None else parameters)
 
 
-def inLeftContext(pattern, parameters=None):
-    """inLeftContext('A(x)', d) in a rule's body: Sprout reads the pattern with the file (a
-    literal in the call); called otherwise it is outside a rule's body."""
+def _in_context_of(pattern, left, parameters):
     if not _cm._running():
-        raise ValueError("Cannot call inLeftContext")
-    raise ValueError("inLeftContext(%r): Sprout reads the pattern with the model's file: write it in the rule's body, "
-                     "inLeftContext('A(x)', d)" % (str(pattern),))
+        raise ValueError("Cannot call %s" % ("inLeftContext" if left else "inRightContext"))
+    from _sprout_lpy import _in_context_text
+    return _in_context_text(str(pattern), left, {} if parameters is None else parameters)
+
+
+def inLeftContext(pattern, parameters=None):
+    """In a rule's body: whether `pattern` ('A(x)', a PatternString) matches on the left of the
+    rule's match (from where the header's context, or the last such test, ended); its values go
+    into `parameters`. A pattern written in the call is read with the file; one made at run
+    time is read when first tested."""
+    return _in_context_of(pattern, True, parameters)
 
 
 def inRightContext(pattern, parameters=None):
-    if not _cm._running():
-        raise ValueError("Cannot call inRightContext")
-    raise ValueError("inRightContext(%r): Sprout reads the pattern with the model's file: write it in the rule's body, "
-                     "inRightContext('A(x)', d)" % (str(pattern),))
+    """inLeftContext's twin, on the right of the rule's match."""
+    return _in_context_of(pattern, False, parameters)
 
 
 # [SECTION] the plotter, scenes and the selection

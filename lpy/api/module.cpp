@@ -116,6 +116,8 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
     getter("isSelectionAlwaysRequired", [](Engine& e) -> py::object { return py::bool_(e.selectionAlways); });
     // InLeftContext / InRightContext in a rule's body (lpy/translate/contexts.cpp).
     m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
+    // inLeftContext('A(x)', d) with a pattern made at run time (lpy/api/lpy.py).
+    m.def("_in_context_text", [](const std::string& text, bool left, py::handle dict) { return engine().inContextText(text, left, dict); });
     // `produce A(**p)`: p's values in the order of A's declared parameters.
     m.def("__lpy_kwargs", [](int cls, py::dict values) {
         const ModuleClasses& classes = engine().translation().classes;

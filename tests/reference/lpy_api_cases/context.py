@@ -710,3 +710,33 @@ def options_and_functions_bad_arguments():
              lambda: o.find('Optimization').setSelection(None), lambda: LsysOption(5), lambda: helpTurtle(5),
              lambda: generateScene('F'), lambda: turtle_interpretation('F', c.turtle), lambda: nsproduce(5)]
     return [_error_of(call) for call in calls]
+
+
+@case("inLeftContext", "inRightContext")
+def in_context_made_at_run_time():
+    # Patterns a rule's body makes while it runs: each test goes on from where the last ended.
+    from openalea.lpy import Lsystem
+
+    code = '\n'.join([
+        'seen = []',
+        'right = "B(y)"',
+        'Axiom: C(1) A B(2) B(3) D',
+        'derivation length: 1',
+        'production:',
+        'A:',
+        '    d = {}',
+        '    seen.append((inRightContext(right, d), dict(d)))',
+        '    d = {}',
+        '    seen.append((inRightContext(right, d), dict(d)))',
+        '    d = {}',
+        '    seen.append((inRightContext(right, d), dict(d)))',
+        '    d = {}',
+        '    left = "C(" + "z)"',
+        '    seen.append((inLeftContext(left, d), dict(d)))',
+        '    seen.append(inLeftContext("E", {}))',
+        '    produce A',
+        'endlsystem', ''])
+    lsys = Lsystem()
+    lsys.setCode(code)
+    lsys.derive()
+    return [list(x) if isinstance(x, tuple) else x for x in lsys.context()['seen']]
