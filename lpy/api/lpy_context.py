@@ -3,10 +3,11 @@
 # namespace (context['k'] = v), its options, the turtle's settings and materials, its declared
 # modules and the control of a derivation (direction, group of rules, frame display, selection,
 # early return). While Sprout's engine runs the model of the current context, that control is
-# the engine's (_sprout_lpy._control); otherwise each context keeps its own.
+# the engine's (_sprout_lpy._control; the engine takes it from the context when it starts and
+# gives it back when it stops); otherwise each context keeps its own.
 # Installed as openalea.lpy._context before openalea.lpy (lpy/interpreter/interpreter.cpp),
-# which imports LsysContext and gives the functions on the current context; openalea.lpy._state is the current context's state, which the
-# engine reads (options, materials, scales).
+# which imports LsysContext and gives the functions on the current context. openalea.lpy._state
+# is the current context's state, which the engine reads (options, materials, scales).
 
 # Index of this file:
 #   [SECTION] the current context
@@ -215,7 +216,7 @@ class LsysContext:
             for module in Lstring(lstring) if isinstance(lstring, list) else lstring:
                 self._state['production'].append(module)
 
-    # L-Py's buffer of nproduce outside a rule (what the next produce will start with).
+    # L-Py's buffer of what nproduce gave outside a rule, read and set from Python.
     @property
     def __production_buffer__(self):
         return Lstring(list(self._state['production']))
