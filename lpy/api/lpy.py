@@ -18,7 +18,7 @@ from _sprout_lpy import Lstring, Module, ModuleClass
 # The getters rules call at each match, in C++ (lpy/api/module.cpp): the running engine's value,
 # or the current context's.
 from _sprout_lpy import getIterationNb, getGroup, isForward, isFrameDisplayed, isAnimationEnabled, isSelectionAlwaysRequired
-from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods
+from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods, _nsproduce
 from openalea.lpy._base import *  # noqa: F401,F403
 from openalea.lpy._base import __version_number__, __revision_str__  # noqa: F401
 from openalea.lpy.parameterset import ParameterSet  # noqa: F401
@@ -157,6 +157,8 @@ def nsproduce(lstring):
     """Adds modules (a list, an Lstring or a string of them) to the production under way."""
     if isinstance(lstring, str):
         lstring = Lstring(lstring)
+    if type(lstring) is list and _cm._running():  # in a rule: straight to the engine
+        return _nsproduce(lstring)
     _cm._current.nproduce(lstring)
 
 
@@ -353,7 +355,7 @@ class _InterpretationTurtle:
             raise AttributeError("the turtle has no '%s' (Sprout's turtle of interpretation rules: "
                                  "PglTurtle's drawing calls and the parameters added to it)" % name)
         cls = ModuleClass.get(module)
-        return lambda *args: nsproduce([cls(*args)])
+        return lambda *args: _nsproduce([cls(*args)])
 
     def __setattr__(self, name, value):
         if name in self._params:
