@@ -1,26 +1,34 @@
-# openalea.lpy as Sprout provides it to L-Py model files: the control functions of a
-# derivation (from Sprout's engine, _sprout_lpy) and the `context()` that an
-# INITIALISATION block writes its materials, options and parameters into.
+# openalea.lpy as Sprout provides it to L-Py model files and scripts: what L-Py's package
+# __init__.py gathers. Its parts: openalea.lpy._base (version, options, extern,
+# defaultparameters), openalea.lpy.parameterset (ParameterSet), openalea.lpy._context
+# (LsysContext and the control functions of a derivation), installed before this module
+# (lpy/interpreter/interpreter.cpp); the classes of strings from Sprout's engine (_sprout_lpy);
+# Lsystem and the matching classes added after it (lpy_lsystem.py, lpy_matching.py).
 
 # Index of this file:
 #   [SECTION] module classes, the embedded Python, warnings
-#   [SECTION] L-Py's options
-#   [SECTION] LsysContext and the current context
-#   [SECTION] the plotter and the selection
-#   [SECTION] extern and defaultparameters
+#   [SECTION] functions on the current context
+#   [SECTION] the plotter, scenes and the selection
 #   [SECTION] the turtle of interpretation rules
-#   [SECTION] ParameterSet and makestring
+#   [SECTION] makestring
 
 import sys as _sys
 from types import ModuleType  # in L-Py's namespace, as its __init__ imports it
 
-from _sprout_lpy import (Lstring, Module, ModuleClass, Stop, forward, backward, isForward, useGroup,
-                         getGroup, getIterationNb, nsproduce, isAnimationEnabled, isFrameDisplayed,
-                         setSelectionAlwaysRequired, isSelectionAlwaysRequired, requestSelection)
+from _sprout_lpy import Lstring, Module, ModuleClass
+# The getters rules call at each match, in C++ (lpy/api/module.cpp): the running engine's value,
+# or the current context's.
+from _sprout_lpy import getIterationNb, getGroup, isForward, isFrameDisplayed, isAnimationEnabled, isSelectionAlwaysRequired
+from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods, _nsproduce
+from openalea.lpy._base import *  # noqa: F401,F403
+from openalea.lpy._base import __version_number__, __revision_str__  # noqa: F401
+from openalea.lpy.parameterset import ParameterSet  # noqa: F401
+from openalea.lpy._context import *  # noqa: F401,F403
+import openalea.lpy._context as _cm
 
-from _sprout_lpy import __lpy_module_class as _module_class, _class_count, _turtle_methods
-
-_state = {}
+parameterset = _sys.modules['openalea.lpy.parameterset']
+__version__ = _sys.modules['openalea.lpy.__version__']
+_state = _cm._current._state  # the current context's (set again as it changes)
 
 
 # [SECTION] module classes, the embedded Python, warnings
@@ -95,12 +103,7 @@ def _begin(ns, file, context=None):
             continue
         _sys.modules.pop(name, None)
         globals().pop(name.rpartition('.')[2], None)
-    if context is None:
-        context = LsysContext()
-        _contexts.clear()
-    context._state.update(ns=ns, file=file, warnings=[])
-    context.makeCurrent()
-    return context
+    return _cm._begin_context(ns, file, context)
 
 
 def _warn(message):
@@ -111,264 +114,120 @@ def _warn(message):
     _state.setdefault('warnings', []).append((f.f_lineno if f is not None else 0, message))
 
 
-# [SECTION] L-Py's options
-# L-Py's options (src/cpp/lsyscontext.cpp): each with its values, by index, and its default.
-_OPTIONS = [
-    ('Module declaration', ['On the fly', 'Mandatory'], 0),
-    ('Warning with sharp module', ['Disabled', 'Enabled'], 1),
-    ('Compiler', ['Python', 'Python -OO', 'Cython'], 0),
-    ('Optimization', ['Level 0', 'Level 1', 'Level 2'], 1),
-    ('Module matching', ['Simple', 'Extension : *args', 'Extensions : *args and arg value constraints'], 2),
-    ('Module inheritance', ['Disabled', 'Enabled'], 0),
-    ('String matching', ['As String', 'As AxialTree', 'As Multi-level AxialTree', 'As Multiscale AxialTree'], 1),
-    ('Early return when no matching', ['Disabled', 'Enabled'], 0),
-    ('Axiom decomposition', ['Disabled', 'Enabled'], 0),
-    ('Warning with Turtle inconsistency', ['Disabled', 'Enabled'], 1),
-    ('Turtle Path Optimization', ['Disabled', 'Enabled'], 0),
-    ('Turtle in Interpretation rules', ['Disabled', 'Enabled'], 1),
-    ('Multicore parallel rewriting', ['Disabled', 'Enabled'], 0),
-    ('Bracket mapping optimization', ['Disabled', 'On the fly', 'As preprocessing'], 0),
-    ('Selection Always Required', ['Disabled', 'Enabled'], 0),
-]
-
-
-class _OptionValue:
-    def __init__(self, name):
-        self.name, self.comment = name, ''
-
-    def activate(self):
-        pass
-
-
-class _Option:
-    """One of L-Py's options: its values, the one selected (by index)."""
-
-    def __init__(self, state, name, values, default):
-        self._state, self.name, self._values, self.default_value_id = state, name, values, default
-        self.comment, self.category, self.__dict__['global'] = '', '', False
-
-    @property
-    def selection(self):
-        return self._state['options'].get(self.name, self.default_value_id)
-
-    @selection.setter
-    def selection(self, index):
-        self.setSelection(index)
-
-    def setSelection(self, value):
-        if isinstance(value, str):
-            if value not in self._values:
-                return False
-            value = self._values.index(value)
-        value = int(value)
-        if not 0 <= value < len(self._values):
-            return False
-        self._state['options'][self.name] = value
-        self._state['changes'] = self._state.get('changes', 0) + 1  # read again (Matcher::readOptions)
-        return True
-
-    def currentValue(self):
-        return self._values[self.selection]
-
-    def isToDefault(self):
-        return self.selection == self.default_value_id
-
-    def activateSelection(self):
-        pass
-
-    def activate(self, value):
-        self.setSelection(value)
-
-    def __len__(self):
-        return len(self._values)
-
-    def __getitem__(self, i):
-        return _OptionValue(self._values[i])
-
-
-class _Options:
-    """A context's options as L-Py names them: setSelection(name, index or value name)."""
-
-    def __init__(self, state):
-        self._state = state
-        self._all = [_Option(state, n, v, d) for n, v, d in _OPTIONS]
-
-    def find(self, name):
-        for option in self._all:
-            if option.name == name:
-                return option
-        return None
-
-    def setSelection(self, name, value):
-        option = self.find(name)
-        if option is None:
-            _warn("option '%s' is not one of L-Py's: ignored" % name)
-            return False
-        return option.setSelection(value)
-
-    def activateSelection(self):
-        pass
-
-    def __getitem__(self, key):
-        if isinstance(key, int):
-            return self._all[key]
-        option = self.find(key)
-        return None if option is None else option.selection
-
-    def __len__(self):
-        return len(self._all)
-
-
-# [SECTION] LsysContext and the current context
-class _Turtle:
-    def __init__(self, state):
-        self._state = state
-
-    def setAngleIncrement(self, angle):
-        self._state['angle'] = float(angle)
-
-    def setMaterial(self, index, material):
-        self._state['materials'][int(index)] = material
-
-    def getMaterial(self, index):
-        return self._state['materials'].get(int(index))
-
-    def __getattr__(self, name):
-        if name.startswith('_'):
-            raise AttributeError(name)
-
-        def ignored(*args, **kwargs):
-            _warn("context().turtle.%s is not provided by Sprout: ignored" % name)
-        return ignored
-
-
-class LsysContext:
-    """L-Py's LsysContext: a model's namespace (context['k'] = v), its options, the turtle's
-    settings and materials. The current one is what a running model's context() gives;
-    makeCurrent() and done() switch to it and back."""
-
-    def __init__(self):
-        self._state = dict(ns={}, file=None, materials={}, angle=None, warnings=[], options={}, timestep=None, scales={})
-        self.turtle = _Turtle(self._state)
-        self.options = _Options(self._state)
-
-    def makeCurrent(self):
-        global _state, _current
-        _contexts.append(_current)
-        _current, _state = self, self._state
-
-    def done(self):
-        global _state, _current
-        previous = _contexts.pop() if _contexts else None
-        _current = previous if previous is not None else LsysContext()
-        _state = _current._state
-
-    def isCurrent(self):
-        return _current is self
-
-    def __enter__(self):
-        self.makeCurrent()
-        return self
-
-    def __exit__(self, *exc):
-        self.done()
-
-    @property
-    def animation_timestep(self):
-        return self._state.get('timestep')
-
-    @animation_timestep.setter
-    def animation_timestep(self, value):
-        self._state['timestep'] = value
-
-    def __setitem__(self, name, value):
-        self._state['ns'][name] = value
-
-    def __getitem__(self, name):
-        return self._state['ns'][name]
-
-    def __delitem__(self, name):
-        del self._state['ns'][name]
-
-    def __contains__(self, name):
-        return name in self._state['ns']
-
-    def get(self, name, default=None):
-        return self._state['ns'].get(name, default)
-
-    def globals(self):
-        return self._state['ns']
-
-    def getIterationNb(self):
-        return getIterationNb()
-
-    InitialisationFunctionName = '__initialiseContext__'
-
-    def declare(self, names):
-        """Declares modules ('A, B, C') for the strings this context reads."""
-        from _sprout_lpy import _declare
-        for name in str(names).split(','):
-            name = name.strip().split('(')[0].strip()
-            if name:
-                _declare(name)
-                self._state.setdefault('declared', []).append(name)
-
-    def undeclare(self, names):
-        declared = self._state.setdefault('declared', [])
-        for name in str(names).split(','):
-            name = name.strip()
-            if name in declared:
-                declared.remove(name)
-
-    @staticmethod
-    def currentContext():
-        return _current
-
-    def updateNamespace(self, values):
-        self._state['ns'].update(values)
-
-    def declaredModules(self):
-        return list(self._state.get('declared', []))
-
-    def setModuleScale(self, names, scale):
-        for name in str(names).split(','):
-            if name.strip():
-                self._state['scales'][name.strip()] = int(scale)
-                self._state['changes'] = self._state.get('changes', 0) + 1
-
-    def __getattr__(self, name):
-        if name.startswith('_'):
-            raise AttributeError(name)
-
-        def ignored(*args, **kwargs):
-            _warn("context().%s is not provided by Sprout: ignored" % name)
-        return ignored
-
-
-_contexts = []  # the contexts made current before, for done()
-_current = LsysContext()
-_state = _current._state
-_Context = LsysContext
-
-
+# [SECTION] functions on the current context (src/wrapper/export_lsyscontext.cpp)
 def context():
-    return _current
+    """Return the current L-system context of execution. Rather use execContext."""
+    return _cm._current
 
 
-execContext = context
-getContext = context
+def execContext():
+    """Return the current L-system context of execution."""
+    return _cm._current
 
 
-def frameDisplay(*args):
-    pass
+def backward():
+    _cm._current.backward()
 
 
-# [SECTION] the plotter and the selection
+def forward():
+    _cm._current.forward()
+
+
+def useGroup(gid):
+    _cm._current.useGroup(gid)
+
+
+def frameDisplay(enabled=True):
+    _cm._current.frameDisplay(enabled)
+
+
+def setSelectionAlwaysRequired(enabled):
+    _cm._current.setSelectionAlwaysRequired(enabled)
+
+
+def requestSelection(message):
+    _cm._current.requestSelection(message)
+
+
+def declare(modules):
+    _cm._current.declare(modules)
+
+
+def undeclare(modules):
+    _cm._current.undeclare(modules)
+
+
+def isDeclared(module):
+    """As L-Py's: asks the current context, and gives None (its C++ function returns void)."""
+    _cm._current.isDeclared(module)
+
+
+def Stop():
+    _cm._current.stop()
+
+
+def nsproduce(lstring):
+    """Adds modules (a list, an Lstring or a string of them) to the production under way."""
+    if isinstance(lstring, str):
+        lstring = Lstring(lstring)
+    if type(lstring) is list and _cm._running():  # in a rule: straight to the engine
+        return _nsproduce(lstring)
+    _cm._current.nproduce(lstring)
+
+
+def pproduce(*args, **kwargs):
+    """L-Py's produce of a parametric successor (`$` successors its parser compiles): Sprout's
+    translation writes those as plain produce statements, and has no such successor."""
+    if not args:
+        raise TypeError("pproduce(id, *args): the successor's id and its values")
+    raise IndexError("pproduce(%r, ...): no parametric successor has this id (Sprout translates `produce` "
+                     "statements into modules directly)" % (args[0],))
+
+
+def _in_context(pid, left, parameters):
+    if not _cm._running():
+        raise ValueError("Cannot call %s" % ("InLeftContext" if left else "InRightContext"))
+    from _sprout_lpy import __lpy_in_context as test
+    return test(int(pid), left, parameters)
+
+
+def pInLeftContext(patternid, parameters=None):
+    """Whether the pattern `patternid` of the model (an InLeftContext of a rule's body) matches
+    on the left of the rule's match; its values go into `parameters`."""
+    return _in_context(patternid, True, {} if parameters is None else parameters)
+
+
+def pInRightContext(patternid, parameters=None):
+    return _in_context(patternid, False, {} if parameters is None else parameters)
+
+
+def _in_context_of(pattern, left, parameters):
+    if not _cm._running():
+        raise ValueError("Cannot call %s" % ("inLeftContext" if left else "inRightContext"))
+    from _sprout_lpy import _in_context_text
+    return _in_context_text(str(pattern), left, {} if parameters is None else parameters)
+
+
+def inLeftContext(pattern, parameters=None):
+    """In a rule's body: whether `pattern` ('A(x)', a PatternString) matches on the left of the
+    rule's match (from where the header's context, or the last such test, ended); its values go
+    into `parameters`. A pattern written in the call is read with the file; one made at run
+    time is read when first tested."""
+    return _in_context_of(pattern, True, parameters)
+
+
+def inRightContext(pattern, parameters=None):
+    """inLeftContext's twin, on the right of the rule's match."""
+    return _in_context_of(pattern, False, parameters)
+
+
+# [SECTION] the plotter, scenes and the selection
 _plotter = None
 
 
 def registerPlotter(plotter):
-    """Lsystem.plot and animate give their scenes to plotter.plot(scene)."""
+    """plot(), Lsystem.plot and animate give their scenes to plotter.plot(scene); the
+    selection is plotter.selection()."""
     global _plotter
     _plotter = plotter
 
@@ -389,50 +248,84 @@ def _selection():
     return _plotter.selection()
 
 
-# [SECTION] extern and defaultparameters
-def extern(*names, **defaults):
-    """L-Py's extern (openalea.lpy.defaultparameters): extern(a=1) gives a the value 1 unless
-    the caller set it (Lsystem(file, {'a': 2})); extern('b') requires b to be set. Both are
-    listed in the model's __externs__."""
-    ns = _sys._getframe(1).f_globals
-    externs = ns.setdefault('__externs__', set())
-    for k, v in defaults.items():
-        ns.setdefault(k, v)
-        externs.add(k)
-    for k in names:
-        if not isinstance(k, str):
-            raise TypeError("extern(): a name is a string")
-        if k not in ns:
-            raise NameError(k, 'should be provided by external parameters.')
-        externs.add(k)
+_drawer = None
 
 
-def defaultparameters(function):
-    """L-Py's @defaultparameters: the function's local variables become the model's names
-    where they are not set yet."""
-    import inspect
-    ns = _sys._getframe(1).f_globals
-    found = {}
+def _scene_of(lstring, context=None):
+    """The PlantGL scene the turtle draws from a string, without interpretation rules, with the
+    turtle's settings and materials of `context` (by default none: the turtle's defaults)."""
+    global _drawer
+    if not isinstance(lstring, Lstring):
+        raise TypeError("a scene is drawn from an Lstring (or AxialTree), not from %s" % type(lstring).__name__)
+    if _drawer is None:
+        from openalea.lpy._lsystem import Lsystem
+        _drawer = Lsystem()
+        _drawer._need()
+    own = _drawer.context()._state
+    kept = dict(angle=own['angle'], materials=dict(own['materials']))
+    if context is not None:
+        own.update(angle=context._state['angle'], materials=dict(context._state['materials']))
+    try:
+        return _drawer.sceneInterpretation(lstring)
+    finally:
+        own.update(kept)
 
-    def tracer(frame, event, arg):
-        if event == 'return' and frame.f_code is function.__code__:
-            found.update(frame.f_locals)
-        return tracer if frame.f_code is function.__code__ else None
 
-    def run(*args, **kwargs):
-        old = _sys.gettrace()
-        _sys.settrace(tracer)
-        try:
-            return function(*args, **kwargs)
-        finally:
-            _sys.settrace(old)
-            for k, v in found.items():
-                ns.setdefault(k, v)
+def _turtle_of(turtle):
+    if not isinstance(turtle, _cm._Turtle):
+        raise TypeError("the turtle is a context's (LsysContext.turtle): Sprout's openalea.plantgl has no PglTurtle "
+                        "to interpret a string with, got %s" % type(turtle).__name__)
+    return turtle
 
-    if len(inspect.signature(function).parameters) == 0:
-        run()
-        return function
-    return run
+
+def generateScene(lstring, turtle=None):
+    """The scene of a string drawn by a turtle: a context's turtle (its settings and
+    materials), or a turtle of its own."""
+    if turtle is None:
+        return _scene_of(lstring)
+    return _scene_of(lstring, _owner_of(_turtle_of(turtle)))
+
+
+def _owner_of(turtle):
+    owner = LsysContext.__new__(LsysContext)
+    owner._state = turtle._state
+    return owner
+
+
+def plot(lstring, turtle=None):
+    """Draws a string with the current context's turtle (or `turtle`): its scene goes to the
+    registered plotter (registerPlotter), or is shown in Jupyter."""
+    scene = _scene_of(lstring, _owner_of(_turtle_of(turtle)) if turtle is not None else context())
+    if _plotter is not None:
+        _plotter.plot(scene)
+    else:  # L-Py shows it in PlantGL's viewer; Sprout in Jupyter, as Lsystem.plot does
+        from openalea.lpy._lsystem import _show_in_notebook
+        _show_in_notebook(scene)
+
+
+def turtle_interpretation(lstring, turtle, matching=None):
+    """The string interpreted by a context's turtle, from its start: turtle.getScene() is the
+    scene it drew."""
+    if not isinstance(lstring, Lstring):
+        raise TypeError("turtle_interpretation(lstring, turtle): an Lstring, not %s" % type(lstring).__name__)
+    t = _turtle_of(turtle)
+    if not lstring.wellBracketed():
+        raise ValueError("Ill-formed string: unmatched brackets")
+    t._state['scene'] = _scene_of(lstring, _owner_of(t))
+
+
+def turtle_partial_interpretation(lstring, turtle):
+    """The string interpreted by a context's turtle, its shapes added to what it drew before."""
+    if not isinstance(lstring, Lstring):
+        raise TypeError("turtle_partial_interpretation(lstring, turtle): an Lstring, not %s" % type(lstring).__name__)
+    t = _turtle_of(turtle)
+    scene = _scene_of(lstring, _owner_of(t))
+    before = t._state.get('scene')
+    if before is not None:
+        for shape in scene:
+            before.append(shape)
+        scene = before
+    t._state['scene'] = scene
 
 
 # [SECTION] the turtle of interpretation rules
@@ -475,7 +368,7 @@ class _InterpretationTurtle:
             raise AttributeError("the turtle has no '%s' (Sprout's turtle of interpretation rules: "
                                  "PglTurtle's drawing calls and the parameters added to it)" % name)
         cls = ModuleClass.get(module)
-        return lambda *args: nsproduce([cls(*args)])
+        return lambda *args: _nsproduce([cls(*args)])
 
     def __setattr__(self, name, value):
         if name in self._params:
@@ -484,40 +377,6 @@ class _InterpretationTurtle:
             object.__setattr__(self, name, value)
 
 
-# [SECTION] ParameterSet and makestring
-class ParameterSet:
-    def __init__(self, **kwargs):
-        self.__dict__.update(kwargs)
-
-    def set(self, **kwargs):
-        self.__dict__.update(kwargs)
-
-    def setdefault(self, **kwargs):
-        for k, v in kwargs.items():
-            self.__dict__.setdefault(k, v)
-
-    def hasattr(self, name):
-        return name in self.__dict__
-
-    def get(self, name, default=None):
-        return self.__dict__.get(name, default)
-
-    def parameter_names(self):
-        return list(self.__dict__.keys())
-
-    def rename(self, old, new):
-        self.__dict__[new] = self.__dict__.pop(old)
-
-    def copy(self, deep=True):
-        import copy
-        return copy.deepcopy(self) if deep else copy.copy(self)
-
-    def __contains__(self, name):
-        return name in self.__dict__
-
-    def __repr__(self):  # as L-Py writes it: ParameterSet(length=2,width=0.1)
-        return "%s(%s)" % (type(self).__name__, ",".join("%s=%r" % kv for kv in self.__dict__.items()))
-
-
+# [SECTION] makestring
 def makestring(text):
     return Lstring(text)

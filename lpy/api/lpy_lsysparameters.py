@@ -470,7 +470,7 @@ class LsystemParameters:
     def retrieve_from_env(self, context):
         """What an INITIALISATION part (code 1.1 or 1.2) or apply_to put into the context."""
         ts, category = context.animation_timestep, vars(context).get('default_category')
-        self.animation_timestep = ts if isinstance(ts, (int, float)) and not isinstance(ts, bool) else None
+        self.animation_timestep = None if context.is_animation_timestep_to_default() else ts
         self.default_category_name = category if isinstance(category, str) else self.default_category_name
         options = [context.options[i] for i in range(len(context.options))]
         self.execOptions = {o.name: o.selection for o in options if not o.isToDefault()}

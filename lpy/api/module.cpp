@@ -57,8 +57,7 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
     static PyMethodDef produceDefs[] = {{"__lpy_produce", rawProduce<true>, METH_O, nullptr},
                                         {"__lpy_nproduce", rawProduce<false>, METH_O, nullptr}};
     for (PyMethodDef& def : produceDefs) m.attr(def.ml_name) = py::reinterpret_steal<py::object>(PyCFunction_New(&def, nullptr));
-    m.def("nsproduce", [](py::handle items) { engine().produce(items, false); });
-    m.def("Stop", [] { engine().stopRequested = true; });
+    m.def("_nsproduce", [](py::handle items) { engine().produce(items, false); });
     // (PglTurtle's method, its module) of the turtle's vocabulary: lpy.py's interpretation turtle.
     m.def("_turtle_methods", [] {
         std::vector<std::pair<std::string, std::string>> out;
@@ -68,19 +67,59 @@ void sprout::lpy::defineSproutLpy(py::module_& m) {
     });
     // A model file's bytes as L-Py's Python decodes them (translate.hpp): Lsystem(file).
     m.def("_model_text", [](const py::bytes& data) { return modelTextAsUtf8(std::string(data)); });
-    m.def("forward", [] { engine().forwardDirection = true; });
-    m.def("backward", [] { engine().forwardDirection = false; });
-    m.def("isForward", [] { return engine().forwardDirection; });
-    m.def("useGroup", [](int g) { engine().group = std::max(0, g); });
-    m.def("getGroup", [] { return engine().group; });
-    m.def("getIterationNb", [] { return engine().iteration; });
-    m.def("setSelectionAlwaysRequired", [](bool on) { engine().selectionAlways = on; }, py::arg("enabled") = true);
-    m.def("isSelectionAlwaysRequired", [] { return currentEngine() && currentEngine()->selectionAlways; });
-    m.def("requestSelection", [](py::object) { engine().selectionRequested = true; }, py::arg("message") = py::none());
-    m.def("isAnimationEnabled", [] { return currentEngine() && currentEngine()->animating; });
-    m.def("isFrameDisplayed", [] { return currentEngine() && currentEngine()->frameDisplayed; });
+    // The running engine's control state, which openalea.lpy's LsysContext reads and sets while
+    // the engine runs its model (lpy/api/lpy.py; outside a run a context keeps its own):
+    // _control(name) gives a value, _control(name, value) sets it; None when no model runs.
+    m.def("_control", [](const std::string& name, py::object value) -> py::object {
+        Engine* e = currentEngine();
+        if (!e) return py::none();
+        const bool set = !value.is_none();
+        if (name == "forward") {
+            if (set) e->forwardDirection = value.cast<bool>();
+            return py::bool_(e->forwardDirection);
+        }
+        if (name == "group") {
+            if (set) e->group = std::max(0, value.cast<int>());
+            return py::int_(e->group);
+        }
+        if (name == "frame") {
+            if (set) e->frameDisplayed = value.cast<bool>();
+            return py::bool_(e->frameDisplayed);
+        }
+        if (name == "selectionAlways") {
+            if (set) e->selectionAlways = value.cast<bool>();
+            return py::bool_(e->selectionAlways);
+        }
+        if (name == "selectionRequested") {
+            if (set) e->selectionRequested = value.cast<bool>();
+            return py::bool_(e->selectionRequested);
+        }
+        if (name == "stop") {
+            if (set) e->stopRequested = value.cast<bool>();
+            return py::bool_(e->stopRequested);
+        }
+        if (name == "iteration") return py::int_(e->iteration);
+        if (name == "animating") return py::bool_(e->animating);
+        throw py::key_error(name);
+    }, py::arg("name"), py::arg("value") = py::none());
+    // The getters a model's rules call at each match: the running engine's value at once,
+    // otherwise the current context's (openalea.lpy's functions of the same names).
+    auto getter = [&m](const char* name, py::object (*ofEngine)(Engine&)) {
+        m.def(name, [name, ofEngine]() -> py::object {
+            if (Engine* e = currentEngine()) return ofEngine(*e);
+            return py::module_::import("openalea.lpy._context").attr("_current").attr(name)();
+        });
+    };
+    getter("getIterationNb", [](Engine& e) -> py::object { return py::int_(e.iteration); });
+    getter("getGroup", [](Engine& e) -> py::object { return py::int_(e.group); });
+    getter("isForward", [](Engine& e) -> py::object { return py::bool_(e.forwardDirection); });
+    getter("isFrameDisplayed", [](Engine& e) -> py::object { return py::bool_(e.frameDisplayed); });
+    getter("isAnimationEnabled", [](Engine& e) -> py::object { return py::bool_(e.animating); });
+    getter("isSelectionAlwaysRequired", [](Engine& e) -> py::object { return py::bool_(e.selectionAlways); });
     // InLeftContext / InRightContext in a rule's body (lpy/translate/contexts.cpp).
     m.def("__lpy_in_context", [](size_t index, bool left, py::handle dict) { return engine().inContext(index, left, dict); });
+    // inLeftContext('A(x)', d) with a pattern made at run time (lpy/api/lpy.py).
+    m.def("_in_context_text", [](const std::string& text, bool left, py::handle dict) { return engine().inContextText(text, left, dict); });
     // `produce A(**p)`: p's values in the order of A's declared parameters.
     m.def("__lpy_kwargs", [](int cls, py::dict values) {
         const ModuleClasses& classes = engine().translation().classes;

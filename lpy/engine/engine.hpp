@@ -111,6 +111,8 @@ public:
     static LString toL(const NumString& s) { return NativeDeriver::toL(s); }
     // `InLeftContext(pattern, d)` / `InRightContext` in a rule's body (Matcher::inContext).
     bool inContext(size_t index, bool left, py::handle dict) { return m_matcher.inContext(index, left, dict); }
+    // `inLeftContext(p, d)` with a pattern made at run time.
+    bool inContextText(const std::string& text, bool left, py::handle dict) { return m_matcher.inContextText(text, left, dict, m_ns); }
     int classScale(int cls) const { return m_matcher.scaleOf(cls); }
     // L-Py's LsysRule.match / reverse_match: (the position past the match, its values) or False.
     py::object matchRule(size_t rule, const LString& s, long at, bool forward) { return m_matcher.matchRule(rule, s, at, forward); }

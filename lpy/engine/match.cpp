@@ -281,10 +281,27 @@ bool Matcher::matchLeft(const std::vector<PatternModule>& ps, const LString& s, 
 //-----------------------------------------------------------------------------
 // [SECTION] a body's context tests
 //-----------------------------------------------------------------------------
+bool Matcher::inContextText(const std::string& text, bool left, py::handle dict, py::dict& ns) {
+    if (!m_body.s) throw py::value_error(std::string(left ? "inLeftContext" : "inRightContext") + " is called outside a rule's body");
+    auto found = m_textPatterns.find(text);
+    if (found == m_textPatterns.end()) {
+        std::vector<Diagnostic> diags;
+        ContextPattern p = readContextPattern(text, m_tr.classes, diags);
+        for (const Diagnostic& d : diags)
+            if (d.severity == Severity::Error) throw py::value_error(std::string(left ? "inLeftContext" : "inRightContext") + "('" + text + "'): " + d.message);
+        found = m_textPatterns.emplace(text, std::move(p)).first;  // its place kept: compile() keys by address
+        for (const auto& m : found->second.modules) compile(m, ns);
+    }
+    return inContext(found->second, left, dict);
+}
+
 bool Matcher::inContext(size_t index, bool left, py::handle dict) {
     if (!m_body.s) throw py::value_error(std::string(left ? "InLeftContext" : "InRightContext") + " is called outside a rule's body");
     if (index >= m_tr.contextPatterns.size()) throw py::index_error("no such context pattern");
-    const ContextPattern& p = m_tr.contextPatterns[index];
+    return inContext(m_tr.contextPatterns[index], left, dict);
+}
+
+bool Matcher::inContext(const ContextPattern& p, bool left, py::handle dict) {
     std::vector<py::object> bound;
     if (left) {
         long stop = m_body.left;

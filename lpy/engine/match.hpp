@@ -52,6 +52,10 @@ public:
     // previous such test's end, which then moves past it (so a loop counts a run of modules);
     // the pattern's variables are written into d. Outside a rule's body: an error.
     bool inContext(size_t index, bool left, py::handle dict);
+    bool inContext(const ContextPattern& p, bool left, py::handle dict);
+    // The same with a pattern made at run time (inLeftContext(p, d), p not written in the
+    // call): read once (readContextPattern), its constants and predicates evaluated in `ns`.
+    bool inContextText(const std::string& text, bool left, py::handle dict, py::dict& ns);
     // Where a running body's context tests start (set by the engine around the call).
     struct BodyContext {
         const LString* s = nullptr;
@@ -116,6 +120,7 @@ private:
     const Translation& m_tr;
     std::vector<std::vector<int>> m_ancestors;
     std::unordered_map<const PatternArg*, py::object> m_constants, m_predicates;
+    std::unordered_map<std::string, ContextPattern> m_textPatterns;  // inContextText's, read once
     BodyContext m_body;
     const LString* m_reading = nullptr;
     std::shared_ptr<LString> m_readingShared;

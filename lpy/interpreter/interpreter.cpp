@@ -82,16 +82,50 @@ py::dict looseNamespace() {
     return *ns;
 }
 
+namespace {
+// The control of a derivation (direction, group of rules, selection, frame display, iteration)
+// is the current context's (openalea.lpy's LsysContext, lpy/api/lpy_context.py) and the engine's
+// while the engine runs that context's model (the context's namespace is the engine's): the
+// engine takes it when it starts to run, the context gets it back when the engine stops.
+void shareControl(Engine* e, bool starting) {
+    if (!e) return;
+    try {
+        py::dict state = py::module_::import("openalea.lpy").attr("_state");
+        if (!state.contains("control") || !state.contains("ns") || !py::object(state["ns"]).is(e->ns())) return;
+        py::dict c = state["control"];
+        if (starting) {
+            e->forwardDirection = c["forward"].cast<bool>();
+            e->group = c["group"].cast<int>();
+            e->selectionAlways = c["selectionAlways"].cast<bool>();
+            e->selectionRequested = c["selectionRequested"].cast<bool>();
+            return;
+        }
+        c["forward"] = e->forwardDirection;
+        c["group"] = e->group;
+        c["selectionAlways"] = e->selectionAlways;
+        c["selectionRequested"] = e->selectionRequested;
+        c["frame"] = e->frameDisplayed;
+        c["iteration"] = e->iteration;
+        c["animating"] = e->animating;
+    } catch (py::error_already_set& err) {
+        err.discard_as_unraisable("sharing the control of a derivation with its context");
+    } catch (std::exception&) {
+    }
+}
+}  // namespace
+
 EngineScope::EngineScope(Engine* e) : m_engine(e), m_before(currentEngine()) {
     // The names the engine before made go to the table first, and this engine catches up.
     if (m_before) registry().adopt(m_before->classes(), false);
     if (m_engine) m_engine->classes().adopt(registry(), true);
+    if (m_engine != m_before) shareControl(m_engine, true);
     setCurrentEngine(m_engine);
 }
 
 EngineScope::~EngineScope() {
     if (m_engine) registry().adopt(m_engine->classes(), false);
     if (m_before) m_before->classes().adopt(registry(), true);
+    if (m_engine != m_before) shareControl(m_engine, false);
     setCurrentEngine(m_before);
 }
 
@@ -122,12 +156,17 @@ void start(void (*defineModule)(py::module_&)) {
 #endif
         {
             installModule("openalea", "", "<sprout>/openalea/__init__.py");
+            // openalea.lpy's parts that need no L-system (version, options, extern), ParameterSet
+            // and LsysContext (lpy/api/lpy_base.py, lpy_parameterset.py, lpy_context.py): the
+            // package imports them.
+            for (const auto& [name, stem] : {std::pair<const char*, const char*>{"_base", "lpy_base"},
+                                             {"parameterset", "lpy_parameterset"}, {"_context", "lpy_context"}})
+                installModule(std::string("openalea.lpy.") + name, embedded(stem), std::string("<sprout>/openalea/lpy/") + name + ".py");
             installModule("openalea.lpy", embedded("lpy"), "<sprout>/openalea/lpy/__init__.py");
             // Modules of L-Py's package a model may import, imported on demand: its experimental
             // string controls and its parameter sets (lpy/api/lpy_*.py).
             const std::pair<const char*, const char*> onDemand[] = {
-                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"parameterset", "lpy_parameterset"},
-                {"lsysparameters", "lpy_lsysparameters"}};
+                {"__lpyfuture__", "lpy_future"}, {"tableparameterset", "lpy_tableparameterset"}, {"lsysparameters", "lpy_lsysparameters"}};
             for (const auto& [name, stem] : onDemand)
                 py::module_::import("openalea.lpy")
                     .attr("_embed")(std::string("openalea.lpy.") + name, std::string(embedded(stem)),

@@ -1,8 +1,10 @@
 // Contexts tested from inside a rule's body: `InLeftContext(A(x), d)`, `InRightContext(B, d)`,
-// and `inLeftContext('A(x)', d)` / `inRightContext(...)` with the pattern as a string literal.
+// and `inLeftContext('A(x)', d)` / `inRightContext(...)` with the pattern as a string literal
+// (with a pattern made at run time, the call stays: openalea.lpy's function reads it then).
 // As L-Py's parser does (src/cpp/lpy_parser.cpp), the pattern is read when the file is: it
 // becomes a ContextPattern of the translation, and the call `__lpy_in_context(index, side,
 // d)`, which the engine answers from where the rule's own contexts ended (lpy/engine/engine.hpp).
+// A pattern made at run time is read alone by readContextPattern.
 // Its own file: the one part of a body's Python that L-Py reads as an lstring besides produce.
 #include "lpy/translate/translate_impl.hpp"
 
@@ -33,9 +35,9 @@ void Translator::translateInContexts(std::string& line, int lineNo) {
             const std::string dict = comma == std::string_view::npos ? "None" : std::string(trim(args.substr(comma + 1)));
             int col = int(open + 2 + size_t(pattern.data() - args.data()));
             if (f.quoted) {
-                // The pattern as a literal: a pattern in a variable cannot be read with the file.
+                // The pattern as a literal is read with the file; one made at run time (a
+                // variable) is read when the call runs (openalea.lpy's inLeftContext).
                 if (pattern.size() < 2 || (pattern.front() != '\'' && pattern.front() != '"') || pattern.back() != pattern.front()) {
-                    error(lineNo, col, std::string(f.word) + " needs its pattern written in the call, as a string ('A(x)'): Sprout reads it with the file");
                     from = close;
                     continue;
                 }
@@ -54,4 +56,23 @@ void Translator::translateInContexts(std::string& line, int lineNo) {
     }
 }
 
+ContextPattern Translator::contextPattern(std::string_view text) {
+    ContextPattern cp;
+    cp.modules = patterns(text, 1, 1);
+    bindNames(cp.modules, cp.names, 1);
+    return cp;
+}
+
 }  // namespace sprout::lpy::translate_detail
+
+namespace sprout::lpy {
+
+ContextPattern readContextPattern(std::string_view text, const ModuleClasses& classes, std::vector<Diagnostic>& diags) {
+    translate_detail::Translator t("");
+    t.seed(classes);
+    ContextPattern cp = t.contextPattern(text);
+    diags = t.diagnostics();
+    return cp;
+}
+
+}  // namespace sprout::lpy

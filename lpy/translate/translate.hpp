@@ -179,5 +179,9 @@ std::string modelTextAsUtf8(std::string_view bytes);
 
 // `seed`: a table whose ids the translation keeps (ModuleClasses::seededFrom).
 Translation translate(std::string_view text, const ModuleClasses* seed = nullptr);
+// A pattern a rule's body tests while it runs, not written in the call (`inLeftContext(p, d)`
+// with p a string made at run time): read as a pattern of the file is, its names given the ids
+// of `classes` (a name they lack gets an id no module of the string has).
+ContextPattern readContextPattern(std::string_view text, const ModuleClasses& classes, std::vector<Diagnostic>& diags);
 
 }  // namespace sprout::lpy

@@ -78,6 +78,9 @@ public:
 
     Translation run();
     void seed(const ModuleClasses& ids) { m_out.classes = ModuleClasses::seededFrom(ids); }
+    // contexts.cpp: one pattern read alone (readContextPattern), what reading it said.
+    ContextPattern contextPattern(std::string_view text);
+    const std::vector<Diagnostic>& diagnostics() const { return m_out.diagnostics; }
 
 private:
     enum class Mode { Python, Production, Decomposition, Interpretation };
