@@ -314,7 +314,9 @@ void drawLook(Drawing& dr, const Module<Source>& m, bool queries) {
             else if (m.p.empty()) dr.st.tropism[0] = 0, dr.st.tropism[1] = 0, dr.st.tropism[2] = 1;
             break;
         case Op::Elasticity:
-            dr.st.elasticity = m.p.empty() ? 0.0 : std::clamp(m.p[0], 0.0, 1.0);
+            // One value: set when it is in [0, 1] (else L-Py warns and keeps the elasticity); otherwise 0.
+            if (m.n != 1) dr.st.elasticity = 0;
+            else if (m.p.size() == 1 && m.p[0] >= 0 && m.p[0] <= 1) dr.st.elasticity = m.p[0];
             break;
         case Op::Sphere:
             dr.w.put("@O", {m.p.empty() ? dr.st.width : m.p[0]});

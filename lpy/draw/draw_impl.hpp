@@ -189,4 +189,12 @@ private:
     std::unordered_map<std::string, int> m_labelIndex;    // each text's Settings::labels index
 };
 
+// The frame of L-Py's turtle at a query module, in L-Py's axes and in double precision.
+struct PglFrame {
+    glm::dvec3 position, heading, up, left;
+};
+// frames.cpp: the frame at each query module (`?P`) of a query walk's drawable grammar
+// (drawable(..., queries = true)), as PlantGL's turtle computes it, in double precision.
+std::vector<PglFrame> queryFrames(const Grammar& g);
+
 }  // namespace sprout::lpy::detail
