@@ -257,6 +257,7 @@ bool drawMove(Drawing& dr, const Module<Source>& m, const TurtleDefaults& d) {
             if (m.p.size() >= 3) dr.w.put(m.mp.sprout, {m.p[1], m.p[2], m.p[0]});
             break;
         case Op::LineTo:  // L-Py's x y z are Sprout's z x y
+            if (m.p.size() >= 3 && dr.queryWalk) dr.bend();  // PlantGL's oLineTo steps with F
             if (m.p.size() >= 3) dr.w.put(m.mp.sprout, {m.p[1], m.p[2], m.p[0]});
             if (m.p.size() >= 4) dr.setWidth(m.p[3]);
             break;
@@ -339,6 +340,7 @@ template <class Source>
 std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classes, const TurtleDefaults& d,
                                     std::vector<std::string>* warnings, bool queries, std::vector<std::uint32_t>* sourceOf) {
     Drawing dr(d);
+    dr.queryWalk = queries;
     const std::shared_ptr<Grammar>& g = dr.g;
     detail::Writer& w = dr.w;
     TurtleState& st = dr.st;

@@ -116,6 +116,9 @@ public:
     TurtleState st;
     std::vector<TurtleState> stack;
     std::set<std::string> leftOut;
+    // A query walk's (drawable(..., queries = true)): its string is walked by PlantGL's turtle
+    // (frames.cpp), whose LineTo bends by the tropism as its F does; Sprout's turtle does not.
+    bool queryWalk = false;
 
     void bend() {  // L-Py's x y z are Sprout's z x y
         if (st.elasticity > 0) w.put("@T", {st.elasticity, st.tropism[1], st.tropism[2], st.tropism[0], 1});

@@ -129,8 +129,9 @@ public:
         const double l = normalize(h);
         if (l > kEpsilon) {
             tendTo(h, 1);
-            F(l);
+            F(l);  // the tropism (@T before it) applied after the turn, as F applies it
         }
+        m_tropism.reset();
     }
     void oLineTo(const V& to) { oLineRel(to - m_f.position); }
     void lineRel(const V& h) { keepingFrame([&] { oLineRel(h); }); }
