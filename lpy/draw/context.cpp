@@ -5,9 +5,10 @@
 #include <cmath>
 
 #include <glm/vec3.hpp>
+#include <vector>
 
-#include "core/derive/draw.hpp"
 #include "lpy/draw/draw.hpp"
+#include "lpy/draw/draw_impl.hpp"
 
 namespace sprout::lpy {
 
@@ -43,7 +44,7 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
 
 // L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string
 // with its interpretation rules drawn by a turtle that keeps no picture, and each query
-// module given the turtle's state where it stands, in L-Py's axes (Sprout's y is L-Py's z).
+// module given the turtle's state where it stands.
 // The k-th query module of the interpreted string is the k-th of the string.
 namespace {
 void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d);
@@ -69,20 +70,16 @@ void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
     // query module an interpretation rule rewrites is not passed by L-Py's turtle: it keeps its values.
     const LString shown = engine.interpret(s);  // (Engine::interpret sets parent and rule so)
     auto g = drawable(shown, classes, d, nullptr, true);
-    Geometry geo;
-    TurtleOptions t;
-    t.fromTree = false;
-    t.meshes = false;  // only the frames are read
-    std::vector<QueryFrame> frames;
-    t.queries = &frames;
-    interpret(g->axiom, *g, t, geo);
+    // The frames as L-Py's turtle has them: PlantGL's arithmetic in double (frames.cpp), not
+    // Sprout's single-precision turtle, so that the numbers read back are L-Py's.
+    const std::vector<detail::PglFrame> frames = detail::queryFrames(*g);
     py::object vector3 = py::module_::import("openalea.plantgl.all").attr("Vector3");
-    auto lpyVector = [&](const glm::vec3& v) { return vector3(double(v.z), double(v.x), double(v.y)); };
+    auto lpyVector = [&](const glm::dvec3& v) { return vector3(v.x, v.y, v.z); };
     size_t k = 0;
     for (const LModule& drawn : shown) {
         if (!Engine::isQuery(classes.name(drawn.cls))) continue;
         if (k >= frames.size()) break;
-        const QueryFrame& f = frames[k++];
+        const detail::PglFrame& f = frames[k++];
         if (drawn.rule != -1 || drawn.parent >= s.size() || s[drawn.parent].cls != drawn.cls) continue;
         LModule& m = s[drawn.parent];
         const std::string& name = classes.name(m.cls);
@@ -91,11 +88,11 @@ void fillQueriesOnce(Engine& engine, LString& s, const TurtleDefaults& d) {
             m.args = py::make_tuple(lpyVector(f.position), lpyVector(f.heading), lpyVector(f.up), lpyVector(f.left));
             continue;
         }
-        const glm::vec3 v = name[1] == 'P' ? f.position : name[1] == 'H' ? f.heading : name[1] == 'U' ? f.up : name[1] == 'L' ? f.left : -f.left;
+        const glm::dvec3 v = name[1] == 'P' ? f.position : name[1] == 'H' ? f.heading : name[1] == 'U' ? f.up : name[1] == 'L' ? f.left : -f.left;
         // As L-Py's ParamModule::_setValues: three values or more, the first three are x, y, z;
         // two, x and y; one number, x; one other value (a Vector3, a list), its first items
         // set in place; none, a Vector3.
-        const double xyz[3] = {double(v.z), double(v.x), double(v.y)};
+        const double xyz[3] = {v.x, v.y, v.z};
         if (n >= 2) {
             py::list args(m.args);
             for (Py_ssize_t k = 0; k < std::min<Py_ssize_t>(n, 3); ++k) args[size_t(k)] = py::float_(xyz[k]);

@@ -257,6 +257,7 @@ bool drawMove(Drawing& dr, const Module<Source>& m, const TurtleDefaults& d) {
             if (m.p.size() >= 3) dr.w.put(m.mp.sprout, {m.p[1], m.p[2], m.p[0]});
             break;
         case Op::LineTo:  // L-Py's x y z are Sprout's z x y
+            if (m.p.size() >= 3 && dr.queryWalk) dr.bend();  // PlantGL's oLineTo steps with F
             if (m.p.size() >= 3) dr.w.put(m.mp.sprout, {m.p[1], m.p[2], m.p[0]});
             if (m.p.size() >= 4) dr.setWidth(m.p[3]);
             break;
@@ -314,7 +315,9 @@ void drawLook(Drawing& dr, const Module<Source>& m, bool queries) {
             else if (m.p.empty()) dr.st.tropism[0] = 0, dr.st.tropism[1] = 0, dr.st.tropism[2] = 1;
             break;
         case Op::Elasticity:
-            dr.st.elasticity = m.p.empty() ? 0.0 : std::clamp(m.p[0], 0.0, 1.0);
+            // One value: set when it is in [0, 1] (else L-Py warns and keeps the elasticity); otherwise 0.
+            if (m.n != 1) dr.st.elasticity = 0;
+            else if (m.p.size() == 1 && m.p[0] >= 0 && m.p[0] <= 1) dr.st.elasticity = m.p[0];
             break;
         case Op::Sphere:
             dr.w.put("@O", {m.p.empty() ? dr.st.width : m.p[0]});
@@ -337,6 +340,7 @@ template <class Source>
 std::shared_ptr<Grammar> drawableOf(const Source& s, const ModuleClasses& classes, const TurtleDefaults& d,
                                     std::vector<std::string>* warnings, bool queries, std::vector<std::uint32_t>* sourceOf) {
     Drawing dr(d);
+    dr.queryWalk = queries;
     const std::shared_ptr<Grammar>& g = dr.g;
     detail::Writer& w = dr.w;
     TurtleState& st = dr.st;

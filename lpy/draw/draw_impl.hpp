@@ -116,6 +116,9 @@ public:
     TurtleState st;
     std::vector<TurtleState> stack;
     std::set<std::string> leftOut;
+    // A query walk's (drawable(..., queries = true)): its string is walked by PlantGL's turtle
+    // (frames.cpp), whose LineTo bends by the tropism as its F does; Sprout's turtle does not.
+    bool queryWalk = false;
 
     void bend() {  // L-Py's x y z are Sprout's z x y
         if (st.elasticity > 0) w.put("@T", {st.elasticity, st.tropism[1], st.tropism[2], st.tropism[0], 1});
@@ -188,5 +191,13 @@ private:
     std::unordered_map<PyObject*, std::string> m_shapes;  // each @g shape's surface
     std::unordered_map<std::string, int> m_labelIndex;    // each text's Settings::labels index
 };
+
+// The frame of L-Py's turtle at a query module, in L-Py's axes and in double precision.
+struct PglFrame {
+    glm::dvec3 position, heading, up, left;
+};
+// frames.cpp: the frame at each query module (`?P`) of a query walk's drawable grammar
+// (drawable(..., queries = true)), as PlantGL's turtle computes it, in double precision.
+std::vector<PglFrame> queryFrames(const Grammar& g);
 
 }  // namespace sprout::lpy::detail

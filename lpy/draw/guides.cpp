@@ -218,9 +218,9 @@ int Drawing::sectionOf(PyObject* curve) {
     return index;
 }
 
-// As PlantGL's turtle draws it: F(dl) repeated, then the rest; the radius ramps to `radius`,
-// or is radius times the function, read from its first x to its last. A run with a
-// cross-section is one swept surface.
+// As PlantGL's turtle draws it: F(dl) repeated, then the rest (when over its GEOM_EPSILON,
+// 1e-5); the radius ramps to `radius`, or is radius times the function, read from its first x
+// to its last. A run with a cross-section is one swept surface.
 void Drawing::stepForward(double length, double dl, double radius, PyObject* function) {
     if (!(dl > 0) || !(length >= 0)) return;
     const double steps = std::min(std::floor(length / dl), 100000.0), rest = length - steps * dl;
@@ -249,17 +249,17 @@ void Drawing::stepForward(double length, double dl, double radius, PyObject* fun
         setWidth(valueAt(u) * radius);
         begin();
         for (double i = 0; i < steps; ++i) u += du, forward(dl, valueAt(u) * radius);
-        if (rest > 1e-9) forward(rest, radius * valueAt(lx));
+        if (rest > 1e-5) forward(rest, radius * valueAt(lx));
     } else if (radius >= 0) {
         begin();
         const double dw = (radius - st.width) / std::max(length, 1e-12);
         double cw = st.width;
         for (double i = 0; i < steps; ++i) cw += dw * dl, forward(dl, cw);
-        if (rest > 1e-9) forward(rest, radius);
+        if (rest > 1e-5) forward(rest, radius);
     } else {
         begin();
         for (double i = 0; i < steps; ++i) forward(dl, -1);
-        if (rest > 1e-9) forward(rest, -1);
+        if (rest > 1e-5) forward(rest, -1);
     }
     if (swept) st.inCurve = false, w.put("@Ge", {});
 }
