@@ -54,7 +54,7 @@ bool Matcher::skipped(int cls, int filter) const {
 }
 
 py::object Matcher::nodeOf(const LModule& m) {
-    PyModule node;
+    PyNodeModule node;
     if (m_reading && &m >= m_reading->data() && &m < m_reading->data() + m_reading->size()) {
         // A view of the string read (a copy made once a pass, when a pattern asks for one):
         // its place, its parent and sons.
