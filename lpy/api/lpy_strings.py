@@ -14,6 +14,7 @@
 #   [SECTION] patterns
 #   [SECTION] AxialTree's patterns
 
+import builtins as _builtins
 from types import ModuleType
 import keyword as _keyword
 
@@ -195,7 +196,8 @@ ModuleClass.predefinedClasses = _ClassProperty(_predefined)
 
 def _export_predefined(scope):
     """Each predefined module class under each of its names that reads as a variable's (L-Py's
-    export_moduleclass.cpp), `newmodule` among them."""
+    export_moduleclass.cpp), `newmodule` among them; `any` and `all` too, as in L-Py (this
+    file's functions call Python's through _builtins)."""
     for names, doc, cat in _PREDEFINED:
         c = None
         for n in names:
@@ -522,7 +524,7 @@ def _tree_rightmatch(self, pattern, pos):
     if not ps:
         return True
     at = _right_modules(self, _position(self, pos), len(ps))
-    return len(at) == len(ps) and all(_match_module(p, self[j], []) for p, j in zip(ps, at))
+    return len(at) == len(ps) and _builtins.all(_match_module(p, self[j], []) for p, j in zip(ps, at))
 
 
 def _tree_leftmatch(self, pattern, pos):
@@ -536,7 +538,7 @@ def _tree_leftmatch(self, pattern, pos):
         if j is None:
             return False
         at.append(j)
-    return all(_match_module(p, self[j], []) for p, j in zip(reversed(ps), at))
+    return _builtins.all(_match_module(p, self[j], []) for p, j in zip(reversed(ps), at))
 
 
 def _tree_find(self, pattern, start=0, end=2147483647):

@@ -52,15 +52,6 @@ py::dict namespaceNow() {
     return e ? e->ns() : looseNamespace();
 }
 
-void resolveNew(LModule& m) {
-    if (m.cls != names().find("new")) return;
-    if (!m.args || PyTuple_GET_SIZE(m.args.ptr()) == 0) throw py::index_error("tuple index out of range");
-    PyObject* name = PyTuple_GET_ITEM(m.args.ptr(), 0);
-    if (!PyUnicode_Check(name)) throw py::type_error("newmodule(name, ...): the name of the module to make, a string");
-    m.cls = names().intern(py::reinterpret_borrow<py::str>(name).cast<std::string>());
-    m.args = py::reinterpret_steal<py::tuple>(PyTuple_GetSlice(m.args.ptr(), 1, PyTuple_GET_SIZE(m.args.ptr())));
-}
-
 void extend(LString& s, py::handle v) {
     if (py::isinstance<py::str>(v)) {
         LString more = parseLstring(v.cast<std::string>(), names(), namespaceNow());
@@ -89,20 +80,11 @@ LModule oneModule(py::handle v) {
     if (py::isinstance<py::tuple>(v) || py::isinstance<py::list>(v)) {
         py::sequence t = py::reinterpret_borrow<py::sequence>(v);
         if (py::len(t) == 0) throw py::index_error("tuple index out of range");
-        LModule m;
         py::object head = t[0];
-        if (PyLong_Check(head.ptr())) {
-            const long cls = head.cast<long>();
-            if (cls < 0 || size_t(cls) >= names().size()) throw py::value_error("no module class of id " + std::to_string(cls));
-            m.cls = int(cls);
-        } else {
-            m.cls = names().intern(head.cast<std::string>());
-        }
-        py::list args;
-        for (size_t k = 1; k < py::len(t); ++k) args.append(t[k]);
-        m.args = py::tuple(args);
-        resolveNew(m);
-        return m;
+        if (!PyLong_Check(head.ptr())) return construct(names().intern(head.cast<std::string>()), t, 1);
+        const long cls = head.cast<long>();
+        if (cls < 0 || size_t(cls) >= names().size()) throw py::value_error("no module class of id " + std::to_string(cls));
+        return construct(int(cls), t, 1);
     }
     LString one;
     appendValue(one, v, names().size());
@@ -171,11 +153,7 @@ void defineModuleClass(py::module_& m) {
     mc.def_property_readonly("name", [](const PyModuleClass& c) { return nameOf(c.cls); })
         // L-Py's openalea.lpy: ModuleClass.__call__ = ParamModule(mclass, params); `new`
         // (newmodule) names the module by its first parameter.
-        .def("__call__", [](const PyModuleClass& c, py::args args) {
-            LModule mod{c.cls, py::tuple(args)};
-            resolveNew(mod);
-            return ownModule(std::move(mod));
-        })
+        .def("__call__", [](const PyModuleClass& c, py::args args) { return ownModule(construct(c.cls, args, 0)); })
         .def("__repr__", [](const PyModuleClass& c) {
             std::string out = "ModuleClass('" + nameOf(c.cls) + "'," + std::to_string(c.cls);
             const std::vector<std::string> aliases = names().aliasesOf(c.cls);

@@ -34,8 +34,9 @@ const std::vector<std::string>& parameterNamesOf(int cls);
 LModule oneModule(py::handle v);
 // The module a text of one module names ('A', 'A(1)'): its class and arguments.
 LModule moduleFromText(const std::string& text);
-// L-Py's `new` class (newmodule): a module whose first argument names its class.
-void resolveNew(LModule& m);
+// A module of class `cls` from values[start:] (L-Py's processConstruction): `new` takes its
+// name from the first value, a PackedArgs given last is unpacked.
+LModule construct(int cls, const py::sequence& values, size_t start);
 bool isRequest(int cls);
 // (name, args) pairs: how an AxialTree or a module is pickled.
 py::list stateOf(const LString& s);

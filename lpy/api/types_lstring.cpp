@@ -140,14 +140,16 @@ void defineTree(py::class_<PyLstring>& c) {
     c.def("roots", [](S s, py::object) { return positions(rootsOf(s.get())); }, py::arg("filter") = py::none())
         .def("parent", [](S s, long i, py::object) { return indexOrNone(parentOf(s.get(), checkedIndex(s.get(), i))); },
              py::arg("pos"), py::arg("filter") = py::none())
-        .def("children", [](S s, long i, py::object) { return positions(childrenOf(s.get(), checkedIndex(s.get(), i))); },
-             py::arg("pos"), py::arg("filter") = py::none())
-        .def("children", [](S s, long i, char edge, py::object) {
+        // children(pos[, filter]), children(pos, edge_type[, filter]): '<' the direct child,
+        // '+' the lateral ones.
+        .def("children", [](S s, long i, py::object edge, py::object) {
             const size_t at = checkedIndex(s.get(), i);
-            if (edge == '<') return indexOrNone(directSonOf(s.get(), at));
-            if (edge == '+') return positions(lateralSonsOf(s.get(), at));
+            if (!py::isinstance<py::str>(edge)) return positions(childrenOf(s.get(), at));
+            const std::string e = edge.cast<std::string>();
+            if (e == "<") return indexOrNone(directSonOf(s.get(), at));
+            if (e == "+") return positions(lateralSonsOf(s.get(), at));
             throw py::value_error("invalid edge type");
-        }, py::arg("pos"), py::arg("edge_type"), py::arg("filter") = py::none())
+        }, py::arg("pos"), py::arg("edge_type") = py::none(), py::arg("filter") = py::none())
         .def("lateral_children", [](S s, long i, py::object) { return positions(lateralSonsOf(s.get(), checkedIndex(s.get(), i))); },
              py::arg("pos"), py::arg("filter") = py::none())
         .def("direct_child", [](S s, long i, py::object) { return indexOrNone(directSonOf(s.get(), checkedIndex(s.get(), i))); },

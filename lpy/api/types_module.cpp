@@ -102,6 +102,8 @@ void namedArgs(int cls, py::list& args, const py::dict& named) {
 
 // processConstruction: `new` takes its name from the first value; a PackedArgs given last is
 // unpacked.
+}  // namespace
+
 LModule construct(int cls, const py::sequence& values, size_t start) {
     LModule m{cls, py::tuple()};
     const size_t n = py::len(values);
@@ -125,6 +127,8 @@ LModule construct(int cls, const py::sequence& values, size_t start) {
     m.args = py::tuple(args);
     return m;
 }
+
+namespace {
 
 LModule fromSequence(const py::sequence& t) {
     if (py::len(t) == 0) throw py::index_error("tuple index out of range");

@@ -1,0 +1,434 @@
+"""openalea.lpy's strings and modules (issue 51, helper h9): AxialTree and Lstring, its iterator,
+Module / ParamModule / NodeModule, ModuleClass and its table, the predefined module classes,
+ModuleCategory, eConsiderMethod and ConsiderFilter, PackedArgs, the patterns (LsysVar,
+PatternModule, PatternString) and StringMatching, as L-Py's wrappers define them
+(src/wrapper/export_axialtree.cpp, export_lstring.h, export_module.cpp, export_moduleclass.cpp,
+export_nodemodule.cpp, export_patternmodule.cpp, export_patternstring.cpp,
+export_stringmatching.cpp, export_consider.cpp). AxialTree's slices are not deleted here:
+L-Py's removeRange prints its indices on the process's stdout."""
+from lpy_api import case
+
+
+def lpy():
+    import openalea.lpy as l
+
+    return l
+
+
+def declared(name, params):
+    """A module class of the process with declared parameter names."""
+    l = lpy()
+    c = l.ModuleClassTable.get().declare(name)
+    c.parameterNames = params
+    return c
+
+
+# --- predefined module classes, ModuleClass, its table --------------------------------------
+
+
+@case("F", "f", "Left", "Right", "SB", "EB", "Cut", "SetGuide", "Sweep", "Tropism", "Label", "newmodule", "new",
+      "GetPos", "MouseIns", "X", "IncWidth", "SetColor", "Frame", "PglShape", "ModuleClass.name", "ModuleClass.aliases")
+def predefined_classes_by_name():
+    l = lpy()
+    out = []
+    for n in ["F", "f", "Left", "Right", "SB", "EB", "Cut", "SetGuide", "Sweep", "Tropism", "Label", "newmodule", "new",
+              "GetPos", "MouseIns", "X", "IncWidth", "SetColor", "Frame", "PglShape"]:
+        c = getattr(l, n)
+        out.append([n, type(c).__name__, c.name, sorted(c.aliases)])
+    return out
+
+
+@case("newmodule", "ModuleClass.__call__")
+def newmodule_names_the_module():
+    l = lpy()
+    m = l.newmodule("Apex", 1, 2.5)
+    return [str(m), type(m).__name__, m.name, len(m), str(l.F(1)), str(l.Left()), type(l.F(2)).__name__]
+
+
+@case("ModuleClass.documentation", "ModuleClass.isPredefined", "ModuleClass.predefinedClasses")
+def module_class_documentation():
+    l = lpy()
+    names = [c.name for c in l.ModuleClass.predefinedClasses]
+    return [l.F.documentation, l.Left.documentation, l.SetGuide.documentation, l.newmodule.documentation,
+            l.F.isPredefined(), declared("Stem", []).isPredefined(), declared("Stem", []).documentation,
+            "F" in names, "+" in names, "Stem" in names]
+
+
+@case("ModuleClass.parameterNames", "ModuleClass.hasParameter", "ModuleClass.getParameterPosition",
+      "ModuleClass.getNamedParameterNb", "ModuleClassTable.declare", "ModuleClassTable.get")
+def module_class_parameters():
+    c = declared("Leaf", ["length", "angle"])
+    return [c.parameterNames, c.hasParameter("angle"), c.hasParameter("width"), c.getParameterPosition("angle"),
+            c.getParameterPosition("width"), c.getNamedParameterNb(), lpy().F.parameterNames]
+
+
+@case("ModuleClass.get", "ModuleClass.issubclass", "ModuleClass.scale", "ModuleClass.category",
+      "ModuleClass.DEFAULT_SCALE", "ModuleClass.bases")
+def module_class_members():
+    l = lpy()
+    a, b = declared("Base1", []), declared("Derived1", [])
+    b.bases = [a]
+    return [l.ModuleClass.get("F").name, l.ModuleClass.get("+").name, l.ModuleClass.get("Left").name,
+            b.issubclass(a), a.issubclass(b), [x.name for x in b.bases], l.ModuleClass.DEFAULT_SCALE == l.F.scale,
+            l.F.category == l.F.scale]
+
+
+@case("ModuleClassTable.find", "ModuleClassTable.getNames", "ModuleClassTable.getClasses", "ModuleClassTable.size",
+      "ModuleClassTable.empty")
+def module_class_table():
+    t = lpy().ModuleClassTable.get()
+    names = t.getNames()
+    return [t.find("F").name, t.find("Left").name, "F" in names, "Left" in names, "+" in names, t.empty(),
+            t.size() == len(t.getClasses()), t.size() > 80]
+
+
+@case("ModuleCategory", "ModuleCategory.Structure", "ModuleCategory.Rotation", "ModuleCategory.UserDefined",
+      "ModuleCategory.PatternMatching", "ModuleCategory.names", "ModuleCategory.values", "ModuleCategory.name")
+def module_category_enum():
+    C = lpy().ModuleCategory
+    return [int(C.Structure), int(C.Rotation), int(C.UserDefined), int(C.PatternMatching), C.Structure.name,
+            sorted(C.names), sorted(C.values), str(C.Request)]
+
+
+@case("eConsiderMethod", "eConsider", "eIgnore", "eConsiderMethod.eConsider", "eConsiderMethod.eIgnore")
+def consider_method_enum():
+    l = lpy()
+    return [int(l.eConsider), int(l.eIgnore), l.eConsiderMethod.eIgnore == l.eIgnore, sorted(l.eConsiderMethod.names)]
+
+
+@case("ModuleType")
+def module_type_is_pythons():
+    import types
+
+    return lpy().ModuleType is types.ModuleType
+
+
+# --- Module, ParamModule ---------------------------------------------------------------------
+
+
+@case("ParamModule", "ParamModule.argSize", "ParamModule.empty", "ParamModule.hasArg", "ParamModule.__len__",
+      "ParamModule.__tuple__", "ParamModule.args", "Module.name", "Module.mclass")
+def param_module_values():
+    l = lpy()
+    m = l.ParamModule("A", 1, 2.5, "x")
+    e = l.ParamModule("B")
+    t = l.ParamModule(("C", 4, 5))
+    return [str(m), m.argSize(), m.empty(), m.hasArg(), len(m), m.__tuple__(), m.args, e.empty(), e.hasArg(), str(t),
+            m.name, m.mclass.name, type(m).__name__, str(l.ParamModule(l.F, (3,))), str(l.ParamModule(["D", 1]))]
+
+
+@case("ParamModule.__getitem__", "ParamModule.__setitem__", "ParamModule.__delitem__", "ParamModule.append",
+      "ParamModule.prepend")
+def param_module_editing():
+    m = lpy().ParamModule("A", 1, 2, 3, 4)
+    out = [m[0], m[-1], m[1:3], m[2:]]
+    m[1] = 20
+    del m[0]
+    m.append(5)
+    m.prepend(0)
+    out.append(str(m))
+    del m[1:3]
+    out.append(str(m))
+    m.args = [7, 8]
+    out.append(str(m))
+    return out
+
+
+@case("ParamModule.__getitem__")
+def param_module_index_error():
+    return lpy().ParamModule("A", 1)[3]
+
+
+@case("ParamModule.__eq__", "ParamModule.__ne__", "ParamModule.match", "Module.__eq__")
+def param_module_comparisons():
+    l = lpy()
+    a = l.ParamModule("A", 1)
+    return [a == l.ParamModule("A", 1), a == l.ParamModule("A", 2), a != l.ParamModule("A", 2), a == "A", a == "B",
+            a.match("A", 1), a.match("A", 2), l.Module("A") == l.Module("A"), l.Module("A") == l.Module("B")]
+
+
+@case("ParamModule.getParameterNames", "ParamModule.getParameter", "ParamModule.setParameter",
+      "ParamModule.hasParameter", "ParamModule.getParameterPosition", "ParamModule.getNamedParameterNb",
+      "ParamModule.getNamedParameters", "ParamModule.__getattr__", "ParamModule.__setattr__")
+def param_module_named_parameters():
+    declared("Seg", ["length", "width"])
+    m = lpy().ParamModule("Seg", 1.5, 0.2)
+    out = [m.getParameterNames(), m.getParameter("width"), m.hasParameter("length"), m.hasParameter("x"),
+           m.getParameterPosition("width"), m.getNamedParameterNb(), m.length]
+    m.setParameter("length", 3)
+    m.width = 0.5
+    m.note = "kept"
+    d = {}
+    m.getNamedParameters(d)
+    out += [str(m), d, m.note]
+    m3 = lpy().ParamModule("Seg", 9, 1, 2)  # named parameters are the last ones
+    out += [m3.getParameterPosition("length"), m3.length]
+    return out
+
+
+@case("ParamModule.getParameter")
+def param_module_unknown_parameter():
+    declared("Seg", ["length", "width"])
+    return lpy().ParamModule("Seg", 1, 2).getParameter("height")
+
+
+@case("ParamModule.__getattr__")
+def param_module_missing_attribute():
+    return lpy().ParamModule("A", 1).height
+
+
+@case("PackedArgs")
+def packed_args_unpacked():
+    l = lpy()
+    return [str(l.ParamModule("A", 1, l.PackedArgs([2, 3]))), str(l.newmodule("B", l.PackedArgs([4])))]
+
+
+@case("Module", "Module.isLeftBracket", "Module.isRightBracket", "Module.isBracket", "Module.isRequest",
+      "Module.isNull", "Module.isCut", "Module.isinstance", "Module.scale", "Module.__str__", "Module.__repr__")
+def module_kinds():
+    l = lpy()
+    out = []
+    for text in ["[", "]", "?P", "*", "%", "F", "A"]:
+        m = l.ParamModule(text)
+        out.append([text, m.isLeftBracket(), m.isRightBracket(), m.isBracket(), m.isRequest(), m.isNull(), m.isCut()])
+    bare = l.Module("Bud")
+    out += [str(bare), repr(bare), type(bare).__name__, bare.name, l.ParamModule("F", 1).isinstance(l.F),
+            l.ParamModule("F", 1).isinstance(l.Left), l.ParamModule("F").scale() == l.ModuleClass.DEFAULT_SCALE]
+    return out
+
+
+@case("Module.isConsidered", "Module.isIgnored", "ConsiderFilter", "ConsiderFilter.isConsidered",
+      "ConsiderFilter.isIgnored", "ConsiderFilter.ignoring", "ConsiderFilter.keyword", "ConsiderFilter.str",
+      "ConsiderFilter.consider", "ConsiderFilter.ignore")
+def consider_filters():
+    l = lpy()
+    c = l.ConsiderFilter("A B")
+    i = l.ConsiderFilter.ignore("F")
+    a, f, br = l.ParamModule("A", 1), l.ParamModule("F"), l.ParamModule("[")
+    return [c.isConsidered("A"), c.isConsidered("C"), c.isIgnored("C"), c.isIgnored(br), c.ignoring(), c.str(),
+            sorted(c.keyword().split()), i.ignoring(), i.isIgnored(f), i.isIgnored(a), i.isConsidered(l.F), i.str(),
+            a.isConsidered(c), f.isConsidered(c), f.isIgnored(i), a.isIgnored(None), a.isConsidered(None),
+            l.ConsiderFilter.consider("A").str(), l.ConsiderFilter("").str()]
+
+
+# --- AxialTree, Lstring ------------------------------------------------------------------------
+
+
+@case("AxialTree", "Lstring", "AxialTree.__str__", "AxialTree.__repr__", "AxialTree.__len__", "AxialTree.argSize",
+      "AxialTree.empty", "AxialTree.__eq__", "AxialTree.__ne__")
+def axial_tree_made():
+    l = lpy()
+    s = l.Lstring("A(1)[B(2,3)]C")
+    t = l.AxialTree("A(1)[B(2,3)]C")
+    return [str(s), repr(s), type(s).__name__, type(t).__name__, len(s), s.argSize(), s.empty(), l.AxialTree().empty(),
+            s == t, s != t, s == l.AxialTree("A(2)"), str(l.AxialTree(l.ParamModule("D", 1))),
+            str(l.AxialTree([l.ParamModule("E"), l.ParamModule("F", 2)])), str(l.AxialTree(("G", 7))),
+            isinstance(s, l.AxialTree), str(l.Lstring())]
+
+
+@case("AxialTree.__getitem__", "AxialTree.__setitem__", "AxialTree.__delitem__")
+def axial_tree_items():
+    l = lpy()
+    s = l.AxialTree("A(1)B(2)C(3)D")
+    out = [str(s[0]), type(s[1]).__name__, str(s[-1]), str(s[1:3]), type(s[1:3]).__name__, str(s[2:]), str(s[:2])]
+    s[0] = l.ParamModule("X", 9)
+    del s[1]
+    out.append(str(s))
+    m = s[0]
+    m[0] = 10  # a module read from the string writes into it
+    out.append(str(s))
+    return out
+
+
+@case("AxialTree.__getitem__")
+def axial_tree_index_error():
+    return lpy().AxialTree("A B")[5]
+
+
+@case("AxialTree.append", "AxialTree.prepend", "AxialTree.insertAt", "AxialTree.__iadd__", "AxialTree.__add__",
+      "AxialTree.__mul__", "AxialTree.__imul__", "AxialTree.clear")
+def axial_tree_editing():
+    l = lpy()
+    s = l.AxialTree("A B")
+    s.append("C(1)")
+    s.append(l.ParamModule("D", 2))
+    s.prepend("Z")
+    s.insertAt(1, "Y(5)")
+    out = [str(s)]
+    s.insertAt(0, ("W", 3))  # L-Py sets the module there
+    out.append(str(s))
+    t = s + "E"
+    t += l.ParamModule("F", 1)
+    t += ("G", 2)
+    out += [str(t), str(t + ("H",)), str(l.AxialTree("A[B]") * 2)]
+    u = l.AxialTree("A B")
+    u *= 3
+    out.append(str(u))
+    u.clear()
+    out.append([str(u), len(u)])
+    return out
+
+
+@case("AxialTree.insertAt")
+def axial_tree_insert_at_end():
+    s = lpy().AxialTree("A B")
+    s.insertAt(2, "C")
+    return str(s)
+
+
+@case("AxialTree.wellBracketed", "AxialTree.isAPath", "AxialTree.hasRequestModule", "AxialTree.count",
+      "AxialTree.find", "AxialTree.str_slice")
+def axial_tree_reading():
+    l = lpy()
+    s = l.AxialTree("A(1)[B(2)?P]A(1,2)A(3)C")
+    return [s.wellBracketed(), l.AxialTree("A[B").wellBracketed(), s.isAPath(), l.AxialTree("A B").isAPath(),
+            s.hasRequestModule(), l.AxialTree("A B").hasRequestModule(), s.count("A"), s.count("A", 1),
+            s.count(l.ParamModule("A", 9)), s.find("A"), s.find("A", 1), s.find("C"), s.find("Q"), s.find("A", 1, 4),
+            s.str_slice(1, 4), s.str_slice(2, 100)]
+
+
+@case("AxialTree.roots", "AxialTree.parent", "AxialTree.children", "AxialTree.lateral_children",
+      "AxialTree.direct_child", "AxialTree.endBracket", "AxialTree.beginBracket", "AxialTree.father",
+      "AxialTree.sons", "AxialTree.lateralSons", "AxialTree.directSon")
+def axial_tree_navigation():
+    l = lpy()
+    s = l.AxialTree("A[B[C]D]E[F]G")
+    out = [s.roots(), l.AxialTree("[A][B]C").roots(), l.AxialTree("").roots()]
+    for i in range(len(s)):
+        if s[i].name not in "[]":
+            out.append([i, s.parent(i), s.children(i), s.lateral_children(i), s.direct_child(i),
+                        s.children(i, "<"), s.children(i, "+")])
+    out += [s.endBracket(1), s.endBracket(1, True), s.endBracket(2), s.beginBracket(5), s.beginBracket(7),
+            s.beginBracket(7, True), s.endBracket(len(s))]
+    return out
+
+
+@case("AxialTree.children")
+def axial_tree_children_bad_edge():
+    return lpy().AxialTree("A[B]C").children(0, "x")
+
+
+@case("AxialTree.parent")
+def axial_tree_parent_out_of_range():
+    return lpy().AxialTree("A B").parent(7)
+
+
+@case("AxialTree.complex", "AxialTree.components", "AxialTree.components_at_scale", "AxialTree.successor_at_scale",
+      "AxialTree.predecessor_at_scale", "AxialTree.successor_at_level", "AxialTree.predecessor_at_level")
+def axial_tree_scales():
+    l = lpy()
+    declared("P", []).scale = 1
+    declared("U", []).scale = 2
+    s = l.AxialTree("P U I I U I P U I")
+    return [s.complex(2), s.complex(2, 1), s.components(0), s.components_at_scale(0, 2), s.successor_at_scale(1, 2),
+            s.predecessor_at_scale(4, 2), s.successor_at_level(1, 2), s.predecessor_at_level(7, 1)]
+
+
+@case("AxialTree.node", "NodeModule", "NodeModule.position", "NodeModule.isValid", "NodeModule.isRoot",
+      "NodeModule.parent", "NodeModule.children", "NodeModule.lateral_children", "NodeModule.direct_child",
+      "NodeModule.father", "NodeModule.sons", "NodeModule.lateralSons", "NodeModule.directSon")
+def axial_tree_nodes():
+    s = lpy().AxialTree("A(1)[B(2)]C(3)")
+    a, b, c = s.node(0), s.node(2), s.node(4)
+    kids = a.children()
+    return [type(a).__name__, str(a), a.position(), a.isValid(), a.isRoot(), b.isRoot(), str(b.parent()),
+            [str(k) for k in kids], [str(k) for k in a.lateral_children()], str(a.direct_child()), c.children(),
+            a.parent(), b.parent().position(), [k.position() for k in kids]]
+
+
+@case("AxialTree.__iter__", "AxialTreeIterator", "AxialTreeIterator.next", "AxialTreeIterator.__next__",
+      "AxialTreeIterator.current", "AxialTreeIterator.__length_hint__", "AxialTreeIterator.toEndBracket",
+      "AxialTreeIterator.__iter__")
+def axial_tree_iterator():
+    l = lpy()
+    s = l.AxialTree("A[B C]D E")
+    out = [[str(m) for m in s], type(iter(s)).__name__]
+    it = l.AxialTreeIterator(s)
+    out += [str(it.next()), str(it.current()), it.__length_hint__(), str(it.next()), str(it.toEndBracket()),
+            str(next(it)), iter(it) is not None]
+    return out
+
+
+@case("AxialTree.match", "AxialTree.reverse_match", "AxialTree.leftmatch", "AxialTree.rightmatch")
+def axial_tree_matching():
+    s = lpy().AxialTree("A(1)B(2)[C(3)]D(4)")
+    return [s.match("A(x)", 0), s.match("A(x)B(y)", 0), s.match("B(y)", 0), s.match("B(y)", 1),
+            s.match("A(x,y)", 0), s.match("A(1)", 0), s.match("A(2)", 0), s.reverse_match("A(x)B(y)", 1),
+            s.reverse_match("B(y)", 0), s.rightmatch("D(x)", 3), s.rightmatch("C(x)", 3), s.leftmatch("B(x)", 6),
+            s.leftmatch("A(x)B(x)", 6), s.leftmatch("C(x)", 6)]
+
+
+@case("AxialTree.replace", "AxialTree.find")
+def axial_tree_replace():
+    l = lpy()
+    s = l.AxialTree("A(1)B(2)A(3)C")
+    return [str(s.replace("A(x)", "Z")), str(s.replace(l.PatternModule("A(x)"), ("Y", 0))),
+            str(s.replace("A(x)B(y)", l.AxialTree("Q R"))), str(s.replace(l.PatternModule("C"), l.ParamModule("K", 5))),
+            str(s), s.find(l.PatternModule("A(x)")), s.find(l.PatternModule("C")), s.find(l.PatternModule("A(x)"), 1)]
+
+
+# --- patterns ---------------------------------------------------------------------------------
+
+
+@case("PatternModule", "PatternModule.varnames", "PatternModule.getVarNb", "PatternModule.args",
+      "PatternModule.argSize", "PatternModule.name", "PatternModule.__len__", "PatternModule.__getitem__")
+def pattern_module():
+    l = lpy()
+    p = l.PatternModule("A(x,1,y)")
+    q = l.PatternModule("B(a,*rest)")
+    return [str(p), p.varnames(), p.getVarNb(), [str(a) for a in p.args], p.argSize(), p.name, len(p), str(p[0]),
+            type(p[0]).__name__, str(q), q.varnames(), str(l.PatternModule("C")), l.PatternModule("C").varnames(),
+            type(p).__name__]
+
+
+@case("PatternModule")
+def pattern_module_of_two():
+    return str(lpy().PatternModule("A B"))
+
+
+@case("PatternModule.matchingMethod", "PatternModule.eSimple", "PatternModule.eWithStar",
+      "PatternModule.eWithStarNValueConstraint")
+def pattern_module_matching_method():
+    P = lpy().PatternModule
+    return [int(P.eSimple), int(P.eWithStar), int(P.eWithStarNValueConstraint), int(P.matchingMethod)]
+
+
+@case("LsysVar", "LsysVar.varname", "LsysVar.isArgs", "LsysVar.isKwds", "LsysVar.value", "LsysVar.name")
+def lsys_var():
+    L = lpy().LsysVar
+    out = []
+    for n in ["x", "*args", "**kw"]:
+        v = L(n)
+        out.append([str(v), repr(v), v.varname(), v.isArgs(), v.isKwds(), v.value(), v.name])
+    v = L("x")
+    v.name = "y"
+    out.append([str(v), v.varname()])
+    return out
+
+
+@case("PatternString", "PatternString.varnames", "PatternString.getVarNb", "PatternString.__len__",
+      "PatternString.__str__", "PatternString.__getitem__")
+def pattern_string():
+    l = lpy()
+    p = l.PatternString("A(x) B(y,z) C")
+    return [str(p), len(p), p.varnames(), p.getVarNb(), str(p[1]), type(p[1]).__name__, str(l.PatternString())]
+
+
+@case("StringMatching", "StringMatching.begin", "StringMatching.end", "StringMatching.append",
+      "StringMatching.addIdentity", "StringMatching.const_iterator")
+def string_matching():
+    sm = lpy().StringMatching()
+    sm.addIdentity(2)
+    sm.append(1, 3)
+    sm.append(2, 1)
+    sm.addIdentity(1)
+    it = sm.begin()
+    out = [it.values()]
+    for k in range(8):
+        out.append(it.nextValues())
+    e = sm.end()
+    out.append(e.values())
+    it2 = sm.begin()
+    it2.increment()
+    out += [it2.original(), it2.target(), it2.next(), type(it2).__name__]
+    return out
