@@ -22,6 +22,15 @@ def undeclare(names):
     _lpy.context().undeclare(names)
 
 
+_set_args = ParamModule.args.__set__  # `m.args = ...` writes m.__dict__, as in L-Py
+
+
+def _variable(value, member):
+    if not isinstance(value, LsysVar):
+        raise TypeError('PatternModule.%s: an LsysVar, not a %s' % (member, type(value).__name__))
+    return value
+
+
 class _MatchingMethod(type(ParamModule)):
     @property
     def matchingMethod(cls):
@@ -45,7 +54,7 @@ class PatternModule(ParamModule, metaclass=_MatchingMethod):
     def __init__(self, name, params=None, lineno=-1):
         if isinstance(name, PatternModule):
             ParamModule.__init__(self, name.name)
-            self.args = list(name.args)
+            _set_args(self, list(name.args))
             return
         if isinstance(name, ParamModule):  # a module of a PatternString
             ParamModule.__init__(self, name)
@@ -59,10 +68,23 @@ class PatternModule(ParamModule, metaclass=_MatchingMethod):
             raise ValueError('Invalid query module ' + text)
         mname, args = written[0]
         ParamModule.__init__(self, mname)
-        self.args = _pattern_args(args)
+        _set_args(self, _pattern_args(args))
 
     def __str__(self):
         return self.name + ('(%s)' % ','.join(str(a) for a in self.args) if len(self) else '')
+
+    # Its parameters are LsysVars (L-Py's PatternModule holds nothing else).
+    def setParameter(self, name, value):
+        ParamModule.setParameter(self, name, _variable(value, 'setParameter'))
+
+    def __setitem__(self, i, value):
+        ParamModule.__setitem__(self, i, _variable(value, '__setitem__'))
+
+    def append(self, value):
+        ParamModule.append(self, _variable(value, 'append'))
+
+    def prepend(self, value):
+        ParamModule.prepend(self, _variable(value, 'prepend'))
 
     __repr__ = __str__
 

@@ -23,7 +23,7 @@ from _sprout_lpy import (AxialTree, _Lstring as Lstring, Module, ParamModule, No
 
 __all__ = ['AxialTree', 'Lstring', 'Module', 'ParamModule', 'NodeModule', 'ModuleClass', 'PackedArgs',
            'AxialTreeIterator', 'ModuleType', 'ModuleCategory', 'eConsiderMethod', 'eConsider', 'eIgnore',
-           'ConsiderFilter', 'ModuleClassTable', 'LsysVar', 'PatternString']
+           'ConsiderFilter', 'ModuleClassTable', 'LsysVar', 'PatternString', 'ArgList']
 
 
 # [SECTION] enums
@@ -37,22 +37,29 @@ class _Enum(int):
         if name is None:
             return cls.values[int(value)]
         self = int.__new__(cls, value)
-        self.name = name
+        self._name = name
         return self
 
+    @property
+    def name(self):
+        return self._name
+
     def __repr__(self):
-        return 'openalea.lpy.__lpy_kernel__.%s.%s' % (type(self).__name__, self.name)
+        return 'openalea.lpy.__lpy_kernel__.%s.%s' % (type(self).__name__, self._name)
 
     def __str__(self):
-        return self.name
+        return self._name
 
     def __reduce__(self):
         return (type(self), (int(self),))
 
 
-def _enum(name, items):
-    cls = type(name, (_Enum,), {'__module__': 'openalea.lpy', 'names': {}, 'values': {}})
+def _enum(name, items, left_out=()):
+    """`left_out`: values L-Py's C++ has that its Python enum does not name."""
+    cls = type(name, (_Enum,), {'__module__': 'openalea.lpy.__lpy_kernel__', 'names': {}, 'values': {}})
     for k, n in enumerate(items):
+        if n in left_out:
+            continue
         v = _Enum.__new__(cls, k, n)
         setattr(cls, n, v)
         cls.names[n] = v
@@ -62,9 +69,7 @@ def _enum(name, items):
 
 ModuleCategory = _enum('ModuleCategory', ['None', 'Structure', 'Rotation', 'Position', 'Scale', 'Primitive', 'Width',
                                           'Color', 'Tropism', 'Request', 'Texture', 'StringManipulation',
-                                          'PatternMatching', 'UserDefined'])
-delattr(ModuleCategory, 'Texture')  # a category of L-Py's C++ that its Python enum leaves out
-del ModuleCategory.names['Texture']
+                                          'PatternMatching', 'UserDefined'], left_out=('Texture',))
 eConsiderMethod = _enum('eConsiderMethod', ['eConsider', 'eIgnore'])
 eConsider, eIgnore = eConsiderMethod.eConsider, eConsiderMethod.eIgnore
 
@@ -101,6 +106,7 @@ _PREDEFINED = [
     (['OLineTo'], "Trace line toward (x,y,z) and change the orientation. Params : 'x, y, z, topdiameter' or 'v, topdiameter' (optionals, default = 0).", 'Primitive'),
     (['Pinpoint'], "Orient turtle toward (x,y,z) . Params : 'x, y, z' or 'v' (optionals, default = 0).", 'Rotation'),
     (['LineRel'], "Trace line to pos+(x,y,z) without changing the orientation. Params : 'x, y, z, topdiameter' or 'v, topdiameter'(optionals, default = 0).", 'Primitive'),
+    (['OLineRel'], "Trace line toward pos+(x,y,z) and change the orientation. Params : 'x, y, z, topdiameter' or 'v, topdiameter' (optionals, default = 0).", 'Primitive'),
     (['PinpointRel'], "Orient turtle toward pos+(x,y,z) . Params : 'x, y, z' or 'v' (optionals, default = 0).", 'Rotation'),
     (['@R', 'SetHead'], "Set the turtle Heading and Up vector. Params: 'hx, hy, hz, ux, uy, uz' or 'h,v' (optionals, default=0,0,1, 1,0,0).", 'Rotation'),
     (['EulerAngles'], "Set the orientation of the turtle from the absolute euler angles. Params: 'azimuth, elevation, roll' (optionals, default=180,90,0).", 'Rotation'),
@@ -213,6 +219,13 @@ def _export_predefined(scope):
 _export_predefined(globals())
 
 
+class ArgList(list):
+    """The values a pattern bound (L-Py's ArgList, a vector of Python objects): ArgList(size, obj)."""
+
+    def __init__(self, size=0, obj=None):
+        list.__init__(self, [obj] * size)
+
+
 # [SECTION] ModuleClassTable
 class ModuleClassTable:
     """L-Py's table of module classes: every class the process knows, with its aliases."""
@@ -251,9 +264,6 @@ class ModuleClassTable:
         if isinstance(what, ModuleClass):
             return False
         return _module_class(_declare(what))
-
-    def remove(self, what):
-        return False
 
 
 # [SECTION] ConsiderFilter
@@ -334,6 +344,14 @@ class LsysVar:
 
     def __init__(self, name):
         self.name, self._value, self._condition, self._text = str(name), None, None, ''
+
+    @property
+    def name(self):
+        return self._name
+
+    @name.setter
+    def name(self, value):
+        self._name = str(value)
 
     @classmethod
     def _of_value(cls, value):
@@ -501,44 +519,51 @@ def _tree_reverse_match(self, pattern, pos):
     return _exact(self, ps, pos - len(ps) + 1) >= 0
 
 
-def _right_modules(s, pos, n):
-    """The next n modules of a right context from pos: branches passed over, a ']' its end."""
-    out, j = [], pos
-    while j < len(s) and len(out) < n:
-        name = s[j].name
-        if name == '[':
-            e = s.endBracket(j)
+def _tree_rightmatch(self, pattern, pos):
+    """A right context: the modules after `pos`, branches the pattern does not open passed
+    over, a ']' of the string the end of what follows (a ']' of the pattern: the rest of the
+    branch passed over)."""
+    ps = _pattern_string(pattern)
+    j = _position(self, pos) + 1
+    for p in ps:
+        if p.name == '[':
+            if j >= len(self) or self[j].name != '[':
+                return False
+            j += 1
+            continue
+        if p.name == ']':
+            e = self.endBracket(j, True) if j < len(self) else None
             if e is None:
-                break
+                return False
             j = e + 1
             continue
-        if name == ']':
-            break
-        out.append(j)
+        while j < len(self) and self[j].name == '[':
+            e = self.endBracket(j)
+            if e is None:
+                return False
+            j = e + 1
+        if j >= len(self) or self[j].name == ']' or not _match_module(p, self[j], []):
+            return False
         j += 1
-    return out
-
-
-def _tree_rightmatch(self, pattern, pos):
-    ps = _pattern_string(pattern)
-    if not ps:
-        return True
-    at = _right_modules(self, _position(self, pos), len(ps))
-    return len(at) == len(ps) and _builtins.all(_match_module(p, self[j], []) for p, j in zip(ps, at))
+    return True
 
 
 def _tree_leftmatch(self, pattern, pos):
+    """A left context: the modules before `pos` towards the root, branches passed over."""
     ps = _pattern_string(pattern)
-    if not ps:
-        return True
-    j = _position(self, pos)
-    at = []
-    while len(at) < len(ps):
-        j = self.parent(j) if j < len(self) else (len(self) - 1 if len(self) else None)
-        if j is None:
+    j = _position(self, pos) - 1
+    for p in reversed(ps):
+        while j >= 0 and self[j].name in '[]':
+            if self[j].name == ']':
+                b = self.beginBracket(j)
+                if b is None:
+                    return False
+                j = b
+            j -= 1
+        if j < 0 or not _match_module(p, self[j], []):
             return False
-        at.append(j)
-    return _builtins.all(_match_module(p, self[j], []) for p, j in zip(reversed(ps), at))
+        j -= 1
+    return True
 
 
 def _tree_find(self, pattern, start=0, end=2147483647):

@@ -186,6 +186,8 @@ void defineTree(py::class_<PyLstring>& c) {
             s.get();
             n.index = position(s.get(), i);
             if (n.index >= s.get().size()) throw py::index_error("index out of range");
+            n.detached = true;  // a copy of the module, as L-Py's NodeModule::generate makes
+            n.own = s.get()[n.index];
             return n;
         });
 }

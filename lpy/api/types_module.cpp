@@ -144,8 +144,8 @@ LModule fromSequence(const py::sequence& t) {
     return construct(cls, t, 1);
 }
 
-py::object considerFilterTest(PyModule& self, py::object filter, const char* test, bool none) {
-    if (filter.is_none()) return py::bool_(none);
+py::object considerFilterTest(PyModule& self, py::object filter, const char* test) {
+    if (filter.is_none()) throw py::type_error(std::string("Module.") + test + ": a ConsiderFilter, not None");
     return filter.attr(test)(py::cast(PyModuleClass{self.get().cls}));
 }
 
@@ -184,8 +184,8 @@ void defineModule(py::module_& m) {
         .def("isCut", [](PyModule& self) { return self.get().cls == ModuleClasses::kCut; })
         .def("scale", [](PyModule& self) { return scales()(self.get().cls); })
         .def("isinstance", [](PyModule& self, const PyModuleClass& c) { return names().derivesFrom(self.get().cls, c.cls); })
-        .def("isConsidered", [](PyModule& self, py::object filter) { return considerFilterTest(self, filter, "isConsidered", true); })
-        .def("isIgnored", [](PyModule& self, py::object filter) { return considerFilterTest(self, filter, "isIgnored", false); })
+        .def("isConsidered", [](PyModule& self, py::object filter) { return considerFilterTest(self, filter, "isConsidered"); })
+        .def("isIgnored", [](PyModule& self, py::object filter) { return considerFilterTest(self, filter, "isIgnored"); })
         // Module == Module: the same class (ParamModule's compares the parameters too).
         .def("__eq__", [](PyModule& a, py::object b) {
             return py::isinstance<PyModule>(b) && a.get().cls == py::cast<PyModule&>(b).get().cls;
@@ -272,7 +272,12 @@ void defineParamModuleArgs(py::class_<PyParamModule, PyModule>& c) {
 }
 
 void defineParamModuleNames(py::class_<PyParamModule, PyModule>& c) {
-    c.def("getParameterNames", [](PyParamModule& self) { return parameterNamesOf(self.get().cls); })
+    // L-Py binds getParameterNames with a return type Boost.Python cannot convert: it always
+    // raises (ModuleClass.parameterNames gives the names).
+    c.def("getParameterNames", [](PyParamModule&) -> py::object {
+         throw py::type_error("No to_python (by-value) converter found for C++ type: std::vector<std::string> "
+                              "(L-Py's ParamModule.getParameterNames; ModuleClass.parameterNames gives them)");
+     })
         .def("getNamedParameterNb", [](PyParamModule& self) { return parameterNamesOf(self.get().cls).size(); })
         .def("getParameterPosition", [](PyParamModule& self, const std::string& n) { return parameterPosition(self.get(), n); })
         .def("hasParameter", [](PyParamModule& self, const std::string& n) { return positionInClass(self.get().cls, n) != kNoPos; })
@@ -300,12 +305,13 @@ void defineParamModuleNames(py::class_<PyParamModule, PyModule>& c) {
         })
         .def("__setattr__", [](py::object self, py::str n, py::object v) {
             PyParamModule& mod = py::cast<PyParamModule&>(self);
-            const std::string name = n.cast<std::string>();
-            if (positionInClass(mod.get().cls, name) != kNoPos) {
+            if (positionInClass(mod.get().cls, n.cast<std::string>()) != kNoPos) {
                 self.attr("setParameter")(n, v);
                 return;
             }
-            if (PyObject_GenericSetAttr(self.ptr(), n.ptr(), v.ptr()) != 0) throw py::error_already_set();
+            // L-Py's __mod_setattr__ writes self.__dict__: `m.args = ...`, `m.name = ...` leave
+            // the module as it is.
+            self.attr("__dict__")[n] = v;
         });
 }
 
@@ -337,6 +343,8 @@ py::object nodeAt(const PyModule& self, long i) {
     PyNodeModule n;
     n.owner = self.owner;
     n.index = size_t(i);
+    n.detached = true;
+    n.own = (*self.owner)[n.index];
     return py::cast(std::move(n));
 }
 

@@ -87,7 +87,9 @@ struct PyModule {
     std::shared_ptr<LString> owner;  // set: a view of (*owner)[index]
     size_t index = 0;
     LModule own;
-    LModule& get() { return owner ? (*owner)[index] : own; }
+    // A NodeModule (L-Py's are copies): its module is `own`, `owner` only tells its place.
+    bool detached = false;
+    LModule& get() { return owner && !detached ? (*owner)[index] : own; }
 };
 
 // L-Py's class tree: Module (a name), ParamModule (with parameters: every module Python gets

@@ -61,6 +61,8 @@ py::object Matcher::nodeOf(const LModule& m) {
         if (!m_readingShared) m_readingShared = std::make_shared<LString>(*m_reading);
         node.owner = m_readingShared;
         node.index = size_t(&m - m_reading->data());
+        node.detached = true;
+        node.own = m;
     } else {
         node.own = m;
     }

@@ -16,7 +16,8 @@ def lpy():
 
 
 def declared(name, params):
-    """A module class of the process with declared parameter names."""
+    """A module class of the process with declared parameter names. L-Py's table forgets a
+    class declared there once Python holds it no more: a case keeps what this gives."""
     l = lpy()
     c = l.ModuleClassTable.get().declare(name)
     c.parameterNames = params
@@ -38,6 +39,38 @@ def predefined_classes_by_name():
     return out
 
 
+PREDEFINED_NAMES = ["SB", "EB", "Cut", "any", "F", "f", "nF", "Left", "Right", "Up", "Down", "RollL",
+                    "RollR", "iRollL", "iRollR", "TurnAround", "RollToVert", "RollToHorizontal", "SetHead", "EulerAngles",
+                    "Pinpoint", "PinpointRel", "MoveTo", "MoveRel", "LineTo", "LineRel", "OLineTo", "OLineRel",
+                    "IncWidth", "DecWidth", "SetWidth", "IncColor", "DecColor", "SetColor", "InterpolateColors",
+                    "TextureBaseColor", "InterpolateTextureBaseColors", "Sphere", "Circle", "Box", "Quad", "Label",
+                    "StartGC", "EndGC", "BP", "EP", "PP", "SetContour", "SectionResolution", "SetGuide", "EndGuide",
+                    "PositionOnGuide", "Sweep", "PglShape", "Frame", "Arrow", "SetScale", "MultScale", "DivScale",
+                    "Elasticity", "Tropism", "LeftReflection", "UpReflection", "HeadingReflection",
+                    "StartScreenProjection", "EndScreenProjection", "TextureScale", "TextureUScale", "TextureVScale",
+                    "TextureVCoeff", "TextureTranslation", "TextureRotation", "TextureTransformation", "GetPos",
+                    "GetHead", "GetUp", "GetLeft", "GetRight", "GetFrame", "X", "MouseIns", "x", "repexp", "all", "or",
+                    "GetIterator", "new", "newmodule"]
+
+
+@case(*PREDEFINED_NAMES)
+def every_predefined_name():
+    """Each name a predefined module class has in openalea.lpy, and what it names. Not here:
+    `None` and `surface` (Sprout names its None module 'None', L-Py ''; Sprout's `~` and
+    `surface` are one class, L-Py's two), `GetModule` (`$`, which Sprout's strings read as a
+    module held in a variable)."""
+    l = lpy()
+    return [[n, type(getattr(l, n)).__name__, getattr(l, n).name] for n in PREDEFINED_NAMES]
+
+
+@case("ArgList", "ArgList.append", "ArgList.extend")
+def arg_list():
+    a = lpy().ArgList()
+    a.append(1)
+    a.extend([2, "x"])
+    return [str(a), repr(a), len(a), a[2], list(a), str(lpy().ArgList(2, 0))]
+
+
 @case("newmodule", "ModuleClass.__call__")
 def newmodule_names_the_module():
     l = lpy()
@@ -49,9 +82,9 @@ def newmodule_names_the_module():
 def module_class_documentation():
     l = lpy()
     names = [c.name for c in l.ModuleClass.predefinedClasses]
+    stem = declared("Stem", [])
     return [l.F.documentation, l.Left.documentation, l.SetGuide.documentation, l.newmodule.documentation,
-            l.F.isPredefined(), declared("Stem", []).isPredefined(), declared("Stem", []).documentation,
-            "F" in names, "+" in names, "Stem" in names]
+            l.F.isPredefined(), stem.isPredefined(), stem.documentation, "F" in names, "+" in names, "Stem" in names]
 
 
 @case("ModuleClass.parameterNames", "ModuleClass.hasParameter", "ModuleClass.getParameterPosition",
@@ -129,8 +162,6 @@ def param_module_editing():
     out.append(str(m))
     del m[1:3]
     out.append(str(m))
-    m.args = [7, 8]
-    out.append(str(m))
     return out
 
 
@@ -147,13 +178,13 @@ def param_module_comparisons():
             a.match("A", 1), a.match("A", 2), l.Module("A") == l.Module("A"), l.Module("A") == l.Module("B")]
 
 
-@case("ParamModule.getParameterNames", "ParamModule.getParameter", "ParamModule.setParameter",
+@case("ParamModule.getParameter", "ParamModule.setParameter",
       "ParamModule.hasParameter", "ParamModule.getParameterPosition", "ParamModule.getNamedParameterNb",
       "ParamModule.getNamedParameters", "ParamModule.__getattr__", "ParamModule.__setattr__")
 def param_module_named_parameters():
-    declared("Seg", ["length", "width"])
+    seg = declared("Seg", ["length", "width"])
     m = lpy().ParamModule("Seg", 1.5, 0.2)
-    out = [m.getParameterNames(), m.getParameter("width"), m.hasParameter("length"), m.hasParameter("x"),
+    out = [seg.name, m.getParameter("width"), m.hasParameter("length"), m.hasParameter("x"),
            m.getParameterPosition("width"), m.getNamedParameterNb(), m.length]
     m.setParameter("length", 3)
     m.width = 0.5
@@ -168,8 +199,32 @@ def param_module_named_parameters():
 
 @case("ParamModule.getParameter")
 def param_module_unknown_parameter():
-    declared("Seg", ["length", "width"])
-    return lpy().ParamModule("Seg", 1, 2).getParameter("height")
+    seg = declared("Seg", ["length", "width"])
+    return [seg.name, lpy().ParamModule("Seg", 1, 2).getParameter("height")]
+
+
+@case("ParamModule.getParameter")
+def param_module_parameter_without_value():
+    seg = declared("Seg", ["length", "width"])
+    return [seg.name, lpy().ParamModule("Seg", 1).getParameter("width")]
+
+
+@case("ParamModule.getParameterNames")
+def param_module_parameter_names():
+    """L-Py binds it with a return type its Boost.Python cannot convert: a TypeError."""
+    seg = declared("Seg", ["length", "width"])
+    return [seg.name, lpy().ParamModule("Seg", 1, 2).getParameterNames()]
+
+
+@case("ParamModule.__setattr__", "ParamModule.args", "Module.name")
+def param_module_setattr_keeps_the_module():
+    l = lpy()
+    m = l.ParamModule("A", 1)
+    m.args = [7, 8]
+    m.name = "B"
+    b = l.Module("C")
+    b.name = "D"
+    return [str(m), m.args, m.name, m.__dict__, str(b)]
 
 
 @case("ParamModule.__getattr__")
@@ -184,6 +239,8 @@ def packed_args_unpacked():
 
 
 @case("Module", "Module.isLeftBracket", "Module.isRightBracket", "Module.isBracket", "Module.isRequest",
+      "ParamModule.isLeftBracket", "ParamModule.isRightBracket", "ParamModule.isBracket", "ParamModule.isRequest",
+      "ParamModule.isNull", "ParamModule.isCut", "ParamModule.isinstance", "ParamModule.scale",
       "Module.isNull", "Module.isCut", "Module.isinstance", "Module.scale", "Module.__str__", "Module.__repr__")
 def module_kinds():
     l = lpy()
@@ -205,10 +262,16 @@ def consider_filters():
     c = l.ConsiderFilter("A B")
     i = l.ConsiderFilter.ignore("F")
     a, f, br = l.ParamModule("A", 1), l.ParamModule("F"), l.ParamModule("[")
-    return [c.isConsidered("A"), c.isConsidered("C"), c.isIgnored("C"), c.isIgnored(br), c.ignoring(), c.str(),
+    return [c.isConsidered("A"), c.isConsidered("C"), c.isIgnored("C"), c.isIgnored(br), c.ignoring(),
+            sorted(c.str().split()),
             sorted(c.keyword().split()), i.ignoring(), i.isIgnored(f), i.isIgnored(a), i.isConsidered(l.F), i.str(),
-            a.isConsidered(c), f.isConsidered(c), f.isIgnored(i), a.isIgnored(None), a.isConsidered(None),
-            l.ConsiderFilter.consider("A").str(), l.ConsiderFilter("").str()]
+            a.isConsidered(c), f.isConsidered(c), f.isIgnored(i), l.ConsiderFilter.consider("A").str(),
+            l.ConsiderFilter("").str()]
+
+
+@case("Module.isConsidered")
+def module_considered_without_filter():
+    return lpy().ParamModule("A").isConsidered(None)
 
 
 # --- AxialTree, Lstring ------------------------------------------------------------------------
@@ -317,11 +380,12 @@ def axial_tree_parent_out_of_range():
       "AxialTree.predecessor_at_scale", "AxialTree.successor_at_level", "AxialTree.predecessor_at_level")
 def axial_tree_scales():
     l = lpy()
-    declared("P", []).scale = 1
-    declared("U", []).scale = 2
+    p, u = declared("P", []), declared("U", [])
+    p.scale, u.scale = 1, 2
     s = l.AxialTree("P U I I U I P U I")
-    return [s.complex(2), s.complex(2, 1), s.components(0), s.components_at_scale(0, 2), s.successor_at_scale(1, 2),
-            s.predecessor_at_scale(4, 2), s.successor_at_level(1, 2), s.predecessor_at_level(7, 1)]
+    return [p.scale, u.scale, s.complex(2), s.complex(2, 1), s.components(0), s.components_at_scale(0, 2),
+            s.successor_at_scale(1, 2), s.predecessor_at_scale(4, 2), s.successor_at_level(1, 2),
+            s.predecessor_at_level(7, 1), s.complex(1), s.complex(0), s.components(1), s.successor_at_scale(0, 1)]
 
 
 @case("AxialTree.node", "NodeModule", "NodeModule.position", "NodeModule.isValid", "NodeModule.isRoot",
@@ -352,7 +416,13 @@ def axial_tree_iterator():
 @case("AxialTree.match", "AxialTree.reverse_match", "AxialTree.leftmatch", "AxialTree.rightmatch")
 def axial_tree_matching():
     s = lpy().AxialTree("A(1)B(2)[C(3)]D(4)")
-    return [s.match("A(x)", 0), s.match("A(x)B(y)", 0), s.match("B(y)", 0), s.match("B(y)", 1),
+    t = lpy().AxialTree("A B C D")
+    right = [[s.rightmatch(p, i) for i in range(len(s))] for p in ["A(x)", "B(x)", "C(x)", "D(x)", "B(x)D(y)",
+                                                                   "[C(x)]D(y)", "B(x)[C(y)]"]]
+    left = [[s.leftmatch(p, i) for i in range(len(s))] for p in ["A(x)", "B(x)", "C(x)", "A(x)B(y)"]]
+    flat = [[t.rightmatch(p, i) for i in range(len(t))] + [t.leftmatch(p, i) for i in range(len(t))]
+            for p in ["A", "B C", "A B"]]
+    return right + left + flat + [s.match("A(x)", 0), s.match("A(x)B(y)", 0), s.match("B(y)", 0), s.match("B(y)", 1),
             s.match("A(x,y)", 0), s.match("A(1)", 0), s.match("A(2)", 0), s.reverse_match("A(x)B(y)", 1),
             s.reverse_match("B(y)", 0), s.rightmatch("D(x)", 3), s.rightmatch("C(x)", 3), s.leftmatch("B(x)", 6),
             s.leftmatch("A(x)B(x)", 6), s.leftmatch("C(x)", 6)]
@@ -432,3 +502,123 @@ def string_matching():
     it2.increment()
     out += [it2.original(), it2.target(), it2.next(), type(it2).__name__]
     return out
+
+
+# --- the members each class inherits, on an object of that class -----------------------------
+
+
+def tried(f):
+    try:
+        return f()
+    except Exception as e:  # an error is a result too: its kind, told the same way by both
+        return ["raises", {"ArgumentError": "TypeError"}.get(type(e).__name__, type(e).__name__)]
+
+
+def text(v):
+    return v if v is None or isinstance(v, (bool, int, float, list, str)) else str(v)
+
+
+def string_members(s, patterns):
+    """What a string's members give on `s` (AxialTree's members; `patterns`: its own too)."""
+    out = [text(tried(f)) for f in [
+        s.argSize, s.empty, s.wellBracketed, s.isAPath, s.hasRequestModule, s.roots, lambda: s.parent(2),
+        lambda: s.children(0), lambda: s.lateral_children(0), lambda: s.direct_child(0), lambda: s.father(2),
+        lambda: s.sons(0), lambda: s.lateralSons(0), lambda: s.directSon(0), lambda: s.endBracket(1),
+        lambda: s.beginBracket(4), lambda: s.complex(2), lambda: s.components(0), lambda: s.components_at_scale(0, 1),
+        lambda: s.successor_at_scale(0, 1), lambda: s.predecessor_at_scale(2, 1), lambda: s.successor_at_level(0, 1),
+        lambda: s.predecessor_at_level(2, 1)]]
+    if patterns:
+        out += [text(tried(f)) for f in [
+            lambda: s.count("A"), lambda: s.find("B"), lambda: s.str_slice(0, 3), lambda: s.node(2),
+            lambda: s.match("A(x)", 0), lambda: s.reverse_match("A(x)", 0), lambda: s.leftmatch("A(x)", 2),
+            lambda: s.rightmatch("E", 0), lambda: s.replace("E", "Q")]]
+    s.append("F")
+    s.prepend("G")
+    s.insertAt(1, "H")
+    out.append(str(s))
+    s.clear()
+    out.append([str(s), len(s)])
+    return out
+
+
+STRING_MEMBERS = ["argSize", "empty", "wellBracketed", "isAPath", "hasRequestModule", "roots", "parent", "children",
+                  "lateral_children", "direct_child", "father", "sons", "lateralSons", "directSon", "endBracket",
+                  "beginBracket", "complex", "components", "components_at_scale", "successor_at_scale",
+                  "predecessor_at_scale", "successor_at_level", "predecessor_at_level", "append", "prepend",
+                  "insertAt", "clear"]
+PATTERN_MEMBERS = ["count", "find", "str_slice", "node", "match", "reverse_match", "leftmatch", "rightmatch", "replace"]
+
+
+@case(*["Lstring." + m for m in STRING_MEMBERS + PATTERN_MEMBERS])
+def lstring_members():
+    return string_members(lpy().Lstring("A(1)[B(2)[C]D]E"), True)
+
+
+@case(*["PatternString." + m for m in STRING_MEMBERS])
+def pattern_string_members():
+    return string_members(lpy().PatternString("A(x)[B(y)[C]D]E"), False)
+
+
+def module_members(m):
+    l = lpy()
+    return [text(tried(f)) for f in [
+        m.argSize, m.empty, m.hasArg, lambda: m.args, m.isBracket, m.isLeftBracket, m.isRightBracket, m.isCut,
+        m.isNull, m.isRequest, lambda: m.mclass.name, lambda: m.name, lambda: m.scale() == l.ModuleClass.DEFAULT_SCALE,
+        lambda: m.isinstance(l.F), lambda: m.isConsidered(l.ConsiderFilter("A")),
+        lambda: m.isIgnored(l.ConsiderFilter("A")), lambda: m.getNamedParameterNb(), lambda: m.hasParameter("x"),
+        lambda: m.getParameterPosition("x"), lambda: m.getParameter("x"), lambda: m.setParameter("x", 1),
+        lambda: m.getParameterNames(), lambda: m.getNamedParameters({})]] + [str(m)]
+
+
+MODULE_MEMBERS = ["argSize", "empty", "hasArg", "args", "isBracket", "isLeftBracket", "isRightBracket", "isCut",
+                  "isNull", "isRequest", "mclass", "name", "scale", "isinstance", "isConsidered", "isIgnored",
+                  "getNamedParameterNb", "hasParameter", "getParameterPosition", "getParameter", "setParameter",
+                  "getParameterNames", "getNamedParameters"]
+
+
+@case(*["ParamModule." + m for m in MODULE_MEMBERS])
+def param_module_members():
+    return module_members(lpy().ParamModule("A", 1, 2))
+
+
+@case(*["NodeModule." + m for m in MODULE_MEMBERS + ["append", "prepend", "match", "complex", "components",
+                                                       "components_at_scale"]])
+def node_module_members():
+    s = lpy().AxialTree("A(1,2)[B]C")
+    n = s.node(0)
+    out = module_members(n)
+    out += [text(tried(f)) for f in [n.complex, n.components, lambda: n.components_at_scale(1), lambda: n.match("A", 2)]]
+    n.append(3)
+    n.prepend(0)
+    return out + [str(n), str(s)]
+
+
+@case(*["PatternModule." + m for m in MODULE_MEMBERS + ["append", "prepend"]])
+def pattern_module_members():
+    p = lpy().PatternModule("A(x,y)")
+    out = module_members(p)
+    p.append(lpy().LsysVar("z"))
+    p.prepend(lpy().LsysVar("w"))
+    return out + [str(p), p.varnames()]
+
+
+@case("ModuleCategory.None", "ModuleCategory.Color", "ModuleCategory.Position", "ModuleCategory.Primitive",
+      "ModuleCategory.Request", "ModuleCategory.Scale", "ModuleCategory.StringManipulation", "ModuleCategory.Tropism",
+      "ModuleCategory.Width", "eConsiderMethod.name", "eConsiderMethod.names", "eConsiderMethod.values")
+def enum_values():
+    l = lpy()
+    C = l.ModuleCategory
+    return [[n, int(getattr(C, n)), getattr(C, n).name, str(getattr(C, n))] for n in sorted(C.names)] + [
+        l.eIgnore.name, sorted(l.eConsiderMethod.names), sorted(l.eConsiderMethod.values), repr(l.eConsider)]
+
+
+@case("ConsiderFilter.ignorePredefined", "ModuleClass.id", "ModuleClassTable.mandatory_declaration",
+      "PatternModule.eMatchingMethod")
+def other_members():
+    l = lpy()
+    f = l.ConsiderFilter.ignorePredefined()
+    E = l.PatternModule.eMatchingMethod
+    return [f.ignoring(), f.isIgnored("F"), f.isIgnored("+"), f.isIgnored("A"), f.isIgnored("["), f.isIgnored("]"),
+            isinstance(l.F.id, int), l.F.id == l.ModuleClass.get("F").id, l.F.id != l.f.id,
+            l.ModuleClassTable.get().mandatory_declaration, [int(E.eSimple), int(E.eWithStarNValueConstraint)],
+            sorted(E.names)]
