@@ -43,8 +43,10 @@ size_t checkedIndex(const LString& s, py::ssize_t i) {
     return size_t(i);
 }
 
-// normedindex then getValidIterators: a slice's ends (no step).
-std::pair<size_t, size_t> sliceRange(const LString& s, const py::slice& sl) {
+// normedindex: a slice's ends (no step) folded into the string; `checked`: then
+// getValidIndices's checks (a deletion's), else none (getRange's; an end before the start is
+// the error of L-Py's std::deque).
+std::pair<size_t, size_t> sliceRange(const LString& s, const py::slice& sl, bool checked = true) {
     const long n = long(s.size());
     auto normed = [n](py::object v, bool start) {
         long i = v.is_none() ? (start ? 0 : n) : v.cast<long>();
@@ -53,6 +55,10 @@ std::pair<size_t, size_t> sliceRange(const LString& s, const py::slice& sl) {
         return i;
     };
     long i = normed(sl.attr("start"), true), j = normed(sl.attr("stop"), false);
+    if (!checked) {
+        if (j < i) throw std::runtime_error("cannot create std::deque larger than max_size()");
+        return {size_t(i), size_t(j)};
+    }
     if (i < 0) i += n;
     if (j < 0) j += n;
     if (j > n) j = n;
@@ -202,7 +208,7 @@ void defineEditing(py::class_<PyLstring>& c) {
          return viewOf(s.s, at);
      })
         .def("__getitem__", [](S s, const py::slice& sl) {
-            auto [i, j] = sliceRange(s.get(), sl);
+            auto [i, j] = sliceRange(s.get(), sl, false);
             return fresh(LString(s.get().begin() + std::ptrdiff_t(i), s.get().begin() + std::ptrdiff_t(j)));
         })
         .def("__setitem__", [](S s, py::ssize_t i, py::object v) { s.get()[checkedIndex(s.get(), i)] = oneModule(v); })
@@ -266,11 +272,12 @@ void defineReading(py::class_<PyLstring>& c) {
         // L-Py compares an AxialTree with another or with text: the same modules, equal
         // parameters.
         .def("__eq__", [](S s, py::object v) {
+            if (!py::isinstance<PyLstring>(v) && !py::isinstance<py::str>(v)) return false;
             LString other;
             try {
                 other = itemsOf(v);
             } catch (const std::exception&) {
-                return false;  // not something a string is made of (a number, a dict)
+                return false;  // a text that is no lstring
             }
             if (other.size() != s.get().size()) return false;
             for (size_t k = 0; k < other.size(); ++k)
@@ -334,23 +341,14 @@ PyLstring made(py::handle v) { return fresh(v.is_none() ? LString{} : itemsOf(v)
 //-----------------------------------------------------------------------------
 // [SECTION] AxialTreeIterator
 //-----------------------------------------------------------------------------
-// L-Py's PyLstringIterator: the modules of a string one by one, within the branch it started
-// in (a ']' that closes it ends it).
+// L-Py's PyLstringIterator: the modules of a string one by one (to its end: L-Py's iterator
+// means to stop at a ']' closing the branch it started in, and does not).
 struct TreeIterator {
     std::shared_ptr<LString> s;
     size_t current = 0, end = 0;
-    long brackets = 0;
     bool started = false;
 
-    PyParamModule processNext() {
-        const LModule& m = (*s)[current];
-        if (isPop(m)) {
-            if (--brackets < 0 && end != current + 1) end = current + 1;
-        } else if (isPush(m)) {
-            ++brackets;
-        }
-        return viewOf(s, current);
-    }
+    PyParamModule processNext() { return viewOf(s, current); }
     PyParamModule next(bool) {
         if (current >= end) throw py::stop_iteration();
         if (started) {

@@ -109,7 +109,9 @@ LModule construct(int cls, const py::sequence& values, size_t start) {
     const size_t n = py::len(values);
     if (cls == names().find("new")) {
         if (start >= n) throw py::index_error("tuple index out of range");
-        m.cls = names().intern(py::str(values[start]).cast<std::string>());
+        py::object name = values[start];
+        if (!py::isinstance<py::str>(name)) throw py::type_error("newmodule(name, ...): the name of the module, a str, not a " + std::string(Py_TYPE(name.ptr())->tp_name));
+        m.cls = names().intern(name.cast<std::string>());
         ++start;
     }
     py::list args;

@@ -622,3 +622,66 @@ def other_members():
             isinstance(l.F.id, int), l.F.id == l.ModuleClass.get("F").id, l.F.id != l.f.id,
             l.ModuleClassTable.get().mandatory_declaration, [int(E.eSimple), int(E.eWithStarNValueConstraint)],
             sorted(E.names)]
+
+
+# --- edges ------------------------------------------------------------------------------------
+
+
+@case("AxialTree.__getitem__", "AxialTree.str_slice", "AxialTree.insertAt", "AxialTree.__mul__")
+def axial_tree_positions():
+    l = lpy()
+    s = l.AxialTree("A B C D")
+    out = [text(tried(f)) for f in [lambda: s[5:], lambda: s[-2:], lambda: s[1:-1], lambda: s[3:1], lambda: s[4:],
+                                    lambda: s[-6:], lambda: s[::2], lambda: s.str_slice(-2, 4),
+                                    lambda: s.str_slice(2, 1), lambda: l.AxialTree("")[0:0], lambda: s * 0,
+                                    lambda: s * -1, lambda: s[-5]]]
+    s.insertAt(-1, "E")
+    out.append(str(s))
+    return out
+
+
+@case("ParamModule", "ParamModule.__getitem__", "ParamModule.__delitem__")
+def param_module_made_and_sliced():
+    l = lpy()
+    out = [text(tried(f)) for f in [lambda: l.ParamModule("A(1,2+3)"), lambda: l.ParamModule("B(1, 'x')").args,
+                                    lambda: l.ParamModule("A", 1, 2, 3, 4, 5), lambda: l.ParamModule("A", 1, 2, 3, 4, 5, 6),
+                                    lambda: l.ParamModule("A", 1)[0:0], lambda: l.ParamModule("A", 1, 2)[-1:],
+                                    lambda: l.ParamModule("A", 1, 2)[0:9], lambda: l.ParamModule("A")[0:1],
+                                    lambda: l.ParamModule(("A",)), lambda: l.ParamModule(()), lambda: l.ParamModule([]),
+                                    lambda: l.ParamModule("A", 1, 2).__tuple__(), lambda: l.ParamModule("A")[-1]]]
+    m = l.ParamModule("A", 1, 2, 3)
+    del m[-1]
+    out.append(str(m))
+    return out
+
+
+@case("Lstring", "AxialTree.__eq__")
+def lstring_compared():
+    l = lpy()
+    s = l.Lstring("A(1)B")
+    return [s == "A(1)B", s == "A(1) B", s == "A(2)B", s == l.AxialTree("A(1)B"), s == 3, s == [l.ParamModule("A", 1),
+            l.ParamModule("B")], s != "A(1)B", l.Lstring("A", None) == "A", str(l.Lstring(l.AxialTree("C D")))]
+
+
+@case("AxialTree.__iter__", "AxialTreeIterator.next")
+def axial_tree_iterator_in_a_branch():
+    l = lpy()
+    s = l.AxialTree("A[B C]D")
+    from_bracket, inside = s[1:], s[2:]  # kept: L-Py's iterator reads the string it was given
+    it = l.AxialTreeIterator(from_bracket)  # from a '[': its branch, then what follows
+    out = []
+    try:
+        while True:
+            out.append(str(it.next()))
+    except StopIteration:
+        out.append("stop")
+    it2 = l.AxialTreeIterator(inside)  # inside a branch: to its ']'
+    out2 = [str(m) for m in it2]
+    return [out, out2, [m.name for m in s if m.isBracket()]]
+
+
+@case("ModuleClass.__call__", "ParamModule.__eq__")
+def module_classes_called():
+    l = lpy()
+    return [str(l.F()), str(l.F(1, 2)), l.F(1) == l.ParamModule("F", 1), str(l.SB()), str(l.GetPos()), str(l.X(2)),
+            text(tried(lambda: l.newmodule())), text(tried(lambda: l.newmodule(3)))]
