@@ -7,7 +7,8 @@
 from _sprout_lpy import Lstring, _written, ParamModule
 import openalea.lpy as _lpy
 from openalea.lpy._lsystem import Lsystem
-from openalea.lpy._strings import _enum, _pattern_args, LsysVar
+from openalea.lpy._strings import _enum
+from openalea.lpy._patterns import _pattern_args, LsysVar
 
 __all__ = ['LsysRule', 'LpyDebugger', 'StringMatching', 'PatternModule', 'LpyParsing', 'declare', 'undeclare',
            'lstring2py']

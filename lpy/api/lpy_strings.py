@@ -3,18 +3,15 @@
 # export_patternmodule.cpp, export_patternstring.cpp; src/openalea/lpy/__init__.py): the
 # classes of lpy/api/types*.cpp under their names (AxialTree, Lstring, ParamModule,
 # NodeModule...), the predefined module classes by name (F, Left, newmodule...), ModuleClass's
-# table and documentation, the enums ModuleCategory and eConsiderMethod, ConsiderFilter, and
-# the patterns: LsysVar, PatternString, and what AxialTree matches with them.
+# table and documentation, the enums ModuleCategory and eConsiderMethod, ConsiderFilter. The
+# patterns (LsysVar, PatternString, what AxialTree matches) are lpy_patterns.py's.
 
 # Index of this file:
 #   [SECTION] enums
 #   [SECTION] predefined module classes
 #   [SECTION] ModuleClassTable
 #   [SECTION] ConsiderFilter
-#   [SECTION] patterns
-#   [SECTION] AxialTree's patterns
 
-import builtins as _builtins
 from types import ModuleType
 import keyword as _keyword
 
@@ -23,7 +20,7 @@ from _sprout_lpy import (AxialTree, _Lstring as Lstring, Module, ParamModule, No
 
 __all__ = ['AxialTree', 'Lstring', 'Module', 'ParamModule', 'NodeModule', 'ModuleClass', 'PackedArgs',
            'AxialTreeIterator', 'ModuleType', 'ModuleCategory', 'eConsiderMethod', 'eConsider', 'eIgnore',
-           'ConsiderFilter', 'ModuleClassTable', 'LsysVar', 'PatternString', 'ArgList']
+           'ConsiderFilter', 'ModuleClassTable', 'ArgList']
 
 
 # [SECTION] enums
@@ -203,7 +200,7 @@ ModuleClass.predefinedClasses = _ClassProperty(_predefined)
 def _export_predefined(scope):
     """Each predefined module class under each of its names that reads as a variable's (L-Py's
     export_moduleclass.cpp), `newmodule` among them; `any` and `all` too, as in L-Py (this
-    file's functions call Python's through _builtins)."""
+    file's functions call none of Python's)."""
     for names, doc, cat in _PREDEFINED:
         c = None
         for n in names:
@@ -322,291 +319,3 @@ class ConsiderFilter:
     @staticmethod
     def ignorePredefined():
         return ConsiderFilter([c for c in _predefined() if c.name not in ('', 'None', '[', ']')], eIgnore)
-
-
-# [SECTION] patterns
-def _namespace():
-    import openalea.lpy as lpy
-    ns = lpy._state.get('ns')
-    return ns if ns is not None else {}
-
-
-def _parse_variable(text):
-    """A pattern's parameter read as a variable ('x', '*args', '**kw', '-', 'x if x > 1'), or None."""
-    import re
-    m = re.match(r'^\s*(\*{0,2}[A-Za-z_]\w*|-)\s*(?:if\s+(.+?))?\s*$', text)
-    return (m.group(1), m.group(2) or '') if m else None
-
-
-class LsysVar:
-    """A variable of a pattern (L-Py's LsysVar): its name ('x', '*args', '**kw', '-' unnamed),
-    or a value the module's parameter must equal, or a condition it must meet."""
-
-    def __init__(self, name):
-        self.name, self._value, self._condition, self._text = str(name), None, None, ''
-
-    @property
-    def name(self):
-        return self._name
-
-    @name.setter
-    def name(self, value):
-        self._name = str(value)
-
-    @classmethod
-    def _of_value(cls, value):
-        v = cls('')
-        v._value, v._condition = value, 'value'
-        return v
-
-    def _set_condition(self, text):
-        self._text = text
-        self._value = eval('lambda %s : %s' % (self.varname(), text), _namespace())
-        self._condition = 'function'
-
-    def __str__(self):
-        if self._condition == 'function':
-            return self.name + ' if ' + self._text
-        if self._condition == 'value':
-            return str(self._value)
-        return self.name
-
-    __repr__ = __str__
-
-    def varname(self):
-        n = self.name
-        return n[2:] if n.startswith('**') else n[1:] if n.startswith('*') else n
-
-    def isArgs(self):
-        return self.name.startswith('*') and not self.name.startswith('**')
-
-    def isKwds(self):
-        return self.name.startswith('**')
-
-    def value(self):
-        return self._value
-
-    def _named(self):
-        return bool(self.name) and self.name[0] != '-' and self.name not in ('*-', '**-')
-
-    def _accepts(self, v):
-        if self._condition == 'value':
-            return v == self._value
-        if self._condition == 'function':
-            return bool(self._value(v))
-        return True
-
-
-def _pattern_args(argtexts):
-    out = []
-    for k, text in enumerate(argtexts):
-        var = _parse_variable(text)
-        if var is None:
-            out.append(LsysVar._of_value(eval(text, _namespace())))
-            continue
-        v = LsysVar(var[0])
-        if var[1]:
-            v._set_condition(var[1])
-        if (v.isKwds() and k != len(argtexts) - 1) or (v.isArgs() and k < len(argtexts) - 2):
-            raise ValueError("Invalid syntax : invalid variable name '%s'" % text)
-        out.append(v)
-    return out
-
-
-def _match_module(pattern, module, bound):
-    """MatchingEngine::module_match as L-Py's default method (eWithStarNValueConstraint) reads
-    it: the same class (`*` any), as many parameters (more with *args), values and conditions
-    met; the variables' values appended to `bound`."""
-    pvars = list(pattern.args)
-    values = list(module.args)
-    if pattern.name == '*':
-        if not pvars:
-            return True
-        values = [module.name] + values
-    elif pattern.mclass != module.mclass:
-        return False
-    kw = pvars.pop() if pvars and pvars[-1].isKwds() else None
-    star = pvars.pop() if pvars and pvars[-1].isArgs() else None
-    if len(values) < len(pvars) or (star is None and len(values) != len(pvars)):
-        return False
-    for var, v in zip(pvars, values):
-        if not var._accepts(v):
-            return False
-        if var._named():
-            bound.append(v)
-    if star is not None and star._named():
-        bound.append(values[len(pvars):])
-    if kw is not None and kw._named():
-        bound.append({})
-    return True
-
-
-class PatternString(AxialTree):
-    """A string of patterns (L-Py's PatternString): modules whose parameters are variables."""
-
-    def __init__(self, text='', lineno=-1):
-        AxialTree.__init__(self)
-        if isinstance(text, PatternString):
-            AxialTree.append(self, text)
-        elif isinstance(text, Module):
-            AxialTree.append(self, text)
-        elif text:
-            for name, args in _written(str(text)):
-                AxialTree.append(self, _lpy().PatternModule(name + ('(%s)' % ','.join(args) if args else '')))
-
-    def __getitem__(self, i):
-        m = AxialTree.__getitem__(self, i)
-        return m if isinstance(i, slice) else _lpy().PatternModule(m)
-
-    def __iter__(self):
-        return (self[i] for i in range(len(self)))
-
-    def __repr__(self):
-        return 'PatternString(%s)' % str(self)
-
-    def varnames(self):
-        out = []
-        for m in self:
-            out += m.varnames()
-        return out
-
-    def getVarNb(self):
-        return sum(m.getVarNb() for m in self)
-
-
-def _lpy():
-    import openalea.lpy
-    return openalea.lpy
-
-
-# [SECTION] AxialTree's patterns
-def _pattern_string(p):
-    if isinstance(p, PatternString):
-        return list(p)
-    if isinstance(p, _lpy().PatternModule):
-        return [p]
-    return list(PatternString(p))
-
-
-def _exact(s, patterns, at):
-    """string_exact_match: the patterns, one module each, from position `at` on; the end, or -1."""
-    if at < 0 or at + len(patterns) > len(s):
-        return -1
-    for k, p in enumerate(patterns):
-        if not _match_module(p, s[at + k], []):
-            return -1
-    return at + len(patterns)
-
-
-def _position(s, pos):
-    n = len(s)
-    if pos < 0:
-        pos += n
-    if pos < 0 or pos > n:
-        raise IndexError('index out of range')
-    return pos
-
-
-def _tree_match(self, pattern, pos):
-    return _exact(self, _pattern_string(pattern), _position(self, pos)) >= 0
-
-
-def _tree_reverse_match(self, pattern, pos):
-    pos = _position(self, pos)
-    if pos >= len(self):
-        return False
-    ps = _pattern_string(pattern)
-    return _exact(self, ps, pos - len(ps) + 1) >= 0
-
-
-def _tree_rightmatch(self, pattern, pos):
-    """A right context: the modules after `pos`, branches the pattern does not open passed
-    over, a ']' of the string the end of what follows (a ']' of the pattern: the rest of the
-    branch passed over)."""
-    ps = _pattern_string(pattern)
-    j = _position(self, pos) + 1
-    for p in ps:
-        if p.name == '[':
-            if j >= len(self) or self[j].name != '[':
-                return False
-            j += 1
-            continue
-        if p.name == ']':
-            e = self.endBracket(j, True) if j < len(self) else None
-            if e is None:
-                return False
-            j = e + 1
-            continue
-        while j < len(self) and self[j].name == '[':
-            e = self.endBracket(j)
-            if e is None:
-                return False
-            j = e + 1
-        if j >= len(self) or self[j].name == ']' or not _match_module(p, self[j], []):
-            return False
-        j += 1
-    return True
-
-
-def _tree_leftmatch(self, pattern, pos):
-    """A left context: the modules before `pos` towards the root, branches passed over."""
-    ps = _pattern_string(pattern)
-    j = _position(self, pos) - 1
-    for p in reversed(ps):
-        while j >= 0 and self[j].name in '[]':
-            if self[j].name == ']':
-                b = self.beginBracket(j)
-                if b is None:
-                    return False
-                j = b
-            j -= 1
-        if j < 0 or not _match_module(p, self[j], []):
-            return False
-        j -= 1
-    return True
-
-
-def _tree_find(self, pattern, start=0, end=2147483647):
-    if isinstance(pattern, _lpy().PatternModule):
-        a, b = _position(self, start), len(self) if end == 2147483647 else _position(self, end)
-        for i in range(a, b):
-            if self[i].name == pattern.name and len(self[i]) == len(pattern):
-                return i
-        return None
-    return _find_name(self, pattern, start, end)
-
-
-def _replacement(b):
-    if isinstance(b, tuple):
-        return AxialTree([ParamModule(b)])
-    if isinstance(b, Module):
-        return AxialTree([b])
-    return AxialTree(b)
-
-
-def _tree_replace(self, a, b):
-    by = _replacement(b)
-    out = AxialTree()
-    if isinstance(a, _lpy().PatternModule):
-        for m in self:
-            out += by if _match_module(a, m, []) else AxialTree([m])
-        return out
-    ps, i = _pattern_string(a), 0
-    while i < len(self):
-        e = _exact(self, ps, i) if ps else -1
-        if e > i:
-            out += by
-            i = e
-        else:
-            out.append(self[i])
-            i += 1
-    return out
-
-
-_find_name = AxialTree.find
-AxialTree.match = _tree_match
-AxialTree.reverse_match = _tree_reverse_match
-AxialTree.leftmatch = _tree_leftmatch
-AxialTree.rightmatch = _tree_rightmatch
-AxialTree.find = _tree_find
-AxialTree.replace = _tree_replace

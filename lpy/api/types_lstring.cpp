@@ -66,6 +66,12 @@ std::pair<size_t, size_t> sliceRange(const LString& s, const py::slice& sl, bool
     return {size_t(i), size_t(j)};
 }
 
+// The members of multiscale strings read no ConsiderFilter in Sprout: one given is refused.
+void noFilter(const py::object& filter, const char* member) {
+    if (!filter.is_none())
+        throw py::value_error(std::string("AxialTree.") + member + ": Sprout reads no ConsiderFilter here (give none)");
+}
+
 py::object indexOrNone(long i) { return i < 0 ? py::object(py::none()) : py::object(py::int_(i)); }
 
 // veciter_to_list: none, one position, or a list of them.
@@ -169,21 +175,28 @@ void defineTree(py::class_<PyLstring>& c) {
             const Scale sc = scales();
             return indexOrNone(complexOf(s.get(), at, scale.is_none() ? sc(s.get()[at].cls) + 1 : scale.cast<int>(), sc));
         }, py::arg("pos"), py::arg("scale") = py::none())
-        .def("components", [](S s, long i, py::object) { return positions(componentsOf(s.get(), checkedIndex(s.get(), i), scales())); },
-             py::arg("pos"), py::arg("filter") = py::none())
-        .def("components_at_scale", [](S s, long i, int scale, py::object) {
+        .def("components", [](S s, long i, py::object filter) {
+            noFilter(filter, "components");
+            return positions(componentsOf(s.get(), checkedIndex(s.get(), i), scales()));
+        }, py::arg("pos"), py::arg("filter") = py::none())
+        .def("components_at_scale", [](S s, long i, int scale, py::object filter) {
+            noFilter(filter, "components_at_scale");
             return positions(componentsOf(s.get(), checkedIndex(s.get(), i), scales(), &scale));
         }, py::arg("pos"), py::arg("scale"), py::arg("filter") = py::none())
-        .def("successor_at_scale", [](S s, long i, int scale, py::object) {
+        .def("successor_at_scale", [](S s, long i, int scale, py::object filter) {
+            noFilter(filter, "successor_at_scale");
             return indexOrNone(successorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
         }, py::arg("pos"), py::arg("scale"), py::arg("filter") = py::none())
-        .def("predecessor_at_scale", [](S s, long i, int scale, py::object) {
+        .def("predecessor_at_scale", [](S s, long i, int scale, py::object filter) {
+            noFilter(filter, "predecessor_at_scale");
             return indexOrNone(predecessorAtScale(s.get(), checkedIndex(s.get(), i), scale, scales()));
         }, py::arg("pos"), py::arg("scale"), py::arg("filter") = py::none())
-        .def("successor_at_level", [](S s, long i, int scale, py::object) {
+        .def("successor_at_level", [](S s, long i, int scale, py::object filter) {
+            noFilter(filter, "successor_at_level");
             return indexOrNone(successorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
         }, py::arg("pos"), py::arg("level"), py::arg("filter") = py::none())
-        .def("predecessor_at_level", [](S s, long i, int scale, py::object) {
+        .def("predecessor_at_level", [](S s, long i, int scale, py::object filter) {
+            noFilter(filter, "predecessor_at_level");
             return indexOrNone(predecessorAtLevel(s.get(), checkedIndex(s.get(), i), scale, scales()));
         }, py::arg("pos"), py::arg("level"), py::arg("filter") = py::none())
         .def("node", [](S s, long i) {

@@ -685,3 +685,20 @@ def module_classes_called():
     l = lpy()
     return [str(l.F()), str(l.F(1, 2)), l.F(1) == l.ParamModule("F", 1), str(l.SB()), str(l.GetPos()), str(l.X(2)),
             text(tried(lambda: l.newmodule())), text(tried(lambda: l.newmodule(3)))]
+
+
+@case("AxialTree.roots", "AxialTree.parent", "AxialTree.children", "AxialTree.lateral_children",
+      "AxialTree.direct_child", "ConsiderFilter")
+def axial_tree_through_a_filter():
+    """The tree's members passing over the modules a ConsiderFilter ignores."""
+    l = lpy()
+    s = l.AxialTree("I A[I B[C]I D]I E[F]G I")
+    out = []
+    for f in [l.ConsiderFilter("I", l.eIgnore), l.ConsiderFilter("A B E G"), l.ConsiderFilter.ignore("A I")]:
+        row = [s.roots(f), l.AxialTree("[I A][B]C").roots(f), l.AxialTree("I [A] B").roots(f)]
+        for i in range(len(s)):
+            if s[i].name not in "[]":
+                row.append([i, s.parent(i, f), s.children(i, f), s.lateral_children(i, f), s.direct_child(i, f),
+                            s.children(i, "<", f), s.children(i, "+", f)])
+        out.append(row)
+    return out
