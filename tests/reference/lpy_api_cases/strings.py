@@ -702,3 +702,40 @@ def axial_tree_through_a_filter():
                             s.children(i, "<", f), s.children(i, "+", f)])
         out.append(row)
     return out
+
+
+# --- in a model ------------------------------------------------------------------------------
+
+
+MODEL = """
+module A(x, y)
+module B
+Axiom: A(1, 2)[B]A(3, 4)
+derivation length: 1
+production:
+$A(a) :
+  kids = a.children() or []
+  produce B(a.x, a.y, a.getParameterPosition('y'), a.hasParameter('z'), len(kids), a.isRoot(), a.position())
+B --> newmodule('C', 9)
+endlsystem
+"""
+
+
+@case("NodeModule", "NodeModule.children", "NodeModule.isRoot", "NodeModule.position", "ParamModule.__getattr__",
+      "ParamModule.getParameterPosition", "ParamModule.hasParameter", "newmodule")
+def modules_in_a_rule():
+    l = lpy()
+    ls = l.Lsystem()
+    ls.set(MODEL)
+    return str(ls.derive())
+
+
+@case("ModuleClass.parameterNames", "ModuleClass.getNamedParameterNb", "ParamModule.getParameter")
+def declared_module_parameters():
+    l = lpy()
+    ls = l.Lsystem()
+    ls.set(MODEL)
+    s = ls.axiom
+    a = s[0]
+    return [a.mclass.parameterNames, a.mclass.getNamedParameterNb(), a.getParameter("y"), type(s).__name__,
+            str(s), type(ls.derive()).__name__]
