@@ -18,6 +18,8 @@ import keyword as _keyword
 from _sprout_lpy import (AxialTree, _Lstring as Lstring, Module, ParamModule, NodeModule, ModuleClass, PackedArgs,
                          AxialTreeIterator, _written, _declare, _class_count, __lpy_module_class as _module_class)
 
+Lstring.__module__ = 'openalea.lpy'  # where pickle finds it (_sprout_lpy.Lstring is AxialTree)
+
 __all__ = ['AxialTree', 'Lstring', 'Module', 'ParamModule', 'NodeModule', 'ModuleClass', 'PackedArgs',
            'AxialTreeIterator', 'ModuleType', 'ModuleCategory', 'eConsiderMethod', 'eConsider', 'eIgnore',
            'ConsiderFilter', 'ModuleClassTable', 'ArgList']

@@ -13,6 +13,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cctype>
 #include <climits>
 
 #include "lpy/api/api.hpp"
@@ -45,6 +46,14 @@ PyParamModule ownModule(LModule mod) {
     PyParamModule m;
     m.own = std::move(mod);
     return m;
+}
+
+int internName(const std::string& name) {
+    if (name.empty()) return ModuleClasses::kNone;  // L-Py's None module is named ''
+    for (char c : name)
+        if (c == '(' || c == ')' || c == ',' || std::isspace(static_cast<unsigned char>(c)))
+            throw py::value_error("'" + name + "' cannot name a module: a name holds no parentheses, commas or spaces");
+    return names().intern(name);
 }
 
 py::dict namespaceNow() {
@@ -81,7 +90,7 @@ LModule oneModule(py::handle v) {
         py::sequence t = py::reinterpret_borrow<py::sequence>(v);
         if (py::len(t) == 0) throw py::index_error("tuple index out of range");
         py::object head = t[0];
-        if (!PyLong_Check(head.ptr())) return construct(names().intern(head.cast<std::string>()), t, 1);
+        if (!PyLong_Check(head.ptr())) return construct(internName(head.cast<std::string>()), t, 1);
         const long cls = head.cast<long>();
         if (cls < 0 || size_t(cls) >= names().size()) throw py::value_error("no module class of id " + std::to_string(cls));
         return construct(int(cls), t, 1);
@@ -126,7 +135,7 @@ LString fromState(py::handle state) {
     LString out;
     for (py::handle item : state) {
         LModule m;
-        m.cls = names().intern(item[py::int_(0)].cast<std::string>());
+        m.cls = internName(item[py::int_(0)].cast<std::string>());
         m.args = py::reinterpret_borrow<py::tuple>(item[py::int_(1)]);
         out.push_back(std::move(m));
     }
@@ -219,7 +228,7 @@ void defineModuleClass(py::module_& m) {
         return out;
     });
     // Names declared for the strings read outside a model (LsysContext.declare, declare()).
-    m.def("_declare", [](const std::string& name) { return names().intern(name); });
+    m.def("_declare", [](const std::string& name) { return internName(name); });
 }
 
 }  // namespace

@@ -15,6 +15,9 @@ namespace sprout::lpy::types {
 namespace py = pybind11;
 
 const std::string& nameOf(int cls);
+// The class a name Python gives names, added when new (a name a string could not be read
+// back with, holding parentheses, commas or spaces: ValueError; '' L-Py's None module).
+int internName(const std::string& name);
 // The namespace Python values of lstrings are read in: the running engine's, or the
 // process's own outside a derivation.
 py::dict namespaceNow();

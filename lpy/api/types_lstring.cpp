@@ -416,7 +416,13 @@ void defineLstrings(py::module_& m) {
             PyLstringMade out;
             out.s = std::make_shared<LString>(input.is_none() || !py::bool_(input) ? LString{} : itemsOf(input));
             return out;
-        }), py::arg("input") = py::none(), py::arg("lsyscontext") = py::none());
+        }), py::arg("input") = py::none(), py::arg("lsyscontext") = py::none())
+        .def(py::pickle([](const PyLstringMade& s) { return stateOf(s.get()); },
+                        [](py::list state) {
+                            PyLstringMade out;
+                            out.s = std::make_shared<LString>(fromState(state));
+                            return out;
+                        }));
     // Sprout's own Python reads and makes AxialTrees under the old name.
     m.attr("_Lstring") = m.attr("Lstring");
     m.attr("Lstring") = m.attr("AxialTree");

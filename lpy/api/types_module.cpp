@@ -111,7 +111,7 @@ LModule construct(int cls, const py::sequence& values, size_t start) {
         if (start >= n) throw py::index_error("tuple index out of range");
         py::object name = values[start];
         if (!py::isinstance<py::str>(name)) throw py::type_error("newmodule(name, ...): the name of the module, a str, not a " + std::string(Py_TYPE(name.ptr())->tp_name));
-        m.cls = names().intern(name.cast<std::string>());
+        m.cls = internName(name.cast<std::string>());
         ++start;
     }
     py::list args;
@@ -141,7 +141,7 @@ LModule fromSequence(const py::sequence& t) {
         if (id < 0 || size_t(id) >= names().size()) throw py::value_error("no module class of id " + std::to_string(id));
         cls = int(id);
     } else {
-        cls = names().intern(head.cast<std::string>());
+        cls = internName(head.cast<std::string>());
     }
     return construct(cls, t, 1);
 }
@@ -159,7 +159,7 @@ void defineModule(py::module_& m) {
     py::class_<PyModule>(m, "Module")
         .def(py::init([](const std::string& name) {
             PyModule out;
-            out.own = {names().intern(name), py::tuple()};
+            out.own = {internName(name), py::tuple()};
             return out;
         }))
         .def(py::init([](PyModule& other) {
@@ -173,7 +173,7 @@ void defineModule(py::module_& m) {
             return out;
         }))
         .def_property("name", [](PyModule& self) { return nameOf(self.get().cls); },
-                      [](PyModule& self, const std::string& name) { self.get().cls = names().intern(name); })
+                      [](PyModule& self, const std::string& name) { self.get().cls = internName(name); })
         .def_property_readonly("mclass", [](PyModule& self) { return PyModuleClass{self.get().cls}; })
         .def("isLeftBracket", [](PyModule& self) { return self.get().cls == ModuleClasses::kPush; })
         .def("isRightBracket", [](PyModule& self) { return self.get().cls == ModuleClasses::kPop; })
@@ -208,7 +208,7 @@ void defineParamModuleInit(py::class_<PyParamModule, PyModule>& c) {
     // (1, 2)), ParamModule(['A', 1]), ParamModule('A', 1, 2) (five values at most, as L-Py).
     c.def(py::init([](const std::string& text) {
          const size_t open = text.find('(');
-         if (open == std::string::npos) return made({names().intern(text), py::tuple()});
+         if (open == std::string::npos) return made({internName(text), py::tuple()});
          return made(moduleFromText(text));
      }))
         .def(py::init([](PyModule& other) { return made(other.get()); }))
@@ -217,7 +217,7 @@ void defineParamModuleInit(py::class_<PyParamModule, PyModule>& c) {
         .def(py::init([](const PyModuleClass& cls, py::tuple t) { return made(construct(cls.cls, t, 0)); }))
         .def(py::init([](const std::string& name, py::args values) {
             if (py::len(values) > 5) throw py::type_error("ParamModule(name[,args]): five parameters at most");
-            return made(construct(names().intern(name), values, 0));
+            return made(construct(internName(name), values, 0));
         }));
 }
 
@@ -360,8 +360,8 @@ py::object nodesOrNone(const PyModule& self, const std::vector<long>& at) {
 // A module bound in its string (`$A(a)`, AxialTree.node(i)): its place and its tree.
 void defineNodeModule(py::module_& m) {
     using N = PyNodeModule;
-    py::class_<N, PyParamModule>(m, "NodeModule", py::dynamic_attr())
-        .def("position", [](N& self) -> py::object { return self.owner ? py::object(py::int_(self.index)) : py::object(py::none()); })
+    py::class_<N, PyParamModule> node(m, "NodeModule", py::dynamic_attr());
+    node.def("position", [](N& self) -> py::object { return self.owner ? py::object(py::int_(self.index)) : py::object(py::none()); })
         .def("isValid", [](N& self) { return bool(self.owner); })
         .def("isRoot", [](N& self) { return self.owner && parentOf(*self.owner, self.index) < 0; })
         .def("parent", [](N& self) { return nodeAt(self, self.owner ? parentOf(*self.owner, self.index) : -1); })
@@ -380,6 +380,15 @@ void defineNodeModule(py::module_& m) {
         .def("components_at_scale", [](N& self, int scale) {
             return nodesOrNone(self, self.owner ? componentsOf(*self.owner, self.index, scales(), &scale) : std::vector<long>{});
         });
+    // Pickled, it keeps its module (not its place).
+    node.def(py::pickle([](N& self) { return stateOf({self.get()}); },
+                        [](py::list state) {
+                            LString s = fromState(state);
+                            if (s.size() != 1) throw py::value_error("not a pickled module");
+                            N out;
+                            out.own = s[0];
+                            return out;
+                        }));
     // L-Py's deprecated names (openalea/lpy/__init__.py).
     py::object cls = m.attr("NodeModule");
     cls.attr("father") = cls.attr("parent");
