@@ -48,6 +48,11 @@ PyParamModule ownModule(LModule mod) {
     return m;
 }
 
+std::string nameText(py::handle v) {
+    if (!py::isinstance<py::str>(v)) throw py::type_error(std::string("a module's name is a str, not a ") + Py_TYPE(v.ptr())->tp_name);
+    return v.cast<std::string>();
+}
+
 int internName(const std::string& name) {
     if (name.empty()) return ModuleClasses::kNone;  // L-Py's None module is named ''
     for (char c : name)
@@ -90,7 +95,7 @@ LModule oneModule(py::handle v) {
         py::sequence t = py::reinterpret_borrow<py::sequence>(v);
         if (py::len(t) == 0) throw py::index_error("tuple index out of range");
         py::object head = t[0];
-        if (!PyLong_Check(head.ptr())) return construct(internName(head.cast<std::string>()), t, 1);
+        if (!PyLong_Check(head.ptr())) return construct(internName(nameText(head)), t, 1);
         const long cls = head.cast<long>();
         if (cls < 0 || size_t(cls) >= names().size()) throw py::value_error("no module class of id " + std::to_string(cls));
         return construct(int(cls), t, 1);

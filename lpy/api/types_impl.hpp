@@ -18,6 +18,8 @@ const std::string& nameOf(int cls);
 // The class a name Python gives names, added when new (a name a string could not be read
 // back with, holding parentheses, commas or spaces: ValueError; '' L-Py's None module).
 int internName(const std::string& name);
+// A name given as a Python value: a str (else TypeError).
+std::string nameText(py::handle v);
 // The namespace Python values of lstrings are read in: the running engine's, or the
 // process's own outside a derivation.
 py::dict namespaceNow();

@@ -141,7 +141,7 @@ LModule fromSequence(const py::sequence& t) {
         if (id < 0 || size_t(id) >= names().size()) throw py::value_error("no module class of id " + std::to_string(id));
         cls = int(id);
     } else {
-        cls = internName(head.cast<std::string>());
+        cls = internName(nameText(head));
     }
     return construct(cls, t, 1);
 }
