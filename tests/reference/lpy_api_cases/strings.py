@@ -50,15 +50,14 @@ PREDEFINED_NAMES = ["SB", "EB", "Cut", "any", "F", "f", "nF", "Left", "Right", "
                     "StartScreenProjection", "EndScreenProjection", "TextureScale", "TextureUScale", "TextureVScale",
                     "TextureVCoeff", "TextureTranslation", "TextureRotation", "TextureTransformation", "GetPos",
                     "GetHead", "GetUp", "GetLeft", "GetRight", "GetFrame", "X", "MouseIns", "x", "repexp", "all", "or",
-                    "GetIterator", "new", "newmodule"]
+                    "GetIterator", "new", "newmodule", "GetModule"]
 
 
 @case(*PREDEFINED_NAMES)
 def every_predefined_name():
     """Each name a predefined module class has in openalea.lpy, and what it names. Not here:
     `None` and `surface` (Sprout names its None module 'None', L-Py ''; Sprout's `~` and
-    `surface` are one class, L-Py's two), `GetModule` (`$`, which Sprout's strings read as a
-    module held in a variable)."""
+    `surface` are one class, L-Py's two)."""
     l = lpy()
     return [[n, type(getattr(l, n)).__name__, getattr(l, n).name] for n in PREDEFINED_NAMES]
 
