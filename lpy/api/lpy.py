@@ -32,26 +32,7 @@ _state = _cm._current._state  # the current context's (set again as it changes)
 
 
 # [SECTION] module classes, the embedded Python, warnings
-class ModuleClassTable:
-    """L-Py's table of module classes: every class the process knows, with its aliases."""
-
-    @staticmethod
-    def get():
-        return ModuleClassTable()
-
-    def getClasses(self):
-        return [_module_class(i) for i in range(_class_count())]
-
-    def getNames(self):
-        names = []
-        for c in self.getClasses():
-            names += [c.name] + list(c.aliases)
-        return names
-
-    def find(self, name):
-        return ModuleClass.get(name)
-
-
+# (ModuleClassTable: lpy_strings.py.)
 class _Embedded:
     """Modules compiled into Sprout that a model imports on demand (openalea.lpy.__lpyfuture__):
     a finder on sys.meta_path, and their loader, so that `import` and `importlib.reload` treat

@@ -17,8 +17,7 @@ from openalea.lpy import LsysContext  # noqa: F401
 __all__ = ['Lsystem', 'LsysContext', 'LsystemIterator', 'AxialTree', 'ParamModule', 'eForward', 'eBackward',
            'eProduction', 'eDecomposition', 'eInterpretation']
 
-AxialTree = Lstring
-from _sprout_lpy import Module as ParamModule  # noqa: E402
+from _sprout_lpy import AxialTree, ParamModule  # noqa: E402
 
 eForward, eBackward = 0, 1
 eProduction, eDecomposition, eInterpretation = 0, 1, 2

@@ -4,9 +4,11 @@
 # its matches, the map between a string's positions and its successor's, module matching
 # methods, module declarations and lstrings as Python expressions. Beside lpy_lsystem.py
 # (openalea.lpy._lsystem), whose Lsystem they use.
-from _sprout_lpy import Lstring, _written
+from _sprout_lpy import Lstring, _written, ParamModule
 import openalea.lpy as _lpy
 from openalea.lpy._lsystem import Lsystem
+from openalea.lpy._strings import _enum
+from openalea.lpy._patterns import _pattern_args, LsysVar
 
 __all__ = ['LsysRule', 'LpyDebugger', 'StringMatching', 'PatternModule', 'LpyParsing', 'declare', 'undeclare',
            'lstring2py']
@@ -21,20 +23,77 @@ def undeclare(names):
     _lpy.context().undeclare(names)
 
 
-class _MatchingMethod(type):
+_set_args = ParamModule.args.__set__  # `m.args = ...` writes m.__dict__, as in L-Py
+
+
+def _variable(value, member):
+    if not isinstance(value, LsysVar):
+        raise TypeError('PatternModule.%s: an LsysVar, not a %s' % (member, type(value).__name__))
+    return value
+
+
+class _MatchingMethod(type(ParamModule)):
     @property
     def matchingMethod(cls):
         """The option 'Module matching' of the current context."""
         chosen = _lpy._state.get('options', {}).get('Module matching')
-        return cls.eDefaultMatchingMethod if chosen is None else chosen
+        return eMatchingMethod.values[2 if chosen is None else int(chosen)]
 
 
-class PatternModule(metaclass=_MatchingMethod):
-    """L-Py's module matching methods (the option 'Module matching'). Sprout matches as
-    eWithStarNValueConstraint, L-Py's default, whichever is chosen: a pattern with fewer
-    parameters than a module never matches it, `*` matches any module."""
-    eSimple, eWithStar, eWithStarNValueConstraint = 0, 1, 2
-    eDefaultMatchingMethod = eWithStarNValueConstraint
+eMatchingMethod = _enum('eMatchingMethod', ['eSimple', 'eWithStar', 'eWithStarNValueConstraint'])
+
+
+class PatternModule(ParamModule, metaclass=_MatchingMethod):
+    """A module of a rule's header (L-Py's PatternModule): its parameters are variables
+    (LsysVar: names, `*args`, conditions) or values the module matched must have. Sprout matches
+    as eWithStarNValueConstraint, L-Py's default, whichever method is chosen."""
+    eSimple, eWithStar, eWithStarNValueConstraint = eMatchingMethod.eSimple, eMatchingMethod.eWithStar, \
+        eMatchingMethod.eWithStarNValueConstraint
+    eMatchingMethod = eMatchingMethod
+    eDefaultMatchingMethod = eMatchingMethod.eWithStarNValueConstraint
+
+    def __init__(self, name, params=None, lineno=-1):
+        if isinstance(name, PatternModule):
+            ParamModule.__init__(self, name.name)
+            _set_args(self, list(name.args))
+            return
+        if isinstance(name, ParamModule):  # a module of a PatternString
+            ParamModule.__init__(self, name)
+            return
+        if isinstance(name, int):  # PatternModule(id, params[, lineno])
+            text = '%s(%s)' % (_lpy.ModuleClassTable.get().find(name).name, params or '')
+        else:
+            text, lineno = name, (lineno if params is None else params)
+        written = _written(text)
+        if len(written) != 1:
+            raise ValueError('Invalid query module ' + text)
+        mname, args = written[0]
+        ParamModule.__init__(self, mname)
+        _set_args(self, _pattern_args(args))
+
+    def __str__(self):
+        return self.name + ('(%s)' % ','.join(str(a) for a in self.args) if len(self) else '')
+
+    # Its parameters are LsysVars (L-Py's PatternModule holds nothing else).
+    def setParameter(self, name, value):
+        ParamModule.setParameter(self, name, _variable(value, 'setParameter'))
+
+    def __setitem__(self, i, value):
+        ParamModule.__setitem__(self, i, _variable(value, '__setitem__'))
+
+    def append(self, value):
+        ParamModule.append(self, _variable(value, 'append'))
+
+    def prepend(self, value):
+        ParamModule.prepend(self, _variable(value, 'prepend'))
+
+    __repr__ = __str__
+
+    def getVarNb(self):
+        return len(self.varnames())
+
+    def varnames(self):
+        return [a.varname() for a in self.args if isinstance(a, LsysVar) and a._named()]
 
 
 def lstring2py(text):
@@ -103,41 +162,54 @@ class StringMatching:
         return all(m[2] != StringMatching.FIXED for m in self._marks)
 
     def begin(self):
-        return _StringMatchingIterator(self._marks)
+        it = StringMatching.const_iterator(self._marks, 0)
+        while it._at + 1 < len(self._marks) and self._marks[it._at + 1][1] == self._marks[0][1]:
+            it._at += 1
+        it._original, it._target = self._marks[it._at][0], self._marks[it._at][1]
+        return it
 
+    def end(self):
+        it = StringMatching.const_iterator(self._marks, len(self._marks))
+        it._original, it._target = self._marks[-1][0], self._marks[-1][1]
+        return it
 
-class _StringMatchingIterator:
-    def __init__(self, marks):
-        self._marks, self._at = marks, 0
-        while self._at + 1 < len(marks) and marks[self._at + 1][1] == marks[0][1]:
-            self._at += 1
-        self._original, self._target = marks[self._at][0], marks[self._at][1]
+    class const_iterator:
+        """A position of the target string and the original's it comes from."""
 
-    def increment(self):
-        marks = self._marks
-        self._target += 1
-        if self._at + 1 >= len(marks):
-            if marks[self._at][2] == StringMatching.INCREASING:
+        def __init__(self, marks, at):
+            self._marks, self._at = marks, at
+
+        def increment(self):
+            marks = self._marks
+            self._target += 1
+            if self._at >= len(marks):
                 self._original += 1
-        elif self._target == marks[self._at + 1][1]:
-            while self._at + 1 < len(marks) and self._target == marks[self._at + 1][1]:
-                self._at += 1
-                self._original = marks[self._at][0]
-        elif marks[self._at][2] == StringMatching.INCREASING:
-            self._original += 1
+            elif self._at + 1 >= len(marks):
+                if marks[self._at][2] == StringMatching.INCREASING:
+                    self._original += 1
+            elif self._target == marks[self._at + 1][1]:
+                while self._at + 1 < len(marks) and self._target == marks[self._at + 1][1]:
+                    self._at += 1
+                    self._original = marks[self._at][0]
+            elif marks[self._at][2] == StringMatching.INCREASING:
+                self._original += 1
 
-    def original(self):
-        return self._original
+        def original(self):
+            return self._original
 
-    def target(self):
-        return self._target
+        def target(self):
+            return self._target
 
-    def values(self):
-        return (self._original, self._target)
+        def next(self):
+            self.increment()
+            return self._original
 
-    def nextValues(self):
-        self.increment()
-        return self.values()
+        def values(self):
+            return (self._original, self._target)
+
+        def nextValues(self):
+            self.increment()
+            return self.values()
 
 
 class LpyDebugger:

@@ -65,7 +65,7 @@ struct NumString {
     }
 };
 
-// The string as Python sees it (hooks' `lstring`, Lstring(...)), and one module of it: a
+// The string as Python sees it (hooks' `lstring`, L-Py's AxialTree), and one module of it: a
 // view into a string (writes go to it) or a module of its own.
 struct PyLstring {
     PyLstring() = default;
@@ -79,12 +79,23 @@ struct PyLstring {
     LString& get() const;
     size_t size() const;
 };
+// L-Py's Lstring, the AxialTree a script makes (`Lstring('A B', context)`).
+struct PyLstringMade : PyLstring {
+    using PyLstring::PyLstring;
+};
 struct PyModule {
     std::shared_ptr<LString> owner;  // set: a view of (*owner)[index]
     size_t index = 0;
     LModule own;
-    LModule& get() { return owner ? (*owner)[index] : own; }
+    // A NodeModule (L-Py's are copies): its module is `own`, `owner` only tells its place.
+    bool detached = false;
+    LModule& get() { return owner && !detached ? (*owner)[index] : own; }
 };
+
+// L-Py's class tree: Module (a name), ParamModule (with parameters: every module Python gets
+// from a string or makes), NodeModule (one bound in its string by `$A(a)` or AxialTree.node).
+struct PyParamModule : PyModule {};
+struct PyNodeModule : PyParamModule {};
 
 struct PyModuleClass {
     int cls = 0;

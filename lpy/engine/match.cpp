@@ -54,13 +54,15 @@ bool Matcher::skipped(int cls, int filter) const {
 }
 
 py::object Matcher::nodeOf(const LModule& m) {
-    PyModule node;
+    PyNodeModule node;
     if (m_reading && &m >= m_reading->data() && &m < m_reading->data() + m_reading->size()) {
         // A view of the string read (a copy made once a pass, when a pattern asks for one):
         // its place, its parent and sons.
         if (!m_readingShared) m_readingShared = std::make_shared<LString>(*m_reading);
         node.owner = m_readingShared;
         node.index = size_t(&m - m_reading->data());
+        node.detached = true;
+        node.own = m;
     } else {
         node.own = m;
     }

@@ -198,8 +198,12 @@ void start(void (*defineModule)(py::module_&)) {
                                         std::string("<sprout>/openalea/mtg/") + name + ".py");
             // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py), part of openalea.lpy.
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
+            // Its strings' and modules' names and its patterns (lpy/api/lpy_strings.py,
+            // lpy_patterns.py), which _matching uses.
+            installModule("openalea.lpy._strings", embedded("lpy_strings"), "<sprout>/openalea/lpy/_strings.py");
+            installModule("openalea.lpy._patterns", embedded("lpy_patterns"), "<sprout>/openalea/lpy/_patterns.py");
             installModule("openalea.lpy._matching", embedded("lpy_matching"), "<sprout>/openalea/lpy/_matching.py");
-            for (const char* part : {"openalea.lpy._lsystem", "openalea.lpy._matching"}) {
+            for (const char* part : {"openalea.lpy._lsystem", "openalea.lpy._strings", "openalea.lpy._patterns", "openalea.lpy._matching"}) {
                 py::module_ lpy = py::module_::import("openalea.lpy"), api = py::module_::import(part);
                 for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
             }

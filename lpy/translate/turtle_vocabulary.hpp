@@ -133,6 +133,8 @@ inline constexpr TurtleWord kTurtleVocabulary[] = {
     {{"=]"}, nullptr, TurtleOp::Silent},
     {{"?I", "GetIterator"}, nullptr, TurtleOp::Silent},
     {{"new", "newmodule"}, nullptr, TurtleOp::Silent},
+    // L-Py's GetModule: `$` alone (`$x` and `$A(a)` are read before any name).
+    {{"$", "GetModule"}, nullptr, TurtleOp::Silent},
 };
 
 }  // namespace sprout::lpy
