@@ -135,9 +135,13 @@ void start(void (*defineModule)(py::module_&)) {
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/plantgl/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.
-            for (const char* part : {"vectors", "scene", "curves", "grids"})
+            for (const char* part : {"vectors", "scene", "curves", "grids", "light"})
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
+            // PlantGL's cardinal splines (lpy/plantgl/plantgl_cspline.py), which `all` keeps as
+            // `cspline` and NurbsCurve.CSpline, as PlantGL's scenegraph package does.
+            installModule("openalea.plantgl.scenegraph.cspline", embedded("plantgl_cspline"),
+                          "<sprout>/openalea/plantgl/scenegraph/cspline.py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
             // PlantGL's scenegraph package: the same names as all, and two modules of its own
             // that models import by name.

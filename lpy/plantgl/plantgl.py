@@ -8,9 +8,13 @@
 #   _curves    point arrays, NURBS / Bezier curves, polylines,    plantgl_curves.py
 #              QuantisedFunction, Discretizer, NurbsPatch
 #   _grids     Grid3Indexing, Point3Grid (space colonisation)     plantgl_grids.py
+#   _light     the light model (diffuseInterception...),          plantgl_light.py
+#              ZBufferEngine, surface()
 #
+# and openalea.plantgl.scenegraph.cspline (plantgl_cspline.py), installed before this module,
+# kept here as `cspline` and as NurbsCurve.CSpline, as PlantGL's scenegraph package keeps it.
 # (@g's shapes are meshed in C++: lpy/plantgl/meshes.cpp.)
-# The aliases openalea.plantgl.math, .scenegraph, .light are this module (lpy/interpreter/interpreter.cpp).
+# The aliases openalea.plantgl.math, .scenegraph, .light, .light.light are this module (lpy/interpreter/interpreter.cpp).
 from openalea.plantgl._vectors import *
 from openalea.plantgl._vectors import _Vec, _math
 from openalea.plantgl._scene import *
@@ -19,6 +23,10 @@ from openalea.plantgl._curves import *
 from openalea.plantgl._curves import _Points
 from openalea.plantgl._curves import _pgl_uniform_knots as _uniform_clamped_knots
 from openalea.plantgl._grids import *
+from openalea.plantgl._light import *
+import sys as _sys
+cspline = _sys.modules['openalea.plantgl.scenegraph.cspline']
+NurbsCurve.CSpline = staticmethod(cspline.cspline)
 
 
 # What the parts define belongs to this module, as when it was one file: a model printing

@@ -28,13 +28,22 @@ def _point_text(p, n):
 
 
 class _Points(list):
+    """PlantGL's arrays of points: lists of vectors of their size. Point3Array(points),
+    Point3Array(points, z) (2D points, z added: Point4Array(points, w) alike), Point3Array(n)
+    (n origins)."""
     _n = 3
 
     def __init__(self, *args):
-        if len(args) == 1 and not isinstance(args[0], (int, float)):
-            list.__init__(self, [tuple(p) for p in args[0]])
+        vec = (Vector2, Vector3, Vector4)[self._n - 2]
+        if len(args) == 1 and isinstance(args[0], int):
+            list.__init__(self, [vec() for _ in range(args[0])])
+        elif len(args) == 1:
+            list.__init__(self, [p if type(p) is vec else vec(p) for p in args[0]])
+        elif len(args) == 2 and not isinstance(args[0], (int, float, _Vec)):
+            last = float(args[1])
+            list.__init__(self, [vec(*(tuple(p)[:self._n - 1] + (last,))) for p in args[0]])
         else:
-            list.__init__(self, args)
+            list.__init__(self, [p if type(p) is vec else vec(p) for p in args])
 
     def __repr__(self):  # Point3Array([Vector3(1,2,3),Vector3(4,5,6)])
         return "%s([%s])" % (type(self).__name__, ",".join(_point_text(p, self._n) for p in self))

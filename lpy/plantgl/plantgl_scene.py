@@ -1,7 +1,7 @@
 # openalea.plantgl._scene, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
 # parts: plantgl.py): colours and materials, the scene objects a model builds for @g (kept with
 # PlantGL's field names; Sprout draws them in lpy/plantgl/meshes.cpp), Scene, BoundingBox, and a
-# Viewer and a light model whose calls do nothing. Its own file: what a model stores, apart
+# Viewer whose calls do nothing (the light model is plantgl_light.py). Its own file: what a model stores, apart
 # from the curves and grids it computes with.
 from openalea.plantgl._vectors import Vector3
 
@@ -148,11 +148,50 @@ class Scene(list):
 
 
 class BoundingBox:
-    def __init__(self, lower=(0, 0, 0), upper=(0, 0, 0)):
+    """PlantGL's BoundingBox: BoundingBox(lower, upper), or BoundingBox(x) of a scene, a shape,
+    a geometry or a PointSet: the bounds of its points (PlantGL bounds each primitive by its
+    formula; Sprout by its mesh, lpy/plantgl/meshes.cpp, the same for unrotated spheres, boxes,
+    cylinders, cones and frusta, and for point and face sets)."""
+
+    def __init__(self, lower=(0, 0, 0), upper=None):
+        if upper is None and not _is_point(lower):
+            lower, upper = _bounds_of(lower)
+        elif upper is None:
+            upper = lower
         self.lowerLeftCorner, self.upperRightCorner = Vector3(*tuple(lower)[:3]), Vector3(*tuple(upper)[:3])
 
     def getXMin(self):
         return self.lowerLeftCorner.x
+
+    def getYMin(self):
+        return self.lowerLeftCorner.y
+
+    def getZMin(self):
+        return self.lowerLeftCorner.z
+
+    def getXMax(self):
+        return self.upperRightCorner.x
+
+    def getYMax(self):
+        return self.upperRightCorner.y
+
+    def getZMax(self):
+        return self.upperRightCorner.z
+
+    def getXRange(self):
+        return self.upperRightCorner.x - self.lowerLeftCorner.x
+
+    def getYRange(self):
+        return self.upperRightCorner.y - self.lowerLeftCorner.y
+
+    def getZRange(self):
+        return self.upperRightCorner.z - self.lowerLeftCorner.z
+
+    def getLowerLeftCorner(self):
+        return Vector3(self.lowerLeftCorner)
+
+    def getUpperRightCorner(self):
+        return Vector3(self.upperRightCorner)
 
     def getCenter(self):
         return (self.lowerLeftCorner + self.upperRightCorner) / 2
@@ -163,6 +202,40 @@ class BoundingBox:
     def contains(self, p):
         p = tuple(p)
         return all(self.lowerLeftCorner[k] <= p[k] <= self.upperRightCorner[k] for k in range(3))
+
+    def extend(self, other):
+        """This box grown to hold `other` (a box or a point)."""
+        lo, hi = (other.lowerLeftCorner, other.upperRightCorner) if isinstance(other, BoundingBox) else (other, other)
+        self.lowerLeftCorner = Vector3(*[min(a, b) for a, b in zip(self.lowerLeftCorner, tuple(lo))])
+        self.upperRightCorner = Vector3(*[max(a, b) for a, b in zip(self.upperRightCorner, tuple(hi))])
+        return self
+
+    def __add__(self, other):
+        return BoundingBox(self.lowerLeftCorner, self.upperRightCorner).extend(other)
+
+    def __repr__(self):
+        return "BoundingBox(%r,%r)" % (self.lowerLeftCorner, self.upperRightCorner)
+
+
+def _is_point(v):
+    try:
+        return len(v) == 3 and all(isinstance(c, (int, float)) for c in v)
+    except TypeError:
+        return False
+
+
+def _bounds_of(obj):
+    """The lower and upper corners of what `obj` draws."""
+    if type(obj).__name__ == 'PointSet':
+        pts = [tuple(p) for p in getattr(obj, 'pointList', ())]
+        if not pts:
+            raise ValueError("BoundingBox: an empty PointSet has no bounds")
+        return [min(p[k] for p in pts) for k in range(3)], [max(p[k] for p in pts) for k in range(3)]
+    from _sprout_lpy import _mesh_bounds
+    bounds = _mesh_bounds(obj)
+    if bounds is None:
+        raise ValueError("BoundingBox: %s draws nothing to bound" % type(obj).__name__)
+    return bounds
 
 
 eStatic, eAnimatedPrimitives, eAnimatedScene = 0, 1, 2
@@ -182,9 +255,3 @@ class _Viewer:
 
 
 Viewer = _Viewer()
-
-
-def diffuseInterception(scene, *args, **kwargs):
-    """PlantGL's light model is not in Sprout: no shape receives light (a warning)."""
-    _warn("diffuseInterception (openalea.plantgl.light) is not provided by Sprout: every shape gets no light")
-    return {}

@@ -22,6 +22,8 @@ class _Vec:
     def __init__(self, *args):
         if len(args) == 1 and hasattr(args[0], '__len__'):
             args = tuple(args[0])
+        elif len(args) == 2 and hasattr(args[0], '__len__'):  # Vector4(Vector3(...), w), Vector3(Vector2(...), z)
+            args = tuple(args[0]) + (args[1],)
         v = [float(a) for a in args[:self._n]]
         self._v = v + [0.0] * (self._n - len(v))
 
@@ -193,12 +195,25 @@ Vector4.OX, Vector4.OY, Vector4.OZ, Vector4.OW = Vector4(1, 0, 0, 0), Vector4(0,
 
 
 class Matrix3:
-    """A 3x3 matrix (rows), with PlantGL's rotations."""
+    """A 3x3 matrix (kept as rows), with PlantGL's rotations. Matrix3(9 values row by row) or
+    Matrix3(v0, v1, v2): three vectors as its columns, as PlantGL's constructor takes them."""
 
-    def __init__(self, *rows):
-        if len(rows) == 9:
-            rows = (rows[0:3], rows[3:6], rows[6:9])
-        self.rows = [list(map(float, r)) for r in rows] if rows else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+    def __init__(self, *args):
+        if len(args) == 9:
+            rows = (args[0:3], args[3:6], args[6:9])
+        elif len(args) == 3:
+            rows = [[float(tuple(v)[i]) for v in args] for i in range(3)]
+        elif not args:
+            rows = [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+        else:
+            raise TypeError("Matrix3(): 9 values or 3 column vectors")
+        self.rows = [list(map(float, r)) for r in rows]
+
+    @classmethod
+    def _of_rows(cls, rows):
+        m = cls.__new__(cls)
+        m.rows = [list(map(float, r)) for r in rows]
+        return m
 
     @staticmethod
     def axisRotation(axis, angle):
@@ -219,7 +234,7 @@ class Matrix3:
 
     def __mul__(self, o):
         if isinstance(o, Matrix3):
-            return Matrix3(*[[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
+            return Matrix3._of_rows([[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
         if isinstance(o, _Vec) and len(o._v) == 3:  # sum() of each row's products, written out
             (a, b, c), (d, e, f), (g, h, i) = self.rows
             x, y, z = o._v
@@ -227,7 +242,25 @@ class Matrix3:
         return Vector3(*[sum(self.rows[i][k] * o[k] for k in range(3)) for i in range(3)])
 
     def transpose(self):
-        return Matrix3(*[[self.rows[j][i] for j in range(3)] for i in range(3)])
+        return Matrix3._of_rows([[self.rows[j][i] for j in range(3)] for i in range(3)])
+
+    def det(self):
+        (a, b, c), (d, e, f), (g, h, i) = self.rows
+        return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+    def inverse(self):
+        """The inverse (the adjugate over the determinant, as PlantGL's Matrix3::inverse)."""
+        (a, b, c), (d, e, f), (g, h, i) = self.rows
+        adj = [[e * i - f * h, c * h - b * i, b * f - c * e],
+               [f * g - d * i, a * i - c * g, c * d - a * f],
+               [d * h - e * g, b * g - a * h, a * e - b * d]]
+        det = a * adj[0][0] + b * adj[1][0] + c * adj[2][0]
+        if det == 0:
+            raise ValueError("Matrix3.inverse: the matrix is singular")
+        return Matrix3._of_rows([[x / det for x in r] for r in adj])
+
+    def __repr__(self):
+        return "Matrix3(%s)" % ",".join("%g" % x for r in self.rows for x in r)
 
     def getColumn(self, j):
         return Vector3(*[self.rows[i][j] for i in range(3)])
