@@ -160,8 +160,10 @@ void start(void (*defineModule)(py::module_&)) {
                 for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
             }
             py::module_ sys = py::module_::import("sys");
+            // PlantGL's light package and its modules (lpy/plantgl/plantgl_light.py, in `all`).
             for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph", "openalea.plantgl.light",
-                                      "openalea.plantgl.light.light"})
+                                      "openalea.plantgl.light.light", "openalea.plantgl.light.sky", "openalea.plantgl.light.sun",
+                                      "openalea.plantgl.light.utils"})
                 sys.attr("modules")[alias] = sys.attr("modules")["openalea.plantgl.all"];
             py::module_ openalea = py::module_::import("openalea");
             openalea.attr("lpy") = sys.attr("modules")["openalea.lpy"];

@@ -55,3 +55,45 @@ def pgl_support_extension(name):
     """Whether PlantGL was built with an optional extension (CGAL, Qt, ...): Sprout's PlantGL
     has none of them."""
     return False
+
+
+class Sequencer:
+    """PlantGL's Sequencer: touch() (or a call) waits until `timeStep` seconds have passed since
+    the last touch (PlantGL counts the processor's clock; Sprout, the wall clock)."""
+
+    def __init__(self, timestep=0.01):
+        self.timeStep, self._time = float(timestep), None
+
+    def touch(self, next_timestep=None):
+        import time
+        now = time.monotonic()
+        if self._time is not None and now - self._time < self.timeStep:
+            time.sleep(self.timeStep - (now - self._time))
+        self._time = time.monotonic()
+        if next_timestep is not None:
+            self.timeStep = float(next_timestep)
+
+    __call__ = touch
+
+    def elapsedTime(self):
+        import time
+        return time.monotonic() - self._time if self._time is not None else 0.0
+
+    def ok(self):
+        return self._time is None or self.elapsedTime() >= self.timeStep
+
+    def sleep(self, t):
+        import time
+        time.sleep(max(0.0, float(t)))
+
+
+# What PlantGL's all module holds besides its own names (from its modules' imports), which
+# models use: math's sqrt and pi, copy's deepcopy, os.path's join as pj, the modules.
+from math import sqrt, pi
+from copy import deepcopy
+from os.path import join as pj
+import importlib
+import warnings
+import openalea
+pgl = light = lg = utils = _sys.modules[__name__]
+PGL_VERSION, PGL_VERSION_STR = 201986, '3.21.2'  # what the reference PlantGL 3.22.3 says of itself

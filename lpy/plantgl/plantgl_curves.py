@@ -50,6 +50,21 @@ class _Points(list):
 
     __str__ = __repr__
 
+    def normalize(self):
+        """Each point normalised in place (PlantGL's)."""
+        for p in self:
+            p.normalize()
+
+    def getBounds(self):
+        """The lowest and highest coordinates, each a vector."""
+        vec = type(self[0]) if self else Vector3
+        return (vec(*[min(p[k] for p in self) for k in range(self._n)]),
+                vec(*[max(p[k] for p in self) for k in range(self._n)]))
+
+    def getCenter(self):
+        vec = (Vector2, Vector3, Vector4)[self._n - 2]
+        return vec(*[sum(p[k] for p in self) / len(self) for k in range(self._n)]) if self else vec()
+
 
 class Point2Array(_Points):
     _n = 2
@@ -106,7 +121,11 @@ def _default_knots(knots, n, degree):
 
 
 # [SECTION] NURBS and Bezier curves
-class NurbsCurve2D:
+class Curve2D:
+    """PlantGL's base of the 2D curves (NurbsCurve2D, BezierCurve2D, Polyline2D)."""
+
+
+class NurbsCurve2D(Curve2D):
     """A 2D NURBS curve; control points are (x, y, weight)."""
     _dim = 2
 
@@ -242,7 +261,7 @@ class BezierCurve2D(NurbsCurve2D):
 
 
 # [SECTION] Polylines and the Discretizer
-class Polyline2D:
+class Polyline2D(Curve2D):
     def __init__(self, pointList, width=1, **kwargs):
         self.pointList = [Vector2(p[0], p[1]) for p in pointList]
         self.width = width

@@ -83,7 +83,7 @@ class Grid3Indexing:
         return out
 
 
-class Point3Grid:
+class Point3Grid(Grid3Indexing):
     """PlantGL's Point3Grid: its arguments read here, its voxels and queries in C++
     (lpy/plantgl/point_grid.hpp says how it follows PlantGL's order)."""
 
@@ -105,6 +105,7 @@ class Point3Grid:
             else:
                 size = [(hi[k] - lo[k]) / float(b if b is not None else 10) for k in range(3)]
         self._grid = _PointGrid(self.points, size, lo, hi)  # the voxels and the queries, in C++
+        Grid3Indexing.__init__(self, size, lo, hi)  # its cells' ids and indices, as PlantGL's grid has them
 
     def query_ball_point(self, centre, radius):
         return self._grid.ball(tuple(centre), float(radius))

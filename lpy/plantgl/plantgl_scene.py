@@ -29,6 +29,35 @@ class Color4(tuple):
             r, g, b, a = (list(r) + [0])[:4]
         return tuple.__new__(cls, (int(r), int(g), int(b), int(a)))
 
+    red = property(lambda s: s[0])
+    green = property(lambda s: s[1])
+    blue = property(lambda s: s[2])
+    alpha = property(lambda s: s[3])
+
+
+class PglColorMap:
+    """PlantGL's colour map (scenegraph/colormap.py): a value between `minvalue` and
+    `maxvalue` made a Color4 by matplotlib's colour map `name`."""
+
+    def __init__(self, minvalue=0, maxvalue=1, name='jet'):
+        import matplotlib.pyplot as plt
+        from matplotlib.colors import Normalize
+        self.pltcolormap = plt.get_cmap(name)
+        self.normalizer = Normalize(minvalue, maxvalue)
+
+    def __call__(self, value):
+        return self.__topglcolor__(self.normalizer(value))
+
+    def __topglcolor__(self, normalizedindex):
+        color = list(self.pltcolormap(normalizedindex))
+        color[3] = 1. - color[3]
+        return Color4([int(255 * c) for c in color])
+
+
+def tocolorlist(values, name='jet'):
+    cm = PglColorMap(min(values), max(values), name)
+    return list(map(cm, values))
+
 
 class Material:
     """PlantGL's Material: the colour a surface shows is ambient x diffuse."""
@@ -58,6 +87,8 @@ class _Geometry:
     drawn by Sprout (a warning names the module that carries them)."""
     _fields = ()
 
+    _defaults = {}
+
     def __init__(self, *args, **kwargs):
         self.args, self.kwargs = args, kwargs
         self.name = ''
@@ -65,6 +96,13 @@ class _Geometry:
             setattr(self, field, value)
         for field, value in kwargs.items():
             setattr(self, field, value)
+        for field, value in self._defaults.items():  # PlantGL's defaults, a copy each
+            if field not in self.__dict__:
+                setattr(self, field, type(value)(value) if isinstance(value, Vector3) else value)
+
+    def apply(self, action):
+        """PlantGL's actions (a Discretizer...): action.process(self)."""
+        return action.process(self)
 
 
 _geometry_fields = {
@@ -82,6 +120,23 @@ _geometry_fields = {
     'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
                        'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
 }
+# PlantGL's defaults of the fields (its DEFAULT_* constants): what a field left out reads.
+_NOID = 4294967295  # Shape::NOID
+_geometry_defaults = {
+    'Sphere': dict(radius=0.5, slices=8, stacks=8), 'Box': dict(size=Vector3(0.5, 0.5, 0.5)),
+    'Cylinder': dict(radius=0.5, height=1.0, solid=True, slices=8), 'Cone': dict(radius=0.5, height=1.0, solid=True, slices=8),
+    'Frustum': dict(radius=0.5, height=1.0, taper=0.5, solid=True, slices=8), 'Disc': dict(radius=0.5, slices=8),
+    'Paraboloid': dict(radius=0.5, height=1.0, shape=2.0, solid=True, slices=8, stacks=8),
+    'Scaled': dict(scale=Vector3(1, 1, 1)), 'Translated': dict(translation=Vector3(0, 0, 0)),
+    'AxisRotated': dict(axis=Vector3(0, 0, 1), angle=0.0), 'EulerRotated': dict(azimuth=0.0, elevation=0.0, roll=0.0),
+    'Oriented': dict(primary=Vector3(1, 0, 0), secondary=Vector3(0, 1, 0)), 'Shape': dict(id=_NOID, parentId=_NOID),
+    'Polyline': dict(width=1), 'PointSet': dict(width=1),
+    'AsymmetricHull': dict(negXRadius=0.5, posXRadius=0.5, negYRadius=0.5, posYRadius=0.5, negXHeight=0.0,
+                           posXHeight=0.0, negYHeight=0.0, posYHeight=0.0, bottom=Vector3(0, 0, -0.5),
+                           top=Vector3(0, 0, 0.5), bottomShape=2.0, topShape=2.0, slices=4, stacks=4),
+}
+
+
 class Mesh(_Geometry):
     """PlantGL's meshes (TriangleSet, QuadSet, FaceSet)."""
 
@@ -93,8 +148,18 @@ class Transformed(_Geometry):
 _transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
 for _name, _f in _geometry_fields.items():
     _base = Transformed if _name in _transforms else Mesh if _name in ('TriangleSet', 'QuadSet') else _Geometry
-    globals()[_name] = type(_name, (_base,), {'_fields': _f})
+    globals()[_name] = type(_name, (_base,), {'_fields': _f, '_defaults': _geometry_defaults.get(_name, {})})
 del _name, _f, _base
+
+
+def _shape_init(self, *args, **kwargs):
+    """A Shape without an id gets its own, as PlantGL's (its address, on 32 bits)."""
+    _Geometry.__init__(self, *args, **kwargs)
+    if self.id == _NOID:
+        self.id = id(self) & 0xFFFFFFFF
+
+
+Shape.__init__ = _shape_init
 
 
 class Scene(list):

@@ -130,9 +130,16 @@ class _Vec:
         return self / n if n > 0 else self._of(list(self._v))
 
     def anOrthogonalVector(self):
+        """PlantGL's: an axis where a coordinate is 0 (x first), else (-y, x, 0) / |v|."""
         x, y, z = (list(self._v) + [0.0, 0.0])[:3]
-        v = Vector3(-y, x, 0) if abs(x) > 1e-9 or abs(y) > 1e-9 else Vector3(0, -z, y)
-        return v.normed()
+        if abs(x) < 1e-5:
+            return Vector3(1, 0, 0)
+        if abs(y) < 1e-5:
+            return Vector3(0, 1, 0)
+        if abs(z) < 1e-5:
+            return Vector3(0, 0, 1)
+        n = _math.sqrt(x * x + y * y + z * z)
+        return Vector3(0, 0, 0) if n < 1e-10 else Vector3(-y / n, x / n, 0)
 
     def normalize(self):
         n = abs(self)

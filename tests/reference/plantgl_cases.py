@@ -1,0 +1,108 @@
+"""The cases of tests/reference/plantgl_differential.py: Python run by the reference PlantGL and by
+Sprout's, each leaving `result` (numbers, vectors, lists, dicts of them). Each case is (name,
+code, relative tolerance): the numbers of the curves and vectors are PlantGL's own arithmetic,
+compared to 1e-9; the light model's pixels depend on meshes and rays, compared looser."""
+
+SPHERE_BOX = ("sc = Scene([Shape(Sphere(1), Material(), 3), Shape(Translated((0,0,3), Box((1,1,1))), Material(), 5)])\n")
+TWO_SPHERES = ("sc = Scene([Shape(Sphere(1), Material(), 1), Shape(Translated((0,0,3), Sphere(1)), Material(), 2)])\n")
+SQUARE = ("sq = TriangleSet([(0,0,0),(1,0,0),(1,1,0),(0,1,0)], [(0,1,2),(0,2,3)])\n"
+          "sc = Scene([Shape(sq, Material(), 7), Shape(Translated((0.25,0.25,1), Scaled((0.5,0.5,1), sq)), Material(), 8)])\n")
+
+CASES = [
+    # openalea.plantgl.scenegraph.cspline
+    ("cspline 3D control points, knots, stride",
+     "from openalea.plantgl.scenegraph.cspline import CSpline\n"
+     "n = CSpline([Vector3(0,0,0),Vector3(1,1,0),Vector3(2,0,1),Vector3(3,2,2)]).curve()\n"
+     "result = [type(n).__name__, list(n.ctrlPointList), list(n.knotList), n.stride, n.degree]", 1e-12),
+    ("cspline 2D from tuples",
+     "from openalea.plantgl.scenegraph.cspline import cspline\n"
+     "n = cspline([(0,0),(1,2),(3,1),(4,4)])\n"
+     "result = [type(n).__name__, list(n.ctrlPointList), list(n.knotList), n.stride]", 1e-12),
+    ("cspline closed",
+     "from openalea.plantgl.scenegraph.cspline import cspline\n"
+     "n = cspline([Vector3(0,0,0),Vector3(1,0,0),Vector3(1,1,0),Vector3(0,1,0)], is_closed=True)\n"
+     "result = [list(n.ctrlPointList), list(n.knotList), n.stride]", 1e-12),
+    ("cspline linear parameters, given distances, stride factor",
+     "from openalea.plantgl.scenegraph.cspline import CSpline\n"
+     "c = CSpline([Vector3(0,0,0),Vector3(2,1,0),Vector3(3,3,1)])\n"
+     "a = c.curve(is_linear=True)\n"
+     "c2 = CSpline([Vector3(0,0,0),Vector3(2,1,0),Vector3(3,3,1)])\n"
+     "b = c2.curve(distances=[1., 3.], stride_factor=4)\n"
+     "result = [list(a.knotList), a.stride, list(b.knotList), b.stride, len(c), c.dist, list(c.der)]", 1e-12),
+    ("cspline curve evaluated",
+     "from openalea.plantgl.scenegraph.cspline import cspline\n"
+     "n = cspline([Vector3(0,0,0),Vector3(1,1,0),Vector3(2,0,1),Vector3(3,2,2)])\n"
+     "us = [n.firstKnot + (n.lastKnot - n.firstKnot) * i / 7. for i in range(8)]\n"
+     "result = [[n.getPointAt(u) for u in us], [n.getTangentAt(u) for u in us], n.getLength(), n.firstKnot, n.lastKnot]",
+     1e-9),
+    ("cspline as NurbsCurve.CSpline",
+     "n = NurbsCurve.CSpline([Vector3(0,0,0),Vector3(0,1,1),Vector3(1,2,1)])\n"
+     "result = [list(n.ctrlPointList), list(n.knotList)]", 1e-12),
+    ("cspline errors",
+     "from openalea.plantgl.scenegraph.cspline import CSpline\n"
+     "c = CSpline([Vector3(0,0,0),Vector3(1,0,0)], is_closed=True)\n"
+     "try:\n    c.add_point(Vector3(1,1,1)); r1 = 'no error'\nexcept Exception as e:\n    r1 = str(e)\n"
+     "try:\n    c.move_point(5, Vector3(1,1,1)); r2 = 'no error'\nexcept Exception as e:\n    r2 = str(e)\n"
+     "result = [r1, r2, len(c)]", 0),
+    # curves' members
+    ("NurbsCurve2D members",
+     "c = NurbsCurve2D([(0,0,1),(1,2,1),(2,-1,1),(3,1,1),(4,0,1)])\n"
+     "result = [c.degree, c.firstKnot, c.lastKnot, c.stride, list(c.knotList), c.getPointAt(0.3), c.getTangentAt(0.3),"
+     " c.getNormalAt(0.3), c.getLength()]", 1e-9),
+    ("NurbsCurve members",
+     "c = NurbsCurve([(0,0,0,1),(1,2,0,1),(2,-1,1,2),(3,1,2,1)], degree=2)\n"
+     "m = c.getArcLengthToUMapping()\n"
+     "result = [c.degree, c.firstKnot, c.lastKnot, list(c.knotList), c.getPointAt(0.5), c.getTangentAt(0.5),"
+     " c.getNormalAt(0.5), c.getLength(), m(0.25), m(0.5)]", 1e-9),
+    ("BezierCurve2D",
+     "c = BezierCurve2D([(0,0,1),(1,2,1),(3,0,1)])\n"
+     "result = [c.getPointAt(0.25), c.getTangentAt(0.25), c.getLength(), c.firstKnot, c.lastKnot]", 1e-9),
+    ("Polyline2D",
+     "p = Polyline2D([(0,0),(1,0),(1,2)])\n"
+     "result = [p.getPointAt(0.5), p.getPointAt(1.5), p.getPointAt(2)]", 1e-12),
+    # vectors, matrices
+    ("Vector members",
+     "v = Vector3(1,2,2)\n"
+     "result = [v.x, v.y, v.z, norm(v), v.normed(), v.anOrthogonalVector(), Vector3(0,0,2).anOrthogonalVector(),"
+     " Vector4(Vector3(1,2,3), 4), Vector3(Vector2(1,2), 5), dot(v, Vector3(1,0,1)), cross(v, Vector3(0,1,0))]", 1e-12),
+    ("Matrix3 from columns, inverse, product",
+     "m = Matrix3(Vector3(1,0,2), Vector3(0,3,0), Vector3(1,1,1))\n"
+     "result = [m.getColumn(0), m.getRow(0), m.inverse().getRow(0), m.inverse().getRow(2), m * Vector3(1,2,3)]", 1e-12),
+    # the light module's tools
+    ("azel2vect and back",
+     "from openalea.plantgl.light.utils import azel2vect, vect2azel\n"
+     "result = [azel2vect(30, 45), azel2vect(200, 10, north=90), vect2azel(Vector3(-1,-2,-3))]", 1e-9),
+    ("sky's turtle directions",
+     "from openalea.plantgl.light.utils import estimate_dir_vectors\n"
+     "from openalea.plantgl.light.sky import soc_sky_sources\n"
+     "d = estimate_dir_vectors(soc_sky_sources(2))\n"
+     "result = [len(d), d[0], d[17], d[45], sum(w for _, w in d)]", 1e-9),
+    ("projection matrix and projected box",
+     "from openalea.plantgl.light.utils import getProjectionMatrix, projectedBBox\n"
+     "m = getProjectionMatrix(Vector3(1,1,-1), Vector3(0,0,1))\n"
+     "b = projectedBBox(BoundingBox((0,0,0),(1,2,3)), Vector3(0.3,-0.2,-1), Vector3(1,0,0))\n"
+     "result = [m.getRow(0), m.getRow(1), m.getRow(2), b.lowerLeftCorner, b.upperRightCorner]", 1e-9),
+    ("bounding boxes",
+     SPHERE_BOX + "b = BoundingBox(sc)\nc = BoundingBox(Translated((1,2,3), Cylinder(0.5, 2)))\n"
+     "result = [b.lowerLeftCorner, b.upperRightCorner, b.getXRange(), b.getCenter(), c.lowerLeftCorner, c.upperRightCorner]",
+     1e-9),
+    ("surfaces",
+     "result = [surface(Sphere(2)), surface(Box((1,2,3))), surface(Cylinder(1,2)), surface(Cylinder(1,2,False)),"
+     " surface(Cone(1,3)), surface(Frustum(1,2,0.5)), surface(Disc(2)), surface(Translated((1,1,1), Sphere(1))),"
+     " surface(Vector3(0,0,0), Vector3(1,0,0), Vector3(0,2,0)),"
+     " surface(TriangleSet([(0,0,0),(1,0,0),(1,1,0),(0,1,0)], [(0,1,2),(0,2,3)]))]", 1e-9),
+    # interception
+    ("directional interception from above, a square under a smaller one",
+     SQUARE + "result = directionalInterception(sc, [(90, 0, 1)])", 0.02),
+    ("directional interception from the side",
+     SQUARE + "result = directionalInterception(sc, [(10, 30, 2)])", 0.05),
+    ("diffuse interception, sphere and box",
+     SPHERE_BOX + "result = diffuseInterception(sc, 1)", 1e-3),
+    ("diffuse interception, a sphere above another",
+     TWO_SPHERES + "result = diffuseInterception(sc, 10, screenresolution=0.05)", 1e-3),
+    ("z-buffer histogram",
+     SQUARE + "z = ZBufferEngine(20, 20, renderingStyle=eIdBased)\n"
+     "z.setOrthographicCamera(-1, 1, -1, 1, 1, 5)\n"
+     "z.lookAt(Vector3(0.5,0.5,3), Vector3(0.5,0.5,0), Vector3(0,1,0))\n"
+     "z.process(sc)\nresult = dict(z.idhistogram(False))", 0),
+]
