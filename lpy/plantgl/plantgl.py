@@ -3,10 +3,12 @@
 # private module before this one (in this order: each imports from those above it):
 #
 #   _vectors   vectors, Matrix3, cross, dot, angle...             plantgl_vectors.py
+#   _object    what every scene object has (names, ids...)        plantgl_object.py
 #   _scene     colours, materials, the scene objects for @g,      plantgl_scene.py
 #              Scene, BoundingBox, the Viewer (does nothing)
 #   _curves    point arrays, NURBS / Bezier curves, polylines,    plantgl_curves.py
 #              QuantisedFunction, Discretizer, NurbsPatch
+#   _patches   NurbsPatch, NurbsPatch3D                          plantgl_patches.py
 #   _grids     Grid3Indexing, Point3Grid (space colonisation)     plantgl_grids.py
 #   _light     the light model (diffuseInterception...),          plantgl_light.py
 #              ZBufferEngine, surface()
@@ -22,6 +24,7 @@ from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
 from openalea.plantgl._curves import *
 from openalea.plantgl._curves import _Points
 from openalea.plantgl._curves import _pgl_uniform_knots as _uniform_clamped_knots
+from openalea.plantgl._patches import *
 from openalea.plantgl._grids import *
 from openalea.plantgl._light import *
 import sys as _sys

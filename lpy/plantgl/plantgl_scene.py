@@ -1,9 +1,16 @@
 # openalea.plantgl._scene, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
 # parts: plantgl.py): colours and materials, the scene objects a model builds for @g (kept with
 # PlantGL's field names; Sprout draws them in lpy/plantgl/meshes.cpp), Scene, BoundingBox, and a
-# Viewer whose calls do nothing (the light model is plantgl_light.py). Its own file: what a model stores, apart
-# from the curves and grids it computes with.
+# Viewer whose calls do nothing (the light model is plantgl_light.py). Its own file: what a
+# model stores, apart from the curves and grids it computes with.
+#
+# Index of this file:
+#   [SECTION] Colours and materials
+#   [SECTION] Scene objects
+#   [SECTION] Scene and BoundingBox
+#   [SECTION] Viewer
 from openalea.plantgl._vectors import Vector3
+from openalea.plantgl._object import _SceneObject, with_defaults
 
 try:
     from openalea.lpy import _warn
@@ -12,27 +19,76 @@ except ImportError:  # imported on its own
         pass
 
 
-class Color3(tuple):
+# [SECTION] Colours and materials
+class _Colour(tuple):
+    """What PlantGL's Color3 and Color4 share: channels as 0..255, clamped ones as 0..1."""
+    red = property(lambda s: s[0])
+    green = property(lambda s: s[1])
+    blue = property(lambda s: s[2])
+
+    def clampedRed(self):
+        return self[0] / 255.
+
+    def clampedGreen(self):
+        return self[1] / 255.
+
+    def clampedBlue(self):
+        return self[2] / 255.
+
+    def getAverage(self):
+        return (self[0] + self[1] + self[2]) / 3.
+
+    def getAverageClamped(self):
+        return self.getAverage() / 255.
+
+    def interpolate(self, other, t=0.5):
+        """The colour a fraction t of the way to `other`."""
+        return type(self)(*[int(a + (b - a) * t) for a, b in zip(self, other)])
+
+    def __repr__(self):
+        return "%s(%s)" % (type(self).__name__, ",".join(str(c) for c in self))
+
+
+class Color3(_Colour):
     def __new__(cls, r=0, g=0, b=0):
         if isinstance(r, (tuple, list)):
             r, g, b = r[:3]
         return tuple.__new__(cls, (int(r), int(g), int(b)))
 
-    red = property(lambda s: s[0])
-    green = property(lambda s: s[1])
-    blue = property(lambda s: s[2])
+    def toUint(self):
+        return (self[0] << 16) | (self[1] << 8) | self[2]
+
+    @staticmethod
+    def fromUint(value):
+        return Color3((value >> 16) & 255, (value >> 8) & 255, value & 255)
 
 
-class Color4(tuple):
+class Color4(_Colour):
     def __new__(cls, r=0, g=0, b=0, a=0):
         if isinstance(r, (tuple, list)):
             r, g, b, a = (list(r) + [0])[:4]
         return tuple.__new__(cls, (int(r), int(g), int(b), int(a)))
 
-    red = property(lambda s: s[0])
-    green = property(lambda s: s[1])
-    blue = property(lambda s: s[2])
     alpha = property(lambda s: s[3])
+
+    def clampedAlpha(self):
+        return self[3] / 255.
+
+    def getRGBAverage(self):
+        return self.getAverage()
+
+    def toUint(self):
+        return (self[3] << 24) | (self[0] << 16) | (self[1] << 8) | self[2]
+
+    @staticmethod
+    def fromUint(value):
+        return Color4((value >> 16) & 255, (value >> 8) & 255, value & 255, (value >> 24) & 255)
+
+
+for _name, _rgb in (('BLACK', (0, 0, 0)), ('WHITE', (255, 255, 255)), ('RED', (255, 0, 0)), ('GREEN', (0, 255, 0)),
+                    ('BLUE', (0, 0, 255)), ('CYAN', (0, 255, 255)), ('YELLOW', (255, 255, 0))):
+    setattr(Color3, _name, Color3(*_rgb))
+    setattr(Color4, _name, Color4(*_rgb, 0))
 
 
 class PglColorMap:
@@ -59,7 +115,7 @@ def tocolorlist(values, name='jet'):
     return list(map(cm, values))
 
 
-class Material:
+class Material(_SceneObject):
     """PlantGL's Material: the colour a surface shows is ambient x diffuse."""
 
     def __init__(self, *args, **kwargs):
@@ -81,8 +137,21 @@ class Material:
     def diffuseColor(self):
         return Color3(*[min(255, int(c * self.diffuse)) for c in self.ambient])
 
+    def isSimilar(self, other):
+        return all(getattr(self, f) == getattr(other, f, None) for f in _material_defaults)
 
-class _Geometry:
+    def isTexture(self):
+        return False
+
+
+_material_defaults = dict(ambient=Color3(80, 80, 80), diffuse=2.0, specular=Color3(0, 0, 0), emission=Color3(0, 0, 0),
+                          shininess=0.2, transparency=0.0)
+with_defaults(Material, _material_defaults)
+Material.DEFAULT_MATERIAL = Material('DEFAULT_MATERIAL')
+
+
+# [SECTION] Scene objects
+class _Geometry(_SceneObject):
     """PlantGL scene objects a model may build for @g: kept (with PlantGL's field names), not
     drawn by Sprout (a warning names the module that carries them)."""
     _fields = ()
@@ -145,10 +214,18 @@ class Transformed(_Geometry):
     """PlantGL's transformed geometries (Translated, Oriented, Scaled, ...): `geometry` inside."""
 
 
+# PlantGL's kinds of geometry (isACurve, isASurface, isAVolume) and its explicit ones.
+_kinds = dict([(n, 'volume') for n in ('Sphere', 'Box', 'Cylinder', 'Cone', 'Frustum', 'Paraboloid', 'AsymmetricHull',
+                                       'Revolution', 'Swung', 'Extrusion')]
+              + [(n, 'surface') for n in ('Disc', 'TriangleSet', 'QuadSet', 'BezierPatch')] + [('Polyline', 'curve')])
+_explicit = ('TriangleSet', 'QuadSet', 'PointSet', 'Polyline')
 _transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
 for _name, _f in _geometry_fields.items():
     _base = Transformed if _name in _transforms else Mesh if _name in ('TriangleSet', 'QuadSet') else _Geometry
-    globals()[_name] = type(_name, (_base,), {'_fields': _f, '_defaults': _geometry_defaults.get(_name, {})})
+    globals()[_name] = with_defaults(type(_name, (_base,), {'_fields': _f, '_defaults': _geometry_defaults.get(_name, {}),
+                                                           '_kind': _kinds.get(_name, ''),
+                                                           '_explicit': _name in _explicit}),
+                                     _geometry_defaults.get(_name, {}))
 del _name, _f, _base
 
 
@@ -157,16 +234,75 @@ def _shape_init(self, *args, **kwargs):
     _Geometry.__init__(self, *args, **kwargs)
     if self.id == _NOID:
         self.id = id(self) & 0xFFFFFFFF
+    if not self.name:  # PlantGL's setComputedName
+        self.name = "SHAPEID_%d_%d" % (self.id, id(self) & 0xFFFFFFFF)
+    if 'appearance' not in self.__dict__:
+        self.appearance = Material.DEFAULT_MATERIAL
+
+
+def _shape_set_computed_name(self):
+    self.name = "SHAPEID_%d_%d" % (self.id, id(self) & 0xFFFFFFFF)
+
+
+Shape.setComputedName = _shape_set_computed_name
+Shape.NOID = _NOID
 
 
 Shape.__init__ = _shape_init
 
 
+# [SECTION] Scene and BoundingBox
 class Scene(list):
     """PlantGL's Scene: a list of shapes (`sc += Shape(...)`), kept, not drawn by Sprout."""
 
     def __init__(self, shapes=()):
+        if isinstance(shapes, str):
+            self.read(shapes)
         list.__init__(self, shapes if isinstance(shapes, (list, tuple)) else [])
+
+    def read(self, filename, format=''):
+        """PlantGL reads its own files (.geom, .bgeom) and others into a scene: Sprout does not."""
+        raise NotImplementedError("Scene(%r): Sprout's PlantGL does not read scene files (PlantGL's .geom, .bgeom, "
+                                  "...); a scene is made by a model or by Lsystem.sceneInterpretation" % (filename,))
+
+    def save(self, filename, format=''):
+        """A scene an Lsystem made, written as a model (.obj, .ply, .glb, .gltf, .stl, .svg) by
+        Sprout's exporters; PlantGL's own formats (.geom, .bgeom) are not written."""
+        import os
+        ext = os.path.splitext(str(filename))[1].lower()
+        if ext not in ('.obj', '.ply', '.glb', '.gltf', '.stl', '.svg'):
+            raise NotImplementedError("Scene.save(%r): Sprout writes .obj, .ply, .glb, .gltf, .stl or .svg, not "
+                                      "PlantGL's %s" % (filename, ext or 'format without an extension'))
+        return self.export(filename)
+
+    def merge(self, other):
+        self.extend(other)
+        return self
+
+    def find(self, id):
+        """The shape whose id is `id` (None where none is)."""
+        for shape in self:
+            if getattr(shape, 'id', None) == id:
+                return shape
+        return None
+
+    def findSceneObject(self, id):
+        return self.find(id)
+
+    def deepcopy(self):
+        import copy
+        return copy.deepcopy(self)
+
+    def isValid(self):
+        return all(getattr(sh, 'isValid', lambda: True)() for sh in self)
+
+    def apply(self, action):
+        return all(action.process(sh) is not False for sh in self)
+
+    def getPglId(self):
+        return id(self)
+
+    getId = getPglId
 
     def __iadd__(self, o):
         if isinstance(o, (list, tuple)):
@@ -303,6 +439,7 @@ def _bounds_of(obj):
     return bounds
 
 
+# [SECTION] Viewer
 eStatic, eAnimatedPrimitives, eAnimatedScene = 0, 1, 2
 
 
