@@ -77,12 +77,14 @@ class Color4(_Colour):
     def getRGBAverage(self):
         return self.getAverage()
 
+    # PlantGL's default packing (its eARGB channel positions, as they come out): red in the
+    # lowest byte, then alpha, blue, green.
     def toUint(self):
-        return (self[3] << 24) | (self[0] << 16) | (self[1] << 8) | self[2]
+        return (self[1] << 24) | (self[2] << 16) | (self[3] << 8) | self[0]
 
     @staticmethod
     def fromUint(value):
-        return Color4((value >> 16) & 255, (value >> 8) & 255, value & 255, (value >> 24) & 255)
+        return Color4(value & 255, (value >> 24) & 255, (value >> 16) & 255, (value >> 8) & 255)
 
 
 for _name, _rgb in (('BLACK', (0, 0, 0)), ('WHITE', (255, 255, 255)), ('RED', (255, 0, 0)), ('GREEN', (0, 255, 0)),
@@ -234,13 +236,18 @@ def _shape_init(self, *args, **kwargs):
     _Geometry.__init__(self, *args, **kwargs)
     if self.id == _NOID:
         self.id = id(self) & 0xFFFFFFFF
-    if not self.name:  # PlantGL's setComputedName
-        self.name = "SHAPEID_%d_%d" % (self.id, id(self) & 0xFFFFFFFF)
     if 'appearance' not in self.__dict__:
         self.appearance = Material.DEFAULT_MATERIAL
+    if not self.name:
+        _shape_set_computed_name(self)
 
 
 def _shape_set_computed_name(self):
+    """PlantGL's: the shape, and its geometry and appearance where they have no name, named
+    after its id."""
+    for part, prefix in ((getattr(self, 'geometry', None), 'GEOMID'), (getattr(self, 'appearance', None), 'APPID')):
+        if isinstance(part, _SceneObject) and not part.isNamed():
+            part.name = "%s_%d_%d" % (prefix, self.id, id(part) & 0xFFFFFFFF)
     self.name = "SHAPEID_%d_%d" % (self.id, id(self) & 0xFFFFFFFF)
 
 
@@ -280,11 +287,11 @@ class Scene(list):
         return self
 
     def find(self, id):
-        """The shape whose id is `id` (None where none is)."""
+        """The shape whose id is `id` (an IndexError where none is, as PlantGL's)."""
         for shape in self:
             if getattr(shape, 'id', None) == id:
                 return shape
-        return None
+        raise IndexError('')
 
     def findSceneObject(self, id):
         return self.find(id)

@@ -60,11 +60,62 @@ CASES = [
     ("Polyline2D",
      "p = Polyline2D([(0,0),(1,0),(1,2)])\n"
      "result = [p.getPointAt(0.5), p.getPointAt(1.5), p.getPointAt(2)]", 1e-12),
+    ("Polyline as a curve",
+     "p = Polyline([(0,0,0),(1,0,0),(1,2,0),(1,2,3)])\n"
+     "m = p.getArcLengthToUMapping()\n"
+     "result = [p.firstKnot, p.lastKnot, p.stride, p.getPointAt(1.5), p.getTangentAt(1), p.getTangentAt(1.5),"
+     " p.getNormalAt(2.5), p.getLength(), p.getLength(0.5, 2.5), m(0.5), p.isACurve(), p.isExplicit()]", 1e-9),
+    ("Polyline2D members",
+     "p = Polyline2D([(0,0),(3,0),(3,4)])\n"
+     "result = [p.getTangentAt(1), p.getNormalAt(0.5), p.getLength(), p.stride, p.lastKnot]", 1e-9),
+    ("BezierCurve 3D",
+     "c = BezierCurve([(0,0,0,1),(1,2,0,1),(3,0,1,1),(4,1,0,1)])\n"
+     "result = [c.getPointAt(0.3), c.getTangentAt(0.3), c.getLength(), c.firstKnot, c.lastKnot, c.stride]", 1e-9),
+    ("NURBS knots' defaults",
+     "c = NurbsCurve2D([(0,0,1),(1,2,1),(2,-1,1),(3,1,1),(4,0,1)])\n"
+     "d = NurbsCurve2D([(0,0,1),(1,2,1),(2,-1,1),(3,1,1)], knotList=[0,0,0,0,2,2,2,2])\n"
+     "result = [c.isKnotListToDefault(), d.isKnotListToDefault(), c.isDegreeToDefault(), c.isStrideToDefault(),"
+     " list(NurbsCurve.defaultKnotList(6, 2)), NurbsCurve([(0,0,0,1),(1,2,0,1),(2,-1,1,1),(3,1,0,1)]).getDerivativeAt(0.4, 2)]", 1e-9),
+    ("scene objects' defaults and kinds",
+     "s, c, t = Sphere(), Cylinder(), Translated((1,2,3), Box())\n"
+     "result = [s.radius, s.slices, s.stacks, c.height, c.solid, t.translation, Box().size, Scaled(geometry=Sphere()).scale,"
+     " AxisRotated(geometry=Sphere()).axis, Sphere.DEFAULT_RADIUS, Cylinder.DEFAULT_HEIGHT, AsymmetricHull.DEFAULT_NEG_X_RADIUS,"
+     " s.isRadiusToDefault(), Sphere(2).isRadiusToDefault(), t.isTranslationToDefault(), s.getName(), s.isNamed(),"
+     " Box().isAVolume(), s.isACurve(), Disc().isASurface(), Polyline([(0,0,0),(1,0,0)]).isACurve(),"
+     " TriangleSet([(0,0,0),(1,0,0),(0,1,0)],[(0,1,2)]).isExplicit(), Sphere().isExplicit(), s.isValid()]", 0),
+    ("Shape's id and name",
+     "sh = Shape(Sphere(), Material(), 5)\n"
+     "result = [sh.id, sh.name.startswith('SHAPEID_5_'), Shape(Sphere()).id != Shape.NOID, Shape.NOID,"
+     " sh.appearance.name.startswith('APPID_5_'), Shape(Sphere()).appearance.name, sh.geometry.name.startswith('GEOMID_5_')]", 0),
+    ("colours and materials",
+     "c, d = Color3(10,20,30), Color4(1,2,3,4)\n"
+     "m = Material('m', (10,20,30), 1.5)\n"
+     "result = [Color3.RED, Color4.BLUE, c.clampedRed(), d.clampedAlpha(), d.getAverage(), c.toUint(), d.toUint(),"
+     " Color3.fromUint(0x0a141e), Color4.fromUint(337520650), d.alpha, m.diffuseColor(), Material().diffuseColor(), Material.DEFAULT_AMBIENT,"
+     " Material().isAmbientToDefault(), m.isAmbientToDefault(), Material.DEFAULT_MATERIAL.name, m.name]", 1e-12),
+    ("scene's find and merge",
+     "a, b = Shape(Sphere(), Material(), 1), Shape(Box(), Material(), 2)\n"
+     "sc = Scene([a]); sc.merge(Scene([b]))\n"
+     "try:\n    sc.find(7); missing = 'found'\nexcept IndexError:\n    missing = 'IndexError'\n"
+     "result = [len(sc), sc.find(2).geometry.size, missing]", 0),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
      "result = [v.x, v.y, v.z, norm(v), v.normed(), v.anOrthogonalVector(), Vector3(0,0,2).anOrthogonalVector(),"
      " Vector4(Vector3(1,2,3), 4), Vector3(Vector2(1,2), 5), dot(v, Vector3(1,0,1)), cross(v, Vector3(0,1,0))]", 1e-12),
+    ("vector members PlantGL adds",
+     "v, w = Vector3(1,-3,2), Vector3(0.5,2,1)\n"
+     "result = [v.cwiseProduct(w), v.getMaxAbsCoord(), v.getMinAbsCoord(), Vector4(1,-5,2,5).getMaxAbsCoord(),"
+     " Vector2(2,-2).getMinAbsCoord(), v.isNormalized(), Vector3(1,0,0).isNormalized(), v.isOrthogonalTo(Vector3(3,1,0)),"
+     " v.reflect(w), v.refract(w, 1.5), v.anisotropicNorm(Vector3(1,2,3)), v.radialAnisotropicNorm(Vector3(0,0,1),1,2),"
+     " Vector4(2,4,6,2).project(), Vector4(2,4,6,2).wtoxyz(), Vector2(Vector2.Polar(2, 0.5)), Vector3(2,4,2).project()]",
+     1e-12),
+    ("Matrix3 members",
+     "m = Matrix3(1,2,3,4,5,6,7,8,10)\n"
+     "e = Matrix3.eulerRotationZYX(Vector3(0.1,0.2,0.3)); x = Matrix3.eulerRotationXYZ(Vector3(0.1,0.2,0.3))\n"
+     "result = [m.trace(), m.getDiagonal(), m.isOrthogonal(), m.isSingular(), m.adjoint().data(),"
+     " Matrix3.scaling(Vector3(1,2,3)).data(), e.data(), x.data(), e.eulerAnglesZYX(), x.eulerAnglesXYZ(), m.data(),"
+     " (m * m).data(), str(m)]", 1e-12),
     ("Matrix3 from columns, inverse, product",
      "m = Matrix3(Vector3(1,0,2), Vector3(0,3,0), Vector3(1,1,1))\n"
      "result = [m.getColumn(0), m.getRow(0), m.inverse().getRow(0), m.inverse().getRow(2), m * Vector3(1,2,3)]", 1e-12),
