@@ -135,7 +135,7 @@ void start(void (*defineModule)(py::module_&)) {
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/plantgl/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.
-            for (const char* part : {"vectors", "object", "scene", "curves", "patches", "grids", "light"})
+            for (const char* part : {"vectors", "object", "arrays", "scene", "curves", "patches", "grids", "light"})
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
             // PlantGL's cardinal splines (lpy/plantgl/plantgl_cspline.py), which `all` keeps as

@@ -4,6 +4,7 @@
 #
 #   _vectors   vectors, Matrix3, cross, dot, angle...             plantgl_vectors.py
 #   _object    what every scene object has (names, ids...)        plantgl_object.py
+#   _arrays    point arrays, RealArray, Point4Matrix              plantgl_arrays.py
 #   _scene     colours, materials, the scene objects for @g,      plantgl_scene.py
 #              Scene, BoundingBox, the Viewer (does nothing)
 #   _curves    point arrays, NURBS / Bezier curves, polylines,    plantgl_curves.py
@@ -21,6 +22,7 @@ from openalea.plantgl._vectors import *
 from openalea.plantgl._vectors import _Vec, _math
 from openalea.plantgl._scene import *
 from openalea.plantgl._scene import _warn, _Geometry, _geometry_fields, _Viewer
+from openalea.plantgl._arrays import *
 from openalea.plantgl._curves import *
 from openalea.plantgl._curves import _Points
 from openalea.plantgl._curves import _pgl_uniform_knots as _uniform_clamped_knots

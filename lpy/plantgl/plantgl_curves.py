@@ -1,12 +1,12 @@
 # openalea.plantgl._curves, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
-# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines), the
+# parts: plantgl.py): the 2D and 3D curves (NURBS, Bezier, polylines; point arrays:
+# plantgl_arrays.py), the
 # functions made from them (QuantisedFunction, the arc-length mappings), the Discretizer (NURBS
 # patches and volumes: plantgl_patches.py): PlantGL's interface, evaluated in C++
 # (lpy/plantgl/curves.cpp, through bind_curves.cpp: de Boor, the knots, arc lengths are there
 # alone). Its own file: the curves.
 #
 # Index of this file:
-#   [SECTION] Point arrays and their text
 #   [SECTION] NURBS and Bezier curves
 #   [SECTION] Polylines and the Discretizer
 #   [SECTION] QuantisedFunction
@@ -18,91 +18,10 @@ from openalea.plantgl import _vectors
 from openalea.plantgl._scene import Polyline as _ScenePolyline
 from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
 from openalea.plantgl._object import _SceneObject
+from openalea.plantgl._arrays import (Point2Array, Point3Array, Point4Array, RealArray, Point4Matrix, _point_text,  # noqa: F401
+                                      _Points)
 
 _of2, _of3 = Vector2._of, Vector3._of
-
-
-# [SECTION] Point arrays and their text
-def _point_text(p, n):
-    """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
-    return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
-
-
-class _Points(list):
-    """PlantGL's arrays of points: lists of vectors of their size. Point3Array(points),
-    Point3Array(points, z) (2D points, z added: Point4Array(points, w) alike), Point3Array(n)
-    (n origins)."""
-    _n = 3
-
-    def __init__(self, *args):
-        vec = (Vector2, Vector3, Vector4)[self._n - 2]
-        if len(args) == 1 and isinstance(args[0], int):
-            list.__init__(self, [vec() for _ in range(args[0])])
-        elif len(args) == 1:
-            list.__init__(self, [p if type(p) is vec else vec(p) for p in args[0]])
-        elif len(args) == 2 and not isinstance(args[0], (int, float, _Vec)):
-            last = float(args[1])
-            list.__init__(self, [vec(*(tuple(p)[:self._n - 1] + (last,))) for p in args[0]])
-        else:
-            list.__init__(self, [p if type(p) is vec else vec(p) for p in args])
-
-    def __repr__(self):  # Point3Array([Vector3(1,2,3),Vector3(4,5,6)])
-        return "%s([%s])" % (type(self).__name__, ",".join(_point_text(p, self._n) for p in self))
-
-    __str__ = __repr__
-
-    def normalize(self):
-        """Each point normalised in place (PlantGL's)."""
-        for p in self:
-            p.normalize()
-
-    def getBounds(self):
-        """The lowest and highest coordinates, each a vector."""
-        vec = type(self[0]) if self else Vector3
-        return (vec(*[min(p[k] for p in self) for k in range(self._n)]),
-                vec(*[max(p[k] for p in self) for k in range(self._n)]))
-
-    def getCenter(self):
-        vec = (Vector2, Vector3, Vector4)[self._n - 2]
-        return vec(*[sum(p[k] for p in self) / len(self) for k in range(self._n)]) if self else vec()
-
-
-class Point2Array(_Points):
-    _n = 2
-
-
-class Point3Array(_Points):
-    _n = 3
-
-
-class Point4Array(_Points):
-    _n = 4
-
-
-class RealArray(list):
-    """PlantGL's array of reals (a curve's knots): RealArray([0, 0, 1, 1]), or RealArray(n) of n
-    zeros."""
-
-    def __init__(self, values=()):
-        if isinstance(values, int):
-            list.__init__(self, [0.0] * values)
-        else:
-            list.__init__(self, [float(v) for v in values])
-
-    def __repr__(self):  # RealArray([0.0,1.5])
-        return "RealArray([%s])" % ",".join(repr(float(v)) for v in self)
-
-    __str__ = __repr__
-
-
-class Point4Matrix(list):
-    def __init__(self, rows=()):
-        list.__init__(self, [[tuple(p) for p in row] for row in rows])
-
-    def __repr__(self):  # Point4Matrix([[Vector4(0,0,0,1),...],[...]])
-        return "Point4Matrix([%s])" % ",".join("[%s]" % ",".join(_point_text(p, 4) for p in row) for row in self)
-
-    __str__ = __repr__
 
 
 def _default_knots(knots, n, degree):

@@ -53,8 +53,15 @@ class _SceneObject:
         return self._explicit
 
 
+# Fields PlantGL spells its own way: (its DEFAULT_ constant, the word in is<Word>ToDefault).
+_SPELLED = {'ccw': ('DEFAULT_CCW', 'CCW'), 'colorPerVertex': ('DEFAULT_COLORPERVERTEX', 'ColorPerVertex'),
+            'normalPerVertex': ('DEFAULT_NORMALPERVERTEX', 'NormalPerVertex')}
+
+
 def _constant_name(field):
     """PlantGL's DEFAULT_ constant of a field: negXRadius -> DEFAULT_NEG_X_RADIUS."""
+    if field in _SPELLED:
+        return _SPELLED[field][0]
     return "DEFAULT_" + _re.sub(r"(?<!^)(?=[A-Z])", "_", field).upper()
 
 
@@ -67,6 +74,7 @@ def with_defaults(cls, defaults):
         def is_default(self, field=field, value=value):
             return getattr(self, field, value) == value
 
-        is_default.__name__ = "is%s%sToDefault" % (field[0].upper(), field[1:])
+        word = _SPELLED[field][1] if field in _SPELLED else field[0].upper() + field[1:]
+        is_default.__name__ = "is%sToDefault" % word
         setattr(cls, is_default.__name__, is_default)
     return cls

@@ -160,16 +160,18 @@ class _Geometry(_SceneObject):
 
     _defaults = {}
 
+    _vector_defaults = ()
+
     def __init__(self, *args, **kwargs):
-        self.args, self.kwargs = args, kwargs
-        self.name = ''
-        for field, value in zip(self._fields, args):
-            setattr(self, field, value)
-        for field, value in kwargs.items():
-            setattr(self, field, value)
-        for field, value in self._defaults.items():  # PlantGL's defaults, a copy each
-            if field not in self.__dict__:
-                setattr(self, field, type(value)(value) if isinstance(value, Vector3) else value)
+        # Written into the instance's dict directly: models make these by the thousand a step.
+        d = self.__dict__
+        d['args'], d['kwargs'], d['name'] = args, kwargs, ''
+        d.update(zip(self._fields, args))
+        d.update(kwargs)
+        # PlantGL's defaults: numbers are the class's; a vector, a copy of its own each.
+        for field in self._vector_defaults:
+            if field not in d:
+                d[field] = Vector3(self._defaults[field])
 
     def apply(self, action):
         """PlantGL's actions (a Discretizer...): action.process(self)."""
@@ -193,6 +195,9 @@ _geometry_fields = {
 }
 # PlantGL's defaults of the fields (its DEFAULT_* constants): what a field left out reads.
 _NOID = 4294967295  # Shape::NOID
+_mesh_defaults = dict(ccw=True, solid=False, normalPerVertex=True, colorPerVertex=True, skeleton=None, normalList=None,
+                      colorList=None, texCoordList=None, normalIndexList=None, colorIndexList=None,
+                      texCoordIndexList=None)
 _geometry_defaults = {
     'Sphere': dict(radius=0.5, slices=8, stacks=8), 'Box': dict(size=Vector3(0.5, 0.5, 0.5)),
     'Cylinder': dict(radius=0.5, height=1.0, solid=True, slices=8), 'Cone': dict(radius=0.5, height=1.0, solid=True, slices=8),
@@ -201,7 +206,8 @@ _geometry_defaults = {
     'Scaled': dict(scale=Vector3(1, 1, 1)), 'Translated': dict(translation=Vector3(0, 0, 0)),
     'AxisRotated': dict(axis=Vector3(0, 0, 1), angle=0.0), 'EulerRotated': dict(azimuth=0.0, elevation=0.0, roll=0.0),
     'Oriented': dict(primary=Vector3(1, 0, 0), secondary=Vector3(0, 1, 0)), 'Shape': dict(id=_NOID, parentId=_NOID),
-    'Polyline': dict(width=1), 'PointSet': dict(width=1),
+    'Polyline': dict(width=1, colorList=None), 'PointSet': dict(width=1, colorList=None),
+    'TriangleSet': dict(_mesh_defaults), 'QuadSet': dict(_mesh_defaults),
     'AsymmetricHull': dict(negXRadius=0.5, posXRadius=0.5, negYRadius=0.5, posYRadius=0.5, negXHeight=0.0,
                            posXHeight=0.0, negYHeight=0.0, posYHeight=0.0, bottom=Vector3(0, 0, -0.5),
                            top=Vector3(0, 0, 0.5), bottomShape=2.0, topShape=2.0, slices=4, stacks=4),
@@ -209,7 +215,34 @@ _geometry_defaults = {
 
 
 class Mesh(_Geometry):
-    """PlantGL's meshes (TriangleSet, QuadSet, FaceSet)."""
+    """PlantGL's meshes (TriangleSet, QuadSet, FaceSet): their points and faces read as given
+    (vectors made when asked)."""
+
+    def pointAt(self, i, j=None):
+        """Point i, or the j-th point of face i."""
+        return Vector3(self.pointList[i] if j is None else self.pointList[self.indexList[i][j]])
+
+    def indexAt(self, i):
+        return tuple(self.indexList[i])
+
+    def indexListSize(self):
+        return len(self.indexList)
+
+    def faceSize(self, i):
+        return len(self.indexList[i])
+
+    def faceCenter(self, i):
+        pts = [Vector3(self.pointList[k]) for k in self.indexList[i]]
+        return sum(pts[1:], pts[0]) / len(pts)
+
+    def normalAt(self, i):
+        return Vector3(self.normalList[i])
+
+    def colorAt(self, i):
+        return self.colorList[i]
+
+    def texCoordAt(self, i):
+        return self.texCoordList[i]
 
 
 class Transformed(_Geometry):
@@ -224,11 +257,12 @@ _explicit = ('TriangleSet', 'QuadSet', 'PointSet', 'Polyline')
 _transforms = ('Scaled', 'Translated', 'AxisRotated', 'EulerRotated', 'Oriented')
 for _name, _f in _geometry_fields.items():
     _base = Transformed if _name in _transforms else Mesh if _name in ('TriangleSet', 'QuadSet') else _Geometry
-    globals()[_name] = with_defaults(type(_name, (_base,), {'_fields': _f, '_defaults': _geometry_defaults.get(_name, {}),
-                                                           '_kind': _kinds.get(_name, ''),
-                                                           '_explicit': _name in _explicit}),
-                                     _geometry_defaults.get(_name, {}))
-del _name, _f, _base
+    _d = _geometry_defaults.get(_name, {})
+    _members = {'_fields': _f, '_defaults': _d, '_kind': _kinds.get(_name, ''), '_explicit': _name in _explicit,
+                '_vector_defaults': tuple(k for k, v in _d.items() if isinstance(v, Vector3))}
+    _members.update((k, v) for k, v in _d.items() if not isinstance(v, Vector3))
+    globals()[_name] = with_defaults(type(_name, (_base,), _members), _d)
+del _name, _f, _base, _d, _members
 
 
 def _shape_init(self, *args, **kwargs):

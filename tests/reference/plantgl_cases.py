@@ -98,6 +98,28 @@ CASES = [
      "sc = Scene([a]); sc.merge(Scene([b]))\n"
      "try:\n    sc.find(7); missing = 'found'\nexcept IndexError:\n    missing = 'IndexError'\n"
      "result = [len(sc), sc.find(2).geometry.size, missing]", 0),
+    ("point arrays' members",
+     "a = Point3Array([(3,0,1),(1,2,-1),(2,-1,5)])\n"
+     "b = Point3Array(a); b.translate(Vector3(1,1,1))\n"
+     "c = Point3Array(a); c.scale(Vector3(1,2,3))\n"
+     "d = Point3Array(a); d.transform(Matrix3.scaling(2))\n"
+     "e = Point3Array(a); e.prepend(Vector3(9,9,9))\n"
+     "f = Point3Array(a); f.sortX()\n"
+     "result = [a.getLength(), a.getExtent(), a.getXMinIndex(), a.getXMaxIndex(), list(a.getZMinAndMaxIndex()),"
+     " list(a.getBounds()), a.getCenter(), b, c, d, e, f, a.subset([0,2]), a.opposite_subset([0]), list(a.findClosest(Vector3(1,1,0))),"
+     " a.empty(), a.isValid(), Point2Array([(0,0),(3,4)]).getLength()]", 1e-12),
+    ("RealArray's members",
+     "r = RealArray([3,1,2])\n"
+     "result = [r.getMin(), r.getMax(), r.getMean(), r.getSum(), r.getMinIndex(), r.getMaxIndex(), list(r.getMinAndMax()),"
+     " list(r.getMinAndMaxIndex()), r.sqrt(), r.log(), r.pow(2), r.exp()]", 1e-12),
+    ("meshes' members",
+     "t = TriangleSet([(0,0,0),(1,0,0),(1,1,0),(0,1,1)], [(0,1,2),(0,2,3)])\n"
+     "q = QuadSet([(0,0,0),(1,0,0),(1,1,0),(0,1,1)], [(0,1,2,3)], ccw=False, solid=True)\n"
+     "result = [t.pointAt(1), t.pointAt(1,2), list(t.indexAt(1)), t.indexListSize(), t.faceCenter(1), t.faceSize(1),"
+     " list(q.indexAt(0)), q.faceSize(0), q.faceCenter(0), q.pointAt(0,3), t.ccw, t.solid, q.ccw, q.solid,"
+     " t.isCCWToDefault(), q.isCCWToDefault(), q.isSolidToDefault(), t.normalList, t.colorList, t.normalPerVertex,"
+     " TriangleSet.DEFAULT_CCW, TriangleSet.DEFAULT_SOLID, TriangleSet.DEFAULT_NORMALPERVERTEX,"
+     " TriangleSet.DEFAULT_COLORPERVERTEX, t.isASurface(), t.isExplicit()]", 1e-12),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"

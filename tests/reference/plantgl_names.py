@@ -250,6 +250,35 @@ print(json.dumps(missing))
     return [tuple(k) for k in json.loads(out.stdout.strip().splitlines()[-1])]
 
 
+def sprout_members(build, classes):
+    """{class: the members Sprout's class and an instance of it have} (None: no such class)."""
+    probe = "SAMPLES = %r\n" % SAMPLES + r'''
+import json, sys
+import sprout
+sprout.use_as_openalea()
+import openalea.plantgl.all as pgl
+out = {}
+for name in json.load(sys.stdin):
+    cls = getattr(pgl, name, None)
+    if cls is None:
+        out[name] = None
+        continue
+    members = set(dir(cls))
+    try:
+        members |= set(dir(eval(SAMPLES.get(name, name + "()"), vars(pgl))))
+    except Exception:
+        pass
+    out[name] = sorted(m for m in members if not m.startswith("_"))
+print(json.dumps(out))
+'''
+    env = dict(os.environ, PYTHONPATH=os.path.join(build, "python"))
+    out = subprocess.run([sys.executable, "-c", probe], input=json.dumps(sorted(classes)), env=env, capture_output=True,
+                         text=True, timeout=600)
+    if out.returncode != 0:
+        sys.exit("Sprout's openalea.plantgl did not load:\n" + out.stderr[-3000:])
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
 def write(ref_python, corpus, doc):
     dump = r'''
 import json, inspect, importlib
@@ -328,6 +357,18 @@ def main():
                                        ", ".join(sorted(found[key])[:4])))
     for kind, (total, have) in sorted(kinds.items()):
         print("%s: %d of %d in Sprout's openalea.plantgl" % (kind, have, total))
+    # Every member of the classes the models use, whether or not they call it (a measure, not
+    # a check: PlantGL's members of its GUI, its actions and its C++ plumbing are among them).
+    used_classes = {k[1] for k in keys if k[0] == "name" and k[1] in ref['classes']}
+    own = sprout_members(args.build, used_classes)
+    total = have = 0
+    for cls in sorted(used_classes):
+        theirs = ref['classes'][cls]
+        ours = set(own.get(cls) or ())
+        total, have = total + len(theirs), have + len(theirs & ours)
+        if args.list:
+            print("class %-20s %3d of %3d  lacks: %s" % (cls, len(theirs & ours), len(theirs), " ".join(sorted(theirs - ours))))
+    print("all members of the %d classes models use: %d of %d in Sprout's (a measure)" % (len(used_classes), have, total))
     return 1 if missing else 0
 
 
