@@ -11,9 +11,31 @@ from openalea.plantgl._curves import NurbsCurve, Point4Matrix, RealArray, _defau
 _of2, _of3 = Vector2._of, Vector3._of
 
 
+def _homogeneous_at(points, degree, knots, t):
+    """de Boor on points (x, y, z, w) made (xw, yw, zw, w), at t clamped to the knots: the
+    point (x, y, z, w) of the curve they make there."""
+    pts = [tuple(p) + (1.0,) * (4 - len(tuple(p))) for p in points]
+    h = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in pts]
+    n = len(h)
+    t = min(max(t, knots[degree]), knots[n])
+    k = degree
+    while k < n - 1 and t >= knots[k + 1]:
+        k += 1
+    d = [list(h[j + k - degree]) for j in range(degree + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + k - degree
+            den = knots[i + degree + 1 - r] - knots[i]
+            a = (t - knots[i]) / den if den else 0.0
+            d[j] = [(1 - a) * x + a * y for x, y in zip(d[j - 1], d[j])]
+    x, y, z, w = d[degree]
+    return (x / w, y / w, z / w, w) if w else (x, y, z, w)
+
+
 class NurbsPatch(_SceneObject):
-    _kind = 'surface'
     """A NURBS surface; control points (x, y, z, w) in rows along u."""
+    _kind = 'surface'
+    DEFAULT_CCW, DEFAULT_STRIDE, DEFAULT_NURBS_DEGREE = True, 30, 3
 
     def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
         if isinstance(udegree, (list, tuple)):  # the form (ctrl, uknots, vknots, udegree, vdegree)
@@ -24,8 +46,62 @@ class NurbsPatch(_SceneObject):
             self.vknotList = kwargs.get('vknotList')
         self.ctrlPointMatrix = [[tuple(p) for p in row] for row in ctrlPointMatrix]
         self.udegree, self.vdegree = int(udegree), int(vdegree)
+        # PlantGL fills in the uniform clamped knots where none are given.
+        # (Not where the degree is too high for the points: Sprout draws such a patch at the
+        # degree the points allow, with that degree's knots.)
+        rows = self.ctrlPointMatrix
+        if not self.uknotList and rows and 1 <= self.udegree < len(rows):
+            self.uknotList = RealArray(_pgl_uniform_knots(len(rows), self.udegree))
+        if not self.vknotList and rows and rows[0] and all(1 <= self.vdegree < len(r) for r in rows):
+            self.vknotList = RealArray(_pgl_uniform_knots(len(rows[0]), self.vdegree))
         self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
+        self.ccw = kwargs.get('ccw', True)
         self.name = ''
+
+    def _knots(self, which):
+        """The knots along u or v: the patch's, or the uniform clamped ones."""
+        knots = self.uknotList if which == 'u' else self.vknotList
+        if knots:
+            return list(knots)
+        n = len(self.ctrlPointMatrix) if which == 'u' else len(self.ctrlPointMatrix[0])
+        return _pgl_uniform_knots(n, self.udegree if which == 'u' else self.vdegree)
+
+    firstUKnot = property(lambda self: self._knots('u')[self.udegree])
+    lastUKnot = property(lambda self: self._knots('u')[len(self.ctrlPointMatrix)])
+    firstVKnot = property(lambda self: self._knots('v')[self.vdegree])
+    lastVKnot = property(lambda self: self._knots('v')[len(self.ctrlPointMatrix[0])])
+
+    def isUDegreeToDefault(self):
+        return self.udegree == 3
+
+    def isVDegreeToDefault(self):
+        return self.vdegree == 3
+
+    def isUStrideToDefault(self):
+        return self.ustride == 30
+
+    def isVStrideToDefault(self):
+        return self.vstride == 30
+
+    def isCCWToDefault(self):
+        return self.ccw is True
+
+    def isUKnotListToDefault(self):
+        return _default_knots(self.uknotList, len(self.ctrlPointMatrix), self.udegree)
+
+    def isVKnotListToDefault(self):
+        return _default_knots(self.vknotList, len(self.ctrlPointMatrix[0]), self.vdegree)
+
+    def setUKnotListToDefault(self):
+        self.uknotList = _pgl_uniform_knots(len(self.ctrlPointMatrix), self.udegree)
+        return True
+
+    def setVKnotListToDefault(self):
+        self.vknotList = _pgl_uniform_knots(len(self.ctrlPointMatrix[0]), self.vdegree)
+        return True
+
+    def apply(self, action):
+        return action.process(self)
 
     def __repr__(self):
         """As PlantGL writes a patch (its np_repr): what is not the default after the points."""
@@ -72,27 +148,34 @@ class NurbsPatch(_SceneObject):
         return self._native().grid(n)
 
     def getUTangentAt(self, u, v):
-        h = 1e-4
-        return (self.getPointAt(min(1.0, u + h), v) - self.getPointAt(max(0.0, u - h), v)).normed()
+        """dS/du: the derivative of the iso-v section (PlantGL's, not normalised)."""
+        return self.getIsoVSectionAt(v).getTangentAt(u)
 
     def getVTangentAt(self, u, v):
-        h = 1e-4
-        return (self.getPointAt(u, min(1.0, v + h)) - self.getPointAt(u, max(0.0, v - h))).normed()
+        return self.getIsoUSectionAt(u).getTangentAt(v)
 
     def getNormalAt(self, u, v):
         return cross(self.getUTangentAt(u, v), self.getVTangentAt(u, v)).normed()
 
     def getIsoUSectionAt(self, u):
-        return NurbsCurve([tuple(self.getPointAt(u, i / 20.0)) + (1.0,) for i in range(21)], 1)
+        """The curve along v at u: each column's control points taken along u at u, in
+        homogeneous coordinates (PlantGL's), with the patch's v knots and degree."""
+        rows, knots = self.ctrlPointMatrix, self._knots('u')
+        points = [_homogeneous_at([rows[i][j] for i in range(len(rows))], self.udegree, knots, u)
+                  for j in range(len(rows[0]))]
+        return NurbsCurve(points, self.vdegree, self._knots('v'), self.vstride)
 
     def getIsoVSectionAt(self, v):
-        return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
+        """The curve along u at v."""
+        rows, knots = self.ctrlPointMatrix, self._knots('v')
+        points = [_homogeneous_at(row, self.vdegree, knots, v) for row in rows]
+        return NurbsCurve(points, self.udegree, self._knots('u'), self.ustride)
 
 
 class NurbsPatch3D(_SceneObject):
-    _kind = 'volume'
     """A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
     grid [u][v][w]; getPointAt(u, v, w) maps the parameter cube into space."""
+    _kind = 'volume'
 
     def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, wdegree=3, uknotList=None, vknotList=None, wknotList=None,
                  ustride=30, vstride=30, wstride=30):

@@ -120,6 +120,14 @@ CASES = [
      " t.isCCWToDefault(), q.isCCWToDefault(), q.isSolidToDefault(), t.normalList, t.colorList, t.normalPerVertex,"
      " TriangleSet.DEFAULT_CCW, TriangleSet.DEFAULT_SOLID, TriangleSet.DEFAULT_NORMALPERVERTEX,"
      " TriangleSet.DEFAULT_COLORPERVERTEX, t.isASurface(), t.isExplicit()]", 1e-12),
+    ("NurbsPatch members",
+     "rows = [[(0,0,0,1),(0,1,0,1),(0,2,1,1)],[(1,0,1,1),(1,1,2,1),(1,2,0,1)],[(2,0,0,1),(2,1,1,1),(2,2,2,1)]]\n"
+     "p = NurbsPatch(rows, udegree=2, vdegree=2)\n"
+     "w = NurbsPatch([[(0,0,0,1),(0,1,0,2),(0,2,1,1)],[(1,0,1,1),(1,1,2,1),(1,2,0,3)]], udegree=1, vdegree=2)\n"
+     "result = [p.getPointAt(0.3,0.6), p.getUTangentAt(0.3,0.6), p.getVTangentAt(0.3,0.6), list(p.getIsoUSectionAt(0.3).ctrlPointList),"
+     " list(p.getIsoVSectionAt(0.6).ctrlPointList), p.firstUKnot, p.lastUKnot, list(p.uknotList), p.ccw, p.ustride,"
+     " w.getPointAt(0.4, 0.7), w.getUTangentAt(0.4, 0.7), w.getVTangentAt(0.4, 0.7), list(w.getIsoUSectionAt(0.4).ctrlPointList),"
+     " p.isUDegreeToDefault(), p.isUKnotListToDefault(), NurbsPatch.DEFAULT_STRIDE]", 1e-9),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
