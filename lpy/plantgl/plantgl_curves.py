@@ -427,6 +427,69 @@ class QuantisedFunction(_QuantisedBase):
     def getValue(self, x):
         return self(x)
 
+    DEFAULT_CLAMPED, DEFAULT_SAMPLING = True, 100
+
+    def isClampedToDefault(self):
+        return self.clamped is True
+
+    def isValid(self):
+        return len(self._values) > 2
+
+    def build(self, curve, sampling=None):
+        """Sampled again from `curve` (at `sampling` values, or as many as now)."""
+        QuantisedFunction.__init__(self, curve, len(self._values) if sampling is None else sampling, self.clamped)
+        return True
+
+    @staticmethod
+    def checkQuantisableFunction(curve):
+        """Whether x grows along the curve's stride points (PlantGL's check)."""
+        start, size = curve.firstKnot, curve.stride
+        step = (curve.lastKnot - start) / size
+        x0 = curve.getPointAt(start)[0]
+        for i in range(1, size):
+            start += step
+            if curve.getPointAt(start)[0] <= x0:
+                return False
+        return True
+
+    def isIncreasing(self, strictly=False):
+        v = self._values
+        return not any(v[i - 1] > v[i] or (strictly and v[i - 1] == v[i]) for i in range(1, len(v)))
+
+    def isDecreasing(self, strictly=False):
+        v = self._values
+        return not any(v[i - 1] < v[i] or (strictly and v[i - 1] == v[i]) for i in range(1, len(v)))
+
+    def isMonotonous(self, strictly=False):
+        return self.isIncreasing(strictly) or self.isDecreasing(strictly)
+
+    def findX(self, y, startingX=None):
+        """The first x from `startingX` on where the function meets y, by linear interpolation
+        between its samples (None where it does not)."""
+        v, n, first, last = self._values, len(self._values), self._first, self._last
+        start = first if startingX is None else startingX
+        i0 = int((n - 1) * (start - first) / (last - first) + 1)
+        for i in range(max(i0, 1), n):
+            if v[i - 1] <= y < v[i] or v[i - 1] >= y > v[i]:
+                return first + (i - 1 + (y - v[i - 1]) / (v[i] - v[i - 1])) * (last - first) / (n - 1)
+        return None
+
+    def inverse(self):
+        """x = f^-1(y) sampled as PlantGL samples it; None where f is not strictly monotonous."""
+        if not self.isMonotonous(True):
+            return None
+        n = len(self._values)
+        firsty, lasty = self._values[0], self._values[-1]
+        if firsty > lasty:
+            firsty, lasty = lasty, firsty
+        x, y, delta, values = self._first, firsty, (lasty - firsty) / (n - 1), []
+        for _ in range(n):
+            found = self.findX(y, x)
+            x = -1.0 if found is None else found
+            values.append(x)
+            y += delta
+        return QuantisedFunction._of((firsty, lasty, values))
+
     def _call_python(self, x):
         values, n = self._values, len(self._values)
         first, last = self._first, self._last

@@ -128,6 +128,14 @@ CASES = [
      " list(p.getIsoVSectionAt(0.6).ctrlPointList), p.firstUKnot, p.lastUKnot, list(p.uknotList), p.ccw, p.ustride,"
      " w.getPointAt(0.4, 0.7), w.getUTangentAt(0.4, 0.7), w.getVTangentAt(0.4, 0.7), list(w.getIsoUSectionAt(0.4).ctrlPointList),"
      " p.isUDegreeToDefault(), p.isUKnotListToDefault(), NurbsPatch.DEFAULT_STRIDE]", 1e-9),
+    ("QuantisedFunction members",
+     "m = QuantisedFunction(NurbsCurve2D([(0,0,1),(0.3,0.2,1),(0.7,0.5,1),(1,1,1)]))\n"
+     "q = QuantisedFunction(NurbsCurve2D([(0,0,1),(0.3,0.8,1),(0.7,0.2,1),(1,0.1,1)]))\n"
+     "i = m.inverse()\n"
+     "result = [m.isIncreasing(), m.isDecreasing(), m.isMonotonous(), m.isIncreasing(True), q.isMonotonous(), q.inverse(),"
+     " m.findX(0.5), m.findX(2.0), m.findX(0.5, 0.9), i(0), i(0.5), i(0.99), i(1.0), i.firstx, i.lastx, i.sampling,"
+     " m.clamped, QuantisedFunction.DEFAULT_SAMPLING, m.isClampedToDefault(),"
+     " QuantisedFunction.checkQuantisableFunction(NurbsCurve2D([(0,0,1),(0.3,0.8,1),(0.7,0.2,1),(1,0.1,1)]))]", 1e-12),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
