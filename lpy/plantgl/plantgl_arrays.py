@@ -203,8 +203,80 @@ class RealArray(list):
 
 
 class Point4Matrix(list):
-    def __init__(self, rows=()):
+    """PlantGL's matrix of 4D points (a patch's control points): rows of points (kept as
+    given), m[i, j], sizes(), getRow, getColumn, pushRow, insertRow... Point4Matrix(rows,
+    columns) holds origins."""
+
+    def __init__(self, rows=(), columns=None):
+        if isinstance(rows, int):
+            rows = [[(0.0, 0.0, 0.0, 0.0)] * int(columns or 0) for _ in range(rows)]
         list.__init__(self, [[tuple(p) for p in row] for row in rows])
+
+    def __getitem__(self, key):
+        if isinstance(key, tuple):
+            i, j = key
+            return Vector4(*list.__getitem__(self, i)[j])
+        return list.__getitem__(self, key)
+
+    def sizes(self):
+        return (len(self), len(self[0]) if len(self) else 0)
+
+    def size(self):
+        rows, columns = self.sizes()
+        return rows * columns
+
+    def getRowNb(self):
+        return self.sizes()[0]
+
+    def getColumnNb(self):
+        return self.sizes()[1]
+
+    def getRowSize(self):
+        return self.sizes()[1]
+
+    def getColumnSize(self):
+        return self.sizes()[0]
+
+    def getRow(self, i):
+        return [Vector4(*p) for p in list.__getitem__(self, i)]
+
+    def getColumn(self, j):
+        return [Vector4(*row[j]) for row in self]
+
+    def getDiagonal(self):
+        return [Vector4(*self[i][i]) for i in range(min(self.sizes()))]
+
+    def transpose(self):
+        rows, columns = self.sizes()
+        return Point4Matrix([[self[i][j] for i in range(rows)] for j in range(columns)])
+
+    def empty(self):
+        return self.size() == 0
+
+    def isUnique(self):
+        """Whether no point is there twice (PlantGL's)."""
+        points = [tuple(p) for row in self for p in row]
+        return len(set(points)) == len(points)
+
+    def _fits(self, points, count):
+        points = [tuple(p) for p in points]
+        if len(self) and len(points) != count:
+            raise ValueError("Point4Matrix: %d points where %d are needed" % (len(points), count))
+        return points
+
+    def pushRow(self, points):
+        self.append(self._fits(points, self.getColumnNb()))
+
+    def insertRow(self, i, points):
+        self.insert(i, self._fits(points, self.getColumnNb()))
+
+    def pushColumn(self, points):
+        for row, p in zip(self, self._fits(points, self.getRowNb())):
+            row.append(p)
+
+    def insertColumn(self, j, points):
+        for row, p in zip(self, self._fits(points, self.getRowNb())):
+            row.insert(j, p)
 
     def __repr__(self):  # Point4Matrix([[Vector4(0,0,0,1),...],[...]])
         return "Point4Matrix([%s])" % ",".join("[%s]" % ",".join(_point_text(p, 4) for p in row) for row in self)

@@ -136,6 +136,12 @@ CASES = [
      " m.findX(0.5), m.findX(2.0), m.findX(0.5, 0.9), i(0), i(0.5), i(0.99), i(1.0), i.firstx, i.lastx, i.sampling,"
      " m.clamped, QuantisedFunction.DEFAULT_SAMPLING, m.isClampedToDefault(),"
      " QuantisedFunction.checkQuantisableFunction(NurbsCurve2D([(0,0,1),(0.3,0.8,1),(0.7,0.2,1),(1,0.1,1)]))]", 1e-12),
+    ("Point4Matrix members",
+     "m = Point4Matrix([[(0,0,0,1),(0,1,0,1),(0,2,1,1)],[(1,0,1,1),(1,1,2,1),(1,2,0,1)]])\n"
+     "a = [m.sizes(), m.size(), m.getRowNb(), m.getColumnNb(), m.getRowSize(), m.getColumnSize(), m.getRow(1), m.getColumn(2),"
+     " m.empty(), m.isUnique(), m.transpose().sizes(), m.getDiagonal(), m[1,2]]\n"
+     "m.pushRow([(5,5,5,1)]*3); m.pushColumn([(7,7,7,1)]*3); m.insertRow(0, [(9,9,9,1)]*4)\n"
+     "result = a + [m.sizes(), m.getRow(0), m.getColumn(3), Point4Matrix([[(1,1,1,1),(1,1,1,1)]]).isUnique()]", 0),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
