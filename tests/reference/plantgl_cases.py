@@ -142,6 +142,16 @@ CASES = [
      " m.empty(), m.isUnique(), m.transpose().sizes(), m.getDiagonal(), m[1,2]]\n"
      "m.pushRow([(5,5,5,1)]*3); m.pushColumn([(7,7,7,1)]*3); m.insertRow(0, [(9,9,9,1)]*4)\n"
      "result = a + [m.sizes(), m.getRow(0), m.getColumn(3), Point4Matrix([[(1,1,1,1),(1,1,1,1)]]).isUnique()]", 0),
+    ("Grid3Indexing and Point3Grid",
+     "g = Grid3Indexing((0.5,0.5,0.5), (0,0,0), (2,1,1.2))\n"
+     "p = Point3Grid((0.5,0.5,0.5), [(0,0,0),(1,1,1),(2,0.3,0.7),(0.2,0.2,0.2)])\n"
+     "result = [g.dimensions(), g.size(), g.getUpperCorner(), g.getGridSize(), g.cellId((1,2,1)), g.index(17), g.indexFromPoint((1.2,0.7,0.3)),"
+     " g.cellIdFromPoint((1.2,0.7,0.3)), g.getVoxelCenterFromId(17), g.getVoxelLowerPointFromId(5), g.getVoxelUpperPoint((1,1,1)),"
+     " g.isValidId(44), g.isValidId(45), g.isValidIndex((4,2,2)), g.isValidIndex((5,0,0)), g.getCorners(), g.getVoxelCorners((1,0,2)),"
+     " g.getMaxIndexDistanceToBorder((1,2,0)), g.getMaxDistanceToBorder(Vector3(0.3,0.2,0.1)), g.indexFromCoord(1.3, 0),"
+     " g.query_voxels_around_point((1,0.5,0.5), 0.6), g.query_voxels_in_cone((0,0,0),(1,1,1),1.5,1.0),"
+     ""
+     " p.dimensions(), p.getUpperCorner(), p.cellIdFromPoint((2,0.3,0.7)), p.getVoxelCenterFromId(3), p.isValidId(44), p.valuesize(), g.valuesize()]", 1e-12),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
