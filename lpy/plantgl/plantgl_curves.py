@@ -41,6 +41,47 @@ def _default_knots(knots, n, degree):
 
 
 # [SECTION] NURBS and Bezier curves
+def _closest_on_segment(p, a, b):
+    """PlantGL's __closestPointToSegment: (the nearest point of [a, b], its squared distance,
+    where along the segment)."""
+    diff, m = p - a, b - a
+    t = m * diff
+    if t > 0:
+        mm = m * m
+        if t < mm:
+            t = t / mm
+            diff = diff - m * t
+            q = a + m * t
+        else:
+            t, diff, q = 1, diff - m, b
+    else:
+        t, q = 0, a
+    return q, diff * diff, t
+
+
+def _find_closest(curve, point):
+    """PlantGL's findClosest (LineicModel's, Curve2D's): the nearest point of the polyline
+    through the curve's stride points, and its parameter. PlantGL leaves the parameter unset
+    where the first point is the nearest; here it is the first knot then."""
+    vec = (Vector2, Vector3)[curve._dim - 2]
+    p = vec(*tuple(point)[:curve._dim])
+    u0, u1 = curve.firstKnot, curve.lastKnot
+    du = (u1 - u0) / curve.stride
+    p1 = curve.getPointAt(u0)
+    res, dist, found = p1, (p - p1) * (p - p1), u0
+    u = u0 + du
+    while u <= u1:
+        p2 = curve.getPointAt(u)
+        q, d, lu = _closest_on_segment(p, p1, p2)
+        if curve._dim == 2:  # Curve2D's compares the distance itself with the squared one
+            d = _math.sqrt(d)
+        if d < dist:
+            dist, res, found = d, q, u + du * (lu - 1)
+        p1 = p2
+        u += du
+    return res, found
+
+
 class Curve2D(_SceneObject):
     """PlantGL's base of the 2D curves (NurbsCurve2D, BezierCurve2D, Polyline2D)."""
     _kind = 'curve'
@@ -87,6 +128,10 @@ class NurbsCurve2D(Curve2D):
     @staticmethod
     def defaultKnotListTest(knots, nbCtrlPoints, degree):
         return _default_knots(knots, nbCtrlPoints, degree)
+
+    def findClosest(self, point):
+        """(the nearest point, its parameter), along the curve's stride points."""
+        return _find_closest(self, point)
 
     def getDerivativeAt(self, u, d=1):
         """The d-th derivative at u (d up to 2)."""
@@ -294,6 +339,9 @@ class _PolylineCurve:
 
     def points(self, samples=None):
         return [self._vec(p) for p in self.pointList]
+
+    def findClosest(self, point):
+        return _find_closest(self, point)
 
     def split(self, u):
         """The polyline cut at u: the two polylines before and after."""

@@ -188,7 +188,7 @@ _geometry_fields = {
     'QuadSet': ('pointList', 'indexList'), 'TriangleSet': ('pointList', 'indexList'), 'Polyline': ('pointList',),
     'BezierPatch': ('ctrlPointMatrix',), 'Extrusion': ('axis', 'crossSection', 'scale'), 'Revolution': ('profile',),
     'Swung': ('profileList', 'angleList'), 'Group': ('geometryList',), 'Text': ('string', 'position'), 'Font': (),
-    'ImageTexture': ('name', 'filename'), 'Texture2D': ('image', 'transformation'), 'Texture2DTransformation': (),
+    'Texture2D': ('image', 'transformation', 'baseColor'), 'Texture2DTransformation': (),
     'PointSet': ('pointList', 'colorList'),
     'AsymmetricHull': ('negXRadius', 'posXRadius', 'negYRadius', 'posYRadius', 'negXHeight', 'posXHeight', 'negYHeight',
                        'posYHeight', 'bottom', 'top', 'bottomShape', 'topShape', 'slices', 'stacks'),
@@ -207,6 +207,7 @@ _geometry_defaults = {
     'AxisRotated': dict(axis=Vector3(0, 0, 1), angle=0.0), 'EulerRotated': dict(azimuth=0.0, elevation=0.0, roll=0.0),
     'Oriented': dict(primary=Vector3(1, 0, 0), secondary=Vector3(0, 1, 0)), 'Shape': dict(id=_NOID, parentId=_NOID),
     'Polyline': dict(width=1, colorList=None), 'PointSet': dict(width=1, colorList=None),
+    'Texture2D': dict(transformation=None),
     'TriangleSet': dict(_mesh_defaults), 'QuadSet': dict(_mesh_defaults),
     'AsymmetricHull': dict(negXRadius=0.5, posXRadius=0.5, negYRadius=0.5, posYRadius=0.5, negXHeight=0.0,
                            posXHeight=0.0, negYHeight=0.0, posYHeight=0.0, bottom=Vector3(0, 0, -0.5),
@@ -263,6 +264,39 @@ for _name, _f in _geometry_fields.items():
     _members.update((k, v) for k, v in _d.items() if not isinstance(v, Vector3))
     globals()[_name] = with_defaults(type(_name, (_base,), _members), _d)
 del _name, _f, _base, _d, _members
+
+
+class ImageTexture(_Geometry):
+    """PlantGL's ImageTexture: ImageTexture(filename, ...) or ImageTexture(name, filename, ...),
+    then repeatS, repeatT, mipmaping."""
+    _defaults = dict(mipmaping=True, repeatS=True, repeatT=True)
+
+    def __init__(self, *args, **kwargs):
+        args = list(args)
+        name = args.pop(0) if len(args) >= 2 and isinstance(args[1], str) else kwargs.pop('name', '')
+        _Geometry.__init__(self, **kwargs)
+        self.name = name
+        for field, value in zip(('filename', 'repeatS', 'repeatT', 'mipmaping'), args):
+            self.__dict__[field] = value
+        self.__dict__.setdefault('filename', '')
+
+    def isTexture(self):
+        return True
+
+
+with_defaults(ImageTexture, ImageTexture._defaults)
+ImageTexture.DEFAULT_MIPMAPING = True
+for _k, _v in ImageTexture._defaults.items():
+    setattr(ImageTexture, _k, _v)
+
+
+def _texture_is_texture(self):
+    return True
+
+
+Texture2D.isTexture = _texture_is_texture
+# (no baseColor unless one is given: L-Py's parameter code tells a texture's colour by it)
+Texture2D.DEFAULT_BASECOLOR = Color4(255, 255, 255, 0)
 
 
 def _shape_init(self, *args, **kwargs):

@@ -152,6 +152,17 @@ CASES = [
      " g.query_voxels_around_point((1,0.5,0.5), 0.6), g.query_voxels_in_cone((0,0,0),(1,1,1),1.5,1.0),"
      ""
      " p.dimensions(), p.getUpperCorner(), p.cellIdFromPoint((2,0.3,0.7)), p.getVoxelCenterFromId(3), p.isValidId(44), p.valuesize(), g.valuesize()]", 1e-12),
+    ("findClosest on curves",
+     "p = Polyline([(0,0,0),(1,0,0),(1,2,0)])\n"
+     "c = NurbsCurve([(0,0,0,1),(1,2,0,1),(2,-1,1,1),(3,1,0,1)])\n"
+     "d = NurbsCurve2D([(0,0,1),(1,2,1),(2,-1,1),(3,1,1)])\n"
+     "result = [list(p.findClosest((2,1,0))), list(c.findClosest((2,1,0))), list(d.findClosest((2,1))),"
+     " list(Polyline2D([(0,0),(2,0),(2,2)]).findClosest((3,1)))]", 1e-9),
+    ("textures",
+     "t = ImageTexture('x.png'); t2 = ImageTexture('n', 'y.png', False)\n"
+     "x = Texture2D(t)\n"
+     "result = [t.name, t.filename, t.mipmaping, t.repeatS, t.repeatT, ImageTexture.DEFAULT_MIPMAPING, t2.name, t2.filename,"
+     " t2.mipmaping, x.image.filename, x.transformation, x.isTexture(), Texture2D.DEFAULT_BASECOLOR]", 0),
     # vectors, matrices
     ("Vector members",
      "v = Vector3(1,2,2)\n"
