@@ -62,7 +62,7 @@ def _scene(parts):
             elif r1 <= 1e-9:
                 g = Cone(r0, height)
             elif r0 <= 1e-9:  # a cone upside down: its base at the F's end, turned over
-                geometry = Translated(b, Oriented((1, 0, 0), (0, -1, 0), Cone(r1, height)))
+                geometry = Translated(b, _along(-axis, Cone(r1, height), Oriented, Vector3))
                 geometry.direction = axis
                 scene.append(Shape(geometry, _material(colour), ident))
                 continue
@@ -72,7 +72,7 @@ def _scene(parts):
             if sum(c * c for c in a) < 1e-12 and upright:
                 geometry = g
             else:
-                geometry = Translated(a, Oriented((1, 0, 0), (0, 1, 0), g))
+                geometry = Translated(a, _along(axis, g, Oriented, Vector3))
             geometry.direction = axis
         elif kind == 'sphere':
             geometry = Translated(Vector3(*part[2]), Sphere(part[4]))
@@ -85,6 +85,19 @@ def _scene(parts):
             colour = part[4]
         scene.append(Shape(geometry, _material(colour), ident))
     return scene
+
+
+def _along(axis, g, Oriented, Vector3):
+    """`g` (made along z) turned to `axis`, as PlantGL's turtle turns it: Oriented(up, -left),
+    its z the heading; the turtle's up is not in what Sprout's turtle gives, so the one nearest
+    the first turtle's (x) stands for it (a cylinder's eight sides turn about its axis)."""
+    h = Vector3(axis)
+    h.normalize()
+    up = Vector3(1, 0, 0) - h * h.x
+    if up.normalize() < 1e-9:
+        up = Vector3(0, 1, 0) - h * h.y
+        up.normalize()
+    return Oriented(up, h ^ up, g)
 
 
 _DrawnMesh = None

@@ -174,9 +174,13 @@ void start(void (*defineModule)(py::module_&)) {
             installModule("openalea.plantgl", "", "<sprout>/openalea/plantgl/__init__.py");
             // PlantGL's parts (lpy/plantgl/plantgl_*.py), private modules that `all` gathers;
             // each imports from those before it.
-            for (const char* part : {"vectors", "scene", "curves", "grids"})
+            for (const char* part : {"vectors", "object", "arrays", "scene", "curves", "patches", "grids", "light"})
                 installModule(std::string("openalea.plantgl._") + part, embedded(std::string("plantgl_") + part),
                               std::string("<sprout>/openalea/plantgl/_") + part + ".py");
+            // PlantGL's cardinal splines (lpy/plantgl/plantgl_cspline.py), which `all` keeps as
+            // `cspline` and NurbsCurve.CSpline, as PlantGL's scenegraph package does.
+            installModule("openalea.plantgl.scenegraph.cspline", embedded("plantgl_cspline"),
+                          "<sprout>/openalea/plantgl/scenegraph/cspline.py");
             installModule("openalea.plantgl.all", embedded("plantgl"), "<sprout>/openalea/plantgl/all.py");
             // PlantGL's scenegraph package: the same names as all, and two modules of its own
             // that models import by name.
@@ -208,8 +212,10 @@ void start(void (*defineModule)(py::module_&)) {
                 for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
             }
             py::module_ sys = py::module_::import("sys");
+            // PlantGL's light package and its modules (lpy/plantgl/plantgl_light.py, in `all`).
             for (const char* alias : {"openalea.plantgl.math", "openalea.plantgl.scenegraph", "openalea.plantgl.light",
-                                      "openalea.plantgl.light.light"})
+                                      "openalea.plantgl.light.light", "openalea.plantgl.light.sky", "openalea.plantgl.light.sun",
+                                      "openalea.plantgl.light.utils"})
                 sys.attr("modules")[alias] = sys.attr("modules")["openalea.plantgl.all"];
             py::module_ openalea = py::module_::import("openalea");
             openalea.attr("lpy") = sys.attr("modules")["openalea.lpy"];

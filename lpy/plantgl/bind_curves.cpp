@@ -193,6 +193,7 @@ void definePlantGL(py::module_& m) {
     // The uniform clamped knots of n control points of a degree (NurbsCurve2D's and
     // NurbsPatch3D's default knots).
     m.def("_pgl_uniform_knots", [](int n, int degree) { return curves::uniformClampedKnots(n, degree); });
+    defineProjection(m);  // the light module's z-buffer (bind_light.cpp)
 }
 
 }  // namespace sprout::lpy

@@ -42,5 +42,7 @@ namespace py = pybind11;
 void definePlantGL(py::module_& m);
 void defineQuantised(py::module_& m);
 void definePointGrid(py::module_& m);
+// The light module's z-buffer (bind_light.cpp: _ZBuffer, _mesh_bounds), added by definePlantGL.
+void defineProjection(py::module_& m);
 
 }  // namespace sprout::lpy

@@ -85,7 +85,9 @@ Nurbs::Nurbs(int dim, int degree, std::vector<double> knots, std::vector<double>
     }
 }
 
-Point Nurbs::pointAt(double u) const {
+Point Nurbs::pointAt(double u) const { return divided(homogeneousAt(u), m_dim); }
+
+std::array<double, 4> Nurbs::homogeneousAt(double u) const {
     const int p = m_degree, n = m_count - 1, dim = m_dim, stride = dim + 1;
     const std::vector<double>& k = m_knots;
     u = pyMax(firstKnot(), pyMin(lastKnot(), u));
@@ -104,7 +106,7 @@ Point Nurbs::pointAt(double u) const {
             const double a = den != 0 ? (u - k[i]) / den : 0.0;
             for (int c = 0; c < stride; ++c) d[j][c] = (1 - a) * d[j - 1][c] + a * d[j][c];
         }
-    return divided(d[p], dim);
+    return d[p];
 }
 
 Point Nurbs::derivativeAt(double u, int d) const {
@@ -306,9 +308,10 @@ NurbsPatch::NurbsPatch(std::vector<std::vector<double>> rows, int udegree, int v
 
 std::vector<double> NurbsPatch::column(double v) const {
     std::vector<double> column;
-    for (const Nurbs& c : m_rows) {
-        const Point q = c.pointAt(c.firstKnot() + (c.lastKnot() - c.firstKnot()) * v);
-        column.insert(column.end(), {q[0], q[1], q[2], 1.0});
+    for (const Nurbs& c : m_rows) {  // in homogeneous coordinates, as PlantGL's: the weight kept
+        const Homogeneous h = c.homogeneousAt(c.firstKnot() + (c.lastKnot() - c.firstKnot()) * v);
+        const Point q = divided(h, 3);
+        column.insert(column.end(), {q[0], q[1], q[2], h[3] == 0 ? 1.0 : h[3]});
     }
     return column;
 }

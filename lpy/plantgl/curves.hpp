@@ -27,6 +27,8 @@ public:
     double lastKnot() const { return m_knots[m_count]; }
 
     Point pointAt(double u) const;
+    // The point before its division by the weight: (x*w, y*w, [z*w,] w), w at index dim.
+    std::array<double, 4> homogeneousAt(double u) const;
     // The d-th derivative (d <= 2 is what PlantGL gives; 0 past the degree).
     Point derivativeAt(double u, int d) const;
     // (T x C'') x T / |T|^4, T the first derivative (0 where T is).

@@ -1,83 +1,27 @@
 # openalea.plantgl._curves, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
-# parts: plantgl.py): point arrays, the 2D and 3D curves (NURBS, Bezier, polylines), the
-# functions made from them (QuantisedFunction, the arc-length mappings), the Discretizer, NURBS
-# patches and volumes: PlantGL's interface, evaluated in C++ (lpy/plantgl/curves.cpp, through
-# bind_curves.cpp: de Boor, the knots, arc lengths are there alone). Its own file: the curves.
+# parts: plantgl.py): the 2D and 3D curves (NURBS, Bezier, polylines; point arrays:
+# plantgl_arrays.py), the
+# functions made from them (QuantisedFunction, the arc-length mappings), the Discretizer (NURBS
+# patches and volumes: plantgl_patches.py): PlantGL's interface, evaluated in C++
+# (lpy/plantgl/curves.cpp, through bind_curves.cpp: de Boor, the knots, arc lengths are there
+# alone). Its own file: the curves.
 #
 # Index of this file:
-#   [SECTION] Point arrays and their text
 #   [SECTION] NURBS and Bezier curves
 #   [SECTION] Polylines and the Discretizer
 #   [SECTION] QuantisedFunction
-#   [SECTION] Patches and volumes
 import math as _math
 
-from _sprout_lpy import (_PglNurbs, _PglPatch, _pgl_quantised_polyline, _pgl_uniform_knots, _pgl_volume_point,
+from _sprout_lpy import (_PglNurbs, _pgl_quantised_polyline, _pgl_uniform_knots,
                          _QuantisedBase)
 from openalea.plantgl import _vectors
-from openalea.plantgl._scene import Polyline
+from openalea.plantgl._scene import Polyline as _ScenePolyline
 from openalea.plantgl._vectors import _Vec, Vector2, Vector3, Vector4, cross
+from openalea.plantgl._object import _SceneObject
+from openalea.plantgl._arrays import (Point2Array, Point3Array, Point4Array, RealArray, Point4Matrix, _point_text,  # noqa: F401
+                                      _Points)
 
 _of2, _of3 = Vector2._of, Vector3._of
-
-
-# [SECTION] Point arrays and their text
-def _point_text(p, n):
-    """A point as PlantGL writes it: Vector3(0.5,1,1) (C++'s default 6 significant digits)."""
-    return "Vector%d(%s)" % (n, ",".join("%g" % c for c in tuple(p)[:n]))
-
-
-class _Points(list):
-    _n = 3
-
-    def __init__(self, *args):
-        if len(args) == 1 and not isinstance(args[0], (int, float)):
-            list.__init__(self, [tuple(p) for p in args[0]])
-        else:
-            list.__init__(self, args)
-
-    def __repr__(self):  # Point3Array([Vector3(1,2,3),Vector3(4,5,6)])
-        return "%s([%s])" % (type(self).__name__, ",".join(_point_text(p, self._n) for p in self))
-
-    __str__ = __repr__
-
-
-class Point2Array(_Points):
-    _n = 2
-
-
-class Point3Array(_Points):
-    _n = 3
-
-
-class Point4Array(_Points):
-    _n = 4
-
-
-class RealArray(list):
-    """PlantGL's array of reals (a curve's knots): RealArray([0, 0, 1, 1]), or RealArray(n) of n
-    zeros."""
-
-    def __init__(self, values=()):
-        if isinstance(values, int):
-            list.__init__(self, [0.0] * values)
-        else:
-            list.__init__(self, [float(v) for v in values])
-
-    def __repr__(self):  # RealArray([0.0,1.5])
-        return "RealArray([%s])" % ",".join(repr(float(v)) for v in self)
-
-    __str__ = __repr__
-
-
-class Point4Matrix(list):
-    def __init__(self, rows=()):
-        list.__init__(self, [[tuple(p) for p in row] for row in rows])
-
-    def __repr__(self):  # Point4Matrix([[Vector4(0,0,0,1),...],[...]])
-        return "Point4Matrix([%s])" % ",".join("[%s]" % ",".join(_point_text(p, 4) for p in row) for row in self)
-
-    __str__ = __repr__
 
 
 def _default_knots(knots, n, degree):
@@ -97,7 +41,53 @@ def _default_knots(knots, n, degree):
 
 
 # [SECTION] NURBS and Bezier curves
-class NurbsCurve2D:
+def _closest_on_segment(p, a, b):
+    """PlantGL's __closestPointToSegment: (the nearest point of [a, b], its squared distance,
+    where along the segment)."""
+    diff, m = p - a, b - a
+    t = m * diff
+    if t > 0:
+        mm = m * m
+        if t < mm:
+            t = t / mm
+            diff = diff - m * t
+            q = a + m * t
+        else:
+            t, diff, q = 1, diff - m, b
+    else:
+        t, q = 0, a
+    return q, diff * diff, t
+
+
+def _find_closest(curve, point):
+    """PlantGL's findClosest (LineicModel's, Curve2D's): the nearest point of the polyline
+    through the curve's stride points, and its parameter. PlantGL leaves the parameter unset
+    where the first point is the nearest; here it is the first knot then."""
+    vec = (Vector2, Vector3)[curve._dim - 2]
+    p = vec(*tuple(point)[:curve._dim])
+    u0, u1 = curve.firstKnot, curve.lastKnot
+    du = (u1 - u0) / curve.stride
+    p1 = curve.getPointAt(u0)
+    res, dist, found = p1, (p - p1) * (p - p1), u0
+    u = u0 + du
+    while u <= u1:
+        p2 = curve.getPointAt(u)
+        q, d, lu = _closest_on_segment(p, p1, p2)
+        if curve._dim == 2:  # Curve2D's compares the distance itself with the squared one
+            d = _math.sqrt(d)
+        if d < dist:
+            dist, res, found = d, q, u + du * (lu - 1)
+        p1 = p2
+        u += du
+    return res, found
+
+
+class Curve2D(_SceneObject):
+    """PlantGL's base of the 2D curves (NurbsCurve2D, BezierCurve2D, Polyline2D)."""
+    _kind = 'curve'
+
+
+class NurbsCurve2D(Curve2D):
     """A 2D NURBS curve; control points are (x, y, weight)."""
     _dim = 2
 
@@ -112,6 +102,40 @@ class NurbsCurve2D:
         self.stride = int(kwargs.get('stride', stride))
         self.width = width
         self.name = ''
+
+    DEFAULT_NURBS_DEGREE, DEFAULT_STRIDE, DEFAULT_WIDTH = 3, 30, 1
+
+    def isDegreeToDefault(self):
+        return self.degree == 3
+
+    def isStrideToDefault(self):
+        return self.stride == 30
+
+    def isWidthToDefault(self):
+        return self.width == 1
+
+    def isKnotListToDefault(self):
+        return _default_knots(self.knotList, len(self.ctrlPointList), self.degree)
+
+    def setKnotListToDefault(self):
+        self.knotList = _pgl_uniform_knots(len(self.ctrlPointList), self.degree)
+        return True
+
+    @staticmethod
+    def defaultKnotList(nbCtrlPoints, degree):
+        return RealArray(_pgl_uniform_knots(nbCtrlPoints, degree))
+
+    @staticmethod
+    def defaultKnotListTest(knots, nbCtrlPoints, degree):
+        return _default_knots(knots, nbCtrlPoints, degree)
+
+    def findClosest(self, point):
+        """(the nearest point, its parameter), along the curve's stride points."""
+        return _find_closest(self, point)
+
+    def getDerivativeAt(self, u, d=1):
+        """The d-th derivative at u (d up to 2)."""
+        return self._derivative(u, d)
 
     @property
     def firstKnot(self):
@@ -220,6 +244,20 @@ class NurbsCurve(NurbsCurve2D):
     _dim = 3
 
 
+class BezierCurve(NurbsCurve):
+    """A 3D Bezier curve: a NURBS whose degree is its number of points less one."""
+
+    def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
+        n = len(list(ctrlPointList))
+        NurbsCurve.__init__(self, ctrlPointList, n - 1, [0.0] * n + [1.0] * n, stride, width)
+
+    def __repr__(self):
+        points = ",".join(_point_text(p, 4) for p in self.ctrlPointList)
+        return "BezierCurve(Point4Array([%s])%s)" % (points, self._stride_width_text())
+
+    __str__ = __repr__
+
+
 class BezierCurve2D(NurbsCurve2D):
     def __init__(self, ctrlPointList, stride=30, width=1, **kwargs):
         n = len(list(ctrlPointList))
@@ -233,24 +271,23 @@ class BezierCurve2D(NurbsCurve2D):
 
 
 # [SECTION] Polylines and the Discretizer
-class Polyline2D:
-    def __init__(self, pointList, width=1, **kwargs):
-        self.pointList = [Vector2(p[0], p[1]) for p in pointList]
-        self.width = width
-        self.name = ''
-        # PlantGL's knots: point i at u = i
-        self.firstKnot, self.lastKnot, self.stride = 0.0, float(len(self.pointList) - 1), max(1, len(self.pointList) - 1)
+class _PolylineCurve:
+    """What PlantGL's Polyline and Polyline2D share (polyline.cpp): point i at u = i, linear
+    between; their stride is their number of segments."""
+    _kind, _explicit = 'curve', True
+    DEFAULT_WIDTH = 1
 
-    @staticmethod
-    def Circle(radius=0.5, slices=8):
-        return Polyline2D([(radius * _math.cos(2 * _math.pi * i / slices), radius * _math.sin(2 * _math.pi * i / slices))
-                           for i in range(slices + 1)])
+    firstKnot = property(lambda self: 0.0)
+    lastKnot = property(lambda self: float(len(self.pointList) - 1))
+    stride = property(lambda self: len(self.pointList) - 1)
+
+    def _vec(self, p):
+        return (Vector2, Vector3)[self._dim - 2](*tuple(p)[:self._dim])
 
     def getPointAt(self, u):
-        """As PlantGL's Polyline::getPointAt: point i at u = i, linear between."""
         pts = self.pointList
         if len(pts) == 1:
-            return pts[0]
+            return self._vec(pts[0])
         last = len(pts) - 1
         u = max(0.0, min(float(last), u))
         if abs(u) < 1e-5:
@@ -259,20 +296,94 @@ class Polyline2D:
             u = float(last)
         i = int(u)
         if i == u:
-            return Vector2(pts[i][0], pts[i][1])
-        a, b = pts[i], pts[i + 1]
-        return Vector2(a[0] * ((i + 1) - u) + b[0] * (u - i), a[1] * ((i + 1) - u) + b[1] * (u - i))
+            return self._vec(pts[i])
+        a, b = self._vec(pts[i]), self._vec(pts[i + 1])
+        return a * ((i + 1) - u) + b * (u - i)
+
+    def getTangentAt(self, u):
+        pts = [self._vec(p) for p in self.pointList]
+        i = int(u)
+        if u <= 0:
+            return pts[1] - pts[0]
+        if u >= len(pts) - 1:
+            return pts[-1] - pts[-2]
+        if i == u:
+            a, b = pts[i] - pts[i - 1], pts[i + 1] - pts[i]
+            la, lb = a.normalize(), b.normalize()
+            return (a + b) * (la + lb) / 2
+        return pts[i + 1] - pts[i]
+
+    def getNormalAt(self, u):
+        t = self.getTangentAt(u)
+        if self._dim == 2:
+            return Vector2(-t.y, t.x)
+        if abs(t.x) < 1e-5 and abs(t.y) < 1e-5:
+            return cross(t, Vector3(1, 0, 0))
+        return cross(t, Vector3(0, 0, 1))
+
+    def _native(self):  # a polyline is the NURBS of degree 1 through its points
+        pts = [tuple(p)[:self._dim] + (1.0,) for p in self.pointList]
+        n = len(pts)
+        return _PglNurbs(self._dim, 1, [0.0] + [float(i) for i in range(n)] + [float(n - 1)], pts)
+
+    def getLength(self, begin=None, end=None):
+        """PlantGL's LineicModel::getLength, at the polyline's points."""
+        return self._native().length(self.firstKnot if begin is None else begin, self.lastKnot if end is None else end,
+                                     max(1, self.stride))
+
+    def getArcLengthToUMapping(self):
+        return QuantisedFunction._of(self._native().arc_to_u(max(1, self.stride)))
+
+    def getUToArcLengthMapping(self):
+        return QuantisedFunction._of(self._native().u_to_arc(max(1, self.stride)))
 
     def points(self, samples=None):
-        return list(self.pointList)
+        return [self._vec(p) for p in self.pointList]
+
+    def findClosest(self, point):
+        return _find_closest(self, point)
+
+    def split(self, u):
+        """The polyline cut at u: the two polylines before and after."""
+        i = int(u)
+        p = self.getPointAt(u)
+        head = [self._vec(q) for q in self.pointList[:i + 1]] + ([p] if i != u else [])
+        tail = [p] + [self._vec(q) for q in self.pointList[i + 1:]]
+        return type(self)(head), type(self)(tail)
+
+    def deepcopy(self):
+        import copy
+        return copy.deepcopy(self)
+
+    def apply(self, action):
+        return action.process(self)
+
+
+class Polyline2D(_PolylineCurve, Curve2D):
+    _dim = 2
+
+    def __init__(self, pointList, width=1, **kwargs):
+        self.pointList = Point2Array(pointList)
+        self.width = width
+        self.name = ''
+
+    @staticmethod
+    def Circle(radius=0.5, slices=8):
+        return Polyline2D([(radius * _math.cos(2 * _math.pi * i / slices), radius * _math.sin(2 * _math.pi * i / slices))
+                           for i in range(slices + 1)])
 
     def __repr__(self):  # Polyline2D(Point2Array([Vector2(0,0),Vector2(1,1)]))
         return "Polyline2D(Point2Array([%s]))" % ",".join(_point_text(p, 2) for p in self.pointList)
 
     __str__ = __repr__
 
-    def apply(self, action):
-        return action.process(self)
+
+class Polyline(_PolylineCurve, _ScenePolyline):
+    """PlantGL's 3D Polyline: a curve through its points (drawn by meshes.cpp)."""
+    _dim = 3
+
+    def __init__(self, pointList=(), *args, **kwargs):  # its points kept as given (read as vectors when used)
+        _ScenePolyline.__init__(self, pointList, *args, **kwargs)
 
 
 class Discretizer:
@@ -364,6 +475,69 @@ class QuantisedFunction(_QuantisedBase):
     def getValue(self, x):
         return self(x)
 
+    DEFAULT_CLAMPED, DEFAULT_SAMPLING = True, 100
+
+    def isClampedToDefault(self):
+        return self.clamped is True
+
+    def isValid(self):
+        return len(self._values) > 2
+
+    def build(self, curve, sampling=None):
+        """Sampled again from `curve` (at `sampling` values, or as many as now)."""
+        QuantisedFunction.__init__(self, curve, len(self._values) if sampling is None else sampling, self.clamped)
+        return True
+
+    @staticmethod
+    def checkQuantisableFunction(curve):
+        """Whether x grows along the curve's stride points (PlantGL's check)."""
+        start, size = curve.firstKnot, curve.stride
+        step = (curve.lastKnot - start) / size
+        x0 = curve.getPointAt(start)[0]
+        for i in range(1, size):
+            start += step
+            if curve.getPointAt(start)[0] <= x0:
+                return False
+        return True
+
+    def isIncreasing(self, strictly=False):
+        v = self._values
+        return not any(v[i - 1] > v[i] or (strictly and v[i - 1] == v[i]) for i in range(1, len(v)))
+
+    def isDecreasing(self, strictly=False):
+        v = self._values
+        return not any(v[i - 1] < v[i] or (strictly and v[i - 1] == v[i]) for i in range(1, len(v)))
+
+    def isMonotonous(self, strictly=False):
+        return self.isIncreasing(strictly) or self.isDecreasing(strictly)
+
+    def findX(self, y, startingX=None):
+        """The first x from `startingX` on where the function meets y, by linear interpolation
+        between its samples (None where it does not)."""
+        v, n, first, last = self._values, len(self._values), self._first, self._last
+        start = first if startingX is None else startingX
+        i0 = int((n - 1) * (start - first) / (last - first) + 1)
+        for i in range(max(i0, 1), n):
+            if v[i - 1] <= y < v[i] or v[i - 1] >= y > v[i]:
+                return first + (i - 1 + (y - v[i - 1]) / (v[i] - v[i - 1])) * (last - first) / (n - 1)
+        return None
+
+    def inverse(self):
+        """x = f^-1(y) sampled as PlantGL samples it; None where f is not strictly monotonous."""
+        if not self.isMonotonous(True):
+            return None
+        n = len(self._values)
+        firsty, lasty = self._values[0], self._values[-1]
+        if firsty > lasty:
+            firsty, lasty = lasty, firsty
+        x, y, delta, values = self._first, firsty, (lasty - firsty) / (n - 1), []
+        for _ in range(n):
+            found = self.findX(y, x)
+            x = -1.0 if found is None else found
+            values.append(x)
+            y += delta
+        return QuantisedFunction._of((firsty, lasty, values))
+
     def _call_python(self, x):
         values, n = self._values, len(self._values)
         first, last = self._first, self._last
@@ -374,122 +548,3 @@ class QuantisedFunction(_QuantisedBase):
         if floor >= n - 1 or abs(diff) < 1e-5:
             return values[min(floor, n - 1)]
         return (1 - diff) * values[floor] + diff * values[floor + 1]
-
-
-# [SECTION] Patches and volumes
-class NurbsPatch:
-    """A NURBS surface; control points (x, y, z, w) in rows along u."""
-
-    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, *args, **kwargs):
-        if isinstance(udegree, (list, tuple)):  # the form (ctrl, uknots, vknots, udegree, vdegree)
-            self.uknotList, self.vknotList = list(udegree), list(vdegree)
-            udegree, vdegree = (list(args) + [3, 3])[:2]
-        else:
-            self.uknotList = kwargs.get('uknotList')
-            self.vknotList = kwargs.get('vknotList')
-        self.ctrlPointMatrix = [[tuple(p) for p in row] for row in ctrlPointMatrix]
-        self.udegree, self.vdegree = int(udegree), int(vdegree)
-        self.ustride, self.vstride = kwargs.get('ustride', 30), kwargs.get('vstride', 30)
-        self.name = ''
-
-    def __repr__(self):
-        """As PlantGL writes a patch (its np_repr): what is not the default after the points."""
-        rows, cols = len(self.ctrlPointMatrix), len(self.ctrlPointMatrix[0]) if self.ctrlPointMatrix else 0
-        text = "NurbsPatch(" + repr(Point4Matrix(self.ctrlPointMatrix))
-        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
-            if degree != 3:
-                text += ", %sdegree = %d" % (name, degree)
-        for name, degree, knots, n in (("u", self.udegree, self.uknotList, rows), ("v", self.vdegree, self.vknotList, cols)):
-            if not _default_knots(knots, n, degree):
-                text += ", %sknotList = %r" % (name, RealArray(knots))
-        for name, stride in (("u", self.ustride), ("v", self.vstride)):
-            if stride != 30:
-                text += ", %sstride = %d" % (name, stride)
-        return text + ")"
-
-    __str__ = __repr__
-
-    # As each row were a NurbsCurve along v, its points at v the control points of one along u
-    # (weight 1), evaluated in C++ (lpy/plantgl/curves.cpp) by an evaluator kept on the patch
-    # while its rows hold the same points and no vector has changed in place.
-    def _native(self):
-        rows, uk, vk = self.ctrlPointMatrix, self.uknotList, self.vknotList
-        key = (_vectors._changes[0], self.udegree, self.vdegree, tuple(map(tuple, rows)),
-               None if uk is None else tuple(uk), None if vk is None else tuple(vk))
-        cache = self.__dict__.get('_sprout_native_cache')
-        if cache is not None and cache[0] == key:
-            return cache[1]
-        native = _PglPatch(rows, int(self.udegree), int(self.vdegree), uk or None, vk or None)
-        if all(isinstance(q, (_Vec, tuple)) for row in rows for q in row):
-            self.__dict__['_sprout_native_cache'] = (key, native)
-        return native
-
-    def __getstate__(self):  # pickled and copied without its evaluator
-        state = dict(self.__dict__)
-        state.pop('_sprout_native_cache', None)
-        return state
-
-    def getPointAt(self, u, v):
-        return _of3(self._native().point(u, v))
-
-    def _grid(self, n):
-        """The points at (i / n, j / n), i outer, as tuples: the drawing's (lpy/plantgl/meshes.cpp)."""
-        return self._native().grid(n)
-
-    def getUTangentAt(self, u, v):
-        h = 1e-4
-        return (self.getPointAt(min(1.0, u + h), v) - self.getPointAt(max(0.0, u - h), v)).normed()
-
-    def getVTangentAt(self, u, v):
-        h = 1e-4
-        return (self.getPointAt(u, min(1.0, v + h)) - self.getPointAt(u, max(0.0, v - h))).normed()
-
-    def getNormalAt(self, u, v):
-        return cross(self.getUTangentAt(u, v), self.getVTangentAt(u, v)).normed()
-
-    def getIsoUSectionAt(self, u):
-        return NurbsCurve([tuple(self.getPointAt(u, i / 20.0)) + (1.0,) for i in range(21)], 1)
-
-    def getIsoVSectionAt(self, v):
-        return NurbsCurve([tuple(self.getPointAt(i / 20.0, v)) + (1.0,) for i in range(21)], 1)
-
-
-class NurbsPatch3D:
-    """A NURBS volume (PlantGL's nurbspatch_nd.NurbsPatch3D): control points (x, y, z, w) in a
-    grid [u][v][w]; getPointAt(u, v, w) maps the parameter cube into space."""
-
-    def __init__(self, ctrlPointMatrix, udegree=3, vdegree=3, wdegree=3, uknotList=None, vknotList=None, wknotList=None,
-                 ustride=30, vstride=30, wstride=30):
-        pts = [[[tuple(p) for p in row] for row in plane] for plane in ctrlPointMatrix]
-        dims = (len(pts), len(pts[0]), len(pts[0][0]))
-        self.udegree, self.vdegree, self.wdegree = int(udegree), int(vdegree), int(wdegree)
-        for degree, dim in zip((self.udegree, self.vdegree, self.wdegree), dims):
-            if not 1 <= degree < dim:
-                raise ValueError("NurbsPatch3D: each degree from 1 to its count of control points - 1")
-        self.ctrlPointMatrix = pts
-        self.uknotList = list(uknotList) if uknotList is not None else _pgl_uniform_knots(dims[0], self.udegree)
-        self.vknotList = list(vknotList) if vknotList is not None else _pgl_uniform_knots(dims[1], self.vdegree)
-        self.wknotList = list(wknotList) if wknotList is not None else _pgl_uniform_knots(dims[2], self.wdegree)
-        self.ustride, self.vstride, self.wstride = ustride, vstride, wstride
-        self.name = ''
-
-    @staticmethod
-    def default():
-        """The unit cube, degree 1 in each direction."""
-        return NurbsPatch3D([[[(i, j, k, 1) for k in (0, 1)] for j in (0, 1)] for i in (0, 1)], 1, 1, 1)
-
-    firstUKnot = property(lambda self: self.uknotList[0])
-    lastUKnot = property(lambda self: self.uknotList[-1])
-    firstVKnot = property(lambda self: self.vknotList[0])
-    lastVKnot = property(lambda self: self.vknotList[-1])
-    firstWKnot = property(lambda self: self.wknotList[0])
-    lastWKnot = property(lambda self: self.wknotList[-1])
-
-    def isValid(self):
-        return True
-
-    def getPointAt(self, u, v, w):
-        """de Boor along w on the homogeneous points of each line, then along v, then along u
-        (lpy/plantgl/curves.cpp's NurbsVolume)."""
-        return _of3(_pgl_volume_point(self.ctrlPointMatrix, (self.udegree, self.vdegree, self.wdegree),
-                                      (self.uknotList, self.vknotList, self.wknotList), u, v, w))

@@ -9,44 +9,81 @@ from openalea.plantgl._vectors import Vector3, dot
 
 
 class Grid3Indexing:
-    """PlantGL's regular 3D grid of voxels (voxel size, lower and upper corners): cell ids,
-    indices (i, j, k), centres, and the voxels in a ball or a cone. Id = i + nx * (j + ny * k)."""
+    """PlantGL's regular 3D grid of voxels (its SpatialArrayN, tool/util_spatialarray.h):
+    `int(extent / voxel size) + 1` voxels along each axis from the origin; cell ids with the last
+    coordinate fastest (id = k + nz (j + ny i)); the voxels near a point or in a cone, in that
+    order."""
 
     def __init__(self, voxelsize=(1, 1, 1), origin=(0, 0, 0), upper=(10, 10, 10)):
-        self._size = [max(float(v), 1e-9) for v in (tuple(voxelsize) if hasattr(voxelsize, '__len__') else (voxelsize,) * 3)[:3]]
+        size = tuple(voxelsize) if hasattr(voxelsize, '__len__') else (voxelsize,) * 3
+        self._size = [float(v) for v in size[:3]]
         self._lo = [float(v) for v in tuple(origin)[:3]]
         hi = [float(v) for v in tuple(upper)[:3]]
-        self._dims = [max(1, int(_math.ceil((hi[k] - self._lo[k]) / self._size[k] - 1e-9))) for k in range(3)]
+        for k in range(3):
+            if self._size[k] < 1e-5:
+                raise ValueError("Bad voxelSize value for dimension %i : %f" % (k, self._size[k]))
+            if self._lo[k] > hi[k]:
+                raise ValueError("Bad min and max point value for dimension %i : %f - %f" % (k, self._lo[k], hi[k]))
+        self._dims = [int((hi[k] - self._lo[k]) / self._size[k]) + 1 for k in range(3)]
 
     def size(self):
         return self._dims[0] * self._dims[1] * self._dims[2]
 
-    def dimensions(self):
-        return Vector3(*self._dims)
+    def valuesize(self):
+        """The values the grid holds: none for a Grid3Indexing (PlantGL's NoneContainer), one a
+        voxel for a Point3Grid."""
+        return 0
 
-    getGridSize = dimensions
+    def nbDimensions(self):
+        return 3
+
+    def dimensions(self):
+        return tuple(self._dims)
 
     def getVoxelSize(self):
         return Vector3(*self._size)
 
-    def getLowerCorner(self):
+    def getOrigin(self):
         return Vector3(*self._lo)
 
+    getLowerCorner = getOrigin
+
+    def getGridSize(self):
+        return Vector3(*[self._size[k] * self._dims[k] for k in range(3)])
+
     def getUpperCorner(self):
-        return Vector3(*[self._lo[k] + self._dims[k] * self._size[k] for k in range(3)])
+        return self.getOrigin() + self.getGridSize()
 
     def cellId(self, index):
-        i, j, k = (int(v) for v in tuple(index)[:3])
-        return i + self._dims[0] * (j + self._dims[1] * k)
+        v, offset = 0, 1
+        for j in (2, 1, 0):
+            v += int(index[j]) * offset
+            offset *= self._dims[j]
+        return v
 
     def index(self, cid):
         cid = int(cid)
-        nx, ny = self._dims[0], self._dims[1]
-        return (cid % nx, (cid // nx) % ny, cid // (nx * ny))
+        nx, ny, nz = self._dims
+        out = []
+        for offset in (ny * nz, nz, 1):
+            out.append(cid // offset)
+            cid -= out[-1] * offset
+        return tuple(out)
+
+    def isValidId(self, cid):
+        return 0 <= cid < self.valuesize()  # (PlantGL's: so never for a Grid3Indexing)
+
+    def isValidIndex(self, index):
+        return all(0 <= int(index[k]) < self._dims[k] for k in range(3))
+
+    def indexFromCoord(self, coord, dimension):
+        if hasattr(coord, '__len__'):
+            coord = tuple(coord)[dimension]
+        return int((float(coord) - self._lo[dimension]) / self._size[dimension])
 
     def indexFromPoint(self, p):
         p = tuple(p)
-        return tuple(min(self._dims[k] - 1, max(0, int(_math.floor((float(p[k]) - self._lo[k]) / self._size[k])))) for k in range(3))
+        return tuple(int((float(p[k]) - self._lo[k]) / self._size[k]) for k in range(3))
 
     def cellIdFromPoint(self, p):
         return self.cellId(self.indexFromPoint(p))
@@ -57,33 +94,112 @@ class Grid3Indexing:
     def getVoxelCenterFromId(self, cid):
         return self.getVoxelCenter(self.index(cid))
 
-    def query_voxels_in_ball(self, centre, radius):
-        c = [float(v) for v in tuple(centre)[:3]]
-        lo = self.indexFromPoint([c[k] - radius for k in range(3)])
-        hi = self.indexFromPoint([c[k] + radius for k in range(3)])
-        out = []
-        for k in range(lo[2], hi[2] + 1):
+    def getVoxelLowerPoint(self, index):
+        return Vector3(*[self._lo[k] + int(index[k]) * self._size[k] for k in range(3)])
+
+    def getVoxelLowerPointFromId(self, cid):
+        return self.getVoxelLowerPoint(self.index(cid))
+
+    def getVoxelUpperPoint(self, index):
+        return Vector3(*[self._lo[k] + (int(index[k]) + 1) * self._size[k] for k in range(3)])
+
+    def getVoxelUpperPointFromId(self, cid):
+        return self.getVoxelUpperPoint(self.index(cid))
+
+    @staticmethod
+    def _corners(low, high):
+        """PlantGL's order: the low corner, then each axis in turn doubling the list."""
+        out = [low]
+        for k in range(3):
+            for p in list(out):
+                q = Vector3(p)
+                q[k] = high[k]
+                out.append(q)
+        return out
+
+    def getCorners(self):
+        return self._corners(self.getLowerCorner(), self.getUpperCorner())
+
+    def getVoxelCorners(self, index):
+        return self._corners(self.getVoxelLowerPoint(index), self.getVoxelUpperPoint(index))
+
+    def getVoxelCornersFromId(self, cid):
+        return self.getVoxelCorners(self.index(cid))
+
+    def getMaxIndexDistanceToBorder(self, index):
+        return tuple(max(int(index[k]), self._dims[k] - int(index[k])) for k in range(3))
+
+    def getMaxDistanceToBorder(self, v):
+        lo, hi = self.getLowerCorner(), self.getUpperCorner()
+        return Vector3(*[max(abs(v[k] - lo[k]), abs(v[k] - hi[k])) for k in range(3)]).norm()
+
+    def _around(self, centre, radius):
+        """The voxels' indices in the box around `centre` reaching `radius`, the last fastest."""
+        c = self.indexFromPoint(centre)
+        reach = [1 + int(radius / self._size[k]) for k in range(3)]
+        lo = [0 if c[k] < reach[k] else c[k] - reach[k] for k in range(3)]
+        hi = [min(self._dims[k] - 1, c[k] + reach[k]) for k in range(3)]
+        for i in range(lo[0], hi[0] + 1):
             for j in range(lo[1], hi[1] + 1):
-                for i in range(lo[0], hi[0] + 1):
-                    v = self.getVoxelCenter((i, j, k))
-                    if sum((v[a] - c[a]) ** 2 for a in range(3)) <= radius * radius:
-                        out.append(self.cellId((i, j, k)))
-        return out
+                for k in range(lo[2], hi[2] + 1):
+                    yield (i, j, k)
 
-    def query_voxels_in_cone(self, centre, direction, radius, angle):
-        c = Vector3(*tuple(centre)[:3])
-        d = Vector3(*tuple(direction)[:3]).normed()
-        cosmax = _math.cos(angle)
+    def query_voxels_around_point(self, center, radius, minradius=0):
+        """The voxels whose centre is nearer than radius + a voxel's diagonal (PlantGL's)."""
+        p = Vector3(*tuple(center)[:3])
+        diagonal = self.getVoxelSize().norm()
+        r, minr = radius + diagonal, max(0.0, minradius - diagonal)
         out = []
-        for cid in self.query_voxels_in_ball(centre, radius):
-            v = self.getVoxelCenterFromId(cid) - c
-            n = v.norm()
-            if n > 1e-12 and (v * d) / n >= cosmax:
-                out.append(cid)
+        for index in self._around(p, radius):
+            d = (self.getVoxelCenter(index) - p).norm()
+            if minr <= d < r:
+                out.append(self.cellId(index))
+        return out
+
+    query_voxels_in_ball = query_voxels_around_point
+
+    def query_voxels_in_cone(self, origin, direction, radius, angle=_math.pi / 2):
+        """The voxels near `origin` (as query_voxels_around_point) in the cone of full opening
+        `angle`: by their centre, or, a little wider, by one of their corners (PlantGL's)."""
+        o = Vector3(*tuple(origin)[:3])
+        d = Vector3(*tuple(direction)[:3]).normed()
+        r = radius + self.getVoxelSize().norm()
+        half = angle / 2
+        cos_cone, cos_large = _math.cos(half), _math.cos(min(half + _math.pi / 4, _math.pi))
+        out = []
+        for index in self._around(o, radius):
+            v = self.getVoxelCenter(index) - o
+            dist = v.normalize()
+            if not dist < r:
+                continue
+            a = v * d
+            if a > cos_cone:
+                out.append(self.cellId(index))
+            elif a > cos_large:
+                for corner in self.getVoxelCorners(index):
+                    if (corner - o).normed() * d > cos_cone:
+                        out.append(self.cellId(index))
+                        break
+        return out
+
+    def query_voxels_in_box(self, center, maxradius, minradius=None):
+        c, maxr = [int(v) for v in center], [int(v) for v in maxradius]
+        minr = [0, 0, 0] if minradius is None else [int(v) for v in minradius]
+        bmin = [0 if c[k] < minr[k] else c[k] - minr[k] for k in range(3)]
+        emin = [min(self._dims[k] - 1, c[k] + minr[k]) for k in range(3)]
+        lo = [0 if c[k] < maxr[k] else c[k] - maxr[k] for k in range(3)]
+        hi = [min(self._dims[k] - 1, c[k] + maxr[k]) for k in range(3)]
+        out = []
+        for i in range(lo[0], hi[0] + 1):
+            for j in range(lo[1], hi[1] + 1):
+                for k in range(lo[2], hi[2] + 1):
+                    index = (i, j, k)
+                    if any(index[a] <= bmin[a] or index[a] >= emin[a] for a in range(3)):
+                        out.append(self.cellId(index))
         return out
 
 
-class Point3Grid:
+class Point3Grid(Grid3Indexing):
     """PlantGL's Point3Grid: its arguments read here, its voxels and queries in C++
     (lpy/plantgl/point_grid.hpp says how it follows PlantGL's order)."""
 
@@ -105,6 +221,11 @@ class Point3Grid:
             else:
                 size = [(hi[k] - lo[k]) / float(b if b is not None else 10) for k in range(3)]
         self._grid = _PointGrid(self.points, size, lo, hi)  # the voxels and the queries, in C++
+        # Its cells' ids and indices, as PlantGL's grid has them (a voxel of 1e-5 at least, as the C++'s).
+        Grid3Indexing.__init__(self, [max(float(v), 1e-5) for v in size], lo, [max(a, b) for a, b in zip(lo, hi)])
+
+    def valuesize(self):
+        return self.size()
 
     def query_ball_point(self, centre, radius):
         return self._grid.ball(tuple(centre), float(radius))

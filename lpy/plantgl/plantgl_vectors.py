@@ -1,6 +1,11 @@
 # openalea.plantgl._vectors, a part of Sprout's PlantGL (openalea.plantgl.all gathers the
 # parts: plantgl.py): PlantGL's vectors, Matrix3 and the functions on vectors. Its own file
 # because every other part builds on it.
+#
+# Index of this file:
+#   [SECTION] Vectors
+#   [SECTION] PlantGL's members of each size of vector
+#   [SECTION] Matrix3 and the functions on vectors
 import math as _math
 
 # Every change of a vector in place counts here: a curve's evaluator in C++ is kept while the
@@ -8,6 +13,7 @@ import math as _math
 _changes = [0]
 
 
+# [SECTION] Vectors
 def _coordinate(i, n):
     """The property of coordinate i of a vector of n: read (0 past its size) and set in place."""
     return property((lambda s: s._v[i]) if i < n else (lambda s: 0.0), lambda s, value: s.__setitem__(i, value))
@@ -22,6 +28,8 @@ class _Vec:
     def __init__(self, *args):
         if len(args) == 1 and hasattr(args[0], '__len__'):
             args = tuple(args[0])
+        elif len(args) == 2 and hasattr(args[0], '__len__'):  # Vector4(Vector3(...), w), Vector3(Vector2(...), z)
+            args = tuple(args[0]) + (args[1],)
         v = [float(a) for a in args[:self._n]]
         self._v = v + [0.0] * (self._n - len(v))
 
@@ -128,9 +136,16 @@ class _Vec:
         return self / n if n > 0 else self._of(list(self._v))
 
     def anOrthogonalVector(self):
+        """PlantGL's: an axis where a coordinate is 0 (x first), else (-y, x, 0) / |v|."""
         x, y, z = (list(self._v) + [0.0, 0.0])[:3]
-        v = Vector3(-y, x, 0) if abs(x) > 1e-9 or abs(y) > 1e-9 else Vector3(0, -z, y)
-        return v.normed()
+        if abs(x) < 1e-5:
+            return Vector3(1, 0, 0)
+        if abs(y) < 1e-5:
+            return Vector3(0, 1, 0)
+        if abs(z) < 1e-5:
+            return Vector3(0, 0, 1)
+        n = _math.sqrt(x * x + y * y + z * z)
+        return Vector3(0, 0, 0) if n < 1e-10 else Vector3(-y / n, x / n, 0)
 
     def normalize(self):
         n = abs(self)
@@ -138,6 +153,32 @@ class _Vec:
             self._v = [a / n for a in self._v]
             _changes[0] += 1
         return n
+
+    def cwiseProduct(self, o):
+        return type(self)(*[a * b for a, b in zip(self._v, o)])
+
+    def _abs_coord(self, better):
+        """PlantGL's getMaxAbsCoord / getMinAbsCoord: the index kept along x, y, z, w."""
+        v = [abs(a) for a in self._v]
+        k = 0 if better(v[0], v[1]) else 1
+        for j in range(2, len(v)):
+            k = k if better(v[k], v[j]) else j
+        return k
+
+    def getMaxAbsCoord(self):
+        return self._abs_coord(lambda a, b: a > b)
+
+    def getMinAbsCoord(self):
+        return self._abs_coord(lambda a, b: a < b)
+
+    def isNormalized(self):
+        return abs(self.normSquared() - 1) < 1e-5
+
+    def isOrthogonalTo(self, o):
+        return abs(sum(a * b for a, b in zip(self._v, o))) < 1e-5
+
+    def isValid(self):
+        return all(_math.isfinite(a) for a in self._v)
 
     def __repr__(self):  # as PlantGL writes it: Vector3(0.123457,2,1e-07)
         return "%s(%s)" % (type(self).__name__, ",".join("%g" % a for a in self._v))
@@ -186,19 +227,101 @@ class Vector3(_Vec):
 class Vector4(_Vec):
     _n = 4
 
+    def project(self):
+        x, y, z, w = self._v
+        return Vector3(x / w, y / w, z / w)
+
+    def wtoxyz(self):
+        x, y, z, w = self._v
+        return Vector4(x * w, y * w, z * w, w)
+
 
 Vector2.OX, Vector2.OY, Vector2.ORIGIN = Vector2(1, 0), Vector2(0, 1), Vector2(0, 0)
 Vector3.OX, Vector3.OY, Vector3.OZ, Vector3.ORIGIN = Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 1), Vector3(0, 0, 0)
 Vector4.OX, Vector4.OY, Vector4.OZ, Vector4.OW = Vector4(1, 0, 0, 0), Vector4(0, 1, 0, 0), Vector4(0, 0, 1, 0), Vector4(0, 0, 0, 1)
+Vector4.ORIGIN = Vector4(0, 0, 0, 0)
 
 
+# [SECTION] PlantGL's members of each size of vector
+
+
+def _v3_project(self):
+    x, y, z = self._v
+    return Vector2(x / z, y / z)
+
+
+def _v3_reflect(self, v):
+    """PlantGL's Vector3::reflect as it is written: v - 2 (self.normed() . v) v."""
+    v = Vector3(v)
+    return v - v * (2. * (self.normed() * v))
+
+
+def _v3_refract(self, v, eta):
+    n, v = self.normed(), Vector3(v)
+    d = n * v
+    k = 1.0 - eta * eta * (1.0 - d * d)
+    return Vector3(0.0, 0.0, 0.0) if k < 0.0 else v * eta - n * (eta * d + _math.sqrt(k))
+
+
+def _v3_anisotropic_norm(self, factors):
+    x, y, z = self._v
+    f = tuple(factors)
+    return _math.sqrt(f[0] * x * x + f[1] * y * y + f[2] * z * z)
+
+
+def _v3_radial_anisotropic_norm(self, t, alpha, beta):
+    t = Vector3(t)
+    a = self * t
+    b = self - t * a
+    return _math.sqrt(a * a * alpha + beta * b.normSquared())
+
+
+Vector3.project, Vector3.reflect, Vector3.refract = _v3_project, _v3_reflect, _v3_refract
+Vector3.anisotropicNorm, Vector3.radialAnisotropicNorm = _v3_anisotropic_norm, _v3_radial_anisotropic_norm
+
+
+class _Polar:
+    """Vector2.Polar(radius, theta): Vector2(Vector2.Polar(r, a)) is (r cos a, r sin a)."""
+
+    def __init__(self, radius, theta):
+        self.radius, self.theta = float(radius), float(theta)
+
+
+Vector2.Polar = _Polar
+_vector2_init = Vector2.__init__
+
+
+def _vector2_init_polar(self, *args):
+    if len(args) == 1 and isinstance(args[0], _Polar):
+        p = args[0]
+        args = (p.radius * _math.cos(p.theta), p.radius * _math.sin(p.theta))
+    _vector2_init(self, *args)
+
+
+Vector2.__init__ = _vector2_init_polar
+
+
+# [SECTION] Matrix3 and the functions on vectors
 class Matrix3:
-    """A 3x3 matrix (rows), with PlantGL's rotations."""
+    """A 3x3 matrix (kept as rows), with PlantGL's rotations. Matrix3(9 values row by row) or
+    Matrix3(v0, v1, v2): three vectors as its columns, as PlantGL's constructor takes them."""
 
-    def __init__(self, *rows):
-        if len(rows) == 9:
-            rows = (rows[0:3], rows[3:6], rows[6:9])
-        self.rows = [list(map(float, r)) for r in rows] if rows else [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+    def __init__(self, *args):
+        if len(args) == 9:
+            rows = (args[0:3], args[3:6], args[6:9])
+        elif len(args) == 3:
+            rows = [[float(tuple(v)[i]) for v in args] for i in range(3)]
+        elif not args:
+            rows = [[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]]
+        else:
+            raise TypeError("Matrix3(): 9 values or 3 column vectors")
+        self.rows = [list(map(float, r)) for r in rows]
+
+    @classmethod
+    def _of_rows(cls, rows):
+        m = cls.__new__(cls)
+        m.rows = [list(map(float, r)) for r in rows]
+        return m
 
     @staticmethod
     def axisRotation(axis, angle):
@@ -219,7 +342,7 @@ class Matrix3:
 
     def __mul__(self, o):
         if isinstance(o, Matrix3):
-            return Matrix3(*[[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
+            return Matrix3._of_rows([[sum(self.rows[i][k] * o.rows[k][j] for k in range(3)) for j in range(3)] for i in range(3)])
         if isinstance(o, _Vec) and len(o._v) == 3:  # sum() of each row's products, written out
             (a, b, c), (d, e, f), (g, h, i) = self.rows
             x, y, z = o._v
@@ -227,7 +350,97 @@ class Matrix3:
         return Vector3(*[sum(self.rows[i][k] * o[k] for k in range(3)) for i in range(3)])
 
     def transpose(self):
-        return Matrix3(*[[self.rows[j][i] for j in range(3)] for i in range(3)])
+        return Matrix3._of_rows([[self.rows[j][i] for j in range(3)] for i in range(3)])
+
+    def det(self):
+        (a, b, c), (d, e, f), (g, h, i) = self.rows
+        return a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
+
+    def inverse(self):
+        """The inverse (the adjugate over the determinant, as PlantGL's Matrix3::inverse)."""
+        (a, b, c), (d, e, f), (g, h, i) = self.rows
+        adj = [[e * i - f * h, c * h - b * i, b * f - c * e],
+               [f * g - d * i, a * i - c * g, c * d - a * f],
+               [d * h - e * g, b * g - a * h, a * e - b * d]]
+        det = a * adj[0][0] + b * adj[1][0] + c * adj[2][0]
+        if det == 0:
+            raise ValueError("Matrix3.inverse: the matrix is singular")
+        return Matrix3._of_rows([[x / det for x in r] for r in adj])
+
+    def __repr__(self):  # as PlantGL writes it, a row a line
+        return "Matrix3( %s )" % " ,\n         ".join(", ".join("%g" % x for x in r) for r in self.rows)
+
+    __str__ = __repr__
+
+    def data(self):
+        return [x for r in self.rows for x in r]
+
+    def trace(self):
+        return self.rows[0][0] + self.rows[1][1] + self.rows[2][2]
+
+    def getDiagonal(self):
+        return Vector3(self.rows[0][0], self.rows[1][1], self.rows[2][2])
+
+    def adjoint(self):
+        (a, b, c), (d, e, f), (g, h, i) = self.rows
+        return Matrix3._of_rows([[e * i - f * h, c * h - b * i, b * f - c * e],
+                                 [f * g - d * i, a * i - c * g, c * d - a * f],
+                                 [d * h - e * g, b * g - a * h, a * e - b * d]])
+
+    def isOrthogonal(self):
+        c = [self.getColumn(j) for j in range(3)]
+        return c[0].isOrthogonalTo(c[1]) and c[0].isOrthogonalTo(c[2]) and c[1].isOrthogonalTo(c[2])
+
+    def isSingular(self):
+        return abs(self.det()) < 1e-10
+
+    def isValid(self):
+        return all(_math.isfinite(x) for r in self.rows for x in r)
+
+    @staticmethod
+    def scaling(s):
+        x, y, z = (s, s, s) if isinstance(s, (int, float)) else tuple(s)[:3]
+        return Matrix3(x, 0, 0, 0, y, 0, 0, 0, z)
+
+    @staticmethod
+    def eulerRotationZYX(angle):
+        ax, ay, az = tuple(angle)[:3]
+        cz, sz, cy, sy, cx, sx = _math.cos(az), _math.sin(az), _math.cos(ay), _math.sin(ay), _math.cos(ax), _math.sin(ax)
+        cxsy, sxsy = cx * sy, sx * sy
+        return Matrix3(cx * cy, cxsy * sz - sx * cz, cxsy * cz + sx * sz, sx * cy, cx * cz + sxsy * sz, sxsy * cz - cx * sz,
+                       -sy, cy * sz, cy * cz)
+
+    @staticmethod
+    def eulerRotationXYZ(angle):
+        ax, ay, az = tuple(angle)[:3]
+        cx, sx, cy, sy, cz, sz = _math.cos(ax), _math.sin(ax), _math.cos(ay), _math.sin(ay), _math.cos(az), _math.sin(az)
+        cxsz, sxsy = cx * sz, sx * sy
+        return Matrix3(cy * cz, -cxsz * cy + sxsy, sx * cy * sz + cx * sy, sz, cz * cx, -cz * sx,
+                       -sy * cz, cxsz * sy + sx * cy, -sxsy * sz + cx * cy)
+
+    def eulerAnglesZYX(self):
+        m = self.data()
+        b = _math.asin(-m[6])
+        if b < _math.pi / 2:
+            if b > -_math.pi / 2:
+                a, c = _math.atan2(m[3], m[0]), _math.atan2(m[7], m[8])
+            else:
+                a, c = _math.atan2(-m[1], m[2]), 0.0
+        else:
+            a, c = -_math.atan2(-m[1], m[2]), 0.0
+        return Vector3(a, b, c)
+
+    def eulerAnglesXYZ(self):
+        m = self.data()
+        c = _math.asin(m[3])
+        if c < _math.pi / 2:
+            if c > -_math.pi / 2:
+                b, a = _math.atan2(-m[6], m[0]), _math.atan2(-m[5], m[4])
+            else:
+                b, a = _math.atan2(m[2], m[1]), 0.0
+        else:
+            b, a = _math.atan2(m[2], -m[1]), 0.0
+        return Vector3(a, b, c)
 
     def getColumn(self, j):
         return Vector3(*[self.rows[i][j] for i in range(3)])

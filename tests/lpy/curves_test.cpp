@@ -142,11 +142,12 @@ TEST(Curves, ExactlyThePythons) {
     const Quantised f = quantise(curve2D({0, 0.5, 1, 0.3, 1.5, 1, 0.7, 0.2, 1, 1, 1, 1}), 100);
     EXPECT_EQ(f(0.123), 0.7849940501431061);
     EXPECT_EQ(f.values[37], 0.8852704638720184);
-    // A weight other than 1 inside: the Python's patch is not PlantGL's there (PlantGL 3.22
-    // gives (0.66711, 1.16644, 0.88881)); kept as the Python drew it.
+    // A weight other than 1 inside: PlantGL keeps the weights along u (homogeneous
+    // coordinates), as the patch now does (issue 51; the Python before gave (0.6, 1.17276,
+    // 0.73563)). PlantGL 3.22.3's numbers, printed by the reference.
     const NurbsPatch patch({{0, 0, 0, 1, 0, 1, 0, 1, 0, 2, 0, 1}, {1, 0, 1, 1, 1, 1, 2, 2, 1, 2, 1, 1}, {2, 0, 0, 1, 2, 1, 1, 1, 2, 2, 0, 1}},
                            2, 2, {}, {});
-    expectSame(patch.pointAt(0.3, 0.6), 0.6, 1.1727567567567565, 0.7356324324324324);
+    expectPoint(patch.pointAt(0.3, 0.6), 0.6671105193075899, 1.1664447403462048, 0.8888149134487351);
 }
 
 TEST(Curves, RefusesWhatThePythonCannotIndex) {

@@ -9,7 +9,7 @@ REF_PYTHON is the reference L-Py's interpreter (ROOT/venv/bin/python after
 derived by tests/reference/lpy_derive.py in a process of its own, twice by L-Py (a model whose
 string changes from run to run in L-Py itself is set apart) and once by Sprout's openalea.lpy,
 with Python's and numpy's random seeded alike. Strings are compared module by module with
-numbers equal to 1e-6 (relative); where they differ, both derive again one step at a time and
+numbers equal to 1e-9 (relative; --tolerance); where they differ, both derive again one step at a time and
 the first step and module that differ are named. The scenes' shape counts are compared too.
 
 Sets: share (../shared/corpus/lpy, L-Py's share/), tests (../shared/corpus/lpy-tests), own
@@ -66,14 +66,17 @@ def derive(python, path, build=None, steps=False, timeout=120):
 TOKEN = re.compile(r"Vector[234]\([^()]*\)|<[\w.]*?(\w+) object at 0x[0-9a-f]+>|\d+\.\d*(?:[eE][-+]?\d+)?|\d+(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?|.", re.S)
 
 
+TOLERANCE = 1e-9  # relative, with 1 as the least scale (--tolerance)
+
+
 def tokens(s):
     return [m.group(0) for m in TOKEN.finditer(s)]
 
 
 def same_vector(a, b):
     """Vectors as PlantGL writes them (6 significant digits each): equal when each component is
-    within 1e-6 of the vector's size, or within one unit of its last written digit (Sprout's
-    turtle works in single precision, whose rounding can move that digit)."""
+    within the tolerance of the vector's size (both turtles work in double precision: the
+    written digits are the same but where a rounding falls between them)."""
     try:
         x = [float(v) for v in a[a.index("(") + 1:-1].split(",")]
         y = [float(v) for v in b[b.index("(") + 1:-1].split(",")]
@@ -85,7 +88,7 @@ def same_vector(a, b):
     for u, v in zip(x, y):
         m = max(abs(u), abs(v))
         digit = 10 ** (math.floor(math.log10(m)) - 5) if m > 0 else 0.0
-        if abs(u - v) > max(1e-6 * scale, 1.01 * digit):
+        if abs(u - v) > max(TOLERANCE * scale, 1.01 * digit if TOLERANCE >= 1e-6 else 0.0):
             return False
     return True
 
@@ -109,11 +112,11 @@ def same_number(a, b):
         x, y = float(a), float(b)
     except ValueError:
         return a == b
-    return abs(x - y) <= 1e-6 * max(1.0, abs(x), abs(y))
+    return abs(x - y) <= TOLERANCE * max(1.0, abs(x), abs(y))
 
 
 def first_difference(a, b):
-    """None when the strings hold the same modules (numbers to 1e-6), else (offset in a, a's
+    """None when the strings hold the same modules (numbers to the tolerance), else (offset in a, a's
     text there, b's text there)."""
     ta, tb = tokens(a), tokens(b)
     offset = 0
@@ -184,7 +187,10 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--report", default="")
     ap.add_argument("--at-least", type=float, default=0.0)
+    ap.add_argument("--tolerance", type=float, default=1e-9)
     args = ap.parse_args()
+    global TOLERANCE
+    TOLERANCE = args.tolerance
     if not os.access(args.reference, os.X_OK):
         print("no reference L-Py at %s: build it with ../shared/tools/build-lpy-reference.sh (skipped)" % args.reference)
         return 77
