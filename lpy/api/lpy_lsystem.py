@@ -186,7 +186,8 @@ class Lsystem:
         self._session.debugger = None if self._debugger is None else _Told(self._debugger)
 
     def getDebugger(self):
-        return self._debugger
+        # L-Py's binding has no converter for what it would give.
+        raise TypeError("No to_python (by-value) converter found for C++ type: PGL::RefCountPtr<LPY::Lsystem::Debugger>")
 
     def hasDebugger(self):
         return self._debugger is not None
@@ -205,7 +206,7 @@ class Lsystem:
         return self._listing(lambda r: r.code())
 
     def __str__(self):
-        modules = self._context._state.get('declared') or []
+        modules = self._session.moduleNames() if self._session is not None else []
         head = 'Axiom: %s\n' % self.axiom + ('module %s\n' % ','.join(modules) if modules else '')
         return head + self._listing(str, False)
 
@@ -417,7 +418,7 @@ class Lsystem:
 
     def __call__(self, lstring, nbsteps=None):
         # L-Py's __init__.py calls derive(0, nbsteps, lstring), which no derive takes.
-        raise TypeError("Python argument types in Lsystem.derive(Lsystem, int, int, %s) did not match C++ signature"
+        raise TypeError("Python argument types in\n    Lsystem.derive(Lsystem, int, int, %s)\ndid not match C++ signature"
                         % type(lstring).__name__)
 
     def partial_derivation(self, workstring, starting_position, length):
@@ -520,14 +521,14 @@ class Lsystem:
         lstring = self._lstring(lstring)
         if not len(lstring):
             return
+        if _lpy.get_plotter() is None:
+            raise NotImplementedError("Lsystem.stepInterpretation draws in L-Py's viewer, module by module: register a "
+                                      "plotter (openalea.lpy.registerPlotter) to be given each scene")
         with self._context:
             s = self._need()
             origins = s.predefinedOrigins(lstring)
             scene = s.scene(lstring)
         plotter = _lpy.get_plotter()
-        if plotter is None:
-            _show_in_notebook(scene)
-            return
         from openalea.plantgl.all import Scene
         dt = self._context.animation_timestep or 0
         for k, at in enumerate(origins):

@@ -16,40 +16,42 @@ from _sprout_lpy import Lstring, _written
 import openalea.lpy as _lpy
 from openalea.lpy._lsystem import Lsystem
 
-__all__ = ['LsysRule', 'LpyDebugger', 'LsystemIterator', 'eDirection', 'eForward', 'eBackward',
+__all__ = ['LsysRule', 'ArgList', 'LpyDebugger', 'LsystemIterator', 'eDirection', 'eForward', 'eBackward',
            'eRuleType', 'eProduction', 'eDecomposition', 'eInterpretation']
 
 
 # [SECTION] enums
 class _Enum(int):
-    """A Boost.Python enum: an int with a name; the class's `names` and `values` list them."""
+    """A Boost.Python enum: an int; its named values are the class's attributes (with a
+    `name`), listed by `names` and `values`; a value made by calling the class has no name."""
+    __slots__ = ()
 
-    def __new__(cls, value):
-        found = cls.values.get(int(value))
-        return found if found is not None else int.__new__(cls, value)
+    def _own(self):
+        return type(self).values.get(int(self)) is self
 
     @property
     def name(self):
-        return self.__dict__.get('_name')
+        if not self._own():
+            raise AttributeError("'%s' object has no attribute 'name'" % type(self).__name__)
+        return type(self)._names[int(self)]
 
     def __repr__(self):
-        own = self.__dict__.get('_name')
         kind = 'openalea.lpy.__lpy_kernel__.' + type(self).__name__
-        return kind + '.' + own if own else '%s(%d)' % (kind, int(self))
+        return kind + '.' + self.name if self._own() else '%s(%d)' % (kind, int(self))
 
     def __str__(self):
-        return self.__dict__.get('_name') or str(int(self))
+        return self.name if self._own() else repr(self)
 
     def __reduce__(self):
-        return (type(self), (int(self),))
+        return (getattr, (type(self), self.name)) if self._own() else (type(self), (int(self),))
 
 
 def _enum(name, *items):
-    cls = type(name, (_Enum,), {'names': {}, 'values': {}, '__module__': 'openalea.lpy'})
+    cls = type(name, (_Enum,), {'__slots__': (), 'names': {}, 'values': {}, '_names': {},
+                                '__module__': 'openalea.lpy.__lpy_kernel__'})
     for value, item in enumerate(items):
         obj = int.__new__(cls, value)
-        obj._name = item
-        cls.names[item], cls.values[value] = obj, obj
+        cls.names[item], cls.values[value], cls._names[value] = obj, obj, item
         setattr(cls, item, obj)
     return cls
 
@@ -64,10 +66,10 @@ eProduction, eDecomposition, eInterpretation = eRuleType.eProduction, eRuleType.
 class LpyDebugger:
     """What Lsystem.setDebugger takes (L-Py's Lsystem::Debugger), to derive from: told, at each
     production step, of its string (begin), each rule that matched and produced (total_match),
-    matched and produced nothing (partial_match) or raised (error_match: True takes the error,
-    and the rule is passed), each module copied (identity) and the result (end). Positions are
-    indices in the step's string; `dest` is the new string so far. With alwaysStop False, only
-    the matches at a breakpoint are told: a code line within a rule, a position of the string."""
+    matched and produced nothing (partial_match), each module copied (identity) and the result
+    (end). Positions are indices in the step's string; `dest` is the new string so far. With
+    alwaysStop False, only the matches at a breakpoint are told: a code line within a rule, a
+    position of the string. (L-Py's binding never calls error_match: a rule's error goes on.)"""
 
     def __init__(self):
         self.alwaysStop = True
@@ -157,7 +159,7 @@ class _Told:
         return False
 
     def begin(self, src, direction):
-        self.d.begin(src, eDirection(direction))
+        self.d.begin(src, eDirection.values[direction])
 
     def end(self, result):
         self.d.end(result)
@@ -170,14 +172,55 @@ class _Told:
         if self._stop(beg, end, rule):
             self.d.partial_match(beg, end, dest, rule, args)
 
-    def error_match(self, beg, end, dest, rule, args, trace):
-        return self.d.error_match(beg, end, dest, rule, args, trace)
-
     def identity(self, pos, dest):
         if self._stop(pos, pos):
             self.d.identity(pos, dest)
 
 # [SECTION] LsysRule
+class ArgList:
+    """The values a rule's header binds (L-Py's ArgList, a C++ vector of Python objects):
+    ArgList(), ArgList(size[, value])."""
+
+    def __init__(self, size=0, value=None):
+        self._items = [value] * _uint(size)
+
+    def append(self, value):
+        self._items.append(value)
+
+    def extend(self, values):
+        self._items.extend(values)
+
+    def __len__(self):
+        return len(self._items)
+
+    def __getitem__(self, i):
+        return ArgList._of(self._items[i]) if isinstance(i, slice) else self._items[i]
+
+    def __setitem__(self, i, value):
+        self._items[i] = value
+
+    def __delitem__(self, i):
+        del self._items[i]
+
+    def __iter__(self):
+        return iter(self._items)
+
+    def __contains__(self, value):
+        return value in self._items
+
+    def __repr__(self):
+        return repr(self._items)
+
+    def __str__(self):
+        return str(self._items)
+
+    @classmethod
+    def _of(cls, values):
+        out = cls()
+        out._items = list(values)
+        return out
+
+
 def _next_token(text, i):
     """L-Py's next_token: past a quoted string or a parenthesised group, else one character."""
     n = len(text)
@@ -300,9 +343,8 @@ class LsysRule:
     (Lsystem.productionRule...)."""
 
     def __init__(self, id=0, group=0, prefix='p'):
-        self._prefix = str(prefix)[:1]
         self.clear()
-        self._id, self._gid = _uint(id), _uint(group)
+        self._id, self._gid, self._prefix = _uint(id), _uint(group), str(prefix)[:1]
 
     def clear(self):
         """Forgets the rule (and its id, group and prefix)."""
@@ -334,12 +376,16 @@ class LsysRule:
 
     def _settle(self):
         """L-Py's optimisation level 1: an arrow rule whose production has only constant
-        arguments is static (its production made once)."""
-        d = self._definition
+        arguments is static (its production made once): its header's variables are unnamed
+        ('-'). Gives whether that changed the rule's function name."""
+        d, named = self._definition, self.functionName()
         if not self._static and d.startswith(' --> ') and '$' not in d:
             self._static = all(_constant(a) for _, args in _written(d[5:]) for a in args)
         if self._static:
             self._names = []
+            self._parts = [''.join(name + ('(%s)' % ','.join('-' if a.strip().isidentifier() else a for a in args) if args else '')
+                                   for name, args in _written(p)) if p else '' for p in self._parts]
+        return self.functionName() != named
 
     def set(self, code):
         """Reads the rule's text ('A(x) < B(y) --> C(x+y)', or a header ':' and a body) and
@@ -365,12 +411,14 @@ class LsysRule:
         section = {'p': 'production', 'd': 'decomposition', 'h': 'interpretation'}.get(self._prefix, 'production')
         lsys = Lsystem()
         filter = '' if self._consider is None else '%s: %s\n' % self._consider
-        lsys.set('%s%s:\n%s\nendlsystem\n' % (filter, section, self._source.rstrip('\n')))
+        head = 'production:\n' + (section + ':\n' if section != 'production' else '')
+        lsys.set('%s%s%s\nendlsystem\n' % (filter, head, self._source.rstrip('\n')))
         if lsys._session.ruleCount() != 1:
             raise ValueError("LsysRule.set: one rule, e.g. 'F --> F[+F]F'")
-        self._lsystem, self._index, self._compiled = lsys, 0, True
         self._names = list(lsys._session.rule(0)['names'])
-        self._settle()
+        if self._settle():  # L-Py looks its function up by the name it had before
+            raise ValueError("Compilation failed.")
+        self._lsystem, self._index, self._compiled = lsys, 0, True
 
     def isCompiled(self):
         return self._compiled
@@ -407,7 +455,9 @@ class LsysRule:
         return self._pattern(4)
 
     def definition(self):
-        return self._definition
+        # L-Py's binding gives a C++ string by reference, which it cannot convert.
+        raise TypeError("No Python class registered for C++ class std::__cxx11::basic_string<char, std::char_traits<char>, "
+                        "std::allocator<char> >")
 
     def nbContexts(self):
         return sum(1 for k in (0, 1, 3, 4) if self._parts[k])
@@ -458,15 +508,18 @@ class LsysRule:
 
     # -- matching and applying -----------------------------------------------------------
     def __call__(self, args=None):
-        """The rule's production for these values (its parameters'), or None when it produces
-        nothing."""
+        """The rule's production, or None when it produces nothing. L-Py's binding reads no
+        value from `args` (it iterates them with Python 2's next): a rule with parameters
+        says it was given none."""
+        return self._apply([], args is not None)
+
+    def _apply(self, values, listed):
         lsys = self._need()
-        values = [] if args is None else list(args)
-        if len(values) != len(self._names) and not self._static:
-            raise ValueError("%s takes exactly %d argument(s) (%d given).\n" % (self.name(), len(self._names), len(values))
-                             + (str(values) if args is not None else ''))
         if self._static:
             values = [None] * lsys._session.rule(self._index)['parameters']
+        elif len(values) != len(self._names):
+            raise ValueError("%s takes exactly %d argument(s) (%d given).\n" % (self.name(), len(self._names), len(values))
+                             + (str(list(values)) if listed else ''))
         with lsys._context:
             return lsys._session.apply(self._index, tuple(values))
 
@@ -481,7 +534,8 @@ class LsysRule:
             raise IndexError("index out of range")
         lsys = self._need()
         with lsys._context:
-            return lsys._session.match(self._index, s, pos, forward)
+            found = lsys._session.match(self._index, s, pos, forward)
+        return found if found is False else (found[0], ArgList._of(found[1]))
 
     def match(self, lstring, pos=0, dest=None):
         """(the position after the match, the values it binds), or False."""
@@ -493,8 +547,11 @@ class LsysRule:
         return self._match(lstring, pos, False)
 
     def applyTo(self, lstring, args):
-        """Appends the production for these values to `lstring`; whether the rule produced."""
-        out = self(args)
+        """Appends the production for these values (an ArgList, as match gives them) to
+        `lstring`; whether the rule produced."""
+        if not isinstance(args, ArgList) or not isinstance(lstring, Lstring):
+            raise TypeError("LsysRule.applyTo(Lstring, ArgList)")
+        out = self._apply(list(args), True)
         if out is None:
             return False
         if len(out) and out[0].name in ('*', 'None'):
@@ -507,10 +564,11 @@ class LsysRule:
         src, out, i = self._lstring(lstring), Lstring(''), 0
         while i < len(src):
             found = self.match(src, i)
-            if found is False or not self.applyTo(out, found[1]):
+            if found is False:
                 out.append(src[i])
                 i += 1
-            else:
+            else:  # as L-Py's: a rule that produces nothing drops what it matched
+                self.applyTo(out, found[1])
                 i = max(found[0], i + 1)
         return out
 

@@ -244,6 +244,14 @@ public:
     }
     size_t ruleCount() const { return m_engine->translation().rules.size(); }
 
+    // The model's own module classes (not L-Py's predefined ones), as they came.
+    std::vector<std::string> moduleNames() const {
+        std::vector<std::string> out;
+        const ModuleClasses& c = m_engine->classes();
+        for (size_t i = 0; i < c.size(); ++i)
+            if (!c.isPredefined(int(i)) && c.used(int(i))) out.push_back(c.name(int(i)));
+        return out;
+    }
     const std::string& python() const { return m_python; }  // the code as Python runs it (set(code, debug=True))
     const std::vector<std::string>& declared() const { return m_declared; }
 
@@ -291,7 +299,8 @@ void defineSession(py::module_& m) {
         .def("ruleCount", &Session::ruleCount)
         .def("match", &Session::match)
         .def_property_readonly("python", &Session::python)
-        .def("declared", &Session::declared);
+        .def("declared", &Session::declared)
+        .def("moduleNames", &Session::moduleNames);
 }
 
 }  // namespace sprout::lpy

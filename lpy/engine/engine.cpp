@@ -268,7 +268,7 @@ void Engine::predictGrowth(const LString& s, int steps) const {
 }
 
 py::object Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
-                              const LString* result, const py::tuple* args, py::handle trace) {
+                              const LString* result, const py::tuple* args) {
     // The new string so far, as L-Py's debugger sees it: what was built, with what the rule made.
     auto dest = std::make_shared<LString>();
     if (forward) {
@@ -285,7 +285,6 @@ py::object Engine::debugMatch(const char* what, const Rule* r, size_t begin, siz
                                                                                         py::arg("ruleid") = int(r - m_tr.rules.data()));
     py::list values = args ? py::list(*args) : py::list();
     if (result) return debugger.attr(what)(begin, end, d, result->size(), rule, values);
-    if (trace) return debugger.attr(what)(begin, end, d, rule, values, trace);
     return debugger.attr(what)(begin, end, d, rule, values);
 }
 

@@ -136,10 +136,8 @@ private:
     void endEach(LString& s);
     void insertSelection(LString& s);
     // Tells the debugger of a match (total_match, partial_match) or of a module copied (identity).
-    // A `trace` (error_match: the exception's type, value and traceback) is passed last; gives
-    // what the debugger returned.
     py::object debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
-                          const LString* result, const py::tuple* args, py::handle trace = py::handle());  // the EndEach hook, with a scene when it takes two arguments
+                          const LString* result, const py::tuple* args);  // the EndEach hook, with a scene when it takes two arguments
     // Before the first step: the growth budget's prediction, where no hook or Python can
     // steer the steps between them.
     void predictGrowth(const LString& s, int steps) const;

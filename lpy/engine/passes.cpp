@@ -25,16 +25,9 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     m_matcher.body() = Matcher::BodyContext{&s, leftEnd, rightEnd, r.filter};
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
     const size_t start = forward ? at : at + 1 - len;
-    if (!ret) {
-        py::error_already_set error;
-        // L-Py's debugger may take a body's error (error_match returns True): the rule did not
-        // apply, the next one is tried.
-        if (debugger && r.kind == RuleKind::Production) {
-            py::object trace = py::make_tuple(error.type(), error.value(), error.trace());
-            if (py::bool_(debugMatch("error_match", &r, start, start + len, forward, built, nullptr, &args, trace))) return false;
-        }
-        throw error;
-    }
+    // (L-Py's debugger is never asked error_match: its binding looks the method up with the
+    // body's error pending, finds none, and the error goes on.)
+    if (!ret) throw py::error_already_set();
     if (!m_produced && m_buffer.empty()) {
         if (ret.is_none()) {  // a body that produced nothing: the next rule is tried
             if (debugger && r.kind == RuleKind::Production) debugMatch("partial_match", &r, start, start + len, forward, built, nullptr, &args);
