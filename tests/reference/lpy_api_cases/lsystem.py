@@ -461,9 +461,12 @@ def rule(code, *init):
 
     if not _context:
         _context.append(LsysContext())
-        _context[0].makeCurrent()
-    r = LsysRule(*init)
-    r.set(code)
+    _context[0].makeCurrent()
+    try:
+        r = LsysRule(*init)
+        r.set(code)
+    finally:
+        _context[0].done()  # (the real L-Py hangs at exit with a context left current)
     return r
 
 
@@ -577,7 +580,7 @@ def rule_applied_to_a_list():
 def rule_match_gives_an_arglist():
     from openalea.lpy import Lstring
 
-    found = rule("A(x) --> B").match(Lstring("A(3)"))
+    found = rule("A(x) --> B(x)").match(Lstring("A(3)"))
     return [found[0], str(found[1]), repr(found[1]), list(found[1]), type(found[1]).__name__]
 
 
@@ -639,3 +642,55 @@ def parsing_lstring2py():
     names = {"ParamModule": ParamModule}  # what a model's namespace holds (L-Py's ids need none)
     text = "F(1)+(30)[F(2, 3)]f"
     return [str(AxialTree(eval(lstring2py(text), names))), len(eval(LpyParsing.lstring2py("F[+F]"), names))]
+
+
+# -- more of Lsystem -----------------------------------------------------------------------------
+@case("Lsystem.axiom", "Lsystem.setCode", "Lsystem.set", "Lsystem.compile", "Lsystem.context", "Lsystem.execContext",
+      "Lsystem.makeCurrent", "Lsystem.isCurrent", "Lsystem.done", "Lsystem.iterate", "Lsystem.homomorphism",
+      "Lsystem.interpret")
+def lsystem_basics():
+    from openalea.lpy import Lsystem
+
+    lsys = Lsystem()
+    given = lsys.setCode(MODEL)
+    out = [given, str(lsys.axiom), lsys.compile(), type(lsys.context()) is type(lsys.execContext()), lsys.isCurrent()]
+    lsys.makeCurrent()
+    out.append(lsys.isCurrent())
+    lsys.done()
+    out.append(lsys.isCurrent())
+    lsys.axiom = "A(7) D"
+    derived = lsys.iterate(2)
+    out += [str(lsys.axiom), str(derived), str(lsys.homomorphism(derived)), str(lsys.interpret(derived))]
+    lsys.set("Axiom: B\n")
+    return out + [str(lsys.axiom), lsys.derivationLength]
+
+
+@case("Lsystem.sceneInterpretation", "Lsystem.getLastComputedScene")
+def lsystem_scenes():
+    lsys = lsystem("Axiom: F F [+ F] X F(2)\n")
+    scene = lsys.sceneInterpretation(lsys.axiom)
+    return [len(scene), lsys.getLastComputedScene() is None, sorted(sh.id for sh in scene)]
+
+
+@case("Lsystem.getLastComputedScene")
+def lsystem_last_scene_of_end_each():
+    code = "def EndEach(lstring, scene):\n    pass\nAxiom: F\nderivation length: 2\nproduction:\nF --> FF\n"
+    lsys = lsystem(code)
+    lsys.derive()
+    scene = lsys.getLastComputedScene()
+    return [scene is None, len(scene) if scene is not None else None]
+
+
+@case("Lsystem.animate", "Lsystem.plot")
+def lsystem_animated_with_a_plotter():
+    import openalea.lpy as lpy
+
+    lsys = lsystem("Axiom: F\nderivation length: 3\nproduction:\nF --> F F\n")
+    plotter = Plotter()
+    lpy.registerPlotter(plotter)
+    try:
+        last = lsys.animate(0.001)
+        lsys.plot(last)
+    finally:
+        lpy.cleanPlotter()
+    return [str(last), plotter.plotted, lsys.getLastIterationNb()]
