@@ -6,7 +6,6 @@
 #   [SECTION] files, materials and scenes
 #   [SECTION] Lsystem
 
-import io as _io
 import os as _os
 
 from _sprout_lpy import _Session, Lstring

@@ -1,12 +1,12 @@
 # openalea.lpy's names for matching and reading, as L-Py defines them (src/wrapper/
 # export_stringmatching.cpp, export_parser.cpp, lpy_parser.cpp's LpyParsing): the map between a
 # string's positions and its successor's, module matching methods, module declarations, the
-# parser's constants and lstrings as L-Py's Python. Rules and the debugger are in
+# parser's constants and lstrings as L-Py's Python, the values a rule's header binds (ArgList). Rules and the debugger are in
 # lpy_rules.py (openalea.lpy._rules).
 from _sprout_lpy import _written
 import openalea.lpy as _lpy
 
-__all__ = ['StringMatching', 'PatternModule', 'LpyParsing', 'declare', 'undeclare', 'lstring2py']
+__all__ = ['StringMatching', 'PatternModule', 'LpyParsing', 'ArgList', 'declare', 'undeclare', 'lstring2py']
 
 
 def declare(names):
@@ -92,6 +92,52 @@ def _atof(text):
     import re
     m = re.match(r'\s*[-+]?(\d+\.?\d*([eE][-+]?\d+)?|\.\d+([eE][-+]?\d+)?|inf(inity)?|nan)', text, re.I)
     return float(m.group(0)) if m else 0.0
+
+
+class ArgList:
+    """The values a rule's header binds (L-Py's ArgList, a C++ vector of Python objects):
+    ArgList(), ArgList(size[, value])."""
+
+    def __init__(self, size=0, value=None):
+        if isinstance(size, bool) or not isinstance(size, int) or size < 0:
+            raise TypeError("ArgList(size[, value]): a size from 0 on")
+        self._items = [value] * size
+
+    def append(self, value):
+        self._items.append(value)
+
+    def extend(self, values):
+        self._items.extend(values)
+
+    def __len__(self):
+        return len(self._items)
+
+    def __getitem__(self, i):
+        return ArgList._of(self._items[i]) if isinstance(i, slice) else self._items[i]
+
+    def __setitem__(self, i, value):
+        self._items[i] = value
+
+    def __delitem__(self, i):
+        del self._items[i]
+
+    def __iter__(self):
+        return iter(self._items)
+
+    def __contains__(self, value):
+        return value in self._items
+
+    def __repr__(self):
+        return repr(self._items)
+
+    def __str__(self):
+        return str(self._items)
+
+    @classmethod
+    def _of(cls, values):
+        out = cls()
+        out._items = list(values)
+        return out
 
 
 class StringMatching:

@@ -15,8 +15,9 @@
 from _sprout_lpy import Lstring, _written
 import openalea.lpy as _lpy
 from openalea.lpy._lsystem import Lsystem
+from openalea.lpy._matching import ArgList
 
-__all__ = ['LsysRule', 'ArgList', 'LpyDebugger', 'LsystemIterator', 'eDirection', 'eForward', 'eBackward',
+__all__ = ['LsysRule', 'LpyDebugger', 'LsystemIterator', 'eDirection', 'eForward', 'eBackward',
            'eRuleType', 'eProduction', 'eDecomposition', 'eInterpretation']
 
 
@@ -177,50 +178,6 @@ class _Told:
             self.d.identity(pos, dest)
 
 # [SECTION] LsysRule
-class ArgList:
-    """The values a rule's header binds (L-Py's ArgList, a C++ vector of Python objects):
-    ArgList(), ArgList(size[, value])."""
-
-    def __init__(self, size=0, value=None):
-        self._items = [value] * _uint(size)
-
-    def append(self, value):
-        self._items.append(value)
-
-    def extend(self, values):
-        self._items.extend(values)
-
-    def __len__(self):
-        return len(self._items)
-
-    def __getitem__(self, i):
-        return ArgList._of(self._items[i]) if isinstance(i, slice) else self._items[i]
-
-    def __setitem__(self, i, value):
-        self._items[i] = value
-
-    def __delitem__(self, i):
-        del self._items[i]
-
-    def __iter__(self):
-        return iter(self._items)
-
-    def __contains__(self, value):
-        return value in self._items
-
-    def __repr__(self):
-        return repr(self._items)
-
-    def __str__(self):
-        return str(self._items)
-
-    @classmethod
-    def _of(cls, values):
-        out = cls()
-        out._items = list(values)
-        return out
-
-
 def _next_token(text, i):
     """L-Py's next_token: past a quoted string or a parenthesised group, else one character."""
     n = len(text)

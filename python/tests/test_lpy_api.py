@@ -146,24 +146,29 @@ def test_lsystem_rules_partial_derivation_and_queries():
 
 
 def test_lsysrule_alone_and_the_debugger():
-    from openalea.lpy import LpyDebugger
+    from openalea.lpy import ArgList, LpyDebugger
 
     rule = LsysRule()
     rule.set("A(x) < B(y) --> C(x+y) D")
-    assert [rule.name(), rule.parameterNames(), str(rule([1, 2])), rule.functionName()] == [
-        "A(x) < B(y)", ["x", "y"], "C(3)D", "__p_0_0_A_x_B_y_"]
-    assert rule.match(Lstring("A(1)B(2)"), 1) == (2, [1, 2])
+    assert [rule.name(), rule.parameterNames(), rule.functionName()] == ["A(x) < B(y)", ["x", "y"], "__p_0_0_A_x_B_y_"]
+    found = rule.match(Lstring("A(1)B(2)"), 1)
+    assert found[0] == 2 and isinstance(found[1], ArgList) and list(found[1]) == [1, 2]
+    out = Lstring("")
+    assert rule.applyTo(out, found[1]) and str(out) == "C(3)D"
+    with pytest.raises(ValueError):  # L-Py's binding passes no value from the list
+        rule([1, 2])
+    static = LsysRule()
+    static.set("A(x) : produce B(2 * 3)")
     with pytest.raises(ValueError):
-        rule([1])
+        static()
 
     class Told(LpyDebugger):
         log = []
 
-        def error_match(self, beg, end, dest, rule, args, trace):
-            self.log.append((beg, rule.name(), trace[0].__name__))
-            return True
+        def total_match(self, beg, end, dest, n, rule, args):
+            self.log.append((beg, rule.name(), rule.lineno, list(args)))
 
     lsys = Lsystem()
-    lsys.setCode("Axiom: BAC\nproduction:\nB --> D\nA :\n    produce E(1 / 0)\nendlsystem\n")
+    lsys.setCode("Axiom: BA(2)C\nproduction:\nB --> D\nA(x) :\n    produce E(x)\nendlsystem\n")
     lsys.setDebugger(Told())
-    assert str(lsys.derive(1)) == "DAC" and Told.log == [(1, "A", "ZeroDivisionError")]
+    assert str(lsys.derive(1)) == "DE(2)C" and Told.log == [(0, "B", 3, []), (1, "A(x)", 4, [2])]
