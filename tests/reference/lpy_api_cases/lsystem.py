@@ -393,7 +393,7 @@ def enum_made_has_no_name():
     return eDirection(1).name
 
 
-@case("LpyDebugger.alwaysStop", "LpyDebugger.insertCodeBreakPointAt", "LpyDebugger.insertLstringBreakPointAt")
+@case("LpyDebugger.alwaysStop", "LpyDebugger.insertCodeBreakPointAt")
 def debugger_breakpoints_filter():
     lsys = lsystem(DEBUGGED)
     d = told_debugger()
@@ -461,7 +461,7 @@ def enum_rule_type():
 
 
 # [SECTION] more of Lsystem
-@case("Lsystem.axiom", "Lsystem.setCode", "Lsystem.set", "Lsystem.compile", "Lsystem.context", "Lsystem.execContext",
+@case("Lsystem", "Lsystem.axiom", "Lsystem.setCode", "Lsystem.set", "Lsystem.compile", "Lsystem.context", "Lsystem.execContext",
       "Lsystem.makeCurrent", "Lsystem.isCurrent", "Lsystem.done", "Lsystem.iterate", "Lsystem.homomorphism",
       "Lsystem.interpret")
 def lsystem_basics():
