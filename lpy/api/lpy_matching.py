@@ -1,17 +1,15 @@
 # openalea.lpy's names for matching and reading, as L-Py defines them (src/wrapper/
-# export_lsysrule.cpp, export_stringmatching.cpp, lsystem.h's Debugger, lpy_parser.cpp's
-# LpyParsing): a rule read and matched on its own (LsysRule), the debugger an Lsystem tells of
-# its matches, the map between a string's positions and its successor's, module matching
-# methods, module declarations and lstrings as Python expressions. Beside lpy_lsystem.py
-# (openalea.lpy._lsystem), whose Lsystem they use.
+# export_stringmatching.cpp, export_parser.cpp, lpy_parser.cpp's LpyParsing): the map between a
+# string's positions and its successor's, module matching methods, module declarations, the
+# parser's constants and lstrings as L-Py's Python, the values a rule's header binds (ArgList). Rules and the debugger are in
+# lpy_rules.py (openalea.lpy._rules).
 from _sprout_lpy import Lstring, _written, ParamModule
 import openalea.lpy as _lpy
 from openalea.lpy._lsystem import Lsystem
 from openalea.lpy._strings import _enum
 from openalea.lpy._patterns import _pattern_args, LsysVar
 
-__all__ = ['LsysRule', 'LpyDebugger', 'StringMatching', 'PatternModule', 'LpyParsing', 'declare', 'undeclare',
-           'lstring2py']
+__all__ = ['StringMatching', 'PatternModule', 'LpyParsing', 'ArgList', 'declare', 'undeclare', 'lstring2py']
 
 
 def declare(names):
@@ -96,35 +94,110 @@ class PatternModule(ParamModule, metaclass=_MatchingMethod):
         return [a.varname() for a in self.args if isinstance(a, LsysVar) and a._named()]
 
 
-def lstring2py(text):
-    """An lstring as a Python expression: the list of its modules (L-Py's lstring2py)."""
+def lstring2py(lstring):
+    """An lstring as a Python expression, the list of its modules (L-Py's lstring2py), which
+    AxialTree reads back. L-Py writes each module as its class's id and its arguments; Sprout's
+    ids are not L-Py's, and Sprout writes ParamModule(name, arguments)."""
     items = []
-    for name, args in _written(text):
+    for name, args in _written(str(lstring)):
         items.append('ParamModule(%r%s)' % (name, ''.join(',' + a for a in args)))
     return '[' + ','.join(items) + ']'
 
 
 class LpyParsing:
     """L-Py's parser constants (src/cpp/lpy_parser.cpp): the file format tag and versions."""
-    VersionTag = '# -*- lpy version: %f -*-'
     InitialisationBeginTag = '###### INITIALISATION ######'
-    LPY_FORMAT_VERSION = 1.0
+    VersionTag = '# -*- lpy version: %f -*-'
     formats = [1.0]
+    DefaultFormat = 1.0
+    lstring2py = staticmethod(lstring2py)
 
     @staticmethod
     def isSupportedFormat(version):
-        return 1.0 <= version <= LpyParsing.LPY_FORMAT_VERSION
+        """Whether L-Py reads files of this format (1.0)."""
+        return 1.0 <= _float32(version) <= 1.0
+
+    @staticmethod
+    def _version(code):
+        head, tail = LpyParsing.VersionTag.split('%f')
+        if not code.startswith(head):
+            return None
+        rest = code[len(head):]
+        end = 0
+        while end < len(rest) and rest[end] not in ' \t\n':
+            end += 1
+        if not rest[end:].startswith(tail) or not rest[end + len(tail):].startswith('\n'):
+            return None
+        return _atof(rest[:end])
 
     @staticmethod
     def getFormatVersion(code):
-        first = code.split('\n', 1)[0]
-        head, tail = LpyParsing.VersionTag.split('%f')
-        if first.startswith(head) and first.endswith(tail.rstrip()):
-            try:
-                return float(first[len(head):len(first) - len(tail.rstrip())])
-            except ValueError:
-                pass
-        return LpyParsing.LPY_FORMAT_VERSION
+        """The format a file's first line gives ('# -*- lpy version: 1.1 -*-'), else 1.0."""
+        found = LpyParsing._version(str(code))
+        return _float32(1.0 if found is None else found)
+
+    @staticmethod
+    def isFormatDefined(code):
+        """Whether the code starts with a format line."""
+        return LpyParsing._version(str(code)) is not None
+
+
+def _float32(x):
+    import struct
+    return struct.unpack('f', struct.pack('f', float(x)))[0]
+
+
+def _atof(text):
+    """C's atof: the longest number at the start of the text (0.0 when none)."""
+    import re
+    m = re.match(r'\s*[-+]?(\d+\.?\d*([eE][-+]?\d+)?|\.\d+([eE][-+]?\d+)?|inf(inity)?|nan)', text, re.I)
+    return float(m.group(0)) if m else 0.0
+
+
+class ArgList:
+    """The values a rule's header binds (L-Py's ArgList, a C++ vector of Python objects):
+    ArgList(), ArgList(size[, value])."""
+
+    def __init__(self, size=0, value=None):
+        if isinstance(size, bool) or not isinstance(size, int) or size < 0:
+            raise TypeError("ArgList(size[, value]): a size from 0 on")
+        self._items = [value] * size
+
+    def append(self, value):
+        self._items.append(value)
+
+    def extend(self, values):
+        self._items.extend(values)
+
+    def __len__(self):
+        return len(self._items)
+
+    def __getitem__(self, i):
+        return ArgList._of(self._items[i]) if isinstance(i, slice) else self._items[i]
+
+    def __setitem__(self, i, value):
+        self._items[i] = value
+
+    def __delitem__(self, i):
+        del self._items[i]
+
+    def __iter__(self):
+        return iter(self._items)
+
+    def __contains__(self, value):
+        return value in self._items
+
+    def __repr__(self):
+        return repr(self._items)
+
+    def __str__(self):
+        return str(self._items)
+
+    @classmethod
+    def _of(cls, values):
+        out = cls()
+        out._items = list(values)
+        return out
 
 
 class StringMatching:
@@ -210,99 +283,3 @@ class StringMatching:
         def nextValues(self):
             self.increment()
             return self.values()
-
-
-class LpyDebugger:
-    """What Lsystem.setDebugger takes: told, at each production step, of its string
-    (begin), each rule that matched and produced (total_match) or produced nothing
-    (partial_match), each module copied (identity) and the result (end). Positions are
-    indices in the step's string; `dest` is the new string so far."""
-
-    def __init__(self):
-        pass
-
-    def begin(self, src, direction):
-        pass
-
-    def end(self, result):
-        pass
-
-    def total_match(self, pos_beg, pos_end, dest, prod_length, rule, args):
-        pass
-
-    def partial_match(self, pos_beg, pos_end, dest, rule, args):
-        pass
-
-    def error_match(self, pos_beg, pos_end, dest, rule, args):
-        return False
-
-    def identity(self, pos, dest):
-        pass
-
-    def shouldStop(self, *args):
-        return True
-
-
-class LsysRule:
-    """One rule, read and matched on its own (L-Py's LsysRule)."""
-
-    def __init__(self, code=None, kind=0, group=0):
-        self._lsystem, self._info = None, None
-        if code:
-            self.set(code)
-
-    def set(self, code):
-        self._lsystem = Lsystem()
-        self._lsystem.set('production:\n' + str(code) + '\nendlsystem\n')
-        s = self._lsystem._session
-        if s.ruleCount() != 1:
-            raise ValueError("LsysRule.set: one rule, e.g. 'F --> F[+F]F'")
-        self._info = s.rule(0)
-
-    def isCompiled(self):
-        return self._info is not None
-
-    def compile(self):
-        pass
-
-    def forwardCompatible(self):
-        return not self._info['newRight']
-
-    def backwardCompatible(self):
-        return not self._info['newLeft']
-
-    def nbContexts(self):
-        return sum(1 for k in ('left', 'newLeft', 'right', 'newRight') if self._info[k])
-
-    def isContextFree(self):
-        return self.nbContexts() == 0
-
-    def nbParameters(self):
-        return self._info['parameters']
-
-    @property
-    def lineno(self):
-        return self._info['line']
-
-    def name(self):
-        return self._info['header']
-
-    def process(self, lstring):
-        """The string after one step of this rule."""
-        return self._lsystem.derive(Lstring(lstring) if not isinstance(lstring, Lstring) else lstring, 0, 1)
-
-    def _match(self, lstring, pos, forward):
-        s = lstring if isinstance(lstring, Lstring) else Lstring(lstring)
-        if pos < 0:
-            pos += len(s)
-        with self._lsystem._context:
-            return self._lsystem._session.match(0, s, pos, forward)
-
-    def match(self, lstring, pos=0, dest=None):
-        """(the position after the match, the values it binds), or False."""
-        return self._match(lstring, pos, True)
-
-    def reverse_match(self, lstring, pos=-1, dest=None):
-        """Matched backwards from pos (the last module by default): (the position before the
-        match, the values), or False."""
-        return self._match(lstring, pos, False)

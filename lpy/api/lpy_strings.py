@@ -22,7 +22,7 @@ Lstring.__module__ = 'openalea.lpy'  # where pickle finds it (_sprout_lpy.Lstrin
 
 __all__ = ['AxialTree', 'Lstring', 'Module', 'ParamModule', 'NodeModule', 'ModuleClass', 'PackedArgs',
            'AxialTreeIterator', 'ModuleType', 'ModuleCategory', 'eConsiderMethod', 'eConsider', 'eIgnore',
-           'ConsiderFilter', 'ModuleClassTable', 'ArgList']
+           'ConsiderFilter', 'ModuleClassTable']  # ArgList: lpy_matching.py
 
 
 # [SECTION] enums
@@ -216,13 +216,6 @@ def _export_predefined(scope):
 
 
 _export_predefined(globals())
-
-
-class ArgList(list):
-    """The values a pattern bound (L-Py's ArgList, a vector of Python objects): ArgList(size, obj)."""
-
-    def __init__(self, size=0, obj=None):
-        list.__init__(self, [obj] * size)
 
 
 # [SECTION] ModuleClassTable

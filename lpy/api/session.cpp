@@ -76,7 +76,7 @@ py::object sceneOf(Engine& engine, const LString& s) {
                                     py::bytes(reinterpret_cast<const char*>(geo.polygons.indices.data()), faces * sizeof(std::uint32_t)),
                                     rgba(geo.polygons.colours.empty() ? 0x808080FFu : geo.polygons.colours[0])));
     }
-    return py::module_::import("openalea.lpy._lsystem").attr("_scene")(parts);
+    return py::module_::import("openalea.lpy._scene").attr("_scene")(parts);
 }
 
 namespace {
@@ -122,7 +122,7 @@ public:
     }
 
     // L-Py's derive(lstring, start, nb): Start at iteration 0, End at the last iteration.
-    PyLstring derive(const PyLstring& s, int start, int nb) {
+    PyLstring derive(const PyLstring& s, int start, int nb, bool endEarlyReturn) {
         if (start < 0 || nb < 0) throw py::value_error("derive: a start and a count of steps from 0 on");
         EngineScope scope(m_engine.get());
         // The native path (no hooks, arithmetic rules): numbers to the end, made into modules
@@ -133,8 +133,36 @@ public:
                 return PyLstring{std::make_shared<LString>(), std::move(numbers)};
         }
         PausedCollector paused;
+        struct EarlyReturnOff {  // L-Py's derive leaves early_return off, however it ends (animate reads it)
+            Engine& e;
+            bool off;
+            ~EarlyReturnOff() {
+                if (off) e.stopRequested = false;
+            }
+        } off{*m_engine, endEarlyReturn};
         LString out = m_engine->derive(s.get(), nb, nullptr, nullptr, start, m_engine->derivationLength);
         return PyLstring{std::make_shared<LString>(std::move(out))};
+    }
+
+    PyLstring partial(const PyLstring& s, size_t beg, size_t size) {
+        EngineScope scope(m_engine.get());
+        return PyLstring{std::make_shared<LString>(m_engine->partialDerivation(s.get(), beg, size))};
+    }
+
+    // L-Py's Lsystem.turtle_interpretation: the string's query modules filled in place.
+    void fillQueriesOf(const PyLstring& s) {
+        EngineScope scope(m_engine.get());
+        m_engine->fillQueries(s.get());
+    }
+    // L-Py's stepInterpretation plots as its turtle passes each predefined module of the
+    // interpreted string: the module of `s` each of those comes from.
+    std::vector<long> predefinedOrigins(const PyLstring& s) {
+        EngineScope scope(m_engine.get());
+        const LString shown = m_engine->interpret(s.get());
+        std::vector<long> out;
+        for (const LModule& m : shown)
+            if (m_engine->classes().isPredefined(m.cls)) out.push_back(long(m.parent));
+        return out;
     }
 
     PyLstring interpret(const PyLstring& s) {
@@ -165,6 +193,20 @@ public:
         m_engine->derivationLength = n;
     }
     int iteration() const { return m_engine->iteration; }
+    // L-Py's early_return: a derivation stops after the step it is set in (Stop()).
+    bool earlyReturn() const { return m_engine->stopRequested; }
+    void setEarlyReturn(bool on) { m_engine->stopRequested = on; }
+    int maxDepth(int kind) const { return m_engine->maxDepth(RuleKind(kind)); }
+    void setMaxDepth(int kind, int depth) {
+        if (depth < 0) throw py::value_error("a maximum depth from 0 on");
+        m_engine->maxDepth(RuleKind(kind)) = depth;
+    }
+    void setRuleObject(py::object f) { m_engine->ruleObject = f.is_none() ? py::object() : f; }
+    // L-Py's LsysRule.__call__: the body of rule `i` called on `args` (its production, or None).
+    py::object apply(size_t i, py::tuple args) {
+        EngineScope scope(m_engine.get());
+        return m_engine->applyRule(i, args);
+    }
     size_t rules(int kind, int group) const {
         size_t n = 0;
         for (const Rule& r : m_engine->translation().rules) n += int(r.kind) == kind && (group < 0 || r.group == group);
@@ -192,6 +234,8 @@ public:
         out["right"] = !r.right.empty();
         out["newRight"] = !r.newRight.empty();
         out["parameters"] = r.params.size();
+        out["names"] = r.params;
+        out["function"] = r.function;
         return out;
     }
     py::object match(size_t rule, const PyLstring& s, long at, bool forward) {
@@ -200,6 +244,14 @@ public:
     }
     size_t ruleCount() const { return m_engine->translation().rules.size(); }
 
+    // The model's own module classes (not L-Py's predefined ones), as they came.
+    std::vector<std::string> moduleNames() const {
+        std::vector<std::string> out;
+        const ModuleClasses& c = m_engine->classes();
+        for (size_t i = 0; i < c.size(); ++i)
+            if (!c.isPredefined(int(i)) && c.used(int(i))) out.push_back(c.name(int(i)));
+        return out;
+    }
     const std::string& python() const { return m_python; }  // the code as Python runs it (set(code, debug=True))
     const std::vector<std::string>& declared() const { return m_declared; }
 
@@ -225,21 +277,30 @@ void defineSession(py::module_& m) {
         .def(py::init<const std::string&, const std::string&, py::dict, py::dict>(), py::arg("code"), py::arg("file"), py::arg("ns"),
              py::arg("parameters"))
         .def("axiom", &Session::axiom)
-        .def("derive", &Session::derive)
+        .def("derive", &Session::derive, py::arg("lstring"), py::arg("start"), py::arg("nb"), py::arg("endEarlyReturn") = true)
         .def("interpret", &Session::interpret)
+        .def("partial", &Session::partial)
+        .def("fillQueries", &Session::fillQueriesOf)
+        .def("predefinedOrigins", &Session::predefinedOrigins)
         .def("scene", &Session::scene)
         .def_property("debugger", &Session::debugger, &Session::setDebugger)
         .def_property("animating", &Session::animating, &Session::setAnimating)
         .def_property_readonly("lastScene", &Session::lastScene)
         .def_property("derivationLength", &Session::derivationLength, &Session::setDerivationLength)
         .def_property_readonly("iteration", &Session::iteration)
+        .def_property("earlyReturn", &Session::earlyReturn, &Session::setEarlyReturn)
+        .def("maxDepth", &Session::maxDepth)
+        .def("setMaxDepth", &Session::setMaxDepth)
+        .def("setRuleObject", &Session::setRuleObject)
+        .def("apply", &Session::apply)
         .def("rules", &Session::rules, py::arg("kind"), py::arg("group") = -1)
         .def("groups", &Session::groups)
         .def("rule", &Session::rule)
         .def("ruleCount", &Session::ruleCount)
         .def("match", &Session::match)
         .def_property_readonly("python", &Session::python)
-        .def("declared", &Session::declared);
+        .def("declared", &Session::declared)
+        .def("moduleNames", &Session::moduleNames);
 }
 
 }  // namespace sprout::lpy

@@ -267,8 +267,8 @@ void Engine::predictGrowth(const LString& s, int steps) const {
     m_growth.predict(s, steps, iteration, [this](int cls, int base) { return m_matcher.derived(cls, base); });
 }
 
-void Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
-                        const LString* result, const py::tuple* args) {
+py::object Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
+                              const LString* result, const py::tuple* args) {
     // The new string so far, as L-Py's debugger sees it: what was built, with what the rule made.
     auto dest = std::make_shared<LString>();
     if (forward) {
@@ -279,15 +279,13 @@ void Engine::debugMatch(const char* what, const Rule* r, size_t begin, size_t en
         dest->insert(dest->end(), built.rbegin(), built.rend());
     }
     py::object d = py::cast(PyLstring{dest});
-    if (!r) {
-        debugger.attr(what)(begin, d);
-        return;
-    }
-    py::object rule = py::module_::import("types").attr("SimpleNamespace")(
-        py::arg("lineno") = r->line, py::arg("name") = r->header, py::arg("ruleid") = int(r - m_tr.rules.data()));
+    if (!r) return debugger.attr(what)(begin, d);
+    py::object rule = ruleObject ? ruleObject(int(r - m_tr.rules.data()))
+                                 : py::module_::import("types").attr("SimpleNamespace")(py::arg("lineno") = r->line, py::arg("name") = r->header,
+                                                                                        py::arg("ruleid") = int(r - m_tr.rules.data()));
     py::list values = args ? py::list(*args) : py::list();
-    if (result) debugger.attr(what)(begin, end, d, result->size(), rule, values);
-    else debugger.attr(what)(begin, end, d, rule, values);
+    if (result) return debugger.attr(what)(begin, end, d, result->size(), rule, values);
+    return debugger.attr(what)(begin, end, d, rule, values);
 }
 
 void Engine::insertSelection(LString& s) {

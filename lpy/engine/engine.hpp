@@ -116,6 +116,17 @@ public:
     int classScale(int cls) const { return m_matcher.scaleOf(cls); }
     // L-Py's LsysRule.match / reverse_match: (the position past the match, its values) or False.
     py::object matchRule(size_t rule, const LString& s, long at, bool forward) { return m_matcher.matchRule(rule, s, at, forward); }
+    // L-Py's LsysRule.__call__: the rule's body called on `args` outside a pass (what it
+    // produced, or None when it produced nothing). Throws py::error_already_set.
+    py::object applyRule(size_t rule, const py::tuple& args);
+    // L-Py's Lsystem.partial_derivation: one step of the productions on `size` modules from
+    // `beg` (contexts read in all of `s`), then the decompositions.
+    LString partialDerivation(const LString& s, size_t beg, size_t size);
+    // L-Py's Lsystem.decompositionMaxDepth / interpretationMaxDepth (`maximum depth:`).
+    int& maxDepth(RuleKind kind) { return m_depth[kindIndex(kind)]; }
+    // What the debugger is given as a rule: ruleObject(index in the translation's rules)
+    // when set (openalea.lpy's LsysRule), else a namespace with its lineno, name and ruleid.
+    py::object ruleObject;
 
 private:
     // The `turtle` of interpretation rules (openalea.lpy._InterpretationTurtle), while an
@@ -127,8 +138,8 @@ private:
     void endEach(LString& s);
     void insertSelection(LString& s);
     // Tells the debugger of a match (total_match, partial_match) or of a module copied (identity).
-    void debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
-                    const LString* result, const py::tuple* args);  // the EndEach hook, with a scene when it takes two arguments
+    py::object debugMatch(const char* what, const Rule* r, size_t begin, size_t end, bool forward, const LString& built,
+                          const LString* result, const py::tuple* args);  // the EndEach hook, with a scene when it takes two arguments
     // Before the first step: the growth budget's prediction, where no hook or Python can
     // steer the steps between them.
     void predictGrowth(const LString& s, int steps) const;

@@ -24,8 +24,10 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     } restore{m_matcher.body(), m_matcher.body()};
     m_matcher.body() = Matcher::BodyContext{&s, leftEnd, rightEnd, r.filter};
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
-    if (!ret) throw py::error_already_set();
     const size_t start = forward ? at : at + 1 - len;
+    // (L-Py's debugger is never asked error_match: its binding looks the method up with the
+    // body's error pending, finds none, and the error goes on.)
+    if (!ret) throw py::error_already_set();
     if (!m_produced && m_buffer.empty()) {
         if (ret.is_none()) {  // a body that produced nothing: the next rule is tried
             if (debugger && r.kind == RuleKind::Production) debugMatch("partial_match", &r, start, start + len, forward, built, nullptr, &args);
@@ -40,6 +42,27 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     if (debugger && r.kind == RuleKind::Production) debugMatch("total_match", &r, start, start + len, forward, built, &result, &args);
     consumed = len;
     return true;
+}
+
+py::object Engine::applyRule(size_t rule, const py::tuple& args) {
+    if (rule >= m_functions.size()) throw py::index_error("rule index out of range");
+    m_buffer.clear();
+    m_produced = false;
+    struct Restore {
+        Matcher::BodyContext& now;
+        Matcher::BodyContext was;
+        ~Restore() { now = was; }
+    } restore{m_matcher.body(), m_matcher.body()};
+    m_matcher.body() = Matcher::BodyContext{nullptr, -1, 0, m_tr.rules[rule].filter};
+    py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[rule].ptr(), args.ptr(), nullptr));
+    if (!ret) throw py::error_already_set();
+    if (!m_produced && m_buffer.empty()) {
+        if (ret.is_none()) return py::none();
+        append(m_buffer, ret);
+    }
+    LString result = std::move(m_buffer);
+    m_buffer.clear();
+    return py::cast(PyLstring{std::make_shared<LString>(std::move(result))});
 }
 
 bool Engine::tryRules(RuleKind kind, const LString& s, size_t i, bool forward, LString& out, size_t& consumed) {
@@ -143,6 +166,45 @@ void Engine::pass(const LString& in, LString& out, RuleKind kind, bool forward) 
         m_growth.check(in, out, perModule, iteration);
         std::reverse(out.begin(), out.end());
     }
+}
+
+LString Engine::partialDerivation(const LString& in, size_t beg, size_t size) {
+    // L-Py's Lsystem.partial_derivation (partialForwardStep, partialBackwardStep): the
+    // productions applied to the modules from `beg` on, their contexts read in the whole
+    // string, then the decompositions; no hook, no debugger.
+    if (beg > in.size()) throw py::index_error("partial_derivation: a starting position past the string's end");
+    m_matcher.readOptions();
+    const size_t end = std::min(in.size(), beg + size);
+    py::object told = std::move(debugger);
+    struct Restore {
+        py::object& to;
+        py::object was;
+        ~Restore() { to = std::move(was); }
+    } restore{debugger, std::move(told)};
+    LString out;
+    if (m_hasKind[kindIndex(RuleKind::Production)]) {
+        Matcher::Reading reading{m_matcher, in};
+        m_matcher.matchBrackets(in);
+        if (forwardDirection) {
+            for (size_t i = beg; i < end;) {
+                size_t consumed = 1;
+                if (tryRules(RuleKind::Production, in, i, true, out, consumed)) i += std::max<size_t>(consumed, 1);
+                else out.push_back(in[i++]);
+            }
+        } else {
+            for (size_t i = end; i-- > beg;) {
+                size_t consumed = 1;
+                if (tryRules(RuleKind::Production, in, i, false, out, consumed)) i -= std::min(i - beg, std::max<size_t>(consumed, 1) - 1);
+                else out.push_back(in[i]);
+            }
+            std::reverse(out.begin(), out.end());
+        }
+    } else {
+        out.assign(in.begin() + std::ptrdiff_t(beg), in.begin() + std::ptrdiff_t(end));
+    }
+    const int dec = kindIndex(RuleKind::Decomposition);
+    if (m_hasKind[dec]) out = decompose(std::move(out), m_depth[dec], RuleKind::Decomposition);
+    return out;
 }
 
 LString Engine::decompose(LString in, int depth, RuleKind kind) {

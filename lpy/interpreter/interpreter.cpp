@@ -201,13 +201,16 @@ void start(void (*defineModule)(py::module_&)) {
                 lpyEmbed.attr("_embed")(std::string("openalea.mtg.") + name, std::string(embedded(stem)),
                                         std::string("<sprout>/openalea/mtg/") + name + ".py");
             // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py), part of openalea.lpy.
+            // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py, its scenes lpy_scene.py, its rules lpy_rules.py), part of openalea.lpy.
+            installModule("openalea.lpy._scene", embedded("lpy_scene"), "<sprout>/openalea/lpy/_scene.py");
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");
             // Its strings' and modules' names and its patterns (lpy/api/lpy_strings.py,
             // lpy_patterns.py), which _matching uses.
             installModule("openalea.lpy._strings", embedded("lpy_strings"), "<sprout>/openalea/lpy/_strings.py");
             installModule("openalea.lpy._patterns", embedded("lpy_patterns"), "<sprout>/openalea/lpy/_patterns.py");
             installModule("openalea.lpy._matching", embedded("lpy_matching"), "<sprout>/openalea/lpy/_matching.py");
-            for (const char* part : {"openalea.lpy._lsystem", "openalea.lpy._strings", "openalea.lpy._patterns", "openalea.lpy._matching"}) {
+            installModule("openalea.lpy._rules", embedded("lpy_rules"), "<sprout>/openalea/lpy/_rules.py");
+            for (const char* part : {"openalea.lpy._lsystem", "openalea.lpy._strings", "openalea.lpy._patterns", "openalea.lpy._matching", "openalea.lpy._rules"}) {
                 py::module_ lpy = py::module_::import("openalea.lpy"), api = py::module_::import(part);
                 for (py::handle name : api.attr("__all__")) lpy.attr(name) = api.attr(name);
             }

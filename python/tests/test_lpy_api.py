@@ -95,7 +95,7 @@ def test_a_scene_renders_and_exports(tmp_path):
 
 
 def test_errors_name_the_file_and_the_line(tmp_path):
-    with pytest.raises(FileNotFoundError) as missing:
+    with pytest.raises(ValueError) as missing:  # L-Py's LsysError
         Lsystem(str(tmp_path / "missing.lpy"))
     assert "missing.lpy" in str(missing.value)
     path = model(tmp_path, "Axiom: A(1)\nproduction:\nA(x) :\n    y = x / 0\n    produce A(y)\n", "bad.lpy")
@@ -107,3 +107,68 @@ def test_errors_name_the_file_and_the_line(tmp_path):
     with pytest.raises(SyntaxError) as syntax:
         Lsystem().set("Axiom: A(\n")
     assert syntax.value.lineno == 1
+
+
+# Lsystem, LsysRule and LpyDebugger as L-Py's src/wrapper/export_lsystem.cpp, export_lsysrule.cpp
+# and export_debugger.cpp define them (issue 51; tests/reference/lpy_api_cases/lsystem.py checks
+# them against the real L-Py).
+RULES = "Axiom: A(1) B\nderivation length: 3\nproduction:\nA(x) --> A(x + 1) C\nB --> B D\nC < D --> E\nendlsystem\n"
+
+
+def test_lsystem_file_settings_and_early_return(tmp_path):
+    path = model(tmp_path, RULES, "my.model.lpy")
+    lsys = Lsystem(path)
+    assert lsys.filename == path and lsys.context()["__name__"] == "my" and Lsystem().filename == ""
+    assert (lsys.decompositionMaxDepth, lsys.interpretationMaxDepth) == (1, 1)
+    lsys.early_return = True
+    assert lsys.early_return
+    assert str(lsys.derive()) == "A(4)CCCBDDD" and not lsys.early_return
+    with pytest.raises(ValueError):
+        Lsystem().read(str(tmp_path / "none.lpy"))
+
+
+def test_lsystem_rules_partial_derivation_and_queries():
+    from openalea.lpy import eForward
+
+    lsys = Lsystem()
+    lsys.setCode(RULES)
+    assert [lsys.nbGroups(), lsys.nbTotalRules(), lsys.productionRule(2).name()] == [1, 3, "C < D"]
+    assert lsys.get_rule_fonction_table()["__p_0_2_CD"] == "C < D"
+    with pytest.raises(IndexError):
+        lsys.productionRule(3)
+    s = lsys.derive(1)
+    assert str(lsys.partial_derivation(s, 1, 3)) == "CBDD"
+    assert [str(x) for x in lsys.derivations(1, 3)] == ["A(2)CBD", "A(3)CCBDD", "A(4)CCCBDDD"]
+    lsys.setCode("Axiom: F(2) ?P +(90) F(1) ?P\n")
+    q = lsys.axiom
+    lsys.turtle_interpretation(q)
+    assert [round(c, 6) for c in q[1][0]] == [0, 0, 2] and str(eForward) == "eForward"
+
+
+def test_lsysrule_alone_and_the_debugger():
+    from openalea.lpy import ArgList, LpyDebugger
+
+    rule = LsysRule()
+    rule.set("A(x) < B(y) --> C(x+y) D")
+    assert [rule.name(), rule.parameterNames(), rule.functionName()] == ["A(x) < B(y)", ["x", "y"], "__p_0_0_A_x_B_y_"]
+    found = rule.match(Lstring("A(1)B(2)"), 1)
+    assert found[0] == 2 and isinstance(found[1], ArgList) and list(found[1]) == [1, 2]
+    out = Lstring("")
+    assert rule.applyTo(out, found[1]) and str(out) == "C(3)D"
+    with pytest.raises(ValueError):  # L-Py's binding passes no value from the list
+        rule([1, 2])
+    static = LsysRule()
+    static.set("A(x) : produce B(2 * 3)")
+    with pytest.raises(ValueError):
+        static()
+
+    class Told(LpyDebugger):
+        log = []
+
+        def total_match(self, beg, end, dest, n, rule, args):
+            self.log.append((beg, rule.name(), rule.lineno, list(args)))
+
+    lsys = Lsystem()
+    lsys.setCode("Axiom: BA(2)C\nproduction:\nB --> D\nA(x) :\n    produce E(x)\nendlsystem\n")
+    lsys.setDebugger(Told())
+    assert str(lsys.derive(1)) == "DE(2)C" and Told.log == [(0, "B", 3, []), (1, "A(x)", 4, [2])]
