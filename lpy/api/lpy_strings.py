@@ -232,8 +232,8 @@ class ModuleClassTable:
 
     mandatory_declaration = False
 
-    def size(self):
-        return len(self.getClasses())
+    def size(self):  # L-Py's counts its names (aliases included), not its classes
+        return len(self.getNames())
 
     def empty(self):
         return self.size() == 0
