@@ -238,6 +238,9 @@ def report(ref_inv, mine_inv, at_least, ref_cases=None, mine_cases=None):
                 print("UI-ONLY NAME MISSING %s" % name)
         checked -= failed
         api = set(names) | set(members)
+        unchecked = sorted(api - checked - set(ui))
+        if unchecked:
+            print("not checked by a case: " + " ".join(unchecked))
         print("differential cases: %d of %d agree" % (agree, len(ref_cases) - sum(1 for n in ref_cases if n.startswith("ui:"))))
         print("names and members checked by a case: %d of %d (%.1f%%); UI-only: %d"
               % (len(checked & api), len(api), 100.0 * len(checked & api) / max(1, len(api)), len(set(ui) & api)))
