@@ -129,7 +129,7 @@ def module_class_parameters():
             c.getParameterPosition("width"), c.getNamedParameterNb(), lpy().F.parameterNames]
 
 
-@case("ModuleClass.get", "ModuleClass.issubclass", "ModuleClass.scale", "ModuleClass.category",
+@case("ModuleClass", "ModuleClass.get", "ModuleClass.issubclass", "ModuleClass.scale", "ModuleClass.category",
       "ModuleClass.DEFAULT_SCALE", "ModuleClass.bases")
 def module_class_members():
     l = lpy()
@@ -140,7 +140,7 @@ def module_class_members():
             l.F.category == l.F.scale]
 
 
-@case("ModuleClassTable.find", "ModuleClassTable.getNames", "ModuleClassTable.getClasses", "ModuleClassTable.size",
+@case("ModuleClassTable", "ModuleClassTable.find", "ModuleClassTable.getNames", "ModuleClassTable.getClasses", "ModuleClassTable.size",
       "ModuleClassTable.empty")
 def module_class_table():
     t = lpy().ModuleClassTable.get()
