@@ -83,12 +83,19 @@ def _count(value, what):
     return int(value)
 
 
+_cython = []
+
+
 def _cython_available():
-    import importlib.util
-    try:
-        return importlib.util.find_spec('pyximport') is not None
-    except (ImportError, ValueError):
-        return False
+    """Looked for once, as L-Py does at its import (a search of sys.path at each context was a
+    third of a small model's Lsystem())."""
+    if not _cython:
+        import importlib.util
+        try:
+            _cython.append(importlib.util.find_spec('pyximport') is not None)
+        except (ImportError, ValueError):
+            _cython.append(False)
+    return _cython[0]
 
 
 # L-Py's options of a context, in its order: (name, comment, category, global, default,
