@@ -64,6 +64,19 @@ public:
         int filter = -1;
     };
     BodyContext& body() { return m_body; }
+    // A body's context while one body runs, the one before it restored after (a body may
+    // call another: a rule applied from a script, a hook that derives).
+    class BodyScope {
+    public:
+        BodyScope(Matcher& m, const BodyContext& now) : m_matcher(m), m_was(m.m_body) { m.m_body = now; }
+        ~BodyScope() { m_matcher.m_body = m_was; }
+        BodyScope(const BodyScope&) = delete;
+        BodyScope& operator=(const BodyScope&) = delete;
+
+    private:
+        Matcher& m_matcher;
+        BodyContext m_was;
+    };
 
     // The bracket partners of the string a pass rewrites (contexts skip branches by them).
     void matchBrackets(const LString& s);

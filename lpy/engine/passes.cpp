@@ -17,12 +17,7 @@ bool Engine::applies(const Rule& r, const LString& s, size_t at, bool forward, c
     m_buffer.clear();
     m_produced = false;
     // The body's own context tests (InLeftContext ...) start where the header's ended.
-    struct Restore {
-        Matcher::BodyContext& now;
-        Matcher::BodyContext was;
-        ~Restore() { now = was; }
-    } restore{m_matcher.body(), m_matcher.body()};
-    m_matcher.body() = Matcher::BodyContext{&s, leftEnd, rightEnd, r.filter};
+    Matcher::BodyScope body(m_matcher, Matcher::BodyContext{&s, leftEnd, rightEnd, r.filter});
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[size_t(&r - m_tr.rules.data())].ptr(), args.ptr(), nullptr));
     const size_t start = forward ? at : at + 1 - len;
     // (L-Py's debugger is never asked error_match: its binding looks the method up with the
@@ -48,12 +43,7 @@ py::object Engine::applyRule(size_t rule, const py::tuple& args) {
     if (rule >= m_functions.size()) throw py::index_error("rule index out of range");
     m_buffer.clear();
     m_produced = false;
-    struct Restore {
-        Matcher::BodyContext& now;
-        Matcher::BodyContext was;
-        ~Restore() { now = was; }
-    } restore{m_matcher.body(), m_matcher.body()};
-    m_matcher.body() = Matcher::BodyContext{nullptr, -1, 0, m_tr.rules[rule].filter};
+    Matcher::BodyScope body(m_matcher, Matcher::BodyContext{nullptr, -1, 0, m_tr.rules[rule].filter});
     py::object ret = py::reinterpret_steal<py::object>(PyObject_Call(m_functions[rule].ptr(), args.ptr(), nullptr));
     if (!ret) throw py::error_already_set();
     if (!m_produced && m_buffer.empty()) {

@@ -81,6 +81,22 @@ def case(*covers):
     return mark
 
 
+def lpy():
+    """openalea.lpy, whichever this interpreter has (for the case files)."""
+    import openalea.lpy as l
+
+    return l
+
+
+def declared(name, params):
+    """A module class of the process with declared parameter names (for the case files). L-Py's
+    table forgets a class declared there once Python holds it no more: a case keeps what this
+    gives."""
+    c = lpy().ModuleClassTable.get().declare(name)
+    c.parameterNames = params
+    return c
+
+
 ADDRESS = re.compile(r" at 0x[0-9a-fA-F]+")
 
 

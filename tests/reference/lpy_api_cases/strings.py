@@ -3,22 +3,7 @@ and its table, the predefined module classes, ModuleCategory, eConsiderMethod an
 PackedArgs, ArgList, as L-Py's wrappers define them (src/wrapper/export_module.cpp,
 export_moduleclass.cpp, export_nodemodule.cpp, export_consider.cpp); its strings and patterns
 are strings_axialtree.py's."""
-from lpy_api import case
-
-
-def lpy():
-    import openalea.lpy as l
-
-    return l
-
-
-def declared(name, params):
-    """A module class of the process with declared parameter names. L-Py's table forgets a
-    class declared there once Python holds it no more: a case keeps what this gives."""
-    l = lpy()
-    c = l.ModuleClassTable.get().declare(name)
-    c.parameterNames = params
-    return c
+from lpy_api import case, declared, lpy
 
 
 # --- in a model (first: a reference L-Py that raised in a module's constructor may crash in a

@@ -4,22 +4,7 @@ StringMatching, as L-Py's wrappers define them (src/wrapper/export_axialtree.cpp
 export_lstring.h, export_patternmodule.cpp, export_patternstring.cpp,
 export_stringmatching.cpp). AxialTree's slices are not deleted here: L-Py's removeRange prints
 its indices on the process's stdout."""
-from lpy_api import case
-
-
-def lpy():
-    import openalea.lpy as l
-
-    return l
-
-
-def declared(name, params):
-    """A module class of the process with declared parameter names. L-Py's table forgets a
-    class declared there once Python holds it no more: a case keeps what this gives."""
-    l = lpy()
-    c = l.ModuleClassTable.get().declare(name)
-    c.parameterNames = params
-    return c
+from lpy_api import case, declared, lpy
 
 
 # --- AxialTree, Lstring ------------------------------------------------------------------------
