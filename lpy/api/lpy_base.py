@@ -237,15 +237,24 @@ class LsysOptions:
     """A context's options (L-Py's LsysOptions), by index (options[i]) or by name (find)."""
 
     def __init__(self, store=None, changed=None):
-        self._all = []
-        if store is not None:
-            for name, comment, category, is_global, default, values in _option_table():
-                option = LsysOption(name, comment, category)
-                option._values = [LsysOptionValue(v, c) for v, c in values]
-                option.default_value_id, option._store = default, store
-                setattr(option, 'global', is_global)
-                option._changed = changed
-                self._all.append(option)
+        # A context's options are built when first asked for: most models never ask, and
+        # building L-Py's table cost a small model's Lsystem() a fifth of its time.
+        self._store, self._changed = store, changed
+
+    @property
+    def _all(self):
+        built = self.__dict__.get('_built')
+        if built is None:
+            built = self._built = []
+            if self._store is not None:
+                for name, comment, category, is_global, default, values in _option_table():
+                    option = LsysOption(name, comment, category)
+                    option._values = [LsysOptionValue(v, c) for v, c in values]
+                    option.default_value_id, option._store = default, self._store
+                    setattr(option, 'global', is_global)
+                    option._changed = self._changed
+                    built.append(option)
+        return built
 
     def find(self, name):
         _text(name, 'LsysOptions.find(name)')

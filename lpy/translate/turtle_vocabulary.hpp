@@ -29,14 +29,15 @@ struct TurtleWord {
     const char* sprout = nullptr;      // the Sprout module, for ops that keep their name
 };
 
-// The first six keep the ids ModuleClasses names.
+// The first six keep the ids ModuleClasses names (kPush to kSurface).
 inline constexpr TurtleWord kTurtleVocabulary[] = {
     {{"[", "SB"}, "push", TurtleOp::Push, "["},
     {{"]", "EB"}, "pop", TurtleOp::Pop, "]"},
     {{"%", "Cut"}, nullptr, TurtleOp::Silent},
     {{"*", "any"}, nullptr, TurtleOp::Silent},
-    {{"None"}, nullptr, TurtleOp::Silent},
-    {{"~", "surface"}, "surface", TurtleOp::Surface, "~l"},
+    {{"", "None"}, nullptr, TurtleOp::Silent},  // L-Py's None module is named '' (printed as nothing)
+    {{"~"}, nullptr, TurtleOp::Surface, "~l"},
+    {{"surface"}, "surface", TurtleOp::Surface, "~l"},  // a class of its own in L-Py, as ~ is
     {{"F"}, "F", TurtleOp::Forward, "F"},
     {{"f"}, "f", TurtleOp::Move, "f"},
     {{"nF"}, "nF", TurtleOp::StepForward, "F"},

@@ -44,6 +44,16 @@ def declared_module_parameters():
             str(s), type(ls.derive()).__name__]
 
 
+@case("None", "surface")
+def none_and_surface_in_a_model():
+    """A successor's None stays a module, printed as nothing; surface stays surface."""
+    l = lpy()
+    ls = l.Lsystem()
+    ls.set("Axiom: A\nderivation length: 2\nproduction:\nA --> B ~l(3) surface('l', 2) None C\nB --> None\nendlsystem\n")
+    s = ls.derive()
+    return [str(s), len(s)]
+
+
 # --- predefined module classes, ModuleClass, its table --------------------------------------
 
 
@@ -393,3 +403,18 @@ def module_classes_called():
     l = lpy()
     return [str(l.F()), str(l.F(1, 2)), l.F(1) == l.ParamModule("F", 1), str(l.SB()), str(l.GetPos()), str(l.X(2)),
             text(tried(lambda: l.newmodule())), text(tried(lambda: l.newmodule(3)))]
+
+
+# --- None and surface: L-Py's None module is named '' (its alias None), surface a class apart from ~
+
+
+@case("None", "surface", "ModuleClass.name", "ModuleClass.aliases")
+def none_and_surface():
+    l = lpy()
+    none, surface = getattr(l, "None"), l.surface
+    read = []
+    for t in ["A None B", "A surface B", "A ~l B", 'A surface("l",2) ~(2)']:
+        kept = l.Lstring(t)  # kept while its modules are read (the reference's iterator holds no string)
+        read.append([str(kept), [kept[i].name for i in range(len(kept))]])
+    return [none.name, sorted(none.aliases), surface.name, sorted(surface.aliases), read,
+            str(l.Module("None")), l.Module("None").isNull(), len(l.Lstring("None"))]
