@@ -16,7 +16,8 @@ from types import ModuleType
 import keyword as _keyword
 
 from _sprout_lpy import (AxialTree, _Lstring as Lstring, Module, ParamModule, NodeModule, ModuleClass, PackedArgs,
-                         AxialTreeIterator, _written, _declare, _class_count, __lpy_module_class as _module_class)
+                         AxialTreeIterator, _written, _declare, _class_count, _forget, _forget_class, _named,
+                         __lpy_module_class as _module_class)
 
 Lstring.__module__ = 'openalea.lpy'  # where pickle finds it (_sprout_lpy.Lstring is AxialTree)
 
@@ -239,7 +240,7 @@ class ModuleClassTable:
         return self.size() == 0
 
     def getClasses(self):
-        return [_module_class(i) for i in range(_class_count())]
+        return [_module_class(i) for i in range(_class_count()) if _named(i)]
 
     def getNames(self):
         names = []
@@ -249,13 +250,22 @@ class ModuleClassTable:
 
     def find(self, name):
         if isinstance(name, int):
-            return _module_class(name) if 0 <= name < _class_count() else None
+            return _module_class(name) if 0 <= name < _class_count() and _named(name) else None
         return ModuleClass.get(name)
 
     def declare(self, what):
         if isinstance(what, ModuleClass):
             return False
         return _module_class(_declare(what))
+
+    def remove(self, what):
+        """The name is found no more (a class's own name gives way to its first alias), or
+        every name of a class: L-Py's ModuleClassTable::remove. False when nothing was."""
+        if isinstance(what, ModuleClass):
+            return _forget_class(what.id)
+        if not isinstance(what, str):
+            raise TypeError("ModuleClassTable.remove(name or ModuleClass), not %s" % type(what).__name__)
+        return _forget(what)
 
 
 # [SECTION] ConsiderFilter

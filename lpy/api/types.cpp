@@ -226,6 +226,9 @@ void defineModuleClass(py::module_& m) {
         state["changes"] = py::int_(state.contains("changes") ? state["changes"].cast<long>() + 1 : 1);
     };
     mc.def_property("scale", scaleOf, setScale).def_property("category", scaleOf, setScale);
+    // L-Py's use_count of the class: here the Python handles on it (L-Py's also counts its C++
+    // holders: a predefined class's own pointer, the modules of its strings).
+    mc.def("getReferenceCount", [](const PyModuleClass& c) { return PyModuleClass::handles(c.cls); });
     m.def("_class_count", [] { return names().size(); });
     m.def("__lpy_module_class", [](int cls) { return PyModuleClass{cls}; });
     // An lstring as written: each module's name and its arguments' texts (lstring2py).
@@ -239,6 +242,10 @@ void defineModuleClass(py::module_& m) {
     });
     // Names declared for the strings read outside a model (LsysContext.declare, declare()).
     m.def("_declare", [](const std::string& name) { return internName(name); });
+    // ModuleClassTable.remove(name or class) and whether a class still has a name.
+    m.def("_forget", [](const std::string& name) { return names().forget(name); });
+    m.def("_forget_class", [](int cls) { return names().forget(cls); });
+    m.def("_named", [](int cls) { return names().named(cls); });
 }
 
 }  // namespace

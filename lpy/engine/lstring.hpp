@@ -5,6 +5,7 @@
 // api/types.cpp gives Python as Lstring, Module and ModuleClass.
 #include <cstdint>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -97,8 +98,23 @@ struct PyModule {
 struct PyParamModule : PyModule {};
 struct PyNodeModule : PyParamModule {};
 
+// A module class as Python holds it. The handles alive on each class are counted
+// (ModuleClass.getReferenceCount): they are made and dropped with the GIL held.
 struct PyModuleClass {
     int cls = 0;
+    PyModuleClass(int c = 0) : cls(c) { ++handles(cls); }
+    PyModuleClass(const PyModuleClass& o) : cls(o.cls) { ++handles(cls); }
+    PyModuleClass& operator=(const PyModuleClass& o) {
+        --handles(cls);
+        cls = o.cls;
+        ++handles(cls);
+        return *this;
+    }
+    ~PyModuleClass() { --handles(cls); }
+    static int& handles(int c) {
+        static std::unordered_map<int, int> count;  // with the interpreter: its classes' handles
+        return count[c];
+    }
 };
 
 }  // namespace sprout::lpy

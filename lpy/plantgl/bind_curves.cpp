@@ -193,6 +193,38 @@ void definePlantGL(py::module_& m) {
     // The uniform clamped knots of n control points of a degree (NurbsCurve2D's and
     // NurbsPatch3D's default knots).
     m.def("_pgl_uniform_knots", [](int n, int degree) { return curves::uniformClampedKnots(n, degree); });
+    // NurbsPatch's iso sections: the control points of the section at t, each (x, y, z, w) the
+    // point at t of a row (columns False) or a column (True) of the patch's points (a point
+    // of two or three numbers padded with 1s, as the Python pads them).
+    m.def("_pgl_iso_points", [](py::handle rows, int degree, py::handle knotList, double t, bool columns) {
+        std::vector<std::vector<std::array<double, 4>>> grid;
+        for (py::handle row : rows) {
+            grid.emplace_back();
+            for (py::handle p : row) {
+                const Py_ssize_t n = PySequence_Size(p.ptr());
+                if (n < 0) throw py::error_already_set();
+                std::vector<double> xs;
+                readPoint(p, int(std::min<Py_ssize_t>(n, 4)), xs);
+                std::array<double, 4> q{1.0, 1.0, 1.0, 1.0};
+                for (size_t c = 0; c < xs.size(); ++c) q[c] = xs[c];
+                grid.back().push_back(q);
+            }
+        }
+        const std::vector<double> knots = numbersOf(knotList);
+        const size_t lines = columns ? (grid.empty() ? 0 : grid[0].size()) : grid.size();
+        py::list out;
+        std::vector<std::array<double, 4>> line;
+        for (size_t k = 0; k < lines; ++k) {
+            line.clear();
+            if (columns)
+                for (const auto& row : grid) line.push_back(row.at(k));
+            else
+                line = grid[k];
+            const std::array<double, 4> q = curves::weightedPointAt(line, degree, knots, t);
+            out.append(py::make_tuple(q[0], q[1], q[2], q[3]));
+        }
+        return out;
+    });
     defineProjection(m);  // the light module's z-buffer (bind_light.cpp)
 }
 

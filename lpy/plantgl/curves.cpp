@@ -61,6 +61,19 @@ Point cross(const Point& a, const Point& b) {
 
 }  // namespace
 
+std::array<double, 4> weightedPointAt(const std::vector<std::array<double, 4>>& points, int degree,
+                                      const std::vector<double>& knots, double t) {
+    if (points.empty() || degree < 0) throw std::out_of_range("no points, or a negative degree");
+    std::vector<Homogeneous> h;
+    h.reserve(points.size());
+    for (const auto& p : points) h.push_back({p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]});
+    // Python's min(max(t, first), last), in the Python's order (deBoor then clamps again: the same t).
+    t = pyMin(pyMax(t, knots.at(size_t(degree))), knots.at(points.size()));
+    const Homogeneous d = deBoor(h, degree, knots, t, 3);
+    if (d[3] == 0) return d;
+    return {d[0] / d[3], d[1] / d[3], d[2] / d[3], d[3]};
+}
+
 std::vector<double> uniformClampedKnots(int n, int degree) {
     const int inner = n - degree - 1, ends = std::max(0, degree + 1);  // ([0.0] * (degree + 1): none below 0)
     std::vector<double> k(size_t(ends), 0.0);

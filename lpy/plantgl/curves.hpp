@@ -118,4 +118,11 @@ private:
 // spaced, degree + 1 ones (a curve's and a volume's default knots; plantgl_curves.py asks here).
 std::vector<double> uniformClampedKnots(int n, int degree);
 
+// A point of the B-spline that (x, y, z, w) points make taken as (xw, yw, zw, w), at t clamped
+// to the knots: (x, y, z, w), or the homogeneous point where w is 0 (a patch's iso sections,
+// as PlantGL makes them; plantgl_patches.py asks here). Throws std::out_of_range where the
+// knots are too few for the points and degree.
+std::array<double, 4> weightedPointAt(const std::vector<std::array<double, 4>>& points, int degree,
+                                      const std::vector<double>& knots, double t);
+
 }  // namespace sprout::curves

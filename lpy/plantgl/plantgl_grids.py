@@ -55,11 +55,8 @@ class Grid3Indexing:
         return self.getOrigin() + self.getGridSize()
 
     def cellId(self, index):
-        v, offset = 0, 1
-        for j in (2, 1, 0):
-            v += int(index[j]) * offset
-            offset *= self._dims[j]
-        return v
+        _, ny, nz = self._dims  # (the last index fastest)
+        return (int(index[0]) * ny + int(index[1])) * nz + int(index[2])
 
     def index(self, cid):
         cid = int(cid)
@@ -82,11 +79,15 @@ class Grid3Indexing:
         return int((float(coord) - self._lo[dimension]) / self._size[dimension])
 
     def indexFromPoint(self, p):
-        p = tuple(p)
-        return tuple(int((float(p[k]) - self._lo[k]) / self._size[k]) for k in range(3))
+        p, lo, size = tuple(p), self._lo, self._size
+        return (int((float(p[0]) - lo[0]) / size[0]), int((float(p[1]) - lo[1]) / size[1]),
+                int((float(p[2]) - lo[2]) / size[2]))
 
-    def cellIdFromPoint(self, p):
-        return self.cellId(self.indexFromPoint(p))
+    def cellIdFromPoint(self, p):  # (models ask it for every cell they read)
+        p, lo, size = tuple(p), self._lo, self._size
+        _, ny, nz = self._dims
+        return ((int((float(p[0]) - lo[0]) / size[0]) * ny + int((float(p[1]) - lo[1]) / size[1])) * nz
+                + int((float(p[2]) - lo[2]) / size[2]))
 
     def getVoxelCenter(self, index):
         return Vector3(*[self._lo[k] + (int(index[k]) + 0.5) * self._size[k] for k in range(3)])
@@ -160,26 +161,48 @@ class Grid3Indexing:
 
     def query_voxels_in_cone(self, origin, direction, radius, angle=_math.pi / 2):
         """The voxels near `origin` (as query_voxels_around_point) in the cone of full opening
-        `angle`: by their centre, or, a little wider, by one of their corners (PlantGL's)."""
-        o = Vector3(*tuple(origin)[:3])
-        d = Vector3(*tuple(direction)[:3]).normed()
+        `angle`: by their centre, or, a little wider, by one of their corners (PlantGL's).
+        Written out on floats (the vectors' arithmetic in their order: the same numbers),
+        models ask it for every apex of a step."""
+        ox, oy, oz = Vector3(*tuple(origin)[:3])._v
+        dx, dy, dz = Vector3(*tuple(direction)[:3]).normed()._v
         r = radius + self.getVoxelSize().norm()
         half = angle / 2
         cos_cone, cos_large = _math.cos(half), _math.cos(min(half + _math.pi / 4, _math.pi))
+        (lx, ly, lz), (sx, sy, sz) = self._lo, self._size
+        _, ny, nz = self._dims
+        sqrt = _math.sqrt
         out = []
-        for index in self._around(o, radius):
-            v = self.getVoxelCenter(index) - o
-            dist = v.normalize()
+        for i, j, k in self._around(Vector3(ox, oy, oz), radius):
+            # v = getVoxelCenter(index) - o; dist = v.normalize()
+            vx, vy, vz = lx + (i + 0.5) * sx - ox, ly + (j + 0.5) * sy - oy, lz + (k + 0.5) * sz - oz
+            dist = sqrt(vx * vx + vy * vy + vz * vz)
+            if dist > 0:
+                vx, vy, vz = vx / dist, vy / dist, vz / dist
             if not dist < r:
                 continue
-            a = v * d
+            a = 0.0 + vx * dx + vy * dy + vz * dz
             if a > cos_cone:
-                out.append(self.cellId(index))
+                out.append((i * ny + j) * nz + k)
             elif a > cos_large:
-                for corner in self.getVoxelCorners(index):
-                    if (corner - o).normed() * d > cos_cone:
-                        out.append(self.cellId(index))
+                low = (lx + i * sx, ly + j * sy, lz + k * sz)
+                high = (lx + (i + 1) * sx, ly + (j + 1) * sy, lz + (k + 1) * sz)
+                for cx, cy, cz in self._corner_points(low, high):
+                    wx, wy, wz = cx - ox, cy - oy, cz - oz  # (corner - o).normed() * d
+                    n = sqrt(wx * wx + wy * wy + wz * wz)
+                    if n > 0:
+                        wx, wy, wz = wx / n, wy / n, wz / n
+                    if 0.0 + wx * dx + wy * dy + wz * dz > cos_cone:
+                        out.append((i * ny + j) * nz + k)
                         break
+        return out
+
+    @staticmethod
+    def _corner_points(low, high):
+        """_corners' order on tuples: the low corner, then each axis in turn doubling the list."""
+        out = [low]
+        for axis in range(3):
+            out += [p[:axis] + (high[axis],) + p[axis + 1:] for p in out]
         return out
 
     def query_voxels_in_box(self, center, maxradius, minradius=None):

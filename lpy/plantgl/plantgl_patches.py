@@ -2,34 +2,13 @@
 # parts: plantgl.py): NURBS patches and volumes (NurbsPatch, NurbsPatch3D), PlantGL's interface
 # evaluated in C++ (lpy/plantgl/curves.cpp through bind_curves.cpp). Its own file: surfaces and
 # volumes, apart from the curves (plantgl_curves.py) they are made with.
-from _sprout_lpy import _PglPatch, _pgl_uniform_knots, _pgl_volume_point
+from _sprout_lpy import _PglPatch, _pgl_iso_points, _pgl_uniform_knots, _pgl_volume_point
 from openalea.plantgl import _vectors
 from openalea.plantgl._vectors import _Vec, Vector2, Vector3, cross
 from openalea.plantgl._object import _SceneObject
 from openalea.plantgl._curves import NurbsCurve, Point4Matrix, RealArray, _default_knots
 
 _of2, _of3 = Vector2._of, Vector3._of
-
-
-def _homogeneous_at(points, degree, knots, t):
-    """de Boor on points (x, y, z, w) made (xw, yw, zw, w), at t clamped to the knots: the
-    point (x, y, z, w) of the curve they make there."""
-    pts = [tuple(p) + (1.0,) * (4 - len(tuple(p))) for p in points]
-    h = [[p[0] * p[3], p[1] * p[3], p[2] * p[3], p[3]] for p in pts]
-    n = len(h)
-    t = min(max(t, knots[degree]), knots[n])
-    k = degree
-    while k < n - 1 and t >= knots[k + 1]:
-        k += 1
-    d = [list(h[j + k - degree]) for j in range(degree + 1)]
-    for r in range(1, degree + 1):
-        for j in range(degree, r - 1, -1):
-            i = j + k - degree
-            den = knots[i + degree + 1 - r] - knots[i]
-            a = (t - knots[i]) / den if den else 0.0
-            d[j] = [(1 - a) * x + a * y for x, y in zip(d[j - 1], d[j])]
-    x, y, z, w = d[degree]
-    return (x / w, y / w, z / w, w) if w else (x, y, z, w)
 
 
 class NurbsPatch(_SceneObject):
@@ -160,15 +139,12 @@ class NurbsPatch(_SceneObject):
     def getIsoUSectionAt(self, u):
         """The curve along v at u: each column's control points taken along u at u, in
         homogeneous coordinates (PlantGL's), with the patch's v knots and degree."""
-        rows, knots = self.ctrlPointMatrix, self._knots('u')
-        points = [_homogeneous_at([rows[i][j] for i in range(len(rows))], self.udegree, knots, u)
-                  for j in range(len(rows[0]))]
+        points = _pgl_iso_points(self.ctrlPointMatrix, self.udegree, self._knots('u'), u, True)
         return NurbsCurve(points, self.vdegree, self._knots('v'), self.vstride)
 
     def getIsoVSectionAt(self, v):
         """The curve along u at v."""
-        rows, knots = self.ctrlPointMatrix, self._knots('v')
-        points = [_homogeneous_at(row, self.vdegree, knots, v) for row in rows]
+        points = _pgl_iso_points(self.ctrlPointMatrix, self.vdegree, self._knots('v'), v, False)
         return NurbsCurve(points, self.udegree, self._knots('u'), self.ustride)
 
 

@@ -95,6 +95,30 @@ int ModuleClasses::find(std::string_view name) const {
     return it == m_ids.end() || m_hidden[size_t(it->second)] ? -1 : it->second;
 }
 
+bool ModuleClasses::forget(std::string_view name) {
+    const int cls = find(name);
+    if (cls < 0) return false;
+    if (m_names[size_t(cls)] == name) {
+        const std::vector<std::string> others = aliasesOf(cls);
+        if (!others.empty()) m_names[size_t(cls)] = others.front();
+    }
+    m_ids.erase(std::string(name));
+    return true;
+}
+
+bool ModuleClasses::forget(int cls) {
+    bool any = false;
+    for (auto it = m_ids.begin(); it != m_ids.end();) {
+        if (it->second == cls && !m_hidden[size_t(cls)]) {
+            it = m_ids.erase(it);
+            any = true;
+        } else {
+            ++it;
+        }
+    }
+    return any;
+}
+
 void ModuleClasses::alias(std::string_view name, int cls) {
     if (name.empty() || find(name) >= 0) return;
     m_ids.insert_or_assign(std::string(name), cls);

@@ -30,6 +30,12 @@ public:
     // The class of `name`, adding it when new.
     int intern(std::string_view name);
     int find(std::string_view name) const;  // -1 when unknown
+    // L-Py's ModuleClassTable.remove: `name` is found no more (a class's own name gives way to
+    // its first alias); or every name of `cls`. False when there was nothing to forget. A
+    // class without a name keeps its id for the modules of it that strings hold.
+    bool forget(std::string_view name);
+    bool forget(int cls);
+    bool named(int cls) const { return cls >= 0 && size_t(cls) < m_names.size() && find(m_names[size_t(cls)]) == cls; }
     const std::string& name(int cls) const { return m_names[size_t(cls)]; }
     std::vector<std::string> aliasesOf(int cls) const;  // its other names
     size_t size() const { return m_names.size(); }

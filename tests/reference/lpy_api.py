@@ -16,7 +16,8 @@
 Public names are dir(openalea.lpy) without a leading underscore; a public class is one of them
 that is a class, and its public members are dir(cls) without a leading underscore (for a class
 built on int, an enum, less int's own). A member is "checked" when every differential case that
-names it gives the same result in both; UI-only names (a case file's UI_ONLY) must exist in
+names it gives the same result in both (or, for what the reference crashes on, a case marked
+@defined gives in Sprout what L-Py's definition says); UI-only names (a case file's UI_ONLY) must exist in
 Sprout and raise NotImplementedError there, and are counted apart.
 
 REF_PYTHON is the reference L-Py's interpreter (ROOT/venv/bin/python after
@@ -81,6 +82,21 @@ def case(*covers):
     return mark
 
 
+_defined = []
+
+
+def defined(*covers, expect, source):
+    """Marks a case for members the reference cannot run (it crashes the process on them): only
+    Sprout runs it, and its result must be `expect`, read from L-Py's definition (`source`:
+    where in L-Py's sources)."""
+
+    def mark(f):
+        _defined.append((f.__module__ + "." + f.__name__, covers, f, expect, source))
+        return f
+
+    return mark
+
+
 def lpy():
     """openalea.lpy, whichever this interpreter has (for the case files)."""
     import openalea.lpy as l
@@ -138,6 +154,16 @@ def run_cases(lpy):
             out[name] = {"covers": list(covers), "value": canon(f())}
         except Exception as e:
             out[name] = {"covers": list(covers), "raises": type(e).__name__, "message": str(e)[:300]}
+        finally:
+            sys.stdout = real_stdout
+    for name, covers, f, expect, source in (_defined if "sprout" in sys.modules else []):
+        real_stdout = sys.stdout
+        sys.stdout = io.StringIO()
+        try:
+            out["defined:" + name] = {"covers": list(covers), "value": canon(f()), "expect": canon(expect), "source": source}
+        except Exception as e:
+            out["defined:" + name] = {"covers": list(covers), "raises": type(e).__name__, "message": str(e)[:300],
+                                      "expect": canon(expect), "source": source}
         finally:
             sys.stdout = real_stdout
     for name in ui:  # each must exist, and raise NotImplementedError where it is Sprout's
@@ -247,6 +273,17 @@ def report(ref_inv, mine_inv, at_least, ref_cases=None, mine_cases=None):
                 failed.update(ref["covers"])
                 print("DIFFERS %s\n  L-Py:   %s\n  Sprout: %s" % (name, json.dumps({k: v for k, v in ref.items() if k != "covers"})[:400],
                                                              json.dumps({k: v for k, v in mine.items() if k != "covers"})[:400]))
+        # Cases read from L-Py's definition, for what the reference crashes on: Sprout's alone.
+        by_definition = {n: c for n, c in mine_cases.items() if n.startswith("defined:")}
+        for name, mine in sorted(by_definition.items()):
+            if "raises" not in mine and same(mine["value"], mine["expect"]):
+                checked.update(mine["covers"])
+            else:
+                differ.append(name)
+                failed.update(mine["covers"])
+                print("DIFFERS FROM L-PY'S DEFINITION %s (%s)\n  expected: %s\n  Sprout:   %s"
+                      % (name, mine["source"], json.dumps(mine["expect"])[:400],
+                         json.dumps({k: v for k, v in mine.items() if k in ("value", "raises", "message")})[:400]))
         for name in ui:
             entry = mine_cases.get("ui:" + name, {})
             if not entry.get("exists"):
@@ -258,6 +295,8 @@ def report(ref_inv, mine_inv, at_least, ref_cases=None, mine_cases=None):
         if unchecked:
             print("not checked by a case: " + " ".join(unchecked))
         print("differential cases: %d of %d agree" % (agree, len(ref_cases) - sum(1 for n in ref_cases if n.startswith("ui:"))))
+        print("cases from L-Py's definition (the reference crashes on them): %d of %d agree"
+              % (sum(1 for n in by_definition if n not in differ), len(by_definition)))
         print("names and members checked by a case: %d of %d (%.1f%%); UI-only: %d"
               % (len(checked & api), len(api), 100.0 * len(checked & api) / max(1, len(api)), len(set(ui) & api)))
         ok = ok and not differ

@@ -463,13 +463,26 @@ def parameter_set_setdefault_pairs():
 
 @case("extern")
 def extern_values():
-    # (defaultparameters has no case: L-Py's calls inspect.getargspec, which Python 3.11 no
-    # longer has, so it raises AttributeError there; Sprout's runs.)
     ns = {}
     exec('\n'.join(['from openalea.lpy import extern', 'b = 20', 'extern(a=1, b=2)', 'extern("b")', '']), ns)
     from openalea.lpy.defaultparameters import extern as extern2
     import openalea.lpy as lpy
     return [ns['a'], ns['b'], sorted(ns['__externs__']), extern2 is lpy.extern]
+
+
+@case("defaultparameters")
+def default_parameters():
+    # L-Py's calls inspect.getargspec, which Python 3.11 no longer has: given back here as
+    # getfullargspec (the same .args) for the reference; Sprout's does not call it.
+    import inspect
+    if not hasattr(inspect, 'getargspec'):
+        inspect.getargspec = inspect.getfullargspec
+    ns = {}
+    exec('\n'.join(['from openalea.lpy import defaultparameters', 'b = 20',
+                    '@defaultparameters', 'def p():', '    a = 1', '    b = 2', '',
+                    '@defaultparameters', 'def q(i):', '    c = 3 * i', '    b = 0', '    return c + 1', '',
+                    'r = q(4)', '']), ns)
+    return [ns['a'], ns['b'], ns['c'], ns['r'], ns['p'].__name__, callable(ns['q'])]
 
 
 @case("extern")

@@ -404,6 +404,34 @@ def debugger_breakpoints_filter():
     return [d.alwaysStop, d.log]
 
 
+@case("LpyDebugger.insertLstringBreakPointAt", "LpyDebugger.removeLstringBreakPointAt",
+      "LpyDebugger.hasLstringBreakPointAt", "LpyDebugger.alwaysStop")
+def debugger_lstring_breakpoints():
+    """Positions of the string being derived: L-Py's hold an iterator into it, so they are set
+    once the step has begun (from begin on, the reference crashes); has... tells nothing."""
+    d = told_debugger()
+    inner = d.total_match
+
+    def total_match(pos_beg, pos_end, dest, prod_length, rule, args):
+        inner(pos_beg, pos_end, dest, prod_length, rule, args)
+        if pos_beg == 0:
+            d.alwaysStop = False
+            d.insertLstringBreakPointAt(3)
+            d.insertLstringBreakPointAt(4)
+            d.log.append(("has", d.hasLstringBreakPointAt(3)))
+            d.removeLstringBreakPointAt(4)
+            try:
+                d.removeLstringBreakPointAt(4)
+            except Exception as e:
+                d.log.append(("raised", type(e).__name__, str(e)))
+
+    d.total_match = total_match
+    lsys = lsystem("Axiom: A B C D E\nderivation length: 1\nproduction:\nA --> A\nC --> C\nE --> E\nendlsystem\n")
+    lsys.setDebugger(d)
+    out = str(lsys.derive(1))
+    return [out, d.log]
+
+
 @case("LpyDebugger.insertCodeBreakPointAt", "LpyDebugger.removeCodeBreakPointAt", "LpyDebugger.hasCodeBreakPointAt",
       "LpyDebugger.clearBreakPoints", "LpyDebugger.clearCodeBreakPoints", "LpyDebugger.clearLstringBreakPoints",
       "LpyDebugger.clearPyError", "LpyDebugger.alwaysStop")

@@ -418,3 +418,28 @@ def none_and_surface():
         read.append([str(kept), [kept[i].name for i in range(len(kept))]])
     return [none.name, sorted(none.aliases), surface.name, sorted(surface.aliases), read,
             str(l.Module("None")), l.Module("None").isNull(), len(l.Lstring("None"))]
+
+
+@case("ModuleClassTable.remove")
+def table_remove():
+    l = lpy()
+    t = l.ModuleClassTable.get()
+    c = t.declare("Zq")
+    out = [c.name, t.remove("Zq"), t.find("Zq"), t.remove("Zq"), "Zq" in t.getNames()]
+    e = t.declare("Zr")
+    out += [t.remove(e), t.find("Zr"), "Zr" in t.getNames(), t.remove("NoSuchName"), text(tried(lambda: t.remove(3)))]
+    again = t.declare("Zq")
+    return out + [again.name, again.id != c.id, t.find("Zq") is not None]
+
+
+@case("ModuleClass.getReferenceCount")
+def class_reference_count():
+    """The handles Python holds on a declared class that no string uses (L-Py's also counts
+    C++ holders: a predefined class's own pointer, modules)."""
+    t = lpy().ModuleClassTable.get()
+    c = t.declare("Zt")
+    one = c.getReferenceCount()
+    d = t.find("Zt")
+    two = [c.getReferenceCount(), d.getReferenceCount()]
+    del d
+    return [one, two, c.getReferenceCount()]

@@ -4,7 +4,7 @@ StringMatching, as L-Py's wrappers define them (src/wrapper/export_axialtree.cpp
 export_lstring.h, export_patternmodule.cpp, export_patternstring.cpp,
 export_stringmatching.cpp). AxialTree's slices are not deleted here: L-Py's removeRange prints
 its indices on the process's stdout."""
-from lpy_api import case, declared, lpy
+from lpy_api import case, declared, defined, lpy
 
 
 # --- AxialTree, Lstring ------------------------------------------------------------------------
@@ -347,3 +347,43 @@ def axial_tree_through_a_filter():
                             s.children(i, "<", f), s.children(i, "+", f)])
         out.append(row)
     return out
+
+
+# --- NodeModule.complex, from L-Py's definition: the reference crashes the process on it -----
+
+
+def _lpy_complex(scales, pos, scale):
+    """L-Py's LPY::complex (src/cpp/axialtree_manip.h), written out for a string without
+    brackets (each module's parent is the one before it): up through the parents while their
+    scale is below `scale`; the first one at `scale`, else none. A class without a scale has
+    L-Py's ModuleClass::DEFAULT_SCALE, INT_MAX."""
+    if pos == 0 or not scales[pos] < scale:
+        return None
+    pos -= 1
+    while pos >= 0 and scales[pos] < scale:
+        pos -= 1
+    return pos if pos >= 0 and scales[pos] == scale else None
+
+
+_MAX = 2 ** 31 - 1
+_SCALES = [1, 2, _MAX, _MAX, 2, _MAX, 1, 2, _MAX]  # P U I I U I P U I, P at scale 1 and U at 2
+
+
+def _up(scale):  # up_scale (src/cpp/module.h): scale + 1 in a C++ int, INT_MAX + 1 wrapping
+    return scale + 1 if scale < _MAX else -2 ** 31
+
+
+@defined("NodeModule.complex",
+         expect=[[i, _lpy_complex(_SCALES, i, _up(_SCALES[i]))] + [_lpy_complex(_SCALES, i, sc) for sc in (0, 1, 2, 3)]
+                 for i in range(9)],
+         source="src/cpp/nodemodule.h: complex(scale) is LPY::complex(pos, scale), complex() is complex(scale() + 1)")
+def node_complex():
+    l = lpy()
+    p, u = declared("P", []), declared("U", [])
+    p.scale, u.scale = 1, 2
+    s = l.AxialTree("P U I I U I P U I")
+
+    def at(n):
+        return None if n is None else n.position()
+
+    return [[i, at(s.node(i).complex())] + [at(s.node(i).complex(sc)) for sc in (0, 1, 2, 3)] for i in range(len(s))]
