@@ -191,6 +191,10 @@ void start(void (*defineModule)(py::module_&)) {
             lpyEmbed.attr("_embed")("openalea.plantgl.scenegraph.nurbspatch_nd",
                                     "from openalea.plantgl.all import NurbsPatch3D, Vector3, Vector4\n",
                                     "<sprout>/openalea/plantgl/scenegraph/nurbspatch_nd.py");
+            // PlantGL's text scene files (lpy/plantgl/plantgl_geomfile.py): imported when a scene
+            // is saved to or read from one.
+            lpyEmbed.attr("_embed")("openalea.plantgl._geomfile", std::string(embedded("plantgl_geomfile")),
+                                    "<sprout>/openalea/plantgl/_geomfile.py");
             // openalea.mtg (lpy/mtg/): imported on demand, a real openalea.mtg first where the
             // Python running Sprout has one (lpy/api/lpy.py's _Embedded).
             lpyEmbed.attr("_embed")("openalea.mtg", std::string(embedded("mtg_package")), "<sprout>/openalea/mtg/__init__.py");
@@ -200,7 +204,6 @@ void start(void (*defineModule)(py::module_&)) {
             for (const auto& [name, stem] : mtgParts)
                 lpyEmbed.attr("_embed")(std::string("openalea.mtg.") + name, std::string(embedded(stem)),
                                         std::string("<sprout>/openalea/mtg/") + name + ".py");
-            // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py), part of openalea.lpy.
             // L-Py's Lsystem for scripts (lpy/api/lpy_lsystem.py, its scenes lpy_scene.py, its rules lpy_rules.py), part of openalea.lpy.
             installModule("openalea.lpy._scene", embedded("lpy_scene"), "<sprout>/openalea/lpy/_scene.py");
             installModule("openalea.lpy._lsystem", embedded("lpy_lsystem"), "<sprout>/openalea/lpy/_lsystem.py");

@@ -331,23 +331,34 @@ class Scene(list):
     """PlantGL's Scene: a list of shapes (`sc += Shape(...)`), kept, not drawn by Sprout."""
 
     def __init__(self, shapes=()):
+        list.__init__(self, shapes if isinstance(shapes, (list, tuple)) else [])
         if isinstance(shapes, str):
             self.read(shapes)
-        list.__init__(self, shapes if isinstance(shapes, (list, tuple)) else [])
 
     def read(self, filename, format=''):
-        """PlantGL reads its own files (.geom, .bgeom) and others into a scene: Sprout does not."""
-        raise NotImplementedError("Scene(%r): Sprout's PlantGL does not read scene files (PlantGL's .geom, .bgeom, "
-                                  "...); a scene is made by a model or by Lsystem.sceneInterpretation" % (filename,))
-
-    def save(self, filename, format=''):
-        """A scene an Lsystem made, written as a model (.obj, .ply, .glb, .gltf, .stl, .svg) by
-        Sprout's exporters; PlantGL's own formats (.geom, .bgeom) are not written."""
+        """PlantGL's text files (.geom) read into the scene (lpy/plantgl/plantgl_geomfile.py);
+        its binary ones (.bgeom) and other formats are not."""
         import os
         ext = os.path.splitext(str(filename))[1].lower()
+        if ext != '.geom':
+            raise NotImplementedError("Scene(%r): Sprout's PlantGL reads PlantGL's text scenes (.geom), not %s"
+                                      % (filename, ext or 'a file without an extension'))
+        from openalea.plantgl._geomfile import read
+        self.extend(read(filename))
+        return True
+
+    def save(self, filename, format=''):
+        """PlantGL's text file (.geom, as PlantGL writes it: lpy/plantgl/plantgl_geomfile.py),
+        or a model (.obj, .ply, .glb, .gltf, .stl, .svg) by Sprout's exporters for a scene an
+        Lsystem made; PlantGL's binary .bgeom is not written."""
+        import os
+        ext = os.path.splitext(str(filename))[1].lower()
+        if ext == '.geom':
+            from openalea.plantgl._geomfile import write
+            return write(self, filename)
         if ext not in ('.obj', '.ply', '.glb', '.gltf', '.stl', '.svg'):
-            raise NotImplementedError("Scene.save(%r): Sprout writes .obj, .ply, .glb, .gltf, .stl or .svg, not "
-                                      "PlantGL's %s" % (filename, ext or 'format without an extension'))
+            raise NotImplementedError("Scene.save(%r): Sprout writes .geom, .obj, .ply, .glb, .gltf, .stl or .svg, not "
+                                      "%s" % (filename, ext or 'a format without an extension'))
         return self.export(filename)
 
     def merge(self, other):

@@ -119,5 +119,5 @@ def test_members_models_call_give_plantgls_values():
     assert Sphere().radius == 0.5 and Sphere.DEFAULT_STACKS == 8 and not Sphere(2).isRadiusToDefault()
     with pytest.raises(IndexError):
         Scene([sh]).find(6)
-    with pytest.raises(NotImplementedError, match=r"\.geom"):
-        Scene([sh]).save("tree.geom")
+    with pytest.raises(NotImplementedError, match=r"\.bgeom"):
+        Scene([sh]).save("tree.bgeom")

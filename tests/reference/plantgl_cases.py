@@ -8,6 +8,57 @@ TWO_SPHERES = ("sc = Scene([Shape(Sphere(1), Material(), 1), Shape(Translated((0
 SQUARE = ("sq = TriangleSet([(0,0,0),(1,0,0),(1,1,0),(0,1,0)], [(0,1,2),(0,2,3)])\n"
           "sc = Scene([Shape(sq, Material(), 7), Shape(Translated((0.25,0.25,1), Scaled((0.5,0.5,1), sq)), Material(), 8)])\n")
 
+# PlantGL's text scene files (.geom): each shape described by its fields, sorted by id (PlantGL's
+# reader gives its shapes in an order of its own).
+DESCRIBED = (
+    "def desc(g):\n"
+    "    t = type(g).__name__\n"
+    "    if t == 'Shape':\n"
+    "        return [t, g.id, desc(g.geometry), desc(g.appearance)]\n"
+    "    if t == 'Material':\n"
+    "        return [t, list(g.ambient), g.diffuse, list(g.specular), list(g.emission), g.shininess, g.transparency]\n"
+    "    out = [t]\n"
+    "    for f in ('radius', 'height', 'taper', 'slices', 'stacks', 'solid', 'size', 'translation', 'scale', 'axis',\n"
+    "              'angle', 'azimuth', 'elevation', 'roll', 'primary', 'secondary'):\n"
+    "        if hasattr(g, f):\n"
+    "            v = getattr(g, f)\n"
+    "            out.append([f, list(v) if hasattr(v, '__len__') else v])\n"
+    "    if hasattr(g, 'geometry'): out.append(desc(g.geometry))\n"
+    "    if hasattr(g, 'geometryList'): out.append([desc(x) for x in g.geometryList])\n"
+    "    if hasattr(g, 'pointList'): out.append([list(p) for p in g.pointList])\n"
+    "    if getattr(g, 'indexList', None) is not None: out.append([list(i) for i in g.indexList])\n"
+    "    return out\n"
+    "def described(path):\n"
+    "    return sorted((desc(sh) for sh in Scene(path)), key=lambda d: d[1])\n")
+# A file as PlantGL's printer writes one (written here by hand): named objects, a shared
+# material, nested objects in place, a colour given as one number, a comment, angles in degrees.
+GEOM_TEXT = (
+    "# a scene\n"
+    "Translated T1 {\n    Translation <1,2,3>\n    Geometry Oriented {\n        Primary <0,0,1>\n"
+    "        Secondary <1,0,0>\n        Geometry Cylinder { Radius 0.1 Height 2.5 Solid False Slices 5 }\n    }\n}\n"
+    "Material M1 {\n    Ambient <10,200,30>\n    Diffuse 1.2\n    Specular <5,6,7>\n    Emission 1\n"
+    "    Shininess 0.5\n    Transparency 0.25\n}\n"
+    "Shape S1 { Id 4 Geometry T1 Appearance M1 }\n"
+    "AxisRotated A1 {\n    Axis <0,1,0>\n    Angle 30\n    Geometry Box { Size <1,2,3> }\n}\n"
+    "Shape S2 { Id 9 Geometry A1 Appearance M1 }\n"
+    "TriangleSet TS {\n    PointList [ <0,0,0>, <1,0.5,0>, <0,1,0.25> ]\n    IndexList [ [0,1,2] ]\n}\n"
+    "Shape S3 {\n    Id 2\n    Geometry TS\n    Appearance Material { Ambient <1,2,3> }\n}\n"
+    "Shape S4 { Id 7 Geometry EulerRotated { Azimuth 10 Elevation 20 Roll 30 Geometry Group {\n"
+    "    GeometryList [ Sphere { Radius 1 Slices 9 }, Cone { Radius 1 Height 2 } ] } } Appearance M1 }\n")
+GEOM_FILE = ("import tempfile, os\nd = tempfile.mkdtemp()\npath = os.path.join(d, 'scene.geom')\n"
+             "open(path, 'w').write(%r)\n" % GEOM_TEXT)
+SCENE_TO_SAVE = (
+    "import tempfile, os\n"
+    "m = Material((10,200,30))\nm.diffuse = 1.2\nm.specular = Color3(5,6,7)\nm.shininess = 0.5\n"
+    "sc = Scene([Shape(Translated(Vector3(1,2,3), Oriented(Vector3(0,0,1), Vector3(1,0,0), Cylinder(0.1, 2.5))), m, 100),\n"
+    "            Shape(AxisRotated((0,1,0), 1.0, Box((1,2,3))), Material((1,2,3)), 101),\n"
+    "            Shape(EulerRotated(0.1, 0.2, 0.3, Disc(0.3, 12)), m, 102),\n"
+    "            Shape(Group([Sphere(1), Cone(1, 2)]), m, 103), Shape(Frustum(0.3, 2, 0.25), m, 104),\n"
+    "            Shape(QuadSet([(0,0,0),(1,0,0),(1,1,0),(0,1,0)], [(0,1,2,3)]), m, 105),\n"
+    "            Shape(Scaled((2,2,2), Translated((1,0,0), Sphere(0.7, 9, 11))), m, 106),\n"
+    "            Shape(Polyline([(0,0,0),(1,1,1)]), m, 107)])\n"
+    "d = tempfile.mkdtemp()\npath = os.path.join(d, 'saved.geom')\nsc.save(path)\n")
+
 CASES = [
     # openalea.plantgl.scenegraph.cspline
     ("cspline 3D control points, knots, stride",
@@ -221,4 +272,8 @@ CASES = [
      "z.setOrthographicCamera(-1, 1, -1, 1, 1, 5)\n"
      "z.lookAt(Vector3(0.5,0.5,3), Vector3(0.5,0.5,0), Vector3(0,1,0))\n"
      "z.process(sc)\nresult = dict(z.idhistogram(False))", 0),
+    # PlantGL's text scene files: the same text read by both; a scene saved and read back (to
+    # PlantGL's six digits: the reference writes no more)
+    ("a .geom file read", DESCRIBED + GEOM_FILE + "result = described(path)", 1e-12),
+    ("a scene saved as .geom and read back", DESCRIBED + SCENE_TO_SAVE + "result = described(path)", 1e-5),
 ]
