@@ -47,13 +47,24 @@ def _scene(parts):
             geometry = Translated(Vector3(*part[2]), Sphere(part[4]))
             colour = part[5]
         elif kind == 'surface':
-            geometry = Translated(Vector3(*part[2]), Scaled((part[4],) * 3, TriangleSet([], [])))
+            # PlantGL's turtle's: its leaf 'l' scaled, turned to the turtle's frame
+            # (Oriented(up, -left): the leaf along the heading) and placed (pglturtledrawer.cpp).
+            h, up = Vector3(*part[3]), Vector3(*part[6])
+            geometry = Translated(Vector3(*part[2]), Oriented(up, h ^ up, Scaled(Vector3(part[4], part[4], part[4]),
+                                                                                  _leaf(TriangleSet))))
             colour = part[5]
         else:
             geometry = _drawn_mesh(TriangleSet, Vector3, part[2], part[3])
             colour = part[4]
         scene.append(Shape(geometry, _material(colour), ident))
     return scene
+
+
+def _leaf(TriangleSet):
+    """PlantGL's turtle's surface 'l' (PglTurtle::defaultValue): six triangles in the y-z plane,
+    from 0 to 1 along z, a quarter wide on each side."""
+    points = [(0, 0, 0.5), (0, 0, 0), (0, -0.25, 1. / 3), (0, -0.25, 2. / 3), (0, 0, 1), (0, 0.25, 2. / 3), (0, 0.25, 1. / 3)]
+    return TriangleSet(points, [(0, 2, 1), (0, 3, 2), (0, 4, 3), (0, 5, 4), (0, 6, 5), (0, 1, 6)])
 
 
 def _along(axis, g, Oriented, Vector3):

@@ -276,4 +276,17 @@ CASES = [
     # PlantGL's six digits: the reference writes no more)
     ("a .geom file read", DESCRIBED + GEOM_FILE + "result = described(path)", 1e-12),
     ("a scene saved as .geom and read back", DESCRIBED + SCENE_TO_SAVE + "result = described(path)", 1e-5),
+    # A model's own scene: its leaves (~l) are PlantGL's turtle's leaf, turned to the turtle's
+    # frame, and intercept light (the F's cylinders turn about their axis as Sprout guesses: the
+    # pixels differ a little).
+    ("a model's leaves in its scene, lit",
+     "from openalea.lpy import Lsystem\n"
+     "l = Lsystem()\nl.setCode('Axiom: F(1) +(30) /(20) ~l(2) F(1) &(50) ~l(1.5)\\n')\n"
+     "sc = l.sceneInterpretation(l.axiom)\n"
+     "leaves = [sh for sh in sc if type(sh.geometry.geometry.geometry).__name__ == 'Scaled']\n"
+     "frames = sorted([sh.id, list(sh.geometry.translation), list(sh.geometry.geometry.primary),\n"
+     "                 list(sh.geometry.geometry.secondary), list(sh.geometry.geometry.geometry.scale),\n"
+     "                 [list(p) for p in sh.geometry.geometry.geometry.geometry.pointList]] for sh in leaves)\n"
+     "lit = directionalInterception(sc, [(45, 30, 1), (80, 200, 1)], screenresolution=0.01)\n"
+     "result = [frames, [lit[sh.id] for sh in sorted(leaves, key=lambda sh: sh.id)]]", 0.03),
 ]
