@@ -34,7 +34,7 @@ TEST(LpyEncoding, ALatin1ModelDerives) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     // Written in Latin-1: accents in comments, in the Python header and in a rule's line.
     const std::string text =
-        "# Mod\xE8le \xE9crit en Latin-1 : une tige\n"
+        "# Mod\xE8le \xE9" "crit en Latin-1 : une tige\n"
         "longueur = 2.5  # \xE9paisseur\n"
         "Axiom: A(1)\n"
         "derivation length: 3\n"
