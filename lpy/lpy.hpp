@@ -8,6 +8,7 @@
 //
 // Python in a file is a program: callers decide whether a file may run (the viewer asks the
 // user; `sprout render | expand | export` run it as `python3 FILE` would, unless --no-python).
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -87,6 +88,12 @@ std::shared_ptr<const Grammar> drawingOf(void* session, void* lstring);
 // _repr_png_): the `sprout` module hands its Plant maker down (python/), a Python callable
 // (session, lstring) -> sprout.Plant given as a PyObject*; lpy's Python imports nothing above it.
 void setScenePlantMaker(void* maker);
+
+// Points along an L-Py model's 2D curve as PlantGL evaluates it (lpy/plantgl/curves.hpp), for
+// the panel's curve editor: kind 0 a NURBS of `degree` on uniform clamped knots, 1 a Bezier
+// (one span of all its points), 2 the polyline itself; `ctrl` is (x, y, weight) a point.
+// `samples` points from the first knot to the last (the polyline's own points for kind 2).
+std::vector<std::array<double, 2>> curveSamples(int kind, int degree, const std::vector<std::array<double, 3>>& ctrl, int samples);
 
 // Installs Sprout's openalea.lpy and openalea.plantgl (L-Py's Python API, lpy/api/session.cpp)
 // into the running interpreter: `sprout.use_as_openalea()`.

@@ -2,6 +2,7 @@
 // end the viewer, growth refused at the line that asks for it, labels, picking and the
 // inspector on Python rules.
 #include <chrono>
+#include <sstream>
 
 #include "tests/viewer/window_support.hpp"
 
@@ -142,6 +143,54 @@ TEST(Window, LpyGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
     EXPECT_EQ(printed[2].rfind("diagnostic=2:1: step 24 would make 83,886,077 modules", 0), 0u) << printed[2];
     EXPECT_EQ(printed[3], "plant=shown");  // the plant of derivation length 3 stays
     EXPECT_LT(seconds, 60.0);  // (not timed: refused at once, this only keeps a hang from passing)
+}
+
+// Issue 52: a point of an L-Py model's curve, moved as a drag in the panel's curve editor moves
+// it, moves in the model's text (only its list, in L-Py Studio's form) and the plant follows it;
+// moved back, the picture and the saved file are what they were.
+TEST(Window, ACurvePointMovedBendsThePlantAndMovedBackRestoresIt) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("curve_window");
+    const fs::path model = dir / "guided.lpy";
+    const std::string text =
+        "Axiom: _(0.15) SetGuide(path, 8) nF(8, 0.1)\nderivation length: 0\nproduction:\nendlsystem\n"
+        "###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\ndef __initialiseContext__(context):\n"
+        "\timport openalea.plantgl.all as pgl\n\tpath = pgl.NurbsCurve2D(\t\n"
+        "\t    ctrlPointList = pgl.Point3Array([(-0.5, 0, 1),(-0.1, 0.05, 1),(0.2, -0.05, 1),(0.5, 0, 1)]) , \n\t    )\n"
+        "\tpath.name = \"path\"\n"
+        "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('Curve2D',path)])\n"
+        "\tparameterset = [panel_0,]\n\tcontext[\"__curves__\"] = [('path',path),]\n"
+        "\tcontext[\"__parameterset__\"] = parameterset\n\tcontext[\"path\"] = path\n";
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const fs::path moved = dir / "moved.lpy", back = dir / "back.lpy";
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\ncurves\nscreenshot " + a + " 400x300\ncurve-point path 2 0.2 0.6\nwait\ncurves\n"
+                                   "screenshot " + b + " 400x300\nsaveas " + moved.string() + "\ncurve-point path 2 0.2 -0.05\nwait\n"
+                                   "screenshot " + c + " 400x300\nsaveas " + back.string() + "\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,-0.05,1;0.5,0,1",
+                                                 "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,0.6,1;0.5,0,1"}));
+    auto differ = [](const Image& x, const Image& y) {
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
+            n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
+        return n;
+    };
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_GT(differ(ia, ib), 400u * 300u / 200) << "the stem follows its path";
+    EXPECT_LE(differ(ia, ic), 20u) << "moved back, the plant is as it was";
+    auto read = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    const std::string was = "(0.2, -0.05, 1)", now = "(0.2, 0.6, 1)";
+    std::string expected = text;
+    expected.replace(expected.find(was), was.size(), now);
+    EXPECT_EQ(read(moved), expected) << "only the point's numbers change";
+    EXPECT_EQ(read(back), text) << "moved back, the file is the same byte for byte";
 }
 
 }  // namespace

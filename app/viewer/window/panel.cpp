@@ -201,6 +201,8 @@ void drawPanel(App& app) {
         if (ImGui::CollapsingHeader("VLab object", ImGuiTreeNodeFlags_DefaultOpen)) vlabSection(app, *object);
     if (ImGui::CollapsingHeader("Grammar", ImGuiTreeNodeFlags_DefaultOpen)) grammarSection(app);
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
+    if (app.state.kind() == FileKind::Lpy && hasLpyCurves(app))
+        if (ImGui::CollapsingHeader("Curves", ImGuiTreeNodeFlags_DefaultOpen)) curveSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);
     if (auto plant = app.state.plant(); plant && plant->environment && !plant->environment->empty())
         if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(app, *plant->environment);

@@ -3,6 +3,8 @@
 // and colours, which drawPanel (panel.cpp) puts together.
 #include <imgui.h>
 
+#include <string>
+
 #include "app/viewer/window/app.hpp"
 
 namespace sprout::viewer::detail {
@@ -20,5 +22,10 @@ void growthSection(App& app);
 void environmentSection(App& app, const Environment& env);
 void viewSection(App& app);
 void presetSection(App& app);
+// panel_curves.cpp: an L-Py model's 2D curves, each in an editor whose points the mouse drags;
+// moveCurvePoint is what a drag does (the script's curve-point too): false for no such point.
+bool hasLpyCurves(App& app);
+void curveSection(App& app);
+bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y);
 
 }  // namespace sprout::viewer::detail

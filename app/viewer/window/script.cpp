@@ -4,6 +4,8 @@
 //   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
 //   define <name> <value> a define, as its slider would
 //   environment <k> <value>   the k-th (from 0) environment slider, as the panel's would
+//   curves                prints each of an L-Py model's 2D curves: "curve=NAME kind=K points=x,y,w;..."
+//   curve-point <name> <k> <x> <y>   moves point k of that curve, as a drag in its editor does
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
 //                         "module=NAME index=I step=S rule_line=L" (with " rule_label=p2" for
@@ -55,7 +57,9 @@
 
 #include "app/args.hpp"
 #include "app/viewer/window/app.hpp"
+#include "app/plant/lpy_objects.hpp"
 #include "app/plant/text_edit.hpp"
+#include "app/viewer/window/panel_sections.hpp"
 #include "core/base/bounded.hpp"
 #include "core/base/read_file.hpp"
 
@@ -186,6 +190,23 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         auto numbers = environmentNumbers(app.state.text());
         if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
         else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
+        return true;
+    }
+    if (cmd == "curve-point") {
+        std::string name;
+        size_t k = 0;
+        double x = 0, y = 0;
+        in >> name >> k >> x >> y;
+        if (!detail::moveCurvePoint(app, name, k, x, y)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
+        return true;
+    }
+    if (cmd == "curves") {
+        for (const LpyCurve& c : lpyCurves(app.state.text())) {
+            std::printf("curve=%s kind=%d points=", c.name.c_str(), int(c.kind));
+            for (size_t i = 0; i < c.points.size(); ++i) std::printf("%s%.9g,%.9g,%.9g", i ? ";" : "", c.points[i][0], c.points[i][1], c.points[i][2]);
+            std::printf("\n");
+        }
+        std::fflush(stdout);
         return true;
     }
     return std::nullopt;

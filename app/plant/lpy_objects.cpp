@@ -1,0 +1,192 @@
+#include "app/plant/lpy_objects.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+namespace sprout {
+namespace {
+
+bool isIdent(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+size_t skipSpace(std::string_view t, size_t k) {
+    while (k < t.size() && std::isspace(static_cast<unsigned char>(t[k]))) ++k;
+    return k;
+}
+
+// `word` at k, spaces before it skipped: k moves past it.
+bool eat(std::string_view t, size_t& k, std::string_view word) {
+    const size_t at = skipSpace(t, k);
+    if (t.substr(at, word.size()) != word) return false;
+    k = at + word.size();
+    return true;
+}
+
+std::optional<double> number(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    if (s.empty() || s.size() > 40) return std::nullopt;
+    const std::string text(s);
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+// The ')' closing the '(' at `open` (strings skipped), or npos.
+size_t closing(std::string_view t, size_t open) {
+    int depth = 0;
+    for (size_t k = open; k < t.size(); ++k) {
+        const char c = t[k];
+        if (c == '\'' || c == '"') {
+            const size_t q = t.find(c, k + 1);
+            if (q == std::string_view::npos) return q;
+            k = q;
+        } else if (c == '(') {
+            ++depth;
+        } else if (c == ')' && --depth == 0) {
+            return k;
+        }
+    }
+    return std::string_view::npos;
+}
+
+// The points of `[(x, y[, w]), ...]` between `open` and `close` (the brackets), or none when
+// one is not a tuple of two or three numbers.
+std::optional<std::vector<std::array<double, 3>>> points(std::string_view t, size_t open, size_t close) {
+    std::vector<std::array<double, 3>> out;
+    size_t k = open + 1;
+    while (true) {
+        k = skipSpace(t, k);
+        if (k >= close) break;
+        if (t[k] == ',') {
+            ++k;
+            continue;
+        }
+        if (t[k] != '(') return std::nullopt;
+        const size_t end = t.find(')', k);
+        if (end == std::string_view::npos || end > close) return std::nullopt;
+        std::array<double, 3> p{0, 0, 1};
+        int n = 0;
+        for (size_t b = k + 1;; ++n) {
+            size_t comma = t.find(',', b);
+            if (comma == std::string_view::npos || comma > end) comma = end;
+            auto v = number(t.substr(b, comma - b));
+            if (!v || n > 2) return std::nullopt;
+            p[size_t(n)] = *v;
+            if (comma == end) break;
+            b = comma + 1;
+        }
+        if (n < 1) return std::nullopt;  // two numbers at least (n counts from 0)
+        out.push_back(p);
+        k = end + 1;
+    }
+    return out;
+}
+
+// Whether the model's panel lists `name` as a function: `('Function', NAME)`.
+bool listedAsFunction(std::string_view text, std::string_view name) {
+    for (size_t at = 0; (at = text.find("'Function'", at)) != std::string_view::npos; at += 10) {
+        size_t k = at + 10;
+        if (!eat(text, k, ",")) continue;
+        k = skipSpace(text, k);
+        if (text.substr(k, name.size()) == name && k + name.size() < text.size() && !isIdent(text[k + name.size()])) return true;
+    }
+    return false;
+}
+
+std::string formatted(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<LpyCurve> lpyCurves(std::string_view text) {
+    std::vector<LpyCurve> out;
+    const size_t from = text.find("__initialiseContext__");
+    if (from == std::string_view::npos) return out;
+    const std::pair<std::string_view, LpyCurve::Kind> kinds[] = {
+        {"NurbsCurve2D", LpyCurve::Kind::Nurbs}, {"BezierCurve2D", LpyCurve::Kind::Bezier}, {"Polyline2D", LpyCurve::Kind::Polyline}};
+    for (const auto& [word, kind] : kinds) {
+        for (size_t at = from; (at = text.find(word, at)) != std::string_view::npos; at += word.size()) {
+            size_t k = at + word.size();
+            if ((at > 0 && isIdent(text[at - 1])) || (k < text.size() && isIdent(text[k]))) continue;
+            // NAME = [pgl.]Kind(
+            size_t e = at >= 4 && text.substr(at - 4, 4) == "pgl." ? at - 4 : at;
+            while (e > 0 && (text[e - 1] == ' ' || text[e - 1] == '\t')) --e;
+            if (e == 0 || text[e - 1] != '=') continue;
+            --e;
+            while (e > 0 && (text[e - 1] == ' ' || text[e - 1] == '\t')) --e;
+            size_t n = e;
+            while (n > 0 && isIdent(text[n - 1])) --n;
+            if (n == e || std::isdigit(static_cast<unsigned char>(text[n]))) continue;
+            const size_t call = skipSpace(text, k);
+            if (call >= text.size() || text[call] != '(') continue;
+            const size_t callEnd = closing(text, call);
+            if (callEnd == std::string_view::npos) continue;
+            // [ctrlPointList|pointList =] [pgl.]Point[23]Array( [
+            k = call + 1;
+            size_t field = skipSpace(text, k), fe = field;
+            while (fe < text.size() && isIdent(text[fe])) ++fe;
+            if (fe > field && (text.substr(field, fe - field) == "ctrlPointList" || text.substr(field, fe - field) == "pointList")) {
+                size_t eq = fe;
+                if (eat(text, eq, "=")) k = eq;
+            }
+            eat(text, k, "pgl.");
+            if (!eat(text, k, "Point3Array(") && !eat(text, k, "Point2Array(")) {
+                // a plain list
+            }
+            const size_t open = skipSpace(text, k);
+            if (open >= callEnd || text[open] != '[') continue;
+            const size_t close = text.find(']', open);
+            if (close == std::string_view::npos || close > callEnd) continue;
+            auto pts = points(text, open, close);
+            if (!pts || pts->size() < 2) continue;
+            LpyCurve c;
+            c.name = std::string(text.substr(n, e - n));
+            c.kind = kind;
+            c.points = std::move(*pts);
+            c.begin = open;
+            c.end = close + 1;
+            c.line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(n), '\n'));
+            // `degree = n` after the list, within the call.
+            for (size_t d = close; (d = text.find("degree", d)) != std::string_view::npos && d < callEnd; d += 6) {
+                size_t v = d + 6;
+                if (!eat(text, v, "=")) continue;
+                v = skipSpace(text, v);
+                size_t ve = v;
+                while (ve < callEnd && std::isdigit(static_cast<unsigned char>(text[ve]))) ++ve;
+                if (auto deg = number(text.substr(v, ve - v))) c.degree = int(*deg);
+                break;
+            }
+            if (kind == LpyCurve::Kind::Nurbs) c.degree = std::max(1, std::min(c.degree, int(c.points.size()) - 1));
+            if (kind == LpyCurve::Kind::Bezier) c.degree = int(c.points.size()) - 1;
+            c.function = listedAsFunction(text, c.name);
+            out.push_back(std::move(c));
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const LpyCurve& a, const LpyCurve& b) { return a.begin < b.begin; });
+    return out;
+}
+
+std::string setLpyCurvePoints(std::string_view text, const LpyCurve& curve, const std::vector<std::array<double, 3>>& points) {
+    std::string list = "[";
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (i) list += ",";
+        const auto& p = points[i];
+        list += "(" + formatted(p[0]) + ", " + formatted(p[1]);
+        if (curve.kind != LpyCurve::Kind::Polyline) list += ", " + formatted(p[2]);
+        list += ")";
+    }
+    list += "]";
+    std::string out(text);
+    if (curve.begin <= curve.end && curve.end <= out.size()) out.replace(curve.begin, curve.end - curve.begin, list);
+    return out;
+}
+
+}  // namespace sprout
