@@ -32,6 +32,34 @@ TEST(TextModel, TypingEditsAndUndoesAsOneStep) {
     EXPECT_EQ(t.text(), "n: 3\naxiom: F+F\n");
 }
 
+// Issue 52: the changes of one drag in the panel (one gesture id) are one undo step; another
+// gesture, or an edit between, starts another.
+TEST(TextModel, ADragIsOneUndoStep) {
+    TextModel t("a = (0, 0)\n");
+    t.replaceFromOutside("a = (0, 1)\n", 7);
+    t.replaceFromOutside("a = (0, 2)\n", 7);
+    t.replaceFromOutside("a = (0, 3)\n", 7);
+    t.replaceFromOutside("a = (1, 3)\n", 8);  // another drag
+    t.replaceFromOutside("a = (2, 3)\n");     // a change of no gesture: a step of its own
+    t.replaceFromOutside("a = (2, 4)\n", 8);  // the old drag's id after it: a step again
+    ASSERT_TRUE(t.undo());
+    EXPECT_EQ(t.text(), "a = (2, 3)\n");
+    ASSERT_TRUE(t.undo());
+    EXPECT_EQ(t.text(), "a = (1, 3)\n");
+    ASSERT_TRUE(t.undo());
+    EXPECT_EQ(t.text(), "a = (0, 3)\n");
+    ASSERT_TRUE(t.undo());
+    EXPECT_EQ(t.text(), "a = (0, 0)\n") << "the three moves of one drag, undone together";
+    EXPECT_FALSE(t.undo());
+    ASSERT_TRUE(t.redo());
+    EXPECT_EQ(t.text(), "a = (0, 3)\n");
+    // After an undo the same id starts a new step.
+    t.replaceFromOutside("a = (5, 5)\n", 7);
+    t.replaceFromOutside("a = (6, 6)\n", 7);
+    ASSERT_TRUE(t.undo());
+    EXPECT_EQ(t.text(), "a = (0, 3)\n");
+}
+
 TEST(TextModel, NewlineKeepsIndentationAndBackspaceJoinsLines) {
     TextModel t("A -->\n    F [ +A ]");
     t.setCursor({1, 12});

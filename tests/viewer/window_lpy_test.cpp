@@ -147,8 +147,8 @@ TEST(Window, LpyGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
 
 // Issue 52: a point of an L-Py model's curve, moved as a drag in the panel's curve editor moves
 // it, moves in the model's text (only its list, in L-Py Studio's form) and the plant follows it;
-// moved back, the picture and the saved file are what they were.
-TEST(Window, ACurvePointMovedBendsThePlantAndMovedBackRestoresIt) {
+// one undo takes the whole drag back: the picture and the saved file are what they were.
+TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     const fs::path dir = testDir("curve_window");
@@ -166,8 +166,11 @@ TEST(Window, ACurvePointMovedBendsThePlantAndMovedBackRestoresIt) {
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
     const fs::path moved = dir / "moved.lpy", back = dir / "back.lpy";
     const auto printed = runScript(dir, model.string() + " --size 1000x700",
-                                   "trust yes\nwait\ncurves\nscreenshot " + a + " 400x300\ncurve-point path 2 0.2 0.6\nwait\ncurves\n"
-                                   "screenshot " + b + " 400x300\nsaveas " + moved.string() + "\ncurve-point path 2 0.2 -0.05\nwait\n"
+                                   "trust yes\nwait\ncurves\nscreenshot " + a + " 400x300\n"
+                                   // one drag, three moves: one undo step
+                                   "curve-point path 2 0.2 0.2 1\nwait\ncurve-point path 2 0.2 0.4 1\nwait\n"
+                                   "curve-point path 2 0.2 0.6 1\nwait\ncurves\n"
+                                   "screenshot " + b + " 400x300\nsaveas " + moved.string() + "\nundo\nwait\n"
                                    "screenshot " + c + " 400x300\nsaveas " + back.string() + "\nquit\n");
     EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,-0.05,1;0.5,0,1",
                                                  "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,0.6,1;0.5,0,1"}));
@@ -179,7 +182,7 @@ TEST(Window, ACurvePointMovedBendsThePlantAndMovedBackRestoresIt) {
     };
     const Image ia = load(a), ib = load(b), ic = load(c);
     EXPECT_GT(differ(ia, ib), 400u * 300u / 200) << "the stem follows its path";
-    EXPECT_LE(differ(ia, ic), 20u) << "moved back, the plant is as it was";
+    EXPECT_LE(differ(ia, ic), 20u) << "undone, the plant is as it was";
     auto read = [](const fs::path& p) {
         std::ifstream in(p, std::ios::binary);
         std::stringstream ss;
@@ -190,7 +193,7 @@ TEST(Window, ACurvePointMovedBendsThePlantAndMovedBackRestoresIt) {
     std::string expected = text;
     expected.replace(expected.find(was), was.size(), now);
     EXPECT_EQ(read(moved), expected) << "only the point's numbers change";
-    EXPECT_EQ(read(back), text) << "moved back, the file is the same byte for byte";
+    EXPECT_EQ(read(back), text) << "one undo: the file is the same byte for byte";
 }
 
 }  // namespace

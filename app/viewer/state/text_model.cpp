@@ -36,9 +36,10 @@ void TextModel::setText(std::string_view text) {
     touched();
 }
 
-void TextModel::replaceFromOutside(std::string_view text) {
+void TextModel::replaceFromOutside(std::string_view text, std::uint64_t gesture) {
     if (text == this->text()) return;
-    record();
+    if (gesture == 0 || gesture != m_gesture) record();  // (record() ends a gesture)
+    m_gesture = gesture;
     const Pos cursor = m_cursor;
     setText(text);
     m_cursor = m_anchor = clamp(cursor);
@@ -86,6 +87,7 @@ Pos TextModel::posOf(std::size_t offset) const {
 
 void TextModel::record(bool typing) {
     m_redo.clear();
+    m_gesture = 0;
     if (typing && m_typing) return;  // typing runs together into one step
     m_undo.push_back({text(), m_cursor, m_anchor});
     if (m_undo.size() > kUndoDepth) m_undo.erase(m_undo.begin());
@@ -297,6 +299,7 @@ bool TextModel::travel(std::vector<Snapshot>& from, std::vector<Snapshot>& to) {
     m_cursor = clamp(s.cursor);
     m_anchor = clamp(s.anchor);
     m_typing = false;
+    m_gesture = 0;
     return true;
 }
 

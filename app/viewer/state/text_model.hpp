@@ -3,6 +3,7 @@
 // keep the indentation, comment toggling, search, and undo/redo that also covers changes made
 // from outside (a slider writing a value into the text). The widget (editor.hpp) draws it.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,8 +28,9 @@ public:
     // Replaces the text without an undo step (a file opened).
     void setText(std::string_view text);
     // Replaces the text as an edit from outside the editor (a slider): one undo step; the
-    // cursor stays on its line.
-    void replaceFromOutside(std::string_view text);
+    // cursor stays on its line. Changes of one gesture (a drag: the same non-zero id, nothing
+    // between them) are one step together.
+    void replaceFromOutside(std::string_view text, std::uint64_t gesture = 0);
 
     int lineCount() const { return int(m_lines.size()); }
     const std::string& line(int i) const { return m_lines[size_t(i)]; }
@@ -86,7 +88,8 @@ private:
     std::vector<std::string> m_lines;
     Pos m_cursor, m_anchor;
     std::vector<Snapshot> m_undo, m_redo;
-    bool m_typing = false;  // the last edit was typing: more typing joins its undo step
+    bool m_typing = false;
+    std::uint64_t m_gesture = 0;  // the gesture of the last change from outside: more of it joins its step  // the last edit was typing: more typing joins its undo step
     std::size_t m_version = 0;
     int m_wantCol = -1;     // the column up/down keep to
 };

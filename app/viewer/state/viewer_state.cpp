@@ -106,9 +106,10 @@ void ViewerState::setPicking(bool on) {
     post();
 }
 
-void ViewerState::setText(std::string text) {
+void ViewerState::setText(std::string text, std::uint64_t gesture) {
     if (text == m_text) return;
     m_text = std::move(text);
+    m_textGesture = gesture;
     m_dirty = true;
     post();
 }

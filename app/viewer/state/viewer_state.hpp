@@ -31,7 +31,10 @@ public:
 
     // --- the grammar text
     const std::string& text() const { return m_text; }
-    void setText(std::string text);  // an edit: re-derive
+    void setText(std::string text, std::uint64_t gesture = 0);  // an edit: re-derive
+    // The gesture of the last edit (a drag in the panel: one id for all its changes, which the
+    // grammar editor's undo takes back as one step); 0 for any other edit.
+    std::uint64_t textGesture() const { return m_textGesture; }
     bool dirty() const { return m_dirty; }
 
     // --- sliders write into the text
@@ -119,6 +122,7 @@ private:
     Worker m_worker;
     std::string m_text;
     bool m_dirty = false;
+    std::uint64_t m_textGesture = 0;
     std::uint64_t m_generation = 0;
     std::optional<std::uint64_t> m_seedOverride;
     int m_displayStep = -1;  // -1: follow n

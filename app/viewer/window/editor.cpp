@@ -53,10 +53,10 @@ std::uint32_t Editor::colour(Token t) {
     return IM_COL32_WHITE;
 }
 
-void Editor::sync(const std::string& text, bool newDocument) {
+void Editor::sync(const std::string& text, bool newDocument, std::uint64_t gesture) {
     if (text == m_synced && !newDocument) return;
     if (newDocument) m_model = TextModel(text);
-    else if (text != m_model.text()) m_model.replaceFromOutside(text);
+    else if (text != m_model.text()) m_model.replaceFromOutside(text, gesture);
     m_synced = text;
 }
 

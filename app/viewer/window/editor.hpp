@@ -32,7 +32,7 @@ public:
               const std::vector<std::string>& completions);
     // The text as the rest of the viewer changed it (a slider, a file opened): `newDocument`
     // starts a fresh undo history, otherwise it is one undoable step.
-    void sync(const std::string& text, bool newDocument);
+    void sync(const std::string& text, bool newDocument, std::uint64_t gesture = 0);  // gesture: TextModel::replaceFromOutside
     std::string text() const { return m_model.text(); }
     TextModel& model() { return m_model; }
     // Puts the cursor at line:col (1-based) and the keyboard focus in the editor.

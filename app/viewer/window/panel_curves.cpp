@@ -18,6 +18,7 @@ namespace {
 struct CurveView {
     std::string open;
     int held = -1;
+    std::uint64_t gesture = 0;  // the drag's (one undo step)
     bool fitted = false;
     double cx = 0, cy = 0, scale = 100;  // the world point at the canvas's centre; pixels a unit
 };
@@ -113,12 +114,12 @@ void canvas(App& app, const LpyCurve& c) {
     }
     dl->PopClipRect();
     // A press on a point holds it; the point follows the mouse until the button is let go.
-    if (pressed) v.held = nearest;
+    if (pressed) v.held = nearest, v.gesture = newGesture();
     if (!active) v.held = -1;
     if (active && v.held >= 0 && size_t(v.held) < c.points.size() && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
         const double x = v.cx + (io.MousePos.x - origin.x - size.x / 2) / v.scale;
         const double y = v.cy - (io.MousePos.y - origin.y - size.y / 2) / v.scale;
-        app.state.setText(setLpyCurvePoints(app.state.text(), c, moved(c, size_t(v.held), x, y)));
+        app.state.setText(setLpyCurvePoints(app.state.text(), c, moved(c, size_t(v.held), x, y)), v.gesture);
     }
     if (v.held >= 0 && size_t(v.held) < c.points.size())
         ImGui::Text("point %d: %.4g, %.4g", v.held, c.points[size_t(v.held)][0], c.points[size_t(v.held)][1]);
@@ -128,10 +129,15 @@ void canvas(App& app, const LpyCurve& c) {
 
 }  // namespace
 
-bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y) {
+std::uint64_t newGesture() {
+    static std::uint64_t last = 0;
+    return ++last;
+}
+
+bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture) {
     for (const LpyCurve& c : lpyCurves(app.state.text()))
         if (c.name == name && k < c.points.size()) {
-            app.state.setText(setLpyCurvePoints(app.state.text(), c, moved(c, k, x, y)));
+            app.state.setText(setLpyCurvePoints(app.state.text(), c, moved(c, k, x, y)), gesture);
             return true;
         }
     return false;

@@ -94,7 +94,7 @@ void grammarSection(App& app) {
     // Another file or preset is a new document (a new undo history); Save as keeps the text.
     const bool newDocument = document != app.editorDocument && app.state.text() != app.editor.text();
     app.editorDocument = document;
-    app.editor.sync(app.state.text(), newDocument);
+    app.editor.sync(app.state.text(), newDocument, app.state.textGesture());
     if (app.jumpTo >= 0) {  // a clicked message or rule: the cursor goes there
         const editor::Pos p = app.editor.model().posOf(std::size_t(app.jumpTo));
         app.editor.gotoLineCol(p.line + 1, p.col + 1);

@@ -83,18 +83,26 @@ static void lpyParameters(App& app) {
     if (ImGui::SliderInt("derivation length", &n, 0, std::max(12, plant->iterations + 2))) app.state.setIterations(n);
     const std::string& text = app.state.text();
     int id = 0;
+    static std::uint64_t gesture = 0;  // a slider's drag: one undo step
     for (const LpyScalar& s : lpyScalars(text)) {
         ImGui::PushID(id++);
+        bool changed = false;
+        double value = 0;
         if (s.kind == LpyScalar::Kind::Bool) {
             bool on = s.value != 0;
-            if (ImGui::Checkbox(s.name.c_str(), &on)) app.state.setText(setLpyScalar(text, s, on ? 1 : 0));
+            changed = ImGui::Checkbox(s.name.c_str(), &on);
+            value = on ? 1 : 0;
         } else if (s.kind == LpyScalar::Kind::Integer) {
             int v = saturate<int>(s.value);
-            if (ImGui::SliderInt(s.name.c_str(), &v, saturate<int>(s.min), saturate<int>(s.max))) app.state.setText(setLpyScalar(text, s, v));
+            changed = ImGui::SliderInt(s.name.c_str(), &v, saturate<int>(s.min), saturate<int>(s.max));
+            value = v;
         } else {
             float v = toFloat(s.value);
-            if (ImGui::SliderFloat(s.name.c_str(), &v, toFloat(s.min), toFloat(s.max), "%.3g")) app.state.setText(setLpyScalar(text, s, v));
+            changed = ImGui::SliderFloat(s.name.c_str(), &v, toFloat(s.min), toFloat(s.max), "%.3g");
+            value = v;
         }
+        if (ImGui::IsItemActivated()) gesture = newGesture();
+        if (changed) app.state.setText(setLpyScalar(text, s, value), gesture);
         ImGui::PopID();
     }
 }

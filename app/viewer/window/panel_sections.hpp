@@ -3,6 +3,7 @@
 // and colours, which drawPanel (panel.cpp) puts together.
 #include <imgui.h>
 
+#include <cstdint>
 #include <string>
 
 #include "app/viewer/window/app.hpp"
@@ -26,6 +27,9 @@ void presetSection(App& app);
 // moveCurvePoint is what a drag does (the script's curve-point too): false for no such point.
 bool hasLpyCurves(App& app);
 void curveSection(App& app);
-bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y);
+bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture = 0);
+// A new gesture's id: the changes a drag in the panel makes carry it, and undo takes them back
+// together (ViewerState::setText).
+std::uint64_t newGesture();
 
 }  // namespace sprout::viewer::detail

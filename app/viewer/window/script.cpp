@@ -5,7 +5,9 @@
 //   define <name> <value> a define, as its slider would
 //   environment <k> <value>   the k-th (from 0) environment slider, as the panel's would
 //   curves                prints each of an L-Py model's 2D curves: "curve=NAME kind=K points=x,y,w;..."
-//   curve-point <name> <k> <x> <y>   moves point k of that curve, as a drag in its editor does
+//   curve-point <name> <k> <x> <y> [g]   moves point k of that curve, as a drag in its editor
+//                         does; moves given the same g (a number) are one drag: one undo step
+//   undo | redo           as Ctrl+Z / Ctrl+Shift+Z in the grammar editor
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
 //                         "module=NAME index=I step=S rule_line=L" (with " rule_label=p2" for
@@ -196,8 +198,14 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         std::string name;
         size_t k = 0;
         double x = 0, y = 0;
+        std::uint64_t g = 0;
         in >> name >> k >> x >> y;
-        if (!detail::moveCurvePoint(app, name, k, x, y)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
+        if (!(in >> g)) g = 0;
+        if (!detail::moveCurvePoint(app, name, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
+        return true;
+    }
+    if (cmd == "undo" || cmd == "redo") {
+        if (cmd == "undo" ? app.editor.model().undo() : app.editor.model().redo()) app.state.setText(app.editor.text());
         return true;
     }
     if (cmd == "curves") {
