@@ -27,6 +27,9 @@
 #include "core/turtle/background_scene.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
+#if defined(SPROUT_FUZZ_LPY)
+#include "app/plant/lpy_objects.hpp"
+#endif
 
 namespace {
 
@@ -268,6 +271,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (size_t j = 1; j < n; ++j)
             if ((static_cast<unsigned char>(utf8[k + j]) & 0xC0) != 0x80) fail("a decoded model file is not UTF-8");
         k += n;
+    }
+    // The model's curves as the viewer's curve editor reads them: each list where it was read,
+    // a point moved written back in place (the text before the list kept) and read again.
+    const std::string asText(input);
+    const std::vector<LpyCurve> curves = lpyCurves(asText);
+    for (const LpyCurve& c : curves) {
+        if (c.begin >= c.end || c.end > asText.size() || asText[c.begin] != '[' || asText[c.end - 1] != ']' || c.points.size() < 2)
+            fail("a curve's list is not where it was read");
+        std::vector<std::array<double, 3>> pts = c.points;
+        pts[0][0] = pts[0][0] / 2 + 0.25;
+        const std::string moved = setLpyCurvePoints(asText, c, pts);
+        if (moved.compare(0, c.begin, asText, 0, c.begin) != 0) fail("moving a curve point changed the text before its list");
+        if (lpyCurves(moved).size() != curves.size()) fail("moving a curve point changed which curves are read");
     }
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
