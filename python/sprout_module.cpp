@@ -22,6 +22,7 @@
 #include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/plant/growth.hpp"
+#include "app/plant/lpy_objects.hpp"
 #include "app/plant/open.hpp"
 #include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
@@ -511,4 +512,34 @@ PYBIND11_MODULE(_sprout, m) {
     m.def("parse", &parseText, py::arg("text"), py::arg("kind") = py::none(), py::arg("python") = true, py::arg("steps") = -1,
           "A grammar from text; kind is lsys, abop, cpfg, lpy, lparser or fractint (None: detected from the text)");
     m.def("presets", &presetNames, "The built-in presets' names");
+    // An L-Py model's 2D curves as the viewer's curve editor reads and writes them (issue 52).
+    m.def(
+        "lpy_curves",
+        [](const std::string& text) {
+            py::list out;
+            for (const LpyCurve& c : lpyCurves(text)) {
+                py::dict d;
+                d["name"] = c.name;
+                d["kind"] = c.kind == LpyCurve::Kind::Bezier ? "Bezier" : c.kind == LpyCurve::Kind::Polyline ? "Polyline" : "NURBS";
+                d["function"] = c.function;
+                d["degree"] = c.degree;
+                d["line"] = c.line;
+                d["points"] = c.points;
+                out.append(d);
+            }
+            return out;
+        },
+        py::arg("text"), "The 2D curves of an L-Py model's INITIALISATION part: name, kind, function, degree, line, points (x, y, w)");
+    m.def(
+        "set_lpy_curve",
+        [](const std::string& text, const std::string& name, const std::vector<std::array<double, 3>>& points) {
+            // A name set in several panels: the last, which the model's variable holds.
+            const std::vector<LpyCurve> curves = lpyCurves(text);
+            for (auto c = curves.rbegin(); c != curves.rend(); ++c)
+                if (c->name == name) return setLpyCurvePoints(text, *c, points);
+            throw py::key_error("no curve " + name + " in the model's INITIALISATION part");
+        },
+        py::arg("text"), py::arg("name"), py::arg("points"),
+        "The model's text with that curve's control points replaced (as L-Py Studio writes them; a name several panels "
+        "set: the last, which the model uses); the rest as it was");
 }

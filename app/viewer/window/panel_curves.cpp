@@ -135,9 +135,11 @@ std::uint64_t newGesture() {
 }
 
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture) {
-    for (const LpyCurve& c : lpyCurves(app.state.text()))
-        if (c.name == name && k < c.points.size()) {
-            app.state.setText(setLpyCurvePoints(app.state.text(), c, moved(c, k, x, y)), gesture);
+    // A name several panels set: the last, which the model's variable holds (and the editor shows).
+    const std::vector<LpyCurve> curves = lpyCurves(app.state.text());
+    for (auto c = curves.rbegin(); c != curves.rend(); ++c)
+        if (c->name == name && k < c->points.size()) {
+            app.state.setText(setLpyCurvePoints(app.state.text(), *c, moved(*c, k, x, y)), gesture);
             return true;
         }
     return false;

@@ -1,0 +1,35 @@
+"""sprout.lpy_curves and sprout.set_lpy_curve (issue 52): an L-Py model's 2D curves as the
+viewer's curve editor reads and writes them, from Python. tests/reference/lpy_curves_roundtrip.py
+checks, where the reference L-Py is built, that L-Py reads the written curves back."""
+import pytest
+
+import sprout
+
+MODEL = ("Axiom: A\nderivation length: 1\nproduction:\nA --> B\nendlsystem\n"
+         "###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\n"
+         "def __initialiseContext__(context):\n"
+         "\timport openalea.plantgl.all as pgl\n"
+         "\tpath = pgl.NurbsCurve2D(\t\n"
+         "\t    ctrlPointList = pgl.Point3Array([(-0.5, 0, 1),(0, 0.25, 1),(0.5, 0, 1)]) , \n\t    )\n"
+         "\tpanel_0 = ({'name': 'Panel 1', 'active': False, 'visible': True},[('Curve2D',path)])\n"
+         "\tpath = pgl.NurbsCurve2D(\t\n"
+         "\t    ctrlPointList = pgl.Point3Array([(-0.5, 0, 1),(0, 0.5, 1),(0.5, 0, 1)]) , \n\t    )\n"
+         "\tshape = pgl.Polyline2D([(0, 0),(1, 1)])\n"
+         "\tpanel_1 = ({'name': 'Panel 2', 'active': True, 'visible': True},[('Curve2D',path),('Function',shape)])\n")
+
+
+def test_curves_are_listed_with_their_numbers():
+    curves = sprout.lpy_curves(MODEL)
+    assert [(c['name'], c['kind'], c['function'], c['degree']) for c in curves] == [
+        ('path', 'NURBS', False, 2), ('path', 'NURBS', False, 2), ('shape', 'Polyline', True, 3)]
+    assert curves[1]['points'][1] == [0, 0.5, 1] and curves[1]['line'] == 16
+
+
+def test_a_curve_set_is_written_in_place_the_last_of_its_name():
+    text = sprout.set_lpy_curve(MODEL, 'path', [(-0.5, 0, 1), (0.125, 2 / 3, 1), (0.5, 0, 1)])
+    assert "Point3Array([(-0.5, 0, 1),(0.125, 0.666667, 1),(0.5, 0, 1)])" in text
+    assert text.count("(0, 0.25, 1)") == 1  # the first panel's curve of that name is as it was
+    assert sprout.lpy_curves(text)[1]['points'][1] == [0.125, 0.666667, 1]
+    assert sprout.set_lpy_curve(text, 'path', sprout.lpy_curves(MODEL)[1]['points']) == MODEL
+    with pytest.raises(KeyError):
+        sprout.set_lpy_curve(MODEL, 'nothing', [])

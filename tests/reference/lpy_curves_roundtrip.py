@@ -1,0 +1,126 @@
+#!/usr/bin/python3
+"""The viewer's curve editor against the real L-Py (issue 52): every model of L-Py's share/
+(../shared/corpus/lpy) whose INITIALISATION part stores 2D curves, each curve's point 1 moved as
+a drag in the editor moves it (sprout.set_lpy_curve: the text rewritten in place, as L-Py Studio
+writes it), saved, then read back by Sprout (sprout.lpy_curves gives the new numbers, and every
+other curve's as they were) and by the reference L-Py (Lsystem(file): the curve object in the
+model's context has those control points, to L-Py Studio's six digits).
+
+    lpy_curves_roundtrip.py REF_PYTHON --build BUILD
+
+Not part of the README's test command or CI: ctest runs it under the label `reference` when
+SPROUT_LPY_REFERENCE names the reference's python (../shared/tools/build-lpy-reference.sh).
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+CORPUS = os.path.join(os.path.dirname(ROOT), "shared", "corpus", "lpy")
+
+# Run by the reference: each file's curves as its context holds them.
+READ_BACK = r"""
+import json, os, sys
+real, sys.stdout = sys.stdout, sys.stderr  # what the models print is not the answer
+from openalea.lpy import Lsystem
+out = {}
+for path, names in json.loads(sys.stdin.read()).items():
+    os.chdir(os.path.dirname(path))
+    try:
+        ctx = Lsystem(path).context()
+        # The curve objects as the panel keeps them (a model may bind the name to something
+        # made of the curve, a QuantisedFunction), else the name's value.
+        kept = {}
+        for key in ('__curves__', '__functions__'):
+            for n, obj in (ctx[key] if key in ctx else []):
+                kept[n] = obj
+        out[path] = {n: [list(p) for p in (kept[n] if n in kept else ctx[n]).ctrlPointList] for n in names}
+    except Exception as e:
+        out[path] = {'error': '%s: %s' % (type(e).__name__, e)}
+real.write(json.dumps(out))
+real.flush()
+os._exit(0)
+"""
+
+
+def main():
+    args = sys.argv[1:]
+    if not args or not os.path.exists(args[0]):
+        print("no reference L-Py (SPROUT_LPY_REFERENCE): skipped")
+        return 77
+    ref = args[0]
+    build = args[args.index("--build") + 1] if "--build" in args else os.path.join(ROOT, "build")
+    sys.path.insert(0, os.path.join(os.path.abspath(build), "python"))
+    import sprout
+
+    failures, expected, originals, checked = [], {}, {}, 0
+    with tempfile.TemporaryDirectory() as tmp:
+        for folder, _, files in sorted(os.walk(CORPUS)):
+            for f in sorted(files):
+                if not f.endswith(".lpy"):
+                    continue
+                with open(os.path.join(folder, f), encoding="utf-8", errors="surrogateescape") as fh:
+                    text = fh.read()
+                curves = sprout.lpy_curves(text)
+                if not curves:
+                    continue
+                moved = text
+                want = {}
+                last = {c["name"]: c for c in curves}  # a name several panels set: the last, which the model uses
+                for c in last.values():
+                    pts = [list(p) for p in c["points"]]
+                    pts[1][0] += 0.05
+                    pts[1][1] -= 0.03
+                    moved = sprout.set_lpy_curve(moved, c["name"], pts)
+                    want[c["name"]] = pts
+                # Sprout reads back the change, and the rest of the file is as it was outside the lists.
+                again = {c["name"]: c["points"] for c in sprout.lpy_curves(moved)}
+                for name, pts in want.items():
+                    if any(abs(a - b) > 1e-6 * max(1.0, abs(b)) for p, q in zip(again.get(name, []), pts) for a, b in zip(p, q)):
+                        failures.append("%s: Sprout reads %s back as %s" % (f, name, again.get(name)))
+                # Saved beside the model (its imports and files are its folder's).
+                path = os.path.join(folder, ".sprout-roundtrip-" + f)
+                with open(path, "w", encoding="utf-8", errors="surrogateescape") as fh:
+                    fh.write(moved)
+                expected[path] = want
+                originals[path] = os.path.join(folder, f)
+        try:
+            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({k: list(v) for k, v in expected.items()}),
+                               capture_output=True, text=True, timeout=1800, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
+            got = json.loads(p.stdout or "{}")
+            broken = [path for path, read in got.items() if "error" in read]
+            # A model the reference cannot read as it is (Python 2's print...) is none of this test's.
+            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({originals[k]: list(expected[k]) for k in broken}),
+                               capture_output=True, text=True, timeout=1800, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
+            unreadable = {path for path in broken if "error" in json.loads(p.stdout or "{}").get(originals[path], {"error": 1})}
+        finally:
+            for path in expected:
+                os.remove(path)
+    for path, want in sorted(expected.items()):
+        name = os.path.relpath(path, CORPUS).replace(".sprout-roundtrip-", "")
+        read = got.get(path, {"error": "the reference gave nothing"})
+        if path in unreadable:
+            print("skipped %s: the reference L-Py cannot read the model as it is either" % name)
+            continue
+        if "error" in read:
+            failures.append("%s: the reference L-Py could not read it: %s" % (name, read["error"]))
+            continue
+        for curve, pts in want.items():
+            checked += 1
+            ref_pts = read.get(curve, [])
+            # A Polyline2D's points are pairs; a NURBS's (x, y, w).
+            if len(ref_pts) != len(pts) or any(abs(a - b) > 1e-6 * max(1.0, abs(b))
+                                               for p, q in zip(ref_pts, pts) for a, b in zip(p, q[:len(p)])):
+                failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, ref_pts, pts))
+    for line in failures:
+        print("FAIL " + line)
+    print("%d curves of %d models moved, saved and read back by L-Py with the same numbers; %d failures"
+          % (checked, len(expected), len(failures)))
+    return 1 if failures or checked == 0 else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
