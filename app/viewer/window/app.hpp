@@ -222,7 +222,7 @@ public:
     bool load(const std::string& path, std::string& error);
     // Runs the actions that can run now; false once `quit` ran or the script ended.
     bool step(App& app);
-    bool empty() const { return m_lines.empty() && m_dragFrames == 0; }
+    bool empty() const { return m_lines.empty() && m_dragFrames == 0 && m_curve.frames == 0; }
 
 private:
     std::deque<std::string> m_lines;
@@ -231,6 +231,16 @@ private:
     int m_dragFrames = 0;           // `drag`: frames still to move
     bool m_thumbnailsSeen = false;  // `wait-thumbnails`: a frame has polled them since
     float m_dragYaw = 0, m_dragPitch = 0;  // degrees a frame
+    // `curve-drag`: a curve's point moved a step a frame, as the mouse moves it (one gesture),
+    // nothing waited for; its longest frame, and when it ended (`curve-drag-stats`).
+    struct CurveDrag {
+        std::string name;
+        std::size_t point = 0;
+        double dx = 0, dy = 0;
+        int frames = 0;
+        std::uint64_t gesture = 0;
+        double lastFrame = 0, worstMs = 0, endedAt = 0;
+    } m_curve;
     // A line's command run (script.cpp, by kind); nullopt: not one of that kind.
     std::optional<bool> documentCommand(App& app, const std::string& cmd, std::istringstream& in);
     std::optional<bool> reportCommand(App& app, const std::string& cmd, std::istringstream& in);

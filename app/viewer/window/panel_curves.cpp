@@ -145,6 +145,14 @@ bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, doubl
     return false;
 }
 
+bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, double dy, std::uint64_t gesture) {
+    const std::vector<LpyCurve> curves = lpyCurves(app.state.text());
+    for (auto c = curves.rbegin(); c != curves.rend(); ++c)
+        if (c->name == name && k < c->points.size())
+            return moveCurvePoint(app, name, k, c->points[k][0] + dx, c->points[k][1] + dy, gesture);
+    return false;
+}
+
 bool hasLpyCurves(App& app) { return !lpyCurves(app.state.text()).empty(); }
 
 void curveSection(App& app) {

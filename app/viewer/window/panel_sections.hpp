@@ -31,5 +31,7 @@ bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, doubl
 // A new gesture's id: the changes a drag in the panel makes carry it, and undo takes them back
 // together (ViewerState::setText).
 std::uint64_t newGesture();
+// The point moved by (dx, dy) from where it is (a scripted drag's step).
+bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, double dy, std::uint64_t gesture);
 
 }  // namespace sprout::viewer::detail

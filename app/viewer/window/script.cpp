@@ -7,6 +7,11 @@
 //   curves                prints each of an L-Py model's 2D curves: "curve=NAME kind=K points=x,y,w;..."
 //   curve-point <name> <k> <x> <y> [g]   moves point k of that curve, as a drag in its editor
 //                         does; moves given the same g (a number) are one drag: one undo step
+//   curve-drag <name> <k> <dx> <dy> <frames>   point k dragged by (dx, dy) over that many frames,
+//                         a step a frame, one gesture, no result waited for between steps
+//   curve-drag-stats      once the drag's last result is on screen: prints
+//                         "curve_drag_worst_frame_ms=W refined_ms=R": its longest frame, and the
+//                         time from its last step to the plant it gives, drawn whole
 //   undo | redo           as Ctrl+Z / Ctrl+Shift+Z in the grammar editor
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
@@ -46,6 +51,13 @@
 //   recover               take the autosaved text of a session that did not end normally
 //   crash                 the process is killed on the spot (tests of crash recovery)
 //   quit
+//
+// Index of this file:
+//   [SECTION] Loading and stepping
+//   [SECTION] The document
+//   [SECTION] Reports
+//   [SECTION] Picking
+//   [SECTION] The view
 #include "app/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -67,6 +79,7 @@
 
 namespace sprout::viewer {
 
+// [SECTION] Loading and stepping
 bool Script::load(const std::string& path, std::string& error) {
     std::optional<std::string> text = readFile(path);
     if (!text) {
@@ -82,6 +95,15 @@ bool Script::load(const std::string& path, std::string& error) {
 }
 
 bool Script::step(App& app) {
+    if (m_curve.frames > 0) {  // a curve's point dragged: a step a frame, no result waited for
+        const double now = glfwGetTime();
+        if (m_curve.lastFrame > 0) m_curve.worstMs = std::max(m_curve.worstMs, (now - m_curve.lastFrame) * 1000);
+        m_curve.lastFrame = now;
+        detail::nudgeCurvePoint(app, m_curve.name, m_curve.point, m_curve.dx, m_curve.dy, m_curve.gesture);
+        if (--m_curve.frames == 0) m_curve.endedAt = now;
+        m_waitFor = app.state.generation();  // what comes next waits for the last step's result
+        return true;
+    }
     if (m_dragFrames > 0) {  // a drag in progress: one move a frame, as the mouse makes them
         app.camera.yaw -= m_dragYaw;
         app.camera.pitch = std::clamp(app.camera.pitch + m_dragPitch, -89.0f, 89.0f);
@@ -117,6 +139,7 @@ bool Script::step(App& app) {
     return false;
 }
 
+// [SECTION] The document
 // The document: waiting, the text and its values, trust, saving, the process itself.
 std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, std::istringstream& in) {
     if (cmd == "wait") return true;  // one frame drawn after the result
@@ -204,6 +227,21 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         if (!detail::moveCurvePoint(app, name, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
         return true;
     }
+    if (cmd == "curve-drag") {
+        int frames = 1;
+        in >> m_curve.name >> m_curve.point >> m_curve.dx >> m_curve.dy >> frames;
+        m_curve.frames = std::max(1, frames);
+        m_curve.dx /= m_curve.frames;
+        m_curve.dy /= m_curve.frames;
+        m_curve.gesture = detail::newGesture();
+        m_curve.lastFrame = m_curve.worstMs = 0;
+        return true;
+    }
+    if (cmd == "curve-drag-stats") {  // run once the drag's last result is on screen
+        std::printf("curve_drag_worst_frame_ms=%.1f refined_ms=%.1f\n", m_curve.worstMs, (glfwGetTime() - m_curve.endedAt) * 1000);
+        std::fflush(stdout);
+        return true;
+    }
     if (cmd == "undo" || cmd == "redo") {
         if (cmd == "undo" ? app.editor.model().undo() : app.editor.model().redo()) app.state.setText(app.editor.text());
         return true;
@@ -219,6 +257,8 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
     }
     return std::nullopt;
 }
+
+// [SECTION] Reports
 
 // The mouse held and let go, and what the window measured.
 std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std::istringstream& in) {
@@ -280,6 +320,8 @@ std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std:
     return std::nullopt;
 }
 
+// [SECTION] Picking
+
 // Picking and the inspector.
 std::optional<bool> Script::pickCommand(App& app, const std::string& cmd, std::istringstream& in) {
     // Picking and the inspector need the derivation's origins: the first time, ask for
@@ -334,6 +376,8 @@ std::optional<bool> Script::pickCommand(App& app, const std::string& cmd, std::i
     }
     return std::nullopt;
 }
+
+// [SECTION] The view
 
 // The view, growth, and what the window writes: pictures, videos, models. Any other line
 // is passed over.
