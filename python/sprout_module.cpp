@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <memory>
 #include <sstream>
 
@@ -533,6 +534,10 @@ PYBIND11_MODULE(_sprout, m) {
     m.def(
         "set_lpy_curve",
         [](const std::string& text, const std::string& name, const std::vector<std::array<double, 3>>& points) {
+            if (points.size() < 2) throw py::value_error("a curve has two points at least");
+            for (const auto& p : points)
+                if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+                    throw py::value_error("a curve's points are finite numbers");
             // A name set in several panels: the last, which the model's variable holds.
             const std::vector<LpyCurve> curves = lpyCurves(text);
             for (auto c = curves.rbegin(); c != curves.rend(); ++c)

@@ -32,4 +32,8 @@ def test_a_curve_set_is_written_in_place_the_last_of_its_name():
     assert sprout.lpy_curves(text)[1]['points'][1] == [0.125, 0.666667, 1]
     assert sprout.set_lpy_curve(text, 'path', sprout.lpy_curves(MODEL)[1]['points']) == MODEL
     with pytest.raises(KeyError):
-        sprout.set_lpy_curve(MODEL, 'nothing', [])
+        sprout.set_lpy_curve(MODEL, 'nothing', [(0, 0, 1), (1, 1, 1)])
+    with pytest.raises(ValueError):
+        sprout.set_lpy_curve(MODEL, 'path', [(0, 0, 1)])
+    with pytest.raises(ValueError):
+        sprout.set_lpy_curve(MODEL, 'path', [(0, 0, 1), (float('nan'), 1, 1)])
