@@ -156,7 +156,12 @@ bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, dou
 bool hasLpyCurves(App& app) { return !lpyCurves(app.state.text()).empty(); }
 
 void curveSection(App& app) {
-    const std::vector<LpyCurve> curves = lpyCurves(app.state.text());
+    // A name several panels set (L-Py Studio keeps each panel's version): the last, which the
+    // model's variable holds, is the one listed and edited.
+    std::vector<LpyCurve> curves = lpyCurves(app.state.text());
+    for (size_t i = curves.size(); i-- > 0;)
+        if (std::any_of(curves.begin() + std::ptrdiff_t(i) + 1, curves.end(), [&](const LpyCurve& c) { return c.name == curves[i].name; }))
+            curves.erase(curves.begin() + std::ptrdiff_t(i));
     CurveView& v = view();
     const LpyCurve* shown = nullptr;
     if (!curves.empty() && std::none_of(curves.begin(), curves.end(), [&](const LpyCurve& c) { return c.name == v.open; })) {
