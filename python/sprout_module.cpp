@@ -538,10 +538,8 @@ PYBIND11_MODULE(_sprout, m) {
             for (const auto& p : points)
                 if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
                     throw py::value_error("a curve's points are finite numbers");
-            // A name set in several panels: the last, which the model's variable holds.
             const std::vector<LpyCurve> curves = lpyCurves(text);
-            for (auto c = curves.rbegin(); c != curves.rend(); ++c)
-                if (c->name == name) return setLpyCurvePoints(text, *c, points);
+            if (const LpyCurve* c = lastLpyCurve(curves, name)) return setLpyCurvePoints(text, *c, points);
             throw py::key_error("no curve " + name + " in the model's INITIALISATION part");
         },
         py::arg("text"), py::arg("name"), py::arg("points"),

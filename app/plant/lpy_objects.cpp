@@ -174,6 +174,12 @@ std::vector<LpyCurve> lpyCurves(std::string_view text) {
     return out;
 }
 
+const LpyCurve* lastLpyCurve(const std::vector<LpyCurve>& curves, std::string_view name) {
+    for (auto c = curves.rbegin(); c != curves.rend(); ++c)
+        if (c->name == name) return &*c;
+    return nullptr;
+}
+
 std::string setLpyCurvePoints(std::string_view text, const LpyCurve& curve, const std::vector<std::array<double, 3>>& points) {
     std::string list = "[";
     for (size_t i = 0; i < points.size(); ++i) {

@@ -28,6 +28,9 @@ struct LpyCurve {
     size_t begin = 0, end = 0;                  // the point list's bytes, `[` to `]` included
 };
 std::vector<LpyCurve> lpyCurves(std::string_view text);
+// The curve a name means: where several panels set it (L-Py Studio keeps each panel's version),
+// the last, which the model's variable holds; null when none has it.
+const LpyCurve* lastLpyCurve(const std::vector<LpyCurve>& curves, std::string_view name);
 
 // The text with the curve's point list replaced by `points` (as L-Py Studio writes them: six
 // significant digits, `(x, y, w)` joined by `,`; `(x, y)` for a polyline); nothing else changes.

@@ -102,10 +102,13 @@ class LpyDebugger:
     def insertCodeBreakPointAt(self, line):
         self._breaks('code').append(_uint(line))
 
+    def _remove(self, kind, v):
+        if _uint(v) not in self._breaks(kind):
+            raise ValueError("Cannot remove %s break point." % kind)
+        self._breaks(kind).remove(_uint(v))
+
     def removeCodeBreakPointAt(self, line):
-        if _uint(line) not in self._breaks('code'):
-            raise ValueError("Cannot remove code break point.")
-        self._breaks('code').remove(_uint(line))
+        self._remove('code', line)
 
     def hasCodeBreakPointAt(self, line):
         return _uint(line) in self._breaks('code')
@@ -114,9 +117,7 @@ class LpyDebugger:
         self._breaks('lstring').append(_uint(pos))
 
     def removeLstringBreakPointAt(self, pos):
-        if _uint(pos) not in self._breaks('lstring'):
-            raise ValueError("Cannot remove lstring break point.")
-        self._breaks('lstring').remove(_uint(pos))
+        self._remove('lstring', pos)
 
     def hasLstringBreakPointAt(self, pos):
         _uint(pos)  # L-Py's binding tells nothing (it returns None)

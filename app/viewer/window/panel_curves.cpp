@@ -28,6 +28,14 @@ CurveView& view() {
     return v;
 }
 
+// The text's curves, read again only when the text changes (the panel asks every frame).
+const std::vector<LpyCurve>& curvesOf(const std::string& text) {
+    static std::string read;
+    static std::vector<LpyCurve> curves;
+    if (text != read) read = text, curves = lpyCurves(text);
+    return curves;
+}
+
 const char* kindName(const LpyCurve& c) {
     switch (c.kind) {
         case LpyCurve::Kind::Bezier: return "Bezier";
@@ -135,33 +143,27 @@ std::uint64_t newGesture() {
 }
 
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture) {
-    // A name several panels set: the last, which the model's variable holds (and the editor shows).
-    const std::vector<LpyCurve> curves = lpyCurves(app.state.text());
-    for (auto c = curves.rbegin(); c != curves.rend(); ++c)
-        if (c->name == name && k < c->points.size()) {
-            app.state.setText(setLpyCurvePoints(app.state.text(), *c, moved(*c, k, x, y)), gesture);
-            return true;
-        }
-    return false;
+    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    if (!c || k >= c->points.size()) return false;
+    const std::string text = setLpyCurvePoints(app.state.text(), *c, moved(*c, k, x, y));
+    app.state.setText(text, gesture);
+    return true;
 }
 
 bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, double dy, std::uint64_t gesture) {
-    const std::vector<LpyCurve> curves = lpyCurves(app.state.text());
-    for (auto c = curves.rbegin(); c != curves.rend(); ++c)
-        if (c->name == name && k < c->points.size())
-            return moveCurvePoint(app, name, k, c->points[k][0] + dx, c->points[k][1] + dy, gesture);
-    return false;
+    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    if (!c || k >= c->points.size()) return false;
+    const double x = c->points[k][0] + dx, y = c->points[k][1] + dy;  // (c is the cache's: read before it moves)
+    return moveCurvePoint(app, name, k, x, y, gesture);
 }
 
-bool hasLpyCurves(App& app) { return !lpyCurves(app.state.text()).empty(); }
+bool hasLpyCurves(App& app) { return !curvesOf(app.state.text()).empty(); }
 
 void curveSection(App& app) {
-    // A name several panels set (L-Py Studio keeps each panel's version): the last, which the
-    // model's variable holds, is the one listed and edited.
-    std::vector<LpyCurve> curves = lpyCurves(app.state.text());
-    for (size_t i = curves.size(); i-- > 0;)
-        if (std::any_of(curves.begin() + std::ptrdiff_t(i) + 1, curves.end(), [&](const LpyCurve& c) { return c.name == curves[i].name; }))
-            curves.erase(curves.begin() + std::ptrdiff_t(i));
+    // A name several panels set: only the version lastLpyCurve names is listed and edited.
+    std::vector<LpyCurve> curves;
+    for (const LpyCurve& c : curvesOf(app.state.text()))
+        if (lastLpyCurve(curvesOf(app.state.text()), c.name) == &c) curves.push_back(c);
     CurveView& v = view();
     const LpyCurve* shown = nullptr;
     if (!curves.empty() && std::none_of(curves.begin(), curves.end(), [&](const LpyCurve& c) { return c.name == v.open; })) {
