@@ -2,6 +2,7 @@
 // end the viewer, growth refused at the line that asks for it, labels, picking and the
 // inspector on Python rules.
 #include <chrono>
+#include <cstdio>
 #include <sstream>
 
 #include "tests/viewer/window_support.hpp"
@@ -148,20 +149,37 @@ TEST(Window, LpyGrowthIsRefusedAtTheDerivationLengthAndThePlantStays) {
 // Issue 52: a point of an L-Py model's curve, moved as a drag in the panel's curve editor moves
 // it, moves in the model's text (only its list, in L-Py Studio's form) and the plant follows it;
 // one undo takes the whole drag back: the picture and the saved file are what they were.
+// A stem guided by a NURBS curve, as L-Py Studio writes one.
+const std::string kGuidedModel =
+    "Axiom: _(0.15) SetGuide(path, 8) nF(8, 0.1)\nderivation length: 0\nproduction:\nendlsystem\n"
+    "###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\ndef __initialiseContext__(context):\n"
+    "\timport openalea.plantgl.all as pgl\n\tpath = pgl.NurbsCurve2D(\t\n"
+    "\t    ctrlPointList = pgl.Point3Array([(-0.5, 0, 1),(-0.1, 0.05, 1),(0.2, -0.05, 1),(0.5, 0, 1)]) , \n\t    )\n"
+    "\tpath.name = \"path\"\n"
+    "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('Curve2D',path)])\n"
+    "\tparameterset = [panel_0,]\n\tcontext[\"__curves__\"] = [('path',path),]\n"
+    "\tcontext[\"__parameterset__\"] = parameterset\n\tcontext[\"path\"] = path\n";
+
+std::size_t pixelsThatDiffer(const Image& x, const Image& y) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
+        n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
+    return n;
+}
+
+std::string fileText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
 TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     const fs::path dir = testDir("curve_window");
     const fs::path model = dir / "guided.lpy";
-    const std::string text =
-        "Axiom: _(0.15) SetGuide(path, 8) nF(8, 0.1)\nderivation length: 0\nproduction:\nendlsystem\n"
-        "###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\ndef __initialiseContext__(context):\n"
-        "\timport openalea.plantgl.all as pgl\n\tpath = pgl.NurbsCurve2D(\t\n"
-        "\t    ctrlPointList = pgl.Point3Array([(-0.5, 0, 1),(-0.1, 0.05, 1),(0.2, -0.05, 1),(0.5, 0, 1)]) , \n\t    )\n"
-        "\tpath.name = \"path\"\n"
-        "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('Curve2D',path)])\n"
-        "\tparameterset = [panel_0,]\n\tcontext[\"__curves__\"] = [('path',path),]\n"
-        "\tcontext[\"__parameterset__\"] = parameterset\n\tcontext[\"path\"] = path\n";
+    const std::string text = kGuidedModel;
     std::ofstream(model, std::ios::binary) << text;
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
     const fs::path moved = dir / "moved.lpy", back = dir / "back.lpy";
@@ -174,26 +192,48 @@ TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
                                    "screenshot " + c + " 400x300\nsaveas " + back.string() + "\nquit\n");
     EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,-0.05,1;0.5,0,1",
                                                  "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,0.6,1;0.5,0,1"}));
-    auto differ = [](const Image& x, const Image& y) {
-        std::size_t n = 0;
-        for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
-            n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
-        return n;
-    };
     const Image ia = load(a), ib = load(b), ic = load(c);
-    EXPECT_GT(differ(ia, ib), 400u * 300u / 200) << "the stem follows its path";
-    EXPECT_LE(differ(ia, ic), 20u) << "undone, the plant is as it was";
-    auto read = [](const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        std::stringstream ss;
-        ss << in.rdbuf();
-        return ss.str();
-    };
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 400u * 300u / 200) << "the stem follows its path";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u) << "undone, the plant is as it was";
     const std::string was = "(0.2, -0.05, 1)", now = "(0.2, 0.6, 1)";
     std::string expected = text;
     expected.replace(expected.find(was), was.size(), now);
-    EXPECT_EQ(read(moved), expected) << "only the point's numbers change";
-    EXPECT_EQ(read(back), text) << "one undo: the file is the same byte for byte";
+    EXPECT_EQ(fileText(moved), expected) << "only the point's numbers change";
+    EXPECT_EQ(fileText(back), text) << "one undo: the file is the same byte for byte";
+}
+
+// The editor as a user works it: the mouse (as ImGui sees it) presses a point in the panel's
+// canvas and drags it up; the editor's tools add a point, weight one and set a preset. Each
+// changes the plant; undoing them all gives back the first picture and the file.
+TEST(Window, TheMouseDragsACurvePointInTheEditorAndUndoRestoresIt) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("curve_mouse");
+    const fs::path model = dir / "guided.lpy", back = dir / "back.lpy", moved = dir / "moved.lpy";
+    std::ofstream(model, std::ios::binary) << kGuidedModel;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string(),
+                      d = (dir / "d.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\nscreenshot " + a + " 400x300\n"
+                                   "mouse-drag-point 2 0 -80 6\nwait\ncurves\nscreenshot " + b + " 400x300\n"
+                                   "saveas " + moved.string() + "\n"
+                                   "curve-edit path add 3\ncurve-edit path weight 1 4\nwait\ncurves\n"
+                                   "curve-preset path s\nwait\nscreenshot " + d + " 400x300\n"
+                                   "undo\nundo\nundo\nundo\nwait\nscreenshot " + c + " 400x300\nsaveas " + back.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 3u);
+    // Point 2 went up about 80 pixels' worth and hardly sideways; the others stayed.
+    double x = 0, y = 0;
+    ASSERT_EQ(std::sscanf(printed[1].c_str(), "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;%lf,%lf,1;0.5,0,1", &x, &y), 2) << printed[1];
+    EXPECT_NEAR(x, 0.2, 1e-3);
+    EXPECT_GT(y, 0.15);
+    EXPECT_NE(printed[2].find(";0.8,"), std::string::npos) << "a fifth point beyond the end: " << printed[2];
+    EXPECT_NE(printed[2].find(";-0.1,0.05,4;"), std::string::npos) << "point 1 weighs 4: " << printed[2];
+    const Image ia = load(a), ib = load(b), ic = load(c), id = load(d);
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 400u * 300u / 200) << "the stem follows the dragged point";
+    EXPECT_GT(pixelsThatDiffer(ib, id), 400u * 300u / 200) << "the S preset bends it again";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u) << "undone, the plant is as it was";
+    EXPECT_NE(fileText(moved), kGuidedModel);
+    EXPECT_EQ(fileText(back), kGuidedModel) << "four undos: the file is the same byte for byte";
 }
 
 }  // namespace

@@ -66,6 +66,9 @@ struct App {
     bool showHelp = false;
     bool interacting = false;  // dragging: no shadows for big plants
     bool scriptDragging = false;  // the script's `drag` holds the view as a mouse drag would
+    // The script's mouse (`mouse-drag-point`): while `on`, ImGui gets this position and left
+    // button each frame in place of the window system's (window.cpp, after the backend's frame).
+    struct { bool on = false, down = false; float x = 0, y = 0; } scriptMouse;
     bool bigPlant = false;     // uploaded at interactive detail
     unsigned imageTexture = 0; // an iterated function system's density image
     // The 3D view as last drawn: copied to the window each frame, drawn again only when
@@ -222,7 +225,7 @@ public:
     bool load(const std::string& path, std::string& error);
     // Runs the actions that can run now; false once `quit` ran or the script ended.
     bool step(App& app);
-    bool empty() const { return m_lines.empty() && m_dragFrames == 0 && m_curve.frames == 0; }
+    bool empty() const { return m_lines.empty() && m_dragFrames == 0 && m_curve.frames == 0 && m_mouse.frames < 0; }
 
 private:
     std::deque<std::string> m_lines;
@@ -241,6 +244,14 @@ private:
         std::uint64_t gesture = 0;
         double lastFrame = 0, worstMs = 0, endedAt = 0;
     } m_curve;
+    // `mouse-drag-point`: the open curve's point pressed, dragged and let go with the mouse as
+    // ImGui sees it. `frames` counts the drag's frames from -1 (none) through its steps.
+    struct MouseDrag {
+        std::size_t point = 0;
+        float dx = 0, dy = 0, x = 0, y = 0;
+        int steps = 0, frames = -1;
+    } m_mouse;
+    bool mouseStep(App& app);
     // A line's command run (script.cpp, by kind); nullopt: not one of that kind.
     std::optional<bool> documentCommand(App& app, const std::string& cmd, std::istringstream& in);
     std::optional<bool> reportCommand(App& app, const std::string& cmd, std::istringstream& in);

@@ -33,5 +33,10 @@ bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, doubl
 std::uint64_t newGesture();
 // The point moved by (dx, dy) from where it is (a scripted drag's step).
 bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, double dy, std::uint64_t gesture);
+// The editor's other changes, one undo step each (the script's curve-edit and curve-preset):
+// op "add" (a point after point a), "delete" (point a), "weight" (point a's weight to b);
+// presets line, arc, circle, s. "" when done, else what stopped it.
+std::string editCurve(App& app, const std::string& name, const std::string& op, double a, double b = 0);
+std::string presetCurve(App& app, const std::string& name, const std::string& preset);
 
 }  // namespace sprout::viewer::detail

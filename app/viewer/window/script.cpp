@@ -1,4 +1,12 @@
 // --script FILE: viewer actions, one per line, for tests and demos.
+// Index of this file:
+//   [SECTION] Loading and stepping
+//   [SECTION] The document
+//   [SECTION] Reports
+//   [SECTION] Picking
+//   [SECTION] The view
+//
+// The commands:
 //   wait                  until the newest edit is on screen
 //   text <grammar>        replace the text ("\n" for line breaks)
 //   set <key> <value>     a setting, as a slider would (angle, n, step, width, seed, ...)
@@ -7,6 +15,13 @@
 //   curves                prints each of an L-Py model's 2D curves: "curve=NAME kind=K points=x,y,w;..."
 //   curve-point <name> <k> <x> <y> [g]   moves point k of that curve, as a drag in its editor
 //                         does; moves given the same g (a number) are one drag: one undo step
+//   curve-edit <name> add|delete <k> | weight <k> <w>   a point added after point k, point k
+//                         taken away, point k's weight set, as the editor's tools do (one undo
+//                         step each); what refuses it is printed
+//   curve-preset <name> line|arc|circle|s   the curve set to that preset
+//   mouse-drag-point <k> <dx> <dy> <frames>   the mouse, as ImGui sees it, presses point k of
+//                         the curve open in the panel's editor, drags it (dx, dy) pixels over
+//                         that many frames and lets it go (the panel scrolls to it first)
 //   curve-drag <name> <k> <dx> <dy> <frames>   point k dragged by (dx, dy) over that many frames,
 //                         a step a frame, one gesture, no result waited for between steps
 //   curve-drag-stats      once the drag's last result is on screen: prints
@@ -51,13 +66,6 @@
 //   recover               take the autosaved text of a session that did not end normally
 //   crash                 the process is killed on the spot (tests of crash recovery)
 //   quit
-//
-// Index of this file:
-//   [SECTION] Loading and stepping
-//   [SECTION] The document
-//   [SECTION] Reports
-//   [SECTION] Picking
-//   [SECTION] The view
 #include "app/render/gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -73,6 +81,7 @@
 #include "app/viewer/window/app.hpp"
 #include "app/plant/lpy_objects.hpp"
 #include "app/plant/text_edit.hpp"
+#include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
 #include "core/base/bounded.hpp"
 #include "core/base/read_file.hpp"
@@ -94,6 +103,36 @@ bool Script::load(const std::string& path, std::string& error) {
     return true;
 }
 
+// `mouse-drag-point`, a frame at a time: three frames for the panel to scroll to the editor,
+// the mouse over the point, pressed, moved `steps` times, let go, then given back.
+bool Script::mouseStep(App& app) {
+    auto& m = app.scriptMouse;
+    const int f = m_mouse.frames++, steps = m_mouse.steps;
+    if (f < 3) return true;
+    if (f == 3) {
+        const auto at = detail::curvePointOnScreen(m_mouse.point);
+        if (!at) {
+            std::fprintf(stderr, "script: no point %zu in the curve editor\n", m_mouse.point);
+            m_mouse.frames = -1;
+            return true;
+        }
+        m_mouse.x = (*at)[0], m_mouse.y = (*at)[1];
+        m = {true, false, m_mouse.x, m_mouse.y};
+    } else if (f == 4) {
+        m.down = true;
+    } else if (f < 5 + steps) {
+        const float t = float(f - 4) / float(steps);
+        m.x = m_mouse.x + t * m_mouse.dx, m.y = m_mouse.y + t * m_mouse.dy;
+    } else if (f == 5 + steps) {
+        m.down = false;
+    } else {
+        m.on = false;
+        m_mouse.frames = -1;
+        m_waitFor = app.state.generation();  // what comes next waits for the drag's result
+    }
+    return true;
+}
+
 bool Script::step(App& app) {
     if (m_curve.frames > 0) {  // a curve's point dragged: a step a frame, no result waited for
         const double now = glfwGetTime();
@@ -104,6 +143,7 @@ bool Script::step(App& app) {
         m_waitFor = app.state.generation();  // what comes next waits for the last step's result
         return true;
     }
+    if (m_mouse.frames >= 0) return mouseStep(app);
     if (m_dragFrames > 0) {  // a drag in progress: one move a frame, as the mouse makes them
         app.camera.yaw -= m_dragYaw;
         app.camera.pitch = std::clamp(app.camera.pitch + m_dragPitch, -89.0f, 89.0f);
@@ -225,6 +265,22 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         in >> name >> k >> x >> y;
         if (!(in >> g)) g = 0;
         if (!detail::moveCurvePoint(app, name, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
+        return true;
+    }
+    if (cmd == "mouse-drag-point") {
+        m_mouse = MouseDrag{};
+        in >> m_mouse.point >> m_mouse.dx >> m_mouse.dy >> m_mouse.steps;
+        m_mouse.steps = std::max(1, m_mouse.steps);
+        m_mouse.frames = 0;
+        detail::curvePointOnScreen(m_mouse.point);  // scrolls the panel to the editor
+        return true;
+    }
+    if (cmd == "curve-edit" || cmd == "curve-preset") {
+        std::string name, op;
+        double a = 0, b = 0;
+        in >> name >> op >> a >> b;
+        const std::string why = cmd == "curve-edit" ? detail::editCurve(app, name, op, a, b) : detail::presetCurve(app, name, op);
+        if (!why.empty()) std::fprintf(stderr, "script: %s\n", why.c_str());
         return true;
     }
     if (cmd == "curve-drag") {

@@ -346,6 +346,10 @@ int runViewer(int argc, char** argv) {
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
+        if (app.scriptMouse.on) {  // the script's mouse, in place of the window system's
+            ImGui::GetIO().MousePos = ImVec2(app.scriptMouse.x, app.scriptMouse.y);
+            ImGui::GetIO().MouseDown[0] = app.scriptMouse.down;
+        }
         ImGui::NewFrame();
         drawPanel(app);
 
