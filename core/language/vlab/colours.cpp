@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <string>
 
 namespace sprout::vlab {
 
@@ -48,6 +49,27 @@ std::optional<ColourMap> readColourMap(std::string_view bytes, std::string& erro
         auto b = [&](size_t c) { return std::uint32_t(static_cast<unsigned char>(bytes[3 * k + c])); };
         out.colours[k] = b(0) << 16 | b(1) << 8 | b(2);
     }
+    return out;
+}
+
+std::string writeMaterials(const MaterialSet& set) {
+    std::string out;
+    auto byte = [](float v) { return char(static_cast<unsigned char>(std::clamp(v * 255.0f, 0.0f, 255.0f))); };  // medit: (char)(v * 255)
+    for (size_t i = 0; i < set.materials.size(); ++i) {
+        if (!set.materials[i]) continue;
+        const Material& m = *set.materials[i];
+        out += char(static_cast<unsigned char>(i));
+        out += byte(m.transparency);
+        for (const auto* c : {&m.ambient, &m.diffuse, &m.emission, &m.specular})
+            for (float v : *c) out += byte(v);
+        out += char(static_cast<unsigned char>(std::clamp(m.shininess, 0.0f, 255.0f)));
+    }
+    return out;
+}
+
+std::string writeColourMap(const ColourMap& map) {
+    std::string out;
+    for (std::uint32_t c : map.colours) out += {char(c >> 16 & 0xFF), char(c >> 8 & 0xFF), char(c & 0xFF)};
     return out;
 }
 

@@ -41,6 +41,13 @@ std::optional<MaterialSet> readMaterials(std::string_view bytes, std::string& er
 // the byte offset where it ends; a longer one (palette writes some with more) uses its first 768.
 std::optional<ColourMap> readColourMap(std::string_view bytes, std::string& error);
 
+// The bytes medit writes (medit/mwviewer.cpp, MWViewer::write): a 15-byte record for each
+// material the set has, by index, each value times 255 truncated to a byte (shininess
+// truncated), so a file read and written again is the same byte for byte.
+std::string writeMaterials(const MaterialSet& set);
+// The bytes palette writes (palette/glcolourmap.cpp, SAVE): 256 RGB triples, 768 bytes.
+std::string writeColourMap(const ColourMap& map);
+
 // The set number an option names: `-M` and `-m` are set 1, `-M2` set 2 (cpfg's control.c);
 // nullopt when the number is out of 0..11 (cpfg ignores it).
 std::optional<int> colourSetNumber(std::string_view option);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/language/vlab/curve_files.hpp"
 #include "core/language/vlab/line_reader.hpp"
@@ -168,15 +169,17 @@ std::optional<float> nextNumber(LineReader& in, std::vector<Token>& pending, con
     return v;
 }
 
-bool enoughPoints(LineReader& in, int line, const Contour& c) {
-    if (c.points.size() >= size_t(c.closed ? 3 : 4)) return true;
+bool enoughPoints(LineReader& in, int line, const ContourFile& c) {
+    double expanded = 0;
+    for (const auto& p : c.points) expanded += p[3];
+    if (expanded >= (c.closed ? 3 : 4)) return true;
     in.error(line, 1, std::string("a") + (c.closed ? " closed contour needs at least 3" : "n open contour needs at least 4") +
                           " points");
     return false;
 }
 
 // The first format: `num dim closed|open`, then num points of dim numbers.
-std::optional<Contour> readOldContour(LineReader& in, const std::vector<Word>& w, const std::string& stem) {
+std::optional<ContourFile> readOldContour(LineReader& in, const std::vector<Word>& w, const std::string& stem) {
     const int line = in.lineNo();
     in.advance();
     const std::optional<long> num = w.size() == 3 ? vlab_detail::intWord(w[0].text, 1, kMaxPoints) : std::nullopt;
@@ -185,8 +188,9 @@ std::optional<Contour> readOldContour(LineReader& in, const std::vector<Word>& w
         in.error(line, w[0].col, "expected 'cver 1 3' or the first format's 'POINTS DIMENSION closed|open' (dimension 2 or 3)");
         return std::nullopt;
     }
-    Contour c;
+    ContourFile c;
     c.name = stem;
+    c.version = 0;
     c.closed = w[2].text == "closed";
     c.dim = int(*dim);
     std::vector<Token> pending;
@@ -197,15 +201,20 @@ std::optional<Contour> readOldContour(LineReader& in, const std::vector<Word>& w
             if (!v) return std::nullopt;
             p[size_t(k)] = *v;
         }
-        c.points.push_back(p);
+        // cuspy joins a point repeated into one of a higher multiplicity
+        if (!c.points.empty() && c.points.back()[0] == p[0] && c.points.back()[1] == p[1] && c.points.back()[2] == p[2])
+            c.points.back()[3] += 1;
+        else
+            c.points.push_back({p[0], p[1], p[2], 1});
     }
     if (!enoughPoints(in, line, c)) return std::nullopt;
     return c;
 }
 
 // `cver 1 1` .. `1 3` after the version line.
-std::optional<Contour> readCver(LineReader& in, int version, const std::string& stem) {
-    Contour c;
+std::optional<ContourFile> readCver(LineReader& in, int version, const std::string& stem) {
+    ContourFile c;
+    c.version = version;
     auto name = in.keyed("name:", "'name: NAME'");
     if (!name) return std::nullopt;
     c.name = name->empty() ? stem : std::string((*name)[0].text);
@@ -232,11 +241,14 @@ std::optional<Contour> readCver(LineReader& in, int version, const std::string& 
             return std::nullopt;
         }
         c.closed = t[0] == 'c';
+        c.endpoint = t[1] == 'e';
         if (t[1] == 'e')
             in.error(typeLine, (*type)[0].col, "end-point interpolating contours are drawn as regular ones, as cpfg does", true);
     }
     if (version == 103) {
-        if (!in.keyedInt("samples:", -1000000, 1000000, "SAMPLES")) return std::nullopt;  // cuspy's; cpfg uses `contour sides:`
+        const auto samples = in.keyedInt("samples:", -1000000, 1000000, "SAMPLES");  // cuspy's; cpfg uses `contour sides:`
+        if (!samples) return std::nullopt;
+        c.samples = int(*samples);
         in.skipBlank();
         if (in.peek().substr(0, 11) == "background:") {  // cuspy's background image
             in.advance();
@@ -250,6 +262,7 @@ std::optional<Contour> readCver(LineReader& in, int version, const std::string& 
         }
     }
     std::vector<Token> pending;
+    long expanded = 0;
     for (long i = 0; i < *n1; ++i) {
         const std::string what = " of point " + std::to_string(i + 1) + " ('x y z multiplicity')";
         std::array<float, 3> p{0, 0, 0};
@@ -264,16 +277,21 @@ std::optional<Contour> readCver(LineReader& in, int version, const std::string& 
             in.error(in.lineNo() - 1, 1, "the multiplicity" + what + " must be a whole number from 0 to 1000");
             return std::nullopt;
         }
-        for (int k = 0; k < int(*m) && c.points.size() < size_t(kMaxPoints); ++k) c.points.push_back(p);
+        expanded += long(*m);
+        if (expanded > kMaxPoints) {
+            in.error(in.lineNo() - 1, 1, "too many points (more than 100000 with their multiplicities)");
+            return std::nullopt;
+        }
+        c.points.push_back({p[0], p[1], p[2], double(*m)});
     }
-    if (c.points.size() != size_t(*total))
-        in.error(pointsLine, (*counts)[1].col, "the multiplicities add up to " + std::to_string(c.points.size()) + ", not " +
+    if (expanded != *total)
+        in.error(pointsLine, (*counts)[1].col, "the multiplicities add up to " + std::to_string(expanded) + ", not " +
                                                    std::to_string(*total) + " (the points are used as they add up)", true);
     if (!enoughPoints(in, pointsLine, c)) return std::nullopt;
     return c;
 }
 
-std::optional<Contour> readOneContour(LineReader& in, const std::string& stem) {
+std::optional<ContourFile> readOneContour(LineReader& in, const std::string& stem) {
     if (!in.skipBlank()) {
         in.error(in.lineNo(), 1, "the file ends where a contour ('cver 1 3') was expected");
         return std::nullopt;
@@ -302,7 +320,8 @@ std::optional<Contour> readOneContour(LineReader& in, const std::string& stem) {
 ContourRead readContour(std::string_view text, const std::string& fileName) {
     ContourRead r;
     LineReader in(text, fileName, r.diagnostics);
-    r.contour = readOneContour(in, stemOf(fileName));
+    r.file = readOneContour(in, stemOf(fileName));
+    if (r.file) r.contour = r.file->contour();
     return r;
 }
 
@@ -322,9 +341,10 @@ ContourSetRead readContourSet(std::string_view text, const std::string& fileName
     std::optional<long> items = in.keyedInt("items:", 0, 10000, "COUNT");
     if (!items) return r;
     for (long i = 0; i < *items; ++i) {
-        std::optional<Contour> c = readOneContour(in, "");
+        std::optional<ContourFile> c = readOneContour(in, "");
         if (!c) return r;
-        r.contours.push_back(std::move(*c));
+        r.contours.push_back(c->contour());
+        r.files.push_back(std::move(*c));
     }
     return r;
 }
@@ -335,6 +355,33 @@ ContourRead loadContour(const std::filesystem::path& path) {
 
 ContourSetRead loadContourSet(const std::filesystem::path& path) {
     return vlab_detail::fromFile<ContourSetRead>(path, [&](const std::string& t) { return readContourSet(t, path.string()); });
+}
+
+Contour ContourFile::contour() const {
+    Contour c;
+    c.name = name, c.closed = closed, c.dim = dim;
+    for (const auto& p : points)
+        for (int k = 0; k < int(p[3]); ++k) c.points.push_back({float(p[0]), float(p[1]), float(p[2])});
+    return c;
+}
+
+std::string writeContour(const ContourFile& c) {
+    long total = 0;
+    for (const auto& p : c.points) total += long(p[3]);
+    std::string out = "cver 1 3\nname: " + c.name + "\npoints: " + std::to_string(c.points.size()) + " " + std::to_string(total) +
+                      "\ntype: " + (c.closed ? "c" : "o") + (c.endpoint ? "e" : "r") + "\nsamples: " + std::to_string(c.samples) + "\n";
+    for (const auto& p : c.points) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "%f %f %f %d\n", p[0], p[1], p[2], int(p[3]));  // (cuspy writes z as 0; cpfg reads it)
+        out += buf;
+    }
+    return out;
+}
+
+std::string writeContourSet(const std::vector<ContourFile>& set) {
+    std::string out = "contourgalleryver 1 1\nitems: " + std::to_string(set.size()) + "\n";
+    for (const ContourFile& c : set) out += writeContour(c);
+    return out;
 }
 
 bool ContourRead::ok() const { return contour && vlab_detail::noErrors(diagnostics); }

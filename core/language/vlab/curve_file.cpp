@@ -76,7 +76,7 @@ std::vector<CurveXYZ::Point> grid() {
 CurveXYZ::CurveXYZ(int samples) : CurveXYZ("", Type::BezierSurface, grid(), samples) {}
 
 CurveXYZ::CurveXYZ(std::string name, Type type, const std::vector<Point>& points, int samples)
-    : m_name(std::move(name)), m_type(type), m_samples(std::clamp(samples, 2, kMaxSamples)) {
+    : m_name(std::move(name)), m_type(type), m_samples(std::clamp(samples, 2, kMaxSamples)), m_filePoints(points) {
     // createPPoints: each point repeated by its multiplicity; a closed curve's first three
     // points again at its end; a phantom curve's ends mirrored (2 P1 - P2).
     size_t size = 0, offset = type == Type::Phantom ? 1 : 0;
@@ -410,6 +410,18 @@ std::string CurveTables::idProblem(CurveCall c, double id) const {
     return std::string(names[size_t(c)]) + "(" + shown + (c == CurveCall::CurveLength ? ")" : ", ...)") + ": there " +
            (n == 1 ? "is " : "are ") + std::to_string(n) + " " + what + (n == 1 ? "" : "s") +
            " (numbered from 1): it gives 0, as in cpfg";
+}
+
+std::string writeCurve(const CurveXYZ& c) {
+    static const char* types[] = {"bspline", "bspline-closed", "bspline-endpoint", "bspline-phantom", "bezier", "bezier-surface"};
+    std::string out = "version: 1.4\ncontact: 0 0 0\nend: 0 0 0\nheading: 0 1 0\nup: 0 0 -1\nsize: 1\npoints: " +
+                      std::to_string(c.filePoints().size()) + "\nrange: 0.0 1.0\ndimension: 4\ntype: " + types[int(c.type())] + "\n";
+    for (const CurveXYZ::Point& p : c.filePoints()) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "%f %f %g %d\n", p.p[0], p.p[1], p.p[2], p.multiplicity);
+        out += buf;
+    }
+    return out;
 }
 
 }  // namespace sprout

@@ -66,13 +66,27 @@ private:
     std::vector<double> m_table;
 };
 
+// A function as its file keeps it, what funcedit edits and writes: the points with their
+// multiplicities (x, y, multiplicity), not expanded.
+struct FunctionFile {
+    std::string name;
+    int samples = 10;       // `samples:` (the first format has none: funcedit's 10)
+    bool flip = false;      // `flip:` (funcedit's view: x and y swapped on screen)
+    bool original = false;  // read from the first format (`range:`)
+    std::vector<std::array<double, 3>> points;
+    // What cpfg evaluates: the points expanded, `samples` (the view file's for the first format).
+    CurveFunction function(int viewSamples = -1) const;
+};
+
 struct FunctionRead {
     CurveFunction function;  // the default (0 everywhere) when the file could not be read, as cpfg
+    std::optional<FunctionFile> file;  // as the file keeps it, when it could be read
     std::vector<CurveFileDiagnostic> diagnostics;
     bool ok() const;
 };
 struct FunctionSetRead {
     std::vector<CurveFunction> functions;  // func(i) is functions[i-1]; names from `name:`
+    std::vector<FunctionFile> files;       // the same, as the set keeps them
     std::vector<CurveFileDiagnostic> diagnostics;
     bool ok() const;
 };
@@ -86,6 +100,11 @@ FunctionRead loadFunction(const std::filesystem::path& path, int samples);
 // A `.fset` file (`funcgalleryver 1 1`, `items: n`, n functions in `fver 1 1`).
 FunctionSetRead readFunctionSet(std::string_view text, const std::string& fileName);
 FunctionSetRead loadFunctionSet(const std::filesystem::path& path);
+// The text funcedit saves (funcedit/model.cpp, Model::Save): always `fver 1 1`, `%f %f %d`
+// points (a first-format file is written in it, as funcedit does). The gallery's set
+// (gallery.cpp, saveFuncSet): `funcgalleryver 1 1`, `items: n`, then each function so.
+std::string writeFunction(const FunctionFile& f);
+std::string writeFunctionSet(const std::vector<FunctionFile>& set);
 
 // [SECTION] Contours
 
@@ -99,13 +118,28 @@ struct Contour {
     std::vector<std::array<float, 3>> sampled(int sides) const;
 };
 
+// A contour as its file keeps it, what cuspy edits and writes: points (x, y, z, multiplicity)
+// not expanded; a first-format file's repeated points joined, as cuspy reads them.
+struct ContourFile {
+    std::string name;
+    int version = 103;       // 101, 102, 103 (`cver 1 n`); 0: the first format
+    bool closed = true;
+    bool endpoint = false;   // `type: ?e` (cpfg draws it as a regular one)
+    int samples = 8;         // cuspy's `samples:` (1.3; cuspy's 8 otherwise)
+    int dim = 3;             // 2 for the first format's 2D points
+    std::vector<std::array<double, 4>> points;
+    Contour contour() const;  // the points expanded, as cpfg uses them
+};
+
 struct ContourRead {
     std::optional<Contour> contour;  // none when the file cannot be read (cpfg: the circle)
+    std::optional<ContourFile> file;
     std::vector<CurveFileDiagnostic> diagnostics;
     bool ok() const;
 };
 struct ContourSetRead {
     std::vector<Contour> contours;  // in file order, named by `name:`
+    std::vector<ContourFile> files;
     std::vector<CurveFileDiagnostic> diagnostics;
     bool ok() const;
 };
@@ -118,6 +152,11 @@ ContourRead loadContour(const std::filesystem::path& path);
 // A `.cset` file (`contourgalleryver 1 1`, `items: n`, n contours in `cver`).
 ContourSetRead readContourSet(std::string_view text, const std::string& fileName);
 ContourSetRead loadContourSet(const std::filesystem::path& path);
+// The text cuspy saves (cuspy/model.cpp, Model::Save): always `cver 1 3`, `points: n total`,
+// `type: [co][re]`, `samples:`, `%f %f %f %d` points (z as read: cuspy writes 0, cpfg reads it). The
+// gallery's set: `contourgalleryver 1 1`, `items: n`, then each contour so.
+std::string writeContour(const ContourFile& c);
+std::string writeContourSet(const std::vector<ContourFile>& set);
 
 // [SECTION] Curves
 
@@ -145,6 +184,7 @@ public:
     Type type() const { return m_type; }
     int samples() const { return m_samples; }
     const std::vector<std::array<double, 3>>& points() const { return m_points; }  // expanded
+    const std::vector<Point>& filePoints() const { return m_filePoints; }          // as the file gives them
     double length() const { return m_length; }  // curveGAL: the polyline through the samples
     // curveX/Y/Z(id, t) (cpfg's CurveCXS, calcAValue): t clamped to [0, 1] is a fraction of
     // the length, found between two samples and interpolated there; NaN gives NaN.
@@ -157,6 +197,7 @@ private:
     Type m_type = Type::BSpline;
     int m_samples = 100;
     std::vector<std::array<double, 3>> m_points;
+    std::vector<Point> m_filePoints;
     std::vector<double> m_arc;  // the length up to each sample over the whole (cpfg's _l)
     double m_length = 0;
 };
@@ -176,6 +217,10 @@ struct CurveRead {
 // A file that cannot be read is cpfg's default curve, CurveXYZ(samples), and a diagnostic.
 CurveRead readCurve(std::string_view text, const std::string& fileName, int samples);
 CurveRead loadCurve(const std::filesystem::path& path, int samples);
+// A curve as cuspy writes a `version: 1.4` file (cuspy/model.cpp): its fixed header (contact,
+// end, heading, up, size and range, which cpfg reads and does not use), `points: n`,
+// `dimension: 4`, the type, then `x y z multiplicity` lines (`%f`, z as `%g`).
+std::string writeCurve(const CurveXYZ& c);
 
 // [SECTION] What a grammar uses
 

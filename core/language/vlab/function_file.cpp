@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/language/vlab/curve_files.hpp"
 #include "core/language/vlab/line_reader.hpp"
@@ -114,7 +115,8 @@ namespace {
 
 // `count` lines of `x y [multiplicity]` (cpfg's _Load0101; the first format has no
 // multiplicity, `withMultiplicity` false).
-bool readPoints(LineReader& in, long count, bool withMultiplicity, std::vector<std::array<double, 2>>& out) {
+bool readPoints(LineReader& in, long count, bool withMultiplicity, std::vector<std::array<double, 3>>& out) {
+    long expanded = 0;
     for (long i = 0; i < count; ++i) {
         if (!in.skipBlank()) {
             in.error(in.lineNo(), 1, "the file ends after " + std::to_string(i) + " of its " + std::to_string(count) +
@@ -146,8 +148,8 @@ bool readPoints(LineReader& in, long count, bool withMultiplicity, std::vector<s
             }
             multiplicity = int(*m);  // cpfg: std::stof, then an int
         }
-        for (int j = 0; j < multiplicity; ++j) out.push_back({double(*x), double(*y)});
-        if (out.size() > size_t(kMaxPoints)) {
+        out.push_back({double(*x), double(*y), double(multiplicity)});
+        if ((expanded += multiplicity) > kMaxPoints) {
             in.error(line, 1, "too many points (more than 100000)");
             return false;
         }
@@ -157,7 +159,7 @@ bool readPoints(LineReader& in, long count, bool withMultiplicity, std::vector<s
 
 // `points: N` and the points after it: at least 4 (cpfg's minimum), also once multiplicities
 // are counted; false after saying why.
-bool readFunctionPoints(LineReader& in, bool withMultiplicity, std::vector<std::array<double, 2>>& points) {
+bool readFunctionPoints(LineReader& in, bool withMultiplicity, std::vector<std::array<double, 3>>& points) {
     const int pointsLine = in.lineNo();
     std::optional<long> count = in.keyedInt("points:", 0, kMaxPoints, "COUNT");
     if (!count) return false;
@@ -166,7 +168,9 @@ bool readFunctionPoints(LineReader& in, bool withMultiplicity, std::vector<std::
         return false;
     }
     if (!readPoints(in, *count, withMultiplicity, points)) return false;
-    if (points.size() < 4) {
+    double expanded = 0;
+    for (const auto& p : points) expanded += p[2];
+    if (expanded < 4) {
         in.error(pointsLine, 1, "a function needs at least 4 points once multiplicities are counted");
         return false;
     }
@@ -175,10 +179,11 @@ bool readFunctionPoints(LineReader& in, bool withMultiplicity, std::vector<std::
 
 // `fver 1 1` after its first line: name:, samples:, [background: + backgroundXY:],
 // [markers: n + n lines], flip:, points: n, the points.
-std::optional<CurveFunction> readFver(LineReader& in, const std::string& stem) {
+std::optional<FunctionFile> readFver(LineReader& in, const std::string& stem) {
+    FunctionFile f;
     auto name = in.keyed("name:", "'name: NAME'");
     if (!name) return std::nullopt;
-    std::string fname = name->empty() ? stem : std::string((*name)[0].text);
+    f.name = name->empty() ? stem : std::string((*name)[0].text);
     std::optional<long> samples = in.keyedInt("samples:", -1000000, kMaxSamples, "SAMPLES");
     if (!samples) return std::nullopt;
     in.skipBlank();
@@ -196,10 +201,14 @@ std::optional<CurveFunction> readFver(LineReader& in, const std::string& stem) {
         }
     }
     in.skipBlank();
-    if (in.peek().substr(0, 5) == "flip:") in.advance();  // the editor's view: cpfg ignores it
-    std::vector<std::array<double, 2>> points;
-    if (!readFunctionPoints(in, true, points)) return std::nullopt;
-    return CurveFunction(fname, std::move(points), int(*samples));
+    if (in.peek().substr(0, 5) == "flip:") {  // the editor's view: cpfg ignores it
+        const std::vector<Word> w = vlab_detail::words(in.peek());
+        f.flip = w.size() > 1 && w[1].text == "on";
+        in.advance();
+    }
+    if (!readFunctionPoints(in, true, f.points)) return std::nullopt;
+    f.samples = int(*samples);
+    return f;
 }
 
 std::string stemOf(const std::string& fileName) {
@@ -209,7 +218,7 @@ std::string stemOf(const std::string& fileName) {
 }
 
 // One function from `in`'s next line on: `fver 1 1` or `range: l u` (the first format).
-std::optional<CurveFunction> readOne(LineReader& in, const std::string& stem, int samples) {
+std::optional<FunctionFile> readOne(LineReader& in, const std::string& stem, int samples) {
     if (!in.skipBlank()) {
         in.error(in.lineNo(), 1, "the file ends where a function ('fver 1 1') was expected");
         return std::nullopt;
@@ -222,12 +231,13 @@ std::optional<CurveFunction> readOne(LineReader& in, const std::string& stem, in
             in.error(line, w.size() > 1 ? w[1].col : 1, "expected 'range: LOW HIGH' (two numbers)");
             return std::nullopt;
         }
-        std::vector<std::array<double, 2>> points;
-        if (!readFunctionPoints(in, false, points)) return std::nullopt;
+        FunctionFile f;
+        f.name = stem, f.original = true;
+        if (!readFunctionPoints(in, false, f.points)) return std::nullopt;
         if (samples > kMaxSamples)
             in.error(line, 1, "the view file's " + std::to_string(samples) + " samples are more than 10000: the curve is "
                               "evaluated without a table", true);
-        return CurveFunction(stem, std::move(points), samples);  // the view file's samples
+        return f;
     }
     if (w[0].text != "fver") {
         in.error(line, w[0].col, "expected 'fver 1 1' or 'range: 0 1' (the first line of a function)");
@@ -253,7 +263,10 @@ std::optional<CurveFunction> readOne(LineReader& in, const std::string& stem, in
 FunctionRead readFunction(std::string_view text, const std::string& fileName, int samples) {
     FunctionRead r;
     LineReader in(text, fileName, r.diagnostics);
-    if (std::optional<CurveFunction> f = readOne(in, stemOf(fileName), samples)) r.function = std::move(*f);
+    if (std::optional<FunctionFile> f = readOne(in, stemOf(fileName), samples)) {
+        r.function = f->function(samples);
+        r.file = std::move(*f);
+    }
     return r;
 }
 
@@ -278,9 +291,10 @@ FunctionSetRead readFunctionSet(std::string_view text, const std::string& fileNa
     std::optional<long> items = in.keyedInt("items:", 0, 10000, "COUNT");
     if (!items) return r;
     for (long i = 0; i < *items; ++i) {
-        std::optional<CurveFunction> f = readOne(in, "", -1);
+        std::optional<FunctionFile> f = readOne(in, "", -1);
         if (!f) return r;
-        r.functions.push_back(std::move(*f));
+        r.functions.push_back(f->function(-1));
+        r.files.push_back(std::move(*f));
     }
     return r;
 }
@@ -291,6 +305,34 @@ FunctionRead loadFunction(const std::filesystem::path& path, int samples) {
 
 FunctionSetRead loadFunctionSet(const std::filesystem::path& path) {
     return vlab_detail::fromFile<FunctionSetRead>(path, [&](const std::string& t) { return readFunctionSet(t, path.string()); });
+}
+
+CurveFunction FunctionFile::function(int viewSamples) const {
+    std::vector<std::array<double, 2>> expanded;
+    for (const auto& p : points)
+        for (int j = 0; j < int(p[2]); ++j) expanded.push_back({p[0], p[1]});
+    return CurveFunction(name, std::move(expanded), original ? viewSamples : samples);
+}
+
+namespace {
+std::string printed(const char* format, double a, double b) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, format, a, b);
+    return buf;
+}
+}  // namespace
+
+std::string writeFunction(const FunctionFile& f) {
+    std::string out = "fver 1 1\nname: " + f.name + "\nsamples: " + std::to_string(f.samples) + "\nflip: " + (f.flip ? "on" : "off") +
+                      "\npoints: " + std::to_string(f.points.size()) + "\n";
+    for (const auto& p : f.points) out += printed("%f %f", p[0], p[1]) + " " + std::to_string(int(p[2])) + "\n";
+    return out;
+}
+
+std::string writeFunctionSet(const std::vector<FunctionFile>& set) {
+    std::string out = "funcgalleryver 1 1\nitems: " + std::to_string(set.size()) + "\n";
+    for (const FunctionFile& f : set) out += writeFunction(f);
+    return out;
 }
 
 bool FunctionRead::ok() const { return vlab_detail::noErrors(diagnostics); }
