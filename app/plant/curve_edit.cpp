@@ -48,6 +48,7 @@ std::optional<CurvePoints> insertedPoint(const CurvePoints& pts, const CurveRule
     } else {
         p = {pts[0][0] + 1, pts[0][1], pts[0][2]};
     }
+    if (rules.newWeight > 0) p[2] = rules.newWeight;
     CurvePoints out = pts;
     out.insert(out.begin() + std::ptrdiff_t(k + 1), p);
     return out;

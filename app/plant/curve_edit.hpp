@@ -18,12 +18,14 @@ struct CurveRules {
     bool function = false;  // y = f(x) on [0, 1]: x in order, the first at 0 and the last at 1
     bool closed = false;    // the last point joins the first (a contour)
     size_t fewest = 2;      // fewer points are not a curve its tool reads (a NURBS: degree + 1)
+    double newWeight = 0;   // an added point's weight; 0: its neighbours' mean
 };
 
 // Point k at (x, y); a function's points keep their order along x, its ends at 0 and 1.
 CurvePoints movedPoint(const CurvePoints& pts, const CurveRules& rules, size_t k, double x, double y);
 // A point put halfway between points k and k + 1 (a closed curve's last and first; an open
-// curve's last: beyond it, as far as the segment before it), with their mean weight.
+// curve's last: beyond it, as far as the segment before it), with their mean weight (or the
+// rules' newWeight: a VLab point's multiplicity is 1).
 std::optional<CurvePoints> insertedPoint(const CurvePoints& pts, const CurveRules& rules, size_t k);
 // Point k taken away: nothing when the curve would have fewer than `fewest`, or for a
 // function's end.

@@ -69,6 +69,7 @@ void ViewerState::post() {
     r.trackOrigins = m_picking;
     r.python = m_trust == TrustAnswer::Trusted;
     r.generation = ++m_generation;
+    r.filesVersion = m_filesVersion;
     m_worker.post(std::move(r));
 }
 
@@ -103,6 +104,11 @@ void ViewerState::restoreRecovered() {
 void ViewerState::setPicking(bool on) {
     if (on == m_picking) return;
     m_picking = on;
+    post();
+}
+
+void ViewerState::filesChanged() {
+    ++m_filesVersion;
     post();
 }
 

@@ -105,6 +105,9 @@ public:
     // Reloads the file when another program changed it (and the text here has no unsaved
     // edits); true when it did.
     bool reloadIfChangedOnDisk();
+    // A file beside the text that its parse reads changed (an object's function or contour,
+    // written by the panel's editor): derive again, reading it anew.
+    void filesChanged();
     // Autosave of the working text, every few seconds while it has unsaved edits. Written on
     // a thread of its own (its fsyncs took 2-3 ms here, far more on a busy or network disk,
     // in the middle of a drag); `force` writes it before returning (leaving, saving).
@@ -124,6 +127,7 @@ private:
     bool m_dirty = false;
     std::uint64_t m_textGesture = 0;
     std::uint64_t m_generation = 0;
+    std::uint64_t m_filesVersion = 0;
     std::optional<std::uint64_t> m_seedOverride;
     int m_displayStep = -1;  // -1: follow n
     bool m_playing = false;

@@ -219,8 +219,10 @@ std::shared_ptr<Result> Worker::process(const Request& r) {
     if (kind == FileKind::Ifs) return processIfs(r, out);
     if (kind == FileKind::Lpy && lpy::pythonAvailable()) return processLpy(r, out);
     auto t0 = std::chrono::steady_clock::now();
-    if (r.text != m_cachedText || kind != m_cachedKind || r.path != m_cachedPath || !m_cachedGrammar) {
+    if (r.text != m_cachedText || kind != m_cachedKind || r.path != m_cachedPath || r.filesVersion != m_cachedFilesVersion ||
+        !m_cachedGrammar) {
         OpenedText parsed = openText(r.text, kind, r.path);
+        m_cachedFilesVersion = r.filesVersion;
         m_cachedText = r.text;
         m_cachedKind = kind;
         m_cachedPath = r.path;

@@ -39,6 +39,9 @@ struct Request {
     // An L-Py model's Python may run (the user trusted it: app/viewer/state/trust.hpp).
     bool python = false;
     std::uint64_t generation = 0;
+    // Counts the changes to the files beside the text that its parse reads (a VLab object's
+    // functions and contours, edited in the panel): another count parses it again.
+    std::uint64_t filesVersion = 0;
 };
 
 // What a click needs to say which module drew a stem and which rule made it.
@@ -122,6 +125,7 @@ private:
     std::string m_cachedText;
     FileKind m_cachedKind = FileKind::Lsys;
     std::string m_cachedPath;
+    std::uint64_t m_cachedFilesVersion = 0;
     std::uint64_t m_cachedSeed = 0;
     bool m_cachedAges = false;
     bool m_cachedOrigins = false;

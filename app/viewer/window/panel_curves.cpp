@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/vlab_edit.hpp"
 #include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
 #include "lpy/lpy.hpp"
@@ -58,7 +59,113 @@ EditedCurve edited(App& app, const LpyCurve& c) {
     return e;
 }
 
+// A VLab object's functions and contours, read again when the file or what the editor wrote
+// changes (`version`), and the history of the editor's writes.
+struct VlabCurves {
+    std::string path;
+    std::uint64_t version = 0, readAt = ~std::uint64_t(0);
+    std::vector<VlabCurveFile> files;
+    FileEdits edits;
+    std::string open;
+};
+
+VlabCurves& vlab() {
+    static VlabCurves v;
+    return v;
+}
+
+const std::vector<VlabCurveFile>& vlabFilesOf(App& app) {
+    VlabCurves& v = vlab();
+    const std::string path = app.state.path().string();
+    if (path != v.path || v.readAt != v.version) {
+        if (path != v.path) v.edits = FileEdits{};  // another model: its own history
+        v.path = path, v.readAt = v.version;
+        v.files = path.empty() ? std::vector<VlabCurveFile>{} : vlabCurveFiles(path);
+    }
+    return v.files;
+}
+
+// Writes new points into file `f` (by the editor or the script), one undo step a gesture.
+bool writeVlabCurve(App& app, const VlabCurveFile& f, const CurvePoints& pts, std::uint64_t gesture) {
+    std::string error;
+    const std::optional<std::string> text = vlabCurveText(f, pts, error);
+    if (!text || !vlab().edits.write(f.path, *text, gesture, error)) {
+        app.say(f.label + ": " + error);
+        return false;
+    }
+    ++vlab().version;
+    app.state.filesChanged();
+    return true;
+}
+
+EditedCurve edited(App& app, const VlabCurveFile& f) {
+    EditedCurve e;
+    e.key = "vlab:" + f.path + ":" + std::to_string(f.item);
+    e.points = f.points;
+    e.rules = f.rules;
+    e.samples = [f](const CurvePoints& pts) { return vlabCurveSamples(f, pts); };
+    e.write = [&app, f](const CurvePoints& pts, std::uint64_t g) { return writeVlabCurve(app, f, pts, g); };
+    return e;
+}
+
 }  // namespace
+
+bool hasVlabCurves(App& app) { return !vlabFilesOf(app).empty(); }
+
+void vlabCurveSection(App& app) {
+    VlabCurves& v = vlab();
+    const auto files = vlabFilesOf(app);  // a copy: a write reads them again
+    if (std::none_of(files.begin(), files.end(), [&](const VlabCurveFile& f) { return f.label == v.open; })) v.open = files.front().label;
+    const VlabCurveFile* shown = nullptr;
+    for (const VlabCurveFile& f : files) {
+        char label[200];
+        std::snprintf(label, sizeof label, "%s  (%s, %zu points)", f.label.c_str(),
+                      f.kind == VlabCurveFile::Kind::Function ? "function" : f.rules.closed ? "closed contour" : "open contour", f.points.size());
+        if (ImGui::Selectable(label, v.open == f.label)) v.open = f.label;
+        if (v.open == f.label) shown = &f;
+    }
+    if (ImGui::SmallButton("undo##files")) objectUndo(app, false);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("redo##files")) objectUndo(app, true);
+    ImGui::SameLine();
+    ImGui::TextColored(kDim, "saved in the object's files as VLab's editors write them");
+    if (!shown) return;
+    ImGui::PushID(shown->label.c_str());
+    curveCanvas(app, edited(app, *shown));
+    ImGui::PopID();
+}
+
+std::vector<std::string> objectCurves(App& app) {
+    std::vector<std::string> out;
+    for (const VlabCurveFile& f : vlabFilesOf(app)) {
+        std::string line = "object-curve=" + f.label + " points=";
+        for (size_t i = 0; i < f.points.size(); ++i) {
+            char buf[100];
+            std::snprintf(buf, sizeof buf, "%s%.9g,%.9g,%g", i ? ";" : "", f.points[i][0], f.points[i][1], f.points[i][2]);
+            line += buf;
+        }
+        out.push_back(line);
+    }
+    return out;
+}
+
+bool moveObjectPoint(App& app, size_t which, size_t k, double x, double y, std::uint64_t gesture) {
+    const auto files = vlabFilesOf(app);
+    if (which >= files.size() || k >= files[which].points.size()) return false;
+    const VlabCurveFile& f = files[which];
+    return writeVlabCurve(app, f, movedPoint(f.points, f.rules, k, x, y), gesture ? gesture : newGesture());
+}
+
+bool objectUndo(App& app, bool redo) {
+    std::string error;
+    const bool done = redo ? vlab().edits.redo(error) : vlab().edits.undo(error);
+    if (!error.empty()) app.say(error);
+    if (done) {
+        ++vlab().version;
+        app.state.filesChanged();
+    }
+    return done;
+}
 
 std::uint64_t newGesture() {
     static std::uint64_t last = 0;

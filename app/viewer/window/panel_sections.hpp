@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "app/viewer/window/app.hpp"
 
@@ -28,6 +29,14 @@ void presetSection(App& app);
 bool hasLpyCurves(App& app);
 void curveSection(App& app);
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture = 0);
+// A VLab object's functions and contours (the files its view file names), in the same editor,
+// written back in VLab's formats; objectCurves lists them ("object-curve=LABEL points=x,y,m;..."),
+// moveObjectPoint moves point k of the which-th, objectUndo takes the last write back (or redoes).
+bool hasVlabCurves(App& app);
+void vlabCurveSection(App& app);
+std::vector<std::string> objectCurves(App& app);
+bool moveObjectPoint(App& app, size_t which, size_t k, double x, double y, std::uint64_t gesture = 0);
+bool objectUndo(App& app, bool redo);
 // A new gesture's id: the changes a drag in the panel makes carry it, and undo takes them back
 // together (ViewerState::setText).
 std::uint64_t newGesture();

@@ -22,6 +22,11 @@
 //   mouse-drag-point <k> <dx> <dy> <frames>   the mouse, as ImGui sees it, presses point k of
 //                         the curve open in the panel's editor, drags it (dx, dy) pixels over
 //                         that many frames and lets it go (the panel scrolls to it first)
+//   object-curves         prints a VLab object's functions and contours, a line each:
+//                         "object-curve=LABEL points=x,y,multiplicity;..."
+//   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in
+//                         its file; moves given the same g are one undo step
+//   object-undo | object-redo   the editor's last write to an object's files taken back, redone
 //   curve-drag <name> <k> <dx> <dy> <frames>   point k dragged by (dx, dy) over that many frames,
 //                         a step a frame, one gesture, no result waited for between steps
 //   curve-drag-stats      once the drag's last result is on screen: prints
@@ -273,6 +278,27 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         m_mouse.steps = std::max(1, m_mouse.steps);
         m_mouse.frames = 0;
         detail::curvePointOnScreen(m_mouse.point);  // scrolls the panel to the editor
+        return true;
+    }
+    if (cmd == "object-curves") {
+        for (const std::string& l : detail::objectCurves(app)) std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "object-point") {
+        size_t i = 0, k = 0;
+        double x = 0, y = 0;
+        std::uint64_t g = 0;
+        in >> i >> k >> x >> y;
+        if (!(in >> g)) g = 0;
+        if (!detail::moveObjectPoint(app, i, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0))
+            std::fprintf(stderr, "script: no point %zu of object curve %zu\n", k, i);
+        m_waitFor = app.state.generation();
+        return true;
+    }
+    if (cmd == "object-undo" || cmd == "object-redo") {
+        if (!detail::objectUndo(app, cmd == "object-redo")) std::fprintf(stderr, "script: nothing to %s\n", cmd.c_str() + 7);
+        m_waitFor = app.state.generation();
         return true;
     }
     if (cmd == "curve-edit" || cmd == "curve-preset") {

@@ -1,0 +1,160 @@
+// A VLab object's functions and contours, edited and written back (vlab_edit.hpp).
+#include "app/plant/vlab_edit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "app/plant/vlab_view.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/read_file.hpp"
+#include "core/language/vlab/curve_files.hpp"
+#include "core/language/vlab/view_file.hpp"
+
+namespace sprout {
+namespace fs = std::filesystem;
+namespace {
+
+CurvePoints pointsOf(const std::vector<std::array<double, 3>>& pts) { return pts; }
+CurvePoints pointsOf(const std::vector<std::array<double, 4>>& pts) {
+    CurvePoints out;
+    for (const auto& p : pts) out.push_back({p[0], p[1], p[3]});
+    return out;
+}
+
+VlabCurveFile functionEntry(const FunctionFile& f, const std::string& path, const std::string& label, int item) {
+    VlabCurveFile e;
+    e.kind = VlabCurveFile::Kind::Function;
+    e.label = label, e.path = path, e.item = item;
+    e.points = pointsOf(f.points);
+    e.rules.function = true, e.rules.fewest = 2, e.rules.newWeight = 1;
+    e.samples = f.samples;
+    return e;
+}
+
+// Multiplicities as cpfg counts them: whole, at least 1.
+long expanded(const CurvePoints& pts) {
+    long n = 0;
+    for (const auto& p : pts) n += std::max(1L, long(p[2]));
+    return n;
+}
+
+}  // namespace
+
+std::vector<VlabCurveFile> vlabCurveFiles(const std::string& lsystemPath) {
+    std::vector<VlabCurveFile> out;
+    const std::optional<VlabObject> object = vlabObjectAt(lsystemPath);
+    if (!object || object->view.empty()) return out;
+    std::error_code ec;
+    if (!fs::equivalent(object->lsystem, lsystemPath, ec)) return out;  // the object runs another L-system
+    const std::optional<std::string> text = readFile(object->view);
+    if (!text) return out;
+    const vlab::ViewFile view = vlab::readViewFile(*text);
+    const fs::path folder = fs::path(object->view).parent_path();
+    for (const vlab::FileReference& f : view.files) {
+        const fs::path path = folder / f.file;
+        if (f.command == "function") {
+            const FunctionRead r = loadFunction(path, -1);
+            if (r.ok() && r.file) out.push_back(functionEntry(*r.file, path.string(), f.file, -1));
+        } else if (f.command == "function set") {
+            const FunctionSetRead r = loadFunctionSet(path);
+            if (r.ok())
+                for (size_t i = 0; i < r.files.size(); ++i)
+                    out.push_back(functionEntry(r.files[i], path.string(), f.file + ": " + r.files[i].name, int(i)));
+        } else if (f.command == "contour" && !f.numbers.empty()) {
+            const ContourRead r = loadContour(path);
+            if (!r.ok() || !r.file) continue;
+            VlabCurveFile e;
+            e.kind = VlabCurveFile::Kind::Contour;
+            e.label = f.file, e.path = path.string();
+            e.points = pointsOf(r.file->points);
+            e.rules.closed = r.file->closed, e.rules.fewest = r.file->closed ? 3 : 4, e.rules.newWeight = 1;
+            e.samples = view.contourSides;
+            out.push_back(std::move(e));
+        }
+    }
+    return out;
+}
+
+std::vector<std::array<double, 2>> vlabCurveSamples(const VlabCurveFile& f, const CurvePoints& pts) {
+    std::vector<std::array<double, 2>> out;
+    if (f.kind == VlabCurveFile::Kind::Function) {
+        if (expanded(pts) < 4) return out;
+        FunctionFile file;
+        for (const auto& p : pts) file.points.push_back({p[0], p[1], double(std::max(1L, long(p[2])))});
+        const CurveFunction fn = file.function();
+        for (int i = 0; i <= 100; ++i) out.push_back({i / 100.0, fn.curveValue(i / 100.0)});
+        return out;
+    }
+    Contour c;
+    c.closed = f.rules.closed;
+    for (const auto& p : pts)
+        for (long k = 0; k < std::max(1L, long(p[2])); ++k) c.points.push_back({float(p[0]), float(p[1]), 0});
+    for (const auto& p : c.sampled(std::max(64, f.samples))) out.push_back({p[0], p[1]});
+    return out;
+}
+
+std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoints& pts, std::string& error) {
+    for (const auto& p : pts)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1])) return error = "a point that is not a finite number", std::nullopt;
+    const long n = expanded(pts);
+    if (f.kind == VlabCurveFile::Kind::Function && n < 4) return error = "a function needs at least 4 points (cpfg)", std::nullopt;
+    if (f.kind == VlabCurveFile::Kind::Contour && n < (f.rules.closed ? 3 : 4))
+        return error = std::string("a") + (f.rules.closed ? " closed contour needs 3 points" : "n open contour needs 4 points"), std::nullopt;
+    auto fill = [&](std::vector<std::array<double, 3>>& out) {
+        out.clear();
+        for (const auto& p : pts) out.push_back({p[0], p[1], double(std::max(1L, long(p[2])))});
+    };
+    if (f.kind == VlabCurveFile::Kind::Function && f.item < 0) {
+        FunctionRead r = loadFunction(f.path, -1);
+        if (!r.ok() || !r.file) return error = f.label + " cannot be read again", std::nullopt;
+        fill(r.file->points);
+        return writeFunction(*r.file);
+    }
+    if (f.kind == VlabCurveFile::Kind::Function) {
+        FunctionSetRead r = loadFunctionSet(f.path);
+        if (!r.ok() || size_t(f.item) >= r.files.size()) return error = f.label + " cannot be read again", std::nullopt;
+        fill(r.files[size_t(f.item)].points);
+        return writeFunctionSet(r.files);
+    }
+    ContourRead r = loadContour(f.path);
+    if (!r.ok() || !r.file) return error = f.label + " cannot be read again", std::nullopt;
+    r.file->points.clear();
+    for (const auto& p : pts) r.file->points.push_back({p[0], p[1], 0, double(std::max(1L, long(p[2])))});
+    return writeContour(*r.file);
+}
+
+bool FileEdits::write(const std::string& path, const std::string& text, std::uint64_t gesture, std::string& error) {
+    const std::string before = readFile(path).value_or("");
+    if (before == text) return true;
+    if (!writeFileAtomically(path, text, error)) return false;
+    m_undone.clear();
+    if (gesture == 0 || m_done.empty() || m_done.back().gesture != gesture) m_done.push_back(Step{gesture, {}});
+    auto& files = m_done.back().files;
+    for (auto& f : files)
+        if (f[0] == path) return f[2] = text, true;  // the gesture's first `before` stays
+    files.push_back({path, before, text});
+    return true;
+}
+
+bool FileEdits::undo(std::string& error) {
+    if (m_done.empty()) return false;
+    Step s = std::move(m_done.back());
+    m_done.pop_back();
+    for (auto it = s.files.rbegin(); it != s.files.rend(); ++it)
+        if (!writeFileAtomically((*it)[0], (*it)[1], error)) return false;
+    m_undone.push_back(std::move(s));
+    return true;
+}
+
+bool FileEdits::redo(std::string& error) {
+    if (m_undone.empty()) return false;
+    Step s = std::move(m_undone.back());
+    m_undone.pop_back();
+    for (const auto& f : s.files)
+        if (!writeFileAtomically(f[0], f[2], error)) return false;
+    m_done.push_back(std::move(s));
+    return true;
+}
+
+}  // namespace sprout

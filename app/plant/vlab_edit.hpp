@@ -1,0 +1,56 @@
+#pragma once
+// A VLab object's functions and contours as the panel's curve editor edits them (issue 52):
+// the files its view file names (`function:`, the items of `function set:`, `contour:`), each
+// one curve whose points are written back in its editor's format (funcedit's `fver 1 1`,
+// gallery's set, cuspy's `cver 1 3`: core/language/vlab/curve_files.hpp), so VLab's editors
+// and cpfg read them; and the undo history of those writes.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/plant/curve_edit.hpp"
+
+namespace sprout {
+
+struct VlabCurveFile {
+    enum class Kind { Function, Contour };
+    Kind kind = Kind::Function;
+    std::string label;  // "leaf-length.func", "functions.fset: length", "calyx.con"
+    std::string path;
+    int item = -1;      // the function's place in its set; -1: a file of its own
+    CurvePoints points;  // x, y, multiplicity
+    CurveRules rules;
+    int samples = 0;     // a function's `samples:`; a contour: the view file's `contour sides:`
+};
+
+// The functions and contours of the object whose L-system is `lsystemPath`, in its view
+// file's order; files that cannot be read are left out (the object's notes say why).
+std::vector<VlabCurveFile> vlabCurveFiles(const std::string& lsystemPath);
+// The curve as cpfg evaluates it through `pts`: a function over x in [0, 1], a contour
+// resampled as cpfg samples it.
+std::vector<std::array<double, 2>> vlabCurveSamples(const VlabCurveFile& f, const CurvePoints& pts);
+// The file's text with `pts` (everything else as the file has it now); nothing, and `error`,
+// when the file cannot be read again or the points would not be a curve cpfg reads.
+std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoints& pts, std::string& error);
+
+// Writes to files beside a model, undone and redone a whole gesture at a time.
+class FileEdits {
+public:
+    // Writes `text` to `path` atomically and records it; writes of the same gesture (not 0)
+    // are one step. False, with `error`, when it could not be written.
+    bool write(const std::string& path, const std::string& text, std::uint64_t gesture, std::string& error);
+    // The last step taken back (the files as before it) or done again; false: none.
+    bool undo(std::string& error);
+    bool redo(std::string& error);
+
+private:
+    struct Step {
+        std::uint64_t gesture = 0;
+        std::vector<std::array<std::string, 3>> files;  // path, before, after
+    };
+    std::vector<Step> m_done, m_undone;
+};
+
+}  // namespace sprout

@@ -1,0 +1,66 @@
+// The panel's editors on a VLab object's own files (issue 52), under Xvfb: a function and a
+// contour dragged change the picture and are written in funcedit's and cuspy's formats; the
+// editor's undo gives back the picture and the files byte for byte.
+#include <fstream>
+#include <sstream>
+
+#include "tests/viewer/window_support.hpp"
+
+namespace sprout {
+namespace {
+
+std::string fileBytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::size_t differing(const Image& x, const Image& y) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
+        n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
+    return n;
+}
+
+TEST(Window, AnObjectsFunctionAndContourDraggedChangeThePlantAndUndoRestoresTheirFiles) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("object_editors");
+    const fs::path object = dir / "object";
+    fs::create_directories(object);
+    std::ofstream(object / "specifications") << "plant.l\nplant.v\nlen.func\nsec.con\nmodel:\n\tcpfg plant.l plant.v\n";
+    // A tube whose segments' lengths follow function 1, its section contour 1 (a flat oval).
+    std::ofstream(object / "plant.l") << "#define N 8\nLsystem: 1\nderivation length: 8\nAxiom: #(1.5) @#(1) @Gs A(0) @Ge\n"
+                                         "A(t) : t < N --> F(0.3 + 2*func(1, t/N)) +(12) A(t+1)\nendlsystem\n";
+    std::ofstream(object / "plant.v") << "function: len.func\ncontour: 1 sec.con\ncontour sides: 12\nline style: cylinder\n";
+    const std::string func = "fver 1 1\nname: len\nsamples: 10\nflip: off\npoints: 4\n0.000000 0.200000 1\n0.333333 0.200000 1\n"
+                             "0.666667 0.200000 1\n1.000000 0.200000 1\n";
+    const std::string con = "cver 1 3\nname: sec\npoints: 4 4\ntype: cr\nsamples: 8\n1.000000 0.300000 0.000000 1\n"
+                            "1.000000 -0.300000 0.000000 1\n-1.000000 -0.300000 0.000000 1\n-1.000000 0.300000 0.000000 1\n";
+    std::ofstream(object / "len.func", std::ios::binary) << func;
+    std::ofstream(object / "sec.con", std::ios::binary) << con;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string(),
+                      d = (dir / "d.png").string();
+    const fs::path movedFunc = dir / "moved.func", movedCon = dir / "moved.con";
+    const auto printed = runScript(dir, (object / "plant.l").string() + " --size 1000x700",
+                                   "wait\nobject-curves\nscreenshot " + a + " 400x300\n"
+                                   // one drag of the function's third point, in two moves: one undo step
+                                   "object-point 0 2 0.9 0.7 5\nobject-point 0 2 0.666667 1.2 5\nwait\nscreenshot " + b + " 400x300\n"
+                                   "object-point 1 0 2.5 2.5\nwait\nscreenshot " + c + " 400x300\nobject-curves\n"
+                                   "object-undo\nobject-undo\nwait\nscreenshot " + d + " 400x300\nquit\n");
+    ASSERT_EQ(printed.size(), 4u);
+    EXPECT_EQ(printed[0], "object-curve=len.func points=0,0.200000003,1;0.333332986,0.200000003,1;0.666666985,0.200000003,1;1,0.200000003,1");
+    EXPECT_EQ(printed[1], "object-curve=sec.con points=1,0.300000012,1;1,-0.300000012,1;-1,-0.300000012,1;-1,0.300000012,1");
+    EXPECT_EQ(printed[2], "object-curve=len.func points=0,0.200000003,1;0.333332986,0.200000003,1;0.666666985,1.20000005,1;1,0.200000003,1")
+        << "x stays between its neighbours; y as dragged";
+    EXPECT_EQ(printed[3], "object-curve=sec.con points=2.5,2.5,1;1,-0.300000012,1;-1,-0.300000012,1;-1,0.300000012,1");
+    const Image ia = load(a), ib = load(b), ic = load(c), id = load(d);
+    EXPECT_GT(differing(ia, ib), 400u * 300u / 100) << "longer segments where the function rose";
+    EXPECT_GT(differing(ib, ic), 400u * 300u / 100) << "a thicker tube where the contour grew";
+    EXPECT_LE(differing(ia, id), 20u) << "two undos: the plant as it was";
+    EXPECT_EQ(fileBytes(object / "len.func"), func) << "the function's file byte for byte";
+    EXPECT_EQ(fileBytes(object / "sec.con"), con) << "the contour's file byte for byte";
+}
+
+}  // namespace
+}  // namespace sprout
