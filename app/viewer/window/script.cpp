@@ -84,9 +84,7 @@
 
 #include "app/args.hpp"
 #include "app/viewer/window/app.hpp"
-#include "app/plant/lpy_objects.hpp"
 #include "app/plant/text_edit.hpp"
-#include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
 #include "core/base/bounded.hpp"
 #include "core/base/read_file.hpp"
@@ -105,36 +103,6 @@ bool Script::load(const std::string& path, std::string& error) {
     while (std::getline(in, line))
         if (!line.empty() && line[0] != '#') m_lines.push_back(line);
     if (m_lines.empty()) m_lines.push_back("quit");
-    return true;
-}
-
-// `mouse-drag-point`, a frame at a time: three frames for the panel to scroll to the editor,
-// the mouse over the point, pressed, moved `steps` times, let go, then given back.
-bool Script::mouseStep(App& app) {
-    auto& m = app.scriptMouse;
-    const int f = m_mouse.frames++, steps = m_mouse.steps;
-    if (f < 3) return true;
-    if (f == 3) {
-        const auto at = detail::curvePointOnScreen(m_mouse.point);
-        if (!at) {
-            std::fprintf(stderr, "script: no point %zu in the curve editor\n", m_mouse.point);
-            m_mouse.frames = -1;
-            return true;
-        }
-        m_mouse.x = (*at)[0], m_mouse.y = (*at)[1];
-        m = {true, false, m_mouse.x, m_mouse.y};
-    } else if (f == 4) {
-        m.down = true;
-    } else if (f < 5 + steps) {
-        const float t = float(f - 4) / float(steps);
-        m.x = m_mouse.x + t * m_mouse.dx, m.y = m_mouse.y + t * m_mouse.dy;
-    } else if (f == 5 + steps) {
-        m.down = false;
-    } else {
-        m.on = false;
-        m_mouse.frames = -1;
-        m_waitFor = app.state.generation();  // what comes next waits for the drag's result
-    }
     return true;
 }
 
@@ -177,6 +145,7 @@ bool Script::step(App& app) {
             ~After() { s.m_waitFor = a.state.generation(); }
         } after{*this, app};
         if (auto done = documentCommand(app, cmd, in)) return *done;
+        if (auto done = curveCommand(app, cmd, in)) return *done;
         if (auto done = reportCommand(app, cmd, in)) return *done;
         if (auto done = pickCommand(app, cmd, in)) return *done;
         return viewCommand(app, cmd, in);
@@ -260,81 +229,6 @@ std::optional<bool> Script::documentCommand(App& app, const std::string& cmd, st
         auto numbers = environmentNumbers(app.state.text());
         if (k < numbers.size()) app.state.setText(setEnvironmentNumber(app.state.text(), numbers[k], v));
         else std::fprintf(stderr, "script: there is no environment slider %zu\n", k);
-        return true;
-    }
-    if (cmd == "curve-point") {
-        std::string name;
-        size_t k = 0;
-        double x = 0, y = 0;
-        std::uint64_t g = 0;
-        in >> name >> k >> x >> y;
-        if (!(in >> g)) g = 0;
-        if (!detail::moveCurvePoint(app, name, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
-        return true;
-    }
-    if (cmd == "mouse-drag-point") {
-        m_mouse = MouseDrag{};
-        in >> m_mouse.point >> m_mouse.dx >> m_mouse.dy >> m_mouse.steps;
-        m_mouse.steps = std::max(1, m_mouse.steps);
-        m_mouse.frames = 0;
-        detail::curvePointOnScreen(m_mouse.point);  // scrolls the panel to the editor
-        return true;
-    }
-    if (cmd == "object-curves") {
-        for (const std::string& l : detail::objectCurves(app)) std::printf("%s\n", l.c_str());
-        std::fflush(stdout);
-        return true;
-    }
-    if (cmd == "object-point") {
-        size_t i = 0, k = 0;
-        double x = 0, y = 0;
-        std::uint64_t g = 0;
-        in >> i >> k >> x >> y;
-        if (!(in >> g)) g = 0;
-        if (!detail::moveObjectPoint(app, i, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0))
-            std::fprintf(stderr, "script: no point %zu of object curve %zu\n", k, i);
-        m_waitFor = app.state.generation();
-        return true;
-    }
-    if (cmd == "object-undo" || cmd == "object-redo") {
-        if (!detail::objectUndo(app, cmd == "object-redo")) std::fprintf(stderr, "script: nothing to %s\n", cmd.c_str() + 7);
-        m_waitFor = app.state.generation();
-        return true;
-    }
-    if (cmd == "curve-edit" || cmd == "curve-preset") {
-        std::string name, op;
-        double a = 0, b = 0;
-        in >> name >> op >> a >> b;
-        const std::string why = cmd == "curve-edit" ? detail::editCurve(app, name, op, a, b) : detail::presetCurve(app, name, op);
-        if (!why.empty()) std::fprintf(stderr, "script: %s\n", why.c_str());
-        return true;
-    }
-    if (cmd == "curve-drag") {
-        int frames = 1;
-        in >> m_curve.name >> m_curve.point >> m_curve.dx >> m_curve.dy >> frames;
-        m_curve.frames = std::max(1, frames);
-        m_curve.dx /= m_curve.frames;
-        m_curve.dy /= m_curve.frames;
-        m_curve.gesture = detail::newGesture();
-        m_curve.lastFrame = m_curve.worstMs = 0;
-        return true;
-    }
-    if (cmd == "curve-drag-stats") {  // run once the drag's last result is on screen
-        std::printf("curve_drag_worst_frame_ms=%.1f refined_ms=%.1f\n", m_curve.worstMs, (glfwGetTime() - m_curve.endedAt) * 1000);
-        std::fflush(stdout);
-        return true;
-    }
-    if (cmd == "undo" || cmd == "redo") {
-        if (cmd == "undo" ? app.editor.model().undo() : app.editor.model().redo()) app.state.setText(app.editor.text());
-        return true;
-    }
-    if (cmd == "curves") {
-        for (const LpyCurve& c : lpyCurves(app.state.text())) {
-            std::printf("curve=%s kind=%d points=", c.name.c_str(), int(c.kind));
-            for (size_t i = 0; i < c.points.size(); ++i) std::printf("%s%.9g,%.9g,%.9g", i ? ";" : "", c.points[i][0], c.points[i][1], c.points[i][2]);
-            std::printf("\n");
-        }
-        std::fflush(stdout);
         return true;
     }
     return std::nullopt;
