@@ -1,5 +1,7 @@
 #include "app/plant/lpy_objects.hpp"
 
+#include "app/plant/python_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -10,49 +12,7 @@
 namespace sprout {
 namespace {
 
-bool isIdent(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-size_t skipSpace(std::string_view t, size_t k) {
-    while (k < t.size() && std::isspace(static_cast<unsigned char>(t[k]))) ++k;
-    return k;
-}
-
-// `word` at k, spaces before it skipped: k moves past it.
-bool eat(std::string_view t, size_t& k, std::string_view word) {
-    const size_t at = skipSpace(t, k);
-    if (t.substr(at, word.size()) != word) return false;
-    k = at + word.size();
-    return true;
-}
-
-std::optional<double> number(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    if (s.empty() || s.size() > 40) return std::nullopt;
-    const std::string text(s);
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
-
-// The ')' closing the '(' at `open` (strings skipped), or npos.
-size_t closing(std::string_view t, size_t open) {
-    int depth = 0;
-    for (size_t k = open; k < t.size(); ++k) {
-        const char c = t[k];
-        if (c == '\'' || c == '"') {
-            const size_t q = t.find(c, k + 1);
-            if (q == std::string_view::npos) return q;
-            k = q;
-        } else if (c == '(') {
-            ++depth;
-        } else if (c == ')' && --depth == 0) {
-            return k;
-        }
-    }
-    return std::string_view::npos;
-}
+using namespace python_text;
 
 // The points of `[(x, y[, w]), ...]` between `open` and `close` (the brackets), or none when
 // one is not a tuple of two or three numbers.

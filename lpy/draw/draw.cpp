@@ -81,6 +81,7 @@ Drawing::Drawing(const TurtleDefaults& d) : g(std::make_shared<Grammar>()), w(*g
     g->settings.step = {1, 0};
     g->settings.gradient = Toggle::Off;
     g->settings.polygonEdgesDrawn = true;  // PlantGL's F inside { } draws its cylinder too
+    g->settings.view = ViewHint::Solid;    // PlantGL draws every F as a cylinder: a flat model is no line drawing
     g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
     colours = int(g->settings.palette.size());
     st.width = d.width;

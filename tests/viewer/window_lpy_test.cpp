@@ -236,5 +236,38 @@ TEST(Window, TheMouseDragsACurvePointInTheEditorAndUndoRestoresIt) {
     EXPECT_EQ(fileText(back), kGuidedModel) << "four undos: the file is the same byte for byte";
 }
 
+// The material editor: a slider of material 1 (its ambient colour, as the panel's colour editor
+// sets it) turns the stem from green to red; one undo gives back the picture and the file.
+TEST(Window, AMaterialSetInThePanelRecoloursThePlantAndUndoRestoresIt) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("material_window");
+    const fs::path model = dir / "stem.lpy", moved = dir / "moved.lpy", back = dir / "back.lpy";
+    const std::string text = "Axiom: ,(1) _(0.3) F(3)\nderivation length: 0\nproduction:\nendlsystem\n"
+                             "###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\ndef __initialiseContext__(context):\n"
+                             "\timport openalea.plantgl.all as pgl\n"
+                             "\tColor_1 = pgl.Material(\"Color_1\" , ambient = (10,60,10) , diffuse = 3 , )\n"
+                             "\tColor_1.name = \"Color_1\"\n\tcontext.turtle.setMaterial(1,Color_1)\n";
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\nmaterials\nscreenshot " + a + " 400x300\nmaterial-set 1 ambient 80 10 10\nwait\n"
+                                   "materials\nscreenshot " + b + " 400x300\nsaveas " + moved.string() + "\nundo\nwait\nscreenshot " + c +
+                                   " 400x300\nsaveas " + back.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 3u);
+    EXPECT_EQ(printed[1], "material=1 name=Color_1 ambient=10,60,10 diffuse=3 specular=40,40,40 emission=0,0,0 shininess=1 transparency=0");
+    EXPECT_EQ(printed[2], "material=1 name=Color_1 ambient=80,10,10 diffuse=3 specular=40,40,40 emission=0,0,0 shininess=1 transparency=0");
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    // The stem's middle: green, then red.
+    const auto ma = mean(ia, 190, 120, 210, 180), mb = mean(ib, 190, 120, 210, 180);
+    EXPECT_GT(ma[1], ma[0] + 40) << "green first";
+    EXPECT_GT(mb[0], mb[1] + 40) << "red once set";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u) << "undone, the plant is as it was";
+    std::string expected = text;
+    expected.replace(expected.find("(10,60,10)"), 10, "(80,10,10)");
+    EXPECT_EQ(fileText(moved), expected) << "only the colour's numbers change";
+    EXPECT_EQ(fileText(back), text);
+}
+
 }  // namespace
 }  // namespace sprout

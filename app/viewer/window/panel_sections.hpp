@@ -37,6 +37,13 @@ void vlabCurveSection(App& app);
 std::vector<std::string> objectCurves(App& app);
 bool moveObjectPoint(App& app, size_t which, size_t k, double x, double y, std::uint64_t gesture = 0);
 bool objectUndo(App& app, bool redo);
+// panel_materials.cpp: an L-Py model's materials, each edited with colour editors and sliders;
+// materialLines lists them as the script's `materials` prints them, setMaterialField sets one
+// field of one ("" when done, else what stopped it).
+bool hasLpyMaterials(App& app);
+void materialSection(App& app);
+std::vector<std::string> materialLines(App& app);
+std::string setMaterialField(App& app, int index, const std::string& field, const std::vector<double>& values, std::uint64_t gesture = 0);
 // A new gesture's id: the changes a drag in the panel makes carry it, and undo takes them back
 // together (ViewerState::setText).
 std::uint64_t newGesture();

@@ -22,6 +22,10 @@
 //   mouse-drag-point <k> <dx> <dy> <frames>   the mouse, as ImGui sees it, presses point k of
 //                         the curve open in the panel's editor, drags it (dx, dy) pixels over
 //                         that many frames and lets it go (the panel scrolls to it first)
+//   materials             prints an L-Py model's materials, a line each: "material=I name=N
+//                         ambient=r,g,b diffuse=d specular=.. emission=.. shininess=s transparency=t"
+//   material-set <i> <field> <v> [v v]   sets that field of material i as the panel's editor
+//                         does (a colour: three numbers 0..255), one undo step
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

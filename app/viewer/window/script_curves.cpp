@@ -122,6 +122,21 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         std::fflush(stdout);
         return true;
     }
+    if (cmd == "materials") {
+        for (const std::string& l : detail::materialLines(app)) std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "material-set") {  // INDEX FIELD V [V V]: one undo step
+        int index = 0;
+        std::string field;
+        in >> index >> field;
+        std::vector<double> values;
+        for (double v; in >> v;) values.push_back(v);
+        const std::string why = detail::setMaterialField(app, index, field, values);
+        if (!why.empty()) std::fprintf(stderr, "script: %s\n", why.c_str());
+        return true;
+    }
     return std::nullopt;
 }
 

@@ -1,0 +1,84 @@
+// An L-Py model's materials read and written in its text (app/plant/lpy_materials.hpp), in
+// both forms L-Py Studio writes; the corpus's models with materials are all read.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/plant/lpy_materials.hpp"
+#include "core/base/read_file.hpp"
+
+namespace sprout {
+namespace {
+
+const std::string kStudio =
+    "def __initialiseContext__(context):\n\timport openalea.plantgl.all as pgl\n"
+    "\tColor_0 = pgl.Material(\"Color_0\" , ambient = (30,60,10) , diffuse = 3 , )\n\tColor_0.name = \"Color_0\"\n"
+    "\tcontext.turtle.setMaterial(0,Color_0)\n"
+    "\tColor_5 = pgl.Material(\"Color_5\" , ambient = (0,0,0) , )\n\tcontext.turtle.setMaterial(5,Color_5)\n"
+    "\tcontext.turtle.setMaterial(7,Material('Red',Color3(39,0,0),4.61538,Color3(40,40,40),Color3(0,0,0),1,0))\n"
+    "\tcontext.turtle.setMaterial(9,ImageTexture('leaf.png'))\n";
+
+TEST(LpyMaterials, BothFormsAreRead) {
+    const auto m = lpyMaterials(kStudio);
+    ASSERT_EQ(m.size(), 4u);
+    EXPECT_EQ(m[0].index, 0);
+    EXPECT_EQ(m[0].name, "Color_0");
+    EXPECT_EQ(m[0].ambient, (std::array<int, 3>{30, 60, 10}));
+    EXPECT_EQ(m[0].diffuse, 3);
+    EXPECT_EQ(m[0].specular, (std::array<int, 3>{40, 40, 40})) << "PlantGL's default, not written";
+    EXPECT_EQ(m[0].line, 5);
+    EXPECT_EQ(m[1].diffuse, 2) << "PlantGL's default";
+    EXPECT_EQ(m[2].name, "Red");
+    EXPECT_FALSE(m[2].keywords);
+    EXPECT_DOUBLE_EQ(m[2].diffuse, 4.61538);
+    EXPECT_EQ(m[2].shininess, 1);
+    EXPECT_EQ(m[3].texture, "leaf.png");
+    EXPECT_EQ(lpyDiffuseColour(m[0]), (std::array<int, 3>{90, 180, 30}));
+}
+
+TEST(LpyMaterials, AFieldIsWrittenInPlaceOrAddedAsStudioWritesIt) {
+    auto m = lpyMaterials(kStudio);
+    LpyMaterial v = m[0];
+    v.ambient = {200, 10, 0};
+    std::string t = setLpyMaterial(kStudio, m[0], LpyMaterial::Ambient, v);
+    std::string expected = kStudio;
+    expected.replace(expected.find("(30,60,10)"), 10, "(200,10,0)");
+    EXPECT_EQ(t, expected) << "only the value changes";
+    v = m[1];
+    v.transparency = 0.5;
+    t = setLpyMaterial(t, lpyMaterials(t)[1], LpyMaterial::Transparency, v);
+    EXPECT_NE(t.find("pgl.Material(\"Color_5\" , ambient = (0,0,0) , transparency = 0.5 , )"), std::string::npos) << t;
+    EXPECT_EQ(lpyMaterials(t)[1].transparency, 0.5);
+    v = m[2];
+    v.emission = {5, 6, 7};
+    t = setLpyMaterial(t, lpyMaterials(t)[2], LpyMaterial::Emission, v);
+    EXPECT_NE(t.find("Material('Red',Color3(39,0,0),4.61538,Color3(40,40,40),Color3(5,6,7),1,0)"), std::string::npos) << t;
+    const std::string bare = "c.setMaterial(1, Material('x', ambient=(1,2,3)))\n";
+    v = lpyMaterials(bare)[0];
+    v.diffuse = 1.5;
+    EXPECT_EQ(setLpyMaterial(bare, lpyMaterials(bare)[0], LpyMaterial::Diffuse, v), "c.setMaterial(1, Material('x', ambient=(1,2,3), diffuse = 1.5))\n");
+}
+
+TEST(LpyMaterials, EveryCorpusModelsMaterialsAreRead) {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(SPROUT_SHARED_DIR) / "corpus";
+    if (!fs::exists(root / "lpy")) GTEST_SKIP() << "no corpus";
+    int models = 0, materials = 0;
+    for (const char* sub : {"lpy", "lpy-tests"})
+        for (const auto& e : fs::recursive_directory_iterator(root / sub)) {
+            if (e.path().extension() != ".lpy") continue;
+            const std::string text = readFile(e.path().string()).value_or("");
+            size_t calls = 0;
+            for (size_t at = text.find("setMaterial("); at != std::string::npos; at = text.find("setMaterial(", at + 1)) ++calls;
+            if (calls == 0) continue;
+            const auto m = lpyMaterials(text);
+            EXPECT_EQ(m.size(), calls) << e.path();
+            ++models;
+            materials += int(m.size());
+        }
+    EXPECT_GT(models, 10);
+    EXPECT_GT(materials, 40);
+}
+
+}  // namespace
+}  // namespace sprout
