@@ -23,7 +23,6 @@
 #include "app/plant/presets.hpp"
 #include "app/snapshot.hpp"
 #include "app/plant/growth.hpp"
-#include "app/plant/lpy_objects.hpp"
 #include "app/plant/open.hpp"
 #include "app/plant/source.hpp"
 #include "core/derive/derive.hpp"
@@ -484,6 +483,8 @@ void definePlant(py::module_& m) {
 
 }  // namespace
 
+void bindModelObjects(py::module_& m);  // sprout_objects.cpp
+
 PYBIND11_MODULE(_sprout, m) {
     m.doc() = "Sprout's L-system engine: grammars of every kind Sprout opens, derivation, the turtle, pictures and models";
     m.attr("__version__") = SPROUT_VERSION;
@@ -513,36 +514,5 @@ PYBIND11_MODULE(_sprout, m) {
     m.def("parse", &parseText, py::arg("text"), py::arg("kind") = py::none(), py::arg("python") = true, py::arg("steps") = -1,
           "A grammar from text; kind is lsys, abop, cpfg, lpy, lparser or fractint (None: detected from the text)");
     m.def("presets", &presetNames, "The built-in presets' names");
-    // An L-Py model's 2D curves as the viewer's curve editor reads and writes them (issue 52).
-    m.def(
-        "lpy_curves",
-        [](const std::string& text) {
-            py::list out;
-            for (const LpyCurve& c : lpyCurves(text)) {
-                py::dict d;
-                d["name"] = c.name;
-                d["kind"] = c.kind == LpyCurve::Kind::Bezier ? "Bezier" : c.kind == LpyCurve::Kind::Polyline ? "Polyline" : "NURBS";
-                d["function"] = c.function;
-                d["degree"] = c.degree;
-                d["line"] = c.line;
-                d["points"] = c.points;
-                out.append(d);
-            }
-            return out;
-        },
-        py::arg("text"), "The 2D curves of an L-Py model's INITIALISATION part: name, kind, function, degree, line, points (x, y, w)");
-    m.def(
-        "set_lpy_curve",
-        [](const std::string& text, const std::string& name, const std::vector<std::array<double, 3>>& points) {
-            if (points.size() < 2) throw py::value_error("a curve has two points at least");
-            for (const auto& p : points)
-                if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-                    throw py::value_error("a curve's points are finite numbers");
-            const std::vector<LpyCurve> curves = lpyCurves(text);
-            if (const LpyCurve* c = lastLpyCurve(curves, name)) return setLpyCurvePoints(text, *c, points);
-            throw py::key_error("no curve " + name + " in the model's INITIALISATION part");
-        },
-        py::arg("text"), py::arg("name"), py::arg("points"),
-        "The model's text with that curve's control points replaced (as L-Py Studio writes them; a name several panels "
-        "set: the last, which the model uses); the rest as it was");
+    bindModelObjects(m);  // sprout_objects.cpp
 }

@@ -2,6 +2,7 @@
 #include "app/plant/lpy_materials.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/plant/python_text.hpp"
@@ -230,9 +231,17 @@ std::optional<LpyMaterial::Field> lpyMaterialFieldNamed(std::string_view name) {
     return std::nullopt;
 }
 
+double lpyMostDiffuse(const std::array<int, 3>& ambient) {
+    const int most = std::max({ambient[0], ambient[1], ambient[2]});
+    return most > 0 ? 255.0 / most : 1e9;
+}
+
+double lpyEffectiveDiffuse(const LpyMaterial& m) { return std::min(m.diffuse, lpyMostDiffuse(m.ambient)); }
+
 std::array<int, 3> lpyDiffuseColour(const LpyMaterial& m) {
     std::array<int, 3> c{};
-    for (size_t i = 0; i < 3; ++i) c[i] = std::clamp(int(std::lround(m.ambient[i] * m.diffuse)), 0, 255);
+    const double d = lpyEffectiveDiffuse(m);
+    for (size_t i = 0; i < 3; ++i) c[i] = std::clamp(int(std::floor(m.ambient[i] * d)), 0, 255);
     return c;
 }
 

@@ -22,8 +22,8 @@ struct LpyMaterial {
     enum Field { Ambient, Diffuse, Specular, Emission, Shininess, Transparency };
     int index = 0;
     std::string name;
-    std::array<int, 3> ambient{80, 80, 80}, specular{40, 40, 40}, emission{0, 0, 0};
-    double diffuse = 2, shininess = 1, transparency = 0;
+    std::array<int, 3> ambient{80, 80, 80}, specular{0, 0, 0}, emission{0, 0, 0};  // PlantGL's defaults
+    double diffuse = 2, shininess = 0.2, transparency = 0;
     std::string texture;  // an ImageTexture's image ("": a Material)
     int line = 0;         // of its setMaterial, 1-based
     // Where each field's value is in the text (begin == end: not written, PlantGL's default),
@@ -39,7 +39,11 @@ std::vector<LpyMaterial> lpyMaterials(std::string_view text);
 std::string setLpyMaterial(std::string_view text, const LpyMaterial& m, LpyMaterial::Field field, const LpyMaterial& value);
 const char* lpyMaterialFieldName(LpyMaterial::Field f);  // ambient, diffuse, ...
 std::optional<LpyMaterial::Field> lpyMaterialFieldNamed(std::string_view name);
-// PlantGL's diffuse colour (ambient * diffuse, 0..255 each), as the turtle draws the material.
+// The diffuse factor PlantGL's Material keeps: no more than keeps every channel of ambient x
+// diffuse in 255 (its constructor clamps it so).
+double lpyMostDiffuse(const std::array<int, 3>& ambient);
+double lpyEffectiveDiffuse(const LpyMaterial& m);
+// PlantGL's diffuse colour (floor of ambient x its diffuse), as the turtle draws the material.
 std::array<int, 3> lpyDiffuseColour(const LpyMaterial& m);
 
 }  // namespace sprout

@@ -9,6 +9,8 @@
 #   [SECTION] Scene objects
 #   [SECTION] Scene and BoundingBox
 #   [SECTION] Viewer
+import math
+
 from openalea.plantgl._vectors import Vector3
 from openalea.plantgl._object import _SceneObject, with_defaults
 
@@ -135,9 +137,13 @@ class Material(_SceneObject):
         self.emission = Color3(values['emission'])
         self.shininess = float(values['shininess'])
         self.transparency = float(values['transparency'])
+        # PlantGL's constructor: the diffuse factor no more than keeps ambient x diffuse in 255.
+        for c in self.ambient:
+            if self.diffuse * c > 255:
+                self.diffuse = min(self.diffuse, 255.0 / c)
 
     def diffuseColor(self):
-        return Color3(*[min(255, int(c * self.diffuse)) for c in self.ambient])
+        return Color3(*[min(255, int(math.floor(c * self.diffuse))) for c in self.ambient])
 
     def isSimilar(self, other):
         return all(getattr(self, f) == getattr(other, f, None) for f in _material_defaults)

@@ -13,7 +13,8 @@ import builtins as _builtins
 import os as _os
 import tempfile as _tempfile
 
-from ._sprout import LString, Plant, __version__, lpy_curves, open, parse, presets, set_lpy_curve  # noqa: F401
+from ._sprout import (LString, Plant, __version__, lpy_curves, lpy_materials, open, parse, presets,  # noqa: F401
+                      set_lpy_curve, set_lpy_material)
 
 
 class GrammarError(ValueError):

@@ -37,3 +37,34 @@ def test_a_curve_set_is_written_in_place_the_last_of_its_name():
         sprout.set_lpy_curve(MODEL, 'path', [(0, 0, 1)])
     with pytest.raises(ValueError):
         sprout.set_lpy_curve(MODEL, 'path', [(0, 0, 1), (float('nan'), 1, 1)])
+
+
+MATERIALS = (
+    "def __initialiseContext__(context):\n"
+    "\tColor_1 = pgl.Material(\"Color_1\" , ambient = (10,60,10) , diffuse = 3 , )\n"
+    "\tcontext.turtle.setMaterial(1,Color_1)\n"
+    "\tcontext.turtle.setMaterial(2,Material('Red',Color3(39,0,0),4.5,Color3(40,40,40),Color3(0,0,0),1,0))\n"
+)
+
+
+def test_materials_are_read_and_set_in_place():
+    m = sprout.lpy_materials(MATERIALS)
+    assert [x["index"] for x in m] == [1, 2]
+    assert m[0]["ambient"] == [10, 60, 10] and m[0]["diffuse"] == 3 and m[0]["specular"] == [0, 0, 0]
+    assert m[1]["name"] == "Red" and m[1]["shininess"] == 1
+    text = sprout.set_lpy_material(MATERIALS, 1, "ambient", (80, 10, 10))
+    assert text == MATERIALS.replace("(10,60,10)", "(80,10,10)")
+    text = sprout.set_lpy_material(text, 2, "transparency", 0.5)
+    assert "Color3(0,0,0),1,0.5))" in text
+    assert sprout.lpy_materials(text)[1]["transparency"] == 0.5
+
+
+def test_a_material_refuses_what_plantgl_would_not_keep():
+    with pytest.raises(ValueError):
+        sprout.set_lpy_material(MATERIALS, 1, "diffuse", 5)  # 60 x 5 > 255
+    with pytest.raises(ValueError):
+        sprout.set_lpy_material(MATERIALS, 1, "ambient", (300, 0, 0))
+    with pytest.raises(KeyError):
+        sprout.set_lpy_material(MATERIALS, 7, "diffuse", 1)
+    with pytest.raises(KeyError):
+        sprout.set_lpy_material(MATERIALS, 1, "glow", 1)

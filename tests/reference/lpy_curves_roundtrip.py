@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""The viewer's curve editor against the real L-Py (issue 52): every model of L-Py's share/
-(../shared/corpus/lpy) whose INITIALISATION part stores 2D curves, each curve's point 1 moved as
-a drag in the editor moves it (sprout.set_lpy_curve: the text rewritten in place, as L-Py Studio
-writes it), saved, then read back by Sprout (sprout.lpy_curves gives the new numbers, and every
-other curve's as they were) and by the reference L-Py (Lsystem(file): the curve object in the
-model's context has those control points, to L-Py Studio's six digits).
+"""The viewer's curve and material editors against the real L-Py (issue 52): every model of L-Py's
+share/ (../shared/corpus/lpy) whose INITIALISATION part stores 2D curves or materials, each
+curve's point 1 moved as a drag in the editor moves it (sprout.set_lpy_curve: the text rewritten
+in place, as L-Py Studio writes it) and each material's ambient colour, diffuse, specular and
+transparency set as the material editor sets them (sprout.set_lpy_material), saved, then read
+back by Sprout (sprout.lpy_curves and lpy_materials give the new numbers) and by the reference
+L-Py (Lsystem(file): the curve object in the model's context has those control points, to L-Py
+Studio's six digits; its turtle's material those values).
 
     lpy_curves_roundtrip.py REF_PYTHON --build BUILD
 
@@ -12,6 +14,7 @@ Not part of the README's test command or CI: ctest runs it under the label `refe
 SPROUT_LPY_REFERENCE names the reference's python (../shared/tools/build-lpy-reference.sh).
 """
 import json
+import math
 import os
 import subprocess
 import sys
@@ -27,7 +30,8 @@ import json, os, sys
 real, sys.stdout = sys.stdout, sys.stderr  # what the models print is not the answer
 from openalea.lpy import Lsystem
 out = {}
-for path, names in json.loads(sys.stdin.read()).items():
+for path, asked in json.loads(sys.stdin.read()).items():
+    names, materials = asked['curves'], asked['materials']
     os.chdir(os.path.dirname(path))
     try:
         ctx = Lsystem(path).context()
@@ -38,6 +42,11 @@ for path, names in json.loads(sys.stdin.read()).items():
             for n, obj in (ctx[key] if key in ctx else []):
                 kept[n] = obj
         out[path] = {n: [list(p) for p in (kept[n] if n in kept else ctx[n]).ctrlPointList] for n in names}
+        for i in materials:
+            m = ctx.turtle.getMaterial(int(i))
+            out[path]['material %s' % i] = dict(ambient=[m.ambient.red, m.ambient.green, m.ambient.blue], diffuse=m.diffuse,
+                                                 specular=[m.specular.red, m.specular.green, m.specular.blue],
+                                                 transparency=m.transparency)
     except Exception as e:
         out[path] = {'error': '%s: %s' % (type(e).__name__, e)}
 real.write(json.dumps(out))
@@ -65,7 +74,8 @@ def main():
                 with open(os.path.join(folder, f), encoding="utf-8", errors="surrogateescape") as fh:
                     text = fh.read()
                 curves = sprout.lpy_curves(text)
-                if not curves:
+                materials = [m for m in sprout.lpy_materials(text) if "texture" not in m]
+                if not curves and not materials:
                     continue
                 moved = text
                 want = {}
@@ -81,6 +91,20 @@ def main():
                 for name, pts in want.items():
                     if any(abs(a - b) > 1e-6 * max(1.0, abs(b)) for p, q in zip(again.get(name, []), pts) for a, b in zip(p, q)):
                         failures.append("%s: Sprout reads %s back as %s" % (f, name, again.get(name)))
+                last_material = {m["index"]: m for m in materials}  # set twice: the last, which the turtle keeps
+                for m in last_material.values():
+                    ambient = [(c + 37) % 256 for c in m["ambient"]]
+                    most = 255.0 / max(ambient) if max(ambient) > 0 else 10.0  # PlantGL keeps ambient x diffuse in 255
+                    d = min(m["diffuse"] + 0.5, most)
+                    d = math.floor(d * 10 ** (5 - math.floor(math.log10(d)))) / 10 ** (5 - math.floor(math.log10(d)))  # %g's six digits, down
+                    want_m = dict(ambient=ambient, diffuse=float("%g" % d),
+                                  specular=[(c + 11) % 256 for c in m["specular"]], transparency=0.25)
+                    for field, value in want_m.items():
+                        moved = sprout.set_lpy_material(moved, m["index"], field, value)
+                    want["material %d" % m["index"]] = want_m
+                    read = [x for x in sprout.lpy_materials(moved) if x["index"] == m["index"]][-1]
+                    if any(read[k] != v for k, v in want_m.items()):
+                        failures.append("%s: Sprout reads material %d back as %s" % (f, m["index"], read))
                 # Saved beside the model (its imports and files are its folder's).
                 path = os.path.join(folder, ".sprout-roundtrip-" + f)
                 with open(path, "w", encoding="utf-8", errors="surrogateescape") as fh:
@@ -88,12 +112,15 @@ def main():
                 expected[path] = want
                 originals[path] = os.path.join(folder, f)
         try:
-            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({k: list(v) for k, v in expected.items()}),
+            def asked(want):
+                return dict(curves=[n for n in want if not n.startswith("material ")],
+                            materials=[int(n[9:]) for n in want if n.startswith("material ")])
+            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({k: asked(v) for k, v in expected.items()}),
                                capture_output=True, text=True, timeout=1800, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
             got = json.loads(p.stdout or "{}")
             broken = [path for path, read in got.items() if "error" in read]
             # A model the reference cannot read as it is (Python 2's print...) is none of this test's.
-            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({originals[k]: list(expected[k]) for k in broken}),
+            p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({originals[k]: asked(expected[k]) for k in broken}),
                                capture_output=True, text=True, timeout=1800, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
             unreadable = {path for path in broken if "error" in json.loads(p.stdout or "{}").get(originals[path], {"error": 1})}
         finally:
@@ -110,6 +137,12 @@ def main():
             continue
         for curve, pts in want.items():
             checked += 1
+            if curve.startswith("material "):
+                got_m = read.get(curve, {})
+                if any(abs(a - b) > 1e-6 for k, v in pts.items() for a, b in zip(got_m.get(k, []) if isinstance(v, list) else [got_m.get(k, -1)],
+                                                                          v if isinstance(v, list) else [v])):
+                    failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, got_m, pts))
+                continue
             ref_pts = read.get(curve, [])
             # A Polyline2D's points are pairs; a NURBS's (x, y, w).
             if len(ref_pts) != len(pts) or any(abs(a - b) > 1e-6 * max(1.0, abs(b))
@@ -117,8 +150,9 @@ def main():
                 failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, ref_pts, pts))
     for line in failures:
         print("FAIL " + line)
-    print("%d curves of %d models moved, saved and read back by L-Py with the same numbers; %d failures"
-          % (checked, len(expected), len(failures)))
+    materials = sum(1 for want in expected.values() for n in want if n.startswith("material "))
+    print("%d curves and %d materials of %d models changed, saved and read back by L-Py with the same numbers; %d failures"
+          % (checked - materials, materials, len(expected), len(failures)))
     return 1 if failures or checked == 0 else 0
 
 

@@ -25,7 +25,7 @@ TEST(LpyMaterials, BothFormsAreRead) {
     EXPECT_EQ(m[0].name, "Color_0");
     EXPECT_EQ(m[0].ambient, (std::array<int, 3>{30, 60, 10}));
     EXPECT_EQ(m[0].diffuse, 3);
-    EXPECT_EQ(m[0].specular, (std::array<int, 3>{40, 40, 40})) << "PlantGL's default, not written";
+    EXPECT_EQ(m[0].specular, (std::array<int, 3>{0, 0, 0})) << "PlantGL's default, not written";
     EXPECT_EQ(m[0].line, 5);
     EXPECT_EQ(m[1].diffuse, 2) << "PlantGL's default";
     EXPECT_EQ(m[2].name, "Red");
@@ -34,6 +34,9 @@ TEST(LpyMaterials, BothFormsAreRead) {
     EXPECT_EQ(m[2].shininess, 1);
     EXPECT_EQ(m[3].texture, "leaf.png");
     EXPECT_EQ(lpyDiffuseColour(m[0]), (std::array<int, 3>{90, 180, 30}));
+    LpyMaterial bright = m[0];
+    bright.ambient = {200, 100, 0};
+    EXPECT_EQ(lpyDiffuseColour(bright), (std::array<int, 3>{254, 127, 0})) << "PlantGL keeps ambient x diffuse within 255 (its floor of 200 x 255/200 is 254)";
 }
 
 TEST(LpyMaterials, AFieldIsWrittenInPlaceOrAddedAsStudioWritesIt) {

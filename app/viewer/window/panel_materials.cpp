@@ -75,7 +75,9 @@ void materialSection(App& app) {
     ImGui::PushID("material");
     write(app, m, LpyMaterial::Ambient, v, colourEdit("ambient", v.ambient), gesture);
     float diffuse = float(v.diffuse), shininess = float(v.shininess), transparency = float(v.transparency);
-    bool changed = ImGui::DragFloat("diffuse", &diffuse, 0.02f, 0.0f, 100.0f, "%.3g", ImGuiSliderFlags_AlwaysClamp);
+    // PlantGL keeps ambient x diffuse within 255: the slider goes as far as that.
+    const float most = float(std::min(lpyMostDiffuse(v.ambient), 100.0));
+    bool changed = ImGui::SliderFloat("diffuse", &diffuse, 0.0f, most, "%.3g", ImGuiSliderFlags_AlwaysClamp);
     v.diffuse = double(diffuse);
     write(app, m, LpyMaterial::Diffuse, v, changed, gesture);
     write(app, m, LpyMaterial::Specular, v, colourEdit("specular", v.specular), gesture);
@@ -117,7 +119,7 @@ std::string setMaterialField(App& app, int index, const std::string& field, cons
         case LpyMaterial::Ambient: v.ambient = c; break;
         case LpyMaterial::Specular: v.specular = c; break;
         case LpyMaterial::Emission: v.emission = c; break;
-        case LpyMaterial::Diffuse: v.diffuse = std::max(0.0, values[0]); break;
+        case LpyMaterial::Diffuse: v.diffuse = std::clamp(values[0], 0.0, lpyMostDiffuse(v.ambient)); break;
         case LpyMaterial::Shininess: v.shininess = std::clamp(values[0], 0.0, 1.0); break;
         case LpyMaterial::Transparency: v.transparency = std::clamp(values[0], 0.0, 1.0); break;
     }
