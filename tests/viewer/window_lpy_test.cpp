@@ -269,5 +269,22 @@ TEST(Window, AMaterialSetInThePanelRecoloursThePlantAndUndoRestoresIt) {
     EXPECT_EQ(fileText(back), text);
 }
 
+// The scalar editor: a model that uses a scalar it does not have is an error at its line; the
+// scalar added from the panel makes it grow, renamed it is missing again, one undo brings it back.
+TEST(Window, AScalarAddedInThePanelIsOneTheModelGrowsWith) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("scalar_window");
+    const fs::path model = dir / "stem.lpy", saved = dir / "saved.lpy";
+    std::ofstream(model, std::ios::binary) << "Axiom: _(0.3) F(H)\nderivation length: 1\nproduction:\nendlsystem\n";
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\ndiagnostics\nscalar-add H Float 3 0 5\nwait\nscalars\ndiagnostics\n"
+                                   "scalar-rename H G\nwait\ndiagnostics\nundo\nwait\ndiagnostics\nsaveas " + saved.string() + "\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "diagnostic=1:1: NameError: name 'H' is not defined", "plant=none",
+                                                 "scalar=H kind=1 value=3 min=0 max=5", "plant=shown",
+                                                 "diagnostic=1:1: NameError: name 'H' is not defined", "plant=shown", "plant=shown"}));
+    EXPECT_NE(fileText(saved).find("\tscalars = [('H', 'Float', 3.0, 0.0, 5.0, 2)]\n\tcontext[\"__scalars__\"] = scalars\n"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sprout

@@ -16,6 +16,7 @@
 #include "app/plant/presets.hpp"
 #include "app/viewer/window/app.hpp"
 #include "app/viewer/window/panel_sections.hpp"
+#include "app/plant/lpy_scalars.hpp"
 #include "app/plant/text_edit.hpp"
 #include "core/base/bounded.hpp"
 
@@ -74,6 +75,51 @@ void ifsMaps(App& app) {
 
 }  // namespace
 
+// A scalar's right-click menu: renamed or deleted in the model's list, as L-Py Studio's editor
+// does (one undo step each).
+static void scalarMenu(App& app, const LpyScalar& s) {
+    if (!ImGui::BeginPopupContextItem("scalar")) return;
+    static char name[64];
+    if (ImGui::IsWindowAppearing()) std::snprintf(name, sizeof name, "%s", s.name.c_str());
+    ImGui::InputText("name", name, sizeof name);
+    std::string error, text;
+    if (ImGui::Button("rename")) {
+        text = renameLpyScalar(app.state.text(), s.name, name, error);
+        if (text.empty()) app.say(error);
+        else app.state.setText(text, newGesture()), ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("delete")) {
+        text = removeLpyScalar(app.state.text(), s.name, error);
+        if (text.empty()) app.say(error);
+        else app.state.setText(text, newGesture()), ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+// A new scalar: its name, kind and range, added to the model's list (made when it has none).
+static void newScalar(App& app) {
+    if (!ImGui::TreeNode("new scalar")) return;
+    static char name[64] = "";
+    static int kind = 1;
+    static float range[3] = {0.5f, 0, 1};  // value, min, max
+    ImGui::InputText("name##new", name, sizeof name);
+    ImGui::Combo("kind", &kind, "Integer\0Float\0Bool\0");
+    if (kind != 2) ImGui::InputFloat3("value, min, max", range, "%.3g");
+    if (ImGui::Button("add")) {
+        LpyScalar s;
+        s.name = name;
+        s.kind = kind == 0 ? LpyScalar::Kind::Integer : kind == 1 ? LpyScalar::Kind::Float : LpyScalar::Kind::Bool;
+        s.value = range[0], s.min = std::min(range[1], range[2]), s.max = std::max(range[1], range[2]);
+        std::string error;
+        const std::string text = addLpyScalar(app.state.text(), s, error);
+        if (text.empty()) app.say(error);
+        else app.state.setText(text, newGesture()), name[0] = 0;
+    }
+    ImGui::TextColored(kDim, "right-click a scalar to rename or delete it");
+    ImGui::TreePop();
+}
+
 // An L-Py model's parameters: its derivation length and the scalars of its INITIALISATION
 // part (L-Py's own parameter panel), each written back where the file sets it. The turtle's
 // settings are Python's there, not lines Sprout may add.
@@ -103,8 +149,10 @@ static void lpyParameters(App& app) {
         }
         if (ImGui::IsItemActivated()) gesture = newGesture();
         if (changed) app.state.setText(setLpyScalar(text, s, value), gesture);
+        scalarMenu(app, s);
         ImGui::PopID();
     }
+    newScalar(app);
 }
 
 void parameterSection(App& app) {

@@ -26,6 +26,9 @@
 //                         ambient=r,g,b diffuse=d specular=.. emission=.. shininess=s transparency=t"
 //   material-set <i> <field> <v> [v v]   sets that field of material i as the panel's editor
 //                         does (a colour: three numbers 0..255), one undo step
+//   scalars               prints an L-Py model's scalars: "scalar=NAME kind=K value=V min=A max=B"
+//   scalar-add <name> Integer|Float|Bool <value> [min max] | scalar-rename <name> <new> |
+//   scalar-delete <name>  as the panel's scalar editor does (one undo step each)
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/lpy_scalars.hpp"
 #include "app/viewer/window/app.hpp"
 #include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
@@ -135,6 +136,29 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         for (double v; in >> v;) values.push_back(v);
         const std::string why = detail::setMaterialField(app, index, field, values);
         if (!why.empty()) std::fprintf(stderr, "script: %s\n", why.c_str());
+        return true;
+    }
+    if (cmd == "scalar-add" || cmd == "scalar-rename" || cmd == "scalar-delete") {
+        // scalar-add NAME Integer|Float|Bool VALUE [MIN MAX]; scalar-rename NAME NEW; scalar-delete NAME
+        std::string name, arg, error, text;
+        in >> name >> arg;
+        if (cmd == "scalar-add") {
+            LpyScalar s;
+            s.name = name;
+            s.kind = arg == "Integer" ? LpyScalar::Kind::Integer : arg == "Bool" ? LpyScalar::Kind::Bool : LpyScalar::Kind::Float;
+            in >> s.value >> s.min >> s.max;
+            text = addLpyScalar(app.state.text(), s, error);
+        } else {
+            text = cmd == "scalar-rename" ? renameLpyScalar(app.state.text(), name, arg, error) : removeLpyScalar(app.state.text(), name, error);
+        }
+        if (text.empty()) std::fprintf(stderr, "script: %s\n", error.c_str());
+        else app.state.setText(text, detail::newGesture());
+        return true;
+    }
+    if (cmd == "scalars") {
+        for (const LpyScalar& s : lpyScalars(app.state.text()))
+            std::printf("scalar=%s kind=%d value=%g min=%g max=%g\n", s.name.c_str(), int(s.kind), s.value, s.min, s.max);
+        std::fflush(stdout);
         return true;
     }
     return std::nullopt;
