@@ -124,6 +124,55 @@ std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoin
     return writeContour(*r.file);
 }
 
+std::vector<VlabColourFile> vlabColourFiles(const std::string& lsystemPath) {
+    std::vector<VlabColourFile> out;
+    const std::optional<VlabObject> object = vlabObjectAt(lsystemPath);
+    std::error_code ec;
+    if (!object || object->colourFiles.empty() || !fs::equivalent(object->lsystem, lsystemPath, ec)) return out;
+    const bool materials = object->colourFiles.back().material;  // the kind cpfg reads
+    for (const auto& f : object->colourFiles) {
+        if (f.material != materials) continue;
+        VlabColourFile c;
+        c.path = f.path, c.material = f.material, c.set = f.set;
+        c.label = fs::path(f.path).filename().string() + (f.material ? " (materials, set " : " (colour map, set ") + std::to_string(f.set) + ")";
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+std::optional<std::string> colourMapWith(const std::string& bytes, int k, std::uint32_t rgb, std::string& error) {
+    auto map = vlab::readColourMap(bytes, error);
+    if (!map || k < 0 || k > 255) return error = error.empty() ? "no colour " + std::to_string(k) : error, std::nullopt;
+    map->colours[size_t(k)] = rgb & 0xFFFFFF;
+    return vlab::writeColourMap(*map);
+}
+
+std::optional<std::string> colourMapInterpolated(const std::string& bytes, int from, int to, std::string& error) {
+    auto map = vlab::readColourMap(bytes, error);
+    if (!map) return std::nullopt;
+    if (from > to) std::swap(from, to);
+    if (from < 0 || to > 255) return error = "entries are 0 to 255", std::nullopt;
+    const std::uint32_t a = map->colours[size_t(from)], b = map->colours[size_t(to)];
+    for (int k = from + 1; k < to; ++k) {
+        const float t = float(k - from) / float(to - from);
+        std::uint32_t c = 0;
+        for (int shift : {16, 8, 0}) {
+            const float x = float(a >> shift & 0xFF) / 255.0f, y = float(b >> shift & 0xFF) / 255.0f;
+            c |= std::uint32_t(static_cast<unsigned char>(((1 - t) * x + t * y) * 255.0f)) << shift;  // palette: (GLubyte)(v * 255)
+        }
+        map->colours[size_t(k)] = c;
+    }
+    return vlab::writeColourMap(*map);
+}
+
+std::optional<std::string> materialsWith(const std::string& bytes, int k, const vlab::Material& m, std::string& error) {
+    auto set = vlab::readMaterials(bytes, error);
+    if (!set || k < 0 || k > 255) return error = error.empty() ? "no material " + std::to_string(k) : error, std::nullopt;
+    if (!set->materials[size_t(k)]) ++set->count;
+    set->materials[size_t(k)] = m;
+    return vlab::writeMaterials(*set);
+}
+
 bool FileEdits::write(const std::string& path, const std::string& text, std::uint64_t gesture, std::string& error) {
     const std::string before = readFile(path).value_or("");
     if (before == text) return true;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/plant/curve_edit.hpp"
+#include "core/language/vlab/colours.hpp"
 
 namespace sprout {
 
@@ -35,7 +36,25 @@ std::vector<std::array<double, 2>> vlabCurveSamples(const VlabCurveFile& f, cons
 // when the file cannot be read again or the points would not be a curve cpfg reads.
 std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoints& pts, std::string& error);
 
+// The object's material sets (`-M[n] FILE`, medit's) and colour maps (`-m[n] FILE`,
+// palette's), as its cpfg line names them; cpfg reads the kind named last (vlab_view.cpp).
+struct VlabColourFile {
+    std::string label, path;  // "plant.mat (materials, set 1)"
+    bool material = false;
+    int set = 1;
+};
+std::vector<VlabColourFile> vlabColourFiles(const std::string& lsystemPath);
+// A colour map's bytes with entry k set to `rgb` (0xRRGGBB); with entries from..to the colours
+// between the two ends, as palette's interpolation makes them (a byte of the linear mix,
+// truncated). Nothing, and `error`, for a map that cannot be read.
+std::optional<std::string> colourMapWith(const std::string& bytes, int k, std::uint32_t rgb, std::string& error);
+std::optional<std::string> colourMapInterpolated(const std::string& bytes, int from, int to, std::string& error);
+
 // Writes to files beside a model, undone and redone a whole gesture at a time.
+// A material set's bytes with material k set to `m` (medit's record, every value truncated to a
+// byte as medit writes it). Nothing, and `error`, for a set that cannot be read.
+std::optional<std::string> materialsWith(const std::string& bytes, int k, const vlab::Material& m, std::string& error);
+
 class FileEdits {
 public:
     // Writes `text` to `path` atomically and records it; writes of the same gesture (not 0)

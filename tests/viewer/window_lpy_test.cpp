@@ -255,8 +255,8 @@ TEST(Window, AMaterialSetInThePanelRecoloursThePlantAndUndoRestoresIt) {
                                    "materials\nscreenshot " + b + " 400x300\nsaveas " + moved.string() + "\nundo\nwait\nscreenshot " + c +
                                    " 400x300\nsaveas " + back.string() + "\nquit\n");
     ASSERT_EQ(printed.size(), 3u);
-    EXPECT_EQ(printed[1], "material=1 name=Color_1 ambient=10,60,10 diffuse=3 specular=40,40,40 emission=0,0,0 shininess=1 transparency=0");
-    EXPECT_EQ(printed[2], "material=1 name=Color_1 ambient=80,10,10 diffuse=3 specular=40,40,40 emission=0,0,0 shininess=1 transparency=0");
+    EXPECT_EQ(printed[1], "material=1 name=Color_1 ambient=10,60,10 diffuse=3 specular=0,0,0 emission=0,0,0 shininess=0.2 transparency=0");
+    EXPECT_EQ(printed[2], "material=1 name=Color_1 ambient=80,10,10 diffuse=3 specular=0,0,0 emission=0,0,0 shininess=0.2 transparency=0");
     const Image ia = load(a), ib = load(b), ic = load(c);
     // The stem's middle: green, then red.
     const auto ma = mean(ia, 190, 120, 210, 180), mb = mean(ib, 190, 120, 210, 180);

@@ -62,5 +62,34 @@ TEST(Window, AnObjectsFunctionAndContourDraggedChangeThePlantAndUndoRestoresThei
     EXPECT_EQ(fileBytes(object / "sec.con"), con) << "the contour's file byte for byte";
 }
 
+// The Colours section on a colour map (palette's .map): entry 1, the stem's, set to red in the
+// file; an interpolated range; undo gives back the map byte for byte.
+TEST(Window, AnObjectsColourMapEntrySetRecoloursThePlantAndUndoRestoresTheMap) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("object_colours");
+    const fs::path object = dir / "object";
+    fs::create_directories(object);
+    std::ofstream(object / "specifications") << "plant.l\nplant.v\nplant.map\nmodel:\n\tcpfg -m plant.map plant.l plant.v\n";
+    std::ofstream(object / "plant.l") << "Lsystem: 1\nderivation length: 0\nAxiom: #(0.6) ;(1) F(4)\nendlsystem\n";
+    std::ofstream(object / "plant.v") << "line style: cylinder\n";
+    std::string map(768, char(90));
+    map[3] = 20, map[4] = char(200), map[5] = 20;  // entry 1: green
+    std::ofstream(object / "plant.map", std::ios::binary) << map;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, (object / "plant.l").string() + " --size 1000x700",
+                                   "wait\ncolours\nscreenshot " + a + " 400x300\ncolour-set 0 1 colour 230 20 20\nwait\n"
+                                   "screenshot " + b + " 400x300\ncolour-set 0 10 interpolate 20\nwait\ncolours\n"
+                                   "object-undo\nobject-undo\nwait\nscreenshot " + c + " 400x300\nquit\n");
+    ASSERT_EQ(printed.size(), 2u);
+    EXPECT_EQ(printed[0], "colour-file=plant.map (colour map, set 1) entries=5A5A5A,14C814,5A5A5A,5A5A5A...");
+    EXPECT_EQ(printed[1], "colour-file=plant.map (colour map, set 1) entries=5A5A5A,E61414,5A5A5A,5A5A5A...");
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    const auto ma = mean(ia, 190, 120, 210, 180), mb = mean(ib, 190, 120, 210, 180);
+    EXPECT_GT(ma[1], ma[0] + 40) << "green first";
+    EXPECT_GT(mb[0], mb[1] + 40) << "red once set";
+    EXPECT_LE(differing(ia, ic), 20u);
+    EXPECT_EQ(fileBytes(object / "plant.map"), map) << "two undos: the map byte for byte";
+}
+
 }  // namespace
 }  // namespace sprout

@@ -207,6 +207,8 @@ void drawPanel(App& app) {
         if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen)) materialSection(app);
     if (app.state.vlabObject() && hasVlabCurves(app))
         if (ImGui::CollapsingHeader("Functions and contours", ImGuiTreeNodeFlags_DefaultOpen)) vlabCurveSection(app);
+    if (app.state.vlabObject() && hasVlabColours(app))
+        if (ImGui::CollapsingHeader("Colours", ImGuiTreeNodeFlags_DefaultOpen)) vlabColourSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);
     if (auto plant = app.state.plant(); plant && plant->environment && !plant->environment->empty())
         if (ImGui::CollapsingHeader("Environment", ImGuiTreeNodeFlags_DefaultOpen)) environmentSection(app, *plant->environment);

@@ -89,13 +89,11 @@ const std::vector<VlabCurveFile>& vlabFilesOf(App& app) {
 bool writeVlabCurve(App& app, const VlabCurveFile& f, const CurvePoints& pts, std::uint64_t gesture) {
     std::string error;
     const std::optional<std::string> text = vlabCurveText(f, pts, error);
-    if (!text || !vlab().edits.write(f.path, *text, gesture, error)) {
+    if (!text) {
         app.say(f.label + ": " + error);
         return false;
     }
-    ++vlab().version;
-    app.state.filesChanged();
-    return true;
+    return writeObjectFile(app, f.path, *text, gesture);
 }
 
 EditedCurve edited(App& app, const VlabCurveFile& f) {
@@ -109,6 +107,18 @@ EditedCurve edited(App& app, const VlabCurveFile& f) {
 }
 
 }  // namespace
+
+bool writeObjectFile(App& app, const std::string& path, const std::string& bytes, std::uint64_t gesture) {
+    vlabFilesOf(app);  // another model: its own history first
+    std::string error;
+    if (!vlab().edits.write(path, bytes, gesture, error)) {
+        app.say(path + ": " + error);
+        return false;
+    }
+    ++vlab().version;
+    app.state.filesChanged();
+    return true;
+}
 
 bool hasVlabCurves(App& app) { return !vlabFilesOf(app).empty(); }
 

@@ -37,6 +37,16 @@ void vlabCurveSection(App& app);
 std::vector<std::string> objectCurves(App& app);
 bool moveObjectPoint(App& app, size_t which, size_t k, double x, double y, std::uint64_t gesture = 0);
 bool objectUndo(App& app, bool redo);
+// Writes a file of the object (atomically; one undo step a gesture with the others) and
+// derives the object again.
+bool writeObjectFile(App& app, const std::string& path, const std::string& bytes, std::uint64_t gesture);
+// panel_colours.cpp: a VLab object's material sets and colour maps, each entry edited as medit
+// and palette edit them; colourLines lists them for the script (`colours`), setColourEntry sets
+// one ("" when done, else what stopped it): a map's entry "r g b" (0..255), a material's field.
+bool hasVlabColours(App& app);
+void vlabColourSection(App& app);
+std::vector<std::string> colourLines(App& app);
+std::string setColourEntry(App& app, size_t file, int entry, const std::string& field, const std::vector<double>& values);
 // panel_materials.cpp: an L-Py model's materials, each edited with colour editors and sliders;
 // materialLines lists them as the script's `materials` prints them, setMaterialField sets one
 // field of one ("" when done, else what stopped it).

@@ -29,6 +29,10 @@
 //   scalars               prints an L-Py model's scalars: "scalar=NAME kind=K value=V min=A max=B"
 //   scalar-add <name> Integer|Float|Bool <value> [min max] | scalar-rename <name> <new> |
 //   scalar-delete <name>  as the panel's scalar editor does (one undo step each)
+//   colours               prints a VLab object's colour files and their first entries (RRGGBB)
+//   colour-set <file> <entry> colour|ambient|diffuse|specular|emission <r g b> |
+//              shininess|transparency <v> | interpolate <to>   an entry set as the Colours
+//                         section sets it (0..255 colours), written in the file
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

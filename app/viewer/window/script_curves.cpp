@@ -155,6 +155,23 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         else app.state.setText(text, detail::newGesture());
         return true;
     }
+    if (cmd == "colours") {
+        for (const std::string& l : detail::colourLines(app)) std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "colour-set") {  // FILE ENTRY FIELD V...: a map's "colour r g b" or "interpolate TO"; a material's field
+        size_t file = 0;
+        int entry = 0;
+        std::string field;
+        in >> file >> entry >> field;
+        std::vector<double> values;
+        for (double x; in >> x;) values.push_back(x);
+        const std::string why = detail::setColourEntry(app, file, entry, field, values);
+        if (!why.empty()) std::fprintf(stderr, "script: %s\n", why.c_str());
+        m_waitFor = app.state.generation();
+        return true;
+    }
     if (cmd == "scalars") {
         for (const LpyScalar& s : lpyScalars(app.state.text()))
             std::printf("scalar=%s kind=%d value=%g min=%g max=%g\n", s.name.c_str(), int(s.kind), s.value, s.min, s.max);
