@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "app/plant/lpy_objects.hpp"
 #include "app/plant/vlab_edit.hpp"
@@ -222,8 +223,24 @@ std::string presetCurve(App& app, const std::string& name, const std::string& pr
 
 bool hasLpyCurves(App& app) { return !curvesOf(app.state.text()).empty(); }
 
-void curveSection(App& app) {
+namespace {
+std::string& openLpyCurve() {
     static std::string open;
+    return open;
+}
+}  // namespace
+
+void openCurve(App& app, const std::string& name) {
+    if (name.rfind("object:", 0) == 0) {
+        const size_t i = size_t(std::atoi(name.c_str() + 7));
+        if (i < vlabFilesOf(app).size()) vlab().open = vlabFilesOf(app)[i].label;
+    } else {
+        openLpyCurve() = name;
+    }
+}
+
+void curveSection(App& app) {
+    std::string& open = openLpyCurve();
     // A name several panels set: only the version lastLpyCurve names is listed and edited.
     std::vector<LpyCurve> curves;
     for (const LpyCurve& c : curvesOf(app.state.text()))

@@ -27,6 +27,8 @@ void presetSection(App& app);
 // panel_curves.cpp: an L-Py model's 2D curves, each in an editor whose points the mouse drags;
 // moveCurvePoint is what a drag does (the script's curve-point too): false for no such point.
 bool hasLpyCurves(App& app);
+// Opens that curve in the editor ("object:I": a VLab object's I-th function or contour).
+void openCurve(App& app, const std::string& name);
 void curveSection(App& app);
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture = 0);
 // A VLab object's functions and contours (the files its view file names), in the same editor,

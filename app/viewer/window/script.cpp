@@ -33,6 +33,8 @@
 //   colour-set <file> <entry> colour|ambient|diffuse|specular|emission <r g b> |
 //              shininess|transparency <v> | interpolate <to>   an entry set as the Colours
 //                         section sets it (0..255 colours), written in the file
+//   curve-open <name> | object-open <i>   the curve editor shows that curve (an object's i-th
+//                         function or contour)
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

@@ -155,6 +155,12 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         else app.state.setText(text, detail::newGesture());
         return true;
     }
+    if (cmd == "curve-open" || cmd == "object-open") {  // the editor shows that curve (an object's: by its number)
+        std::string name;
+        in >> name;
+        detail::openCurve(app, cmd == "object-open" ? "object:" + name : name);
+        return true;
+    }
     if (cmd == "colours") {
         for (const std::string& l : detail::colourLines(app)) std::printf("%s\n", l.c_str());
         std::fflush(stdout);
