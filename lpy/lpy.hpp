@@ -94,6 +94,12 @@ void setScenePlantMaker(void* maker);
 // (one span of all its points), 2 the polyline itself; `ctrl` is (x, y, weight) a point.
 // `samples` points from the first knot to the last (the polyline's own points for kind 2).
 std::vector<std::array<double, 2>> curveSamples(int kind, int degree, const std::vector<std::array<double, 3>>& ctrl, int samples);
+// Points of an L-Py model's NurbsPatch as PlantGL evaluates it, for the panel's surface editor:
+// `rows` its [u][v] control points (x, y, z, w) on uniform clamped knots of the degrees;
+// `samples` x `samples` points, [u][v], from the first knots to the last (empty where the
+// points do not make a patch).
+std::vector<std::vector<std::array<double, 3>>> patchSamples(const std::vector<std::vector<std::array<double, 4>>>& rows, int udegree,
+                                                             int vdegree, int samples);
 
 // Installs Sprout's openalea.lpy and openalea.plantgl (L-Py's Python API, lpy/api/session.cpp)
 // into the running interpreter: `sprout.use_as_openalea()`.

@@ -156,12 +156,6 @@ LpyMaterial texture2D(std::string_view t, size_t open) {
     return m;
 }
 
-std::string formatted(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 }  // namespace
 
 std::vector<LpyMaterial> lpyMaterials(std::string_view text) {

@@ -58,12 +58,6 @@ bool listedAsFunction(std::string_view text, std::string_view name) {
     return false;
 }
 
-std::string formatted(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 }  // namespace
 
 std::vector<LpyCurve> lpyCurves(std::string_view text) {

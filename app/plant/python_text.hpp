@@ -4,6 +4,7 @@
 // numbers, and the parenthesis that closes another.
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -55,5 +56,12 @@ inline size_t closing(std::string_view t, size_t open) {
     return std::string_view::npos;
 }
 
+
+// A number as L-Py Studio writes one (six significant digits).
+inline std::string formatted(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
 
 }  // namespace sprout::python_text

@@ -9,6 +9,7 @@
 #include "core/base/atomic_file.hpp"
 #include "core/base/read_file.hpp"
 #include "core/language/vlab/curve_files.hpp"
+#include "core/language/vlab/surface_patches.hpp"
 #include "core/language/vlab/view_file.hpp"
 
 namespace sprout {
@@ -122,6 +123,58 @@ std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoin
     r.file->points.clear();
     for (const auto& p : pts) r.file->points.push_back({p[0], p[1], 0, double(std::max(1L, long(p[2])))});
     return writeContour(*r.file);
+}
+
+std::vector<VlabSurfacePatch> vlabSurfacePatches(const std::string& lsystemPath) {
+    std::vector<VlabSurfacePatch> out;
+    const std::optional<VlabObject> object = vlabObjectAt(lsystemPath);
+    std::error_code ec;
+    if (!object || object->view.empty() || !fs::equivalent(object->lsystem, lsystemPath, ec)) return out;
+    const std::optional<std::string> text = readFile(object->view);
+    if (!text) return out;
+    const fs::path folder = fs::path(object->view).parent_path();
+    for (const vlab::FileReference& f : vlab::readViewFile(*text).files) {
+        if (f.command != "surface" || !f.id) continue;
+        const SurfacePatchesRead r = loadSurfacePatches(folder / f.file);
+        if (!r.surface) continue;
+        for (size_t i = 0; i < r.surface->patches.size(); ++i)
+            out.push_back({f.file + ": " + r.surface->patches[i].name, (folder / f.file).string(), i, r.surface->patches[i].points});
+    }
+    return out;
+}
+
+std::optional<std::string> vlabSurfaceText(const VlabSurfacePatch& p, const std::array<std::array<float, 3>, 16>& points, std::string& error) {
+    for (const auto& q : points)
+        for (float x : q)
+            if (!std::isfinite(x)) return error = "a point that is not a finite number", std::nullopt;
+    SurfacePatchesRead r = loadSurfacePatches(p.path);
+    if (!r.surface || p.patch >= r.surface->patches.size()) return error = p.label + " cannot be read again", std::nullopt;
+    r.surface->patches[p.patch].points = points;
+    return writeSurfacePatches(*r.surface);
+}
+
+std::vector<std::vector<std::array<double, 3>>> bezierPatchSamples(const std::array<std::array<float, 3>, 16>& points, int samples) {
+    auto bernstein = [](double t, int i) {
+        const double s = 1 - t;
+        const double b[4] = {s * s * s, 3 * t * s * s, 3 * t * t * s, t * t * t};
+        return b[i];
+    };
+    std::vector<std::vector<std::array<double, 3>>> out;
+    samples = std::max(2, samples);
+    for (int a = 0; a < samples; ++a) {
+        const double u = double(a) / (samples - 1);
+        std::vector<std::array<double, 3>> line;
+        for (int b = 0; b < samples; ++b) {
+            const double v = double(b) / (samples - 1);
+            std::array<double, 3> p{0, 0, 0};
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j)
+                    for (size_t c = 0; c < 3; ++c) p[c] += bernstein(u, i) * bernstein(v, j) * points[size_t(i * 4 + j)][c];
+            line.push_back(p);
+        }
+        out.push_back(std::move(line));
+    }
+    return out;
 }
 
 std::vector<VlabColourFile> vlabColourFiles(const std::string& lsystemPath) {

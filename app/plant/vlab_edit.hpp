@@ -36,6 +36,19 @@ std::vector<std::array<double, 2>> vlabCurveSamples(const VlabCurveFile& f, cons
 // when the file cannot be read again or the points would not be a curve cpfg reads.
 std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoints& pts, std::string& error);
 
+// The Bezier patches of the object's surfaces (the view file's `surface: ID FILE` lines), one
+// entry a patch, and the file's text with one patch's 16 control points replaced (bezieredit's
+// format: core/language/vlab/surface_patches.hpp).
+struct VlabSurfacePatch {
+    std::string label, path;  // "leaf.s: Patch_1"
+    size_t patch = 0;
+    std::array<std::array<float, 3>, 16> points{};
+};
+std::vector<VlabSurfacePatch> vlabSurfacePatches(const std::string& lsystemPath);
+std::optional<std::string> vlabSurfaceText(const VlabSurfacePatch& p, const std::array<std::array<float, 3>, 16>& points, std::string& error);
+// A bicubic Bezier patch's points, `samples` x `samples`, [u][v] (u down the file's rows).
+std::vector<std::vector<std::array<double, 3>>> bezierPatchSamples(const std::array<std::array<float, 3>, 16>& points, int samples);
+
 // The object's material sets (`-M[n] FILE`, medit's) and colour maps (`-m[n] FILE`,
 // palette's), as its cpfg line names them; cpfg reads the kind named last (vlab_view.cpp).
 struct VlabColourFile {

@@ -286,5 +286,53 @@ TEST(Window, AScalarAddedInThePanelIsOneTheModelGrowsWith) {
     EXPECT_NE(fileText(saved).find("\tscalars = [('H', 'Float', 3.0, 0.0, 5.0, 2)]\n\tcontext[\"__scalars__\"] = scalars\n"), std::string::npos);
 }
 
+// The surface editor: the mouse drags the top corner of a NurbsPatch up in the panel's 3D view;
+// the sheet follows, and one undo gives back the picture and the file.
+TEST(Window, TheMouseDragsAPatchCornerInTheSurfaceEditorAndUndoRestoresIt) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("surface_window");
+    const fs::path model = dir / "sheet.lpy", back = dir / "back.lpy";
+    const std::string text =
+        "Axiom: @g(patch, 1)\n"
+        "derivation length: 0\n"
+        "production:\n"
+        "endlsystem\n"
+        "###### INITIALISATION ######\n"
+        "\n"
+        "__lpy_code_version__ = 1.1\n"
+        "\n"
+        "def __initialiseContext__(context):\n"
+        "\timport openalea.plantgl.all as pgl\n"
+        "\tpatch = pgl.NurbsPatch(\t\n"
+        "\t    pgl.Point4Matrix([[(-1, 0, -1, 1), (-0.333333, 0, -1, 1), (0.333333, 0, -1, 1), (1, 0, -1, 1)], [(-1, 0, -0.333333, 1), (-0.333333, 0, -0.333333, 1), (0.333333, 0, -0.333333, 1), (1, 0, -0.333333, 1)], [(-1, 0, 0.333333, 1), (-0.333333, 0, 0.333333, 1), (0.333333, 0, 0.333333, 1), (1, 0, 0.333333, 1)], [(-1, 0, 1, 1), (-0.333333, 0, 1, 1), (0.333333, 0, 1, 1), (1, 0, 1, 1)]]) , \n"
+        "\t    )\n"
+        "\tpatch.name = \"patch\"\n"
+        "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('NurbsPatch',patch)])\n"
+        "\tparameterset = [panel_0,]\n"
+        "\tcontext[\"__parameterset__\"] = parameterset\n"
+        "\tcontext[\"patch\"] = patch\n"
+        "";
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\nscreenshot " + a + " 300x300\nmouse-drag-surface-point 3 3 0 -100 6\nwait\n"
+                                   "screenshot " + b + " 300x300\nsurfaces\nundo\nwait\nscreenshot " + c + " 300x300\nsaveas " +
+                                   back.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 2u);
+    // Only the corner moved, and up.
+    const std::string moved = printed[1].substr(printed[1].rfind(';') + 1);
+    double x = 0, y = 0, z = 0;
+    ASSERT_EQ(std::sscanf(moved.c_str(), "%lf,%lf,%lf", &x, &y, &z), 3) << printed[1];
+    EXPECT_GT(z, 1.3);
+    EXPECT_EQ(printed[1].substr(0, printed[1].rfind(';')), "surface=patch points=-1,0,-1;-0.333333,0,-1;0.333333,0,-1;1,0,-1;"
+              "-1,0,-0.333333;-0.333333,0,-0.333333;0.333333,0,-0.333333;1,0,-0.333333;-1,0,0.333333;-0.333333,0,0.333333;"
+              "0.333333,0,0.333333;1,0,0.333333;-1,0,1;-0.333333,0,1;0.333333,0,1");
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 300u * 300u / 50) << "the sheet follows its corner";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
+    EXPECT_EQ(fileText(back), text) << "one undo: the file byte for byte";
+}
+
 }  // namespace
 }  // namespace sprout

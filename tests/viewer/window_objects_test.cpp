@@ -91,5 +91,35 @@ TEST(Window, AnObjectsColourMapEntrySetRecoloursThePlantAndUndoRestoresTheMap) {
     EXPECT_EQ(fileBytes(object / "plant.map"), map) << "two undos: the map byte for byte";
 }
 
+// The surface editor on a VLab object's .s file: a control point of its Bezier patch moved,
+// written as bezieredit writes it, the leaf drawn anew; the section's undo gives the file back.
+TEST(Window, AnObjectsSurfacePointMovedChangesTheLeafAndUndoRestoresTheFile) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("object_surface");
+    const fs::path object = dir / "object";
+    fs::create_directories(object);
+    std::ofstream(object / "specifications") << "plant.l\nplant.v\nleaf.s\nmodel:\n\tcpfg plant.l plant.v\n";
+    std::ofstream(object / "plant.l") << "Lsystem: 1\nderivation length: 0\nAxiom: F(1) ~l(3)\nendlsystem\n";
+    std::ofstream(object / "plant.v") << "surface: l leaf.s 1\n";
+    const std::string leaf = "-1 1\t0 2\t0 0\nCONTACT POINT  X: 0 Y: 0 Z: 0\nEND POINT      X: 0 Y: 2 Z: 0\n"
+                             "HEADING        X: 0 Y: 1 Z: 0\nUP             X: 0 Y: 0 Z: 1\nSIZE: 2\nleaf\n"
+                             "TOP COLOR: 0 DIFFUSE: 0.0 BOTTOM COLOR: 0 DIFFUSE: 0.0\nAL: ~ A: ~ AR: ~\nL: ~ R: ~\nBL: ~ B: ~ BR: ~\n"
+                             "0 0 0\t0 0 0\t0 0 0\t0 0 0\t\n-0.5 0.7 0\t-0.2 0.7 0\t0.2 0.7 0\t0.5 0.7 0\t\n"
+                             "-0.5 1.4 0\t-0.2 1.4 0\t0.2 1.4 0\t0.5 1.4 0\t\n0 2 0\t0 2 0\t0 2 0\t0 2 0\t\n";
+    std::ofstream(object / "leaf.s", std::ios::binary) << leaf;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, (object / "plant.l").string() + " --size 1000x700",
+                                   "wait\nsurfaces\nscreenshot " + a + " 400x300\nsurface-point 0 1 0 -1.5 0.7 0\n"
+                                   "surface-point 0 2 0 -1.5 1.4 0\nwait\nscreenshot " + b + " 400x300\nsurfaces\n"
+                                   "object-undo\nobject-undo\nwait\nscreenshot " + c + " 400x300\nquit\n");
+    ASSERT_EQ(printed.size(), 2u);
+    EXPECT_NE(printed[1].find(";-1.5,0.7,0;"), std::string::npos) << printed[1];
+    EXPECT_NE(printed[1].find(";-1.5,1.4,0;"), std::string::npos) << printed[1];
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_GT(differing(ia, ib), 400u * 300u / 200) << "a wider leaf";
+    EXPECT_LE(differing(ia, ic), 20u);
+    EXPECT_EQ(fileBytes(object / "leaf.s"), leaf) << "two undos: bezieredit's file byte for byte";
+}
+
 }  // namespace
 }  // namespace sprout

@@ -247,7 +247,8 @@ private:
     // `mouse-drag-point`: the open curve's point pressed, dragged and let go with the mouse as
     // ImGui sees it. `frames` counts the drag's frames from -1 (none) through its steps.
     struct MouseDrag {
-        std::size_t point = 0;
+        std::size_t point = 0, u = 0, v = 0;
+        bool surface = false;  // `mouse-drag-surface-point`: point (u, v) of the surface editor's
         float dx = 0, dy = 0, x = 0, y = 0;
         int steps = 0, frames = -1;
     } m_mouse;

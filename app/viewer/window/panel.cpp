@@ -207,6 +207,8 @@ void drawPanel(App& app) {
         if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen)) materialSection(app);
     if (app.state.vlabObject() && hasVlabCurves(app))
         if (ImGui::CollapsingHeader("Functions and contours", ImGuiTreeNodeFlags_DefaultOpen)) vlabCurveSection(app);
+    if ((app.state.kind() == FileKind::Lpy || app.state.vlabObject()) && hasSurfaces(app))
+        if (ImGui::CollapsingHeader("Surfaces", ImGuiTreeNodeFlags_DefaultOpen)) surfaceSection(app);
     if (app.state.vlabObject() && hasVlabColours(app))
         if (ImGui::CollapsingHeader("Colours", ImGuiTreeNodeFlags_DefaultOpen)) vlabColourSection(app);
     if (ImGui::CollapsingHeader("Growth", ImGuiTreeNodeFlags_DefaultOpen)) growthSection(app);

@@ -121,6 +121,8 @@ bool writeObjectFile(App& app, const std::string& path, const std::string& bytes
     return true;
 }
 
+std::uint64_t objectFilesVersion() { return vlab().version; }
+
 bool hasVlabCurves(App& app) { return !vlabFilesOf(app).empty(); }
 
 void vlabCurveSection(App& app) {

@@ -3,6 +3,7 @@
 // and colours, which drawPanel (panel.cpp) puts together.
 #include <imgui.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,6 +43,16 @@ bool objectUndo(App& app, bool redo);
 // Writes a file of the object (atomically; one undo step a gesture with the others) and
 // derives the object again.
 bool writeObjectFile(App& app, const std::string& path, const std::string& bytes, std::uint64_t gesture);
+// The version of the object's files the editors wrote (another after each write or undo).
+std::uint64_t objectFilesVersion();
+// panel_surfaces.cpp: an L-Py model's NurbsPatch objects and a VLab object's Bezier patches in
+// the 3D surface editor; surfaceLines lists them ("surface=NAME points=x,y,z;..." [u][v] row by
+// row), setSurfacePoint moves control point (u, v) of the which-th, openSurface opens it.
+bool hasSurfaces(App& app);
+void surfaceSection(App& app);
+std::vector<std::string> surfaceLines(App& app);
+bool setSurfacePoint(App& app, size_t which, size_t u, size_t v, const std::array<double, 3>& p, std::uint64_t gesture = 0);
+void openSurface(size_t which);
 // panel_colours.cpp: a VLab object's material sets and colour maps, each entry edited as medit
 // and palette edit them; colourLines lists them for the script (`colours`), setColourEntry sets
 // one ("" when done, else what stopped it): a map's entry "r g b" (0..255), a material's field.

@@ -35,6 +35,12 @@
 //                         section sets it (0..255 colours), written in the file
 //   curve-open <name> | object-open <i>   the curve editor shows that curve (an object's i-th
 //                         function or contour)
+//   surfaces              prints an L-Py model's NurbsPatch objects and a VLab object's Bezier
+//                         patches: "surface=NAME points=x,y,z;..." (row by row)
+//   surface-open <i> | surface-point <i> <u> <v> <x> <y> <z> [g]   the surface editor shows
+//                         the i-th; its control point (u, v) moved there (the same g: one drag)
+//   mouse-drag-surface-point <u> <v> <dx> <dy> <frames>   as mouse-drag-point, in the surface
+//                         editor
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

@@ -14,6 +14,7 @@
 #include "app/viewer/window/app.hpp"
 #include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
+#include "app/viewer/window/surface_canvas.hpp"
 
 namespace sprout::viewer {
 
@@ -24,7 +25,7 @@ bool Script::mouseStep(App& app) {
     const int f = m_mouse.frames++, steps = m_mouse.steps;
     if (f < 3) return true;
     if (f == 3) {
-        const auto at = detail::curvePointOnScreen(m_mouse.point);
+        const auto at = m_mouse.surface ? detail::surfacePointOnScreen(m_mouse.u, m_mouse.v) : detail::curvePointOnScreen(m_mouse.point);
         if (!at) {
             std::fprintf(stderr, "script: no point %zu in the curve editor\n", m_mouse.point);
             m_mouse.frames = -1;
@@ -58,12 +59,38 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         if (!detail::moveCurvePoint(app, name, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0)) std::fprintf(stderr, "script: no point %zu of a curve %s\n", k, name.c_str());
         return true;
     }
-    if (cmd == "mouse-drag-point") {
+    if (cmd == "mouse-drag-point" || cmd == "mouse-drag-surface-point") {
         m_mouse = MouseDrag{};
-        in >> m_mouse.point >> m_mouse.dx >> m_mouse.dy >> m_mouse.steps;
+        m_mouse.surface = cmd == "mouse-drag-surface-point";
+        if (m_mouse.surface) in >> m_mouse.u >> m_mouse.v;
+        else in >> m_mouse.point;
+        in >> m_mouse.dx >> m_mouse.dy >> m_mouse.steps;
         m_mouse.steps = std::max(1, m_mouse.steps);
         m_mouse.frames = 0;
-        detail::curvePointOnScreen(m_mouse.point);  // scrolls the panel to the editor
+        if (m_mouse.surface) detail::surfacePointOnScreen(m_mouse.u, m_mouse.v);  // scrolls the panel to the editor
+        else detail::curvePointOnScreen(m_mouse.point);
+        return true;
+    }
+    if (cmd == "surfaces") {
+        for (const std::string& l : detail::surfaceLines(app)) std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "surface-open") {
+        size_t i = 0;
+        in >> i;
+        detail::openSurface(i);
+        return true;
+    }
+    if (cmd == "surface-point") {  // I U V X Y Z [G]
+        size_t i = 0, u = 0, v = 0;
+        std::array<double, 3> p{};
+        std::uint64_t g = 0;
+        in >> i >> u >> v >> p[0] >> p[1] >> p[2];
+        if (!(in >> g)) g = 0;
+        if (!detail::setSurfacePoint(app, i, u, v, p, g ? (std::uint64_t(1) << 62) + g : 0))
+            std::fprintf(stderr, "script: no point %zu,%zu of surface %zu\n", u, v, i);
+        m_waitFor = app.state.generation();
         return true;
     }
     if (cmd == "object-curves") {
