@@ -255,7 +255,8 @@ private:
     bool mouseStep(App& app);
     // A line's command run (script.cpp, by kind); nullopt: not one of that kind.
     std::optional<bool> documentCommand(App& app, const std::string& cmd, std::istringstream& in);
-    std::optional<bool> curveCommand(App& app, const std::string& cmd, std::istringstream& in);  // script_curves.cpp
+    std::optional<bool> curveCommand(App& app, const std::string& cmd, std::istringstream& in);   // script_curves.cpp
+    std::optional<bool> objectCommand(App& app, const std::string& cmd, std::istringstream& in);  // script_curves.cpp
     std::optional<bool> reportCommand(App& app, const std::string& cmd, std::istringstream& in);
     std::optional<bool> pickCommand(App& app, const std::string& cmd, std::istringstream& in);
     bool viewCommand(App& app, const std::string& cmd, std::istringstream& in);

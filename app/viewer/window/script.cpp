@@ -165,6 +165,7 @@ bool Script::step(App& app) {
         } after{*this, app};
         if (auto done = documentCommand(app, cmd, in)) return *done;
         if (auto done = curveCommand(app, cmd, in)) return *done;
+        if (auto done = objectCommand(app, cmd, in)) return *done;
         if (auto done = reportCommand(app, cmd, in)) return *done;
         if (auto done = pickCommand(app, cmd, in)) return *done;
         return viewCommand(app, cmd, in);

@@ -93,27 +93,6 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         m_waitFor = app.state.generation();
         return true;
     }
-    if (cmd == "object-curves") {
-        for (const std::string& l : detail::objectCurves(app)) std::printf("%s\n", l.c_str());
-        std::fflush(stdout);
-        return true;
-    }
-    if (cmd == "object-point") {
-        size_t i = 0, k = 0;
-        double x = 0, y = 0;
-        std::uint64_t g = 0;
-        in >> i >> k >> x >> y;
-        if (!(in >> g)) g = 0;
-        if (!detail::moveObjectPoint(app, i, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0))
-            std::fprintf(stderr, "script: no point %zu of object curve %zu\n", k, i);
-        m_waitFor = app.state.generation();
-        return true;
-    }
-    if (cmd == "object-undo" || cmd == "object-redo") {
-        if (!detail::objectUndo(app, cmd == "object-redo")) std::fprintf(stderr, "script: nothing to %s\n", cmd.c_str() + 7);
-        m_waitFor = app.state.generation();
-        return true;
-    }
     if (cmd == "curve-edit" || cmd == "curve-preset") {
         std::string name, op;
         double a = 0, b = 0;
@@ -148,6 +127,33 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
             std::printf("\n");
         }
         std::fflush(stdout);
+        return true;
+    }
+    return std::nullopt;
+}
+
+// A model's other objects: a VLab object's functions, contours and colour files, surfaces,
+// an L-Py model's materials and scalars.
+std::optional<bool> Script::objectCommand(App& app, const std::string& cmd, std::istringstream& in) {
+    if (cmd == "object-curves") {
+        for (const std::string& l : detail::objectCurves(app)) std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "object-point") {
+        size_t i = 0, k = 0;
+        double x = 0, y = 0;
+        std::uint64_t g = 0;
+        in >> i >> k >> x >> y;
+        if (!(in >> g)) g = 0;
+        if (!detail::moveObjectPoint(app, i, k, x, y, g ? (std::uint64_t(1) << 62) + g : 0))
+            std::fprintf(stderr, "script: no point %zu of object curve %zu\n", k, i);
+        m_waitFor = app.state.generation();
+        return true;
+    }
+    if (cmd == "object-undo" || cmd == "object-redo") {
+        if (!detail::objectUndo(app, cmd == "object-redo")) std::fprintf(stderr, "script: nothing to %s\n", cmd.c_str() + 7);
+        m_waitFor = app.state.generation();
         return true;
     }
     if (cmd == "materials") {
