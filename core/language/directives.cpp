@@ -205,6 +205,9 @@ const std::vector<Directive>& directives() {
         {"axiom", [](Parser& p, const SourceLine& l, std::string_view v) { p.setAxiom(l, v); }},
         {"ignore", [](Parser& p, const SourceLine& l, std::string_view v) { p.setIgnore(l, v); }},
         {"environment", environment, 1},
+        // before the rules, whose expressions name them (func, @#)
+        {"function", [](Parser& p, const SourceLine& l, std::string_view v) { p.addFunction(l, v); }, 1},
+        {"contour", [](Parser& p, const SourceLine& l, std::string_view v) { p.addContour(l, v); }, 1},
     };
     return k;
 }

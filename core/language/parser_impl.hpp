@@ -144,6 +144,10 @@ public:
     // A parameter written as a quoted name ('ctr', "leaf"): the name, without its quotes.
     static std::optional<std::string_view> quotedName(std::string_view arg);
     void setIgnore(const SourceLine& line, std::string_view text);
+    // `function: NAME x,y ...` and `contour: ID [open|closed] x,y ...` (lsys_curves.cpp).
+    void addFunction(const SourceLine& line, std::string_view text);
+    void addContour(const SourceLine& line, std::string_view text);
+    CurveTables& ownCurves();  // made on the first, and given to the grammar and its expressions
     void setConsider(const SourceLine& line, std::string_view text);
     void setMaximumDepth(const SourceLine& line, std::string_view text);
     void setSurface(const SourceLine& line, std::string_view text);  // cpfg `surface: s file.s`
@@ -238,6 +242,7 @@ private:
 
     bool m_cpfg = false;
     ParseOptions m_options;
+    std::shared_ptr<CurveTables> m_ownCurves;  // a .lsys file's own functions and contours
     std::deque<std::string> m_store;  // texts the cpfg lines view into (joined, included, expanded)
     std::unordered_map<std::string, ExprMacro> m_macros;          // function-like #define
     CpfgReader m_cpfgReader{*this, m_options, m_store, m_macros};  // the cpfg family's logical lines

@@ -121,5 +121,32 @@ TEST(Window, AnObjectsSurfacePointMovedChangesTheLeafAndUndoRestoresTheFile) {
     EXPECT_EQ(fileBytes(object / "leaf.s"), leaf) << "two undos: bezieredit's file byte for byte";
 }
 
+// Sprout's own grammar's function, in the same editor: its middle point dragged down shortens
+// the tube's middle segments; one undo gives back the picture and the text.
+TEST(Window, AnLsysFunctionDraggedChangesThePlantAndUndoRestoresTheText) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    const fs::path dir = testDir("lsys_function");
+    const fs::path model = dir / "tube.lsys", moved = dir / "moved.lsys", back = dir / "back.lsys";
+    const std::string text = "n: 6\nangle: 20\nfunction: len 0,0.2 0.5,1 1,0.2\ncontour: 1 closed 1,0.3 1,-0.3 -1,-0.3 -1,0.3\n"
+                             "axiom: #(1.5) @#(1) @Gs A(0) @Ge\nA(t) : t < 6 -> F(0.3 + 2*func(len, t/6)) +(12) A(t+1)\n";
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "wait\ncurves\nscreenshot " + a + " 400x300\ncurve-point len 1 0.5 0.1 1\ncurve-point len 1 0.7 0.1 1\n"
+                                   "wait\nscreenshot " + b + " 400x300\ncurves\nsaveas " + moved.string() + "\nundo\nwait\nscreenshot " + c +
+                                   " 400x300\nsaveas " + back.string() + "\nquit\n");
+    EXPECT_EQ(printed, (std::vector<std::string>{"curve=len kind=function points=0,0.2;0.5,1;1,0.2",
+                                                 "curve=1 kind=contour points=1,0.3;1,-0.3;-1,-0.3;-1,0.3",
+                                                 "curve=len kind=function points=0,0.2;0.7,0.1;1,0.2",
+                                                 "curve=1 kind=contour points=1,0.3;1,-0.3;-1,-0.3;-1,0.3"}));
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_GT(differing(ia, ib), 400u * 300u / 100) << "a shorter tube";
+    EXPECT_LE(differing(ia, ic), 20u);
+    std::string expected = text;
+    expected.replace(expected.find("0.5,1"), 5, "0.7,0.1");
+    EXPECT_EQ(fileBytes(moved), expected) << "only the line's points change";
+    EXPECT_EQ(fileBytes(back), text);
+}
+
 }  // namespace
 }  // namespace sprout

@@ -203,6 +203,8 @@ void drawPanel(App& app) {
     if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) parameterSection(app);
     if (app.state.kind() == FileKind::Lpy && hasLpyCurves(app))
         if (ImGui::CollapsingHeader("Curves", ImGuiTreeNodeFlags_DefaultOpen)) curveSection(app);
+    if (app.state.kind() == FileKind::Lsys && hasLsysCurves(app))
+        if (ImGui::CollapsingHeader("Functions and contours", ImGuiTreeNodeFlags_DefaultOpen)) lsysCurveSection(app);
     if (app.state.kind() == FileKind::Lpy && hasLpyMaterials(app))
         if (ImGui::CollapsingHeader("Materials", ImGuiTreeNodeFlags_DefaultOpen)) materialSection(app);
     if (app.state.vlabObject() && hasVlabCurves(app))

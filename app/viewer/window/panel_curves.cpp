@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/lsys_curves.hpp"
 #include "app/plant/vlab_edit.hpp"
 #include "app/viewer/window/curve_canvas.hpp"
 #include "app/viewer/window/panel_sections.hpp"
@@ -107,7 +108,67 @@ EditedCurve edited(App& app, const VlabCurveFile& f) {
     return e;
 }
 
+// A .lsys grammar's functions and contours (app/plant/lsys_curves.hpp), drawn as the parser
+// makes them (a function's ends repeated three times, cpfg's B-spline; a contour resampled).
+const LsysCurve* lsysCurveNamed(const std::vector<LsysCurve>& all, const std::string& name) {
+    for (const LsysCurve& c : all)
+        if (c.name == name) return &c;
+    return nullptr;
+}
+
+CurveRules rulesOf(const LsysCurve& c) {
+    CurveRules r;
+    r.function = c.function, r.closed = !c.function && c.closed;
+    r.fewest = c.function ? 2 : c.closed ? 3 : 4;
+    r.newWeight = 1;
+    return r;
+}
+
+bool writeLsysCurve(App& app, const std::string& name, const CurvePoints& pts, std::uint64_t gesture) {
+    const auto all = lsysCurves(app.state.text());
+    const LsysCurve* c = lsysCurveNamed(all, name);
+    if (!c) return false;
+    app.state.setText(setLsysCurvePoints(app.state.text(), *c, pts), gesture);
+    return true;
+}
+
+EditedCurve edited(App& app, const LsysCurve& c) {
+    EditedCurve e;
+    e.key = "lsys:" + c.name + (c.function ? "f" : "c");
+    e.points = c.points;
+    e.rules = rulesOf(c);
+    VlabCurveFile f;
+    f.kind = c.function ? VlabCurveFile::Kind::Function : VlabCurveFile::Kind::Contour;
+    f.rules = e.rules, f.samples = 64;
+    e.samples = [f](const CurvePoints& pts) {
+        CurvePoints m = pts;
+        if (f.kind == VlabCurveFile::Kind::Function && !m.empty()) m.front()[2] = m.back()[2] = 3;  // as the parser repeats the ends
+        return vlabCurveSamples(f, m);
+    };
+    e.write = [&app, name = c.name](const CurvePoints& pts, std::uint64_t g) { return writeLsysCurve(app, name, pts, g); };
+    return e;
+}
+
 }  // namespace
+
+bool hasLsysCurves(App& app) { return !lsysCurves(app.state.text()).empty(); }
+
+void lsysCurveSection(App& app) {
+    static std::string open;
+    const auto all = lsysCurves(app.state.text());
+    if (!lsysCurveNamed(all, open)) open = all.front().name;
+    for (const LsysCurve& c : all) {
+        char label[160];
+        std::snprintf(label, sizeof label, "%s  (%s, %zu points)", c.name.c_str(),
+                      c.function ? "function" : c.closed ? "closed contour" : "open contour", c.points.size());
+        if (ImGui::Selectable(label, open == c.name)) open = c.name;
+    }
+    if (const LsysCurve* c = lsysCurveNamed(all, open)) {
+        ImGui::PushID(c->name.c_str());
+        curveCanvas(app, edited(app, *c));
+        ImGui::PopID();
+    }
+}
 
 bool writeObjectFile(App& app, const std::string& path, const std::string& bytes, std::uint64_t gesture) {
     vlabFilesOf(app);  // another model: its own history first
@@ -187,7 +248,12 @@ std::uint64_t newGesture() {
 
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture) {
     const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
-    if (!c || k >= c->points.size()) return false;
+    if (!c) {  // a .lsys grammar's function or contour
+        const auto all = lsysCurves(app.state.text());
+        const LsysCurve* l = lsysCurveNamed(all, name);
+        return l && k < l->points.size() && writeLsysCurve(app, name, movedPoint(l->points, rulesOf(*l), k, x, y), gesture);
+    }
+    if (k >= c->points.size()) return false;
     return writeCurve(app, name, movedPoint(c->points, rulesOf(*c), k, x, y), gesture);
 }
 

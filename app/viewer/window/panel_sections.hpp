@@ -28,6 +28,9 @@ void presetSection(App& app);
 // panel_curves.cpp: an L-Py model's 2D curves, each in an editor whose points the mouse drags;
 // moveCurvePoint is what a drag does (the script's curve-point too): false for no such point.
 bool hasLpyCurves(App& app);
+// A .lsys grammar's own functions and contours (`function:`, `contour:`), in the same editor.
+bool hasLsysCurves(App& app);
+void lsysCurveSection(App& app);
 // Opens that curve in the editor ("object:I": a VLab object's I-th function or contour).
 void openCurve(App& app, const std::string& name);
 void curveSection(App& app);

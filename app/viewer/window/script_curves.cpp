@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/lsys_curves.hpp"
 #include "app/plant/lpy_scalars.hpp"
 #include "app/viewer/window/app.hpp"
 #include "app/viewer/window/curve_canvas.hpp"
@@ -124,6 +125,11 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         for (const LpyCurve& c : lpyCurves(app.state.text())) {
             std::printf("curve=%s kind=%d points=", c.name.c_str(), int(c.kind));
             for (size_t i = 0; i < c.points.size(); ++i) std::printf("%s%.9g,%.9g,%.9g", i ? ";" : "", c.points[i][0], c.points[i][1], c.points[i][2]);
+            std::printf("\n");
+        }
+        for (const LsysCurve& c : lsysCurves(app.state.text())) {
+            std::printf("curve=%s kind=%s points=", c.name.c_str(), c.function ? "function" : "contour");
+            for (size_t i = 0; i < c.points.size(); ++i) std::printf("%s%.9g,%.9g", i ? ";" : "", c.points[i][0], c.points[i][1]);
             std::printf("\n");
         }
         std::fflush(stdout);
