@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The curve editor's drag on L-Py's lsystem9.lpy (issue 52), in the window on software GL (Xvfb
 # and Mesa's llvmpipe) at 1440x860: a point of its `branchpath` dragged over 30 frames, a step a
-# frame, the model derived again on the worker as it moves (each step cancels the one before).
+# frame, the model derived again on the worker as it moves (a step waits for the one running).
 # Printed, from the script's curve-drag-stats: the longest frame while dragging (the panel, the
-# view, the swap: the window stays responsive while the worker derives) and the time from the
-# drag's last step to the refined plant drawn whole; then the same for a drag of the 10-point
+# view, the swap: the window stays responsive while the worker derives), the time from the
+# drag's last step to the refined plant drawn whole, where that time went (the worker's
+# derivation, the still picture, when the last result came) and how many plants were drawn
+# while the point moved; then the same for a drag of the 6-point
 # curve of a small model of this bench's own, as the baseline measured in the same run, and the
 # ratios. Bars (issue 52): frames within the moving-frame budget (17 ms), refined <= 150 ms.
 #

@@ -57,7 +57,7 @@ ViewerState::ViewerState(fs::path autosaveDir, fs::path trustFile)
 
 ViewerState::~ViewerState() = default;
 
-void ViewerState::post() {
+void ViewerState::post(std::uint64_t gesture) {
     Request r;
     r.text = m_text;
     r.kind = m_kind;
@@ -70,6 +70,7 @@ void ViewerState::post() {
     r.python = m_trust == TrustAnswer::Trusted;
     r.generation = ++m_generation;
     r.filesVersion = m_filesVersion;
+    r.gesture = gesture;
     m_worker.post(std::move(r));
 }
 
@@ -117,7 +118,7 @@ void ViewerState::setText(std::string text, std::uint64_t gesture) {
     m_text = std::move(text);
     m_textGesture = gesture;
     m_dirty = true;
-    post();
+    post(gesture);
 }
 
 void ViewerState::setDirectiveValue(const std::string& key, double value) {

@@ -118,7 +118,7 @@ public:
     void markCleanExit();
 
 private:
-    void post();
+    void post(std::uint64_t gesture = 0);  // gesture: the drag the edit is a step of
     void lookUpTrust();  // the text came from outside
 
 

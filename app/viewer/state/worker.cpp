@@ -24,10 +24,13 @@ Worker::~Worker() {
 }
 
 void Worker::post(Request request) {
+    constexpr auto kDragKeep = std::chrono::milliseconds(250);  // a slower model's steps cancel, as any other edit
     std::lock_guard lock(m_mutex);
     m_latestPosted = request.generation;
+    const bool sameDrag = request.gesture != 0 && m_busy && request.gesture == m_runningGesture &&
+                          std::chrono::steady_clock::now() - m_runningSince < kDragKeep;
     m_pending = std::move(request);
-    m_cancel = true;  // whatever runs now is stale
+    if (!sameDrag) m_cancel = true;  // whatever runs now is stale (a drag's step runs to its end: the plant follows)
     m_wake.notify_all();
 }
 
@@ -59,6 +62,8 @@ void Worker::run() {
             m_pending.reset();
             m_cancel = false;
             m_busy = true;
+            m_runningGesture = r.gesture;
+            m_runningSince = std::chrono::steady_clock::now();
         }
         std::shared_ptr<Result> result = process(r);
         {

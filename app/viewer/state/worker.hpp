@@ -3,6 +3,7 @@
 // window never waits. Every request carries a generation; a newer request cancels the work
 // in progress, and results come back as immutable shared values.
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <functional>
 #include <cstdint>
@@ -42,6 +43,10 @@ struct Request {
     // Counts the changes to the files beside the text that its parse reads (a VLab object's
     // functions and contours, edited in the panel): another count parses it again.
     std::uint64_t filesVersion = 0;
+    // The drag this request is a step of (ViewerState::setText's gesture; 0: none). A step of
+    // the drag whose step runs now does not cancel it (when it began less than kDragKeepMs
+    // ago): it waits, so that the plant follows a point dragged faster than it derives.
+    std::uint64_t gesture = 0;
 };
 
 // What a click needs to say which module drew a stem and which rule made it.
@@ -116,6 +121,8 @@ private:
     std::optional<Request> m_pending;
     std::shared_ptr<const Result> m_result;
     std::atomic<bool> m_cancel{false}, m_busy{false}, m_quit{false};
+    std::uint64_t m_runningGesture = 0;                   // under m_mutex
+    std::chrono::steady_clock::time_point m_runningSince;  // under m_mutex
     std::atomic<float> m_progress{0};
     std::atomic<int> m_progressStep{0};
     std::uint64_t m_latestPosted = 0;

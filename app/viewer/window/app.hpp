@@ -243,6 +243,9 @@ private:
         int frames = 0;
         std::uint64_t gesture = 0;
         double lastFrame = 0, worstMs = 0, endedAt = 0;
+        double resultAt = 0;  // when the drag's last result came from the worker
+        int shown = 0;        // plants drawn while the point moved (the picture follows the drag)
+        std::uint64_t lastGeneration = 0;
     } m_curve;
     // `mouse-drag-point`: the open curve's point pressed, dragged and let go with the mouse as
     // ImGui sees it. `frames` counts the drag's frames from -1 (none) through its steps.

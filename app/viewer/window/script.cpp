@@ -49,8 +49,10 @@
 //   curve-drag <name> <k> <dx> <dy> <frames>   point k dragged by (dx, dy) over that many frames,
 //                         a step a frame, one gesture, no result waited for between steps
 //   curve-drag-stats      once the drag's last result is on screen: prints
-//                         "curve_drag_worst_frame_ms=W refined_ms=R": its longest frame, and the
-//                         time from its last step to the plant it gives, drawn whole
+//                         "curve_drag_worst_frame_ms=W refined_ms=R ...": its longest frame, the
+//                         time from its last step to the plant it gives, drawn whole, then the
+//                         last result's parse, derive and interpret ms, the still picture's ms,
+//                         when the result came (result_after_ms) and plants_during_drag
 //   undo | redo           as Ctrl+Z / Ctrl+Shift+Z in the grammar editor
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
@@ -129,6 +131,10 @@ bool Script::step(App& app) {
     if (m_curve.frames > 0) {  // a curve's point dragged: a step a frame, no result waited for
         const double now = glfwGetTime();
         if (m_curve.lastFrame > 0) m_curve.worstMs = std::max(m_curve.worstMs, (now - m_curve.lastFrame) * 1000);
+        if (const auto p = app.state.plant(); p && p->generation != m_curve.lastGeneration) {  // a new plant on screen
+            if (m_curve.lastFrame > 0) ++m_curve.shown;
+            m_curve.lastGeneration = p->generation;
+        }
         m_curve.lastFrame = now;
         detail::nudgeCurvePoint(app, m_curve.name, m_curve.point, m_curve.dx, m_curve.dy, m_curve.gesture);
         if (--m_curve.frames == 0) m_curve.endedAt = now;
@@ -149,6 +155,8 @@ bool Script::step(App& app) {
         in >> cmd;
         // Every action waits until the result of the script's last edit is on screen (an
         // animation may post newer requests meanwhile; those are not waited for).
+        if (m_curve.endedAt > 0 && m_curve.resultAt == 0 && app.state.latest() && app.state.latest()->generation >= m_waitFor)
+            m_curve.resultAt = glfwGetTime();  // the drag's last result, from the worker
         if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
         if (!app.viewSettled()) return true;  // and until the view shows it whole, with its environment

@@ -109,11 +109,16 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         m_curve.dx /= m_curve.frames;
         m_curve.dy /= m_curve.frames;
         m_curve.gesture = detail::newGesture();
-        m_curve.lastFrame = m_curve.worstMs = 0;
+        m_curve.lastFrame = m_curve.worstMs = m_curve.resultAt = 0;
+        m_curve.shown = 0;
         return true;
     }
     if (cmd == "curve-drag-stats") {  // run once the drag's last result is on screen
-        std::printf("curve_drag_worst_frame_ms=%.1f refined_ms=%.1f\n", m_curve.worstMs, (glfwGetTime() - m_curve.endedAt) * 1000);
+        const auto shown = app.state.plant();  // and where the last result's time went, on the worker
+        std::printf("curve_drag_worst_frame_ms=%.1f refined_ms=%.1f parse_ms=%.1f derive_ms=%.1f interpret_ms=%.1f picture_ms=%.1f "
+                    "result_after_ms=%.1f plants_during_drag=%d\n",
+                    m_curve.worstMs, (glfwGetTime() - m_curve.endedAt) * 1000, shown ? shown->parseMs : 0.0, shown ? shown->deriveMs : 0.0,
+                    shown ? shown->interpretMs : 0.0, app.renderer.lastPictureMs(), (m_curve.resultAt - m_curve.endedAt) * 1000, m_curve.shown);
         std::fflush(stdout);
         return true;
     }

@@ -210,7 +210,13 @@ void updateBeforeFrame(App& app, double now, double dt, double& lastDiskCheck) {
             for (const auto& x : scenePresetNames()) n.push_back(x);
             return n;
         }();
-        app.thumbnails.poll(all, !app.interacting && !app.refining && !app.state.playing() && !app.view.turntable);
+        // Thumbnails wait while the model is being edited (a curve or a slider dragged: a new
+        // derivation every frame) and for half a second after, so that they take no frame of it.
+        static std::uint64_t lastGeneration = 0;
+        static double lastEdit = 0;
+        if (app.state.generation() != lastGeneration) lastGeneration = app.state.generation(), lastEdit = now;
+        const bool editing = app.state.worker().busy() || now - lastEdit < 0.5;
+        app.thumbnails.poll(all, !app.interacting && !app.refining && !app.state.playing() && !app.view.turntable && !editing);
     }
     if (!g_dropped.empty()) {
         std::string path = g_dropped.front();
