@@ -128,7 +128,7 @@ private:
 // One plant: a grammar (any kind Sprout opens) and its derivation, step by step.
 class Plant {
 public:
-    std::string name, text, dialect;
+    std::string name, text, dialect, path;  // path: the file's, for its includes and imports ("" for text)
     FileKind kind = FileKind::Lsys;
     std::shared_ptr<const Grammar> grammar;
     // An L-Py model: each step's drawing, made when geometry(), render() or export() first asks
@@ -261,6 +261,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
         p.lpyString = std::move(m.derived);  // empty: written by the drawer when asked for
         p.warnings = m.diagnostics;
         p.text = std::move(text);
+        p.path = path;
         return p;
     }
     OpenedText r = openText(text, kind, path);
@@ -269,6 +270,7 @@ Plant parsed(std::string text, FileKind kind, const std::string& path, const std
     p.dialect = r.grammar->dialect;
     p.warnings = r.diagnostics;
     p.text = std::move(text);
+    p.path = path;
     return p;
 }
 
@@ -349,6 +351,14 @@ void definePlant(py::module_& m) {
     py::class_<Plant>(m, "Plant", "A grammar of any kind Sprout opens, ready to derive, draw, render and export")
         .def_readonly("name", &Plant::name)
         .def_readonly("text", &Plant::text)
+        .def(
+            "_set_text",
+            [](Plant& p, const std::string& text) {
+                Plant again = parsed(text, p.kind, p.path, p.name, true, -1);  // raises, the plant unchanged, on errors
+                again.dialect = p.dialect;
+                p = std::move(again);
+            },
+            py::arg("text"), "The plant made again from new text (plant.parameters writes through it)")
         .def_readonly("dialect", &Plant::dialect, "What the text was read as: .lsys, ABOP notation, cpfg, L-Py, Lparser, Fractint")
         .def_property_readonly("n", &Plant::iterations, "The derivation length the grammar sets")
         .def_property_readonly(

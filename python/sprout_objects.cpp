@@ -7,11 +7,119 @@
 
 #include "app/plant/lpy_materials.hpp"
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/lpy_patches.hpp"
+#include "app/plant/lsys_curves.hpp"
+#include "app/plant/text_edit.hpp"
+#include "lpy/lpy.hpp"
 
 namespace py = pybind11;
 using namespace sprout;
 
+namespace {
+
+// An L-Py model's scalars and patches, a .lsys grammar's functions and contours.
+void bindMoreObjects(py::module_& m) {
+    m.def(
+        "lpy_scalars",
+        [](const std::string& text) {
+            py::list out;
+            for (const LpyScalar& sc : lpyScalars(text)) {
+                py::dict d;
+                d["name"] = sc.name;
+                d["kind"] = sc.kind == LpyScalar::Kind::Bool ? "Bool" : sc.kind == LpyScalar::Kind::Integer ? "Integer" : "Float";
+                d["value"] = sc.value;
+                d["min"] = sc.min;
+                d["max"] = sc.max;
+                out.append(d);
+            }
+            return out;
+        },
+        py::arg("text"), "The scalars of an L-Py model's INITIALISATION part: name, kind, value, min, max");
+    m.def(
+        "set_lpy_scalar",
+        [](const std::string& text, const std::string& name, double value) {
+            if (!std::isfinite(value)) throw py::value_error("a scalar's value is a finite number");
+            for (const LpyScalar& sc : lpyScalars(text))
+                if (sc.name == name) return setLpyScalar(text, sc, value);
+            throw py::key_error("no scalar " + name + " in the model's INITIALISATION part");
+        },
+        py::arg("text"), py::arg("name"), py::arg("value"), "The model's text with that scalar's value written in place");
+    m.def(
+        "lpy_patches",
+        [](const std::string& text) {
+            py::list out;
+            for (const LpyPatch& p : lpyPatches(text)) {
+                py::dict d;
+                d["name"] = p.name;
+                d["points"] = p.rows;
+                d["udegree"] = p.udegree;
+                d["vdegree"] = p.vdegree;
+                out.append(d);
+            }
+            return out;
+        },
+        py::arg("text"), "The NurbsPatch objects of an L-Py model: name, points (rows along u of (x, y, z, w) along v), udegree, vdegree");
+    m.def(
+        "set_lpy_patch",
+        [](const std::string& text, const std::string& name, const std::vector<std::vector<std::array<double, 4>>>& rows) {
+            for (const auto& row : rows)
+                for (const auto& q : row)
+                    for (double x : q)
+                        if (!std::isfinite(x)) throw py::value_error("a patch's points are finite numbers");
+            const std::vector<LpyPatch> all = lpyPatches(text);
+            for (auto it = all.rbegin(); it != all.rend(); ++it)
+                if (it->name == name) {
+                    if (rows.size() != it->rows.size() || rows.empty() || rows.front().size() != it->rows.front().size())
+                        throw py::value_error("a patch keeps its " + std::to_string(it->rows.size()) + " x " +
+                                              std::to_string(it->rows.front().size()) + " points");
+                    return setLpyPatchPoints(text, *it, rows);
+                }
+            throw py::key_error("no patch " + name + " in the model's INITIALISATION part");
+        },
+        py::arg("text"), py::arg("name"), py::arg("points"), "The model's text with that patch's control points written in place");
+    m.def(
+        "lsys_curves",
+        [](const std::string& text) {
+            py::list out;
+            for (const LsysCurve& c : lsysCurves(text)) {
+                py::dict d;
+                d["name"] = c.name;
+                d["kind"] = c.function ? "function" : "contour";
+                d["closed"] = c.closed;
+                d["line"] = c.line;
+                std::vector<std::array<double, 2>> pts;
+                for (const auto& p : c.points) pts.push_back({p[0], p[1]});
+                d["points"] = pts;
+                out.append(d);
+            }
+            return out;
+        },
+        py::arg("text"), "The function: and contour: lines of a .lsys grammar: name, kind, closed, line, points (x, y)");
+    m.def(
+        "set_lsys_curve",
+        [](const std::string& text, const std::string& name, const std::vector<std::array<double, 2>>& points) {
+            if (points.size() < 2) throw py::value_error("a curve has two points at least");
+            std::vector<std::array<double, 3>> pts;
+            for (const auto& p : points) {
+                if (!std::isfinite(p[0]) || !std::isfinite(p[1])) throw py::value_error("a curve's points are finite numbers");
+                pts.push_back({p[0], p[1], 1});
+            }
+            for (const LsysCurve& c : lsysCurves(text))
+                if (c.name == name) return setLsysCurvePoints(text, c, pts);
+            throw py::key_error("no function or contour " + name + " in the grammar");
+        },
+        py::arg("text"), py::arg("name"), py::arg("points"), "The grammar's text with that function's or contour's points written in place");
+}
+
+}  // namespace
+
 void bindModelObjects(py::module_& m) {
+    m.def(
+        "_lpy_curve_samples",
+        [](const std::string& kind, int degree, const std::vector<std::array<double, 3>>& points, int samples) {
+            return lpy::curveSamples(kind == "Bezier" ? 1 : kind == "Polyline" ? 2 : 0, degree, points, samples);
+        },
+        "Points along an L-Py curve as PlantGL evaluates it (the picture of sprout.editor)");
     // An L-Py model's 2D curves as the viewer's curve editor reads and writes them (issue 52).
     m.def(
         "lpy_curves",
@@ -102,4 +210,5 @@ void bindModelObjects(py::module_& m) {
         },
         py::arg("text"), py::arg("index"), py::arg("field"), py::arg("value"),
         "The model's text with that field of material `index` set (a colour: three numbers 0..255), as L-Py Studio writes it");
+    bindMoreObjects(m);
 }

@@ -13,8 +13,9 @@ import builtins as _builtins
 import os as _os
 import tempfile as _tempfile
 
-from ._sprout import (LString, Plant, __version__, lpy_curves, lpy_materials, open, parse, presets,  # noqa: F401
-                      set_lpy_curve, set_lpy_material)
+from ._sprout import (LString, Plant, __version__, lpy_curves, lpy_materials, lpy_patches, lpy_scalars,  # noqa: F401
+                      lsys_curves, open, parse, presets, set_lpy_curve, set_lpy_material, set_lpy_patch, set_lpy_scalar,
+                      set_lsys_curve)
 
 
 class GrammarError(ValueError):
@@ -52,6 +53,10 @@ def _steps(self, n=None, seed=None):
 Plant._repr_png_ = _repr_png_
 Plant.steps = _steps
 Plant.png = _png_bytes
+
+from .parameters import Parameters as _Parameters, editor  # noqa: E402,F401  (after _png_bytes, which it uses)
+
+Plant.parameters = property(lambda self: _Parameters(self), doc="The model's objects by name, as the viewer's editors edit them")
 
 
 def use_as_openalea():
