@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """The viewer's curve and material editors against the real L-Py (issue 52): every model of L-Py's
-share/ (../shared/corpus/lpy) whose INITIALISATION part stores 2D curves or materials, each
-curve's point 1 moved as a drag in the editor moves it (sprout.set_lpy_curve: the text rewritten
-in place, as L-Py Studio writes it) and each material's ambient colour, diffuse, specular and
-transparency set as the material editor sets them (sprout.set_lpy_material), saved, then read
-back by Sprout (sprout.lpy_curves and lpy_materials give the new numbers) and by the reference
-L-Py (Lsystem(file): the curve object in the model's context has those control points, to L-Py
-Studio's six digits; its turtle's material those values).
+share/ (../shared/corpus/lpy) whose INITIALISATION part stores 2D curves, materials, patches
+or scalars: each curve's point 1 moved as a drag in the editor moves it (sprout.set_lpy_curve:
+the text rewritten in place, as L-Py Studio writes it), each material's ambient colour, diffuse,
+specular and transparency set as the material editor sets them (sprout.set_lpy_material), each
+NurbsPatch's point (1, 1) moved (sprout.set_lpy_patch), each Float scalar set to its middle and
+each Integer written again (sprout.set_lpy_scalar); saved, then read back by Sprout and by the
+reference L-Py (Lsystem(file): the curve and patch objects in the model's context have those
+control points, to L-Py Studio's six digits; its turtle's materials and its scalar list those
+values).
 
     lpy_curves_roundtrip.py REF_PYTHON --build BUILD
 
@@ -42,6 +44,13 @@ for path, asked in json.loads(sys.stdin.read()).items():
             for n, obj in (ctx[key] if key in ctx else []):
                 kept[n] = obj
         out[path] = {n: [list(p) for p in (kept[n] if n in kept else ctx[n]).ctrlPointList] for n in names}
+        for n in asked.get('patches', []):
+            m = ctx[n].ctrlPointMatrix
+            out[path]['patch ' + n] = [[list(m[i, j]) for j in range(m.getColumnNb())] for i in range(m.getRowNb())]
+        for n in asked.get('scalars', []):  # as the model's scalar list has it (its code may assign the name again)
+            for sc in ctx['__scalars__']:
+                if sc[0] == n:
+                    out[path]['scalar ' + n] = sc[2] if isinstance(sc[1], str) else sc[1]
         for i in materials:
             m = ctx.turtle.getMaterial(int(i))
             out[path]['material %s' % i] = dict(ambient=[m.ambient.red, m.ambient.green, m.ambient.blue], diffuse=m.diffuse,
@@ -75,7 +84,9 @@ def main():
                     text = fh.read()
                 curves = sprout.lpy_curves(text)
                 materials = [m for m in sprout.lpy_materials(text) if "texture" not in m]
-                if not curves and not materials:
+                patches = sprout.lpy_patches(text)
+                scalars = [x for x in sprout.lpy_scalars(text) if x["kind"] != "Bool"]
+                if not curves and not materials and not patches and not scalars:
                     continue
                 moved = text
                 want = {}
@@ -105,6 +116,18 @@ def main():
                     read = [x for x in sprout.lpy_materials(moved) if x["index"] == m["index"]][-1]
                     if any(read[k] != v for k, v in want_m.items()):
                         failures.append("%s: Sprout reads material %d back as %s" % (f, m["index"], read))
+                for pa in {q["name"]: q for q in patches}.values():  # a patch's point (1, 1) moved, as the surface editor moves it
+                    rows = [[list(q) for q in row] for row in pa["points"]]
+                    rows[1][1][0] += 0.05
+                    rows[1][1][1] -= 0.03
+                    rows[1][1][2] += 0.02
+                    moved = sprout.set_lpy_patch(moved, pa["name"], rows)
+                    want["patch " + pa["name"]] = rows
+                for sc in scalars:  # a Float's slider moved to its middle; an Integer written again as it is
+                    # (another whole number may take the model where L-Py itself fails: lsystem10's METHOD)
+                    v = sc["value"] if sc["kind"] == "Integer" else float("%g" % round((sc["min"] + sc["max"]) / 2, 3))
+                    moved = sprout.set_lpy_scalar(moved, sc["name"], v)
+                    want["scalar " + sc["name"]] = v
                 # Saved beside the model (its imports and files are its folder's).
                 path = os.path.join(folder, ".sprout-roundtrip-" + f)
                 with open(path, "w", encoding="utf-8", errors="surrogateescape") as fh:
@@ -113,8 +136,10 @@ def main():
                 originals[path] = os.path.join(folder, f)
         try:
             def asked(want):
-                return dict(curves=[n for n in want if not n.startswith("material ")],
-                            materials=[int(n[9:]) for n in want if n.startswith("material ")])
+                return dict(curves=[n for n in want if not n.startswith(("material ", "patch ", "scalar "))],
+                            materials=[int(n[9:]) for n in want if n.startswith("material ")],
+                            patches=[n[6:] for n in want if n.startswith("patch ")],
+                            scalars=[n[7:] for n in want if n.startswith("scalar ")])
             p = subprocess.run([ref, "-c", READ_BACK], input=json.dumps({k: asked(v) for k, v in expected.items()}),
                                capture_output=True, text=True, timeout=1800, env=dict(os.environ, QT_QPA_PLATFORM="offscreen"))
             got = json.loads(p.stdout or "{}")
@@ -137,6 +162,17 @@ def main():
             continue
         for curve, pts in want.items():
             checked += 1
+            if curve.startswith("patch "):
+                got_p = read.get(curve, [])
+                flat_got = [a for row in got_p for q in row for a in q]
+                flat_want = [a for row in pts for q in row for a in q]
+                if len(flat_got) != len(flat_want) or any(abs(a - b) > 1e-6 * max(1.0, abs(b)) for a, b in zip(flat_got, flat_want)):
+                    failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, got_p, pts))
+                continue
+            if curve.startswith("scalar "):
+                if abs(read.get(curve, float("nan")) - pts) > 1e-9:
+                    failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, read.get(curve), pts))
+                continue
             if curve.startswith("material "):
                 got_m = read.get(curve, {})
                 if any(abs(a - b) > 1e-6 for k, v in pts.items() for a, b in zip(got_m.get(k, []) if isinstance(v, list) else [got_m.get(k, -1)],
@@ -150,9 +186,11 @@ def main():
                 failures.append("%s: %s is %s in L-Py, %s wanted" % (name, curve, ref_pts, pts))
     for line in failures:
         print("FAIL " + line)
-    materials = sum(1 for want in expected.values() for n in want if n.startswith("material "))
-    print("%d curves and %d materials of %d models changed, saved and read back by L-Py with the same numbers; %d failures"
-          % (checked - materials, materials, len(expected), len(failures)))
+    def count(prefix):
+        return sum(1 for path, want in expected.items() if path not in unreadable for n in want if n.startswith(prefix))
+    materials, patches, scalars = count("material "), count("patch "), count("scalar ")
+    print("%d curves, %d materials, %d patches and %d scalars of %d models changed, saved and read back by L-Py with the same "
+          "numbers; %d failures" % (checked - materials - patches - scalars, materials, patches, scalars, len(expected), len(failures)))
     return 1 if failures or checked == 0 else 0
 
 
