@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/image.hpp"
 #include "tests/viewer/window_support.hpp"
 
 namespace sprout {
@@ -332,6 +333,27 @@ TEST(Window, TheMouseDragsAPatchCornerInTheSurfaceEditorAndUndoRestoresIt) {
     EXPECT_GT(pixelsThatDiffer(ia, ib), 300u * 300u / 50) << "the sheet follows its corner";
     EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
     EXPECT_EQ(fileText(back), text) << "one undo: the file byte for byte";
+}
+
+// An image under the curve editor's curve to trace: a PNG loads (its size said), a missing one
+// is a message that names it.
+TEST(Window, AnImageToTraceLoadsUnderTheCurve) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("trace_window");
+    const fs::path model = dir / "guided.lpy", photo = dir / "leaf.png";
+    std::ofstream(model, std::ios::binary) << kGuidedModel;
+    Image leaf;
+    leaf.width = 30, leaf.height = 20;
+    leaf.rgba.assign(30 * 20 * 4, 200);
+    std::string error;
+    ASSERT_TRUE(writePng(photo.string(), leaf, error)) << error;
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\ncurve-trace " + photo.string() + "\ncurve-trace " + (dir / "none.png").string() +
+                                   "\nquit\n");
+    ASSERT_EQ(printed.size(), 3u);
+    EXPECT_EQ(printed[1], "trace=30x20");
+    EXPECT_EQ(printed[2].rfind("trace_error=" + (dir / "none.png").string() + ": cannot open", 0), 0u) << printed[2];
 }
 
 }  // namespace

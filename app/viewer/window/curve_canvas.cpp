@@ -2,10 +2,13 @@
 // draw list; every change goes through app/plant/curve_edit and the curve's own writer.
 #include "app/viewer/window/curve_canvas.hpp"
 
+#include "app/render/gl.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "app/image.hpp"
 #include "app/viewer/window/panel_sections.hpp"
 
 namespace sprout::viewer::detail {
@@ -28,6 +31,22 @@ struct CanvasState {
 CanvasState& state() {
     static CanvasState s;
     return s;
+}
+
+// An image under the curve to trace (a leaf's photo), over a rectangle of the curve's plane.
+struct Trace {
+    std::string path;
+    unsigned texture = 0;
+    int width = 0, height = 0;
+    double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
+    float opacity = 0.6f;
+    bool place = false;  // fit to the view on the next frame
+    char input[512] = "";
+};
+
+Trace& trace() {
+    static Trace t;
+    return t;
 }
 
 void fit(CanvasState& v, const EditedCurve& c, ImVec2 size) {
@@ -57,6 +76,16 @@ void draw(const CanvasState& v, const EditedCurve& c, ImVec2 origin, ImVec2 size
     ImDrawList* dl = ImGui::GetWindowDrawList();
     dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
     dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(28, 30, 34, 255));
+    if (Trace& t = trace(); t.texture) {
+        if (t.place) {  // the image fitted in the view's middle, its aspect kept
+            const double w = size.x / v.scale * 0.8, h = w * t.height / std::max(t.width, 1);
+            const double k = std::min(1.0, size.y / v.scale * 0.8 / h);
+            t.x0 = v.cx - w * k / 2, t.x1 = v.cx + w * k / 2, t.y0 = v.cy - h * k / 2, t.y1 = v.cy + h * k / 2;
+            t.place = false;
+        }
+        dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(t.texture)), screen(t.x0, t.y1), screen(t.x1, t.y0), ImVec2(0, 0),
+                     ImVec2(1, 1), IM_COL32(255, 255, 255, int(t.opacity * 255)));
+    }
     const double step = gridStep(v.scale), halfW = size.x / 2 / v.scale, halfH = size.y / 2 / v.scale;
     for (double x = std::floor((v.cx - halfW) / step) * step; x <= v.cx + halfW; x += step)
         dl->AddLine(screen(x, v.cy - halfH), screen(x, v.cy + halfH), std::fabs(x) < step / 2 ? IM_COL32(110, 110, 120, 255) : IM_COL32(50, 52, 58, 255));
@@ -116,11 +145,47 @@ void tools(CanvasState& v, const EditedCurve& c) {
             c.write(*pts, newGesture());
             v.fitted = false, v.selected = -1;
         }
+    // An image to trace under the curve: a PNG (a leaf's photo), fitted to the view.
+    Trace& t = trace();
+    ImGui::SetNextItemWidth(std::max(80.0f, ImGui::GetContentRegionAvail().x - 140));
+    ImGui::InputTextWithHint("##trace", "an image to trace (a PNG's path)", t.input, sizeof t.input);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("trace"))
+        if (std::string why = loadTraceImage(t.input); !why.empty()) ImGui::OpenPopup("trace error"), t.path = why;
+    if (t.texture) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("clear")) glDeleteTextures(1, &t.texture), t.texture = 0;
+        ImGui::SetNextItemWidth(120);
+        ImGui::SliderFloat("image opacity", &t.opacity, 0.05f, 1.0f, "%.2f");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("fit image")) t.place = true;
+    }
+    if (ImGui::BeginPopup("trace error")) {
+        ImGui::TextColored(kError, "%s", t.path.c_str());
+        ImGui::EndPopup();
+    }
 }
 
 }  // namespace
 
 void refitCurveCanvas() { state().fitted = false; }
+
+std::string loadTraceImage(const std::string& path) {
+    Trace& t = trace();
+    Image img;
+    std::string error;
+    if (!readPng(path, img, error)) return path + ": " + error;
+    if (!t.texture) glGenTextures(1, &t.texture);
+    glBindTexture(GL_TEXTURE_2D, t.texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+    t.path = path, t.width = img.width, t.height = img.height, t.place = true;
+    return "";
+}
+
+std::array<int, 2> traceImageSize() { return {trace().width, trace().height}; }
 
 std::optional<std::array<float, 2>> curvePointOnScreen(std::size_t k) {
     CanvasState& v = state();

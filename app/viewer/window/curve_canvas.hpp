@@ -34,6 +34,10 @@ void curveCanvas(App& app, const EditedCurve& curve);
 // Where point k of the curve open in the canvas was drawn last frame, in window pixels; the
 // panel scrolls to the canvas on the next frame (the script's mouse drag). Null: none.
 std::optional<std::array<float, 2>> curvePointOnScreen(std::size_t k);
+// An image under the curve to trace (a PNG), fitted to the view: "" when loaded, else why not;
+// its size once loaded.
+std::string loadTraceImage(const std::string& path);
+std::array<int, 2> traceImageSize();
 // Makes the canvas fit its curve again on the next frame (another curve opened).
 void refitCurveCanvas();
 

@@ -18,6 +18,8 @@
 //   curve-edit <name> add|delete <k> | weight <k> <w>   a point added after point k, point k
 //                         taken away, point k's weight set, as the editor's tools do (one undo
 //                         step each); what refuses it is printed
+//   curve-trace <png>     an image under the curve editor's curve, to trace: prints
+//                         "trace=WxH" or "trace_error=why"
 //   curve-preset <name> line|arc|circle|s   the curve set to that preset
 //   mouse-drag-point <k> <dx> <dy> <frames>   the mouse, as ImGui sees it, presses point k of
 //                         the curve open in the panel's editor, drags it (dx, dy) pixels over

@@ -94,6 +94,15 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         m_waitFor = app.state.generation();
         return true;
     }
+    if (cmd == "curve-trace") {  // an image under the curve editor's curve
+        std::string path;
+        std::getline(in >> std::ws, path);
+        const std::string why = detail::loadTraceImage(path);
+        if (why.empty()) std::printf("trace=%dx%d\n", detail::traceImageSize()[0], detail::traceImageSize()[1]);
+        else std::printf("trace_error=%s\n", why.c_str());
+        std::fflush(stdout);
+        return true;
+    }
     if (cmd == "curve-edit" || cmd == "curve-preset") {
         std::string name, op;
         double a = 0, b = 0;
