@@ -47,6 +47,28 @@ std::optional<std::vector<std::array<double, 3>>> points(std::string_view t, siz
     return out;
 }
 
+// The name of the first panel after `from` that lists `name` (Studio writes each panel after
+// its objects: `panel_0 = ({'name': 'Panel 1', ...},[('Curve2D',NAME), ...])`), or "".
+std::string panelListing(std::string_view text, std::string_view name, size_t from) {
+    for (size_t at = text.find("panel_", from); at != std::string_view::npos; at = text.find("panel_", at + 6)) {
+        size_t k = at + 6;
+        while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+        if (!eat(text, k, "=") || !eat(text, k, "(")) continue;
+        const size_t close = closing(text, k - 1);
+        if (close == std::string_view::npos) continue;
+        const std::string_view panel = text.substr(k, close - k);
+        bool listed = false;
+        for (size_t q = panel.find(name); q != std::string_view::npos && !listed; q = panel.find(name, q + 1))
+            listed = q > 0 && panel[q - 1] == ',' && (q + name.size() >= panel.size() || !isIdent(panel[q + name.size()]));
+        if (!listed) continue;
+        const size_t key = panel.find("'name'");
+        if (key == std::string_view::npos) return "";
+        const size_t open = panel.find('\'', key + 6), end = open == std::string_view::npos ? open : panel.find('\'', open + 1);
+        return end == std::string_view::npos ? "" : std::string(panel.substr(open + 1, end - open - 1));
+    }
+    return "";
+}
+
 // Whether the model's panel lists `name` as a function: `('Function', NAME)`.
 bool listedAsFunction(std::string_view text, std::string_view name) {
     for (size_t at = 0; (at = text.find("'Function'", at)) != std::string_view::npos; at += 10) {
@@ -121,6 +143,7 @@ std::vector<LpyCurve> lpyCurves(std::string_view text) {
             if (kind == LpyCurve::Kind::Nurbs) c.degree = std::max(1, std::min(c.degree, int(c.points.size()) - 1));
             if (kind == LpyCurve::Kind::Bezier) c.degree = int(c.points.size()) - 1;
             c.function = listedAsFunction(text, c.name);
+            c.panel = panelListing(text, c.name, close);
             out.push_back(std::move(c));
         }
     }

@@ -22,6 +22,7 @@ struct LpyCurve {
     std::string name;
     Kind kind = Kind::Nurbs;
     bool function = false;
+    std::string panel;  // the name of the panel that lists it (L-Py Studio's `panel_N`), "" if none
     std::vector<std::array<double, 3>> points;  // x, y, weight (1 for a polyline's)
     int degree = 3;                             // as written (a NURBS's is clamped to the points)
     int line = 0;                               // 1-based, of the name

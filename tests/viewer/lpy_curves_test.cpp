@@ -62,6 +62,10 @@ TEST(LpyCurves, EveryFormIsReadWithItsPlaceInTheText) {
     EXPECT_EQ(curves[3].points[1], (std::array<double, 3>{0.5, 0.25, 1}));
     EXPECT_EQ(curves[4].name, "steep");
     EXPECT_EQ(curves[4].degree, 2);
+    // The panel that lists each (the panel's list groups them in the viewer).
+    EXPECT_EQ(curves[0].panel, "Panel 1");
+    EXPECT_EQ(curves[3].panel, "Panel 1");
+    EXPECT_EQ(curves[4].panel, "") << "steep is in no panel";
     // Nothing before the INITIALISATION part's function is read.
     EXPECT_TRUE(lpyCurves("c = NurbsCurve2D([(0, 0, 1),(1, 1, 1)])\nAxiom: A\n").empty());
 }

@@ -170,6 +170,26 @@ void tools(CanvasState& v, const EditedCurve& c) {
 
 void refitCurveCanvas() { state().fitted = false; }
 
+bool curveRow(const char* label, bool selected, const std::vector<std::array<double, 2>>& samples) {
+    const ImVec2 thumb(56, 32), at = ImGui::GetCursorScreenPos();
+    ImGui::PushID(label);
+    const bool clicked = ImGui::Selectable("##row", selected, 0, ImVec2(0, thumb.y));
+    ImGui::PopID();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    dl->AddRectFilled(at, ImVec2(at.x + thumb.x, at.y + thumb.y), IM_COL32(28, 30, 34, 255));
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const auto& p : samples)
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[size_t(k)]), hi[k] = std::max(hi[k], p[size_t(k)]);
+    const double scale = std::min((thumb.x - 6) / std::max(hi[0] - lo[0], 1e-9), (thumb.y - 6) / std::max(hi[1] - lo[1], 1e-9));
+    std::vector<ImVec2> line;
+    for (const auto& p : samples)
+        line.push_back(ImVec2(at.x + thumb.x / 2 + float((p[0] - (lo[0] + hi[0]) / 2) * scale),
+                              at.y + thumb.y / 2 - float((p[1] - (lo[1] + hi[1]) / 2) * scale)));
+    if (line.size() >= 2) dl->AddPolyline(line.data(), int(line.size()), IM_COL32(120, 220, 120, 255), ImDrawFlags_None, 1.5f);
+    dl->AddText(ImVec2(at.x + thumb.x + 8, at.y + (thumb.y - ImGui::GetTextLineHeight()) / 2), ImGui::GetColorU32(ImGuiCol_Text), label);
+    return clicked;
+}
+
 std::string loadTraceImage(const std::string& path) {
     Trace& t = trace();
     Image img;

@@ -29,6 +29,10 @@ struct EditedCurve {
     std::function<bool(const CurvePoints&, std::uint64_t gesture)> write;
 };
 
+// A row of a list of curves: a thumbnail of the curve (its samples, fitted) and its label;
+// true when clicked.
+bool curveRow(const char* label, bool selected, const std::vector<std::array<double, 2>>& samples);
+
 // The canvas and its tools for `curve`.
 void curveCanvas(App& app, const EditedCurve& curve);
 // Where point k of the curve open in the canvas was drawn last frame, in window pixels; the

@@ -161,7 +161,7 @@ void lsysCurveSection(App& app) {
         char label[160];
         std::snprintf(label, sizeof label, "%s  (%s, %zu points)", c.name.c_str(),
                       c.function ? "function" : c.closed ? "closed contour" : "open contour", c.points.size());
-        if (ImGui::Selectable(label, open == c.name)) open = c.name;
+        if (curveRow(label, open == c.name, edited(app, c).samples(c.points))) open = c.name;
     }
     if (const LsysCurve* c = lsysCurveNamed(all, open)) {
         ImGui::PushID(c->name.c_str());
@@ -195,7 +195,7 @@ void vlabCurveSection(App& app) {
         char label[200];
         std::snprintf(label, sizeof label, "%s  (%s, %zu points)", f.label.c_str(),
                       f.kind == VlabCurveFile::Kind::Function ? "function" : f.rules.closed ? "closed contour" : "open contour", f.points.size());
-        if (ImGui::Selectable(label, v.open == f.label)) v.open = f.label;
+        if (curveRow(label, v.open == f.label, vlabCurveSamples(f, f.points))) v.open = f.label;
         if (v.open == f.label) shown = &f;
     }
     if (ImGui::SmallButton("undo##files")) objectUndo(app, false);
@@ -316,11 +316,16 @@ void curveSection(App& app) {
     if (!curves.empty() && std::none_of(curves.begin(), curves.end(), [&](const LpyCurve& c) { return c.name == open; }))
         open = curves.front().name;  // the first curve open at first (and when the one open is gone)
     const LpyCurve* shown = nullptr;
-    for (const LpyCurve& c : curves) {
+    std::string panel = "\x01";
+    for (const LpyCurve& c : curves) {  // grouped by the model's panels, as L-Py Studio shows them
+        if (c.panel != panel) {
+            panel = c.panel;
+            ImGui::TextColored(kDim, "%s", panel.empty() ? "(in no panel)" : panel.c_str());
+        }
         char label[160];
         std::snprintf(label, sizeof label, "%s  (%s%s, %zu points)", c.name.c_str(), kindName(c), c.function ? " function" : "",
                       c.points.size());
-        if (ImGui::Selectable(label, open == c.name)) open = c.name;
+        if (curveRow(label, open == c.name, lpy::curveSamples(int(c.kind), c.degree, c.points, 40))) open = c.name;
         if (open == c.name) shown = &c;
     }
     if (!shown) return;
