@@ -23,12 +23,16 @@
 #include "core/language/vlab/colours.hpp"
 #include "core/language/vlab/view_file.hpp"
 #include "core/language/vlab/curve_files.hpp"
+#include "core/language/vlab/surface_patches.hpp"
 #include "core/base/rng.hpp"
 #include "core/turtle/background_scene.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
 #if defined(SPROUT_FUZZ_LPY)
+#include "app/plant/lpy_materials.hpp"
 #include "app/plant/lpy_objects.hpp"
+#include "app/plant/lpy_patches.hpp"
+#include "app/plant/lpy_scalars.hpp"
 #endif
 
 namespace {
@@ -246,6 +250,33 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!vlab::readMaterials(input, error) && error.empty()) fail("a refused material set says nothing");
     if (!vlab::readColourMap(input, error) && error.empty()) fail("a refused colour map says nothing");
     fuzzBackgroundScene(input);
+    // Each file read is written in its editor's format and read back (issue 52's writers).
+    if (f.ok() && f.file) {
+        const FunctionRead again = readFunction(writeFunction(*f.file), "fuzz.func", 100);
+        if (!again.ok() || !again.file || again.file->points.size() != f.file->points.size()) fail("a written function does not read back");
+    }
+    if (c.ok() && c.file) {
+        const ContourRead again = readContour(writeContour(*c.file), "fuzz.con");
+        if (!again.contour || !again.file || again.file->points.size() != c.file->points.size()) fail("a written contour does not read back");
+    }
+    if (crv.ok()) {
+        const CurveRead again = readCurve(writeCurve(crv.curve), "fuzz.crv", 20);
+        if (!again.ok() || again.curve.filePoints().size() != crv.curve.filePoints().size()) fail("a written curve does not read back");
+    }
+    const SurfacePatchesRead sp = readSurfacePatches(input, "fuzz.s");
+    if (sp.ok()) {
+        const std::string written = writeSurfacePatches(*sp.surface);
+        const SurfacePatchesRead again = readSurfacePatches(written, "fuzz.s");
+        if (!again.ok() || again.surface->patches.size() != sp.surface->patches.size()) fail("a written surface does not read back");
+        if (writeSurfacePatches(*again.surface) != written) fail("a surface written twice differs");
+    }
+    if (auto m = vlab::readMaterials(input, error)) {
+        const std::string written = vlab::writeMaterials(*m);
+        auto again = vlab::readMaterials(written, error);
+        if (!again || vlab::writeMaterials(*again) != written) fail("a material set written twice differs");
+    }
+    if (auto m = vlab::readColourMap(input, error))
+        if (vlab::writeColourMap(*m) != std::string(input.substr(0, 768))) fail("a colour map does not write back its bytes");
 #elif defined(SPROUT_FUZZ_PNG)
     ImportResult r = importPng(input);
     if (r.ok()) (void)parse(r.text);
@@ -284,6 +315,35 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string moved = setLpyCurvePoints(asText, c, pts);
         if (moved.compare(0, c.begin, asText, 0, c.begin) != 0) fail("moving a curve point changed the text before its list");
         if (lpyCurves(moved).size() != curves.size()) fail("moving a curve point changed which curves are read");
+    }
+    // Its materials, patches and scalars as the panel's editors read and write them.
+    const std::vector<LpyMaterial> materials = lpyMaterials(asText);
+    for (const LpyMaterial& m : materials) {
+        if (!m.texture.empty()) continue;
+        LpyMaterial v = m;
+        v.diffuse = 1.5, v.ambient = {1, 2, 3};
+        std::string moved = setLpyMaterial(asText, m, LpyMaterial::Diffuse, v);
+        if (lpyMaterials(moved).size() != materials.size()) fail("setting a material's diffuse changed which materials are read");
+        moved = setLpyMaterial(asText, m, LpyMaterial::Ambient, v);
+        if (lpyMaterials(moved).size() != materials.size()) fail("setting a material's ambient changed which materials are read");
+    }
+    const std::vector<LpyPatch> patches = lpyPatches(asText);
+    for (const LpyPatch& p : patches) {
+        auto rows = p.rows;
+        rows[0][0][0] += 0.5;
+        if (lpyPatches(setLpyPatchPoints(asText, p, rows)).size() != patches.size()) fail("moving a patch point changed which patches are read");
+    }
+    // (their list is read two ways, lpyScalars' and the editor's; only that neither breaks)
+    for (const LpyScalar& sc : lpyScalars(asText)) {
+        std::string error;
+        (void)lpyScalars(removeLpyScalar(asText, sc.name, error));
+        (void)lpyScalars(renameLpyScalar(asText, sc.name, "fuzz_renamed", error));
+    }
+    {
+        LpyScalar added;
+        added.name = "fuzz_added";
+        std::string error;
+        (void)lpyScalars(addLpyScalar(asText, added, error));
     }
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"
