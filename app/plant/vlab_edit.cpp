@@ -56,7 +56,11 @@ std::vector<VlabCurveFile> vlabCurveFiles(const std::string& lsystemPath) {
         const fs::path path = folder / f.file;
         if (f.command == "function") {
             const FunctionRead r = loadFunction(path, -1);
-            if (r.ok() && r.file) out.push_back(functionEntry(*r.file, path.string(), f.file, -1));
+            if (!r.ok() || !r.file) continue;
+            out.push_back(functionEntry(*r.file, path.string(), f.file, -1));
+            // The first format has no `samples:`: cpfg takes the view file's count (none: the
+            // curve itself), which the file written in funcedit's format must keep.
+            if (r.file->original) out.back().samples = f.numbers.empty() ? 0 : int(f.numbers[0]);
         } else if (f.command == "function set") {
             const FunctionSetRead r = loadFunctionSet(path);
             if (r.ok())
@@ -110,6 +114,7 @@ std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoin
         FunctionRead r = loadFunction(f.path, -1);
         if (!r.ok() || !r.file) return error = f.label + " cannot be read again", std::nullopt;
         fill(r.file->points);
+        if (r.file->original) r.file->samples = f.samples;  // the view file's count, as cpfg used it
         return writeFunction(*r.file);
     }
     if (f.kind == VlabCurveFile::Kind::Function) {

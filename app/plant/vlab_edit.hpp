@@ -23,7 +23,8 @@ struct VlabCurveFile {
     int item = -1;      // the function's place in its set; -1: a file of its own
     CurvePoints points;  // x, y, multiplicity
     CurveRules rules;
-    int samples = 0;     // a function's `samples:`; a contour: the view file's `contour sides:`
+    int samples = 0;     // a function's `samples:` (the first format: the view file's count, 0 for none);
+                         // a contour: the view file's `contour sides:`
 };
 
 // The functions and contours of the object whose L-system is `lsystemPath`, in its view

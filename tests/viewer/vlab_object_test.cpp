@@ -7,6 +7,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "app/plant/vlab_edit.hpp"
 #include "app/viewer/state/viewer_state.hpp"
 
 namespace sprout::viewer {
@@ -124,6 +125,48 @@ TEST(ViewerVlabObject, EveryManualObjectOpensAndDraws) {
     }
     EXPECT_EQ(opened, 29);
     EXPECT_TRUE(failures.empty()) << failures;
+}
+
+// The editor's files (app/plant/vlab_edit.hpp): a function in the first format (no samples of
+// its own: cpfg takes the view file's count) written in funcedit's format keeps that count, so
+// cpfg evaluates it as before; a function set's item and a contour are written in place.
+TEST(ViewerVlabObject, TheEditorsWritesKeepWhatCpfgEvaluates) {
+    const fs::path folder = fs::path(testing::TempDir()) / ("sprout_vlab_edit_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "specifications") << "plant.l\nmodel:\n\tcpfg plant.l plant.v\n";
+    std::ofstream(folder / "plant.l") << "Lsystem: 1\nderivation length: 1\nAxiom: F\nendlsystem\n";
+    std::ofstream(folder / "plant.v") << "function: old.func 30\nfunction set: set.fset\ncontour: 1 c.con\n";
+    std::ofstream(folder / "old.func") << "range: 0.0 1.0\npoints: 4\n0 0\n0.3 0.5\n0.7 0.5\n1 0\n";
+    std::ofstream(folder / "set.fset") << "funcgalleryver 1 1\nitems: 1\nfver 1 1\nname: a\nsamples: 5\nflip: off\npoints: 4\n"
+                                          "0.000000 0.000000 1\n0.300000 1.000000 1\n0.600000 1.000000 1\n1.000000 0.000000 1\n";
+    std::ofstream(folder / "c.con") << "cver 1 3\nname: c\npoints: 3 3\ntype: cr\nsamples: 8\n1.000000 0.000000 0.000000 1\n"
+                                       "0.000000 1.000000 0.000000 1\n-1.000000 0.000000 0.000000 1\n";
+    const auto files = vlabCurveFiles((folder / "plant.l").string());
+    ASSERT_EQ(files.size(), 3u);
+    EXPECT_EQ(files[0].label, "old.func");
+    EXPECT_EQ(files[0].samples, 30) << "the view file's count";
+    EXPECT_EQ(files[1].label, "set.fset: a");
+    EXPECT_EQ(files[2].label, "c.con");
+    EXPECT_TRUE(files[2].rules.closed);
+    std::string error;
+    auto pts = files[0].points;
+    pts[1][1] = 0.8;
+    const auto text = vlabCurveText(files[0], pts, error);
+    ASSERT_TRUE(text) << error;
+    EXPECT_EQ(*text, "fver 1 1\nname: old\nsamples: 30\nflip: off\npoints: 4\n0.000000 0.000000 1\n0.300000 0.800000 1\n"
+                     "0.700000 0.500000 1\n1.000000 0.000000 1\n");
+    pts = files[1].points;
+    pts[2][1] = 0.25;
+    const auto set = vlabCurveText(files[1], pts, error);
+    ASSERT_TRUE(set) << error;
+    EXPECT_NE(set->find("0.600000 0.250000 1\n"), std::string::npos) << *set;
+    EXPECT_EQ(set->rfind("funcgalleryver 1 1\nitems: 1\n", 0), 0u);
+    pts = files[2].points;
+    pts.pop_back();
+    EXPECT_FALSE(vlabCurveText(files[2], pts, error)) << "a closed contour of two points";
+    EXPECT_NE(error.find("3 points"), std::string::npos) << error;
+    fs::remove_all(folder);
 }
 
 }  // namespace
