@@ -130,6 +130,21 @@ std::optional<std::string> vlabCurveText(const VlabCurveFile& f, const CurvePoin
     return writeContour(*r.file);
 }
 
+std::optional<std::string> vlabFunctionSamplesText(const VlabCurveFile& f, int samples, std::string& error) {
+    if (f.kind != VlabCurveFile::Kind::Function) return error = "a contour has no samples", std::nullopt;
+    if (samples < 0 || samples > 10000) return error = "samples are 0 to 10000", std::nullopt;
+    if (f.item < 0) {
+        FunctionRead r = loadFunction(f.path, -1);
+        if (!r.ok() || !r.file) return error = f.label + " cannot be read again", std::nullopt;
+        r.file->samples = samples;
+        return writeFunction(*r.file);
+    }
+    FunctionSetRead r = loadFunctionSet(f.path);
+    if (!r.ok() || size_t(f.item) >= r.files.size()) return error = f.label + " cannot be read again", std::nullopt;
+    r.files[size_t(f.item)].samples = samples;
+    return writeFunctionSet(r.files);
+}
+
 std::vector<VlabSurfacePatch> vlabSurfacePatches(const std::string& lsystemPath) {
     std::vector<VlabSurfacePatch> out;
     const std::optional<VlabObject> object = vlabObjectAt(lsystemPath);

@@ -64,6 +64,11 @@ std::vector<VlabColourFile> vlabColourFiles(const std::string& lsystemPath);
 std::optional<std::string> colourMapWith(const std::string& bytes, int k, std::uint32_t rgb, std::string& error);
 std::optional<std::string> colourMapInterpolated(const std::string& bytes, int from, int to, std::string& error);
 
+// A function's file with its `samples:` (funcedit's table size; 0: cpfg evaluates the curve
+// itself) set, in funcedit's format; nothing, and `error`, for a contour or a count out of
+// 0..10000.
+std::optional<std::string> vlabFunctionSamplesText(const VlabCurveFile& f, int samples, std::string& error);
+
 // Writes to files beside a model, undone and redone a whole gesture at a time.
 // A material set's bytes with material k set to `m` (medit's record, every value truncated to a
 // byte as medit writes it). Nothing, and `error`, for a set that cannot be read.

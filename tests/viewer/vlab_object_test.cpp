@@ -162,6 +162,11 @@ TEST(ViewerVlabObject, TheEditorsWritesKeepWhatCpfgEvaluates) {
     ASSERT_TRUE(set) << error;
     EXPECT_NE(set->find("0.600000 0.250000 1\n"), std::string::npos) << *set;
     EXPECT_EQ(set->rfind("funcgalleryver 1 1\nitems: 1\n", 0), 0u);
+    const auto samples = vlabFunctionSamplesText(files[1], 50, error);
+    ASSERT_TRUE(samples) << error;
+    EXPECT_NE(samples->find("name: a\nsamples: 50\n"), std::string::npos) << *samples;
+    EXPECT_FALSE(vlabFunctionSamplesText(files[2], 50, error)) << "a contour has none";
+    EXPECT_FALSE(vlabFunctionSamplesText(files[0], 20000, error));
     pts = files[2].points;
     pts.pop_back();
     EXPECT_FALSE(vlabCurveText(files[2], pts, error)) << "a closed contour of two points";

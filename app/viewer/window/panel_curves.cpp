@@ -206,6 +206,17 @@ void vlabCurveSection(App& app) {
     if (!shown) return;
     ImGui::PushID(shown->label.c_str());
     curveCanvas(app, edited(app, *shown));
+    if (shown->kind == VlabCurveFile::Kind::Function) {  // funcedit's table of samples (0: the curve itself)
+        int samples = shown->samples;
+        ImGui::SetNextItemWidth(120);
+        if (ImGui::InputInt("samples", &samples, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            std::string error;
+            if (auto text = vlabFunctionSamplesText(*shown, std::clamp(samples, 0, 10000), error)) writeObjectFile(app, shown->path, *text, newGesture());
+            else app.say(error);
+        }
+        ImGui::SameLine();
+        ImGui::TextColored(kDim, "(funcedit's table; 0: the curve)");
+    }
     ImGui::PopID();
 }
 
