@@ -217,6 +217,75 @@ std::string setLpyMaterial(std::string_view text, const LpyMaterial& m, LpyMater
     return out.insert(m.insertAt, std::string(separated ? "" : ", ") + kFields[field] + " = " + v + (separated ? " , " : ""));
 }
 
+std::string interpolateLpyMaterials(std::string_view text, int from, int to, std::string& error) {
+    if (from > to) std::swap(from, to);
+    auto at = [&](const std::vector<LpyMaterial>& all, int index) -> const LpyMaterial* {
+        const LpyMaterial* found = nullptr;
+        for (const LpyMaterial& m : all)
+            if (m.index == index) found = &m;  // the last, which the turtle keeps
+        return found && found->texture.empty() ? found : nullptr;
+    };
+    const std::vector<LpyMaterial> all = lpyMaterials(text);
+    const LpyMaterial *a = at(all, from), *b = at(all, to);
+    if (!a || !b) return error = "interpolating needs both ends set as materials (not textures)", "";
+    if (to - from < 2) return error = "no material lies between " + std::to_string(from) + " and " + std::to_string(to), "";
+    const LpyMaterial ea = *a, eb = *b;  // copies: the text changes below
+    auto mix = [](int x, int y, double t) { return int(std::lround(x + (y - x) * t)); };
+    std::string out(text);
+    for (int k = from + 1; k < to; ++k) {
+        const double t = double(k - from) / double(to - from);
+        LpyMaterial v;
+        for (size_t c = 0; c < 3; ++c) {
+            v.ambient[c] = mix(ea.ambient[c], eb.ambient[c], t);
+            v.specular[c] = mix(ea.specular[c], eb.specular[c], t);
+            v.emission[c] = mix(ea.emission[c], eb.emission[c], t);
+        }
+        v.diffuse = std::min(ea.diffuse + (eb.diffuse - ea.diffuse) * t, lpyMostDiffuse(v.ambient));
+        v.shininess = ea.shininess + (eb.shininess - ea.shininess) * t;
+        v.transparency = ea.transparency + (eb.transparency - ea.transparency) * t;
+        const std::vector<LpyMaterial> now = lpyMaterials(out);
+        if (const LpyMaterial* m = at(now, k)) {
+            for (int f = 0; f < 6; ++f) {
+                const std::vector<LpyMaterial> again = lpyMaterials(out);
+                out = setLpyMaterial(out, *at(again, k), LpyMaterial::Field(f), v);
+            }
+            (void)m;
+            continue;
+        }
+        // A new one, after the last setMaterial line, indented as it is.
+        size_t last = out.rfind("setMaterial(");
+        if (last == std::string::npos) return error = "the model sets no material", "";
+        const size_t lineStart = out.rfind('\n', last) + 1;
+        size_t indentEnd = lineStart;
+        while (indentEnd < out.size() && (out[indentEnd] == ' ' || out[indentEnd] == '\t')) ++indentEnd;
+        const std::string indent = out.substr(lineStart, indentEnd - lineStart);
+        size_t eol = out.find('\n', last);
+        eol = eol == std::string::npos ? out.size() : eol + 1;
+        const std::string name = "Color_" + std::to_string(k);
+        auto colour = [](const std::array<int, 3>& c) {
+            return "(" + std::to_string(c[0]) + "," + std::to_string(c[1]) + "," + std::to_string(c[2]) + ")";
+        };
+        std::string lines;
+        if (out.find("pgl.Material(") == std::string::npos) {  // the older form: Material and Color3 as the model imports them
+            auto color3 = [&](const std::array<int, 3>& c) { return "Color3" + colour(c); };
+            lines = indent + "context.turtle.setMaterial(" + std::to_string(k) + ",Material('" + name + "'," + color3(v.ambient) + "," +
+                    formatted(v.diffuse) + "," + color3(v.specular) + "," + color3(v.emission) + "," + formatted(v.shininess) + "," +
+                    formatted(v.transparency) + "))\n";
+            if (eol == out.size() && !out.empty() && out.back() != '\n') lines = "\n" + lines;
+            out.insert(eol, lines);
+            continue;
+        }
+        lines = indent + name + " = pgl.Material(\"" + name + "\" , ambient = " + colour(v.ambient) + " , diffuse = " +
+                            formatted(v.diffuse) + " , specular = " + colour(v.specular) + " , emission = " + colour(v.emission) +
+                            " , shininess = " + formatted(v.shininess) + " , transparency = " + formatted(v.transparency) + " , )\n" +
+                            indent + name + ".name = \"" + name + "\"\n" + indent + "context.turtle.setMaterial(" + std::to_string(k) + "," +
+                            name + ")\n";
+        if (eol == out.size() && !out.empty() && out.back() != '\n') lines = "\n" + lines;
+        out.insert(eol, lines);
+    }
+    return out;
+}
+
 const char* lpyMaterialFieldName(LpyMaterial::Field f) { return kFields[int(f)]; }
 
 std::optional<LpyMaterial::Field> lpyMaterialFieldNamed(std::string_view name) {

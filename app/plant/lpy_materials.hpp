@@ -37,6 +37,11 @@ std::vector<LpyMaterial> lpyMaterials(std::string_view text);
 // The text with material m's `field` set from `value` (a colour's three numbers, else the
 // first), as Studio writes it; nothing else changes.
 std::string setLpyMaterial(std::string_view text, const LpyMaterial& m, LpyMaterial::Field field, const LpyMaterial& value);
+// The materials between `from` and `to` (both set, not textures) made the mix of the two, as
+// L-Py's colour map interpolates a range: each field linearly (colours rounded), the ones the
+// text sets written in place, the others added after the last setMaterial in Studio's form
+// (`Color_K = pgl.Material("Color_K" , ambient = (...) , ... , )`). "" and `error` otherwise.
+std::string interpolateLpyMaterials(std::string_view text, int from, int to, std::string& error);
 const char* lpyMaterialFieldName(LpyMaterial::Field f);  // ambient, diffuse, ...
 std::optional<LpyMaterial::Field> lpyMaterialFieldNamed(std::string_view name);
 // The diffuse factor PlantGL's Material keeps: no more than keeps every channel of ambient x

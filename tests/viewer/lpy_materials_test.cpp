@@ -83,5 +83,33 @@ TEST(LpyMaterials, EveryCorpusModelsMaterialsAreRead) {
     EXPECT_GT(materials, 40);
 }
 
+TEST(LpyMaterials, ARangeIsInterpolatedAsLpysColourMapDoes) {
+    const std::string studio =
+        "def __initialiseContext__(context):\n\timport openalea.plantgl.all as pgl\n"
+        "\tColor_0 = pgl.Material(\"Color_0\" , ambient = (0,0,0) , diffuse = 2 , )\n\tcontext.turtle.setMaterial(0,Color_0)\n"
+        "\tColor_2 = pgl.Material(\"Color_2\" , ambient = (9,9,9) , )\n\tcontext.turtle.setMaterial(2,Color_2)\n"
+        "\tColor_4 = pgl.Material(\"Color_4\" , ambient = (100,120,40) , diffuse = 2 , transparency = 0.5 , )\n"
+        "\tcontext.turtle.setMaterial(4,Color_4)\n";
+    std::string error;
+    const std::string t = interpolateLpyMaterials(studio, 4, 0, error);
+    ASSERT_FALSE(t.empty()) << error;
+    const auto m = lpyMaterials(t);
+    ASSERT_EQ(m.size(), 5u) << t;
+    std::array<const LpyMaterial*, 5> by{};
+    for (const LpyMaterial& x : m) by[size_t(x.index)] = &x;
+    for (int k = 0; k < 5; ++k) ASSERT_TRUE(by[size_t(k)]) << k;
+    EXPECT_EQ(by[1]->ambient, (std::array<int, 3>{25, 30, 10}));
+    EXPECT_EQ(by[2]->ambient, (std::array<int, 3>{50, 60, 20})) << "the one set is set in place";
+    EXPECT_EQ(by[3]->ambient, (std::array<int, 3>{75, 90, 30}));
+    EXPECT_DOUBLE_EQ(by[3]->transparency, 0.375);
+    EXPECT_NE(t.find("\tColor_1 = pgl.Material(\"Color_1\" , ambient = (25,30,10) ,"), std::string::npos) << t;
+    EXPECT_EQ(interpolateLpyMaterials(studio, 0, 1, error), "") << "nothing between";
+    EXPECT_EQ(interpolateLpyMaterials(studio, 0, 7, error), "") << "7 is not set";
+    const std::string old = "\tcontext.turtle.setMaterial(0,Material('Red',Color3(40,0,0),2,Color3(40,40,40),Color3(0,0,0),1,0))\n"
+                            "\tcontext.turtle.setMaterial(3,Material('Yellow',Color3(40,40,0),2,Color3(40,40,40),Color3(0,0,0),1,0))\n";
+    const std::string u = interpolateLpyMaterials(old, 0, 3, error);
+    EXPECT_NE(u.find("setMaterial(2,Material('Color_2',Color3(40,27,0),2,Color3(40,40,40),Color3(0,0,0),1,0))"), std::string::npos) << u;
+}
+
 }  // namespace
 }  // namespace sprout

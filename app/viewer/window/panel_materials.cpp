@@ -64,6 +64,18 @@ void materialSection(App& app) {
         if (ImGui::Selectable(label, open == m.index)) open = m.index;
         ImGui::PopID();
     }
+    // A range of the colour map interpolated between its two ends, as L-Py's colour map does.
+    static int from = 0, to = 0;
+    if (to <= from) from = materials.front().index, to = materials.back().index;
+    ImGui::SetNextItemWidth(160);
+    ImGui::DragIntRange2("range", &from, &to, 0.2f, 0, 255);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("interpolate")) {
+        std::string error;
+        const std::string text = interpolateLpyMaterials(app.state.text(), from, to, error);
+        if (text.empty()) app.say(error);
+        else app.state.setText(text, newGesture());
+    }
     const LpyMaterial* shown = materialAt(app.state.text(), open);
     if (!shown) return;
     const LpyMaterial m = *shown;

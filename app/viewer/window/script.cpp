@@ -43,6 +43,7 @@
 //                         the i-th; its control point (u, v) moved there (the same g: one drag)
 //   mouse-drag-surface-point <u> <v> <dx> <dy> <frames>   as mouse-drag-point, in the surface
 //                         editor
+//   material-interpolate <from> <to>   the materials between made the mix of the two ends
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."
 //   object-point <i> <k> <x> <y> [g]   moves point k of the i-th of them (from 0), written in

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "app/plant/lpy_materials.hpp"
 #include "app/plant/lpy_objects.hpp"
 #include "app/plant/lsys_curves.hpp"
 #include "app/plant/lpy_scalars.hpp"
@@ -179,6 +180,15 @@ std::optional<bool> Script::objectCommand(App& app, const std::string& cmd, std:
     if (cmd == "materials") {
         for (const std::string& l : detail::materialLines(app)) std::printf("%s\n", l.c_str());
         std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "material-interpolate") {  // FROM TO: one undo step
+        int from = 0, to = 0;
+        in >> from >> to;
+        std::string error;
+        const std::string text = interpolateLpyMaterials(app.state.text(), from, to, error);
+        if (text.empty()) std::fprintf(stderr, "script: %s\n", error.c_str());
+        else app.state.setText(text, detail::newGesture());
         return true;
     }
     if (cmd == "material-set") {  // INDEX FIELD V [V V]: one undo step
