@@ -4,12 +4,17 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "app/plant/lpy_materials.hpp"
 #include "app/plant/lpy_objects.hpp"
 #include "app/plant/lpy_patches.hpp"
 #include "app/plant/lsys_curves.hpp"
 #include "app/plant/text_edit.hpp"
+#include "core/base/read_file.hpp"
+#include "core/language/vlab/colours.hpp"
+#include "core/language/vlab/curve_files.hpp"
+#include "core/language/vlab/surface_patches.hpp"
 #include "lpy/lpy.hpp"
 
 namespace py = pybind11;
@@ -114,6 +119,41 @@ void bindMoreObjects(py::module_& m) {
 }  // namespace
 
 void bindModelObjects(py::module_& m) {
+    m.def(
+        "_vlab_rewrite",
+        [](const std::string& path) -> py::object {
+            // A VLab object's file read and written again in its editor's format (tests/reference/
+            // vlab_files_roundtrip.py gives cpfg the files Sprout writes); None: not one Sprout writes.
+            const std::string ext = std::filesystem::path(path).extension().string();
+            const std::optional<std::string> text = readFile(path);
+            if (!text) return py::none();
+            std::string error;
+            if (ext == ".func") {
+                const FunctionRead r = readFunction(*text, path, -1);
+                if (r.ok() && r.file) return py::bytes(writeFunction(*r.file));
+            } else if (ext == ".fset") {
+                const FunctionSetRead r = readFunctionSet(*text, path);
+                if (r.ok()) return py::bytes(writeFunctionSet(r.files));
+            } else if (ext == ".con" && text->rfind("version:", 0) == 0) {
+                const CurveRead r = readCurve(*text, path, 100);
+                if (r.ok()) return py::bytes(writeCurve(r.curve));
+            } else if (ext == ".con") {
+                const ContourRead r = readContour(*text, path);
+                if (r.ok() && r.file) return py::bytes(writeContour(*r.file));
+            } else if (ext == ".cset") {
+                const ContourSetRead r = readContourSet(*text, path);
+                if (r.ok()) return py::bytes(writeContourSet(r.files));
+            } else if (ext == ".s") {
+                const SurfacePatchesRead r = readSurfacePatches(*text, path);
+                if (r.ok()) return py::bytes(writeSurfacePatches(*r.surface));
+            } else if (ext == ".mat") {
+                if (auto set = vlab::readMaterials(*text, error)) return py::bytes(vlab::writeMaterials(*set));
+            } else if (ext == ".map") {
+                if (auto map = vlab::readColourMap(*text, error)) return py::bytes(vlab::writeColourMap(*map));
+            }
+            return py::none();
+        },
+        py::arg("path"), "A VLab object's .func/.fset/.con/.cset/.s/.mat/.map read and written again by Sprout's writers (None: not read)");
     m.def(
         "_lpy_curve_samples",
         [](const std::string& kind, int degree, const std::vector<std::array<double, 3>>& points, int samples) {
