@@ -66,7 +66,7 @@ std::optional<std::array<int, 3>> colour(std::string_view v) {
         if (comma == std::string_view::npos || comma > close) return std::nullopt;
         const auto n = number(v.substr(b, comma - b));
         if (!n) return std::nullopt;
-        c[size_t(i)] = int(std::lround(*n));
+        c[size_t(i)] = int(std::lround(std::clamp(*n, -1e6, 1e6)));
         b = comma + 1;
     }
     return c;
@@ -304,7 +304,10 @@ double lpyEffectiveDiffuse(const LpyMaterial& m) { return std::min(m.diffuse, lp
 std::array<int, 3> lpyDiffuseColour(const LpyMaterial& m) {
     std::array<int, 3> c{};
     const double d = lpyEffectiveDiffuse(m);
-    for (size_t i = 0; i < 3; ++i) c[i] = std::clamp(int(std::floor(m.ambient[i] * d)), 0, 255);
+    for (size_t i = 0; i < 3; ++i) {
+        const double x = std::floor(m.ambient[i] * d);
+        c[i] = std::isnan(x) ? 0 : int(std::clamp(x, 0.0, 255.0));  // any number the text holds: 0..255
+    }
     return c;
 }
 

@@ -137,7 +137,7 @@ std::vector<LpyCurve> lpyCurves(std::string_view text) {
                 v = skipSpace(text, v);
                 size_t ve = v;
                 while (ve < callEnd && std::isdigit(static_cast<unsigned char>(text[ve]))) ++ve;
-                if (auto deg = number(text.substr(v, ve - v))) c.degree = int(*deg);
+                if (auto deg = number(text.substr(v, ve - v))) c.degree = int(std::clamp(*deg, 0.0, 1000.0));  // clamped to the points below
                 break;
             }
             if (kind == LpyCurve::Kind::Nurbs) c.degree = std::max(1, std::min(c.degree, int(c.points.size()) - 1));

@@ -75,7 +75,7 @@ int degreeAfter(std::string_view t, size_t from, size_t callEnd, std::string_vie
         v = skipSpace(t, v);
         size_t e = v;
         while (e < callEnd && std::isdigit(static_cast<unsigned char>(t[e]))) ++e;
-        if (auto n = number(t.substr(v, e - v))) return int(*n);
+        if (auto n = number(t.substr(v, e - v))) return int(std::clamp(*n, 0.0, 1000.0));  // clamped to the points after
     }
     return otherwise;
 }

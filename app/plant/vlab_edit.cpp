@@ -60,7 +60,7 @@ std::vector<VlabCurveFile> vlabCurveFiles(const std::string& lsystemPath) {
             out.push_back(functionEntry(*r.file, path.string(), f.file, -1));
             // The first format has no `samples:`: cpfg takes the view file's count (none: the
             // curve itself), which the file written in funcedit's format must keep.
-            if (r.file->original) out.back().samples = f.numbers.empty() ? 0 : int(f.numbers[0]);
+            if (r.file->original) out.back().samples = f.numbers.empty() ? 0 : int(std::clamp(f.numbers[0], 0.0, 10000.0));
         } else if (f.command == "function set") {
             const FunctionSetRead r = loadFunctionSet(path);
             if (r.ok())

@@ -126,7 +126,7 @@ std::string setMaterialField(App& app, int index, const std::string& field, cons
     if (values.size() != (colour ? 3u : 1u)) return field + " takes " + (colour ? "three numbers (0 to 255)" : "one number");
     LpyMaterial v = *m;
     std::array<int, 3> c{};
-    for (size_t i = 0; colour && i < 3; ++i) c[i] = std::clamp(int(std::lround(values[i])), 0, 255);
+    for (size_t i = 0; colour && i < 3; ++i) c[i] = int(std::lround(std::clamp(values[i], 0.0, 255.0)));
     switch (*f) {
         case LpyMaterial::Ambient: v.ambient = c; break;
         case LpyMaterial::Specular: v.specular = c; break;

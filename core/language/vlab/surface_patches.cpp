@@ -91,7 +91,8 @@ bool readPatch(Tokens& in, SurfacePatch& p) {
             !in.number(p.topDiffuse, "the top diffuse") || !in.expect("BOTTOM") || !in.expect("COLOR:") ||
             !in.number(bottom, "the bottom colour") || !in.expect("DIFFUSE:") || !in.number(p.bottomDiffuse, "the bottom diffuse"))
             return false;
-        p.topColour = unsigned(std::max(0.0f, top)), p.bottomColour = unsigned(std::max(0.0f, bottom));
+        // cpfg reads them with %d: whole numbers (a float beyond them is no colour it keeps)
+        p.topColour = unsigned(std::clamp(top, 0.0f, 4095.0f)), p.bottomColour = unsigned(std::clamp(bottom, 0.0f, 4095.0f));
     }
     const char* keys[] = {"AL:", "A:", "AR:", "L:", "R:", "BL:", "B:", "BR:"};
     for (size_t k = 0; k < 8; ++k)
@@ -126,7 +127,7 @@ SurfacePatchesRead readSurfacePatches(std::string_view text, const std::string& 
         if (!in.expect("PRECISION") || !in.expect("S:") || !in.number(ps, "the S precision") || !in.expect("T:") ||
             !in.number(pt, "the T precision"))
             return r;
-        s.precision = std::array<int, 2>{int(ps), int(pt)};
+        s.precision = std::array<int, 2>{int(std::clamp(ps, 0.0f, 100000.0f)), int(std::clamp(pt, 0.0f, 100000.0f))};
     }
     if (!in.vector("CONTACT", "POINT", s.contact) || !in.vector("END", "POINT", s.end) || !in.vector("HEADING", nullptr, s.heading) ||
         !in.vector("UP", nullptr, s.up) || !in.expect("SIZE:") || !in.number(s.size, "the size"))
