@@ -161,20 +161,6 @@ const std::string kGuidedModel =
     "\tparameterset = [panel_0,]\n\tcontext[\"__curves__\"] = [('path',path),]\n"
     "\tcontext[\"__parameterset__\"] = parameterset\n\tcontext[\"path\"] = path\n";
 
-std::size_t pixelsThatDiffer(const Image& x, const Image& y) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
-        n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
-    return n;
-}
-
-std::string fileText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";

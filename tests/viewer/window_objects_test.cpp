@@ -9,20 +9,6 @@
 namespace sprout {
 namespace {
 
-std::string fileBytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::size_t differing(const Image& x, const Image& y) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
-        n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
-    return n;
-}
-
 TEST(Window, AnObjectsFunctionAndContourDraggedChangeThePlantAndUndoRestoresTheirFiles) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     const fs::path dir = testDir("object_editors");
@@ -55,11 +41,11 @@ TEST(Window, AnObjectsFunctionAndContourDraggedChangeThePlantAndUndoRestoresThei
         << "x stays between its neighbours; y as dragged";
     EXPECT_EQ(printed[3], "object-curve=sec.con points=2.5,2.5,1;1,-0.300000012,1;-1,-0.300000012,1;-1,0.300000012,1");
     const Image ia = load(a), ib = load(b), ic = load(c), id = load(d);
-    EXPECT_GT(differing(ia, ib), 400u * 300u / 100) << "longer segments where the function rose";
-    EXPECT_GT(differing(ib, ic), 400u * 300u / 100) << "a thicker tube where the contour grew";
-    EXPECT_LE(differing(ia, id), 20u) << "two undos: the plant as it was";
-    EXPECT_EQ(fileBytes(object / "len.func"), func) << "the function's file byte for byte";
-    EXPECT_EQ(fileBytes(object / "sec.con"), con) << "the contour's file byte for byte";
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 400u * 300u / 100) << "longer segments where the function rose";
+    EXPECT_GT(pixelsThatDiffer(ib, ic), 400u * 300u / 100) << "a thicker tube where the contour grew";
+    EXPECT_LE(pixelsThatDiffer(ia, id), 20u) << "two undos: the plant as it was";
+    EXPECT_EQ(fileText(object / "len.func"), func) << "the function's file byte for byte";
+    EXPECT_EQ(fileText(object / "sec.con"), con) << "the contour's file byte for byte";
 }
 
 // The Colours section on a colour map (palette's .map): entry 1, the stem's, set to red in the
@@ -87,8 +73,8 @@ TEST(Window, AnObjectsColourMapEntrySetRecoloursThePlantAndUndoRestoresTheMap) {
     const auto ma = mean(ia, 190, 120, 210, 180), mb = mean(ib, 190, 120, 210, 180);
     EXPECT_GT(ma[1], ma[0] + 40) << "green first";
     EXPECT_GT(mb[0], mb[1] + 40) << "red once set";
-    EXPECT_LE(differing(ia, ic), 20u);
-    EXPECT_EQ(fileBytes(object / "plant.map"), map) << "two undos: the map byte for byte";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
+    EXPECT_EQ(fileText(object / "plant.map"), map) << "two undos: the map byte for byte";
 }
 
 // The surface editor on a VLab object's .s file: a control point of its Bezier patch moved,
@@ -116,9 +102,9 @@ TEST(Window, AnObjectsSurfacePointMovedChangesTheLeafAndUndoRestoresTheFile) {
     EXPECT_NE(printed[1].find(";-1.5,0.7,0;"), std::string::npos) << printed[1];
     EXPECT_NE(printed[1].find(";-1.5,1.4,0;"), std::string::npos) << printed[1];
     const Image ia = load(a), ib = load(b), ic = load(c);
-    EXPECT_GT(differing(ia, ib), 400u * 300u / 200) << "a wider leaf";
-    EXPECT_LE(differing(ia, ic), 20u);
-    EXPECT_EQ(fileBytes(object / "leaf.s"), leaf) << "two undos: bezieredit's file byte for byte";
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 400u * 300u / 200) << "a wider leaf";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
+    EXPECT_EQ(fileText(object / "leaf.s"), leaf) << "two undos: bezieredit's file byte for byte";
 }
 
 // Sprout's own grammar's function, in the same editor: its middle point dragged down shortens
@@ -140,12 +126,12 @@ TEST(Window, AnLsysFunctionDraggedChangesThePlantAndUndoRestoresTheText) {
                                                  "curve=len kind=function points=0,0.2;0.7,0.1;1,0.2",
                                                  "curve=1 kind=contour points=1,0.3;1,-0.3;-1,-0.3;-1,0.3"}));
     const Image ia = load(a), ib = load(b), ic = load(c);
-    EXPECT_GT(differing(ia, ib), 400u * 300u / 100) << "a shorter tube";
-    EXPECT_LE(differing(ia, ic), 20u);
+    EXPECT_GT(pixelsThatDiffer(ia, ib), 400u * 300u / 100) << "a shorter tube";
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
     std::string expected = text;
     expected.replace(expected.find("0.5,1"), 5, "0.7,0.1");
-    EXPECT_EQ(fileBytes(moved), expected) << "only the line's points change";
-    EXPECT_EQ(fileBytes(back), text);
+    EXPECT_EQ(fileText(moved), expected) << "only the line's points change";
+    EXPECT_EQ(fileText(back), text);
 }
 
 }  // namespace

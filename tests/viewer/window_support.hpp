@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,22 @@ inline std::array<double, 3> mean(const Image& img, int x0, int y0, int x1, int 
             for (int c = 0; c < 3; ++c) m[size_t(c)] += img.rgba[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
     for (auto& v : m) v /= std::max(n, 1);
     return m;
+}
+
+// How many pixels of two pictures differ clearly (red and green by more than 40 together).
+inline std::size_t pixelsThatDiffer(const Image& x, const Image& y) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < x.rgba.size() && i < y.rgba.size(); i += 4)
+        n += std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 40;
+    return n;
+}
+
+// A file's bytes ("" when it cannot be read).
+inline std::string fileText(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
 }
 
 // A folder of one test's own.
