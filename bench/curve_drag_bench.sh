@@ -6,7 +6,7 @@
 # view, the swap: the window stays responsive while the worker derives), the time from the
 # drag's last step to the refined plant drawn whole, where that time went (the worker's
 # derivation, the still picture, when the last result came) and how many plants were drawn
-# while the point moved; then the same for a drag of the 6-point
+# while the point moved, in how long (drag_ms); then the same for a drag of the 6-point
 # curve of a small model of this bench's own, as the baseline measured in the same run, and the
 # ratios. Bars (issue 52): frames within the moving-frame budget (17 ms), refined <= 150 ms.
 #

@@ -94,6 +94,11 @@ public:
     std::shared_ptr<const Result> take();
     // For a progress bar: busy, and the fraction of the current step.
     bool busy() const { return m_busy.load(); }
+    // Busy, a request waiting to be taken up or a result not yet taken: a plant is still to come.
+    bool working() const;
+    // A gesture's end: the step that runs is cancelled when a newer one waits (a drag's steps
+    // otherwise run to their end so that the plant follows the point; now only the last counts).
+    void settle();
     float progress() const { return m_progress.load(); }
     int progressStep() const { return m_progressStep.load(); }
     void cancel();
@@ -116,7 +121,7 @@ private:
     std::shared_ptr<Result> processIfs(const Request& r, std::shared_ptr<Result> out);
     std::shared_ptr<Result> processLpy(const Request& r, std::shared_ptr<Result> out);
 
-    std::mutex m_mutex;
+    mutable std::mutex m_mutex;
     std::condition_variable m_wake, m_done;
     std::optional<Request> m_pending;
     std::shared_ptr<const Result> m_result;

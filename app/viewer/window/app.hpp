@@ -66,6 +66,15 @@ struct App {
     bool showHelp = false;
     bool interacting = false;  // dragging: no shadows for big plants
     bool scriptDragging = false;  // the script's `drag` holds the view as a mouse drag would
+    // A panel's control held with the mouse (a curve's point, a slider) or the script's
+    // `curve-drag`, and after it is let go until the worker has made its last plant: the
+    // plants it makes are drawn at the moving view's quality, one a frame, and the still
+    // picture follows with the last one (window_view.cpp). (Refined at once, the plant of the
+    // step before the last was drawn still and thrown away, while the worker derived the last
+    // on the same cores.)
+    bool shaping = false;
+    bool shapingHeld = false;  // the control held (or the script's drag) at the last frame
+    bool scriptShaping = false;
     // The script's mouse (`mouse-drag-point`): while `on`, ImGui gets this position and left
     // button each frame in place of the window system's (window.cpp, after the backend's frame).
     struct { bool on = false, down = false; float x = 0, y = 0; } scriptMouse;
@@ -242,7 +251,7 @@ private:
         double dx = 0, dy = 0;
         int frames = 0;
         std::uint64_t gesture = 0;
-        double lastFrame = 0, worstMs = 0, endedAt = 0;
+        double lastFrame = 0, worstMs = 0, startedAt = 0, endedAt = 0;
         double resultAt = 0;  // when the drag's last result came from the worker
         int shown = 0;        // plants drawn while the point moved (the picture follows the drag)
         std::uint64_t lastGeneration = 0;

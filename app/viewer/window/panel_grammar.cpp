@@ -161,6 +161,13 @@ void grammarSection(App& app) {
         ImGui::ProgressBar(w.progress(), ImVec2(-90, 0), label);
         ImGui::SameLine();
         if (ImGui::Button("Cancel")) app.state.worker().cancel();
+    } else {
+        // The line keeps its height when no derivation runs, so that the sections below stay
+        // where they are as derivations start and end: while a curve's point is dragged they
+        // do so every few frames, and the editor's canvas moved under the mouse.
+        ImGui::AlignTextToFramePadding();
+        if (latest && !latest->cancelled && latest->deriveMs > 0) ImGui::TextColored(kDim, "derived in %.0f ms", latest->deriveMs);
+        else ImGui::TextUnformatted("");
     }
 }
 

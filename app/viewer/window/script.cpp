@@ -55,7 +55,8 @@
 //                         "curve_drag_worst_frame_ms=W refined_ms=R ...": its longest frame, the
 //                         time from its last step to the plant it gives, drawn whole, then the
 //                         last result's parse, derive and interpret ms, the still picture's ms,
-//                         when the result came (result_after_ms) and plants_during_drag
+//                         when the result came (result_after_ms), plants_during_drag and the
+//                         drag's own time (drag_ms: its first step to its last)
 //   undo | redo           as Ctrl+Z / Ctrl+Shift+Z in the grammar editor
 //   show-environment on|off | light-slice <height>|off   the environment's drawing
 //   pick <x> <y>          a click at window pixel (x, y): prints
@@ -138,9 +139,11 @@ bool Script::step(App& app) {
             if (m_curve.lastFrame > 0) ++m_curve.shown;
             m_curve.lastGeneration = p->generation;
         }
+        if (m_curve.lastFrame == 0) m_curve.startedAt = now;
         m_curve.lastFrame = now;
         detail::nudgeCurvePoint(app, m_curve.name, m_curve.point, m_curve.dx, m_curve.dy, m_curve.gesture);
         if (--m_curve.frames == 0) m_curve.endedAt = now;
+        app.scriptShaping = m_curve.frames > 0;
         m_waitFor = app.state.generation();  // what comes next waits for the last step's result
         return true;
     }

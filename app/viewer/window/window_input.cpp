@@ -36,6 +36,10 @@ void handleInput(App& app, GLFWwindow* window, Mouse& mouse, double dt) {
     mouse.x = mx;
     mouse.y = my;
     app.interacting = mouse.rotating || mouse.panning || app.scriptDragging;
+    const bool held = (ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) || app.scriptShaping;
+    if (app.shapingHeld && !held) app.state.worker().settle();  // let go: only the last step's plant is of use now
+    app.shapingHeld = held;
+    app.shaping = held || (app.shaping && app.state.worker().working());
     if (mouse.rotating && (ddx || ddy)) {
         app.camera.yaw -= ddx * 0.4f;
         app.camera.pitch = std::clamp(app.camera.pitch + ddy * 0.4f, -89.0f, 89.0f);

@@ -4,6 +4,7 @@
 // while ImGui draws the same, and the frame copied to the X server (software GL) or swapped.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "app/render/colour_target.hpp"
 #include "app/viewer/window/app.hpp"
@@ -23,11 +24,35 @@ std::uint64_t drawDataHash(const ImDrawData* d);
 // Only when everything ImGui draws lies in the strip: a popup or an image over the view is
 // drawn as it comes. The image is cleared to the panel's own colour, which is what the
 // window's strip shows under ImGui's barely transparent panel after its first frames.
+//
+// A panel that changed is drawn again only where it changed: the strip is cut into tiles of
+// kPanelTile units, each with a hash of the triangles ImGui draws over it (panelTiles), and
+// the tiles whose hash differs from the image's are cleared and drawn again, in a few bands
+// (panelBands), ImGui's clip rectangles cut to each. Dragging a curve's point changes the
+// editor's canvas and a line of status: a third of the strip (the whole strip took 6-10 ms a
+// frame on software GL while the worker derived on the other core).
 struct PanelCache {
     std::unique_ptr<render::ColourTarget> image;
     int width = 0, height = 0;
     std::uint64_t hash = 0;
+    std::vector<std::uint64_t> tiles;  // panelTiles of what the image holds
+    int columns = 0;
 };
+
+constexpr float kPanelTile = 32;
+// A part of the window in ImGui's display units (x0, y0 top left; x1, y1 excluded).
+struct PanelRect {
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+// The hash of each tile of the strip `width` x `height` (rows of `columns` tiles, the first
+// at the display's top left): every triangle of `d` mixed into the tiles its bounds (within
+// its clip rectangle) meet, in the order ImGui draws them.
+std::vector<std::uint64_t> panelTiles(const ImDrawData* d, float width, float height, int& columns);
+// The tiles that differ between `before` and `now` (the same grid) as at most `most` bands:
+// each a run of rows holding a changed tile, as wide as their changed tiles reach; the nearest
+// bands merged while there are more.
+std::vector<PanelRect> panelBands(const std::vector<std::uint64_t>& before, const std::vector<std::uint64_t>& now, int columns,
+                                  size_t most = 4);
 
 // What drawPanelCached put in the window's back buffer: ImGui drawn over the whole window, the
 // panel's strip copied from the cache, or nothing (the strip there is this frame's panel).

@@ -171,7 +171,7 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     render::RenderOptions o = app.view.render;  // still quality; drawMoving picks the moving frames'
     o.quality = render::Quality::Still;
     o.quickLines = app.renderer.software();
-    const bool interactive = app.interacting || app.state.playing() || app.view.turntable;
+    const bool interactive = app.interacting || app.shaping || app.state.playing() || app.view.turntable;
     if (!app.viewFbo) {
         glGenFramebuffers(1, &app.viewFbo);
         glGenTextures(1, &app.viewColour);
@@ -184,7 +184,13 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
         app.needsRedraw = true;
     }
     // Letting go of a drag refines the picture to full size and quality.
-    if (interactive != app.viewInteractive) app.viewInteractive = interactive, app.needsRedraw = true;
+    // Taking hold of a panel's control changes nothing on screen until its first plant comes;
+    // letting go of anything refines the picture if it was drawn moving.
+    if (interactive != app.viewInteractive) {
+        app.viewInteractive = interactive;
+        const bool onlyShaping = app.shaping && !app.interacting && !app.state.playing() && !app.view.turntable;
+        if (interactive ? !onlyShaping : app.viewMoving) app.needsRedraw = true;
+    }
     // A picture in pieces abandoned (a screenshot drew in between): begin it again.
     if (app.refining && !app.renderer.drawing()) app.refining = false, app.needsRedraw = true;
     auto drawMoving = [&] {
