@@ -50,6 +50,9 @@ struct ScreenshotSize {
 inline constexpr ScreenshotSize kScreenshotSizes[] = {
     {"view size", 0, 0}, {"1920 x 1080", 1920, 1080}, {"3840 x 2160", 3840, 2160}, {"1080 x 1080", 1080, 1080}};
 
+// The moving view's smallest share of the window's pixels each way.
+constexpr float kSmallestMovingScale = 0.25f;
+
 struct App {
     explicit App(std::string executable);
 
@@ -100,7 +103,7 @@ struct App {
     // Frames whose panel was copied from the one drawn before (unchanged), and drawn anew.
     std::uint64_t panelCopies = 0, panelDraws = 0;
     int presentedWidth = 0, presentedHeight = 0;
-    float movingScale = 0.5f;  // the moving view's share of the pixels each way (0.25 to 0.5)
+    float movingScale = 0.5f;  // the moving view's share of the pixels each way (kSmallestMovingScale to 0.5)
     bool sceneArrived = false;  // a new scene is on the GPU: shown first as a preview when big
     bool movingWarm = false;    // the moving view has been drawn once in this window
     double lastStillMs = 0;     // what the last still view took to draw (its pieces together)

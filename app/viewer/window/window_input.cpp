@@ -38,6 +38,10 @@ void handleInput(App& app, GLFWwindow* window, Mouse& mouse, double dt) {
     app.interacting = mouse.rotating || mouse.panning || app.scriptDragging;
     const bool held = (ImGui::IsAnyItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) || app.scriptShaping;
     if (app.shapingHeld && !held) app.state.worker().settle();  // let go: only the last step's plant is of use now
+    // Taking hold: the plants to come are drawn at the moving view's smallest size first (a
+    // drag's first frames drew them at what the last camera drag had left, up to half the
+    // window each way: 8-10 ms a frame on llvmpipe, 3-5 at a quarter); it grows as frames allow.
+    if (!app.shapingHeld && held) app.movingScale = kSmallestMovingScale;
     app.shapingHeld = held;
     app.shaping = held || (app.shaping && app.state.worker().working());
     if (mouse.rotating && (ddx || ddy)) {

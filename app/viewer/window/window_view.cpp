@@ -291,7 +291,7 @@ void noteFrame(App& app, const Frame& frame) {
         // the pixels drawn): fewer while a frame takes longer than kMovingFrameMs, back
         // towards half each way when quick.
         const float k = float(std::sqrt(kMovingFrameMs / std::max(app.frameMs, 1.0)));
-        app.movingScale = std::clamp(app.movingScale * std::clamp(k, 0.6f, 1.1f), 0.25f, 0.5f);
+        app.movingScale = std::clamp(app.movingScale * std::clamp(k, 0.6f, 1.1f), kSmallestMovingScale, 0.5f);
     }
     if (frame.moved) {
         if (app.frameMs > app.movingWorstMs) {
