@@ -5,6 +5,7 @@ in vec3 vNormal;
 in vec4 vColour;
 out vec4 fragColour;
 uniform float uSpecular;
+uniform float uTranslucent;  // 1: the translucent triangles, blended by their alpha
 void main() {
-    fragColour = vec4(shade(vColour.rgb, vWorld, vNormal, uSpecular), 1.0);
+    fragColour = vec4(shade(vColour.rgb, vWorld, vNormal, uSpecular), mix(1.0, vColour.a, uTranslucent));
 }

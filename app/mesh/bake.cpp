@@ -1,6 +1,8 @@
 #include "app/mesh/bake.hpp"
 
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
@@ -38,6 +40,24 @@ void bakePolygons(const Mesh& p, BakedMesh& out) {
     const std::uint32_t base = std::uint32_t(out.vertices.size());
     for (size_t i = 0; i < p.positions.size(); ++i) out.vertices.push_back({p.positions[i], p.normals[i], p.colours[i]});
     for (std::uint32_t i : p.indices) out.indices.push_back(base + i);
+}
+
+std::size_t translucentLast(BakedMesh& m) {
+    auto seeThrough = [&](std::size_t t) {
+        for (std::size_t k = 0; k < 3; ++k)
+            if ((m.vertices[m.indices[t + k]].colour & 0xFFu) != 0xFFu) return true;
+        return false;
+    };
+    std::vector<std::uint32_t> opaque, translucent;
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3)
+        if (seeThrough(t)) translucent.insert(translucent.end(), m.indices.begin() + std::ptrdiff_t(t), m.indices.begin() + std::ptrdiff_t(t + 3));
+    if (translucent.empty()) return 0;
+    opaque.reserve(m.indices.size() - translucent.size());
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3)
+        if (!seeThrough(t)) opaque.insert(opaque.end(), m.indices.begin() + std::ptrdiff_t(t), m.indices.begin() + std::ptrdiff_t(t + 3));
+    opaque.insert(opaque.end(), translucent.begin(), translucent.end());
+    m.indices = std::move(opaque);
+    return translucent.size() / 3;
 }
 
 }  // namespace sprout::mesh

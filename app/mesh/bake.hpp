@@ -3,6 +3,7 @@
 // vertex shaders slowly (llvmpipe: ~0.5 us per vertex for a cylinder that reads its segment
 // from a buffer texture, ~0.06 us for a plain transformed vertex), so the renderer draws
 // stems, leaves and spheres as one prebuilt mesh with the simplest shader. Exports reuse it.
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -34,5 +35,8 @@ void bakeCylinder(const CylinderInstance& c, const CylinderMesh& mesh, BakedMesh
 void bakeSurface(const SurfaceInstance& s, const SurfaceMesh& mesh, BakedMesh& out);
 // The turtle's polygons as they are.
 void bakePolygons(const Mesh& polygons, BakedMesh& out);
+// The translucent triangles (one of whose vertices has an alpha below 255) moved after the
+// others, each part in its order; how many they are.
+std::size_t translucentLast(BakedMesh& m);
 
 }  // namespace sprout::mesh

@@ -96,6 +96,7 @@ bool Renderer::Impl::build(std::string& error) {
         const char *vs, *fs;
     } programs[] = {
         {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
+        {&bakedDepthAlpha, "polygon.vert", "depth_alpha.frag"},
         {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"}, {&bakedVertexLitProgram, "polygon_lit.vert", "colour.frag"},
         {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
         {&inkLineProgram, "line.vert", "curve.frag"},
@@ -120,6 +121,8 @@ bool Renderer::Impl::build(std::string& error) {
     // fills a piece per frame (beginUpload) before they swap.
     for (Buffers* b : {&baked, &bakedBack, &overlay, &highlight, &proxyMesh}) makeBaked(*b);
     for (Buffers* b : {&lines, &linesBack, &proxy}) makeLines(*b);
+    glGenVertexArrays(1, &translucentVao);
+    glGenBuffers(1, &translucentEbo);
 
     // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
     // of quads (their width is in pixels, so they cannot be baked).

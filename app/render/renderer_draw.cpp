@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <future>
 #include <memory>
+#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -167,13 +169,16 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
     const Buffers& thin = moving ? proxy : lines;
     const std::size_t tris = (moving ? proxyIndices : bakedIndices) / 3, lineCount = moving ? proxyCount : this->lineCount;
     if (from < tris && from < to) {
-        const std::size_t b = std::min(to, tris);
-        glUseProgram(p);
-        setUniform(p, "uViewProj", viewProj);
-        setUniform(p, "uSpecular", 0.1f);
-        glBindVertexArray(mesh.vao);
-        glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - from)), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
+        const std::size_t b = std::min(to, tris), opaque = moving ? tris : tris - translucentTris;
+        if (from < opaque) {
+            glUseProgram(p);
+            setUniform(p, "uViewProj", viewProj);
+            setUniform(p, "uSpecular", 0.1f);
+            glBindVertexArray(mesh.vao);
+            glDrawElements(GL_TRIANGLES, GLsizei(3 * (std::min(b, opaque) - from)), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
+        }
+        if (b > opaque) drawTranslucent(viewProj, p, std::max(from, opaque) - opaque, b - opaque);
         stats.triangles += b - from;
     }
     if (to > tris && lineCount) {  // depth pass and colour pass alike: a line has no surface to shade
@@ -189,6 +194,64 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
             glDrawArrays(GL_LINES, GLint(2 * a), GLsizei(2 * (b - a)));
             if (single) glEnable(GL_MULTISAMPLE);
         }
+    }
+    glBindVertexArray(0);
+}
+
+void Renderer::Impl::adoptTranslucent(const mesh::BakedMesh& b, std::size_t count) {
+    translucentTris = std::min(count, b.indices.size() / 3);
+    translucentIndices.assign(b.indices.end() - std::ptrdiff_t(3 * translucentTris), b.indices.end());
+    translucentCentres.resize(translucentTris);
+    for (std::size_t t = 0; t < translucentTris; ++t) {
+        glm::vec3 c(0.0f);
+        for (int k = 0; k < 3; ++k) c += b.vertices[translucentIndices[3 * t + std::size_t(k)]].position;
+        translucentCentres[t] = c / 3.0f;
+    }
+    glBindVertexArray(translucentVao);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(translucentIndices.size() * 4), translucentIndices.data(), GL_DYNAMIC_DRAW);
+    glBindVertexArray(0);
+}
+
+void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::size_t from, std::size_t to) {
+    const bool depth = p == bakedDepth;
+    glBindVertexArray(translucentVao);
+    if (from == 0 && !depth) {  // a picture begins them: farthest first from this eye
+        std::vector<std::uint32_t> order(translucentTris);
+        for (std::uint32_t t = 0; t < order.size(); ++t) order[t] = t;
+        std::vector<float> distance(translucentTris);
+        for (std::size_t t = 0; t < translucentTris; ++t) distance[t] = glm::length(translucentCentres[t] - eye);
+        std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return distance[a] > distance[b]; });
+        std::vector<std::uint32_t> sorted(3 * translucentTris);
+        for (std::size_t t = 0; t < order.size(); ++t)
+            for (std::size_t k = 0; k < 3; ++k) sorted[3 * t + k] = translucentIndices[3 * std::size_t(order[t]) + k];
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
+        glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(sorted.size() * 4), sorted.data());
+    }
+    // The scene's vertices, read as its own vertex array reads them.
+    glBindBuffer(GL_ARRAY_BUFFER, baked.vbo);
+    const GLsizei bs = sizeof(mesh::BakedVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, colour)));
+    const GLuint program = depth ? bakedDepthAlpha : p;
+    glUseProgram(program);
+    setUniform(program, "uViewProj", viewProj);
+    if (!depth) {
+        setUniform(program, "uSpecular", 0.1f);
+        setUniform(program, "uTranslucent", 1.0f);
+        glEnable(GL_BLEND);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+    }
+    glDrawElements(GL_TRIANGLES, GLsizei(3 * (to - from)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
+    if (!depth) {
+        setUniform(program, "uTranslucent", 0.0f);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
     }
     glBindVertexArray(0);
 }

@@ -154,6 +154,18 @@ struct Renderer::Impl {
     // curve's sketch).
     void drawRange(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to, RenderStats& stats,
                    bool moving = false, bool quickLines = false, const glm::vec3* ink = nullptr);
+    // The scene's translucent triangles (PreparedScene::translucent), the last of `baked`: a
+    // copy of their indices and their centres, drawn from an index buffer of their own in the
+    // order of their distance from `eye`, farthest first, sorted again as a picture begins
+    // them; blended, without writing depth. In the shadow pass (bakedDepth) those at least half
+    // opaque cast shadows (bakedDepthAlpha), in any order.
+    std::size_t translucentTris = 0;
+    std::vector<std::uint32_t> translucentIndices;
+    std::vector<glm::vec3> translucentCentres;
+    GLuint translucentVao = 0, translucentEbo = 0, bakedDepthAlpha = 0;
+    glm::vec3 eye{0.0f};  // the camera's, for the order of the translucent triangles
+    void adoptTranslucent(const mesh::BakedMesh& baked, std::size_t count);
+    void drawTranslucent(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;

@@ -147,6 +147,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         mesh::bakeSurface(x, mesh, b);
     }
     mesh::bakePolygons(g.polygons, b);
+    out.translucent = mesh::translucentLast(b);
 }
 
 namespace {

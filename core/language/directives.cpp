@@ -127,6 +127,27 @@ void palette(Parser& p, const SourceLine& line, std::string_view value) {
     }
 }
 
+// material: INDEX #rrggbb [transparency T]: a palette entry and how much light it lets through.
+void material(Parser& p, const SourceLine& line, std::string_view value) {
+    const std::vector<std::string_view> w = words(value);
+    const char* example = "as in 'material: 3 #3070ff transparency 0.5'";
+    int index = -1;
+    if (w.empty() || std::sscanf(std::string(w[0]).c_str(), "%d", &index) != 1 || index < 0 || index > 255 ||
+        w[0].find_first_not_of("0123456789") != std::string_view::npos)
+        return p.sink().error(line, w.empty() ? value : w[0], std::string("a material begins with its index, 0 to 255, ") + example);
+    const auto c = w.size() > 1 ? colour(w[1]) : std::nullopt;
+    if (!c) return p.sink().error(line, w.size() > 1 ? w[1] : value, std::string("then its colour as #rrggbb, ") + example);
+    std::uint32_t rgba = *c;
+    for (size_t k = 2; k < w.size(); k += 2) {
+        if (w[k] != "transparency")
+            return p.sink().error(line, w[k], "'" + std::string(w[k]) + "' is not a material's field: transparency");
+        const auto t = k + 1 < w.size() ? p.constant(line, w[k + 1]) : std::nullopt;
+        if (!t || !inRange(*t, 0, 1)) return p.sink().error(line, k + 1 < w.size() ? w[k + 1] : w[k], "transparency is from 0 to 1");
+        rgba = (rgba & 0xFFFFFF00u) | std::uint32_t(std::lround((1 - *t) * 255));
+    }
+    p.grammar().settings.materials.push_back({index, rgba});
+}
+
 void gradient(Parser& p, const SourceLine& line, std::string_view value) {
     auto& s = p.grammar().settings;
     if (value == "off" || value == "no") return void(s.gradient = Toggle::Off);
@@ -199,6 +220,7 @@ const std::vector<Directive>& directives() {
         {"step_scale", number(&Settings::stepScale, 1e-6, 1e6, "step_scale")},
         {"tropism", tropism},
         {"palette", palette},
+        {"material", material},
         {"gradient", gradient},
         {"view", view},
         {"seed", seed, 0},  // before anything that may call rand()

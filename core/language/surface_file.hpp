@@ -2,6 +2,7 @@
 // cpfg's surface files (`.s`): bicubic Bezier patches with a contact point, a heading, an up
 // vector and a size, placed by a `~name` module in the turtle's frame (cpfg manual, "Surface
 // specification"). Parsed once with the grammar; drawn into the plant's polygon mesh.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +23,9 @@ struct SurfaceFile {
     // Stems in the same frame, as pairs of points (L-Py's @g of a curve: a polyline; of a
     // point set: a short stem at each point), drawn as thick as the turtle's width.
     std::vector<glm::vec3> lines;
+    // Each position's own colour (0xRRGGBBAA; 0: the turtle's), where the surface has colours
+    // of its own (L-Py's @g of Shapes in their Materials); empty: all the turtle's.
+    std::vector<std::uint32_t> colours;
 };
 
 // `error` says what is wrong and on which line when the text is not a surface file.

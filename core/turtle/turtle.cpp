@@ -84,6 +84,10 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     m_branchWidth = m_autoWidth && st.branchWidth == 1 ? 0.75f : toFloat(st.branchWidth);
     m_palette = st.palette;
     if (m_palette.empty()) m_palette.assign(std::begin(kDefaultPalette), std::end(kDefaultPalette));
+    for (const Settings::MaterialEntry& e : st.materials) {  // `material:` lines, over the palette
+        if (size_t(e.index) >= m_palette.size()) m_palette.resize(size_t(e.index) + 1, m_palette.back());
+        m_palette[size_t(e.index)] = e.rgba;
+    }
     if (m_palette.size() > 32767) m_palette.resize(32767);  // the state keeps the index in 16 bits
     m_colourStep = st.colourIncrement;
     m_widthSteps = st.widthIncrement.has_value();

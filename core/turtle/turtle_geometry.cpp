@@ -362,7 +362,8 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
     for (size_t k = 0; k < f.positions.size(); ++k) {
         m.positions.push_back(pos + scale * turned(f.positions[k]));
         m.normals.push_back(turned(f.normals[k]));
-        m.colours.push_back(col);
+        // (A block's colours stay palette steps until it is placed: a surface's own are not.)
+        m.colours.push_back(!m_level && k < f.colours.size() && f.colours[k] ? f.colours[k] : col);
         addBound(fromGlm(m.positions.back()));
     }
     for (std::uint32_t i : f.indices) m.indices.push_back(base + i);

@@ -24,8 +24,15 @@ struct ShapeMesh {
     std::vector<std::array<double, 3>> points;
     std::vector<std::array<long, 3>> triangles;
     std::vector<std::array<long, 2>> segments;
+    // Each point's colour (0xRRGGBBAA) where a Shape's Material gave it, as PglTurtle::pglShape
+    // draws a shape in its own appearance; 0 (or none at all): the turtle's colour.
+    std::vector<std::uint32_t> colours;
 };
 ShapeMesh shapeMesh(PyObject* shape);
+// A Shape's colour as PglTurtle::pglShape draws it: its Material's diffuseColor() and, as
+// alpha, 1 - transparency (0xRRGGBBAA); 0 for another appearance (a texture) or none
+// (appearance.cpp).
+std::uint32_t shapeColour(PyObject* shape);
 // An AsymmetricHull given alone to @g, its fields read leniently (any value not a number: the
 // field's default), as the drawing has always read it (lpy/draw/shapes.cpp).
 ShapeMesh hullMesh(PyObject* hull);

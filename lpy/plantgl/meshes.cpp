@@ -8,7 +8,7 @@
 //
 // Index of this file:
 //   [SECTION] Python's values, read as the Python meshing read them
-//   [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic)
+//   [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic): vector_math.hpp
 //   [SECTION] Meshes put together
 //   [SECTION] Groups and transformations
 //   [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc)
@@ -22,6 +22,7 @@
 #include "lpy/plantgl/asymmetric_hull.hpp"
 #include "lpy/plantgl/bindings.hpp"
 #include "lpy/plantgl/py_numbers.hpp"
+#include "lpy/plantgl/vector_math.hpp"
 
 namespace sprout::lpy {
 namespace {
@@ -89,7 +90,11 @@ double field(PyObject* obj, const char* name, double fallback) {
     return d;
 }
 
-using V3 = std::array<double, 3>;
+using pglmath::V3;
+using pglmath::M3;
+using pglmath::normed;
+using pglmath::axisRotation;
+using pglmath::times;
 
 // tuple(v)[:3], each item by `read`, zeros after; how many there were in `n`.
 template <class Read>
@@ -138,42 +143,11 @@ long count(PyObject* obj, const char* name, double fallback, long low, long high
     return long(std::max(double(low), std::min(double(high), std::trunc(v))));
 }
 
-// [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic)
-
-// Vector3(v).normed(): divided by its norm where that is above 0.
-V3 normed(V3 v) {
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (n > 0) return {v[0] / n, v[1] / n, v[2] / n};
-    return v;
-}
-
-using M3 = std::array<V3, 3>;  // rows
-
-// Matrix3.axisRotation(axis, angle), as plantgl_vectors.py computes it.
-M3 axisRotation(const V3& axis, double angle) {
-    const V3 u = normed(axis);
-    const double x = u[0], y = u[1], z = u[2];
-    const double c = std::cos(angle), s = std::sin(angle), t = 1 - std::cos(angle);
-    return {V3{t * x * x + c, t * x * y - s * z, t * x * z + s * y}, V3{t * x * y + s * z, t * y * y + c, t * y * z - s * x},
-            V3{t * x * z - s * y, t * y * z + s * x, t * z * z + c}};
-}
-
-// Matrix3 * Matrix3 and Matrix3 * vector: each entry sum() of its products, from 0.
-M3 times(const M3& a, const M3& b) {
-    M3 out{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out[i][j] = 0.0 + a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
-    return out;
-}
-V3 times(const M3& m, const V3& p) {
-    V3 out{};
-    for (int i = 0; i < 3; ++i) out[i] = 0.0 + m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2];
-    return out;
-}
+// [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic): vector_math.hpp
 
 // [SECTION] Meshes put together
 
-ShapeMesh mesh() { return ShapeMesh{ShapeMesh::Mesh, {}, {}, {}}; }
+ShapeMesh mesh() { return ShapeMesh{ShapeMesh::Mesh, {}, {}, {}, {}}; }
 
 // The mesh, or Nothing where it has neither triangles nor segments.
 ShapeMesh result(ShapeMesh m) {
@@ -186,6 +160,9 @@ template <class Transform>
 void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     if (mesh.kind != ShapeMesh::Mesh) return;
     const long base = long(to.points.size());
+    if (!mesh.colours.empty() || !to.colours.empty())  // the colours stay with their points
+        to.colours.resize(size_t(base), 0), to.colours.insert(to.colours.end(), mesh.colours.begin(), mesh.colours.end()),
+            to.colours.resize(size_t(base) + mesh.points.size(), 0);
     for (const V3& p : mesh.points) to.points.push_back(f(p));
     for (const auto& t : mesh.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     for (const auto& s : mesh.segments) to.segments.push_back({s[0] + base, s[1] + base});
@@ -258,6 +235,15 @@ ShapeMesh group(PyObject* obj, bool isGroup, int depth) {
 ShapeMesh geometryOf(PyObject* obj, int depth) {
     const Ref g(attributeOr(obj, "geometry", none()));
     return of(g.p, depth + 1);
+}
+
+// A Shape: its geometry in its appearance's colour (shapeColour) where an inner one gave none.
+ShapeMesh shapeOf(PyObject* obj, int depth) {
+    ShapeMesh m = geometryOf(obj, depth);
+    const std::uint32_t rgba = m.kind == ShapeMesh::Mesh ? shapeColour(obj) : 0;
+    if (rgba) m.colours.resize(m.points.size(), 0);
+    for (std::uint32_t& k : m.colours) k = k ? k : rgba;
+    return m;
 }
 
 // x * p[0] + y * p[1] + z * p[2] of PlantGL's vectors, vector by vector.
@@ -549,7 +535,7 @@ ShapeMesh of(PyObject* obj, int depth) {
     if (depth > 32) return {};
     const std::string_view name(Py_TYPE(obj)->tp_name);
     if (PyList_Check(obj) || PyTuple_Check(obj) || name == "Scene" || name == "Group") return group(obj, name == "Group", depth);
-    if (name == "Shape") return geometryOf(obj, depth);
+    if (name == "Shape") return shapeOf(obj, depth);
     if (name == "Polyline") {
         const Ref list(attributeOr(obj, "pointList", none()));
         return polyline(list.p);
