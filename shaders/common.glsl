@@ -53,3 +53,22 @@ vec3 shadeWith(vec3 baseSrgb, vec3 world, vec3 normal, float specular, bool shad
 }
 
 vec3 shade(vec3 baseSrgb, vec3 world, vec3 normal, float specular) { return shadeWith(baseSrgb, world, normal, specular, true); }
+
+// A plant's surface: shadeWith's light with the surface's material (Renderer::Impl::plainLight,
+// shineLight): the highlight in its specular colour at its exponent, and its emission added.
+// Every surface but a shining material's has (0.1, 0.1, 0.1) at 32 and none: shadeWith's.
+uniform vec3 uSpecular;
+uniform float uShininess;
+uniform vec3 uEmission;
+vec3 shadeMaterial(vec3 baseSrgb, vec3 world, vec3 normal, bool shadowed) {
+    vec3 n = normalize(normal);
+    vec3 v = normalize(uEye - world);
+    if (dot(n, v) < 0.0) n = -n;
+    float vis = shadowed ? sunVisibility(world, n) : 1.0;
+    vec3 base = toLinear(baseSrgb);
+    float diffuse = max(dot(n, uSunDir), 0.0);
+    vec3 ambient = mix(uGroundAmbient, uSkyAmbient, n.y * 0.5 + 0.5);
+    float spec = pow(max(dot(n, normalize(uSunDir + v)), 0.0), uShininess);
+    vec3 lit = base * (ambient + uSunColour * diffuse * vis) + uSunColour * uSpecular * spec * vis + toLinear(uEmission);
+    return toDisplay(lit);
+}

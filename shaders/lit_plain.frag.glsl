@@ -5,8 +5,7 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec4 vColour;
 out vec4 fragColour;
-uniform float uSpecular;
 uniform float uTranslucent;  // 1: the translucent triangles, blended by their alpha
 void main() {
-    fragColour = vec4(shadeWith(vColour.rgb, vWorld, vNormal, uSpecular, false), mix(1.0, vColour.a, uTranslucent));
+    fragColour = vec4(shadeMaterial(vColour.rgb, vWorld, vNormal, false), mix(1.0, vColour.a, uTranslucent));
 }

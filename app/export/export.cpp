@@ -153,6 +153,13 @@ std::string jsonString(std::string_view s) {
 
 const char* kParts[] = {"stems", "leaves", "petals", "spheres", "polygons"};
 
+// How the surfaces of a colour shine (Geometry::shines: the first listed), or null.
+const Shine* shineOf(const Geometry& g, std::uint32_t colour) {
+    for (const auto& [c, s] : g.shines)
+        if (c == colour) return &s;
+    return nullptr;
+}
+
 // [SECTION] glTF binary
 // ---------------------------------------------------------------------------------- glTF
 bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
@@ -166,10 +173,15 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         if (materialOf.count(key)) continue;
         materialOf[key] = materialOf.size();
         auto c = linearColour(p.colour);
+        // A shining material: smoother as it is shinier, and its emission (glTF's factors).
+        const Shine* shine = shineOf(scene.geometry(), p.colour);
+        const auto e = linearColour(shine ? shine->emission | 0xFFu : 0xFFu);
         if (!materials.empty()) materials += ",";
         materials += "{\"name\":" + jsonString((p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour)) +
                      ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[" + fmt(c[0]) + "," + fmt(c[1]) + "," + fmt(c[2]) + "," +
-                     fmt(c[3]) + "],\"metallicFactor\":0,\"roughnessFactor\":0.8}" +
+                     fmt(c[3]) + "],\"metallicFactor\":0,\"roughnessFactor\":" +
+                     fmt(shine ? std::clamp(1.0f - shine->shininess, 0.05f, 1.0f) : 0.8f) + "}" +
+                     (shine && shine->emission ? ",\"emissiveFactor\":[" + fmt(e[0]) + "," + fmt(e[1]) + "," + fmt(e[2]) + "]" : "") +
                      (c[3] < 1 ? ",\"alphaMode\":\"BLEND\"" : "") + (p.doubleSided ? ",\"doubleSided\":true" : "") + "}";
     }
     // Per primitive: an interleaved position+normal view and an index view.
@@ -298,9 +310,15 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
             if (seen[{p.colour, p.doubleSided}]) continue;
             seen[{p.colour, p.doubleSided}] = true;
             auto c = linearColour(p.colour);
+            const Shine* shine = shineOf(scene.geometry(), p.colour);  // its specular colour and exponent, its emission
+            std::string light = "\nKs 0.05 0.05 0.05\nNs 10";
+            if (shine) {
+                const auto ks = linearColour(shine->specular | 0xFFu), ke = linearColour(shine->emission | 0xFFu);
+                light = "\nKs " + fmt(ks[0]) + " " + fmt(ks[1]) + " " + fmt(ks[2]) + "\nNs " + fmt(std::max(1.0f, 128 * shine->shininess)) +
+                        (shine->emission ? "\nKe " + fmt(ke[0]) + " " + fmt(ke[1]) + " " + fmt(ke[2]) : std::string());
+            }
             mtl.text(std::string("\nnewmtl ") + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\nKd " +
-                     fmt(c[0]) + " " + fmt(c[1]) + " " + fmt(c[2]) + "\nKa 0 0 0\nKs 0.05 0.05 0.05\nNs 10\nd " + fmt(c[3]) +
-                     "\nillum 2\n");
+                     fmt(c[0]) + " " + fmt(c[1]) + " " + fmt(c[2]) + "\nKa 0 0 0" + light + "\nd " + fmt(c[3]) + "\nillum 2\n");
         }
         st.materials = seen.size();
         if (!mtl.close()) {

@@ -1,5 +1,6 @@
 #include "app/mesh/bake.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -58,6 +59,30 @@ std::size_t translucentLast(BakedMesh& m) {
     opaque.insert(opaque.end(), translucent.begin(), translucent.end());
     m.indices = std::move(opaque);
     return translucent.size() / 3;
+}
+
+std::vector<ShineRange> groupShines(BakedMesh& m, std::size_t opaque, const std::vector<std::pair<std::uint32_t, Shine>>& shines) {
+    std::vector<ShineRange> out;
+    if (shines.empty()) return out;
+    std::vector<std::uint32_t> colours;  // the shining colours, the first of each
+    for (const auto& [c, s] : shines)
+        if (std::find(colours.begin(), colours.end(), c) == colours.end()) colours.push_back(c), out.push_back({0, 0, s});
+    std::vector<std::vector<std::uint32_t>> groups(colours.size() + 1);  // 0: plain
+    opaque = std::min(opaque, m.indices.size() / 3);
+    for (std::size_t t = 0; t < opaque; ++t) {
+        const std::uint32_t c = m.vertices[m.indices[3 * t]].colour;
+        const auto at = std::find(colours.begin(), colours.end(), c);
+        auto& g = groups[at == colours.end() ? 0 : std::size_t(at - colours.begin()) + 1];
+        g.insert(g.end(), m.indices.begin() + std::ptrdiff_t(3 * t), m.indices.begin() + std::ptrdiff_t(3 * t + 3));
+    }
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+        std::copy(groups[k].begin(), groups[k].end(), m.indices.begin() + std::ptrdiff_t(3 * at));
+        if (k > 0) out[k - 1].first = at, out[k - 1].count = groups[k].size() / 3;
+        at += groups[k].size() / 3;
+    }
+    out.erase(std::remove_if(out.begin(), out.end(), [](const ShineRange& r) { return r.count == 0; }), out.end());
+    return out;
 }
 
 }  // namespace sprout::mesh

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <utility>
 #include <vector>
 
 #include "app/mesh/meshes.hpp"
@@ -38,5 +39,13 @@ void bakePolygons(const Mesh& polygons, BakedMesh& out);
 // The translucent triangles (one of whose vertices has an alpha below 255) moved after the
 // others, each part in its order; how many they are.
 std::size_t translucentLast(BakedMesh& m);
+// The first `opaque` triangles regrouped: those of colours that do not shine first, then those
+// of each shining colour together (`shines`: by colour, the first listed for one counts).
+// The groups of shining triangles, in order: their first triangle, how many, how they shine.
+struct ShineRange {
+    std::size_t first = 0, count = 0;
+    Shine shine;
+};
+std::vector<ShineRange> groupShines(BakedMesh& m, std::size_t opaque, const std::vector<std::pair<std::uint32_t, Shine>>& shines);
 
 }  // namespace sprout::mesh

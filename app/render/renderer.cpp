@@ -110,6 +110,8 @@ bool Renderer::Impl::build(std::string& error) {
     };
     for (auto& p : programs)
         if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
+    for (GLuint p : {bakedProgram, bakedPlainProgram, bakedVertexLitProgram}) glUseProgram(p), plainLight(p);  // never unset
+    glUseProgram(0);
 
     glGenTextures(1, &coverageTexture);
     glBindTexture(GL_TEXTURE_2D, coverageTexture);

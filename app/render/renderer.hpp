@@ -69,6 +69,8 @@ struct PreparedScene {
     // The translucent triangles (a vertex's alpha below 255: a material's transparency), last
     // in baked.indices in the order they came: drawn after the rest, back to front, blended.
     std::size_t translucent = 0;
+    // The opaque triangles of shining materials (Geometry::shines), grouped after the others.
+    std::vector<mesh::ShineRange> shines;
     std::vector<float> lines;            // the thinnest stems: x y z colour, two per line
     std::vector<CylinderInstance> curve; // planar curves: ribbons drawn from these
     // A big planar curve (over 200 k segments): drawn from the geometry's own segments,

@@ -173,10 +173,23 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
         if (from < opaque) {
             glUseProgram(p);
             setUniform(p, "uViewProj", viewProj);
-            setUniform(p, "uSpecular", 0.1f);
+            plainLight(p);
             glBindVertexArray(mesh.vao);
-            glDrawElements(GL_TRIANGLES, GLsizei(3 * (std::min(b, opaque) - from)), GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
+            // The plain triangles, then each shining material's with its light (not in the
+            // depth pass, nor a moving frame's, which are one draw).
+            std::size_t at = from;
+            const std::size_t end = std::min(b, opaque);
+            for (const mesh::ShineRange& r : moving || p == bakedDepth ? std::vector<mesh::ShineRange>{} : shines) {
+                const std::size_t r0 = std::max(r.first, at), r1 = std::min(r.first + r.count, end);
+                if (r0 >= r1) continue;
+                if (r0 > at) glDrawElements(GL_TRIANGLES, GLsizei(3 * (r0 - at)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * at * sizeof(std::uint32_t)));
+                shineLight(p, r.shine);
+                glDrawElements(GL_TRIANGLES, GLsizei(3 * (r1 - r0)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * r0 * sizeof(std::uint32_t)));
+                plainLight(p);
+                at = r1;
+            }
+            if (end > at)
+                glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - at)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * at * sizeof(std::uint32_t)));
         }
         if (b > opaque) drawTranslucent(viewProj, p, std::max(from, opaque) - opaque, b - opaque);
         stats.triangles += b - from;
@@ -196,6 +209,25 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
         }
     }
     glBindVertexArray(0);
+}
+
+namespace {
+glm::vec3 rgbOf(std::uint32_t c) { return glm::vec3(float(c >> 24 & 0xFF), float(c >> 16 & 0xFF), float(c >> 8 & 0xFF)) / 255.0f; }
+}  // namespace
+
+// Every surface's light: a little grey highlight, (n.h)^32.
+void Renderer::Impl::plainLight(GLuint p) {
+    setUniform(p, "uSpecular", glm::vec3(0.1f));
+    setUniform(p, "uShininess", 32.0f);
+    setUniform(p, "uEmission", glm::vec3(0.0f));
+}
+
+// A material's: its specular colour at 128 x its shininess (at least 1), as PlantGL gives
+// OpenGL, and its emission.
+void Renderer::Impl::shineLight(GLuint p, const Shine& s) {
+    setUniform(p, "uSpecular", rgbOf(s.specular));
+    setUniform(p, "uShininess", std::max(1.0f, 128.0f * s.shininess));
+    setUniform(p, "uEmission", rgbOf(s.emission));
 }
 
 void Renderer::Impl::adoptTranslucent(const mesh::BakedMesh& b, std::size_t count) {
@@ -241,7 +273,7 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
     glUseProgram(program);
     setUniform(program, "uViewProj", viewProj);
     if (!depth) {
-        setUniform(program, "uSpecular", 0.1f);
+        plainLight(program);
         setUniform(program, "uTranslucent", 1.0f);
         glEnable(GL_BLEND);
         glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);

@@ -159,12 +159,17 @@ struct Renderer::Impl {
     // order of their distance from `eye`, farthest first, sorted again as a picture begins
     // them; blended, without writing depth. In the shadow pass (bakedDepth) those at least half
     // opaque cast shadows (bakedDepthAlpha), in any order.
+    std::vector<mesh::ShineRange> shines;  // PreparedScene::shines, drawn with their light's uniforms
     std::size_t translucentTris = 0;
     std::vector<std::uint32_t> translucentIndices;
     std::vector<glm::vec3> translucentCentres;
     GLuint translucentVao = 0, translucentEbo = 0, bakedDepthAlpha = 0;
     glm::vec3 eye{0.0f};  // the camera's, for the order of the translucent triangles
     void adoptTranslucent(const mesh::BakedMesh& baked, std::size_t count);
+    // The lit programs' light uniforms: every surface's (uSpecular, uShininess, uEmission), or
+    // a shining material's.
+    void plainLight(GLuint program);
+    void shineLight(GLuint program, const Shine& shine);
     void drawTranslucent(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {

@@ -148,6 +148,7 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     }
     mesh::bakePolygons(g.polygons, b);
     out.translucent = mesh::translucentLast(b);
+    out.shines = mesh::groupShines(b, b.indices.size() / 3 - out.translucent, g.shines);
 }
 
 namespace {

@@ -127,7 +127,8 @@ void palette(Parser& p, const SourceLine& line, std::string_view value) {
     }
 }
 
-// material: INDEX #rrggbb [transparency T]: a palette entry and how much light it lets through.
+// material: INDEX #rrggbb [transparency T] [specular #rrggbb] [shininess S] [emission #rrggbb]:
+// a palette entry, how much light it lets through, and how it shines.
 void material(Parser& p, const SourceLine& line, std::string_view value) {
     const std::vector<std::string_view> w = words(value);
     const char* example = "as in 'material: 3 #3070ff transparency 0.5'";
@@ -138,14 +139,25 @@ void material(Parser& p, const SourceLine& line, std::string_view value) {
     const auto c = w.size() > 1 ? colour(w[1]) : std::nullopt;
     if (!c) return p.sink().error(line, w.size() > 1 ? w[1] : value, std::string("then its colour as #rrggbb, ") + example);
     std::uint32_t rgba = *c;
+    Shine shine;
     for (size_t k = 2; k < w.size(); k += 2) {
-        if (w[k] != "transparency")
-            return p.sink().error(line, w[k], "'" + std::string(w[k]) + "' is not a material's field: transparency");
-        const auto t = k + 1 < w.size() ? p.constant(line, w[k + 1]) : std::nullopt;
-        if (!t || !inRange(*t, 0, 1)) return p.sink().error(line, k + 1 < w.size() ? w[k + 1] : w[k], "transparency is from 0 to 1");
-        rgba = (rgba & 0xFFFFFF00u) | std::uint32_t(std::lround((1 - *t) * 255));
+        const std::string_view field = w[k], v = k + 1 < w.size() ? w[k + 1] : w[k];
+        if (field == "specular" || field == "emission") {
+            const auto rgb = k + 1 < w.size() ? colour(v) : std::nullopt;
+            if (!rgb) return p.sink().error(line, v, std::string(field) + " is a colour, #rrggbb");
+            (field == "specular" ? shine.specular : shine.emission) = *rgb & 0xFFFFFF00u;
+            continue;
+        }
+        if (field != "transparency" && field != "shininess")
+            return p.sink().error(line, field, "'" + std::string(field) +
+                                                   "' is not a material's field: transparency, specular, shininess, emission");
+        const auto t = k + 1 < w.size() ? p.constant(line, v) : std::nullopt;
+        if (!t || !inRange(*t, 0, 1)) return p.sink().error(line, v, std::string(field) + " is from 0 to 1");
+        if (field == "shininess") shine.shininess = float(*t);
+        else rgba = (rgba & 0xFFFFFF00u) | std::uint32_t(std::lround((1 - *t) * 255));
     }
     p.grammar().settings.materials.push_back({index, rgba});
+    if (!shine.plain()) p.grammar().settings.shines.push_back({index, shine});
 }
 
 void gradient(Parser& p, const SourceLine& line, std::string_view value) {

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/base/shine.hpp"
 #include "core/language/alphabet.hpp"
 #include "core/language/diagnostic.hpp"
 #include "core/language/environment_spec.hpp"
@@ -77,13 +78,15 @@ struct Settings {
     };
     std::vector<Movement> movements;
     std::vector<std::uint32_t> palette;  // 0xRRGGBBAA; empty: the default palette
-    // `material: INDEX #rrggbb [transparency T]`: the palette's entry INDEX (over the default
-    // palette when none is given), its alpha 1 - T. The turtle applies them in order.
+    // `material: INDEX #rrggbb [transparency T] ...`: the palette's entry INDEX (over the
+    // default palette when none is given), its alpha 1 - T. The turtle applies them in order.
     struct MaterialEntry {
         int index = 0;
         std::uint32_t rgba = 0xFFFFFFFF;
     };
     std::vector<MaterialEntry> materials;
+    // The palette entries that shine (specular, shininess, emission), by index.
+    std::vector<std::pair<int, Shine>> shines;
     // cpfg's colour index and width steps (a VLab object's view file): the index the turtle
     // starts with (-1: none, colours by branch order), what `;` and `,` add, and, when set,
     // what `!` and `#` subtract and add (instead of widthFactor's product).

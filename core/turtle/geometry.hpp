@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/base/pod_buffer.hpp"
+#include "core/base/shine.hpp"
 
 namespace sprout {
 
@@ -75,6 +77,9 @@ struct Geometry {
         std::uint32_t colour;  // 0xRRGGBBAA
     };
     std::vector<Label> labels;
+    // The colours (0xRRGGBBAA) whose surfaces shine (a material's specular, shininess and
+    // emission); the first listed for a colour counts. The others are lit plainly.
+    std::vector<std::pair<std::uint32_t, Shine>> shines;
     // A VLab object's background scene (cpfg's `background scene:`, background_scene.hpp): its
     // triangles are in `polygons`, the vertices from `backdropFirst` (`backdropCount` of them).
     // `bounds` leaves them out, as cpfg frames the plant alone; `backdrop` holds theirs.

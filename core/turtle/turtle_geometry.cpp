@@ -320,6 +320,8 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
 
 void Turtle::finish() {
     Geometry& out = m_out;
+    for (const auto& [index, shine] : m_g.settings.shines)  // what shines, by the colour drawn
+        if (index >= 0 && size_t(index) < m_palette.size() && !shine.plain()) out.shines.push_back({m_palette[size_t(index)], shine});
     out.bounds.empty = false;
     out.bounds.min = toGlm(m_min);
     out.bounds.max = toGlm(m_max);
@@ -406,6 +408,7 @@ void Geometry::clear() {
     surfaces.clear();
     polygons.clear();
     labels.clear();
+    shines.clear();
     bounds = {};
     backdrop = {};
     backdropFirst = backdropCount = 0;
@@ -441,6 +444,7 @@ void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& 
         out.bounds.add(out.polygons.positions.back());
     }
     for (auto i : g.polygons.indices) out.polygons.indices.push_back(base + i);
+    out.shines.insert(out.shines.end(), g.shines.begin(), g.shines.end());
 }
 
 }  // namespace sprout

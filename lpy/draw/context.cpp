@@ -26,6 +26,27 @@ std::uint32_t materialColour(py::handle m) {
     }
 }
 
+// Its specular colour, shininess and emission, as PlantGL's renderer gives them to OpenGL.
+Shine materialShine(py::handle m) {
+    Shine out;
+    try {
+        auto rgb = [&](const char* field) {
+            if (!py::hasattr(m, field)) return std::uint32_t(0);
+            const py::object c = m.attr(field);
+            auto ch = [](double x) { return std::uint32_t(std::clamp(std::isnan(x) ? 0.0 : x, 0.0, 255.0)); };
+            return ch(c[py::int_(0)].cast<double>()) << 24 | ch(c[py::int_(1)].cast<double>()) << 16 | ch(c[py::int_(2)].cast<double>()) << 8;
+        };
+        out.specular = rgb("specular");
+        out.emission = rgb("emission");
+        if (py::hasattr(m, "shininess")) out.shininess = float(std::clamp(m.attr("shininess").cast<double>(), 0.0, 1.0));
+    } catch (py::error_already_set&) {
+        return {};
+    } catch (py::cast_error&) {
+        return {};
+    }
+    return out;
+}
+
 }  // namespace
 
 TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
@@ -38,6 +59,7 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
         if (i < 0 || i > 255) continue;
         if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
         d.materials[size_t(i)] = materialColour(item.second);
+        if (const Shine shine = materialShine(item.second); !shine.plain()) d.shines.push_back({i, shine});
     }
     return d;
 }

@@ -83,6 +83,7 @@ Drawing::Drawing(const TurtleDefaults& d) : g(std::make_shared<Grammar>()), w(*g
     g->settings.polygonEdgesDrawn = true;  // PlantGL's F inside { } draws its cylinder too
     g->settings.view = ViewHint::Solid;    // PlantGL draws every F as a cylinder: a flat model is no line drawing
     g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
+    g->settings.shines = d.shines;
     colours = int(g->settings.palette.size());
     st.width = d.width;
     st.colour = std::clamp(d.colour, 0, colours - 1);

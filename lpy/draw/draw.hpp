@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "core/base/shine.hpp"
 #include "core/language/diagnostic.hpp"
 #include "core/language/grammar.hpp"
 #include "lpy/engine/engine.hpp"
@@ -19,6 +21,7 @@ struct TurtleDefaults {
     double width = 0.1;   // a radius
     int colour = 1;       // material index
     std::vector<std::uint32_t> materials;  // 0xRRGGBBAA by index; L-Py's seven by default
+    std::vector<std::pair<int, Shine>> shines;  // the materials that shine (specular, emission), by index
 };
 
 // L-Py's default materials (PlantGL's turtle: grey, brown, green, red, yellow, blue, purple),

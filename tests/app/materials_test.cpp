@@ -2,7 +2,12 @@
 // own, through the program as a user runs it, checked at their pixels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "app/image.hpp"
@@ -27,6 +32,30 @@ sprout::Image rendered(const std::string& name, const std::string& model) {
 std::array<int, 3> at(const sprout::Image& i, int x, int y) {
     const std::size_t k = (std::size_t(y) * std::size_t(i.width) + std::size_t(x)) * 4;
     return {i.rgba[k], i.rgba[k + 1], i.rgba[k + 2]};
+}
+
+// A grammar's picture, 200x200 seen from the front with no ground or shadows.
+sprout::Image renderedLsys(const std::string& name, const std::string& grammar) {
+    const std::string path = writeTemp(name + ".lsys", grammar), png = testing::TempDir() + name + ".png";
+    const auto r = runSprout("render " + path + " -o " + png + " --size 200x200 --view front --no-ground --no-shadows");
+    sprout::Image image;
+    std::string error;
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
+    return image;
+}
+
+// The brightest pixel's sum of channels within 60 pixels of the picture's centre (the sphere's
+// own, not the sky's).
+int brightest(const sprout::Image& i) {
+    int best = 0;
+    for (int y = 0; y < i.height; ++y)
+        for (int x = 0; x < i.width; ++x)
+            if ((x - i.width / 2) * (x - i.width / 2) + (y - i.height / 2) * (y - i.height / 2) < 60 * 60) {
+                const auto c = at(i, x, y);
+                best = std::max(best, c[0] + c[1] + c[2]);
+            }
+    return best;
 }
 
 // A small red box inside a big blue one whose material has `transparency`.
@@ -76,15 +105,7 @@ TEST(Materials, AShapesMaterialIsItsColour) {
 // sees through. A thin red stem inside a thick stem of a half transparent blue.
 TEST(Materials, AnLsysMaterialsTransparencyShowsTheStemInside) {
     auto picture = [](const std::string& name, const std::string& glass) {
-        const std::string path = writeTemp(name + ".lsys", "material: 1 #c00000\nmaterial: 2 #0000c0" + glass +
-                                                               "\nn: 0\naxiom: [;(1) !(0.3) F(4)] ;(2) !(2) F(4)\n"),
-                          png = testing::TempDir() + name + ".png";
-        const auto r = runSprout("render " + path + " -o " + png + " --size 200x200 --view front --no-ground --no-shadows");
-        EXPECT_EQ(r.code, 0) << r.err;
-        sprout::Image image;
-        std::string error;
-        EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
-        return image;
+        return renderedLsys(name, "material: 1 #c00000\nmaterial: 2 #0000c0" + glass + "\nn: 0\naxiom: [;(1) !(0.3) F(4)] ;(2) !(2) F(4)\n");
     };
     const sprout::Image glass = picture("lsys_glass", " transparency 0.5"), solid = picture("lsys_solid", "");
     ASSERT_EQ(glass.width, 200);
@@ -100,8 +121,10 @@ TEST(Materials, AWrongMaterialLineSaysWhereAndWhy) {
         {"material: x #ff0000", "1:11: a material begins with its index, 0 to 255"},
         {"material: 300 #ff0000", "1:11: a material begins with its index, 0 to 255"},
         {"material: 3 blue", "1:13: then its colour as #rrggbb"},
-        {"material: 3 #ff0000 shine 2", "1:21: 'shine' is not a material's field: transparency"},
+        {"material: 3 #ff0000 shine 2", "1:21: 'shine' is not a material's field: transparency, specular, shininess, emission"},
         {"material: 3 #ff0000 transparency 2", "1:34: transparency is from 0 to 1"},
+        {"material: 3 #ff0000 specular white", "1:30: specular is a colour, #rrggbb"},
+        {"material: 3 #ff0000 shininess", "1:21: shininess is from 0 to 1"},
     };
     for (const auto& [line, expected] : cases) {
         const std::string path = writeTemp("bad_material.lsys", std::string(line) + "\naxiom: F\n");
@@ -109,4 +132,64 @@ TEST(Materials, AWrongMaterialLineSaysWhereAndWhy) {
         EXPECT_NE(r.code, 0) << line;
         EXPECT_NE(r.err.find(expected), std::string::npos) << line << "\n" << r.err;
     }
+}
+
+// A material's specular colour and shininess: a dark sphere gets a white highlight, where the
+// same sphere without them has none (it shows the plain grey sheen every surface has).
+TEST(Materials, ASpecularSphereHasAHighlight) {
+    const sprout::Image shiny = renderedLsys("shiny", "material: 1 #302020 specular #ffffff shininess 0.3\nn: 0\naxiom: ;(1) @O(2)\n"),
+                        dull = renderedLsys("dull", "material: 1 #302020\nn: 0\naxiom: ;(1) @O(2)\n");
+    ASSERT_EQ(shiny.width, 200);
+    EXPECT_GT(brightest(shiny), brightest(dull) + 200) << brightest(shiny) << " against " << brightest(dull);
+    EXPECT_GT(brightest(shiny), 600) << "a white highlight";
+}
+
+// A material's emission: a black sphere that glows green is green all over, in the shade as
+// in the sun.
+TEST(Materials, AnEmissiveSphereGlowsInItsColour) {
+    const sprout::Image glowing = renderedLsys("glow", "material: 1 #000000 emission #00c000\nn: 0\naxiom: ;(1) @O(2)\n"),
+                        black = renderedLsys("black", "material: 1 #000000\nn: 0\naxiom: ;(1) @O(2)\n");
+    ASSERT_EQ(glowing.width, 200);
+    const auto g = at(glowing, 100, 100), b = at(black, 100, 100);
+    EXPECT_GT(g[1], 150) << g[0] << " " << g[1] << " " << g[2];
+    EXPECT_LT(g[0], 80) << g[0] << " " << g[1] << " " << g[2];
+    EXPECT_LT(b[1], 60) << "without it, black: " << b[0] << " " << b[1] << " " << b[2];
+}
+
+// An L-Py model's materials shine as PlantGL's renderer lights them: a red fruit set with
+// specular white at shininess 0.5 has a highlight the plain one lacks.
+TEST(Materials, AnLpyMaterialsSpecularIsItsHighlight) {
+    auto fruit = [](const std::string& name, const std::string& extra) {
+        return rendered(name, "from openalea.plantgl.all import *\n"
+                              "context().turtle.setMaterial(1, Material((60, 5, 5), 2" + extra + "))\n"
+                              "Axiom: ,(1) @O(1)\n"
+                              "derivation length: 0\n");
+    };
+    const sprout::Image shiny = fruit("lpy_shiny", ", (255, 255, 255), (0, 0, 0), 0.5"), plain = fruit("lpy_plain", "");
+    ASSERT_EQ(shiny.width, 240);
+    EXPECT_GT(brightest(shiny), brightest(plain) + 200) << brightest(shiny) << " against " << brightest(plain);
+}
+
+// The exports carry the materials: a .glb's material of a shining colour its roughness from
+// the shininess and its emission, a translucent one blended (the Khronos validator reads it
+// without an error); an .obj's .mtl Ks, Ns and Ke, and d.
+TEST(Materials, ExportsCarryTheMaterials) {
+    const std::string grammar = writeTemp("shiny_export.lsys", "material: 1 #302020 specular #ffffff shininess 0.3 emission #003000\n"
+                                                               "material: 2 #0000c0 transparency 0.5\nn: 0\n"
+                                                               "axiom: ;(1) @O(2) ;(2) !(3) F(4)\n");
+    const std::string glb = testing::TempDir() + "shiny_export.glb", obj = testing::TempDir() + "shiny_export.obj";
+    ASSERT_EQ(runSprout("export " + grammar + " -o " + glb).code, 0);
+    ASSERT_EQ(runSprout("export " + grammar + " -o " + obj).code, 0);
+    std::ifstream in(glb, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(bytes.find("\"roughnessFactor\":0.7"), std::string::npos);
+    EXPECT_NE(bytes.find("\"emissiveFactor\":[0,0.029556833,0]"), std::string::npos);
+    EXPECT_NE(bytes.find("\"alphaMode\":\"BLEND\""), std::string::npos);
+    const std::string validator = std::string(SPROUT_TOOLS_DIR) + "/validate_gltf.js";
+    if (std::filesystem::exists(std::string(SPROUT_TOOLS_DIR) + "/node_modules/gltf-validator"))
+        EXPECT_EQ(std::system(("node " + validator + " " + glb + " >/dev/null 2>&1").c_str()), 0);
+    std::ifstream m(testing::TempDir() + "shiny_export.mtl");
+    const std::string mtl((std::istreambuf_iterator<char>(m)), {});
+    EXPECT_NE(mtl.find("Ks 1 1 1\nNs 38.4\nKe 0 0.029556833 0\nd 1\n"), std::string::npos) << mtl;
+    EXPECT_NE(mtl.find("d 0.5019608\n"), std::string::npos) << mtl;
 }
