@@ -1,6 +1,7 @@
 #include "app/plant/vlab_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "app/plant/vlab_background.hpp"
@@ -24,6 +25,7 @@ void readColours(const VlabObject& object, VlabPicture& out) {
     if (object.colourFiles.empty()) return;
     const bool materials = object.colourFiles.back().material;
     std::vector<std::optional<std::vector<std::uint32_t>>> sets(12);
+    std::vector<std::vector<std::pair<int, Shine>>> setShines(12);  // by index within each set
     for (const auto& f : object.colourFiles) {
         if (f.material != materials) continue;  // the other kind: cpfg does not read it
         std::optional<std::string> bytes = readFile(f.path);
@@ -41,7 +43,13 @@ void readColours(const VlabObject& object, VlabPicture& out) {
                 continue;
             }
             const vlab::Material white;  // cpfg's default material: diffuse white
-            for (size_t k = 0; k < 256; ++k) colours[k] = vlab::materialColour(set->materials[k].value_or(white));
+            for (size_t k = 0; k < 256; ++k) {
+                const vlab::Material& m = set->materials[k].value_or(white);
+                colours[k] = vlab::materialColour(m);
+                auto c = [&](size_t i) { return std::uint32_t(std::lround(std::clamp(m.specular[i], 0.0f, 1.0f) * 255.0f)); };
+                const Shine shine{c(0) << 24 | c(1) << 16 | c(2) << 8, std::clamp(m.shininess / 128.0f, 0.0f, 1.0f), 0};
+                if (!shine.plain()) setShines[size_t(f.set)].push_back({int(k), shine});
+            }
             if (size_t(f.set) == size_t(object.referenceSet) && set->materials[0]) {
                 const auto& e = set->materials[0]->emission;
                 auto c = [](float v) { return std::uint32_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
@@ -63,7 +71,10 @@ void readColours(const VlabObject& object, VlabPicture& out) {
         if (sets[size_t(k)]) last = k;
     for (int k = object.referenceSet; k <= last; ++k) {
         const auto& s = sets[size_t(k)];
+        const int first = int(out.palette.size());
         for (size_t i = 0; i < 256; ++i) out.palette.push_back(s ? (*s)[i] : kNoColour);
+        if (s)
+            for (const auto& [i, shine] : setShines[size_t(k)]) out.shines.push_back({first + i, shine});
     }
 }
 
@@ -121,6 +132,7 @@ void applyVlabPicture(const VlabPicture& p, Settings& st) {
     }
     if (!p.palette.empty()) {
         st.palette = p.palette;
+        st.shines = p.shines;
         st.initialColour = p.view ? p.view->initialColour.value_or(128) : 128;
         st.colourIncrement = p.view ? p.view->colourIncrement : 1;
         st.gradient = Toggle::Off;

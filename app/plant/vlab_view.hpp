@@ -8,7 +8,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "core/base/shine.hpp"
 
 #include "app/plant/vlab_object.hpp"
 #include "app/plant/vlab_panel.hpp"
@@ -25,6 +28,9 @@ struct VlabPicture {
     // cpfg's colour indices from the reference set on (index k is cpfg's 256 c + k), 0xRRGGBBAA;
     // empty when the object names no material set or colour map.
     std::vector<std::uint32_t> palette;
+    // The palette entries whose material has a specular colour (medit's specular and
+    // shininess, the exponent cpfg gives OpenGL), by index.
+    std::vector<std::pair<int, Shine>> shines;
     std::optional<std::uint32_t> background;  // 0xRRGGBB: colour 0 of the map, or material 0's emission
     int width = 0, height = 0;
     // The view file's `background scene:`, read (vlab_background.hpp); null when none is drawn.

@@ -108,6 +108,36 @@ TEST(VlabPicture, TheMaterialSetColoursThePlant) {
     EXPECT_NE(r.err.find((o.folder / "plant.mat").string() + ": byte 15: a material of 5 bytes; expected 15"), std::string::npos) << r.err;
 }
 
+// A material's specular colour and shininess (the exponent cpfg gives OpenGL) are its
+// highlight, and its transparency lets the background through (issue 53).
+TEST(VlabPicture, AMaterialsSpecularAndTransparencyAreDrawn) {
+    Object o("vlab_shine");
+    o.write("plant.v", kView);
+    // Material 0 emits black (the background); material 5 a red with this specular grey, shininess and transparency.
+    auto material = [](char specular, char shininess, char transparency) {
+        return std::string(15, char(0)) + std::string{5, transparency, 20, 0, 0, char(150), 0, 0, 0, 0, 0, specular, specular, specular, shininess};
+    };
+    auto brightest = [](const sprout::Image& im) {
+        int best = 0;
+        for (size_t i = 0; i + 3 < im.rgba.size(); i += 4) best = std::max(best, im.rgba[i] + im.rgba[i + 1] + im.rgba[i + 2]);
+        return best;
+    };
+    auto redSum = [](const sprout::Image& im) {
+        long sum = 0;
+        for (size_t i = 0; i + 3 < im.rgba.size(); i += 4) sum += im.rgba[i];
+        return sum;
+    };
+    o.cpfg("cpfg -M plant.mat plant.l plant.v");
+    o.write("plant.mat", material(0, 0, 0));
+    const sprout::Image dull = o.render();
+    o.write("plant.mat", material(char(255), 40, 0));
+    const sprout::Image shiny = o.render();
+    EXPECT_GT(brightest(shiny), brightest(dull) + 150) << brightest(shiny) << " against " << brightest(dull);
+    o.write("plant.mat", material(0, 0, char(200)));
+    const sprout::Image glass = o.render();
+    EXPECT_LT(2 * redSum(glass), redSum(dull)) << "a transparency of 200/255 over black is a faint red";
+}
+
 TEST(VlabPicture, TheViewFilesCameraFramesThePicture) {
     Object o("vlab_camera");
     o.cpfg("cpfg -m plant.map plant.l plant.v");
