@@ -87,7 +87,7 @@ std::vector<std::uint64_t> panelTiles(const ImDrawData* d, float width, float he
                 if (!valid) break;
                 // Within the clip rectangle and the strip, in tiles.
                 const float x0 = std::max(lo[0], c.ClipRect.x) - o.x, y0 = std::max(lo[1], c.ClipRect.y) - o.y;
-                const float x1 = std::min(hi[0], c.ClipRect.z) - o.x, y1 = std::min(hi[1], c.ClipRect.w) - o.y;
+                const float x1 = std::min(std::min(hi[0], c.ClipRect.z) - o.x, width), y1 = std::min(std::min(hi[1], c.ClipRect.w) - o.y, height);
                 if (!(x1 >= x0 && y1 >= y0) || x1 < 0 || y1 < 0 || x0 >= width || y0 >= height) continue;
                 const int c0 = std::max(0, int(x0 / kPanelTile)), c1 = std::min(columns - 1, int(x1 / kPanelTile));
                 const int r0 = std::max(0, int(y0 / kPanelTile)), r1 = std::min(rows - 1, int(y1 / kPanelTile));
