@@ -50,12 +50,10 @@ Geometry oneSegmentCurve() {
 }  // namespace
 
 // [SECTION] GL objects: buffers and programs
-// Baked triangles: position, normal, colour (polygon.vert's layout).
-void Renderer::Impl::makeBaked(Buffers& b) {
-    glGenVertexArrays(1, &b.vao);
-    glBindVertexArray(b.vao);
-    glGenBuffers(1, &b.vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, b.vbo);
+// The bound vertex array reads baked triangles' vertices from `vbo`: position, normal, colour
+// (polygon.vert's layout).
+void Renderer::Impl::bakedAttributes(GLuint vbo) {
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     const GLsizei bs = sizeof(mesh::BakedVertex);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, position)));
@@ -63,6 +61,14 @@ void Renderer::Impl::makeBaked(Buffers& b) {
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, normal)));
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, colour)));
+}
+
+// Baked triangles, in a vertex array of their own.
+void Renderer::Impl::makeBaked(Buffers& b) {
+    glGenVertexArrays(1, &b.vao);
+    glBindVertexArray(b.vao);
+    glGenBuffers(1, &b.vbo);
+    bakedAttributes(b.vbo);
     glGenBuffers(1, &b.ebo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, b.ebo);
     glBindVertexArray(0);

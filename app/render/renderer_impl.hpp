@@ -132,6 +132,7 @@ struct Renderer::Impl {
     Quality detail = Quality::Still;
 
     // Baked triangles: position, normal, colour (polygon.vert's layout).
+    static void bakedAttributes(GLuint vbo);
     static void makeBaked(Buffers& b);
     // Lines: position, colour.
     static void makeLines(Buffers& b);

@@ -62,15 +62,7 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
         glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(sorted.size() * 4), sorted.data());
     }
-    // The scene's vertices, read as its own vertex array reads them.
-    glBindBuffer(GL_ARRAY_BUFFER, baked.vbo);
-    const GLsizei bs = sizeof(mesh::BakedVertex);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, position)));
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, normal)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, bs, reinterpret_cast<void*>(offsetof(mesh::BakedVertex, colour)));
+    bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
     const GLuint program = depth ? bakedDepthAlpha : p;
     glUseProgram(program);
     setUniform(program, "uViewProj", viewProj);

@@ -18,31 +18,25 @@ namespace {
 using sprout_test::runSprout;
 using sprout_test::writeTemp;
 
-// The L-Py model's picture, 240x240 seen from the front with no ground or shadows.
-sprout::Image rendered(const std::string& name, const std::string& model) {
-    const std::string path = writeTemp(name + ".lpy", model), png = testing::TempDir() + name + ".png";
-    const auto r = runSprout("render " + path + " -o " + png + " --size 240x240 --view front --no-ground --no-shadows");
+// A model's picture (`name` with its file's extension), `size` pixels square, seen from the
+// front with no ground or shadows.
+sprout::Image renderedFile(const std::string& name, const std::string& text, int size) {
+    const std::string path = writeTemp(name, text), png = testing::TempDir() + name + ".png", side = std::to_string(size);
+    const auto r = runSprout("render " + path + " -o " + png + " --size " + side + "x" + side + " --view front --no-ground --no-shadows");
     sprout::Image image;
     std::string error;
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
     return image;
 }
+
+// An L-Py model's picture, 240x240; a grammar's, 200x200.
+sprout::Image rendered(const std::string& name, const std::string& model) { return renderedFile(name + ".lpy", model, 240); }
+sprout::Image renderedLsys(const std::string& name, const std::string& grammar) { return renderedFile(name + ".lsys", grammar, 200); }
 
 std::array<int, 3> at(const sprout::Image& i, int x, int y) {
     const std::size_t k = (std::size_t(y) * std::size_t(i.width) + std::size_t(x)) * 4;
     return {i.rgba[k], i.rgba[k + 1], i.rgba[k + 2]};
-}
-
-// A grammar's picture, 200x200 seen from the front with no ground or shadows.
-sprout::Image renderedLsys(const std::string& name, const std::string& grammar) {
-    const std::string path = writeTemp(name + ".lsys", grammar), png = testing::TempDir() + name + ".png";
-    const auto r = runSprout("render " + path + " -o " + png + " --size 200x200 --view front --no-ground --no-shadows");
-    sprout::Image image;
-    std::string error;
-    EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
-    return image;
 }
 
 // The brightest pixel's sum of channels within 60 pixels of the picture's centre (the sphere's
