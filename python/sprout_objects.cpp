@@ -31,7 +31,10 @@ void bindMoreObjects(py::module_& m) {
             for (const LpyScalar& sc : lpyScalars(text)) {
                 py::dict d;
                 d["name"] = sc.name;
-                d["kind"] = sc.kind == LpyScalar::Kind::Bool ? "Bool" : sc.kind == LpyScalar::Kind::Integer ? "Integer" : "Float";
+                d["kind"] = sc.kind == LpyScalar::Kind::Bool        ? "Bool"
+                            : sc.kind == LpyScalar::Kind::Integer ? "Integer"
+                            : sc.kind == LpyScalar::Kind::Category ? "Category"
+                                                                   : "Float";
                 d["value"] = sc.value;
                 d["min"] = sc.min;
                 d["max"] = sc.max;
@@ -39,13 +42,16 @@ void bindMoreObjects(py::module_& m) {
             }
             return out;
         },
-        py::arg("text"), "The scalars of an L-Py model's INITIALISATION part: name, kind, value, min, max");
+        py::arg("text"), "The scalars of an L-Py model's INITIALISATION part: name, kind (Integer, Float, Bool, Category: a heading), value, min, max");
     m.def(
         "set_lpy_scalar",
         [](const std::string& text, const std::string& name, double value) {
             if (!std::isfinite(value)) throw py::value_error("a scalar's value is a finite number");
             for (const LpyScalar& sc : lpyScalars(text))
-                if (sc.name == name) return setLpyScalar(text, sc, value);
+                if (sc.name == name) {
+                    if (sc.kind == LpyScalar::Kind::Category) throw py::value_error(name + " is a category, a heading with no value");
+                    return setLpyScalar(text, sc, value);
+                }
             throw py::key_error("no scalar " + name + " in the model's INITIALISATION part");
         },
         py::arg("text"), py::arg("name"), py::arg("value"), "The model's text with that scalar's value written in place");

@@ -85,6 +85,7 @@ std::string number(double v, bool integer) {
 
 std::string tupleText(const LpyScalar& s, bool typed) {
     const std::string name = "'" + s.name + "'";
+    if (s.kind == LpyScalar::Kind::Category) return "(" + name + (typed ? ", 'Category')" : ", None)");
     const bool integer = s.kind == LpyScalar::Kind::Integer;
     if (s.kind == LpyScalar::Kind::Bool) return typed ? "(" + name + ", 'Bool', " + (s.value != 0 ? "True" : "False") + ")"
                                                       : "(" + name + ", " + (s.value != 0 ? "True" : "False") + ", False, True)";

@@ -339,11 +339,20 @@ std::vector<LpyScalar> lpyScalars(std::string_view text) {
         LpyScalar s;
         s.name = *name;
         size_t v = 1;
-        if (auto type = unquote(field(1))) {  // ('NAME', 'Type', value, min, max[, decimals])
+        const auto type = unquote(field(1));
+        std::string_view second = field(1);
+        while (!second.empty() && second.front() == ' ') second.remove_prefix(1);
+        while (!second.empty() && second.back() == ' ') second.remove_suffix(1);
+        if ((type && *type == "Category") || second == "None") {  // a heading, no value
+            s.kind = LpyScalar::Kind::Category;
+            out.push_back(std::move(s));
+            continue;
+        }
+        if (type) {  // ('NAME', 'Type', value, min, max[, decimals])
             if (*type == "Integer") s.kind = LpyScalar::Kind::Integer;
             else if (*type == "Float") s.kind = LpyScalar::Kind::Float;
             else if (*type == "Bool") s.kind = LpyScalar::Kind::Bool;
-            else continue;  // a Category heading
+            else continue;  // an Enum: not edited
             v = 2;
         }
         if (fields.size() <= v) continue;
@@ -372,6 +381,7 @@ std::vector<LpyScalar> lpyScalars(std::string_view text) {
 }
 
 std::string setLpyScalar(std::string_view text, const LpyScalar& scalar, double v) {
+    if (scalar.kind == LpyScalar::Kind::Category) return std::string(text);  // a heading has no value
     std::string value = scalar.kind == LpyScalar::Kind::Bool      ? (v != 0 ? "True" : "False")
                         : scalar.kind == LpyScalar::Kind::Integer ? std::to_string(std::llround(std::clamp(v, -1e15, 1e15)))
                                                                   : formatValue(v);

@@ -38,11 +38,13 @@ std::string setEnvironmentNumber(std::string_view text, const EnvironmentNumber&
 // 3, 1, 20), ('K', 'Float', 0.5, 0, 1, 2), ('ON', 'Bool', True)]`, or L-Py's older form
 // without the type, `('NAME', 3, 1, 20)`): one slider or checkbox each, written back there.
 struct LpyScalar {
-    enum class Kind { Integer, Float, Bool };
+    // Category: a heading of L-Py Studio's (`('Shape', 'Category')`, before 1.1 `('Shape', None)`):
+    // no value; the scalars after it, up to the next, are its own.
+    enum class Kind { Integer, Float, Bool, Category };
     std::string name;
     Kind kind = Kind::Float;
     double value = 0, min = 0, max = 1;
-    size_t begin = 0, end = 0;  // the value's bytes in the text
+    size_t begin = 0, end = 0;  // the value's bytes in the text (a Category: none)
 };
 std::vector<LpyScalar> lpyScalars(std::string_view text);
 std::string setLpyScalar(std::string_view text, const LpyScalar& scalar, double v);

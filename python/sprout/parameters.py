@@ -20,8 +20,8 @@ _MATERIAL_FIELDS = ("ambient", "diffuse", "specular", "emission", "shininess", "
 
 
 class Parameter:
-    """One object of a model: `kind` is curve, function, patch, material, scalar (L-Py) or
-    function, contour (.lsys); `points` (curves, functions, contours, patches), `value`
+    """One object of a model: `kind` is curve, function, patch, material, scalar, category (a
+    heading of L-Py Studio's scalars, no value) (L-Py) or function, contour (.lsys); `points` (curves, functions, contours, patches), `value`
     (scalars) and a material's fields read the model's text now and write into it."""
 
     def __init__(self, plant, kind, name, key):
@@ -70,13 +70,13 @@ class Parameter:
     @property
     def value(self):
         """A scalar's value."""
-        if self._key[0] != "scalar":
+        if self._key[0] != "scalar" or self.kind == "category":
             raise AttributeError("a %s has no value" % self.kind)
         return self._entry()["value"]
 
     @value.setter
     def value(self, v):
-        if self._key[0] != "scalar":
+        if self._key[0] != "scalar" or self.kind == "category":
             raise AttributeError("a %s has no value" % self.kind)
         self._write(_sprout.set_lpy_scalar(self._plant.text, self.name, float(v)))
 
@@ -140,7 +140,7 @@ class Parameters(_abc.Mapping):
         for p in _sprout.lpy_patches(text):
             out[p["name"]] = ("patch", ("patch",))
         for s in _sprout.lpy_scalars(text):
-            out[s["name"]] = ("scalar", ("scalar",))
+            out[s["name"]] = ("category" if s["kind"] == "Category" else "scalar", ("scalar",))
         for m in _sprout.lpy_materials(text):
             if "texture" not in m:
                 out["material %d" % m["index"]] = ("material", ("material", m["index"]))

@@ -76,3 +76,17 @@ def test_the_notebook_editor_moves_a_point_and_redraws():
     box.rows[2].children[1].value = 0.5  # point 2's y
     assert plant.parameters["path"].points[2] == (0.2, 0.5, 1.0)
     assert box.picture.value != picture and box.curve.value != curve, "both pictures redrawn"
+
+
+def test_a_category_is_a_heading_without_a_value():
+    text = GUIDED.replace("scalars = [('H', 'Float', 0.5, 0.0, 1.0, 2)]", "scalars = [('Growth', 'Category'), ('H', 'Float', 0.5, 0.0, 1.0, 2)]")
+    plant = sprout.parse(text, kind="lpy")
+    assert [s["kind"] for s in sprout.lpy_scalars(plant.text)] == ["Category", "Float"]
+    growth = plant.parameters["Growth"]
+    assert growth.kind == "category"
+    with pytest.raises(AttributeError):
+        growth.value
+    with pytest.raises(ValueError):
+        sprout.set_lpy_scalar(plant.text, "Growth", 1.0)
+    plant.parameters["H"].value = 0.25
+    assert "('Growth', 'Category'), ('H', 'Float', 0.25, 0.0, 1.0, 2)" in plant.text

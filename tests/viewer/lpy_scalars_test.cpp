@@ -63,5 +63,29 @@ TEST(LpyScalars, RenamedAndDeleted) {
     EXPECT_NE(last.find("scalars = [('POINTS', 'Bool', True)]"), std::string::npos) << last;
 }
 
+// Studio's headings: ('NAME', 'Category'), before 1.1 ('NAME', None); the scalars after one are
+// its own. Added, renamed and deleted as the others are.
+TEST(LpyScalars, CategoriesAreHeadings) {
+    std::string error;
+    std::string t = addLpyScalar(kModel, scalar("Growth", LpyScalar::Kind::Category, 0, 0, 0), error);
+    EXPECT_NE(t.find("('H', 'Integer', 3, 1, 20), ('Growth', 'Category')]"), std::string::npos) << t;
+    t = addLpyScalar(t, scalar("rate", LpyScalar::Kind::Float, 0.5, 0, 1), error);
+    auto all = lpyScalars(t);
+    ASSERT_EQ(all.size(), 4u);
+    EXPECT_EQ(all[2].kind, LpyScalar::Kind::Category);
+    EXPECT_EQ(all[3].name, "rate");
+    t = renameLpyScalar(t, "Growth", "Shape", error);
+    EXPECT_NE(t.find("('Shape', 'Category'), ('rate'"), std::string::npos) << t;
+    t = removeLpyScalar(t, "Shape", error);
+    EXPECT_NE(t.find("('H', 'Integer', 3, 1, 20), ('rate', 'Float', 0.5, 0.0, 1.0, 2)]"), std::string::npos) << t;
+    const std::string old = "def __initialiseContext__(context):\n\tscalars = [('Looks', None), ('w', 0.5, 0, 1)]\n";
+    all = lpyScalars(old);
+    ASSERT_EQ(all.size(), 2u);
+    EXPECT_EQ(all[0].kind, LpyScalar::Kind::Category) << "L-Py 1.0's heading";
+    EXPECT_EQ(all[1].kind, LpyScalar::Kind::Float);
+    t = addLpyScalar(old, scalar("More", LpyScalar::Kind::Category, 0, 0, 0), error);
+    EXPECT_NE(t.find("('w', 0.5, 0, 1), ('More', None)]"), std::string::npos) << "the list's own form: " << t;
+}
+
 }  // namespace
 }  // namespace sprout

@@ -94,7 +94,7 @@ TEST(TextEdit, LpyScalarsAreSlidersWrittenBackInPlace) {
         "\t           ('Shape', 'Category'), ('OLD', 0.25, 0, 1)]\n"
         "\tcontext[\"__scalars__\"] = scalars\n";
     auto scalars = lpyScalars(text);
-    ASSERT_EQ(scalars.size(), 4u);
+    ASSERT_EQ(scalars.size(), 5u);
     EXPECT_EQ(scalars[0].name, "N");
     EXPECT_EQ(scalars[0].kind, LpyScalar::Kind::Integer);
     EXPECT_EQ(scalars[0].value, 3);
@@ -104,9 +104,12 @@ TEST(TextEdit, LpyScalarsAreSlidersWrittenBackInPlace) {
     EXPECT_EQ(scalars[1].max, 90);
     EXPECT_EQ(scalars[2].kind, LpyScalar::Kind::Bool);
     EXPECT_EQ(scalars[2].value, 1);
-    EXPECT_EQ(scalars[3].name, "OLD");
-    EXPECT_EQ(scalars[3].kind, LpyScalar::Kind::Float);
-    EXPECT_EQ(scalars[3].value, 0.25);
+    EXPECT_EQ(scalars[3].name, "Shape");
+    EXPECT_EQ(scalars[3].kind, LpyScalar::Kind::Category) << "Studio's heading";
+    EXPECT_EQ(setLpyScalar(text, scalars[3], 5), text) << "a heading has no value";
+    EXPECT_EQ(scalars[4].name, "OLD");
+    EXPECT_EQ(scalars[4].kind, LpyScalar::Kind::Float);
+    EXPECT_EQ(scalars[4].value, 0.25);
     std::string moved = setLpyScalar(text, scalars[0], 7.4);
     EXPECT_NE(moved.find("('N', 'Integer', 7, 1, 20)"), std::string::npos) << moved;
     moved = setLpyScalar(text, scalars[1], 30);

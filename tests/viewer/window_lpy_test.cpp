@@ -266,11 +266,15 @@ TEST(Window, AScalarAddedInThePanelIsOneTheModelGrowsWith) {
     std::ofstream(model, std::ios::binary) << "Axiom: _(0.3) F(H)\nderivation length: 1\nproduction:\nendlsystem\n";
     const auto printed = runScript(dir, model.string() + " --size 1000x700",
                                    "trust yes\nwait\ndiagnostics\nscalar-add H Float 3 0 5\nwait\nscalars\ndiagnostics\n"
-                                   "scalar-rename H G\nwait\ndiagnostics\nundo\nwait\ndiagnostics\nsaveas " + saved.string() + "\nquit\n");
+                                   "scalar-rename H G\nwait\ndiagnostics\nundo\nwait\ndiagnostics\n"
+                                   "scalar-add Sizes Category\nwait\nscalars\ndiagnostics\nsaveas " + saved.string() + "\nquit\n");
     EXPECT_EQ(printed, (std::vector<std::string>{"python=allowed", "diagnostic=1:1: NameError: name 'H' is not defined", "plant=none",
                                                  "scalar=H kind=1 value=3 min=0 max=5", "plant=shown",
-                                                 "diagnostic=1:1: NameError: name 'H' is not defined", "plant=shown", "plant=shown"}));
-    EXPECT_NE(fileText(saved).find("\tscalars = [('H', 'Float', 3.0, 0.0, 5.0, 2)]\n\tcontext[\"__scalars__\"] = scalars\n"), std::string::npos);
+                                                 "diagnostic=1:1: NameError: name 'H' is not defined", "plant=shown", "plant=shown",
+                                                 "scalar=H kind=1 value=3 min=0 max=5", "scalar=Sizes kind=3 value=0 min=0 max=1",
+                                                 "plant=shown"}));
+    EXPECT_NE(fileText(saved).find("\tscalars = [('H', 'Float', 3.0, 0.0, 5.0, 2), ('Sizes', 'Category')]\n\tcontext[\"__scalars__\"] = scalars\n"),
+              std::string::npos) << "a heading, as Studio writes it; the model still grows";
 }
 
 // The surface editor: the mouse drags the top corner of a NurbsPatch up in the panel's 3D view;

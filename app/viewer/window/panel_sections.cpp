@@ -104,12 +104,14 @@ static void newScalar(App& app) {
     static int kind = 1;
     static float range[3] = {0.5f, 0, 1};  // value, min, max
     ImGui::InputText("name##new", name, sizeof name);
-    ImGui::Combo("kind", &kind, "Integer\0Float\0Bool\0");
-    if (kind != 2) ImGui::InputFloat3("value, min, max", range, "%.3g");
+    ImGui::Combo("kind", &kind, "Integer\0Float\0Bool\0Category\0");
+    if (kind < 2) ImGui::InputFloat3("value, min, max", range, "%.3g");
+    if (kind == 3) ImGui::TextColored(kDim, "a heading: the scalars added after it are its own");
     if (ImGui::Button("add")) {
         LpyScalar s;
         s.name = name;
-        s.kind = kind == 0 ? LpyScalar::Kind::Integer : kind == 1 ? LpyScalar::Kind::Float : LpyScalar::Kind::Bool;
+        constexpr LpyScalar::Kind kinds[] = {LpyScalar::Kind::Integer, LpyScalar::Kind::Float, LpyScalar::Kind::Bool, LpyScalar::Kind::Category};
+        s.kind = kinds[std::clamp(kind, 0, 3)];
         s.value = range[0], s.min = std::min(range[1], range[2]), s.max = std::max(range[1], range[2]);
         std::string error;
         const std::string text = addLpyScalar(app.state.text(), s, error);
@@ -130,8 +132,21 @@ static void lpyParameters(App& app) {
     const std::string& text = app.state.text();
     int id = 0;
     static std::uint64_t gesture = 0;  // a slider's drag: one undo step
+    bool inCategory = false, shown = true;  // under a heading; whether it is open
     for (const LpyScalar& s : lpyScalars(text)) {
         ImGui::PushID(id++);
+        if (s.kind == LpyScalar::Kind::Category) {  // Studio's heading: the scalars after it, folded
+            if (inCategory && shown) ImGui::TreePop();
+            inCategory = true;
+            shown = ImGui::TreeNodeEx(s.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanAvailWidth);
+            scalarMenu(app, s);
+            ImGui::PopID();
+            continue;
+        }
+        if (!shown) {
+            ImGui::PopID();
+            continue;
+        }
         bool changed = false;
         double value = 0;
         if (s.kind == LpyScalar::Kind::Bool) {
@@ -152,6 +167,7 @@ static void lpyParameters(App& app) {
         scalarMenu(app, s);
         ImGui::PopID();
     }
+    if (inCategory && shown) ImGui::TreePop();
     newScalar(app);
 }
 

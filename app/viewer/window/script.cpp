@@ -29,7 +29,7 @@
 //   material-set <i> <field> <v> [v v]   sets that field of material i as the panel's editor
 //                         does (a colour: three numbers 0..255), one undo step
 //   scalars               prints an L-Py model's scalars: "scalar=NAME kind=K value=V min=A max=B"
-//   scalar-add <name> Integer|Float|Bool <value> [min max] | scalar-rename <name> <new> |
+//   scalar-add <name> Integer|Float|Bool|Category [<value> min max] | scalar-rename <name> <new> |
 //   scalar-delete <name>  as the panel's scalar editor does (one undo step each)
 //   colours               prints a VLab object's colour files and their first entries (RRGGBB)
 //   colour-set <file> <entry> colour|ambient|diffuse|specular|emission <r g b> |

@@ -206,13 +206,16 @@ std::optional<bool> Script::objectCommand(App& app, const std::string& cmd, std:
         return true;
     }
     if (cmd == "scalar-add" || cmd == "scalar-rename" || cmd == "scalar-delete") {
-        // scalar-add NAME Integer|Float|Bool VALUE [MIN MAX]; scalar-rename NAME NEW; scalar-delete NAME
+        // scalar-add NAME Integer|Float|Bool|Category VALUE [MIN MAX]; scalar-rename NAME NEW; scalar-delete NAME
         std::string name, arg, error, text;
         in >> name >> arg;
         if (cmd == "scalar-add") {
             LpyScalar s;
             s.name = name;
-            s.kind = arg == "Integer" ? LpyScalar::Kind::Integer : arg == "Bool" ? LpyScalar::Kind::Bool : LpyScalar::Kind::Float;
+            s.kind = arg == "Integer"    ? LpyScalar::Kind::Integer
+                     : arg == "Bool"     ? LpyScalar::Kind::Bool
+                     : arg == "Category" ? LpyScalar::Kind::Category
+                                         : LpyScalar::Kind::Float;
             in >> s.value >> s.min >> s.max;
             text = addLpyScalar(app.state.text(), s, error);
         } else {
