@@ -10,7 +10,7 @@ mode="${1:-run}"
 
 packages=(
   build-essential cmake pkg-config python3 python3-glad
-  libglm-dev libglfw3-dev libimgui-dev libgl1-mesa-dev libosmesa6-dev libpng-dev
+  libglm-dev libglfw3-dev libimgui-dev libgl1-mesa-dev libosmesa6-dev libpng-dev libjpeg-dev
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   libtinyobjloader-dev libxml2-utils
   python3-dev pybind11-dev

@@ -41,6 +41,34 @@ void bakePolygons(const Mesh& p, BakedMesh& out) {
     const std::uint32_t base = std::uint32_t(out.vertices.size());
     for (size_t i = 0; i < p.positions.size(); ++i) out.vertices.push_back({p.positions[i], p.normals[i], p.colours[i]});
     for (std::uint32_t i : p.indices) out.indices.push_back(base + i);
+    if (!p.texcoords.empty()) {
+        out.texcoords.resize(base);
+        out.texcoords.insert(out.texcoords.end(), p.texcoords.begin(), p.texcoords.end());
+    }
+}
+
+std::vector<TextureRange> texturedLast(BakedMesh& m, std::size_t opaque) {
+    std::vector<TextureRange> out;
+    if (m.texcoords.empty()) return out;
+    opaque = std::min(opaque, m.indices.size() / 3);
+    auto image = [&](std::size_t t) { return m.indices[3 * t] < m.texcoords.size() ? m.texcoords[m.indices[3 * t]].texture : 0u; };
+    std::vector<std::uint32_t> images;
+    for (std::size_t t = 0; t < opaque; ++t)
+        if (const std::uint32_t k = image(t); k && std::find(images.begin(), images.end(), k) == images.end()) images.push_back(k);
+    if (images.empty()) return out;
+    std::vector<std::vector<std::uint32_t>> groups(images.size() + 1);  // 0: untextured
+    for (std::size_t t = 0; t < opaque; ++t) {
+        const std::uint32_t k = image(t);
+        auto& g = groups[k ? std::size_t(std::find(images.begin(), images.end(), k) - images.begin()) + 1 : 0];
+        g.insert(g.end(), m.indices.begin() + std::ptrdiff_t(3 * t), m.indices.begin() + std::ptrdiff_t(3 * t + 3));
+    }
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+        std::copy(groups[k].begin(), groups[k].end(), m.indices.begin() + std::ptrdiff_t(3 * at));
+        if (k > 0) out.push_back({at, groups[k].size() / 3, images[k - 1]});
+        at += groups[k].size() / 3;
+    }
+    return out;
 }
 
 std::size_t translucentLast(BakedMesh& m) {

@@ -24,9 +24,13 @@ static_assert(sizeof(BakedVertex) == 28);
 struct BakedMesh {
     std::vector<BakedVertex> vertices;
     std::vector<std::uint32_t> indices;
+    // Empty when nothing is textured; else texture coordinates for the first vertices (the
+    // others: none), as Mesh::texcoords.
+    std::vector<TexCoord> texcoords;
     void clear() {
         vertices.clear();
         indices.clear();
+        texcoords.clear();
     }
 };
 
@@ -39,6 +43,13 @@ void bakePolygons(const Mesh& polygons, BakedMesh& out);
 // The translucent triangles (one of whose vertices has an alpha below 255) moved after the
 // others, each part in its order; how many they are.
 std::size_t translucentLast(BakedMesh& m);
+// The first `opaque` triangles' textured ones (their first vertex names an image) moved after
+// the others, grouped by image: the groups, in order (their first triangle, how many, the image).
+struct TextureRange {
+    std::size_t first = 0, count = 0;
+    std::uint32_t texture = 0;  // Geometry::textures[texture - 1]
+};
+std::vector<TextureRange> texturedLast(BakedMesh& m, std::size_t opaque);
 // The first `opaque` triangles regrouped: those of colours that do not shine first, then those
 // of each shining colour together (`shines`: by colour, the first listed for one counts).
 // The groups of shining triangles, in order: their first triangle, how many, how they shine.

@@ -103,6 +103,7 @@ bool Renderer::Impl::build(std::string& error) {
     } programs[] = {
         {&bakedProgram, "polygon.vert", "lit.frag"},       {&bakedDepth, "polygon.vert", "depth.frag"},
         {&bakedDepthAlpha, "polygon.vert", "depth_alpha.frag"},
+        {&texturedProgram, "polygon_tex.vert", "lit_tex.frag"}, {&texturedDepth, "polygon_tex.vert", "depth_tex.frag"},
         {&bakedPlainProgram, "polygon.vert", "lit_plain.frag"}, {&bakedVertexLitProgram, "polygon_lit.vert", "colour.frag"},
         {&lineProgram, "line.vert", "line.frag"},          {&curveProgram, "curve.vert", "curve.frag"},
         {&inkLineProgram, "line.vert", "curve.frag"},
@@ -116,7 +117,8 @@ bool Renderer::Impl::build(std::string& error) {
     };
     for (auto& p : programs)
         if (!(*p.out = buildProgram(p.vs, p.fs, error))) return false;
-    for (GLuint p : {bakedProgram, bakedPlainProgram, bakedVertexLitProgram}) glUseProgram(p), plainLight(p);  // never unset
+    for (GLuint p : {bakedProgram, bakedPlainProgram, bakedVertexLitProgram, texturedProgram}) glUseProgram(p), plainLight(p);  // never unset
+    for (GLuint p : {texturedProgram, texturedDepth}) glUseProgram(p), setUniform(p, "uImage", detail::kImageUnit);
     glUseProgram(0);
 
     glGenTextures(1, &coverageTexture);
@@ -131,6 +133,17 @@ bool Renderer::Impl::build(std::string& error) {
     for (Buffers* b : {&lines, &linesBack, &proxy}) makeLines(*b);
     glGenVertexArrays(1, &translucentVao);
     glGenBuffers(1, &translucentEbo);
+    glGenVertexArrays(1, &texturedVao);
+    glGenBuffers(1, &texturedUvs);
+    {
+        const std::uint8_t white[4] = {255, 255, 255, 255};
+        glGenTextures(1, &whiteTexture);
+        glBindTexture(GL_TEXTURE_2D, whiteTexture);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
 
     // Planar curves: screen-space ribbons, segments read from a buffer texture in batches
     // of quads (their width is in pixels, so they cannot be baked).

@@ -71,6 +71,10 @@ struct PreparedScene {
     std::size_t translucent = 0;
     // The opaque triangles of shining materials (Geometry::shines), grouped after the others.
     std::vector<mesh::ShineRange> shines;
+    // The opaque triangles with an image (Geometry::textures, baked.texcoords), grouped by image
+    // after the others and before the translucent ones; the images' paths.
+    std::vector<mesh::TextureRange> textured;
+    std::vector<std::string> textures;
     std::vector<float> lines;            // the thinnest stems: x y z colour, two per line
     std::vector<CylinderInstance> curve; // planar curves: ribbons drawn from these
     // A big planar curve (over 200 k segments): drawn from the geometry's own segments,

@@ -170,7 +170,8 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
     const std::size_t tris = (moving ? proxyIndices : bakedIndices) / 3, lineCount = moving ? proxyCount : this->lineCount;
     if (from < tris && from < to) {
         const std::size_t b = std::min(to, tris), opaque = moving ? tris : tris - translucentTris;
-        if (from < opaque) {
+        const std::size_t plainEnd = moving ? opaque : opaque - std::min(opaque, texturedTris);  // then the textured ones
+        if (from < plainEnd) {
             glUseProgram(p);
             setUniform(p, "uViewProj", viewProj);
             plainLight(p);
@@ -178,7 +179,7 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
             // The plain triangles, then each shining material's with its light (not in the
             // depth pass, nor a moving frame's, which are one draw).
             std::size_t at = from;
-            const std::size_t end = std::min(b, opaque);
+            const std::size_t end = std::min(b, plainEnd);
             for (const mesh::ShineRange& r : moving || p == bakedDepth ? std::vector<mesh::ShineRange>{} : shines) {
                 const std::size_t r0 = std::max(r.first, at), r1 = std::min(r.first + r.count, end);
                 if (r0 >= r1) continue;
@@ -191,6 +192,7 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
             if (end > at)
                 glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - at)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * at * sizeof(std::uint32_t)));
         }
+        if (b > plainEnd && from < opaque) drawTextured(viewProj, p, std::max(from, plainEnd), std::min(b, opaque));
         if (b > opaque) drawTranslucent(viewProj, p, std::max(from, opaque) - opaque, b - opaque);
         stats.triangles += b - from;
     }

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <future>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <glm/vec3.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "app/mesh/texture_images.hpp"
 #include "app/render/gl.hpp"
 #include "app/render/renderer.hpp"
 
@@ -22,6 +24,7 @@ namespace sprout::render {
 namespace detail {
 
 inline constexpr int kShadowSize = 2048;
+inline constexpr int kImageUnit = 5;  // the texture unit of a textured triangle's image
 // The ground's shadow texture (Impl::ensureGroundShadow), texels across the ground's square:
 // about a pixel of a moving frame's ground each (those are drawn at a quarter to a half of
 // the window each way).
@@ -172,6 +175,26 @@ struct Renderer::Impl {
     void plainLight(GLuint program);
     void shineLight(GLuint program, const Shine& shine);
     void drawTranslucent(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
+    // The scene's textured triangles (PreparedScene::textured), before the translucent ones in
+    // `baked`: each group with its image (a 1-pixel white one for an image that cannot be
+    // read: the triangles in their colour), through a vertex array that adds their u, v from a
+    // buffer of their own (none for a scene without textures). Images are made into GL
+    // textures once a path (again when the file changes: mesh::textureImage).
+    struct TexturedDraw {
+        std::size_t first = 0, count = 0;
+        GLuint texture = 0;
+    };
+    std::vector<TexturedDraw> textured;
+    std::size_t texturedTris = 0;
+    GLuint texturedVao = 0, texturedUvs = 0, texturedProgram = 0, texturedDepth = 0, whiteTexture = 0;
+    struct TextureObject {
+        std::shared_ptr<const mesh::TextureImage> image;
+        GLuint texture = 0;
+    };
+    std::map<std::string, TextureObject> textureObjects;
+    void adoptTextured(const PreparedScene& p);
+    GLuint textureFor(const std::string& path);
+    void drawTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;

@@ -1,8 +1,10 @@
 // The materials' own drawing (issue 53): the lit programs' light for plain and shining
-// surfaces, and the translucent triangles drawn farthest first from their own index buffer.
+// surfaces, the translucent triangles drawn farthest first from their own index buffer, and
+// the textured ones with their images.
 // Apart from renderer_draw.cpp's passes, which call them for their ranges of triangles.
 #include <algorithm>
 #include <cstddef>
+#include <cstdio>
 #include <cstdint>
 #include <vector>
 #include <glm/geometric.hpp>
@@ -79,6 +81,68 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
     }
+    glBindVertexArray(0);
+}
+
+void Renderer::Impl::adoptTextured(const PreparedScene& p) {
+    textured.clear();
+    texturedTris = 0;
+    if (p.textured.empty()) return;
+    std::vector<float> uv(2 * p.baked.vertices.size(), 0.0f);
+    for (std::size_t k = 0; k < p.baked.texcoords.size() && k < p.baked.vertices.size(); ++k)
+        uv[2 * k] = p.baked.texcoords[k].u, uv[2 * k + 1] = p.baked.texcoords[k].v;
+    glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uv.size() * 4), uv.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    for (const mesh::TextureRange& r : p.textured) {
+        const GLuint t = r.texture >= 1 && r.texture <= p.textures.size() ? textureFor(p.textures[r.texture - 1]) : 0;
+        textured.push_back({r.first, r.count, t ? t : whiteTexture});
+        texturedTris += r.count;
+    }
+}
+
+GLuint Renderer::Impl::textureFor(const std::string& path) {
+    std::shared_ptr<const mesh::TextureImage> image = mesh::textureImage(path);
+    TextureObject& o = textureObjects[path];
+    if (o.image == image) return o.texture;
+    if (!image->error.empty() && (!o.image || o.image->error != image->error))
+        std::fprintf(stderr, "warning: %s: drawn in its colour\n", image->error.c_str());
+    o.image = image;
+    if (image->error.empty() && !o.texture) glGenTextures(1, &o.texture);
+    if (!image->error.empty()) return o.texture = 0;
+    glBindTexture(GL_TEXTURE_2D, o.texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->rgba.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // PlantGL's repeatS, repeatT
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return o.texture;
+}
+
+void Renderer::Impl::drawTextured(const glm::mat4& viewProj, GLuint p, std::size_t from, std::size_t to) {
+    const bool depth = p == bakedDepth;
+    const GLuint program = depth ? texturedDepth : texturedProgram;
+    glUseProgram(program);
+    setUniform(program, "uViewProj", viewProj);
+    glBindVertexArray(texturedVao);
+    bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
+    glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 8, nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, baked.ebo);
+    glActiveTexture(GL_TEXTURE0 + detail::kImageUnit);
+    for (const TexturedDraw& r : textured) {
+        const std::size_t a = std::max(from, r.first), b = std::min(to, r.first + r.count);
+        if (a >= b) continue;
+        glBindTexture(GL_TEXTURE_2D, r.texture);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - a)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * a * sizeof(std::uint32_t)));
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
     glBindVertexArray(0);
 }
 

@@ -148,7 +148,11 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     }
     mesh::bakePolygons(g.polygons, b);
     out.translucent = mesh::translucentLast(b);
-    out.shines = mesh::groupShines(b, b.indices.size() / 3 - out.translucent, g.shines);
+    std::size_t plain = b.indices.size() / 3 - out.translucent;
+    out.textured = mesh::texturedLast(b, plain);
+    for (const mesh::TextureRange& r : out.textured) plain -= r.count;
+    out.textures = g.textures;
+    out.shines = mesh::groupShines(b, plain, g.shines);
 }
 
 namespace {

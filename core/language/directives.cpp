@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "core/base/bounded.hpp"
@@ -127,8 +128,8 @@ void palette(Parser& p, const SourceLine& line, std::string_view value) {
     }
 }
 
-// material: INDEX #rrggbb [transparency T] [specular #rrggbb] [shininess S] [emission #rrggbb]:
-// a palette entry, how much light it lets through, and how it shines.
+// material: INDEX #rrggbb [transparency T] [specular #rrggbb] [shininess S] [emission #rrggbb]
+// [texture FILE]: a palette entry, how much light it lets through, how it shines, its image.
 void material(Parser& p, const SourceLine& line, std::string_view value) {
     const std::vector<std::string_view> w = words(value);
     const char* example = "as in 'material: 3 #3070ff transparency 0.5'";
@@ -140,8 +141,19 @@ void material(Parser& p, const SourceLine& line, std::string_view value) {
     if (!c) return p.sink().error(line, w.size() > 1 ? w[1] : value, std::string("then its colour as #rrggbb, ") + example);
     std::uint32_t rgba = *c;
     Shine shine;
+    std::string texture;
     for (size_t k = 2; k < w.size(); k += 2) {
         const std::string_view field = w[k], v = k + 1 < w.size() ? w[k + 1] : w[k];
+        if (field == "texture") {  // an image file, beside the model or a path
+            if (k + 1 >= w.size()) return p.sink().error(line, field, "texture is followed by an image file, as in 'texture bark.png'");
+            texture = std::string(v);
+            const std::string& folder = p.options().folder;
+            if (!folder.empty() && texture.front() != '/') texture = folder + "/" + texture;
+            std::error_code ec;
+            if (!folder.empty() && !std::filesystem::is_regular_file(texture, ec))
+                p.sink().warning(line, v, "no image file '" + std::string(v) + "' beside the model: drawn in its colour");
+            continue;
+        }
         if (field == "specular" || field == "emission") {
             const auto rgb = k + 1 < w.size() ? colour(v) : std::nullopt;
             if (!rgb) return p.sink().error(line, v, std::string(field) + " is a colour, #rrggbb");
@@ -150,7 +162,7 @@ void material(Parser& p, const SourceLine& line, std::string_view value) {
         }
         if (field != "transparency" && field != "shininess")
             return p.sink().error(line, field, "'" + std::string(field) +
-                                                   "' is not a material's field: transparency, specular, shininess, emission");
+                                                   "' is not a material's field: transparency, specular, shininess, emission, texture");
         const auto t = k + 1 < w.size() ? p.constant(line, v) : std::nullopt;
         if (!t || !inRange(*t, 0, 1)) return p.sink().error(line, v, std::string(field) + " is from 0 to 1");
         if (field == "shininess") shine.shininess = float(*t);
@@ -158,6 +170,7 @@ void material(Parser& p, const SourceLine& line, std::string_view value) {
     }
     p.grammar().settings.materials.push_back({index, rgba});
     if (!shine.plain()) p.grammar().settings.shines.push_back({index, shine});
+    if (!texture.empty()) p.grammar().settings.textures.push_back({index, std::move(texture)});
 }
 
 void gradient(Parser& p, const SourceLine& line, std::string_view value) {

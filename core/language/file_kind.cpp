@@ -187,6 +187,7 @@ ParseOptions parseOptionsFor(FileKind kind, const std::string& path) {
         const size_t slash = path.find_last_of('/');
         o.include = includeFromFolder(slash == std::string::npos ? "." : path.substr(0, slash));
         o.fileName = slash == std::string::npos ? path : path.substr(slash + 1);
+        o.folder = slash == std::string::npos ? "." : path.substr(0, slash);
     }
     return o;
 }

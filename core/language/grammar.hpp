@@ -87,6 +87,11 @@ struct Settings {
     std::vector<MaterialEntry> materials;
     // The palette entries that shine (specular, shininess, emission), by index.
     std::vector<std::pair<int, Shine>> shines;
+    // The palette entries drawn with an image (`material: ... texture FILE`, L-Py's Texture2D and
+    // ImageTexture materials), by index: the image's path, relative to the model's folder or
+    // absolute. Surfaces with texture coordinates (patches, cpfg surfaces, generalized cylinders)
+    // show it, times the entry's colour; the others keep the colour.
+    std::vector<std::pair<int, std::string>> textures;
     // cpfg's colour index and width steps (a VLab object's view file): the index the turtle
     // starts with (-1: none, colours by branch order), what `;` and `,` add, and, when set,
     // what `!` and `#` subtract and add (instead of widthFactor's product).
@@ -278,6 +283,7 @@ struct ParseOptions {
     bool cpfg = false;       // the cpfg / lpfg / L-Py family instead of .lsys
     IncludeReader include;   // null: `#include` is an error (text typed with no folder)
     std::string fileName;    // the grammar's own name, so that it cannot include itself
+    std::string folder;      // its folder ("": text typed with no file): texture images beside it
     bool explorer = false;   // an L-system Explorer file (`.ls`, not Lparser's): that tool's defaults
     // cpfg's own lexer (lsys_input.l): a newline followed by a tab does not end a line, so a
     // line that starts with a tab goes on the one before (a successor over several lines).

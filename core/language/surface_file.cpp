@@ -73,6 +73,7 @@ std::optional<SurfaceFile> parseSurfaceFile(std::string_view text, std::string& 
                 n = glm::length(n) > 1e-12f ? glm::normalize(n) : u;
                 out.positions.push_back(glm::vec3(glm::dot(q, h), glm::dot(q, l), glm::dot(q, u)) / size);
                 out.normals.push_back({glm::dot(n, h), glm::dot(n, l), glm::dot(n, u)});
+                out.uvs.push_back({float(i) / kTessellation, float(j) / kTessellation});  // the patch's own (cpfg's per patch)
             }
         const std::uint32_t row = kTessellation + 1;
         for (std::uint32_t i = 0; i < kTessellation; ++i)

@@ -2,6 +2,7 @@
 // cpfg's surface files (`.s`): bicubic Bezier patches with a contact point, a heading, an up
 // vector and a size, placed by a `~name` module in the turtle's frame (cpfg manual, "Surface
 // specification"). Parsed once with the grammar; drawn into the plant's polygon mesh.
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,6 +27,9 @@ struct SurfaceFile {
     // Each position's own colour (0xRRGGBBAA; 0: the turtle's), where the surface has colours
     // of its own (L-Py's @g of Shapes in their Materials); empty: all the turtle's.
     std::vector<std::uint32_t> colours;
+    // Each position's place in a texture image (u, v; PlantGL's and cpfg's coordinates of the
+    // surface), where the surface has them; empty: none, never textured.
+    std::vector<std::array<float, 2>> uvs;
 };
 
 // `error` says what is wrong and on which line when the text is not a surface file.

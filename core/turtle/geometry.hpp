@@ -38,16 +38,27 @@ struct SurfaceInstance {
 };
 static_assert(sizeof(SurfaceInstance) == 48);
 
+// A textured vertex's place in its image (u, v after the model's texture transforms; the
+// image repeats outside [0, 1]) and the image: Geometry::textures[texture - 1]; 0: none.
+struct TexCoord {
+    float u = 0, v = 0;
+    std::uint32_t texture = 0;
+};
+
 struct Mesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<std::uint32_t> colours;
     std::vector<std::uint32_t> indices;  // triangles
+    // Empty when nothing is textured; else one a position (untextured ones: texture 0). A
+    // triangle is textured when its first vertex is.
+    std::vector<TexCoord> texcoords;
     void clear() {
         positions.clear();
         normals.clear();
         colours.clear();
         indices.clear();
+        texcoords.clear();
     }
 };
 
@@ -80,6 +91,9 @@ struct Geometry {
     // The colours (0xRRGGBBAA) whose surfaces shine (a material's specular, shininess and
     // emission); the first listed for a colour counts. The others are lit plainly.
     std::vector<std::pair<std::uint32_t, Shine>> shines;
+    // The images textured vertices name (TexCoord::texture - 1): paths as the model's folder
+    // resolves them. The renderer reads each once; one it cannot read is drawn in its colour.
+    std::vector<std::string> textures;
     // A VLab object's background scene (cpfg's `background scene:`, background_scene.hpp): its
     // triangles are in `polygons`, the vertices from `backdropFirst` (`backdropCount` of them).
     // `bounds` leaves them out, as cpfg frames the plant alone; `backdrop` holds theirs.

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "core/language/successor_table.hpp"
 #include "core/turtle/generalized_cylinder.hpp"
@@ -281,6 +282,27 @@ private:
     std::map<double, Patch> m_patches;
     [[gnu::noinline]] void patchCommand(const State& t, Act act, const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
+    // Textures (Settings::textures): per palette index, its image's id in Geometry::textures
+    // (1-based; 0: none); and the texture transforms the turtle's State::texture names (PlantGL's
+    // Texture2DTransformation: u, v scaled, turned about a centre, then moved), the first none.
+    std::vector<std::uint32_t> m_paletteTexture;
+    struct TexTransform {
+        glm::vec2 scale{1, 1}, translation{0, 0}, centre{0.5f, 0.5f};
+        float angle = 0;  // radians
+        glm::vec2 operator()(glm::vec2 uv) const {
+            uv = uv * scale - centre;
+            const float c = std::cos(angle), s = std::sin(angle);
+            return glm::vec2(c * uv.x - s * uv.y, s * uv.x + c * uv.y) + centre + translation;
+        }
+    };
+    std::vector<TexTransform> m_texTransforms{TexTransform{}};
+    [[gnu::noinline]] void textureCommand(State& t, Act act, const double* p, int arity);
+    // The image id of the surfaces turtle t draws now (its palette entry's), 0: none.
+    std::uint32_t textureOf(const State& t) const {
+        if (m_paletteTexture.empty() || t.colour < 0) return 0;
+        const int n = int(m_paletteTexture.size());
+        return t.colour < n ? m_paletteTexture[size_t(t.colour)] : 0;
+    }
     struct OpenCurve {
         GeneralizedCylinder curve;
         int subdivisions = -4;  // pieces of each span (-4: up to 4, as it bends), until an @Gc(n) says

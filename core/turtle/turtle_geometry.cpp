@@ -7,6 +7,8 @@
 //   [SECTION] cpfg's point and heading commands
 //   [SECTION] Polygons and kept surfaces
 //   [SECTION] Surfaces, the finish, bounds
+#include <algorithm>
+
 #include "core/base/bounded.hpp"
 #include "core/turtle/turtle_impl.hpp"
 
@@ -318,6 +320,32 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
     addBound(t.pos + t.H * s.size);
 }
 
+// L-Py's texture transforms: a new transform from the turtle's, with the module's change.
+void Turtle::textureCommand(State& t, Act act, const double* p, int arity) {
+    if (!p || arity < 1 || !finite(p, arity)) return;
+    TexTransform x = m_texTransforms[size_t(t.texture)];
+    auto at = [&](int k, float otherwise) { return k < arity ? float(p[k]) : otherwise; };
+    switch (act) {
+        case Act::TextureScale: x.scale = {at(0, 1), at(1, at(0, 1))}; break;
+        case Act::TextureUScale: x.scale.x = at(0, 1); break;
+        case Act::TextureVScale: x.scale.y = at(0, 1); break;
+        case Act::TextureTranslation: x.translation = {at(0, 0), at(1, at(0, 0))}; break;
+        case Act::TextureRotation:
+            x.angle = at(0, 0) * kPi / 180;
+            x.centre = {at(1, 0.5f), at(2, at(1, 0.5f))};
+            break;
+        default:  // TextureTransformation(su, sv, tu, tv, angle, cu, cv)
+            x.scale = {at(0, 1), at(1, 1)};
+            x.translation = {at(2, 0), at(3, 0)};
+            x.angle = at(4, 0) * kPi / 180;
+            x.centre = {at(5, 0.5f), at(6, 0.5f)};
+            break;
+    }
+    if (m_texTransforms.size() >= 32767) m_texTransforms.resize(1);  // the state keeps it in 16 bits: start over
+    m_texTransforms.push_back(x);
+    t.texture = std::int16_t(m_texTransforms.size() - 1);
+}
+
 void Turtle::finish() {
     Geometry& out = m_out;
     for (const auto& [index, shine] : m_g.settings.shines)  // what shines, by the colour drawn
@@ -368,6 +396,15 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
         m.colours.push_back(!m_level && k < f.colours.size() && f.colours[k] ? f.colours[k] : col);
         addBound(fromGlm(m.positions.back()));
     }
+    if (const std::uint32_t image = textureOf(t); image && !m_level && f.uvs.size() == f.positions.size()) {
+        // Its texture coordinates, through the turtle's texture transform.
+        const TexTransform& tx = m_texTransforms[size_t(t.texture)];
+        m.texcoords.resize(base);
+        for (const auto& uv : f.uvs) {
+            const glm::vec2 q = tx(glm::vec2(uv[0], uv[1]));
+            m.texcoords.push_back({q.x, q.y, image});
+        }
+    }
     for (std::uint32_t i : f.indices) m.indices.push_back(base + i);
     for (size_t k = 0; k + 1 < f.lines.size(); k += 2) {
         const v4 a = fromGlm(pos + scale * turned(f.lines[k])), b = fromGlm(pos + scale * turned(f.lines[k + 1]));
@@ -398,7 +435,7 @@ void Bounds::add(const Bounds& b) {
 std::uint64_t Geometry::bytes() const {
     std::uint64_t b = std::uint64_t(cylinders.size()) * sizeof(CylinderInstance) + std::uint64_t(surfaces.size()) * sizeof(SurfaceInstance);
     b += (polygons.positions.size() + polygons.normals.size()) * sizeof(glm::vec3) +
-         (polygons.colours.size() + polygons.indices.size()) * sizeof(std::uint32_t);
+         (polygons.colours.size() + polygons.indices.size()) * sizeof(std::uint32_t) + polygons.texcoords.size() * sizeof(TexCoord);
     for (const Label& l : labels) b += sizeof(Label) + l.text.size();
     return b;
 }
@@ -409,6 +446,7 @@ void Geometry::clear() {
     polygons.clear();
     labels.clear();
     shines.clear();
+    textures.clear();
     bounds = {};
     backdrop = {};
     backdropFirst = backdropCount = 0;
@@ -445,6 +483,19 @@ void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& 
     }
     for (auto i : g.polygons.indices) out.polygons.indices.push_back(base + i);
     out.shines.insert(out.shines.end(), g.shines.begin(), g.shines.end());
+    if (!g.polygons.texcoords.empty()) {  // its images among the drawing's, each once
+        std::vector<std::uint32_t> id(g.textures.size() + 1, 0);
+        for (size_t k = 0; k < g.textures.size(); ++k) {
+            const auto found = std::find(out.textures.begin(), out.textures.end(), g.textures[k]);
+            id[k + 1] = std::uint32_t(found - out.textures.begin()) + 1;
+            if (found == out.textures.end()) out.textures.push_back(g.textures[k]);
+        }
+        out.polygons.texcoords.resize(base);
+        for (TexCoord c : g.polygons.texcoords) {
+            c.texture = c.texture < id.size() ? id[c.texture] : 0;
+            out.polygons.texcoords.push_back(c);
+        }
+    }
 }
 
 }  // namespace sprout

@@ -36,6 +36,9 @@ enum class Act : std::uint8_t {
     RadiusTangents,  // cpfg's @Gr(a1, l1, a2, l2) and @Gr(flag): the tubes' radius along a span
     ElasticSet, ElasticInc, ElasticDec,  // cpfg's @Ts, @Ti, @Td(id, value): a tropism's elasticity
     PatchStart, PatchPoint, PatchDraw,   // cpfg's @PS(id, basis), @PC(id, row, col), @PD(id, s, t)
+    // L-Py's texture transforms (PlantGL's turtle): how the image lies on the textured surfaces
+    // drawn after them.
+    TextureScale, TextureUScale, TextureVScale, TextureTranslation, TextureRotation, TextureTransformation,
 };
 
 inline Act actionOf(const std::string& name) {
@@ -71,6 +74,12 @@ inline Act actionOf(const std::string& name) {
         {"SetContour", Act::Section},
         // A text at the turtle (Settings::labels; its size in pixels, 13 by default).
         {"Label", Act::Label},
+        // The texture transforms: TextureScale(su[, sv]), TextureUScale(su), TextureVScale(sv),
+        // TextureTranslation(tu, tv), TextureRotation(degrees[, cu, cv]),
+        // TextureTransformation(su, sv, tu, tv, degrees, cu, cv) (PlantGL's Texture2DTransformation).
+        {"TextureScale", Act::TextureScale}, {"TextureUScale", Act::TextureUScale}, {"TextureVScale", Act::TextureVScale},
+        {"TextureVCoeff", Act::TextureVScale}, {"TextureTranslation", Act::TextureTranslation},
+        {"TextureRotation", Act::TextureRotation}, {"TextureTransformation", Act::TextureTransformation},
     };
     for (const auto& [n, a] : table)
         if (name == n) return a;
@@ -108,6 +117,7 @@ struct State {
     std::int16_t curve = -1;  // the generalized cylinder this branch draws into (@Gs); -1: none
     std::int16_t section = -1;  // Settings::sections index of the next @Gs's cross-section; -1: round
     std::int16_t sides = 0;     // cpfg's @!(n) for the view file's contours; 0: `contour sides:`
+    std::int16_t texture = 0;   // Turtle::m_texTransforms' entry the textured surfaces take; 0: none
     float angleScale = 1;     // @A: factor on the default turning angle
     // Resolved when the colour or the branch order changes: measured faster than looking it
     // up at every segment, even though it makes the state 80 bytes instead of 64.

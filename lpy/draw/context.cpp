@@ -3,8 +3,10 @@
 // turtle's state where they stand.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 #include "lpy/draw/draw.hpp"
@@ -47,6 +49,29 @@ Shine materialShine(py::handle m) {
     return out;
 }
 
+// A texture material's image file (Texture2D(image=ImageTexture(..)), or an ImageTexture given
+// as the material) and its colour (Texture2D's baseColor, white by default: the image as it
+// is); "" for a plain material.
+std::string textureFile(py::handle m, std::uint32_t& colour) {
+    try {
+        py::object image = py::reinterpret_borrow<py::object>(m);
+        if (py::hasattr(m, "image") && !py::hasattr(m, "filename")) image = m.attr("image");
+        if (image.is_none() || !py::hasattr(image, "filename")) return "";
+        const std::string file = py::str(image.attr("filename")).cast<std::string>();
+        colour = 0xFFFFFFFFu;
+        if (py::hasattr(m, "baseColor")) {  // PlantGL's Color4: its alpha is a transparency
+            const py::object c = m.attr("baseColor");
+            auto ch = [&](int k) { return std::uint32_t(std::clamp(c[py::int_(k)].cast<double>(), 0.0, 255.0)); };
+            colour = ch(0) << 24 | ch(1) << 16 | ch(2) << 8 | (255 - ch(3));
+        }
+        return file;
+    } catch (py::error_already_set&) {
+        return "";
+    } catch (py::cast_error&) {
+        return "";
+    }
+}
+
 }  // namespace
 
 TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
@@ -58,10 +83,29 @@ TurtleDefaults turtleDefaults(const py::module_& lpyModule) {
         const int i = item.first.cast<int>();
         if (i < 0 || i > 255) continue;
         if (size_t(i) >= d.materials.size()) d.materials.resize(size_t(i) + 1, 0xA0A0A0FF);
+        std::uint32_t base = 0;
+        if (std::string file = textureFile(item.second, base); !file.empty()) {
+            d.materials[size_t(i)] = base;
+            d.textures.push_back({i, std::move(file)});
+            continue;
+        }
         d.materials[size_t(i)] = materialColour(item.second);
         if (const Shine shine = materialShine(item.second); !shine.plain()) d.shines.push_back({i, shine});
     }
     return d;
+}
+
+void placeTextures(TurtleDefaults& d, const std::string& modelFile, std::vector<Diagnostic>& warnings) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path folder = modelFile.empty() ? fs::path() : fs::path(modelFile).parent_path();
+    for (auto& [index, file] : d.textures) {
+        const std::string named = file;
+        if (fs::path(file).is_relative() && !folder.empty()) file = (folder / file).string();
+        if (!fs::is_regular_file(file, ec))
+            warnings.push_back({0, 0, "material " + std::to_string(index) + "'s texture image '" + named + "' is not there: drawn in its colour",
+                                Severity::Warning});
+    }
 }
 
 // L-Py's query pre-pass (src/cpp/lsystem.cpp `__step`, module.cpp `_setValues`): the string

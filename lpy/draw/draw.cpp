@@ -84,6 +84,7 @@ Drawing::Drawing(const TurtleDefaults& d) : g(std::make_shared<Grammar>()), w(*g
     g->settings.view = ViewHint::Solid;    // PlantGL draws every F as a cylinder: a flat model is no line drawing
     g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
     g->settings.shines = d.shines;
+    g->settings.textures = d.textures;
     colours = int(g->settings.palette.size());
     st.width = d.width;
     st.colour = std::clamp(d.colour, 0, colours - 1);
@@ -254,6 +255,9 @@ bool drawMove(Drawing& dr, const Module<Source>& m, const TurtleDefaults& d) {
         case Op::MoveTo:
             if (m.p.size() >= 3) dr.w.put("@M", {m.p[1], m.p[2], m.p[0]});
             else if (m.p.empty()) dr.w.put("@M", {0, 0, 0});
+            break;
+        case Op::Numbers:
+            if (!m.p.empty()) dr.w.put(m.mp.sprout, m.p);
             break;
         case Op::Point:  // L-Py's x y z are Sprout's z x y
             if (m.p.size() >= 3) dr.w.put(m.mp.sprout, {m.p[1], m.p[2], m.p[0]});

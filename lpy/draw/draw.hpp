@@ -22,6 +22,7 @@ struct TurtleDefaults {
     int colour = 1;       // material index
     std::vector<std::uint32_t> materials;  // 0xRRGGBBAA by index; L-Py's seven by default
     std::vector<std::pair<int, Shine>> shines;  // the materials that shine (specular, emission), by index
+    std::vector<std::pair<int, std::string>> textures;  // the texture materials' image files, by index, as the model names them
 };
 
 // L-Py's default materials (PlantGL's turtle: grey, brown, green, red, yellow, blue, purple),
@@ -43,6 +44,9 @@ std::shared_ptr<Grammar> drawable(const NumString& s, const ModuleClasses& class
 // The model's turtle settings and materials as its context holds them (context.cpp: openalea.lpy's
 // `_state`).
 TurtleDefaults turtleDefaults(const py::module_& lpyModule);
+// The texture materials' images, where relative, found beside the model file (L-Py Studio runs
+// a model in its folder); a warning for each that is not there (drawn in its colour).
+void placeTextures(TurtleDefaults& d, const std::string& modelFile, std::vector<Diagnostic>& warnings);
 // L-Py's query modules (?P ?H ...) given the turtle's state where they stand (each step,
 // before the rules, when a rule reads one).
 void fillQueries(Engine& engine, LString& s, const TurtleDefaults& d);

@@ -29,15 +29,17 @@ using pynum::numbers;
 class Writer {
 public:
     Writer(Grammar& g) : m_g(g) {}
-    void put(const char* name, std::initializer_list<double> params) {
-        const int arity = int(std::min<size_t>(params.size(), size_t(Alphabet::kMaxArity)));
+    void put(const char* name, std::initializer_list<double> params) { put(name, params.begin(), params.size()); }
+    void put(const char* name, const std::vector<double>& params) { put(name, params.data(), params.size()); }
+    void put(const char* name, const double* params, size_t count) {
+        const int arity = int(std::min<size_t>(count, size_t(Alphabet::kMaxArity)));
         // Names are the mapping's literals: each (name, arity) is interned once.
         std::optional<SymbolId>& id = m_ids[{name, arity}];
         if (!id) id = m_g.alphabet.intern(name, arity);
         if (!id) return;
         m_g.axiom.symbols.push_back(*id);
         for (int k = 0; k < arity; ++k) {
-            const double v = params.begin()[k];
+            const double v = params[k];
             m_g.axiom.params.push_back(std::isfinite(v) ? v : 0.0);
         }
     }

@@ -18,7 +18,7 @@ namespace {
 // A shape's triangles in the drawing's frame: normals from the faces around each point (by
 // area); a curve's stems alone (no triangles) keep no points.
 void finishSurface(SurfaceFile& sf) {
-    if (sf.indices.empty()) sf.positions.clear(), sf.colours.clear();
+    if (sf.indices.empty()) sf.positions.clear(), sf.colours.clear(), sf.uvs.clear();
     sf.normals.assign(sf.positions.size(), glm::vec3(0));
     for (size_t i = 0; i + 2 < sf.indices.size(); i += 3) {
         const glm::vec3 &a = sf.positions[sf.indices[i]], &b = sf.positions[sf.indices[i + 1]], &c = sf.positions[sf.indices[i + 2]];
@@ -85,6 +85,7 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
         if (ok) sf->lines.push_back(sf->positions[size_t(e[0])]), sf->lines.push_back(sf->positions[size_t(e[1])]);
     }
     if (ok && mesh.colours.size() == np) sf->colours = mesh.colours;
+    if (ok && mesh.uvs.size() == np) sf->uvs = mesh.uvs;
     if (ok && (!sf->indices.empty() || !sf->lines.empty())) keep();
     return it->second;
 }

@@ -27,6 +27,8 @@ struct ShapeMesh {
     // Each point's colour (0xRRGGBBAA) where a Shape's Material gave it, as PglTurtle::pglShape
     // draws a shape in its own appearance; 0 (or none at all): the turtle's colour.
     std::vector<std::uint32_t> colours;
+    // Each point's texture coordinates where the shape has them (patches); else none.
+    std::vector<std::array<float, 2>> uvs;
 };
 ShapeMesh shapeMesh(PyObject* shape);
 // A Shape's colour as PglTurtle::pglShape draws it: its Material's diffuseColor() and, as

@@ -461,7 +461,9 @@ ShapeMesh patch(PyObject* obj, bool bezier) {
         if (nv < 0) raise();
         for (const curves::Point& q : patchGrid(rows.p, int(nu - 1), int(nv - 1), int(n))) points.push_back(q);
     }
-    return gridMesh(std::move(points), n);
+    ShapeMesh m = gridMesh(std::move(points), n);
+    m.uvs = pglmath::gridTexCoords(m.points, n);
+    return m;
 }
 
 // [SECTION] The crown (AsymmetricHull)

@@ -3,6 +3,7 @@
 // axisRotation and products), for meshes.cpp: the same numbers in the same order.
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace sprout::lpy::pglmath {
 
@@ -36,6 +37,27 @@ inline V3 times(const M3& m, const V3& p) {
     V3 out{};
     for (int i = 0; i < 3; ++i) out[i] = 0.0 + m[i][0] * p[0] + m[i][1] * p[1] + m[i][2] * p[2];
     return out;
+}
+
+// A patch's texture coordinates as PlantGL's Discretizer gives them (gridTexCoord): for the
+// (n + 1)^2 points, i outer, u the length along each row j so far over the row's (from 0 to 1),
+// v the same along each column.
+inline std::vector<std::array<float, 2>> gridTexCoords(const std::vector<V3>& pts, long n) {
+    const size_t w = size_t(n + 1);
+    std::vector<std::array<float, 2>> uv(pts.size(), {0, 0});
+    if (pts.size() != w * w) return {};
+    auto dist = [&](size_t a, size_t b) { return std::hypot(pts[a][0] - pts[b][0], pts[a][1] - pts[b][1], pts[a][2] - pts[b][2]); };
+    for (int along = 0; along < 2; ++along)
+        for (size_t line = 0; line < w; ++line) {
+            auto at = [&](size_t k) { return along == 0 ? line * w + k : k * w + line; };
+            double total = 0, sofar = 0;
+            for (size_t k = 1; k < w; ++k) total += dist(at(k - 1), at(k));
+            for (size_t k = 1; k < w; ++k) {
+                sofar += dist(at(k - 1), at(k));
+                uv[at(k)][size_t(along)] = total > 0 ? float(sofar / total) : 0.0f;
+            }
+        }
+    return uv;
 }
 
 }  // namespace sprout::lpy::pglmath

@@ -321,6 +321,7 @@ Model runModel(std::string_view written, const RunOptions& options) {
         if (!(options.drawLater && options.keepSteps)) out.derived = numeric || numericSteps ? engine.text(numbers) : engine.text(s);
         // What the turtle draws, with the file's turtle settings and materials.
         TurtleDefaults d = turtleDefaults(lpyModule);
+        placeTextures(d, options.path, out.diagnostics);
         py::dict state = lpyModule.attr("_state");
         std::vector<std::string> leftOut;
         // Drawn later: only the turtle's settings now (a drawing of nothing), each step when asked.

@@ -20,6 +20,7 @@ enum class TurtleOp : std::uint8_t {
     Tropism, Elasticity, SetGuide, EndGuide, PositionOnGuide, SetContour, Sweep,
     Point,  // the Sprout module with L-Py's x y z as Sprout's
     Frame, InterpolateColours, Shape, Label,
+    Numbers,  // the Sprout module of the same name, with L-Py's numbers as they are
 };
 
 struct TurtleWord {
@@ -116,12 +117,13 @@ inline constexpr TurtleWord kTurtleVocabulary[] = {
     {{"HeadingReflection"}, nullptr, TurtleOp::LeftOut},
     {{"@2D", "StartScreenProjection"}, nullptr, TurtleOp::Silent},
     {{"@3D", "EndScreenProjection"}, nullptr, TurtleOp::Silent},
-    {{"TextureScale"}, nullptr, TurtleOp::Silent},
-    {{"TextureUScale"}, nullptr, TurtleOp::Silent},
-    {{"TextureVScale", "TextureVCoeff"}, nullptr, TurtleOp::Silent},
-    {{"TextureTranslation"}, nullptr, TurtleOp::Silent},
-    {{"TextureRotation"}, nullptr, TurtleOp::Silent},
-    {{"TextureTransformation"}, nullptr, TurtleOp::Silent},
+    // How a texture lies on the textured surfaces after them (PlantGL's Texture2DTransformation).
+    {{"TextureScale"}, nullptr, TurtleOp::Numbers, "TextureScale"},
+    {{"TextureUScale"}, nullptr, TurtleOp::Numbers, "TextureUScale"},
+    {{"TextureVScale", "TextureVCoeff"}, nullptr, TurtleOp::Numbers, "TextureVScale"},
+    {{"TextureTranslation"}, nullptr, TurtleOp::Numbers, "TextureTranslation"},
+    {{"TextureRotation"}, nullptr, TurtleOp::Numbers, "TextureRotation"},
+    {{"TextureTransformation"}, nullptr, TurtleOp::Numbers, "TextureTransformation"},
     {{"?P", "GetPos"}, nullptr, TurtleOp::Silent},
     {{"?H", "GetHead"}, nullptr, TurtleOp::Silent},
     {{"?U", "GetUp"}, nullptr, TurtleOp::Silent},

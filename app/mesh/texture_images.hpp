@@ -1,0 +1,28 @@
+#pragma once
+// The images textured surfaces show (Geometry::textures, issue 53): PNG, JPEG and SGI files
+// (VLab's objects carry `.rgb` images) read into RGBA, each file once (again when it changes),
+// shared by the renderer and the exports. No GL.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sprout::mesh {
+
+struct TextureImage {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgba;  // top row first
+    std::string format;              // "png", "jpeg", "sgi"
+    std::string error;               // why it could not be read; "": it was
+};
+
+// The image in `bytes`, by its first bytes' signature; `error` set for anything else or a
+// broken file (never throws, never reads past the bytes).
+TextureImage decodeImage(std::string_view bytes);
+
+// The image of the file at `path`, read once and kept while the file's size and time stay the
+// same; one with `error` set (naming the file) when it cannot be read.
+std::shared_ptr<const TextureImage> textureImage(const std::string& path);
+
+}  // namespace sprout::mesh

@@ -1,0 +1,240 @@
+// Textures as the picture shows them (issue 53): an image of four coloured quarters on an L-Py
+// patch, rendered through the program as a user runs it, under each of L-Py's texture
+// transforms; the quarter seen at each of 16 places of the patch is the one PlantGL's
+// Texture2DTransformation puts there. And the image files themselves: PNG, JPEG, SGI, broken.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/image.hpp"
+#include "app/mesh/texture_images.hpp"
+#include "tests/app/run_sprout.hpp"
+
+namespace {
+
+using sprout_test::runSprout;
+using sprout_test::writeTemp;
+
+// The image: top left red, top right green, bottom left blue, bottom right yellow (16 x 16).
+// At (u, v), v = 0 the image's bottom: (0.25, 0.25) blue, (0.75, 0.25) yellow, (0.25, 0.75)
+// red, (0.75, 0.75) green.
+enum Quarter { Blue, Yellow, Red, Green, None };
+const char* kNames[] = {"blue", "yellow", "red", "green", "none"};
+
+sprout::Image quarters() {
+    sprout::Image i;
+    i.width = i.height = 16;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const bool right = x >= 8, bottom = y >= 8;
+            const std::uint8_t r = (!bottom && !right) || (bottom && right) ? 255 : 0;
+            const std::uint8_t g = right ? 255 : 0, b = bottom && !right ? 255 : 0;
+            i.rgba.insert(i.rgba.end(), {r, g, b, std::uint8_t(255)});
+        }
+    return i;
+}
+
+Quarter classify(const sprout::Image& i, int x, int y) {
+    const std::size_t k = (std::size_t(y) * std::size_t(i.width) + std::size_t(x)) * 4;
+    const int r = i.rgba[k], g = i.rgba[k + 1], b = i.rgba[k + 2];
+    const int hi = std::max({r, g, b});
+    if (hi < 60) return None;
+    const bool R = r > hi / 2, G = g > hi / 2, B = b > hi / 2;
+    if (R && G && !B) return Yellow;
+    if (R && !G && !B) return Red;
+    if (!R && G && !B) return Green;
+    if (!R && !G && B) return Blue;
+    return None;
+}
+
+// The quarter of the image at (u, v), repeated outside [0, 1].
+Quarter quarterAt(double u, double v) {
+    u -= std::floor(u), v -= std::floor(v);
+    return v < 0.5 ? (u < 0.5 ? Blue : Yellow) : (u < 0.5 ? Red : Green);
+}
+
+// A square patch facing the front view, textured with the image by material 1, with
+// `transform` (L-Py's modules) before it.
+sprout::Image render(const std::string& name, const std::string& transform) {
+    const std::string dir = testing::TempDir();
+    std::string error;
+    EXPECT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
+    const std::string model =
+        "from openalea.plantgl.all import *\n"
+        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
+        "context().turtle.setMaterial(1, ImageTexture('quarters.png'))\n"
+        "Axiom: " + transform + " @g(quad)\n"
+        "derivation length: 0\n";
+    const std::string path = writeTemp(name + ".lpy", model), png = dir + name + ".png";
+    const auto r = runSprout("render " + path + " -o " + png + " --size 240x240 --view front --no-ground --no-shadows");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    sprout::Image image;
+    EXPECT_TRUE(sprout::readPng(png, image, error)) << error;
+    return image;
+}
+
+// Where (u, v) lies in the picture, from the centres of the four quarters seen untransformed.
+struct Mapping {
+    std::array<double, 2> centre[4]{};
+    std::array<double, 2> at(double u, double v) const {
+        // Bilinear between the quarters' centres at (0.25 | 0.75, 0.25 | 0.75).
+        const double s = (u - 0.25) / 0.5, t = (v - 0.25) / 0.5;
+        std::array<double, 2> p{};
+        for (int k = 0; k < 2; ++k)
+            p[size_t(k)] = (1 - s) * (1 - t) * centre[Blue][size_t(k)] + s * (1 - t) * centre[Yellow][size_t(k)] +
+                           (1 - s) * t * centre[Red][size_t(k)] + s * t * centre[Green][size_t(k)];
+        return p;
+    }
+};
+
+Mapping mappingOf(const sprout::Image& plain) {
+    Mapping m;
+    double n[4] = {0, 0, 0, 0};
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x)
+            if (const Quarter q = classify(plain, x, y); q != None) m.centre[q][0] += x, m.centre[q][1] += y, ++n[q];
+    for (int q = 0; q < 4; ++q) {
+        EXPECT_GT(n[q], 200) << kNames[q] << " is seen on the untransformed patch";
+        if (n[q] > 0) m.centre[q][0] /= n[q], m.centre[q][1] /= n[q];
+    }
+    return m;
+}
+
+// The 16 places (i + 1/2) / 4 of the patch show the quarters `transform(u, v)` names.
+template <class F>
+void expectQuarters(const sprout::Image& picture, const Mapping& m, F transform, const char* what) {
+    int wrong = 0;
+    std::string seen;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const double u = (i + 0.5) / 4, v = (j + 0.5) / 4;
+            const auto p = m.at(u, v);
+            const auto [tu, tv] = transform(u, v);
+            const Quarter want = quarterAt(tu, tv), got = classify(picture, int(std::lround(p[0])), int(std::lround(p[1])));
+            if (want != got) ++wrong, seen += std::string(" (") + std::to_string(u) + "," + std::to_string(v) + "): " + kNames[got] + " not " + kNames[want];
+        }
+    EXPECT_EQ(wrong, 0) << what << seen;
+}
+
+}  // namespace
+
+// The image on the patch, and each of L-Py's transforms moving it as PlantGL's
+// Texture2DTransformation does: (u, v) scaled, turned about the centre, then moved.
+TEST(Textures, AnImageLiesOnAPatchAsLpysTransformsPutIt) {
+    const sprout::Image plain = render("tex_plain", "");
+    ASSERT_EQ(plain.width, 240);
+    const Mapping m = mappingOf(plain);
+    // The quarters stand apart on the patch: it faces the camera.
+    EXPECT_GT(std::hypot(m.centre[Blue][0] - m.centre[Green][0], m.centre[Blue][1] - m.centre[Green][1]), 60);
+    expectQuarters(plain, m, [](double u, double v) { return std::pair{u, v}; }, "untransformed");
+    expectQuarters(render("tex_scale", "TextureScale(2)"), m, [](double u, double v) { return std::pair{2 * u, 2 * v}; }, "TextureScale(2)");
+    expectQuarters(render("tex_uscale", "TextureUScale(2)"), m, [](double u, double v) { return std::pair{2 * u, v}; }, "TextureUScale(2)");
+    expectQuarters(render("tex_vscale", "TextureVScale(2)"), m, [](double u, double v) { return std::pair{u, 2 * v}; }, "TextureVScale(2)");
+    expectQuarters(render("tex_move", "TextureTranslation(0.5, 0.25)"), m, [](double u, double v) { return std::pair{u + 0.5, v + 0.25}; },
+                   "TextureTranslation(0.5, 0.25)");
+    // A quarter turn about (0.5, 0.5): (u, v) - centre turned by 90 degrees.
+    expectQuarters(render("tex_turn", "TextureRotation(90)"), m, [](double u, double v) { return std::pair{0.5 - (v - 0.5), 0.5 + (u - 0.5)}; },
+                   "TextureRotation(90)");
+    expectQuarters(render("tex_all", "TextureTransformation(1, 1, 0.5, 0, 180, 0.5, 0.5)"), m,
+                   [](double u, double v) { return std::pair{1.0 - u + 0.5, 1.0 - v}; }, "TextureTransformation(... 180 ...)");
+}
+
+// A model whose texture image is not there: a warning that names it, the patch in its colour.
+TEST(Textures, AMissingImageIsAWarningAndTheColour) {
+    const std::string model =
+        "from openalea.plantgl.all import *\n"
+        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
+        "context().turtle.setMaterial(1, ImageTexture('no_such_leaf.png'))\n"
+        "Axiom: @g(quad)\nderivation length: 0\n";
+    const std::string path = writeTemp("tex_missing.lpy", model), png = testing::TempDir() + "tex_missing.png";
+    const auto r = runSprout("render " + path + " -o " + png + " --size 120x120 --view front --no-ground --no-shadows");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("no_such_leaf.png"), std::string::npos) << r.err;
+    sprout::Image image;
+    std::string error;
+    ASSERT_TRUE(sprout::readPng(png, image, error)) << error;
+    int grey = 0;  // the base colour, white, lit: greys
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::size_t k = (std::size_t(y) * 120 + std::size_t(x)) * 4;
+            const int r0 = image.rgba[k], g0 = image.rgba[k + 1], b0 = image.rgba[k + 2];
+            grey += r0 > 90 && std::abs(r0 - g0) < 12 && std::abs(g0 - b0) < 12;
+        }
+    EXPECT_GT(grey, 1000);
+}
+
+// The image files: PNG and JPEG through their libraries, SGI (verbatim and run-length, as
+// VLab's `.rgb` images) read here; anything broken is an error, never a crash.
+TEST(Textures, ImageFilesAreReadOrRefused) {
+    std::string error;
+    const std::string dir = testing::TempDir();
+    ASSERT_TRUE(sprout::writePng(dir + "q.png", quarters(), error)) << error;
+    const auto png = sprout::mesh::textureImage(dir + "q.png");
+    ASSERT_EQ(png->error, "");
+    EXPECT_EQ(png->width, 16);
+    EXPECT_EQ(png->rgba[0], 255);  // top left: red
+    EXPECT_EQ(png->rgba[2], 0);
+    EXPECT_EQ(sprout::mesh::textureImage(dir + "q.png"), png) << "read once";
+
+    // SGI, 2 x 2, three channels, verbatim: rows bottom first, channel by channel.
+    std::string sgi(512, '\0');
+    auto put16 = [&](std::string& s, std::size_t at, int v) { s[at] = char(v >> 8), s[at + 1] = char(v & 0xFF); };
+    put16(sgi, 0, 474);
+    sgi[3] = 1;        // a byte a channel
+    put16(sgi, 4, 3);  // dimension
+    put16(sgi, 6, 2), put16(sgi, 8, 2), put16(sgi, 10, 3);
+    const std::string planes = std::string("\x10\x20\x30\x40", 4) + std::string("\x50\x60\x70\x80", 4) + std::string("\x90\xA0\xB0\xC0", 4);
+    const auto verbatim = sprout::mesh::decodeImage(sgi + planes);
+    ASSERT_EQ(verbatim.error, "");
+    EXPECT_EQ(verbatim.format, "sgi");
+    // The file's first row (0x10 0x20 ...) is the image's bottom one.
+    EXPECT_EQ(verbatim.rgba[(2 + 0) * 4 + 0], 0x10);
+    EXPECT_EQ(verbatim.rgba[(2 + 1) * 4 + 1], 0x60);
+    EXPECT_EQ(verbatim.rgba[0 * 4 + 2], 0xB0);  // top left: the second row's first, blue plane
+    // The same run-length: a row table of starts and lengths, then runs.
+    std::string rle = sgi;
+    rle[2] = 1;
+    std::string runs, starts, lengths;
+    const std::size_t first = 512 + 6 * 4 * 2;
+    for (int row = 0; row < 6; ++row) {
+        const std::string data = planes.substr(std::size_t(row) * 2, 2);
+        std::string r = row % 2 ? std::string("\x82", 1) + data + std::string("\0", 1)                                  // two copied
+                                : (data[0] == data[1] ? std::string("\x02", 1) + data[0] : std::string("\x81", 1) + data[0] + "\x81" + data[1]) +
+                                      std::string("\0", 1);
+        const std::size_t at = first + runs.size();
+        starts += std::string{char(at >> 24), char(at >> 16 & 0xFF), char(at >> 8 & 0xFF), char(at & 0xFF)};
+        lengths += std::string{0, 0, 0, char(r.size())};
+        runs += r;
+    }
+    const auto packed = sprout::mesh::decodeImage(rle + starts + lengths + runs);
+    ASSERT_EQ(packed.error, "");
+    EXPECT_EQ(packed.rgba, verbatim.rgba);
+    // Broken files: errors, whatever their bytes.
+    EXPECT_NE(sprout::mesh::decodeImage(rle + starts + lengths).error, "") << "runs missing";
+    EXPECT_NE(sprout::mesh::decodeImage(sgi).error, "") << "pixels missing";
+    EXPECT_NE(sprout::mesh::decodeImage("\x89PNG\r\n\x1a\nnot a png").error, "");
+    EXPECT_NE(sprout::mesh::decodeImage("\xff\xd8\xff\xe0 not a jpeg").error, "");
+    EXPECT_NE(sprout::mesh::decodeImage("GIF89a").error, "");
+    EXPECT_NE(sprout::mesh::textureImage(dir + "nothing_here.png")->error.find("nothing_here.png"), std::string::npos);
+}
+
+// A JPEG photo, as L-Py's orchid's leaves: read through libjpeg (the corpus's own where it is).
+TEST(Textures, AJpegPhotoIsRead) {
+    const std::filesystem::path leaf = std::filesystem::path(SPROUT_SHARED_DIR) / "corpus/lpy/tutorial/10 - graphics/leaf1.jpg";
+    if (!std::filesystem::exists(leaf)) GTEST_SKIP() << "the corpus's leaf1.jpg is not here";
+    const auto jpeg = sprout::mesh::textureImage(leaf.string());
+    ASSERT_EQ(jpeg->error, "");
+    EXPECT_EQ(jpeg->format, "jpeg");
+    EXPECT_EQ(jpeg->width, 1024);
+    EXPECT_EQ(jpeg->height, 768);
+    long green = 0;
+    for (std::size_t k = 0; k < jpeg->rgba.size(); k += 4) green += jpeg->rgba[k + 1] > jpeg->rgba[k + 2];
+    EXPECT_GT(green, 1024 * 768 / 3) << "a leaf: more green than blue";
+}
