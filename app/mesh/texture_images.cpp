@@ -3,6 +3,8 @@
 // four channels) read here, as VLab's cpfg reads it (rle.c).
 #include "app/mesh/texture_images.hpp"
 
+#include "app/mesh/bake.hpp"
+
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -153,10 +155,30 @@ TextureImage decodeSgi(std::string_view bytes) {
 }  // namespace
 
 TextureImage decodeImage(std::string_view bytes) {
-    if (bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0) return decodePng(bytes);
-    if (bytes.size() >= 3 && std::memcmp(bytes.data(), "\xff\xd8\xff", 3) == 0) return decodeJpeg(bytes);
-    if (bytes.size() >= 2 && std::uint8_t(bytes[0]) == 0x01 && std::uint8_t(bytes[1]) == 0xDA) return decodeSgi(bytes);
-    return failed("not a PNG, JPEG or SGI image");
+    TextureImage t = bytes.size() >= 8 && std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) == 0  ? decodePng(bytes)
+                     : bytes.size() >= 3 && std::memcmp(bytes.data(), "\xff\xd8\xff", 3) == 0      ? decodeJpeg(bytes)
+                     : bytes.size() >= 2 && std::uint8_t(bytes[0]) == 0x01 && std::uint8_t(bytes[1]) == 0xDA ? decodeSgi(bytes)
+                                                                                                     : failed("not a PNG, JPEG or SGI image");
+    std::uint64_t sum[3] = {0, 0, 0}, n = 0;
+    for (std::size_t k = 0; k + 3 < t.rgba.size(); k += 4)
+        if (t.rgba[k + 3] >= 128) sum[0] += t.rgba[k], sum[1] += t.rgba[k + 1], sum[2] += t.rgba[k + 2], ++n;
+    if (n) t.average = std::uint32_t(sum[0] / n) << 24 | std::uint32_t(sum[1] / n) << 16 | std::uint32_t(sum[2] / n) << 8 | 0xFFu;
+    return t;
+}
+
+void tintTextured(BakedMesh& m, const std::vector<std::string>& textures) {
+    std::vector<std::uint32_t> average(textures.size() + 1, 0xFFFFFFFFu);
+    for (std::size_t k = 0; k < textures.size(); ++k)
+        if (const auto image = textureImage(textures[k]); image->error.empty()) average[k + 1] = image->average;
+    for (std::size_t k = 0; k < m.texcoords.size() && k < m.vertices.size(); ++k) {
+        const std::uint32_t id = m.texcoords[k].texture;
+        if (id == 0 || id >= average.size()) continue;
+        std::uint32_t& c = m.vertices[k].colour;
+        std::uint32_t out = c & 0xFFu;
+        for (int shift = 8; shift <= 24; shift += 8)
+            out |= ((c >> shift & 0xFFu) * (average[id] >> shift & 0xFFu) / 255u) << shift;
+        c = out;
+    }
 }
 
 std::shared_ptr<const TextureImage> textureImage(const std::string& path) {

@@ -14,6 +14,7 @@ struct TextureImage {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // top row first
     std::string format;              // "png", "jpeg", "sgi"
+    std::uint32_t average = 0xFFFFFFFFu;  // 0xRRGGBBFF: the mean of its pixels at least half opaque
     std::string error;               // why it could not be read; "": it was
 };
 
@@ -24,5 +25,11 @@ TextureImage decodeImage(std::string_view bytes);
 // The image of the file at `path`, read once and kept while the file's size and time stay the
 // same; one with `error` set (naming the file) when it cannot be read.
 std::shared_ptr<const TextureImage> textureImage(const std::string& path);
+
+// The textured vertices of `m` (its texcoords) in their colour times their image's average
+// (`textures`: Geometry::textures), for pictures drawn without the images (a moving frame's
+// coarse bake); an image that cannot be read leaves the colour.
+struct BakedMesh;
+void tintTextured(BakedMesh& m, const std::vector<std::string>& textures);
 
 }  // namespace sprout::mesh

@@ -65,6 +65,15 @@ VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options)
             any = true;
         } else if (f.command == "surface" && f.id) {
             options.surfaces.emplace_back(std::string(1, f.id), f.file);
+        } else if (f.command == "texture") {  // @Tx(n): the n-th; `S:` spans each surface whole
+            std::error_code missing;
+            if (!fs::is_regular_file(path, missing))
+                out.problems.push_back(object->view + ":" + std::to_string(f.line) + ": texture image '" + f.file +
+                                       "' is not there: the surfaces keep their colour");
+            bool perSurface = false;
+            for (size_t at = 0; (at = f.options.find('S', at)) != std::string::npos; ++at)
+                perSurface |= (at == 0 || f.options[at - 1] == ' ') && (at + 1 == f.options.size() || f.options[at + 1] == ':' || f.options[at + 1] == ' ');
+            options.viewTextures.push_back({path.string(), perSurface});
         }
     }
     if (any) options.curves = std::move(tables);

@@ -1,8 +1,8 @@
 #pragma once
 // A VLab object's functions, curves, contours and surfaces: the files its view file names
-// (`function:`, `function set:`, `curve:`, `contour:`, `contour sides:`, `surface:`), read
+// (`function:`, `function set:`, `curve:`, `contour:`, `contour sides:`, `surface:`, `texture:`), read
 // (core/language/vlab/curve_files.hpp) into what the parse of its L-system takes
-// (ParseOptions::curves and ::surfaces). openText calls it for an L-system inside an object.
+// (ParseOptions::curves, ::surfaces and ::viewTextures). openText calls it for an L-system inside an object.
 #include <string>
 #include <vector>
 

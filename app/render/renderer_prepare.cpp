@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/mesh/bake.hpp"
+#include "app/mesh/texture_images.hpp"
 #include "app/mesh/meshes.hpp"
 #include "core/base/bounded.hpp"
 
@@ -236,8 +237,10 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         const Bounds all = g.extent();
         const glm::vec3 size = all.empty ? glm::vec3(1) : all.size();
         const float extent = std::max({size.x, size.y, size.z, 1e-6f});
+        mesh::BakedMesh tinted;  // textured triangles in their images' average colour
+        if (!out.textured.empty()) tinted = out.baked, mesh::tintTextured(tinted, out.textures);
         for (float cells : {200.0f, 140.0f, 100.0f, 70.0f, 50.0f}) {
-            out.proxyBaked = clusterMesh(out.baked, all, extent / cells);
+            out.proxyBaked = clusterMesh(out.textured.empty() ? out.baked : tinted, all, extent / cells);
             if (out.proxyBaked.indices.size() / 3 <= PreparedScene::kMovingTriangles) break;
         }
         out.proxy = out.lines;
@@ -258,6 +261,7 @@ void Renderer::prepareMoving(const Geometry& g, PreparedScene& out) {
         if (coarseTriangles + coarse.lines.size() / 8 > budget) {
             sketch();
         } else if (2 * coarseTriangles < triangles || primitives > budget) {
+            mesh::tintTextured(coarse.baked, coarse.textures);
             out.proxyBaked = std::move(coarse.baked);
             out.proxy = std::move(coarse.lines);
         }

@@ -92,6 +92,14 @@ struct Settings {
     // absolute. Surfaces with texture coordinates (patches, cpfg surfaces, generalized cylinders)
     // show it, times the entry's colour; the others keep the colour.
     std::vector<std::pair<int, std::string>> textures;
+    // A VLab object's textures (its view file's `texture: F: FILE ...` lines, cpfg's): `@Tx(n)`
+    // draws the surfaces after it with the n-th, `@Tx` with none. `perSurface` (cpfg's `S:`):
+    // the image spans the whole surface (by its x and y), else each of its patches.
+    struct ViewTexture {
+        std::string file;  // as the view file's folder resolves it
+        bool perSurface = false;
+    };
+    std::vector<ViewTexture> viewTextures;
     // cpfg's colour index and width steps (a VLab object's view file): the index the turtle
     // starts with (-1: none, colours by branch order), what `;` and `,` add, and, when set,
     // what `!` and `#` subtract and add (instead of widthFactor's product).
@@ -299,6 +307,8 @@ struct ParseOptions {
     // cpfg's functions and contours, read from the files a VLab object's view file names
     // (core/language/vlab/): func(id, x) and its names, @#(id). Kept by the Grammar.
     std::shared_ptr<const CurveTables> curves{};
+    // A VLab object's view file's textures (Settings::viewTextures).
+    std::vector<Settings::ViewTexture> viewTextures;
 };
 
 ParseResult parse(std::string_view text);

@@ -27,6 +27,7 @@ Parser::Parser(std::string_view text, const ParseOptions& options) : m_cpfg(opti
     m_original = m_text;
     m_g.environment.program = options.environmentProgram;  // a VLab object's -e program
     m_g.curves = options.curves;  // func() and @# use them at derive and draw time
+    m_g.settings.viewTextures = options.viewTextures;  // @Tx(n)
     // The turtle's multi-letter modules (cpfg's predefined surfaces, sphere, disc, moves,
     // generalized cylinders and query modules; the Lparser extensions; L-system Explorer's
     // move without drawing, home, contours and their use, radius spline; cpfg's @!, the sides of

@@ -1,5 +1,6 @@
 #include "core/language/surface_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -68,12 +69,13 @@ std::optional<SurfaceFile> parseSurfaceFile(std::string_view text, std::string& 
         for (int i = 0; i <= kTessellation; ++i)
             for (int j = 0; j <= kTessellation; ++j) {
                 glm::vec3 du, dv;
-                const glm::vec3 q = bezier(p, float(i) / kTessellation, float(j) / kTessellation, &du, &dv) - contact;
+                const glm::vec3 raw = bezier(p, float(i) / kTessellation, float(j) / kTessellation, &du, &dv), q = raw - contact;
                 glm::vec3 n = glm::cross(du, dv);
                 n = glm::length(n) > 1e-12f ? glm::normalize(n) : u;
                 out.positions.push_back(glm::vec3(glm::dot(q, h), glm::dot(q, l), glm::dot(q, u)) / size);
                 out.normals.push_back({glm::dot(n, h), glm::dot(n, l), glm::dot(n, u)});
                 out.uvs.push_back({float(i) / kTessellation, float(j) / kTessellation});  // the patch's own (cpfg's per patch)
+                out.surfaceUvs.push_back({raw.x, raw.y});  // made the surface's below
             }
         const std::uint32_t row = kTessellation + 1;
         for (std::uint32_t i = 0; i < kTessellation; ++i)
@@ -126,6 +128,15 @@ std::optional<SurfaceFile> parseSurfaceFile(std::string_view text, std::string& 
         }
     }
     if (!numbers.empty()) return fail("the last patch has " + std::to_string(numbers.size() / 3) + " control points, not 16");
+    // cpfg's texture per surface (patches.c, set_texture_coordinates): x and y over their ranges.
+    std::array<float, 2> lo{0, 0}, hi{0, 0};
+    for (size_t k = 0; k < out.surfaceUvs.size(); ++k)
+        for (size_t c = 0; c < 2; ++c) {
+            lo[c] = k ? std::min(lo[c], out.surfaceUvs[k][c]) : out.surfaceUvs[k][c];
+            hi[c] = k ? std::max(hi[c], out.surfaceUvs[k][c]) : out.surfaceUvs[k][c];
+        }
+    for (auto& uv : out.surfaceUvs)
+        for (size_t c = 0; c < 2; ++c) uv[c] = hi[c] > lo[c] ? (uv[c] - lo[c]) / (hi[c] - lo[c]) : 0.0f;
     if (out.patches == 0) {
         number = 0;
         error = "no Bezier patch in it (a cpfg surface file has a CONTACT POINT line and patches of 16 control points)";

@@ -30,6 +30,9 @@ struct SurfaceFile {
     // Each position's place in a texture image (u, v; PlantGL's and cpfg's coordinates of the
     // surface), where the surface has them; empty: none, never textured.
     std::vector<std::array<float, 2>> uvs;
+    // The same across the whole surface (cpfg's texture per surface, `S:`): x and y in the
+    // file's own coordinates over their ranges; empty where `uvs` is.
+    std::vector<std::array<float, 2>> surfaceUvs;
 };
 
 // `error` says what is wrong and on which line when the text is not a surface file.

@@ -38,6 +38,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
             else if (name == "@PS") m_actions[s] = Act::PatchStart;
             else if (name == "@PC") m_actions[s] = Act::PatchPoint;
             else if (name == "@PD") m_actions[s] = Act::PatchDraw;
+            else if (name == "@Tx") m_actions[s] = Act::TextureSet;
             m_scaled |= m_actions[s] == Act::ScaleSet || m_actions[s] == Act::ScaleMul || m_actions[s] == Act::ScaleDiv;
         }
         if (st.bracePaths && m_arity[s] > 0) {
@@ -99,6 +100,12 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
         if (found == list.end()) list.push_back(path);
         if (m_paletteTexture.size() <= size_t(index)) m_paletteTexture.resize(size_t(index) + 1, 0);
         m_paletteTexture[size_t(index)] = id;
+    }
+    for (const Settings::ViewTexture& v : st.viewTextures) {  // cpfg's, by @Tx(n)
+        auto& list = out.textures;
+        const auto found = std::find(list.begin(), list.end(), v.file);
+        m_viewTexture.push_back(std::uint32_t(found - list.begin()) + 1);
+        if (found == list.end()) list.push_back(v.file);
     }
     m_colourStep = st.colourIncrement;
     m_widthSteps = st.widthIncrement.has_value();

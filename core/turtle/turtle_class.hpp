@@ -283,12 +283,15 @@ private:
     [[gnu::noinline]] void patchCommand(const State& t, Act act, const double* p, int arity);
     std::vector<const SurfaceFile*> m_surfaceFiles;  // per symbol, for Act::SurfaceFile
     // Textures (Settings::textures): per palette index, its image's id in Geometry::textures
-    // (1-based; 0: none); and the texture transforms the turtle's State::texture names (PlantGL's
-    // Texture2DTransformation: u, v scaled, turned about a centre, then moved), the first none.
-    std::vector<std::uint32_t> m_paletteTexture;
+    // (1-based; 0: none); the view file's (Settings::viewTextures) ids; and the texture
+    // transforms the turtle's State::texture names (PlantGL's Texture2DTransformation: u, v
+    // scaled, turned about a centre, then moved), the first none, with cpfg's @Tx choice.
+    std::vector<std::uint32_t> m_paletteTexture, m_viewTexture;
     struct TexTransform {
         glm::vec2 scale{1, 1}, translation{0, 0}, centre{0.5f, 0.5f};
         float angle = 0;  // radians
+        std::int32_t image = -1;  // @Tx's image id (0: none); -1: the palette entry's
+        bool perSurface = false;  // @Tx's texture spans the surface (SurfaceFile::surfaceUvs)
         glm::vec2 operator()(glm::vec2 uv) const {
             uv = uv * scale - centre;
             const float c = std::cos(angle), s = std::sin(angle);
@@ -299,6 +302,7 @@ private:
     [[gnu::noinline]] void textureCommand(State& t, Act act, const double* p, int arity);
     // The image id of the surfaces turtle t draws now (its palette entry's), 0: none.
     std::uint32_t textureOf(const State& t) const {
+        if (const std::int32_t chosen = m_texTransforms[size_t(t.texture)].image; chosen >= 0) return std::uint32_t(chosen);
         if (m_paletteTexture.empty() || t.colour < 0) return 0;
         const int n = int(m_paletteTexture.size());
         return t.colour < n ? m_paletteTexture[size_t(t.colour)] : 0;

@@ -322,10 +322,18 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
 
 // L-Py's texture transforms: a new transform from the turtle's, with the module's change.
 void Turtle::textureCommand(State& t, Act act, const double* p, int arity) {
-    if (!p || arity < 1 || !finite(p, arity)) return;
     TexTransform x = m_texTransforms[size_t(t.texture)];
+    if (act == Act::TextureSet) {  // cpfg's @Tx(n), from 1; none (or out of range): no texture
+        const double n = p && arity >= 1 && finite(p, 1) ? std::trunc(p[0]) : 0;
+        const bool valid = n >= 1 && n <= double(m_viewTexture.size());
+        x.image = valid ? std::int32_t(m_viewTexture[size_t(n) - 1]) : 0;
+        x.perSurface = valid && m_g.settings.viewTextures[size_t(n) - 1].perSurface;
+    } else if (!p || arity < 1 || !finite(p, arity)) {
+        return;
+    }
     auto at = [&](int k, float otherwise) { return k < arity ? float(p[k]) : otherwise; };
     switch (act) {
+        case Act::TextureSet: break;
         case Act::TextureScale: x.scale = {at(0, 1), at(1, at(0, 1))}; break;
         case Act::TextureUScale: x.scale.x = at(0, 1); break;
         case Act::TextureVScale: x.scale.y = at(0, 1); break;
@@ -396,11 +404,12 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
         m.colours.push_back(!m_level && k < f.colours.size() && f.colours[k] ? f.colours[k] : col);
         addBound(fromGlm(m.positions.back()));
     }
-    if (const std::uint32_t image = textureOf(t); image && !m_level && f.uvs.size() == f.positions.size()) {
+    const TexTransform& tx = m_texTransforms[size_t(t.texture)];
+    const auto& uvs = tx.perSurface && f.surfaceUvs.size() == f.positions.size() ? f.surfaceUvs : f.uvs;
+    if (const std::uint32_t image = textureOf(t); image && !m_level && uvs.size() == f.positions.size()) {
         // Its texture coordinates, through the turtle's texture transform.
-        const TexTransform& tx = m_texTransforms[size_t(t.texture)];
         m.texcoords.resize(base);
-        for (const auto& uv : f.uvs) {
+        for (const auto& uv : uvs) {
             const glm::vec2 q = tx(glm::vec2(uv[0], uv[1]));
             m.texcoords.push_back({q.x, q.y, image});
         }

@@ -39,6 +39,7 @@ enum class Act : std::uint8_t {
     // L-Py's texture transforms (PlantGL's turtle): how the image lies on the textured surfaces
     // drawn after them.
     TextureScale, TextureUScale, TextureVScale, TextureTranslation, TextureRotation, TextureTransformation,
+    TextureSet,  // cpfg's @Tx(n): the view file's n-th texture on the surfaces after it (@Tx: none)
 };
 
 inline Act actionOf(const std::string& name) {

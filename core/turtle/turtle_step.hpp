@@ -273,7 +273,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
             t.section = p && *p >= 0 && *p < double(m_g.settings.sections.size()) ? std::int16_t(*p) : std::int16_t(-1);
             break;
         case Act::TextureScale: case Act::TextureUScale: case Act::TextureVScale:
-        case Act::TextureTranslation: case Act::TextureRotation: case Act::TextureTransformation: textureCommand(t, act, p, arity); break;
+        case Act::TextureTranslation: case Act::TextureRotation: case Act::TextureTransformation:
+        case Act::TextureSet: textureCommand(t, act, p, arity); break;
         default: break;
     }
 }

@@ -225,3 +225,39 @@ TEST(VlabPicture, EveryManualObjectDraws) {
 }
 
 }  // namespace
+
+// A VLab object's texture (issue 53): its view file's `texture: F: FILE` lines, chosen by
+// `@Tx(n)`, on its `.s` surfaces, an SGI image (VLab's .rgb) read here; `@Tx` alone takes it off.
+TEST(VlabPicture, ATextureLiesOnTheSurfacesAfterTx) {
+    Object o("vlab_texture");
+    // A flat square Bezier patch, 2 x 2, facing the camera.
+    std::string patch = "-1 1 -1 1 0 0\nCONTACT POINT X: 0 Y: -1 Z: 0\nEND POINT X: 0 Y: 1 Z: 0\nHEADING X: 0 Y: 1 Z: 0\n"
+                        "UP X: 0 Y: 0 Z: 1\nSIZE: 2\nsquare\nTOP COLOR: 0 DIFFUSE: 0 BOTTOM COLOR: 0 DIFFUSE: 0\n"
+                        "AL: ~ A: ~ AR: ~\nL: ~ R: ~\nBL: ~ B: ~ BR: ~\n";
+    for (int row = 0; row < 4; ++row) {
+        for (int col = 0; col < 4; ++col) patch += std::to_string(-1 + 2 * col / 3.0) + " " + std::to_string(1 - 2 * row / 3.0) + " 0  ";
+        patch += "\n";
+    }
+    o.write("square.s", patch);
+    // SGI, 4 x 4, three channels, verbatim: the left half red, the right half blue.
+    std::string sgi(512, char(0));
+    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
+    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
+    sgi[3] = 1;
+    for (int channel = 0; channel < 3; ++channel)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && x < 2) || (channel == 2 && x >= 2) ? 255 : 0);
+    o.write("halves.rgb", sgi);
+    o.write("plant.v", kView + "surface: l square.s 1\ntexture: F: halves.rgb E: m S:\n");
+    o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
+    o.cpfg("cpfg -m plant.map plant.l plant.v");
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: [f] ;(5) @Tx(1) ~l(1)\nendlsystem\n");
+    const sprout::Image textured = o.render();
+    EXPECT_GT(count(textured, red), 1000);
+    EXPECT_GT(count(textured, blue), 1000);
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: [f] ;(5) @Tx(1) @Tx ~l(1)\nendlsystem\n");
+    const sprout::Image plain = o.render();
+    EXPECT_EQ(count(plain, red), 0) << "no texture: the surface in its colour";
+    EXPECT_EQ(count(plain, blue), 0);
+    EXPECT_GT(extent(plain).width, 60) << "the white square is drawn";
+}
