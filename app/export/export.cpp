@@ -16,13 +16,16 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "app/export/scene.hpp"
 #include "app/export/svg.hpp"
+#include "app/mesh/texture_images.hpp"
 #include "core/base/atomic_file.hpp"
 
 // [SECTION] Output, progress, numbers
@@ -162,27 +165,62 @@ const Shine* shineOf(const Geometry& g, std::uint32_t colour) {
 
 // [SECTION] glTF binary
 // ---------------------------------------------------------------------------------- glTF
+// The images of a scene's textured primitives that can be read: their bytes, types and names,
+// and by Geometry::textures id the glTF texture of each (-1: none).
+struct GlbImages {
+    std::vector<std::string> bytes, mimes, names;
+    std::vector<int> texture;
+};
+GlbImages glbImages(const ExportScene& scene) {
+    GlbImages out;
+    const auto& paths = scene.geometry().textures;
+    out.texture.assign(paths.size() + 1, -1);
+    std::vector<bool> tried(paths.size() + 1, false);
+    for (const auto& p : scene.primitives) {
+        if (p.texture == 0 || p.texture > paths.size() || tried[p.texture]) continue;
+        tried[p.texture] = true;
+        std::string mime;
+        std::string bytes = mesh::imageFileBytes(paths[p.texture - 1], mime);
+        if (bytes.empty()) continue;
+        out.texture[p.texture] = int(out.bytes.size());
+        out.bytes.push_back(std::move(bytes));
+        out.mimes.push_back(mime);
+        out.names.push_back(std::filesystem::path(paths[p.texture - 1]).stem().string());
+    }
+    return out;
+}
+
 bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
               std::string& error) {
     const auto& prims = scene.primitives;
-    // Materials: one per colour and sidedness.
-    std::map<std::pair<std::uint32_t, bool>, std::size_t> materialOf;
+    // The images textured primitives show, embedded (a PNG or JPEG as it is, an SGI as a PNG),
+    // each once: by Geometry::textures id, its glTF texture (-1: none, it could not be read).
+    const GlbImages images = glbImages(scene);
+    auto textureOf = [&](const Primitive& p) { return p.texture < images.texture.size() ? images.texture[p.texture] : -1; };
+    // Materials: one per colour, sidedness and image.
+    std::map<std::tuple<std::uint32_t, bool, int>, std::size_t> materialOf;
     std::string materials;
     for (const auto& p : prims) {
-        auto key = std::make_pair(p.colour, p.doubleSided);
+        auto key = std::make_tuple(p.colour, p.doubleSided, textureOf(p));
         if (materialOf.count(key)) continue;
         materialOf[key] = materialOf.size();
+        const int texture = textureOf(p);
         auto c = linearColour(p.colour);
         // A shining material: smoother as it is shinier, and its emission (glTF's factors).
         const Shine* shine = shineOf(scene.geometry(), p.colour);
         const auto e = linearColour(shine ? shine->emission | 0xFFu : 0xFFu);
         if (!materials.empty()) materials += ",";
-        materials += "{\"name\":" + jsonString((p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour)) +
+        materials += "{\"name\":" + jsonString((p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) +
+                                                 (texture >= 0 ? "_" + images.names[size_t(texture)] : "")) +
                      ",\"pbrMetallicRoughness\":{\"baseColorFactor\":[" + fmt(c[0]) + "," + fmt(c[1]) + "," + fmt(c[2]) + "," +
-                     fmt(c[3]) + "],\"metallicFactor\":0,\"roughnessFactor\":" +
+                     fmt(c[3]) + "]" + (texture >= 0 ? ",\"baseColorTexture\":{\"index\":" + std::to_string(texture) + "}" : "") +
+                     ",\"metallicFactor\":0,\"roughnessFactor\":" +
                      fmt(shine ? std::clamp(1.0f - shine->shininess, 0.05f, 1.0f) : 0.8f) + "}" +
                      (shine && shine->emission ? ",\"emissiveFactor\":[" + fmt(e[0]) + "," + fmt(e[1]) + "," + fmt(e[2]) + "]" : "") +
-                     (c[3] < 1 ? ",\"alphaMode\":\"BLEND\"" : "") + (p.doubleSided ? ",\"doubleSided\":true" : "") + "}";
+                     (c[3] < 1               ? ",\"alphaMode\":\"BLEND\""
+                      : texture >= 0 ? ",\"alphaMode\":\"MASK\",\"alphaCutoff\":0.5"  // an image's clear parts cut away, as drawn
+                                     : "") +
+                     (p.doubleSided ? ",\"doubleSided\":true" : "") + "}";
     }
     // Per primitive: an interleaved position+normal view and an index view.
     std::string views, accessors, meshes, nodes, sceneNodes;
@@ -192,13 +230,18 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         std::string primsJson;
         for (const auto& p : prims) {
             if (p.part != part) continue;
-            const std::uint64_t vbytes = std::uint64_t(p.vertices) * 24, ibytes = std::uint64_t(p.indices) * 4;
+            const bool textured = textureOf(p) >= 0;
+            const std::uint64_t vbytes = std::uint64_t(p.vertices) * 24, ibytes = std::uint64_t(p.indices) * 4,
+                                ubytes = textured ? std::uint64_t(p.vertices) * 8 : 0;
             if (!views.empty()) views += ",";
             views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset) + ",\"byteLength\":" + std::to_string(vbytes) +
                      ",\"byteStride\":24,\"target\":34962},";
             views += "{\"buffer\":0,\"byteOffset\":" + std::to_string(offset + vbytes) +
                      ",\"byteLength\":" + std::to_string(ibytes) + ",\"target\":34963}";
-            offset += vbytes + ibytes;
+            if (textured)  // its texture coordinates, after its indices
+                views += ",{\"buffer\":0,\"byteOffset\":" + std::to_string(offset + vbytes + ibytes) +
+                         ",\"byteLength\":" + std::to_string(ubytes) + ",\"target\":34962}";
+            offset += vbytes + ibytes + ubytes;
             if (!accessors.empty()) accessors += ",";
             accessors += "{\"bufferView\":" + std::to_string(view) + ",\"componentType\":5126,\"count\":" +
                          std::to_string(p.vertices) + ",\"type\":\"VEC3\",\"min\":[" + fmt(p.min.x) + "," + fmt(p.min.y) + "," +
@@ -207,12 +250,16 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                          std::to_string(p.vertices) + ",\"type\":\"VEC3\"},";
             accessors += "{\"bufferView\":" + std::to_string(view + 1) + ",\"componentType\":5125,\"count\":" +
                          std::to_string(p.indices) + ",\"type\":\"SCALAR\"}";
+            if (textured)
+                accessors += ",{\"bufferView\":" + std::to_string(view + 2) + ",\"componentType\":5126,\"count\":" +
+                             std::to_string(p.vertices) + ",\"type\":\"VEC2\"}";
             if (!primsJson.empty()) primsJson += ",";
             primsJson += "{\"attributes\":{\"POSITION\":" + std::to_string(accessor) + ",\"NORMAL\":" +
-                         std::to_string(accessor + 1) + "},\"indices\":" + std::to_string(accessor + 2) +
-                         ",\"material\":" + std::to_string(materialOf[{p.colour, p.doubleSided}]) + ",\"mode\":4}";
-            view += 2;
-            accessor += 3;
+                         std::to_string(accessor + 1) + (textured ? ",\"TEXCOORD_0\":" + std::to_string(accessor + 3) : "") +
+                         "},\"indices\":" + std::to_string(accessor + 2) + ",\"material\":" +
+                         std::to_string(materialOf[{p.colour, p.doubleSided, textureOf(p)}]) + ",\"mode\":4}";
+            view += textured ? 3 : 2;
+            accessor += textured ? 4 : 3;
         }
         if (primsJson.empty()) continue;
         if (!meshes.empty()) meshes += ",", nodes += ",", sceneNodes += ",";
@@ -222,6 +269,19 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         ++mesh;
     }
     st.materials = materialOf.size();
+    // The images' bytes after the primitives', each at a multiple of 4.
+    std::string imagesJson;
+    std::vector<std::uint64_t> imageAt;
+    for (std::size_t k = 0; k < images.bytes.size(); ++k) {
+        offset = (offset + 3) / 4 * 4;
+        imageAt.push_back(offset);
+        views += (views.empty() ? "" : ",") + std::string("{\"buffer\":0,\"byteOffset\":") + std::to_string(offset) +
+                 ",\"byteLength\":" + std::to_string(images.bytes[k].size()) + "}";
+        imagesJson += (k ? "," : "") + std::string("{\"name\":") + jsonString(images.names[k]) + ",\"bufferView\":" +
+                      std::to_string(view++) + ",\"mimeType\":" + jsonString(images.mimes[k]) + "}";
+        offset += images.bytes[k].size();
+    }
+    offset = (offset + 3) / 4 * 4;
     // Texts (L-Py's @L labels): an empty node each where it stands, named by the text (Blender
     // makes each an empty of that name), its size in pixels in extras; under a node "labels".
     if (const auto& labels = scene.geometry().labels; !labels.empty()) {
@@ -242,6 +302,12 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
     if (mesh) {
         json += ",\"meshes\":[" + meshes + "],\"materials\":[" + materials + "],\"accessors\":[" + accessors +
                 "],\"bufferViews\":[" + views + "],\"buffers\":[{\"byteLength\":" + std::to_string(offset) + "}]";
+        if (!imagesJson.empty()) {  // PlantGL's and cpfg's images repeat (GL_REPEAT: 10497)
+            std::string textures;
+            for (std::size_t k = 0; k < images.bytes.size(); ++k) textures += (k ? "," : "") + std::string("{\"sampler\":0,\"source\":") + std::to_string(k) + "}";
+            json += ",\"images\":[" + imagesJson + "],\"textures\":[" + textures +
+                    "],\"samplers\":[{\"magFilter\":9729,\"minFilter\":9987,\"wrapS\":10497,\"wrapT\":10497}]";
+        }
     }
     json += "}";
     while (json.size() % 4) json += ' ';
@@ -287,7 +353,26 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                     out.write(idx.data(), idx.size() * 4);
                     progress.advance(4096);
                 });
+                if (textureOf(p) >= 0)  // glTF's v runs down the image from its top
+                    scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
+                        verts.resize(chunk.vertices.size() * 2);
+                        for (std::size_t i = 0; i < chunk.vertices.size(); ++i) {
+                            const TexCoord t = i < chunk.texcoords.size() ? chunk.texcoords[i] : TexCoord{};
+                            verts[2 * i] = t.u, verts[2 * i + 1] = 1.0f - t.v;
+                        }
+                        out.write(verts.data(), verts.size() * 4);
+                    });
             }
+        std::uint64_t at = 0;  // where the primitives' bytes end: the images after them
+        for (const auto& p : prims)
+            at += std::uint64_t(p.vertices) * 24 + std::uint64_t(p.indices) * 4 + (textureOf(p) >= 0 ? std::uint64_t(p.vertices) * 8 : 0);
+        const char zeros[4] = {0, 0, 0, 0};
+        for (std::size_t k = 0; k < images.bytes.size(); ++k) {
+            out.write(zeros, std::size_t(imageAt[k] - at));
+            out.text(images.bytes[k]);
+            at = imageAt[k] + images.bytes[k].size();
+        }
+        out.write(zeros, std::size_t(offset - at));
     }
     return finish(out, st, error);
 }
@@ -302,13 +387,41 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
     std::string mtlPath = toStdout ? std::string() : path.substr(0, path.size() - 4) + ".mtl";
     std::string mtlName = mtlPath.substr(mtlPath.find_last_of('/') + 1);
     std::optional<Out> mtlFile;
+    // The images textured primitives show, written beside the pair (an SGI image as a PNG) and
+    // named by the MTL's map_Kd; by Geometry::textures id, the file's name ("": none).
+    std::vector<std::string> imageName(scene.geometry().textures.size() + 1);
+    std::vector<std::unique_ptr<Out>> imageFiles;
+    auto nameOf = [&](const Primitive& p) {
+        return std::string(p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) +
+               (p.texture < imageName.size() && !imageName[p.texture].empty() ? "_" + imageName[p.texture] : "");
+    };
     if (!toStdout) {
+        const std::string folder = path.substr(0, path.find_last_of('/') + 1);
+        const auto& paths = scene.geometry().textures;
+        std::vector<bool> tried(imageName.size(), false);
+        for (const auto& p : scene.primitives) {
+            if (p.texture == 0 || p.texture >= imageName.size() || tried[p.texture]) continue;
+            tried[p.texture] = true;
+            std::string mime;
+            const std::string bytes = mesh::imageFileBytes(paths[p.texture - 1], mime);
+            if (bytes.empty()) continue;
+            std::string name = std::filesystem::path(paths[p.texture - 1]).stem().string() + (mime == "image/jpeg" ? ".jpg" : ".png");
+            for (int k = 2; std::find(imageName.begin(), imageName.end(), name) != imageName.end(); ++k)  // two images of one name
+                name = std::filesystem::path(paths[p.texture - 1]).stem().string() + "_" + std::to_string(k) + (mime == "image/jpeg" ? ".jpg" : ".png");
+            auto& file = imageFiles.emplace_back(std::make_unique<Out>(folder + name));
+            file->text(bytes);
+            if (!file->close()) {
+                error = folder + name + ": " + file->error();
+                return false;
+            }
+            imageName[p.texture] = name;
+        }
         Out& mtl = mtlFile.emplace(mtlPath);
-        std::map<std::pair<std::uint32_t, bool>, bool> seen;
+        std::map<std::string, bool> seen;
         mtl.text("# " + o.generator + "\n");
         for (const auto& p : scene.primitives) {
-            if (seen[{p.colour, p.doubleSided}]) continue;
-            seen[{p.colour, p.doubleSided}] = true;
+            if (seen[nameOf(p)]) continue;
+            seen[nameOf(p)] = true;
             auto c = linearColour(p.colour);
             const Shine* shine = shineOf(scene.geometry(), p.colour);  // its specular colour and exponent, its emission
             std::string light = "\nKs 0.05 0.05 0.05\nNs 10";
@@ -317,8 +430,9 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
                 light = "\nKs " + fmt(ks[0]) + " " + fmt(ks[1]) + " " + fmt(ks[2]) + "\nNs " + fmt(std::max(1.0f, 128 * shine->shininess)) +
                         (shine->emission ? "\nKe " + fmt(ke[0]) + " " + fmt(ke[1]) + " " + fmt(ke[2]) : std::string());
             }
-            mtl.text(std::string("\nnewmtl ") + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\nKd " +
-                     fmt(c[0]) + " " + fmt(c[1]) + " " + fmt(c[2]) + "\nKa 0 0 0" + light + "\nd " + fmt(c[3]) + "\nillum 2\n");
+            const std::string image = p.texture < imageName.size() ? imageName[p.texture] : "";
+            mtl.text("\nnewmtl " + nameOf(p) + "\nKd " + fmt(c[0]) + " " + fmt(c[1]) + " " + fmt(c[2]) + "\nKa 0 0 0" + light + "\nd " +
+                     fmt(c[3]) + "\nillum 2\n" + (image.empty() ? "" : "map_Kd " + image + "\n"));
         }
         st.materials = seen.size();
         if (!mtl.close()) {
@@ -329,20 +443,26 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
     Out out(path);
     out.text("# " + o.generator + "\n" + (toStdout ? std::string() : "mtllib " + mtlName + "\n"));
     Progress progress(o, scene.primitives, 2);
-    std::uint64_t base = 1;  // OBJ counts from 1
+    std::uint64_t base = 1, vtBase = 1;  // OBJ counts from 1
     for (const char* part : kParts) {
         bool first = true;
         for (const auto& p : scene.primitives) {
             if (p.part != part) continue;
             if (first) out.text(std::string("o ") + part + "\n");
             first = false;
-            out.text(std::string("g ") + part + "\nusemtl " + (p.doubleSided ? "surface_" : "bark_") + hexColour(p.colour) + "\n");
+            out.text(std::string("g ") + part + "\nusemtl " + nameOf(p) + "\n");
+            const bool textured = p.texture && p.texture < imageName.size() && !imageName[p.texture].empty();
             scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
-                for (const auto& v : chunk.vertices) {
+                for (std::size_t i = 0; i < chunk.vertices.size(); ++i) {
+                    const auto& v = chunk.vertices[i];
                     out.text("v ");
                     out.number(v.position.x), out.text(" "), out.number(v.position.y), out.text(" "), out.number(v.position.z);
                     out.text("\nvn ");
                     out.number(v.normal.x), out.text(" "), out.number(v.normal.y), out.text(" "), out.number(v.normal.z);
+                    if (textured) {  // OBJ's v runs up the image, as Sprout's
+                        const TexCoord t = i < chunk.texcoords.size() ? chunk.texcoords[i] : TexCoord{};
+                        out.text("\nvt "), out.number(t.u), out.text(" "), out.number(t.v);
+                    }
                     out.text("\n");
                 }
                 progress.advance(4096);
@@ -351,9 +471,11 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
             scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
                 for (std::size_t i = 0; i < chunk.indices.size(); i += 3) {
                     out.text("f");
-                    for (int k = 0; k < 3; ++k) {
+                    for (int k = 0; k < 3; ++k) {  // vt counted as v: one each, in the same order
                         std::uint64_t n = local + chunk.indices[i + k];
-                        out.text(" "), out.number(n), out.text("//"), out.number(n);
+                        out.text(" "), out.number(n), out.text(textured ? "/" : "//");
+                        if (textured) out.number(n - base + vtBase), out.text("/");
+                        out.number(n);
                     }
                     out.text("\n");
                 }
@@ -361,6 +483,7 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
                 progress.advance(4096);
             });
             base += p.vertices;
+            if (textured) vtBase += p.vertices;
         }
     }
     if (!out.close()) {
@@ -371,6 +494,11 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
         error = mtlPath + ": " + mtlFile->error();
         return false;
     }
+    for (auto& file : imageFiles)
+        if (!file->commit()) {
+            error = file->error();
+            return false;
+        }
     return finish(out, st, error);
 }
 

@@ -50,14 +50,16 @@ ExportScene::ExportScene(const Geometry& g, int sides) : m_g(g) {
     }
 
     // One primitive per part and colour, in a stable order.
-    auto group = [&](const char* part, Source source, bool doubleSided, auto count, auto colourOf, auto accept) {
-        std::map<std::uint32_t, std::vector<std::uint32_t>> byColour;
+    auto group = [&](const char* part, Source source, bool doubleSided, auto count, auto colourOf, auto accept,
+                     auto textureOf) {
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> byColour;
         for (std::uint32_t i = 0; i < std::uint32_t(count); ++i)
-            if (accept(i)) byColour[colourOf(i)].push_back(i);
-        for (auto& [colour, items] : byColour) {
+            if (accept(i)) byColour[{colourOf(i), textureOf(i)}].push_back(i);
+        for (auto& [key, items] : byColour) {
             Primitive p;
             p.part = part;
-            p.colour = colour;
+            p.colour = key.first;
+            p.texture = key.second;
             p.doubleSided = doubleSided;
             p.source = source;
             p.items = std::move(items);
@@ -65,15 +67,20 @@ ExportScene::ExportScene(const Geometry& g, int sides) : m_g(g) {
         }
     };
     auto all = [](std::uint32_t) { return true; };
-    group("stems", Source::Stems, false, m_runs.size(), [&](std::uint32_t i) { return m_runs[i].colour; }, all);
+    auto plain = [](std::uint32_t) { return 0u; };
+    group("stems", Source::Stems, false, m_runs.size(), [&](std::uint32_t i) { return m_runs[i].colour; }, all, plain);
     const SurfaceKind kinds[3] = {SurfaceKind::Leaf, SurfaceKind::Petal, SurfaceKind::Sphere};
     const char* names[3] = {"leaves", "petals", "spheres"};
     for (int k = 0; k < 3; ++k)
         group(names[k], Source::Surfaces, k < 2, g.surfaces.size(), [&](std::uint32_t i) { return g.surfaces[i].colour; },
-              [&](std::uint32_t i) { return g.surfaces[i].kind == kinds[k]; });
+              [&](std::uint32_t i) { return g.surfaces[i].kind == kinds[k]; }, plain);
     mesh::bakePolygons(g.polygons, m_polygons);
     group("polygons", Source::Polygons, true, m_polygons.indices.size() / 3,
-          [&](std::uint32_t t) { return m_polygons.vertices[m_polygons.indices[3 * t]].colour; }, all);
+          [&](std::uint32_t t) { return m_polygons.vertices[m_polygons.indices[3 * t]].colour; }, all, [&](std::uint32_t t) {
+              const std::uint32_t v = m_polygons.indices[3 * t];
+              const std::uint32_t image = v < m_polygons.texcoords.size() ? m_polygons.texcoords[v].texture : 0;
+              return image <= g.textures.size() ? image : 0u;
+          });
 
     // Counts and exact bounds, which glTF wants before the data.
     for (Primitive& p : primitives) {
@@ -105,7 +112,9 @@ void ExportScene::emit(const Primitive& p, std::size_t begin, std::size_t end, m
             case Source::Polygons: {
                 const std::uint32_t base = std::uint32_t(out.vertices.size());
                 for (int c = 0; c < 3; ++c) {
-                    out.vertices.push_back(m_polygons.vertices[m_polygons.indices[3 * i + c]]);
+                    const std::uint32_t v = m_polygons.indices[3 * i + c];
+                    out.vertices.push_back(m_polygons.vertices[v]);
+                    if (p.texture) out.texcoords.push_back(v < m_polygons.texcoords.size() ? m_polygons.texcoords[v] : TexCoord{});
                     out.indices.push_back(base + c);
                 }
                 break;

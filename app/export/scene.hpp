@@ -18,6 +18,7 @@ struct Primitive {
     std::string part;  // "stems", "leaves", "petals", "spheres", "polygons"
     std::uint32_t colour = 0;  // 0xRRGGBBAA (sRGB)
     bool doubleSided = false;
+    std::uint32_t texture = 0;  // its image, Geometry::textures[texture - 1] (polygons); 0: none
     Source source = Source::Stems;
     std::vector<std::uint32_t> items;  // stem runs, surfaces or polygon triangles
     std::size_t vertices = 0, indices = 0;
@@ -33,7 +34,8 @@ public:
     const Geometry& geometry() const { return m_g; }
 
     // Calls f(chunk) with the primitive's triangles a few thousand items at a time; the
-    // chunk's indices count from the chunk's first vertex.
+    // chunk's indices count from the chunk's first vertex; a textured primitive's chunks have
+    // their texcoords.
     template <class F>
     void forEachChunk(const Primitive& p, F&& f) const {
         mesh::BakedMesh chunk;

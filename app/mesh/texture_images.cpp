@@ -166,6 +166,29 @@ TextureImage decodeImage(std::string_view bytes) {
     return t;
 }
 
+std::string imageFileBytes(const std::string& path, std::string& mime) {
+    const std::shared_ptr<const TextureImage> image = textureImage(path);
+    if (!image->error.empty()) return "";
+    if (image->format == "png" || image->format == "jpeg") {
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream bytes;
+        bytes << in.rdbuf();
+        mime = image->format == "png" ? "image/png" : "image/jpeg";
+        return bytes.str();
+    }
+    png_image out;
+    std::memset(&out, 0, sizeof out);
+    out.version = PNG_IMAGE_VERSION;
+    out.width = png_uint_32(image->width), out.height = png_uint_32(image->height), out.format = PNG_FORMAT_RGBA;
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&out, nullptr, &size, 0, image->rgba.data(), 0, nullptr)) return "";
+    std::string bytes(size, '\0');
+    if (!png_image_write_to_memory(&out, bytes.data(), &size, 0, image->rgba.data(), 0, nullptr)) return "";
+    bytes.resize(size);
+    mime = "image/png";
+    return bytes;
+}
+
 void tintTextured(BakedMesh& m, const std::vector<std::string>& textures) {
     std::vector<std::uint32_t> average(textures.size() + 1, 0xFFFFFFFFu);
     for (std::size_t k = 0; k < textures.size(); ++k)

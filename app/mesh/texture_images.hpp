@@ -26,6 +26,11 @@ TextureImage decodeImage(std::string_view bytes);
 // same; one with `error` set (naming the file) when it cannot be read.
 std::shared_ptr<const TextureImage> textureImage(const std::string& path);
 
+// The image as a file an exporter embeds or puts beside a model: a PNG or JPEG file's own bytes
+// (`mime` image/png, image/jpeg), anything else (SGI) encoded as a PNG; "" when the file cannot
+// be read.
+std::string imageFileBytes(const std::string& path, std::string& mime);
+
 // The textured vertices of `m` (its texcoords) in their colour times their image's average
 // (`textures`: Geometry::textures), for pictures drawn without the images (a moving frame's
 // coarse bake); an image that cannot be read leaves the colour.

@@ -7,8 +7,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -237,4 +239,53 @@ TEST(Textures, AJpegPhotoIsRead) {
     long green = 0;
     for (std::size_t k = 0; k < jpeg->rgba.size(); k += 4) green += jpeg->rgba[k + 1] > jpeg->rgba[k + 2];
     EXPECT_GT(green, 1024 * 768 / 3) << "a leaf: more green than blue";
+}
+
+// The exports carry the image: a .glb embeds it (TEXCOORD_0, a baseColorTexture, its clear
+// parts cut away: MASK) and passes the Khronos validator with the same triangles as the
+// picture; an .obj's .mtl names it (map_Kd), written beside, and its faces have texture
+// coordinates.
+TEST(Textures, ExportsCarryTheImage) {
+    const std::string dir = testing::TempDir() + "tex_export/";
+    std::filesystem::create_directories(dir);
+    std::string error;
+    ASSERT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
+    const std::string model =
+        "from openalea.plantgl.all import *\n"
+        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
+        "context().turtle.setMaterial(1, ImageTexture('quarters.png'))\n"
+        "Axiom: @g(quad) ,(2) F\nderivation length: 0\n";
+    std::ofstream(dir + "quad.lpy") << model;
+    const auto glb = runSprout("export " + dir + "quad.lpy -o " + dir + "quad.glb");
+    ASSERT_EQ(glb.code, 0) << glb.err;
+    const std::string validator = std::string(SPROUT_TOOLS_DIR) + "/validate_gltf.js";
+    ASSERT_TRUE(std::filesystem::exists(std::string(SPROUT_TOOLS_DIR) + "/node_modules/gltf-validator"));
+    const std::string report = dir + "report.json";
+    EXPECT_EQ(std::system(("node " + validator + " " + dir + "quad.glb > " + report).c_str()), 0);
+    std::ifstream in(report);
+    const std::string r((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(r.find("\"errors\": 0"), std::string::npos) << r;
+    EXPECT_NE(r.find("\"warnings\": 0"), std::string::npos) << r;
+    EXPECT_NE(r.find("\"hasTextures\": true"), std::string::npos) << r;
+    EXPECT_NE(r.find("\"maxUVs\": 1"), std::string::npos) << r;
+    EXPECT_NE(r.find("\"width\": 16"), std::string::npos) << "the image embedded: " << r;
+    std::ifstream g(dir + "quad.glb", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(g)), {});
+    EXPECT_NE(bytes.find("\"alphaMode\":\"MASK\""), std::string::npos);
+    EXPECT_NE(bytes.find("\"baseColorTexture\":{\"index\":0}"), std::string::npos);
+
+    std::filesystem::create_directories(dir + "out");
+    const auto obj = runSprout("export " + dir + "quad.lpy -o " + dir + "out/quad.obj");
+    ASSERT_EQ(obj.code, 0) << obj.err;
+    std::ifstream mtl(dir + "out/quad.mtl");
+    const std::string m((std::istreambuf_iterator<char>(mtl)), {});
+    EXPECT_NE(m.find("map_Kd quarters.png"), std::string::npos) << m;
+    std::ifstream o(dir + "out/quad.obj");
+    const std::string text((std::istreambuf_iterator<char>(o)), {});
+    EXPECT_NE(text.find("\nvt "), std::string::npos);
+    EXPECT_NE(text.find("/1/"), std::string::npos) << "faces with texture coordinates";
+    EXPECT_NE(text.find("//"), std::string::npos) << "and the stem's without";
+    const auto copied = sprout::mesh::textureImage(dir + "out/quarters.png");
+    EXPECT_EQ(copied->error, "") << "the image beside the .obj";
+    EXPECT_EQ(copied->width, 16);
 }
