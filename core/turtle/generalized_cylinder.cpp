@@ -106,8 +106,25 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         if (curve.section.empty()) across[k] = ring[k];
     }
     const std::uint32_t base = std::uint32_t(mesh.positions.size());
+    // A textured tube: each ring with its first point again at its end (u = 1), u the share of
+    // the section's length, v the length along the axis so far (PlantGL's Extrusion).
+    const bool textured = curve.image != 0;
+    const std::uint32_t per = textured && closed ? sides + 1 : sides;
+    std::vector<float> around(per, 0.0f);
+    for (std::uint32_t k = 1; k < per; ++k) around[k] = around[k - 1] + glm::length(ring[k % sides] - ring[k - 1]);
+    if (around.back() > 0)
+        for (float& a : around) a /= around.back();
+    const float ca = std::cos(curve.texAngle), sa = std::sin(curve.texAngle);
+    auto texcoord = [&](float uu, float vv) {
+        const glm::vec2 q = glm::vec2(uu, vv) * curve.texScale - curve.texCentre;
+        const glm::vec2 r = glm::vec2(ca * q.x - sa * q.y, sa * q.x + ca * q.y) + curve.texCentre + curve.texTranslation;
+        return TexCoord{r.x, r.y, curve.image};
+    };
+    if (textured) mesh.texcoords.resize(base);
+    float along = 0;
     for (size_t i = 0; i < samples.size(); ++i) {
         const Sample& s = samples[i];
+        if (i > 0) along += glm::length(s.p - samples[i - 1].p);
         if (i > 0) {
             const glm::vec3 v1 = s.p - samples[i - 1].p;
             const float c1 = glm::dot(v1, v1);
@@ -123,18 +140,20 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         }
         const glm::vec3 w = glm::cross(t, u);
         const float r = s.r * radiusScale;
-        for (std::uint32_t k = 0; k < sides; ++k) {
+        for (std::uint32_t j = 0; j < per; ++j) {
+            const std::uint32_t k = j % sides;
             mesh.positions.push_back(s.p + r * (ring[k].x * u + ring[k].y * w));
             // A negative radius (cpfg's radius tangents can take it through 0) turns the section over.
             mesh.normals.push_back((r < 0 ? -1.0f : 1.0f) * safeNormalize(across[k].x * u + across[k].y * w, w));
             mesh.colours.push_back(s.colour);
+            if (textured) mesh.texcoords.push_back(texcoord(around[j], along));
         }
     }
     const std::uint32_t rings = std::uint32_t(samples.size());
     for (std::uint32_t i = 0; i + 1 < rings; ++i)
-        for (std::uint32_t k = 0; k < (closed ? sides : sides - 1); ++k) {
-            const std::uint32_t a = base + i * sides + k, b = base + i * sides + (k + 1) % sides;
-            const std::uint32_t c = a + sides, d = b + sides;
+        for (std::uint32_t k = 0; k < (closed && per == sides ? sides : per - 1); ++k) {
+            const std::uint32_t a = base + i * per + k, b = base + i * per + (k + 1) % per;
+            const std::uint32_t c = a + per, d = b + per;
             mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});
         }
     if (!closed) return;  // an open surface has no ends to cap
@@ -146,7 +165,7 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
         mesh.positions.push_back(s.p);
         mesh.normals.push_back(n);
         mesh.colours.push_back(s.colour);
-        const std::uint32_t ringStart = base + (end == 0 ? 0 : (rings - 1) * sides);
+        const std::uint32_t ringStart = base + (end == 0 ? 0 : (rings - 1) * per);
         const std::uint32_t first = std::uint32_t(mesh.positions.size());
         for (std::uint32_t k = 0; k < sides; ++k) {
             mesh.positions.push_back(mesh.positions[ringStart + k]);

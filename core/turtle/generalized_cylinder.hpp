@@ -35,6 +35,12 @@ struct GeneralizedCylinder {
     // along its up; empty: a circle of 12 sides. Closed when its last point is its first
     // (then capped), else an open surface (a leaf blade swept along its midrib).
     std::vector<glm::vec2> section;
+    // Its image (Geometry::textures id; 0: none) and how it lies: PlantGL's Extrusion gives u the
+    // share of the section's length around it, v the length along the axis, then the
+    // turtle's texture transform (scaled, turned by `texAngle` radians about `texCentre`, moved).
+    std::uint32_t image = 0;
+    glm::vec2 texScale{1, 1}, texTranslation{0, 0}, texCentre{0.5f, 0.5f};
+    float texAngle = 0;
 };
 
 // Appends the tube (open ends capped) to `mesh`; radii are multiplied by `radiusScale` (the

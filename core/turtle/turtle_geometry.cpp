@@ -33,6 +33,12 @@ void Turtle::curveCommand(State& t, Act act, const double* p, int arity) {
             m_curves.back().curve.section = m_contours[size_t(t.section) - fixed];
         }
         m_curves.back().start = {toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))};
+        if (const std::uint32_t image = textureOf(t); image && !m_level) {  // its image, as the turtle has it now
+            GeneralizedCylinder& tube = m_curves.back().curve;
+            const TexTransform& x = m_texTransforms[size_t(t.texture)];
+            tube.image = image;
+            tube.texScale = x.scale, tube.texTranslation = x.translation, tube.texCentre = x.centre, tube.texAngle = x.angle;
+        }
         t.curve = std::int16_t(m_curves.size() - 1);
         t.lastSegment = -1;
         curvePoint(t, 1);

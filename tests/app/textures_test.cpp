@@ -63,7 +63,7 @@ Quarter quarterAt(double u, double v) {
 
 // A square patch facing the front view, textured with the image by material 1, with
 // `transform` (L-Py's modules) before it.
-sprout::Image render(const std::string& name, const std::string& transform) {
+sprout::Image render(const std::string& name, const std::string& transform, const std::string& shape = "@g(quad)") {
     const std::string dir = testing::TempDir();
     std::string error;
     EXPECT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
@@ -71,7 +71,7 @@ sprout::Image render(const std::string& name, const std::string& transform) {
         "from openalea.plantgl.all import *\n"
         "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
         "context().turtle.setMaterial(1, ImageTexture('quarters.png'))\n"
-        "Axiom: " + transform + " @g(quad)\n"
+        "Axiom: " + transform + " " + shape + "\n"
         "derivation length: 0\n";
     const std::string path = writeTemp(name + ".lpy", model), png = dir + name + ".png";
     const auto r = runSprout("render " + path + " -o " + png + " --size 240x240 --view front --no-ground --no-shadows");
@@ -288,4 +288,29 @@ TEST(Textures, ExportsCarryTheImage) {
     const auto copied = sprout::mesh::textureImage(dir + "out/quarters.png");
     EXPECT_EQ(copied->error, "") << "the image beside the .obj";
     EXPECT_EQ(copied->width, 16);
+}
+
+// A generalized cylinder takes the image as PlantGL's Extrusion gives it: u around the section,
+// v the length along the axis (the image again each unit); TextureVScale stretches it along.
+TEST(Textures, AGeneralizedCylinderIsWrappedInTheImage) {
+    auto quartersSeen = [](const sprout::Image& im, int* bands) {
+        int n[5] = {0, 0, 0, 0, 0};
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) ++n[classify(im, x, y)];
+        int kinds = 0;
+        for (int q = 0; q < 4; ++q) kinds += n[q] > 80;
+        // Colour changes down the middle column: how many bands the tube shows along its length.
+        *bands = 0;
+        Quarter last = None;
+        for (int y = 0; y < im.height; ++y)
+            if (const Quarter q = classify(im, im.width / 2, y); q != None && q != last) ++*bands, last = q;
+        return kinds;
+    };
+    int bands = 0, stretched = 0;
+    const sprout::Image tube = render("tex_tube", "_(0.4) @Gc F(1) F(1) F(1) F(1) @Ge", "");
+    EXPECT_GE(quartersSeen(tube, &bands), 2) << "the image's quarters along the tube (half of it around is seen)";
+    const sprout::Image longer = render("tex_tube_v", "_(0.4) TextureVScale(0.25) @Gc F(1) F(1) F(1) F(1) @Ge", "");
+    quartersSeen(longer, &stretched);
+    EXPECT_GE(bands, 6) << "4 units long: the image 4 times along, two quarters each";
+    EXPECT_LE(stretched, 3) << "a quarter of the scale: the image once along the tube";
 }
