@@ -314,3 +314,37 @@ TEST(Textures, AGeneralizedCylinderIsWrappedInTheImage) {
     EXPECT_GE(bands, 6) << "4 units long: the image 4 times along, two quarters each";
     EXPECT_LE(stretched, 3) << "a quarter of the scale: the image once along the tube";
 }
+
+// A .lsys grammar's material with a texture: its generalized cylinders wear the image; a file
+// that is not there is a warning at its line, the tube in its colour.
+TEST(Textures, AnLsysMaterialsTextureWrapsItsTubes) {
+    const std::string dir = testing::TempDir() + "tex_lsys/";
+    std::filesystem::create_directories(dir);
+    std::string error;
+    ASSERT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
+    auto renderLsys = [&](const std::string& name, const std::string& image, std::string* err) {
+        std::ofstream(dir + name + ".lsys") << "n: 0\nwidth: 0.8\nmaterial: 1 #ffffff texture " + image +
+                                                   "\naxiom: ;(1) @Gs F(1) F(1) F(1) F(1) @Ge\n";
+        const auto r = runSprout("render " + dir + name + ".lsys -o " + dir + name + ".png --size 160x240 --view front --no-ground --no-shadows");
+        EXPECT_EQ(r.code, 0) << r.err;
+        *err = r.err;
+        sprout::Image im;
+        std::string e;
+        EXPECT_TRUE(sprout::readPng(dir + name + ".png", im, e)) << e;
+        return im;
+    };
+    std::string err;
+    const sprout::Image tube = renderLsys("tube", "quarters.png", &err);
+    int n[5] = {0, 0, 0, 0, 0};
+    for (int y = 0; y < tube.height; ++y)
+        for (int x = 0; x < tube.width; ++x) ++n[classify(tube, x, y)];
+    EXPECT_GT(n[Red] + n[Green] + n[Blue] + n[Yellow], 1000) << "the image on the tube";
+    EXPECT_EQ(err.find("warning"), std::string::npos) << err;
+    const sprout::Image plain = renderLsys("missing", "no_bark.png", &err);
+    EXPECT_NE(err.find(":3:"), std::string::npos) << "the warning at the material's line: " << err;
+    EXPECT_NE(err.find("no_bark.png"), std::string::npos) << err;
+    int coloured = 0;
+    for (int y = 0; y < plain.height; ++y)
+        for (int x = 0; x < plain.width; ++x) coloured += classify(plain, x, y) != None;
+    EXPECT_LT(coloured, 50) << "no image: the tube white, lit";
+}
