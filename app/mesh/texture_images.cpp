@@ -222,6 +222,7 @@ std::shared_ptr<const TextureImage> textureImage(const std::string& path) {
     auto image = std::make_shared<TextureImage>();
     if (ec) {
         image->error = "texture image '" + path + "' cannot be read";
+        image->missing = true;
     } else if (size > (std::uintmax_t(1) << 28)) {
         image->error = "texture image '" + path + "' is too large";
     } else {

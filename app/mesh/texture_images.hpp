@@ -16,6 +16,7 @@ struct TextureImage {
     std::string format;              // "png", "jpeg", "sgi"
     std::uint32_t average = 0xFFFFFFFFu;  // 0xRRGGBBFF: the mean of its pixels at least half opaque
     std::string error;               // why it could not be read; "": it was
+    bool missing = false;            // no such file (the model's reader has said so)
 };
 
 // The image in `bytes`, by its first bytes' signature; `error` set for anything else or a

@@ -105,7 +105,8 @@ GLuint Renderer::Impl::textureFor(const std::string& path) {
     std::shared_ptr<const mesh::TextureImage> image = mesh::textureImage(path);
     TextureObject& o = textureObjects[path];
     if (o.image == image) return o.texture;
-    if (!image->error.empty() && (!o.image || o.image->error != image->error))
+    // (A missing file the model's reader has warned of; a broken one is said here, once.)
+    if (!image->error.empty() && !image->missing && (!o.image || o.image->error != image->error))
         std::fprintf(stderr, "warning: %s: drawn in its colour\n", image->error.c_str());
     o.image = image;
     if (image->error.empty() && !o.texture) glGenTextures(1, &o.texture);
