@@ -80,9 +80,13 @@ void bindMoreObjects(py::module_& m) {
             const std::vector<LpyPatch> all = lpyPatches(text);
             for (auto it = all.rbegin(); it != all.rend(); ++it)
                 if (it->name == name) {
-                    if (rows.size() != it->rows.size() || rows.empty() || rows.front().size() != it->rows.front().size())
-                        throw py::value_error("a patch keeps its " + std::to_string(it->rows.size()) + " x " +
-                                              std::to_string(it->rows.front().size()) + " points");
+                    // Another shape is rows or columns added or taken away (issue 52's tools): a
+                    // matrix still, of at least the patch's degree + 1 each way.
+                    bool matrix = rows.size() >= size_t(it->udegree) + 1 && rows.size() <= 64;
+                    for (const auto& row : rows) matrix = matrix && row.size() == rows.front().size() && row.size() >= size_t(it->vdegree) + 1 && row.size() <= 64;
+                    if (!matrix)
+                        throw py::value_error("a patch's points are rows of one length, at least its degrees + 1 (" +
+                                              std::to_string(it->udegree + 1) + " x " + std::to_string(it->vdegree + 1) + ")");
                     return setLpyPatchPoints(text, *it, rows);
                 }
             throw py::key_error("no patch " + name + " in the model's INITIALISATION part");

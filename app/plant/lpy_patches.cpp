@@ -134,4 +134,38 @@ std::string setLpyPatchPoints(std::string_view text, const LpyPatch& patch, cons
     return out;
 }
 
+std::optional<std::vector<std::vector<std::array<double, 4>>>> editedPatch(const LpyPatch& patch, PatchEdit edit, size_t k, std::string& error) {
+    using Rows = std::vector<std::vector<std::array<double, 4>>>;
+    // Columns are rows of the transposed matrix.
+    auto transposed = [](const Rows& m) {
+        Rows t(m.empty() ? 0 : m.front().size(), std::vector<std::array<double, 4>>(m.size()));
+        for (size_t i = 0; i < m.size(); ++i)
+            for (size_t j = 0; j < m[i].size() && j < t.size(); ++j) t[j][i] = m[i][j];
+        return t;
+    };
+    const bool columns = edit == PatchEdit::AddColumn || edit == PatchEdit::DeleteColumn;
+    Rows m = columns ? transposed(patch.rows) : patch.rows;
+    const char* what = columns ? "column" : "row";
+    const int degree = columns ? patch.vdegree : patch.udegree;
+    if (k >= m.size()) return error = std::string("no ") + what + " " + std::to_string(k), std::nullopt;
+    if (edit == PatchEdit::AddRow || edit == PatchEdit::AddColumn) {
+        if (m.size() >= 64) return error = std::string("a patch of 64 ") + what + "s takes no more", std::nullopt;
+        std::vector<std::array<double, 4>> added(m[k].size());
+        for (size_t j = 0; j < added.size(); ++j)
+            for (size_t c = 0; c < 4; ++c) {
+                const double a = m[k][j][c];
+                const double b = k + 1 < m.size() ? m[k + 1][j][c] : 2 * a - m[k - (k > 0 ? 1 : 0)][j][c];
+                added[j][c] = c == 3 ? (k + 1 < m.size() ? (a + b) / 2 : a) : (a + b) / 2 + (k + 1 < m.size() ? 0 : (b - a) / 2);
+            }
+        m.insert(m.begin() + std::ptrdiff_t(k + 1), std::move(added));
+    } else {
+        if (int(m.size()) - 1 < degree + 1)
+            return error = std::string("a patch of degree ") + std::to_string(degree) + " along its " + what + "s keeps at least " +
+                           std::to_string(degree + 1) + " of them",
+                   std::nullopt;
+        m.erase(m.begin() + std::ptrdiff_t(k));
+    }
+    return columns ? transposed(m) : m;
+}
+
 }  // namespace sprout

@@ -68,3 +68,24 @@ def test_a_material_refuses_what_plantgl_would_not_keep():
         sprout.set_lpy_material(MATERIALS, 7, "diffuse", 1)
     with pytest.raises(KeyError):
         sprout.set_lpy_material(MATERIALS, 1, "glow", 1)
+
+
+PATCH = ("Axiom: @g(sheet)\nderivation length: 0\n###### INITIALISATION ######\n\ndef __initialiseContext__(context):\n"
+         "\timport openalea.plantgl.all as pgl\n"
+         "\tsheet = pgl.NurbsPatch(pgl.Point4Matrix([[(0, 0, 0, 1), (0, 1, 0, 1)], [(1, 0, 0, 1), (1, 1, 0, 1)]]), udegree = 1, vdegree = 1)\n"
+         "\tcontext[\"sheet\"] = sheet\n")
+
+
+def test_a_patch_takes_rows_and_weights_as_long_as_its_degree_allows():
+    [sheet] = sprout.lpy_patches(PATCH)
+    assert len(sheet["points"]) == 2 and sheet["udegree"] == 1
+    rows = [list(r) for r in sheet["points"]]
+    rows.insert(1, [(0.5, 0, 0.2, 1), (0.5, 1, 0.2, 3)])  # a row between, one point heavier
+    text = sprout.set_lpy_patch(PATCH, "sheet", rows)
+    [grown] = sprout.lpy_patches(text)
+    assert len(grown["points"]) == 3
+    assert tuple(grown["points"][1][1]) == (0.5, 1, 0.2, 3)
+    with pytest.raises(ValueError):
+        sprout.set_lpy_patch(PATCH, "sheet", rows[:1])  # fewer rows than its degree + 1
+    with pytest.raises(ValueError):
+        sprout.set_lpy_patch(PATCH, "sheet", [rows[0], rows[1][:1], rows[2]])  # not a matrix

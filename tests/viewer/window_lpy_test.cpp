@@ -1,6 +1,7 @@
 // The window on L-Py models under Xvfb: trust before their Python runs, a model that cannot
 // end the viewer, growth refused at the line that asks for it, labels, picking and the
 // inspector on Python rules.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -277,6 +278,28 @@ TEST(Window, AScalarAddedInThePanelIsOneTheModelGrowsWith) {
               std::string::npos) << "a heading, as Studio writes it; the model still grows";
 }
 
+// A flat 4 x 4 NurbsPatch sheet of L-Py Studio's form (degrees 3, the default).
+const std::string kSheet =
+    "Axiom: @g(patch, 1)\n"
+    "derivation length: 0\n"
+    "production:\n"
+    "endlsystem\n"
+    "###### INITIALISATION ######\n"
+    "\n"
+    "__lpy_code_version__ = 1.1\n"
+    "\n"
+    "def __initialiseContext__(context):\n"
+    "\timport openalea.plantgl.all as pgl\n"
+    "\tpatch = pgl.NurbsPatch(\t\n"
+    "\t    pgl.Point4Matrix([[(-1, 0, -1, 1), (-0.333333, 0, -1, 1), (0.333333, 0, -1, 1), (1, 0, -1, 1)], [(-1, 0, -0.333333, 1), (-0.333333, 0, -0.333333, 1), (0.333333, 0, -0.333333, 1), (1, 0, -0.333333, 1)], [(-1, 0, 0.333333, 1), (-0.333333, 0, 0.333333, 1), (0.333333, 0, 0.333333, 1), (1, 0, 0.333333, 1)], [(-1, 0, 1, 1), (-0.333333, 0, 1, 1), (0.333333, 0, 1, 1), (1, 0, 1, 1)]]) , \n"
+    "\t    )\n"
+    "\tpatch.name = \"patch\"\n"
+    "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('NurbsPatch',patch)])\n"
+    "\tparameterset = [panel_0,]\n"
+    "\tcontext[\"__parameterset__\"] = parameterset\n"
+    "\tcontext[\"patch\"] = patch\n"
+    "";
+
 // The surface editor: the mouse drags the top corner of a NurbsPatch up in the panel's 3D view;
 // the sheet follows, and one undo gives back the picture and the file.
 TEST(Window, TheMouseDragsAPatchCornerInTheSurfaceEditorAndUndoRestoresIt) {
@@ -284,26 +307,7 @@ TEST(Window, TheMouseDragsAPatchCornerInTheSurfaceEditorAndUndoRestoresIt) {
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
     const fs::path dir = testDir("surface_window");
     const fs::path model = dir / "sheet.lpy", back = dir / "back.lpy";
-    const std::string text =
-        "Axiom: @g(patch, 1)\n"
-        "derivation length: 0\n"
-        "production:\n"
-        "endlsystem\n"
-        "###### INITIALISATION ######\n"
-        "\n"
-        "__lpy_code_version__ = 1.1\n"
-        "\n"
-        "def __initialiseContext__(context):\n"
-        "\timport openalea.plantgl.all as pgl\n"
-        "\tpatch = pgl.NurbsPatch(\t\n"
-        "\t    pgl.Point4Matrix([[(-1, 0, -1, 1), (-0.333333, 0, -1, 1), (0.333333, 0, -1, 1), (1, 0, -1, 1)], [(-1, 0, -0.333333, 1), (-0.333333, 0, -0.333333, 1), (0.333333, 0, -0.333333, 1), (1, 0, -0.333333, 1)], [(-1, 0, 0.333333, 1), (-0.333333, 0, 0.333333, 1), (0.333333, 0, 0.333333, 1), (1, 0, 0.333333, 1)], [(-1, 0, 1, 1), (-0.333333, 0, 1, 1), (0.333333, 0, 1, 1), (1, 0, 1, 1)]]) , \n"
-        "\t    )\n"
-        "\tpatch.name = \"patch\"\n"
-        "\tpanel_0 = ({'name': 'Panel 1', 'active': True, 'visible': True},[('NurbsPatch',patch)])\n"
-        "\tparameterset = [panel_0,]\n"
-        "\tcontext[\"__parameterset__\"] = parameterset\n"
-        "\tcontext[\"patch\"] = patch\n"
-        "";
+    const std::string text = kSheet;
     std::ofstream(model, std::ios::binary) << text;
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
     const auto printed = runScript(dir, model.string() + " --size 1000x700",
@@ -323,6 +327,32 @@ TEST(Window, TheMouseDragsAPatchCornerInTheSurfaceEditorAndUndoRestoresIt) {
     EXPECT_GT(pixelsThatDiffer(ia, ib), 300u * 300u / 50) << "the sheet follows its corner";
     EXPECT_LE(pixelsThatDiffer(ia, ic), 20u);
     EXPECT_EQ(fileText(back), text) << "one undo: the file byte for byte";
+}
+
+// The surface editor's tools on an L-Py patch: a row added (midway), a column the degree needs
+// refused, a column added, a point weighed; each one undo step, the file back byte for byte.
+TEST(Window, TheSurfaceEditorAddsRowsAndColumnsAndWeighsPoints) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("surface_tools");
+    const fs::path model = dir / "sheet.lpy", edited = dir / "edited.lpy", back = dir / "back.lpy";
+    std::ofstream(model, std::ios::binary) << kSheet;
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\nsurface-edit 0 add-row 1\nwait\nsurface-edit 0 delete-column 0\n"
+                                   "surface-edit 0 add-column 3\nwait\nsurface-edit 0 weight 2 2 5\nwait\ndiagnostics\nsurfaces\nsaveas " +
+                                       edited.string() + "\nundo\nundo\nundo\nwait\nsaveas " + back.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 4u) << printed.size();
+    EXPECT_EQ(printed[0], "python=allowed");
+    EXPECT_EQ(printed[1], "refused=a patch of degree 3 along its columns keeps at least 4 of them");
+    EXPECT_EQ(printed[2], "plant=shown") << "the model runs with the new patch";
+    // 5 rows of 5: the row added between rows 1 and 2 (z midway), the column after the last
+    // (x as far again beyond it).
+    EXPECT_EQ(std::count(printed[3].begin(), printed[3].end(), ';'), 24) << printed[3];
+    EXPECT_NE(printed[3].find(";-1,0,0;"), std::string::npos) << printed[3];
+    EXPECT_NE(printed[3].find("1.66667,0,-1;"), std::string::npos) << printed[3];
+    const std::string text = fileText(edited);
+    EXPECT_NE(text.find("(0.333333, 0, 0, 5)"), std::string::npos) << "point 2,2 weighs 5: " << text;
+    EXPECT_EQ(fileText(back), kSheet) << "three undos: the file byte for byte";
 }
 
 // An image under the curve editor's curve to trace: a PNG loads (its size said), a missing one

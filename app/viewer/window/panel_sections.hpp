@@ -56,6 +56,9 @@ void surfaceSection(App& app);
 std::vector<std::string> surfaceLines(App& app);
 bool setSurfacePoint(App& app, size_t which, size_t u, size_t v, const std::array<double, 3>& p, std::uint64_t gesture = 0);
 void openSurface(size_t which);
+// An L-Py patch's tools: `what` add-row|delete-row|add-column|delete-column after or at row or
+// column k, or weight (point (k, v) weighing `weight`), one undo step; "" or why not.
+std::string editSurface(App& app, size_t which, const std::string& what, size_t k, double weight = 0, size_t v = 0);
 // panel_colours.cpp: a VLab object's material sets and colour maps, each entry edited as medit
 // and palette edit them; colourLines lists them for the script (`colours`), setColourEntry sets
 // one ("" when done, else what stopped it): a map's entry "r g b" (0..255), a material's field.

@@ -2,6 +2,7 @@
 // text as L-Py Studio writes them) and a VLab object's Bezier patches (its `.s` files, written
 // as bezieredit writes them), each opened in the 3D surface editor (surface_canvas.hpp).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/plant/lpy_patches.hpp"
@@ -80,7 +81,7 @@ bool write(App& app, const Listed& l, const PatchGrid& g, std::uint64_t gesture)
 
 EditedSurface edited(App& app, const Listed& l) {
     EditedSurface e;
-    e.key = l.label;
+    e.key = l.label.substr(0, l.label.find("  ("));  // the same editor while rows come and go
     e.points = gridOf(l);
     if (l.lpy) {
         const auto rows = l.patch.rows;
@@ -108,6 +109,49 @@ size_t& openIndex() {
     return open;
 }
 
+// An L-Py patch's text with its points `rows` (another shape, a weight), one undo step.
+std::string writeRows(App& app, const Listed& l, const std::vector<std::vector<std::array<double, 4>>>& rows) {
+    for (const LpyPatch& p : lpyPatches(app.state.text()))
+        if (p.name == l.patch.name) {
+            app.state.setText(setLpyPatchPoints(app.state.text(), p, rows), newGesture());
+            return "";
+        }
+    return "no patch " + l.patch.name;
+}
+
+std::string editRows(App& app, const Listed& l, PatchEdit what, size_t k) {
+    std::string error;
+    const auto rows = editedPatch(l.patch, what, k, error);
+    return rows ? writeRows(app, l, *rows) : error;
+}
+
+// Below an L-Py patch's editor: rows and columns added after, or taken away at, the chosen
+// point's (the last ones before a point is chosen), and the chosen point's weight.
+void patchTools(App& app, const Listed& l) {
+    const auto chosen = selectedSurfacePoint(l.label.substr(0, l.label.find("  (")));
+    const size_t u = chosen ? (*chosen)[0] : l.patch.rows.size() - 1, v = chosen ? (*chosen)[1] : l.patch.rows.front().size() - 1;
+    std::string why;
+    if (ImGui::SmallButton("+ row")) why = editRows(app, l, PatchEdit::AddRow, u);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("- row")) why = editRows(app, l, PatchEdit::DeleteRow, u);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("+ column")) why = editRows(app, l, PatchEdit::AddColumn, v);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("- column")) why = editRows(app, l, PatchEdit::DeleteColumn, v);
+    if (chosen && u < l.patch.rows.size() && v < l.patch.rows[u].size()) {
+        float w = float(l.patch.rows[u][v][3]);
+        ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+        if (ImGui::DragFloat("weight of the point", &w, 0.01f, 0.01f, 100.0f, "%.3g") && w > 0) {
+            auto rows = l.patch.rows;
+            rows[u][v][3] = w;
+            why = writeRows(app, l, rows);
+        }
+    } else {
+        ImGui::TextColored(kDim, "take hold of a point to add or delete its row or column, or weigh it");
+    }
+    if (!why.empty()) app.say(l.patch.name + ": " + why);
+}
+
 }  // namespace
 
 bool hasSurfaces(App& app) { return !listed(app).empty(); }
@@ -121,6 +165,7 @@ void surfaceSection(App& app) {
     ImGui::PushID(int(open));
     surfaceCanvas(app, edited(app, all[open]));
     ImGui::PopID();
+    if (all[open].lpy) patchTools(app, all[open]);
     if (!all[open].lpy) {
         if (ImGui::SmallButton("undo##surfaces")) objectUndo(app, false);
         ImGui::SameLine();
@@ -154,5 +199,23 @@ bool setSurfacePoint(App& app, size_t which, size_t u, size_t v, const std::arra
 }
 
 void openSurface(size_t which) { openIndex() = which; }
+
+std::string editSurface(App& app, size_t which, const std::string& what, size_t k, double weight, size_t v) {
+    const auto all = listed(app);
+    if (which >= all.size()) return "no surface " + std::to_string(which);
+    if (!all[which].lpy) return "a VLab Bezier patch keeps its 4 x 4 points";
+    if (what == "weight") {
+        auto rows = all[which].patch.rows;
+        if (k >= rows.size() || v >= rows[k].size()) return "no point " + std::to_string(k) + "," + std::to_string(v);
+        if (!(weight > 0) || !std::isfinite(weight)) return "a weight is above 0";
+        rows[k][v][3] = weight;
+        return writeRows(app, all[which], rows);
+    }
+    const PatchEdit e = what == "add-row"      ? PatchEdit::AddRow
+                        : what == "delete-row" ? PatchEdit::DeleteRow
+                        : what == "add-column" ? PatchEdit::AddColumn
+                                               : PatchEdit::DeleteColumn;
+    return editRows(app, all[which], e, k);
+}
 
 }  // namespace sprout::viewer::detail

@@ -43,6 +43,9 @@
 //                         the i-th; its control point (u, v) moved there (the same g: one drag)
 //   mouse-drag-surface-point <u> <v> <dx> <dy> <frames>   as mouse-drag-point, in the surface
 //                         editor
+//   surface-edit <i> add-row|delete-row|add-column|delete-column <k> | surface-edit <i> weight
+//                         <u> <v> <w>   an L-Py patch's row or column added after k or taken
+//                         away, a point's weight, as the editor's tools; "refused=why" if not
 //   material-interpolate <from> <to>   the materials between made the mix of the two ends
 //   object-curves         prints a VLab object's functions and contours, a line each:
 //                         "object-curve=LABEL points=x,y,multiplicity;..."

@@ -95,6 +95,17 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         m_waitFor = app.state.generation();
         return true;
     }
+    if (cmd == "surface-edit") {  // I add-row|delete-row|add-column|delete-column K | I weight U V W
+        size_t i = 0, k = 0, v = 0;
+        std::string what;
+        double w = 0;
+        in >> i >> what >> k;
+        if (what == "weight") in >> v >> w;
+        const std::string why = detail::editSurface(app, i, what, k, w, v);
+        if (!why.empty()) std::printf("refused=%s\n", why.c_str()), std::fflush(stdout);
+        m_waitFor = app.state.generation();
+        return true;
+    }
     if (cmd == "curve-trace") {  // an image under the curve editor's curve
         std::string path;
         std::getline(in >> std::ws, path);

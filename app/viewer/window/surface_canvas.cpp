@@ -17,6 +17,7 @@ struct SurfaceView {
     double cx = 0, cy = 0, cz = 0, scale = 100;
     bool fitted = false, reveal = false;
     int heldU = -1, heldV = -1;
+    int selU = -1, selV = -1;  // the point last taken hold of (the row, column and weight tools')
     std::uint64_t gesture = 0;
     std::vector<std::vector<ImVec2>> drawn;
 };
@@ -53,6 +54,14 @@ void fit(SurfaceView& v, const PatchGrid& g, ImVec2 size) {
 }
 
 }  // namespace
+
+std::optional<std::array<std::size_t, 2>> selectedSurfacePoint(const std::string& key) {
+    const SurfaceView& v = view();
+    if (v.key != key || v.selU < 0) return std::nullopt;
+    return std::array<std::size_t, 2>{std::size_t(v.selU), std::size_t(v.selV)};
+}
+
+void selectSurfacePoint(std::size_t u, std::size_t w) { view().selU = int(u), view().selV = int(w); }
 
 std::optional<std::array<float, 2>> surfacePointOnScreen(std::size_t u, std::size_t w) {
     SurfaceView& v = view();
@@ -108,11 +117,13 @@ void surfaceCanvas(App& app, const EditedSurface& s) {
         for (size_t j = 0; j < v.drawn[i].size(); ++j) {
             const bool lit = (int(i) == v.heldU && int(j) == v.heldV) || (v.heldU < 0 && int(i) == nu && int(j) == nv);
             dl->AddCircleFilled(v.drawn[i][j], lit ? 6.0f : 4.0f, lit ? IM_COL32(255, 200, 80, 255) : IM_COL32(230, 230, 240, 255));
+            if (int(i) == v.selU && int(j) == v.selV) dl->AddCircle(v.drawn[i][j], 8.0f, IM_COL32(255, 200, 80, 255), 0, 1.5f);
         }
     dl->PopClipRect();
     if (pressed) {
         v.heldU = ImGui::IsMouseDown(ImGuiMouseButton_Left) ? nu : -1;
         v.heldV = v.heldU >= 0 ? nv : -1;
+        if (v.heldU >= 0) v.selU = v.heldU, v.selV = v.heldV;
         v.gesture = newGesture();
     }
     if (!active) v.heldU = v.heldV = -1;

@@ -27,5 +27,9 @@ void surfaceCanvas(App& app, const EditedSurface& surface);
 // Where control point (u, v) of the surface open was drawn last frame, in window pixels; the
 // panel scrolls to the editor on the next frame. Null: none.
 std::optional<std::array<float, 2>> surfacePointOnScreen(std::size_t u, std::size_t v);
+// The control point (u, v) last taken hold of in the editor of the surface `key`, ringed: the
+// one the row, column and weight tools act on; none before one is. Scripts choose one.
+std::optional<std::array<std::size_t, 2>> selectedSurfacePoint(const std::string& key);
+void selectSurfacePoint(std::size_t u, std::size_t v);
 
 }  // namespace sprout::viewer::detail
