@@ -165,14 +165,17 @@ const Shine* shineOf(const Geometry& g, std::uint32_t colour) {
 
 // [SECTION] glTF binary
 // ---------------------------------------------------------------------------------- glTF
-// The images of a scene's textured primitives that can be read: their bytes, types and names,
-// and by Geometry::textures id the glTF texture of each (-1: none).
-struct GlbImages {
+// The images of a scene's textured primitives that can be read (a PNG or JPEG file's bytes, an SGI
+// image as a PNG): their bytes, types and names, and by Geometry::textures id the glTF texture
+// of each, its place in these (-1: none). The .glb embeds them, the .obj writes them beside it.
+struct SceneImages {
     std::vector<std::string> bytes, mimes, names;
     std::vector<int> texture;
 };
-GlbImages glbImages(const ExportScene& scene) {
-    GlbImages out;
+// A primitive's glTF texture, -1: none.
+int textureOf(const SceneImages& images, const Primitive& p) { return p.texture < images.texture.size() ? images.texture[p.texture] : -1; }
+SceneImages sceneImages(const ExportScene& scene) {
+    SceneImages out;
     const auto& paths = scene.geometry().textures;
     out.texture.assign(paths.size() + 1, -1);
     std::vector<bool> tried(paths.size() + 1, false);
@@ -190,21 +193,15 @@ GlbImages glbImages(const ExportScene& scene) {
     return out;
 }
 
-bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
-              std::string& error) {
-    const auto& prims = scene.primitives;
-    // The images textured primitives show, embedded (a PNG or JPEG as it is, an SGI as a PNG),
-    // each once: by Geometry::textures id, its glTF texture (-1: none, it could not be read).
-    const GlbImages images = glbImages(scene);
-    auto textureOf = [&](const Primitive& p) { return p.texture < images.texture.size() ? images.texture[p.texture] : -1; };
-    // Materials: one per colour, sidedness and image.
-    std::map<std::tuple<std::uint32_t, bool, int>, std::size_t> materialOf;
+// The materials, one per colour, sidedness and image (`materialOf` numbers them), as glTF's JSON.
+using MaterialKey = std::tuple<std::uint32_t, bool, int>;
+std::string glbMaterials(const ExportScene& scene, const SceneImages& images, std::map<MaterialKey, std::size_t>& materialOf) {
     std::string materials;
-    for (const auto& p : prims) {
-        auto key = std::make_tuple(p.colour, p.doubleSided, textureOf(p));
+    for (const auto& p : scene.primitives) {
+        auto key = std::make_tuple(p.colour, p.doubleSided, textureOf(images, p));
         if (materialOf.count(key)) continue;
         materialOf[key] = materialOf.size();
-        const int texture = textureOf(p);
+        const int texture = textureOf(images, p);
         auto c = linearColour(p.colour);
         // A shining material: smoother as it is shinier, and its emission (glTF's factors).
         const Shine* shine = shineOf(scene.geometry(), p.colour);
@@ -222,6 +219,70 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
                                      : "") +
                      (p.doubleSided ? ",\"doubleSided\":true" : "") + "}";
     }
+    return materials;
+}
+
+// The binary chunk's bytes: each primitive's vertices (position, normal), indices and, textured,
+// its texture coordinates; then the images at `imageAt`, zeros to `end` between.
+void writeGlbBuffer(Out& out, const ExportScene& scene, const SceneImages& images, const std::vector<std::uint64_t>& imageAt, std::uint64_t end,
+                    const ExportOptions& o) {
+    const auto& prims = scene.primitives;
+    Progress progress(o, prims, 2);
+    std::vector<float> verts;
+    std::vector<std::uint32_t> idx;
+    for (const char* part : kParts)
+        for (const auto& p : prims) {
+            if (p.part != part) continue;
+            scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
+                verts.resize(chunk.vertices.size() * 6);
+                float* w = verts.data();
+                for (const auto& v : chunk.vertices) {
+                    std::memcpy(w, &v.position, 12);
+                    std::memcpy(w + 3, &v.normal, 12);
+                    w += 6;
+                }
+                out.write(verts.data(), verts.size() * 4);
+                progress.advance(4096);
+            });
+            std::uint32_t base = 0;
+            scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
+                idx.resize(chunk.indices.size());
+                for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = base + chunk.indices[i];
+                base += std::uint32_t(chunk.vertices.size());
+                out.write(idx.data(), idx.size() * 4);
+                progress.advance(4096);
+            });
+            if (textureOf(images, p) >= 0)  // glTF's v runs down the image from its top
+                scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
+                    verts.resize(chunk.vertices.size() * 2);
+                    for (std::size_t i = 0; i < chunk.vertices.size(); ++i) {
+                        const TexCoord t = i < chunk.texcoords.size() ? chunk.texcoords[i] : TexCoord{};
+                        verts[2 * i] = t.u, verts[2 * i + 1] = 1.0f - t.v;
+                    }
+                    out.write(verts.data(), verts.size() * 4);
+                });
+        }
+    std::uint64_t at = 0;  // where the primitives' bytes end: the images after them
+    for (const auto& p : prims)
+        at += std::uint64_t(p.vertices) * 24 + std::uint64_t(p.indices) * 4 + (textureOf(images, p) >= 0 ? std::uint64_t(p.vertices) * 8 : 0);
+    const char zeros[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < images.bytes.size(); ++k) {
+        out.write(zeros, std::size_t(imageAt[k] - at));
+        out.text(images.bytes[k]);
+        at = imageAt[k] + images.bytes[k].size();
+    }
+    out.write(zeros, std::size_t(end - at));
+}
+
+bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOptions& o, ExportStats& st,
+              std::string& error) {
+    const auto& prims = scene.primitives;
+    // The images textured primitives show, embedded (a PNG or JPEG as it is, an SGI as a PNG),
+    // each once: by Geometry::textures id, its glTF texture (-1: none, it could not be read).
+    const SceneImages images = sceneImages(scene);
+    // Materials: one per colour, sidedness and image.
+    std::map<MaterialKey, std::size_t> materialOf;
+    const std::string materials = glbMaterials(scene, images, materialOf);
     // Per primitive: an interleaved position+normal view and an index view.
     std::string views, accessors, meshes, nodes, sceneNodes;
     std::uint64_t offset = 0;
@@ -230,7 +291,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
         std::string primsJson;
         for (const auto& p : prims) {
             if (p.part != part) continue;
-            const bool textured = textureOf(p) >= 0;
+            const bool textured = textureOf(images, p) >= 0;
             const std::uint64_t vbytes = std::uint64_t(p.vertices) * 24, ibytes = std::uint64_t(p.indices) * 4,
                                 ubytes = textured ? std::uint64_t(p.vertices) * 8 : 0;
             if (!views.empty()) views += ",";
@@ -257,7 +318,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
             primsJson += "{\"attributes\":{\"POSITION\":" + std::to_string(accessor) + ",\"NORMAL\":" +
                          std::to_string(accessor + 1) + (textured ? ",\"TEXCOORD_0\":" + std::to_string(accessor + 3) : "") +
                          "},\"indices\":" + std::to_string(accessor + 2) + ",\"material\":" +
-                         std::to_string(materialOf[{p.colour, p.doubleSided, textureOf(p)}]) + ",\"mode\":4}";
+                         std::to_string(materialOf[{p.colour, p.doubleSided, textureOf(images, p)}]) + ",\"mode\":4}";
             view += textured ? 3 : 2;
             accessor += textured ? 4 : 3;
         }
@@ -328,51 +389,7 @@ bool writeGlb(const ExportScene& scene, const std::string& path, const ExportOpt
     if (offset) {
         u32(std::uint32_t(offset));
         u32(0x004E4942);  // "BIN\0"
-        Progress progress(o, prims, 2);
-        std::vector<float> verts;
-        std::vector<std::uint32_t> idx;
-        for (const char* part : kParts)
-            for (const auto& p : prims) {
-                if (p.part != part) continue;
-                scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
-                    verts.resize(chunk.vertices.size() * 6);
-                    float* w = verts.data();
-                    for (const auto& v : chunk.vertices) {
-                        std::memcpy(w, &v.position, 12);
-                        std::memcpy(w + 3, &v.normal, 12);
-                        w += 6;
-                    }
-                    out.write(verts.data(), verts.size() * 4);
-                    progress.advance(4096);
-                });
-                std::uint32_t base = 0;
-                scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
-                    idx.resize(chunk.indices.size());
-                    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = base + chunk.indices[i];
-                    base += std::uint32_t(chunk.vertices.size());
-                    out.write(idx.data(), idx.size() * 4);
-                    progress.advance(4096);
-                });
-                if (textureOf(p) >= 0)  // glTF's v runs down the image from its top
-                    scene.forEachChunk(p, [&](const mesh::BakedMesh& chunk) {
-                        verts.resize(chunk.vertices.size() * 2);
-                        for (std::size_t i = 0; i < chunk.vertices.size(); ++i) {
-                            const TexCoord t = i < chunk.texcoords.size() ? chunk.texcoords[i] : TexCoord{};
-                            verts[2 * i] = t.u, verts[2 * i + 1] = 1.0f - t.v;
-                        }
-                        out.write(verts.data(), verts.size() * 4);
-                    });
-            }
-        std::uint64_t at = 0;  // where the primitives' bytes end: the images after them
-        for (const auto& p : prims)
-            at += std::uint64_t(p.vertices) * 24 + std::uint64_t(p.indices) * 4 + (textureOf(p) >= 0 ? std::uint64_t(p.vertices) * 8 : 0);
-        const char zeros[4] = {0, 0, 0, 0};
-        for (std::size_t k = 0; k < images.bytes.size(); ++k) {
-            out.write(zeros, std::size_t(imageAt[k] - at));
-            out.text(images.bytes[k]);
-            at = imageAt[k] + images.bytes[k].size();
-        }
-        out.write(zeros, std::size_t(offset - at));
+        writeGlbBuffer(out, scene, images, imageAt, offset, o);
     }
     return finish(out, st, error);
 }
@@ -397,24 +414,18 @@ bool writeObj(const ExportScene& scene, const std::string& path, const ExportOpt
     };
     if (!toStdout) {
         const std::string folder = path.substr(0, path.find_last_of('/') + 1);
-        const auto& paths = scene.geometry().textures;
-        std::vector<bool> tried(imageName.size(), false);
-        for (const auto& p : scene.primitives) {
-            if (p.texture == 0 || p.texture >= imageName.size() || tried[p.texture]) continue;
-            tried[p.texture] = true;
-            std::string mime;
-            const std::string bytes = mesh::imageFileBytes(paths[p.texture - 1], mime);
-            if (bytes.empty()) continue;
-            std::string name = std::filesystem::path(paths[p.texture - 1]).stem().string() + (mime == "image/jpeg" ? ".jpg" : ".png");
-            for (int k = 2; std::find(imageName.begin(), imageName.end(), name) != imageName.end(); ++k)  // two images of one name
-                name = std::filesystem::path(paths[p.texture - 1]).stem().string() + "_" + std::to_string(k) + (mime == "image/jpeg" ? ".jpg" : ".png");
+        const SceneImages images = sceneImages(scene);
+        for (std::size_t id = 1; id < imageName.size(); ++id) {
+            const int k = images.texture[id];
+            if (k < 0) continue;
+            const std::string ext = images.mimes[size_t(k)] == "image/jpeg" ? ".jpg" : ".png";
+            std::string name = images.names[size_t(k)] + ext;
+            for (int n = 2; std::find(imageName.begin(), imageName.end(), name) != imageName.end(); ++n)  // two images of one name
+                name = images.names[size_t(k)] + "_" + std::to_string(n) + ext;
             auto& file = imageFiles.emplace_back(std::make_unique<Out>(folder + name));
-            file->text(bytes);
-            if (!file->close()) {
-                error = folder + name + ": " + file->error();
-                return false;
-            }
-            imageName[p.texture] = name;
+            file->text(images.bytes[size_t(k)]);
+            if (!file->close()) return error = folder + name + ": " + file->error(), false;
+            imageName[id] = name;
         }
         Out& mtl = mtlFile.emplace(mtlPath);
         std::map<std::string, bool> seen;

@@ -45,9 +45,16 @@ void readColours(const VlabObject& object, VlabPicture& out) {
             const vlab::Material white;  // cpfg's default material: diffuse white
             for (size_t k = 0; k < 256; ++k) {
                 const vlab::Material& m = set->materials[k].value_or(white);
-                colours[k] = vlab::materialColour(m);
-                auto c = [&](size_t i) { return std::uint32_t(std::lround(std::clamp(m.specular[i], 0.0f, 1.0f) * 255.0f)); };
-                const Shine shine{c(0) << 24 | c(1) << 16 | c(2) << 8, std::clamp(m.shininess / 128.0f, 0.0f, 1.0f), 0};
+                // The colour is the diffuse one; the emission is light of its own, added after
+                // the lighting as OpenGL adds it (a shine's), not a brighter colour shaded.
+                vlab::Material diffuse = m;
+                diffuse.emission = {0, 0, 0};
+                colours[k] = vlab::materialColour(diffuse);
+                auto c = [&](const std::array<float, 3>& rgb, size_t i) {
+                    return std::uint32_t(std::lround(std::clamp(rgb[i], 0.0f, 1.0f) * 255.0f));
+                };
+                auto rgb = [&](const std::array<float, 3>& v) { return c(v, 0) << 24 | c(v, 1) << 16 | c(v, 2) << 8; };
+                const Shine shine{rgb(m.specular), std::clamp(m.shininess / 128.0f, 0.0f, 1.0f), rgb(m.emission)};
                 if (!shine.plain()) setShines[size_t(f.set)].push_back({int(k), shine});
             }
             if (size_t(f.set) == size_t(object.referenceSet) && set->materials[0]) {

@@ -25,6 +25,26 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
     return n > 1e-12f ? v / n : fallback;
 }
 
+// A textured tube's coordinates (PlantGL's Extrusion): at ring point j (of `per`: a closed
+// ring's first point again at its end) u is the share of the section's length so far, v the
+// length along the axis; then the curve's texture transform.
+struct TubeTexture {
+    const GeneralizedCylinder& curve;
+    std::vector<float> around;
+    float ca, sa;
+    TubeTexture(const GeneralizedCylinder& c, const std::vector<glm::vec2>& ring, std::uint32_t per)
+        : curve(c), around(per, 0.0f), ca(std::cos(c.texAngle)), sa(std::sin(c.texAngle)) {
+        for (std::uint32_t k = 1; k < per; ++k) around[k] = around[k - 1] + glm::length(ring[k % ring.size()] - ring[k - 1]);
+        if (!around.empty() && around.back() > 0)
+            for (float& a : around) a /= around.back();
+    }
+    TexCoord at(std::size_t j, float along) const {
+        const glm::vec2 q = glm::vec2(around[j], along) * curve.texScale - curve.texCentre;
+        const glm::vec2 r = glm::vec2(ca * q.x - sa * q.y, sa * q.x + ca * q.y) + curve.texCentre + curve.texTranslation;
+        return TexCoord{r.x, r.y, curve.image};
+    }
+};
+
 }  // namespace
 
 void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh) {
@@ -110,16 +130,7 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
     // the section's length, v the length along the axis so far (PlantGL's Extrusion).
     const bool textured = curve.image != 0;
     const std::uint32_t per = textured && closed ? sides + 1 : sides;
-    std::vector<float> around(per, 0.0f);
-    for (std::uint32_t k = 1; k < per; ++k) around[k] = around[k - 1] + glm::length(ring[k % sides] - ring[k - 1]);
-    if (around.back() > 0)
-        for (float& a : around) a /= around.back();
-    const float ca = std::cos(curve.texAngle), sa = std::sin(curve.texAngle);
-    auto texcoord = [&](float uu, float vv) {
-        const glm::vec2 q = glm::vec2(uu, vv) * curve.texScale - curve.texCentre;
-        const glm::vec2 r = glm::vec2(ca * q.x - sa * q.y, sa * q.x + ca * q.y) + curve.texCentre + curve.texTranslation;
-        return TexCoord{r.x, r.y, curve.image};
-    };
+    const TubeTexture texture(curve, ring, per);
     if (textured) mesh.texcoords.resize(base);
     float along = 0;
     for (size_t i = 0; i < samples.size(); ++i) {
@@ -146,7 +157,7 @@ void appendTube(const GeneralizedCylinder& curve, float radiusScale, Mesh& mesh)
             // A negative radius (cpfg's radius tangents can take it through 0) turns the section over.
             mesh.normals.push_back((r < 0 ? -1.0f : 1.0f) * safeNormalize(across[k].x * u + across[k].y * w, w));
             mesh.colours.push_back(s.colour);
-            if (textured) mesh.texcoords.push_back(texcoord(around[j], along));
+            if (textured) mesh.texcoords.push_back(texture.at(j, along));
         }
     }
     const std::uint32_t rings = std::uint32_t(samples.size());

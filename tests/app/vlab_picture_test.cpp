@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "app/image.hpp"
 #include "tests/app/run_sprout.hpp"
@@ -136,6 +137,19 @@ TEST(VlabPicture, AMaterialsSpecularAndTransparencyAreDrawn) {
     o.write("plant.mat", material(0, 0, char(200)));
     const sprout::Image glass = o.render();
     EXPECT_LT(2 * redSum(glass), redSum(dull)) << "a transparency of 200/255 over black is a faint red";
+    // An emission is light of its own, added after the lighting: a black material emitting red
+    // is the same red across each stem, lit side and shaded side (not a red colour shaded).
+    const std::string glowing = std::string(15, char(0)) + std::string{5, 0, 0, 0, 0, 0, 0, 0, char(200), 0, 0, 0, 0, 0, 0};
+    o.write("plant.mat", glowing);
+    const sprout::Image glow = o.render();
+    std::vector<int> reds;  // the stems' (their antialiased edges, a tenth each side, left out)
+    for (size_t i = 0; i + 3 < glow.rgba.size(); i += 4)
+        if (glow.rgba[i] > 60) reds.push_back(glow.rgba[i]);
+    ASSERT_GT(reds.size(), 200u);
+    std::sort(reds.begin(), reds.end());
+    const int lo = reds[reds.size() / 10], hi = reds[reds.size() * 9 / 10];
+    EXPECT_GT(hi, 150) << "the stems glow red";
+    EXPECT_LT(hi - lo, 30) << "evenly: " << lo << " to " << hi;
 }
 
 TEST(VlabPicture, TheViewFilesCameraFramesThePicture) {
