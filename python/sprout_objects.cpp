@@ -231,6 +231,17 @@ void bindModelObjects(py::module_& m) {
     m.def(
         "set_lpy_material",
         [](const std::string& text, int index, const std::string& field, py::object value) {
+            if (field == "image") {  // a texture material's image file
+                const std::vector<LpyMaterial> all = lpyMaterials(text);
+                for (auto it = all.rbegin(); it != all.rend(); ++it)
+                    if (it->index == index && !it->texture.empty()) {
+                        std::string error;
+                        const std::string out = setLpyTextureFile(text, *it, value.cast<std::string>(), error);
+                        if (out.empty()) throw py::value_error(error);
+                        return out;
+                    }
+                throw py::key_error("no texture material " + std::to_string(index) + " in the model's INITIALISATION part");
+            }
             const auto f = lpyMaterialFieldNamed(field);
             if (!f) throw py::key_error("no material field " + field + " (ambient, diffuse, specular, emission, shininess, transparency)");
             const LpyMaterial* found = nullptr;
@@ -259,6 +270,6 @@ void bindModelObjects(py::module_& m) {
             return setLpyMaterial(text, *found, *f, v);
         },
         py::arg("text"), py::arg("index"), py::arg("field"), py::arg("value"),
-        "The model's text with that field of material `index` set (a colour: three numbers 0..255), as L-Py Studio writes it");
+        "The model's text with that field of material `index` set (a colour: three numbers 0..255; a texture's `image`: its file), as L-Py Studio writes it");
     bindMoreObjects(m);
 }

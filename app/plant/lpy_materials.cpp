@@ -140,6 +140,7 @@ LpyMaterial texture(std::string_view t, size_t open) {
     for (const Arg& a : args)
         if (a.key == "filename") file = &a;
     m.texture = file ? unquoted(t.substr(file->begin, file->end - file->begin)) : "?";
+    if (file && file->end > file->begin && (t[file->begin] == '\'' || t[file->begin] == '"')) m.textureSpan = {file->begin, file->end};
     return m;
 }
 
@@ -170,7 +171,7 @@ std::vector<LpyMaterial> lpyMaterials(std::string_view text) {
         k = skipSpace(text, comma + 1);
         std::optional<LpyMaterial> m;
         size_t p = k;
-        if (eat(text, p, "ImageTexture") && eat(text, p, "(")) {
+        if (eat(text, p, "pgl."), eat(text, p, "ImageTexture") && eat(text, p, "(")) {
             m = texture(text, p - 1);
         } else if (p = k, eat(text, p, "pgl."), eat(text, p, "Material") && eat(text, p, "(")) {
             m = materialCall(text, p - 1);
@@ -284,6 +285,15 @@ std::string interpolateLpyMaterials(std::string_view text, int from, int to, std
         out.insert(eol, lines);
     }
     return out;
+}
+
+std::string setLpyTextureFile(std::string_view text, const LpyMaterial& m, std::string_view file, std::string& error) {
+    if (m.texture.empty() || m.textureSpan[1] <= m.textureSpan[0] || m.textureSpan[1] > text.size())
+        return error = "material " + std::to_string(m.index) + " names no image file", "";
+    if (file.empty() || file.find_first_of("\n\r\\'") != std::string_view::npos)
+        return error = "an image file's name, without quotes, backslashes or line breaks", "";
+    std::string out(text);
+    return out.replace(m.textureSpan[0], m.textureSpan[1] - m.textureSpan[0], "'" + std::string(file) + "'");
 }
 
 const char* lpyMaterialFieldName(LpyMaterial::Field f) { return kFields[int(f)]; }

@@ -7,7 +7,8 @@
 //     context.turtle.setMaterial(0,Color_0)
 // (only the fields that are not PlantGL's defaults), and the older
 //     context.turtle.setMaterial(0,Material('Red',Color3(39,0,0),4.6,Color3(40,40,40),Color3(0,0,0),1,0))
-// An ImageTexture is listed with its image and not edited here.
+// An ImageTexture (alone or in a Texture2D) is listed with its image, which setLpyTextureFile
+// changes.
 #include <array>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@ struct LpyMaterial {
     std::array<int, 3> ambient{80, 80, 80}, specular{0, 0, 0}, emission{0, 0, 0};  // PlantGL's defaults
     double diffuse = 2, shininess = 0.2, transparency = 0;
     std::string texture;  // an ImageTexture's image ("": a Material)
+    std::array<size_t, 2> textureSpan{};  // where the image's file name (its quoted literal) is; begin == end: none
     int line = 0;         // of its setMaterial, 1-based
     // Where each field's value is in the text (begin == end: not written, PlantGL's default),
     // and where a field not written goes (before the call's ')').
@@ -42,6 +44,9 @@ std::string setLpyMaterial(std::string_view text, const LpyMaterial& m, LpyMater
 // text sets written in place, the others added after the last setMaterial in Studio's form
 // (`Color_K = pgl.Material("Color_K" , ambient = (...) , ... , )`). "" and `error` otherwise.
 std::string interpolateLpyMaterials(std::string_view text, int from, int to, std::string& error);
+// The text with texture material m's image file named `file` (a Python string literal in its
+// place); "" and `error` for a material that is no texture, or a name no literal can hold.
+std::string setLpyTextureFile(std::string_view text, const LpyMaterial& m, std::string_view file, std::string& error);
 const char* lpyMaterialFieldName(LpyMaterial::Field f);  // ambient, diffuse, ...
 std::optional<LpyMaterial::Field> lpyMaterialFieldNamed(std::string_view name);
 // The diffuse factor PlantGL's Material keeps: no more than keeps every channel of ambient x

@@ -20,8 +20,9 @@ _MATERIAL_FIELDS = ("ambient", "diffuse", "specular", "emission", "shininess", "
 
 
 class Parameter:
-    """One object of a model: `kind` is curve, function, patch, material, scalar, category (a
-    heading of L-Py Studio's scalars, no value) (L-Py) or function, contour (.lsys); `points` (curves, functions, contours, patches), `value`
+    """One object of a model: `kind` is curve, function, patch, material, texture (a material
+    with an `image` file), scalar, category (a heading of L-Py Studio's scalars, no value)
+    (L-Py) or function, contour (.lsys); `points` (curves, functions, contours, patches), `value`
     (scalars) and a material's fields read the model's text now and write into it."""
 
     def __init__(self, plant, kind, name, key):
@@ -81,12 +82,14 @@ class Parameter:
         self._write(_sprout.set_lpy_scalar(self._plant.text, self.name, float(v)))
 
     def __getattr__(self, field):
-        if field in _MATERIAL_FIELDS and self._key[0] == "material":
+        if field in _MATERIAL_FIELDS and self.kind == "material":
             return self._entry()[field]
+        if field == "image" and self.kind == "texture":
+            return self._entry()["texture"]
         raise AttributeError(field)
 
     def __setattr__(self, field, v):
-        if field in _MATERIAL_FIELDS and self._key[0] == "material":
+        if (field in _MATERIAL_FIELDS and self.kind == "material") or (field == "image" and self.kind == "texture"):
             return self._write(_sprout.set_lpy_material(self._plant.text, self._key[1], field, v))
         if field in ("points", "value"):
             return object.__setattr__(self, field, v)
@@ -142,8 +145,7 @@ class Parameters(_abc.Mapping):
         for s in _sprout.lpy_scalars(text):
             out[s["name"]] = ("category" if s["kind"] == "Category" else "scalar", ("scalar",))
         for m in _sprout.lpy_materials(text):
-            if "texture" not in m:
-                out["material %d" % m["index"]] = ("material", ("material", m["index"]))
+            out["material %d" % m["index"]] = ("texture" if "texture" in m else "material", ("material", m["index"]))
         for c in _sprout.lsys_curves(text):
             out[c["name"]] = (c["kind"], ("lsys",))
         return out

@@ -90,3 +90,18 @@ def test_a_category_is_a_heading_without_a_value():
         sprout.set_lpy_scalar(plant.text, "Growth", 1.0)
     plant.parameters["H"].value = 0.25
     assert "('Growth', 'Category'), ('H', 'Float', 0.25, 0.0, 1.0, 2)" in plant.text
+
+
+def test_a_texture_materials_image_is_listed_and_set():
+    text = GUIDED.replace("\tcontext.turtle.setMaterial(1,Color_1)\n",
+                          "\tcontext.turtle.setMaterial(1,Color_1)\n\tcontext.turtle.setMaterial(2,pgl.ImageTexture('leaf.png'))\n")
+    plant = sprout.parse(text, kind="lpy")
+    leaf = plant.parameters["material 2"]
+    assert leaf.kind == "texture"
+    assert leaf.image == "leaf.png"
+    leaf.image = "bark.jpg"
+    assert "setMaterial(2,pgl.ImageTexture('bark.jpg'))" in plant.text
+    with pytest.raises(AttributeError):
+        leaf.ambient
+    with pytest.raises(ValueError):
+        leaf.image = "it's.png"

@@ -39,6 +39,24 @@ TEST(LpyMaterials, BothFormsAreRead) {
     EXPECT_EQ(lpyDiffuseColour(bright), (std::array<int, 3>{254, 127, 0})) << "PlantGL keeps ambient x diffuse within 255 (its floor of 200 x 255/200 is 254)";
 }
 
+// A texture's image file is written in its literal's place (ImageTexture(file) and Studio's
+// ImageTexture("name" , "file" , ) behind a Texture2D alike); a plain material has none.
+TEST(LpyMaterials, ATexturesImageFileIsWrittenInPlace) {
+    const auto m = lpyMaterials(kStudio);
+    std::string error;
+    std::string t = setLpyTextureFile(kStudio, m[3], "bark.jpg", error);
+    EXPECT_NE(t.find("setMaterial(9,ImageTexture('bark.jpg'))"), std::string::npos) << t;
+    EXPECT_EQ(lpyMaterials(t)[3].texture, "bark.jpg");
+    EXPECT_EQ(setLpyTextureFile(kStudio, m[0], "bark.jpg", error), "") << "a Material has no image";
+    EXPECT_EQ(setLpyTextureFile(kStudio, m[3], "it's.png", error), "") << "no quote inside the literal";
+    const std::string studio = "\tPGL_1 = pgl.ImageTexture(\"PGL_1\" , \"leaf.png\" , )\n\tColor_4 = pgl.Texture2D(image = PGL_1 , )\n"
+                               "\tcontext.turtle.setMaterial(4,Color_4)\n";
+    const auto s = lpyMaterials(studio);
+    ASSERT_EQ(s.size(), 1u);
+    t = setLpyTextureFile(studio, s[0], "images/vein.png", error);
+    EXPECT_NE(t.find("pgl.ImageTexture(\"PGL_1\" , 'images/vein.png' , )"), std::string::npos) << t;
+}
+
 TEST(LpyMaterials, AFieldIsWrittenInPlaceOrAddedAsStudioWritesIt) {
     auto m = lpyMaterials(kStudio);
     LpyMaterial v = m[0];

@@ -376,5 +376,53 @@ TEST(Window, AnImageToTraceLoadsUnderTheCurve) {
     EXPECT_EQ(printed[2].rfind("trace_error=" + (dir / "none.png").string() + ": cannot open", 0), 0u) << printed[2];
 }
 
+// The material editor's texture: a Texture2D's image file changed in the panel (as Studio's
+// ImageTexture writes it), the patch drawn with the new image at once; one undo gives back
+// the picture and the file.
+TEST(Window, ATexturesImageFileChangedInThePanelIsDrawn) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("texture_window");
+    auto plainImage = [&](const char* name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+        Image im;
+        im.width = im.height = 4;
+        for (int k = 0; k < 16; ++k) im.rgba.insert(im.rgba.end(), {r, g, b, std::uint8_t(255)});
+        std::string error;
+        EXPECT_TRUE(writePng((dir / name).string(), im, error)) << error;
+    };
+    plainImage("red.png", 230, 20, 20);
+    plainImage("blue.png", 20, 20, 230);
+    const fs::path model = dir / "leaf.lpy", back = dir / "back.lpy";
+    const std::string text =
+        "from openalea.plantgl.all import *\n"
+        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
+        "Axiom: @g(quad)\nderivation length: 0\nproduction:\nendlsystem\n###### INITIALISATION ######\n\n__lpy_code_version__ = 1.1\n\n"
+        "def __initialiseContext__(context):\n\timport openalea.plantgl.all as pgl\n"
+        "\tPGL_1 = pgl.ImageTexture(\"PGL_1\" , \"red.png\" , )\n\tPGL_1.name = \"PGL_1\"\n"
+        "\tColor_1 = pgl.Texture2D(image = PGL_1 , )\n\tColor_1.name = \"Color_1\"\n\tcontext.turtle.setMaterial(1,Color_1)\n";
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\nmaterials\nscreenshot " + a + " 200x200\nmaterial-set 1 image blue.png\nwait\nmaterials\n"
+                                   "screenshot " + b + " 200x200\nundo\nwait\nscreenshot " + c + " 200x200\nsaveas " + back.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 3u);
+    EXPECT_NE(printed[1].find(" texture=red.png"), std::string::npos) << printed[1];
+    EXPECT_NE(printed[2].find(" texture=blue.png"), std::string::npos) << printed[2];
+    auto count = [](const Image& im, bool blue) {
+        std::size_t n = 0;
+        for (std::size_t k = 0; k + 3 < im.rgba.size(); k += 4) {
+            const int r = im.rgba[k], g = im.rgba[k + 1], bl = im.rgba[k + 2];
+            n += blue ? (bl > 120 && r < 80 && g < 80) : (r > 120 && g < 80 && bl < 80);
+        }
+        return n;
+    };
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_GT(count(ia, false), 2000u) << "the red image";
+    EXPECT_GT(count(ib, true), 2000u) << "the blue image, drawn at once";
+    EXPECT_LT(count(ib, false), 50u);
+    EXPECT_LE(pixelsThatDiffer(ia, ic), 20u) << "one undo: the red again";
+    EXPECT_EQ(fileText(back), text) << "and the file byte for byte";
+}
+
 }  // namespace
 }  // namespace sprout

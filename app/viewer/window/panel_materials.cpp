@@ -7,7 +7,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include <filesystem>
+#include <map>
+
+#include "app/mesh/texture_images.hpp"
 #include "app/plant/lpy_materials.hpp"
+#include "app/render/gl.hpp"
 #include "app/viewer/window/panel_sections.hpp"
 
 namespace sprout::viewer::detail {
@@ -18,6 +23,54 @@ const std::vector<LpyMaterial>& materialsOf(const std::string& text) {
     static std::vector<LpyMaterial> materials;
     if (text != read) read = text, materials = lpyMaterials(text);
     return materials;
+}
+
+// A texture's image as a GL texture for the panel (made again when the file changes); 0: none.
+unsigned thumbnail(const std::string& path, const mesh::TextureImage** shown) {
+    static std::map<std::string, std::pair<std::shared_ptr<const mesh::TextureImage>, unsigned>> made;
+    const auto image = mesh::textureImage(path);
+    *shown = image.get();
+    auto& [kept, texture] = made[path];
+    if (kept == image) return texture;
+    kept = image;
+    if (!image->error.empty()) return 0;
+    if (!texture) glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image->rgba.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return texture;
+}
+
+// A texture material: its image (found beside the model, as the drawing finds it) and its file,
+// which the field changes (one undo step).
+void textureEditor(App& app, const LpyMaterial& m) {
+    std::filesystem::path file(m.texture);
+    if (file.is_relative() && !app.state.path().empty()) file = app.state.path().parent_path() / file;
+    const mesh::TextureImage* image = nullptr;
+    if (const unsigned t = thumbnail(file.string(), &image); t && image) {
+        const float w = std::min(160.0f, ImGui::GetContentRegionAvail().x), h = w * float(image->height) / float(std::max(1, image->width));
+        ImGui::Image(reinterpret_cast<ImTextureID>(std::uintptr_t(t)), ImVec2(w, h));
+        ImGui::TextColored(kDim, "%d x %d %s, times the texture's colour", image->width, image->height, image->format.c_str());
+    } else if (image) {
+        ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.4f, 1.0f), "%s: drawn in its colour", image->error.c_str());
+    }
+    static char name[512];
+    static int editing = -1;
+    static bool typing = false;  // the field was being typed in last frame: its text is the user's
+    if (editing != m.index || !typing) std::snprintf(name, sizeof name, "%s", m.texture.c_str()), editing = m.index;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
+    const bool entered = ImGui::InputText("image file", name, sizeof name, ImGuiInputTextFlags_EnterReturnsTrue);
+    typing = ImGui::IsItemActive();
+    if (entered && m.texture != name) {
+        std::string error;
+        const std::string text = setLpyTextureFile(app.state.text(), m, name, error);
+        if (text.empty()) app.say(error);
+        else app.state.setText(text, newGesture());
+    }
 }
 
 // The material the text has now with that index (the last, as L-Py's turtle keeps it).
@@ -80,7 +133,7 @@ void materialSection(App& app) {
     if (!shown) return;
     const LpyMaterial m = *shown;
     if (!m.texture.empty()) {
-        ImGui::TextColored(kDim, "an image texture (%s): drawn in its colour for now", m.texture.c_str());
+        textureEditor(app, m);
         return;
     }
     LpyMaterial v = m;
@@ -119,6 +172,13 @@ std::vector<std::string> materialLines(App& app) {
 
 std::string setMaterialField(App& app, int index, const std::string& field, const std::vector<double>& values, std::uint64_t gesture) {
     const LpyMaterial* m = materialAt(app.state.text(), index);
+    if (m && !m->texture.empty() && field.rfind("image ", 0) == 0) {  // a texture's file: "image NAME"
+        std::string error;
+        const std::string text = setLpyTextureFile(app.state.text(), *m, field.substr(6), error);
+        if (text.empty()) return error;
+        app.state.setText(text, gesture ? gesture : newGesture());
+        return "";
+    }
     if (!m || !m->texture.empty()) return "no material " + std::to_string(index);
     const auto f = lpyMaterialFieldNamed(field);
     if (!f) return "no field " + field + " (ambient, diffuse, specular, emission, shininess, transparency)";

@@ -26,7 +26,8 @@
 //                         that many frames and lets it go (the panel scrolls to it first)
 //   materials             prints an L-Py model's materials, a line each: "material=I name=N
 //                         ambient=r,g,b diffuse=d specular=.. emission=.. shininess=s transparency=t"
-//   material-set <i> <field> <v> [v v]   sets that field of material i as the panel's editor
+//   material-set <i> <field> <v> [v v] | material-set <i> image <file>   sets that field of
+//                         material i (a texture's: its image file) as the panel's editor
 //                         does (a colour: three numbers 0..255), one undo step
 //   scalars               prints an L-Py model's scalars: "scalar=NAME kind=K value=V min=A max=B"
 //   scalar-add <name> Integer|Float|Bool|Category [<value> min max] | scalar-rename <name> <new> |

@@ -206,10 +206,15 @@ std::optional<bool> Script::objectCommand(App& app, const std::string& cmd, std:
         else app.state.setText(text, detail::newGesture());
         return true;
     }
-    if (cmd == "material-set") {  // INDEX FIELD V [V V]: one undo step
+    if (cmd == "material-set") {  // INDEX FIELD V [V V] | INDEX image FILE: one undo step
         int index = 0;
         std::string field;
         in >> index >> field;
+        if (field == "image") {
+            std::string file;
+            std::getline(in >> std::ws, file);
+            field += " " + file;
+        }
         std::vector<double> values;
         for (double v; in >> v;) values.push_back(v);
         const std::string why = detail::setMaterialField(app, index, field, values);
