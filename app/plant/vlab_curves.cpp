@@ -1,7 +1,10 @@
 #include "app/plant/vlab_curves.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "app/plant/vlab_view.hpp"
@@ -12,6 +15,23 @@
 namespace sprout {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// An image file's width over its height, from its header (PNG's IHDR, SGI's sizes); 1 for
+// another or a file that cannot be read (the renderer reads the pixels).
+float imageAspect(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char h[24] = {};
+    in.read(reinterpret_cast<char*>(h), sizeof h);
+    auto be32 = [&](int at) { return double(std::uint32_t(h[at]) << 24 | std::uint32_t(h[at + 1]) << 16 | std::uint32_t(h[at + 2]) << 8 | h[at + 3]); };
+    double w = 0, hgt = 0;
+    if (in.gcount() == 24 && h[0] == 0x89 && h[1] == 'P' && h[2] == 'N' && h[3] == 'G') w = be32(16), hgt = be32(20);
+    else if (in.gcount() >= 10 && h[0] == 0x01 && h[1] == 0xDA) w = double(h[6] << 8 | h[7]), hgt = double(h[8] << 8 | h[9]);
+    return w > 0 && hgt > 0 ? float(w / hgt) : 1.0f;
+}
+
+}  // namespace
 
 VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options) {
     VlabCurves out;
@@ -73,7 +93,12 @@ VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options)
             bool perSurface = false;
             for (size_t at = 0; (at = f.options.find('S', at)) != std::string::npos; ++at)
                 perSurface |= (at == 0 || f.options[at - 1] == ' ') && (at + 1 == f.options.size() || f.options[at + 1] == ':' || f.options[at + 1] == ' ');
-            options.viewTextures.push_back({path.string(), perSurface});
+            float ratio = 1;  // R: ratio
+            if (const size_t r = f.options.find("R:"); r != std::string::npos && (r == 0 || f.options[r - 1] == ' ')) {
+                const double v = std::strtod(f.options.c_str() + r + 2, nullptr);
+                if (v > 0 && std::isfinite(v)) ratio = float(v);
+            }
+            options.viewTextures.push_back({path.string(), perSurface, imageAspect(path), ratio});
         }
     }
     if (any) options.curves = std::move(tables);

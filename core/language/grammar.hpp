@@ -98,6 +98,10 @@ struct Settings {
     struct ViewTexture {
         std::string file;  // as the view file's folder resolves it
         bool perSurface = false;
+        // On a generalized cylinder cpfg keeps the image's proportions (update_segment_texture):
+        // v grows by length / (pi x width) x aspect / ratio, `aspect` the image's width over its
+        // height, `ratio` the line's `R:`.
+        float aspect = 1, ratio = 1;
     };
     std::vector<ViewTexture> viewTextures;
     // cpfg's colour index and width steps (a VLab object's view file): the index the turtle

@@ -292,6 +292,7 @@ private:
         float angle = 0;  // radians
         std::int32_t image = -1;  // @Tx's image id (0: none); -1: the palette entry's
         bool perSurface = false;  // @Tx's texture spans the surface (SurfaceFile::surfaceUvs)
+        float along = 0;          // @Tx's: a tube's v a unit of length, times its width (cpfg's); 0: PlantGL's, 1
         glm::vec2 operator()(glm::vec2 uv) const {
             uv = uv * scale - centre;
             const float c = std::cos(angle), s = std::sin(angle);

@@ -38,6 +38,7 @@ void Turtle::curveCommand(State& t, Act act, const double* p, int arity) {
             const TexTransform& x = m_texTransforms[size_t(t.texture)];
             tube.image = image;
             tube.texScale = x.scale, tube.texTranslation = x.translation, tube.texCentre = x.centre, tube.texAngle = x.angle;
+            if (x.along > 0) tube.texScale.y *= x.along / std::max(t.width, 1e-6f);  // cpfg's proportions
         }
         t.curve = std::int16_t(m_curves.size() - 1);
         t.lastSegment = -1;
@@ -334,6 +335,10 @@ void Turtle::textureCommand(State& t, Act act, const double* p, int arity) {
         const bool valid = n >= 1 && n <= double(m_viewTexture.size());
         x.image = valid ? std::int32_t(m_viewTexture[size_t(n) - 1]) : 0;
         x.perSurface = valid && m_g.settings.viewTextures[size_t(n) - 1].perSurface;
+        if (valid) {
+            const Settings::ViewTexture& v = m_g.settings.viewTextures[size_t(n) - 1];
+            x.along = v.aspect / (kPi * (v.ratio > 0 ? v.ratio : 1.0f));
+        }
     } else if (!p || arity < 1 || !finite(p, arity)) {
         return;
     }

@@ -275,3 +275,37 @@ TEST(VlabPicture, ATextureLiesOnTheSurfacesAfterTx) {
     EXPECT_EQ(count(plain, blue), 0);
     EXPECT_GT(extent(plain).width, 60) << "the white square is drawn";
 }
+
+// On a generalized cylinder cpfg keeps a texture's proportions (update_segment_texture): the
+// image's height along the tube is pi x its width x R: (its aspect 1 here); R: 0.5 puts it twice
+// as often along the same tube.
+TEST(VlabPicture, ATubesTextureKeepsCpfgsProportions) {
+    Object o("vlab_tube_texture");
+    // SGI, 4 x 4, three channels: the top half red, the bottom half blue.
+    std::string sgi(512, char(0));
+    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
+    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
+    sgi[3] = 1;
+    for (int channel = 0; channel < 3; ++channel)
+        for (int y = 0; y < 4; ++y)  // the file's rows bottom first
+            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && y >= 2) || (channel == 2 && y < 2) ? 255 : 0);
+    o.write("halves.rgb", sgi);
+    o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
+    o.cpfg("cpfg -m plant.map plant.l plant.v");
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: #(0.5) ;(5) @Tx(1) @Gs F(2) F(2) F(2) F(2) @Ge\nendlsystem\n");
+    auto bands = [&](const char* ratio) {
+        o.write("plant.v", kView + "texture: F: halves.rgb E: m R: " + ratio + "\n");
+        const sprout::Image im = o.render("--size 240x320");
+        // Colour changes up the picture's middle column.
+        int changes = 0, last = 0;
+        for (int y = 0; y < im.height; ++y) {
+            const std::uint8_t* p = &im.rgba[(size_t(y) * size_t(im.width) + size_t(im.width / 2)) * 4];
+            const int now = red(p) ? 1 : blue(p) ? 2 : 0;
+            if (now && now != last) ++changes, last = now;
+        }
+        return changes;
+    };
+    const int one = bands("1"), half = bands("0.5");
+    EXPECT_GE(one, 4) << "8 units long, 0.5 wide: the image about 5 times along, two bands each";
+    EXPECT_GT(half, one * 3 / 2) << one << " bands at R: 1, " << half << " at R: 0.5";
+}
