@@ -297,6 +297,9 @@ void drawLook(Drawing& dr, const Module<Source>& m, bool queries) {
         case Op::InterpolateColours:  // InterpolateColors(i, j, alpha): PlantGL mixes the two materials
             if (m.p.size() >= 2) dr.interpolateColours(m.p);
             break;
+        case Op::TextureBaseColour:  // TextureBaseColor(index | r, g, b[, a]), InterpolateTextureBaseColors(i, j, alpha)
+            if (!m.p.empty()) dr.textureBaseColour(m.p, m.name == "InterpolateTextureBaseColors");
+            break;
         case Op::IncWidth:
         case Op::DecWidth:
             if (!m.p.empty()) dr.setWidth(m.p[0]);

@@ -185,6 +185,10 @@ public:
     void frame(const std::vector<double>& p);                 // Frame(size, capHeightRatio, capRadiusRatio)
     void interpolateColours(const std::vector<double>& p);    // InterpolateColors(i, j, alpha)
     void setRgbaColour(const std::vector<double>& p);         // SetColor(r, g, b[, a])
+    // TextureBaseColor(index | r, g, b[, a]) or InterpolateTextureBaseColors(i, j, alpha): the
+    // texture material the turtle has drawn times that colour from now on (a palette entry of
+    // its own with the same image); nothing for a plain material, as PlantGL.
+    void textureBaseColour(const std::vector<double>& p, bool interpolate);
 
 private:
     std::unordered_map<PyObject*, std::shared_ptr<const GuideCurve>> m_curves;  // sampled once a drawing

@@ -164,6 +164,32 @@ void Drawing::interpolateColours(const std::vector<double>& p) {
     w.put(";", {double(paletteIndex(mixed))});
 }
 
+void Drawing::textureBaseColour(const std::vector<double>& p, bool interpolate) {
+    auto& pal = g->settings.palette;
+    auto& textures = g->settings.textures;
+    const auto image = std::find_if(textures.begin(), textures.end(), [&](const auto& t) { return t.first == st.colour; });
+    if (image == textures.end() || pal.size() >= 250) return;  // not a texture: PlantGL leaves the material
+    auto at = [&](double x) { return pal[size_t(std::clamp(int(std::lround(std::clamp(x, -1e6, 1e6))), 0, int(pal.size()) - 1))]; };
+    auto c = [](double x) { return std::uint32_t(std::clamp(x, 0.0, 255.0)); };
+    std::uint32_t rgba = 0;
+    if (interpolate && p.size() >= 2) {  // the two materials' colours mixed
+        const std::uint32_t a = at(p[0]), b = at(p[1]);
+        const double f = p.size() >= 3 ? std::clamp(p[2], 0.0, 1.0) : 0.5;
+        for (int shift = 24; shift >= 0; shift -= 8)
+            rgba |= std::uint32_t(std::lround(double((a >> shift) & 0xFF) * (1 - f) + double((b >> shift) & 0xFF) * f)) << shift;
+    } else if (!interpolate && p.size() >= 3) {  // Color4: its alpha a transparency
+        rgba = c(p[0]) << 24 | c(p[1]) << 16 | c(p[2]) << 8 | (p.size() >= 4 ? 255 - c(p[3]) : 255u);
+    } else if (!interpolate) {  // a material's diffuse colour
+        rgba = at(p[0]);
+    } else {
+        return;
+    }
+    const std::string file = image->second;  // (the push below may move the list)
+    pal.push_back(rgba);
+    textures.push_back({int(pal.size()) - 1, file});
+    w.put(";", {double(pal.size() - 1)});  // (st.colour stays the material's: ; and , count from it)
+}
+
 void Drawing::setRgbaColour(const std::vector<double>& p) {
     auto c = [](double x) { return std::uint32_t(std::clamp(x, 0.0, 255.0)); };
     const std::uint32_t rgba = c(p[0]) << 24 | c(p[1]) << 16 | c(p[2]) << 8 | (p.size() >= 4 ? c(p[3]) : 255u);

@@ -21,6 +21,7 @@ enum class TurtleOp : std::uint8_t {
     Point,  // the Sprout module with L-Py's x y z as Sprout's
     Frame, InterpolateColours, Shape, Label,
     Numbers,  // the Sprout module of the same name, with L-Py's numbers as they are
+    TextureBaseColour,  // TextureBaseColor, InterpolateTextureBaseColors: a texture's tint
 };
 
 struct TurtleWord {
@@ -73,8 +74,9 @@ inline constexpr TurtleWord kTurtleVocabulary[] = {
     {{"SetColor"}, "setColor", TurtleOp::SetColour},
     // A colour between two materials.
     {{"InterpolateColors"}, "interpolateColors", TurtleOp::InterpolateColours},
-    {{"TextureBaseColor"}, nullptr, TurtleOp::LeftOut},
-    {{"InterpolateTextureBaseColors"}, nullptr, TurtleOp::LeftOut},
+    // The colour a texture material's image is drawn times (PlantGL's texBaseColor).
+    {{"TextureBaseColor"}, nullptr, TurtleOp::TextureBaseColour},
+    {{"InterpolateTextureBaseColors"}, nullptr, TurtleOp::TextureBaseColour},
     {{"@O", "Sphere"}, "sphere", TurtleOp::Sphere, "@O"},
     {{"@o", "Circle"}, "circle", TurtleOp::Circle, "@c"},
     {{"@B", "Box"}, "box", TurtleOp::LeftOut},

@@ -348,3 +348,17 @@ TEST(Textures, AnLsysMaterialsTextureWrapsItsTubes) {
         for (int x = 0; x < plain.width; ++x) coloured += classify(plain, x, y) != None;
     EXPECT_LT(coloured, 50) << "no image: the tube white, lit";
 }
+
+// TextureBaseColor tints a texture material's image from then on (PlantGL's texBaseColor):
+// the image's white drawn in that colour; InterpolateTextureBaseColors mixes two materials'.
+TEST(Textures, TextureBaseColorTintsTheImage) {
+    auto redness = [](const sprout::Image& im) {
+        long r = 0, g = 0;
+        for (std::size_t k = 0; k + 3 < im.rgba.size(); k += 4) r += im.rgba[k], g += im.rgba[k + 1];
+        return double(r) / double(std::max(1L, g));
+    };
+    // Only the yellow and green quarters have green: tinted red, they lose it.
+    const sprout::Image plain = render("tex_base_plain", "", "@g(quad)");
+    const sprout::Image tinted = render("tex_base_red", "TextureBaseColor(255, 40, 40)", "@g(quad)");
+    EXPECT_GT(redness(tinted), 1.5 * redness(plain)) << redness(tinted) << " against " << redness(plain);
+}
