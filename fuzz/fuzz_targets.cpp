@@ -28,6 +28,9 @@
 #include "core/turtle/background_scene.hpp"
 #include "core/turtle/turtle.hpp"
 #include "lpy/translate/translate.hpp"
+#if defined(SPROUT_FUZZ_IMAGE)
+#include "app/mesh/texture_images.hpp"
+#endif
 #if defined(SPROUT_FUZZ_LPY)
 #include "app/plant/lpy_materials.hpp"
 #include "app/plant/lpy_objects.hpp"
@@ -344,6 +347,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         added.name = "fuzz_added";
         std::string error;
         (void)lpyScalars(addLpyScalar(asText, added, error));
+    }
+#elif defined(SPROUT_FUZZ_IMAGE)
+    // A texture image's bytes (PNG, JPEG, SGI): read whole, or refused with a reason.
+    const sprout::mesh::TextureImage image = sprout::mesh::decodeImage(input);
+    if (image.error.empty()) {
+        if (image.width <= 0 || image.height <= 0) fail("an image read without a size");
+        if (image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4) fail("an image's pixels are not its size");
+    } else if (!image.rgba.empty() && image.format != "jpeg") {
+        fail("a refused image kept pixels");
     }
 #else
 #error "define one SPROUT_FUZZ_<TARGET>"

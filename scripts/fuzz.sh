@@ -9,12 +9,12 @@
 #   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (default 60, every target)
 #
 # A long campaign on two cores runs two halves side by side, e.g.
-#   scripts/fuzz.sh 1200 parser expr derive turtle & scripts/fuzz.sh 1200 lparser fractint png cpfg lpy vlab enviro
+#   scripts/fuzz.sh 1200 parser expr derive turtle & scripts/fuzz.sh 1200 lparser fractint png cpfg lpy vlab enviro image
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 targets=("${@:2}")
-((${#targets[@]})) || targets=(parser expr derive turtle lparser fractint png cpfg lpy vlab enviro)
+((${#targets[@]})) || targets=(parser expr derive turtle lparser fractint png cpfg lpy vlab enviro image)
 jobs="$(nproc 2>/dev/null || echo 2)"
 for p in clang libclang-rt-14-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -38,6 +38,7 @@ seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursi
     png) echo tests/golden fuzz/regressions/png ;;
     vlab) echo fuzz/seeds/vlab; [ -d "$shared/vlab-manuals" ] && echo "$shared/vlab-manuals" ;;
     enviro) echo fuzz/regressions/enviro ;;
+    image) echo fuzz/seeds/image fuzz/regressions/image ;;
     cpfg) echo tests/cpfg tests/explorer tests/bad-input presets fuzz/regressions/cpfg ;;
     lpy) echo tests/lpy/models tests/cpfg fuzz/regressions/lpy; [ -d "$shared/lpy" ] && echo "$shared/lpy" ;;
   esac

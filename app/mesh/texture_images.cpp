@@ -75,6 +75,11 @@ TextureImage decodeJpeg(std::string_view bytes) {
     jpeg_create_decompress(&info);
     jpeg_mem_src(&info, reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<unsigned long>(bytes.size()));
     jpeg_read_header(&info, TRUE);
+    if (std::size_t(info.image_width) * info.image_height > kMaxPixels) {  // before libjpeg allocates for it
+        jpeg_destroy_decompress(&info);
+        t.error = "a JPEG too large for a texture";
+        return t;
+    }
     info.out_color_space = JCS_RGB;
     jpeg_start_decompress(&info);
     if (std::size_t(info.output_width) * info.output_height > kMaxPixels || info.output_components != 3) {

@@ -163,6 +163,8 @@ void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     if (!mesh.colours.empty() || !to.colours.empty())  // the colours stay with their points
         to.colours.resize(size_t(base), 0), to.colours.insert(to.colours.end(), mesh.colours.begin(), mesh.colours.end()),
             to.colours.resize(size_t(base) + mesh.points.size(), 0);
+    if (!mesh.uvs.empty() || !to.uvs.empty())  // and the texture coordinates (none: 0, 0)
+        to.uvs.resize(size_t(base)), to.uvs.insert(to.uvs.end(), mesh.uvs.begin(), mesh.uvs.end()), to.uvs.resize(size_t(base) + mesh.points.size());
     for (const V3& p : mesh.points) to.points.push_back(f(p));
     for (const auto& t : mesh.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     for (const auto& s : mesh.segments) to.segments.push_back({s[0] + base, s[1] + base});

@@ -362,3 +362,14 @@ TEST(Textures, TextureBaseColorTintsTheImage) {
     const sprout::Image tinted = render("tex_base_red", "TextureBaseColor(255, 40, 40)", "@g(quad)");
     EXPECT_GT(redness(tinted), 1.5 * redness(plain)) << redness(tinted) << " against " << redness(plain);
 }
+
+// A patch inside a transformed shape or a group keeps its texture coordinates.
+TEST(Textures, APatchMovedOrGroupedKeepsItsImage) {
+    for (const char* shape : {"@g(Scaled(Vector3(1.2, 1.2, 1.2), quad))", "@g(Group([Translated(Vector3(0, 0, 0.1), quad)]))"}) {
+        const sprout::Image im = render("tex_moved", "", shape);
+        int n[5] = {0, 0, 0, 0, 0};
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x) ++n[classify(im, x, y)];
+        for (int q = 0; q < 4; ++q) EXPECT_GT(n[q], 500) << shape << ": " << kNames[q];
+    }
+}
