@@ -33,6 +33,9 @@ struct SurfaceFile {
     // The same across the whole surface (cpfg's texture per surface, `S:`): x and y in the
     // file's own coordinates over their ranges; empty where `uvs` is.
     std::vector<std::array<float, 2>> surfaceUvs;
+    // Its own image (an L-Py @g Shape in a texture appearance), on `uvs`; "": the image of the
+    // turtle's material, if any.
+    std::string texture;
 };
 
 // `error` says what is wrong and on which line when the text is not a surface file.

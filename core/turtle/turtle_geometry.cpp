@@ -417,7 +417,14 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
     }
     const TexTransform& tx = m_texTransforms[size_t(t.texture)];
     const auto& uvs = tx.perSurface && f.surfaceUvs.size() == f.positions.size() ? f.surfaceUvs : f.uvs;
-    if (const std::uint32_t image = textureOf(t); image && !m_level && uvs.size() == f.positions.size()) {
+    std::uint32_t image = textureOf(t);
+    if (!f.texture.empty() && !m_level) {  // the surface's own image (its Shape's appearance)
+        auto& list = m_out.textures;
+        const auto found = std::find(list.begin(), list.end(), f.texture);
+        image = std::uint32_t(found - list.begin()) + 1;
+        if (found == list.end()) list.push_back(f.texture);
+    }
+    if (image && !m_level && uvs.size() == f.positions.size()) {
         // Its texture coordinates, through the turtle's texture transform.
         m.texcoords.resize(base);
         for (const auto& uv : uvs) {

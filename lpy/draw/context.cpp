@@ -99,6 +99,7 @@ void placeTextures(TurtleDefaults& d, const std::string& modelFile, std::vector<
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path folder = modelFile.empty() ? fs::path() : fs::path(modelFile).parent_path();
+    d.folder = folder.string();
     for (auto& [index, file] : d.textures) {
         const std::string named = file;
         if (fs::path(file).is_relative() && !folder.empty()) file = (folder / file).string();

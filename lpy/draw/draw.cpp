@@ -85,6 +85,7 @@ Drawing::Drawing(const TurtleDefaults& d) : g(std::make_shared<Grammar>()), w(*g
     g->settings.palette = d.materials.empty() ? defaultMaterials() : d.materials;
     g->settings.shines = d.shines;
     g->settings.textures = d.textures;
+    folder = d.folder;
     colours = int(g->settings.palette.size());
     st.width = d.width;
     st.colour = std::clamp(d.colour, 0, colours - 1);

@@ -23,6 +23,7 @@ struct TurtleDefaults {
     std::vector<std::uint32_t> materials;  // 0xRRGGBBAA by index; L-Py's seven by default
     std::vector<std::pair<int, Shine>> shines;  // the materials that shine (specular, emission), by index
     std::vector<std::pair<int, std::string>> textures;  // the texture materials' image files, by index, as the model names them
+    std::string folder;  // the model's (placeTextures): images named relative to it are found there
 };
 
 // L-Py's default materials (PlantGL's turtle: grey, brown, green, red, yellow, blue, purple),

@@ -115,6 +115,7 @@ public:
     std::shared_ptr<Grammar> g;
     Writer w;
     int colours = 0;  // the materials an index may name (SetColor, ;)
+    std::string folder;  // the model's: where a Shape's image named relative to it is
     TurtleState st;
     std::vector<TurtleState> stack;
     std::set<std::string> leftOut;

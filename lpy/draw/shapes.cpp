@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <string_view>
 
 #include "core/language/surface_file.hpp"
@@ -86,6 +87,11 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
     }
     if (ok && mesh.colours.size() == np) sf->colours = mesh.colours;
     if (ok && mesh.uvs.size() == np) sf->uvs = mesh.uvs;
+    if (ok && !sf->uvs.empty() && !mesh.texture.empty()) {  // its Shape's image, found beside the model
+        std::filesystem::path file(mesh.texture);
+        if (file.is_relative() && !folder.empty()) file = std::filesystem::path(folder) / file;
+        sf->texture = file.string();
+    }
     if (ok && (!sf->indices.empty() || !sf->lines.empty())) keep();
     return it->second;
 }

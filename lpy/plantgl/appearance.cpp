@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "lpy/plantgl/bindings.hpp"
 
@@ -24,6 +25,21 @@ std::uint32_t shapeColour(PyObject* shape) {
     }
     if (PyErr_Occurred()) PyErr_Clear();
     return 0;
+}
+
+std::string shapeTexture(PyObject* shape) {
+    try {
+        const py::handle s(shape);
+        if (!py::hasattr(s, "appearance")) return "";
+        py::object image = s.attr("appearance");
+        if (!image.is_none() && py::hasattr(image, "image") && !py::hasattr(image, "filename")) image = image.attr("image");  // a Texture2D
+        if (image.is_none() || !py::hasattr(image, "filename")) return "";
+        return py::str(image.attr("filename")).cast<std::string>();
+    } catch (py::error_already_set&) {
+    } catch (py::cast_error&) {
+    }
+    if (PyErr_Occurred()) PyErr_Clear();
+    return "";
 }
 
 }  // namespace sprout::lpy

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "lpy/plantgl/curves.hpp"
@@ -29,12 +30,18 @@ struct ShapeMesh {
     std::vector<std::uint32_t> colours;
     // Each point's texture coordinates where the shape has them (patches); else none.
     std::vector<std::array<float, 2>> uvs;
+    // The image of a Shape with a texture appearance around them (the first such), as the
+    // model names it; "": the turtle's material's.
+    std::string texture;
 };
 ShapeMesh shapeMesh(PyObject* shape);
 // A Shape's colour as PglTurtle::pglShape draws it: its Material's diffuseColor() and, as
 // alpha, 1 - transparency (0xRRGGBBAA); 0 for another appearance (a texture) or none
 // (appearance.cpp).
 std::uint32_t shapeColour(PyObject* shape);
+// A Shape's texture appearance's image file (a Texture2D's ImageTexture, or an ImageTexture),
+// as the model names it; "" for another appearance.
+std::string shapeTexture(PyObject* shape);
 // An AsymmetricHull given alone to @g, its fields read leniently (any value not a number: the
 // field's default), as the drawing has always read it (lpy/draw/shapes.cpp).
 ShapeMesh hullMesh(PyObject* hull);

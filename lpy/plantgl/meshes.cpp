@@ -163,6 +163,7 @@ void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     if (!mesh.colours.empty() || !to.colours.empty())  // the colours stay with their points
         to.colours.resize(size_t(base), 0), to.colours.insert(to.colours.end(), mesh.colours.begin(), mesh.colours.end()),
             to.colours.resize(size_t(base) + mesh.points.size(), 0);
+    if (to.texture.empty()) to.texture = mesh.texture;
     if (!mesh.uvs.empty() || !to.uvs.empty())  // and the texture coordinates (none: 0, 0)
         to.uvs.resize(size_t(base)), to.uvs.insert(to.uvs.end(), mesh.uvs.begin(), mesh.uvs.end()), to.uvs.resize(size_t(base) + mesh.points.size());
     for (const V3& p : mesh.points) to.points.push_back(f(p));
@@ -242,7 +243,9 @@ ShapeMesh geometryOf(PyObject* obj, int depth) {
 // A Shape: its geometry in its appearance's colour (shapeColour) where an inner one gave none.
 ShapeMesh shapeOf(PyObject* obj, int depth) {
     ShapeMesh m = geometryOf(obj, depth);
-    const std::uint32_t rgba = m.kind == ShapeMesh::Mesh ? shapeColour(obj) : 0;
+    std::uint32_t rgba = m.kind == ShapeMesh::Mesh ? shapeColour(obj) : 0;
+    if (m.kind == ShapeMesh::Mesh && m.texture.empty() && !m.uvs.empty() && !(m.texture = shapeTexture(obj)).empty())
+        rgba = 0xFFFFFFFFu;  // its image as it is (Texture2D's base colour), not the turtle's colour times it
     if (rgba) m.colours.resize(m.points.size(), 0);
     for (std::uint32_t& k : m.colours) k = k ? k : rgba;
     return m;

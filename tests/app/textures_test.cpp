@@ -373,3 +373,14 @@ TEST(Textures, APatchMovedOrGroupedKeepsItsImage) {
         for (int q = 0; q < 4; ++q) EXPECT_GT(n[q], 500) << shape << ": " << kNames[q];
     }
 }
+
+// An @g Shape in a texture appearance (PlantGL's Shape(geometry, Texture2D(...))) draws its
+// patch with its own image, whatever the turtle's material, as PglTurtle::pglShape does.
+TEST(Textures, AShapesTextureAppearanceIsItsImage) {
+    // (the turtle in material 2, a plain green)
+    const sprout::Image im = render("tex_shape", ",(2)", "@g(Shape(quad, Texture2D(image=ImageTexture('quarters.png'))))");
+    int n[5] = {0, 0, 0, 0, 0};
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) ++n[classify(im, x, y)];
+    for (int q = 0; q < 4; ++q) EXPECT_GT(n[q], 500) << kNames[q];
+}
