@@ -59,7 +59,9 @@ void jpegFailed(j_common_ptr info) {
 }
 
 TextureImage decodeJpeg(std::string_view bytes) {
-    TextureImage t;  // before the jump point: nothing is made after it that a jump would skip
+    // Before the jump point: nothing owning memory is made after it, which a jump would skip.
+    TextureImage t;
+    std::vector<unsigned char> row;
     jpeg_decompress_struct info;
     JpegError err;
     err.message[0] = 0;
@@ -89,7 +91,7 @@ TextureImage decodeJpeg(std::string_view bytes) {
     }
     t.width = int(info.output_width), t.height = int(info.output_height), t.format = "jpeg";
     t.rgba.assign(std::size_t(t.width) * std::size_t(t.height) * 4, 255);
-    std::vector<unsigned char> row(std::size_t(t.width) * 3);
+    row.resize(std::size_t(t.width) * 3);
     while (info.output_scanline < info.output_height) {
         const std::size_t y = info.output_scanline;
         unsigned char* rows[] = {row.data()};
