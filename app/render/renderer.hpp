@@ -139,6 +139,9 @@ public:
     bool beginUpload(std::shared_ptr<const PreparedScene> scene, std::size_t bytesPerFrame);
     bool continueUpload(std::size_t bytes);
     bool uploading() const;
+    // The texture images that could not be read since the last call (each named once, with
+    // why), for the window to say; their surfaces are drawn in their colour.
+    std::vector<std::string> takeTextureProblems();
     // Whether a staged upload writes into buffers mapped once, persistently (GL 4.4's or
     // ARB_buffer_storage's immutable storage): a piece is then a copy into the mapping, with
     // no call into GL and no copy or wait of the driver's. On where the context has it (Mesa's

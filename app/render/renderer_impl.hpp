@@ -192,6 +192,7 @@ struct Renderer::Impl {
         GLuint texture = 0;
     };
     std::map<std::string, TextureObject> textureObjects;
+    std::vector<std::string> textureProblems;  // Renderer::takeTextureProblems
     void adoptTextured(const PreparedScene& p);
     GLuint textureFor(const std::string& path);
     void drawTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);

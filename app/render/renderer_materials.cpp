@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <cstdio>
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 #include <glm/geometric.hpp>
 
@@ -106,8 +108,10 @@ GLuint Renderer::Impl::textureFor(const std::string& path) {
     TextureObject& o = textureObjects[path];
     if (o.image == image) return o.texture;
     // (A missing file the model's reader has warned of; a broken one is said here, once.)
-    if (!image->error.empty() && !image->missing && (!o.image || o.image->error != image->error))
+    if (!image->error.empty() && !image->missing && (!o.image || o.image->error != image->error)) {
         std::fprintf(stderr, "warning: %s: drawn in its colour\n", image->error.c_str());
+        textureProblems.push_back(image->error + ": drawn in its colour");
+    }
     o.image = image;
     if (image->error.empty() && !o.texture) glGenTextures(1, &o.texture);
     if (!image->error.empty()) return o.texture = 0;
@@ -123,6 +127,8 @@ GLuint Renderer::Impl::textureFor(const std::string& path) {
     glBindTexture(GL_TEXTURE_2D, 0);
     return o.texture;
 }
+
+std::vector<std::string> Renderer::takeTextureProblems() { return std::exchange(m->textureProblems, {}); }
 
 void Renderer::Impl::drawTextured(const glm::mat4& viewProj, GLuint p, std::size_t from, std::size_t to) {
     const bool depth = p == bakedDepth;

@@ -392,6 +392,7 @@ TEST(Window, ATexturesImageFileChangedInThePanelIsDrawn) {
     };
     plainImage("red.png", 230, 20, 20);
     plainImage("blue.png", 20, 20, 230);
+    std::ofstream(dir / "broken.png", std::ios::binary) << "not an image";
     const fs::path model = dir / "leaf.lpy", back = dir / "back.lpy";
     const std::string text =
         "from openalea.plantgl.all import *\n"
@@ -404,8 +405,12 @@ TEST(Window, ATexturesImageFileChangedInThePanelIsDrawn) {
     const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
     const auto printed = runScript(dir, model.string() + " --size 1000x700",
                                    "trust yes\nwait\nmaterials\nscreenshot " + a + " 200x200\nmaterial-set 1 image blue.png\nwait\nmaterials\n"
-                                   "screenshot " + b + " 200x200\nundo\nwait\nscreenshot " + c + " 200x200\nsaveas " + back.string() + "\nquit\n");
-    ASSERT_EQ(printed.size(), 3u);
+                                   "screenshot " + b + " 200x200\nundo\nwait\nscreenshot " + c + " 200x200\nsaveas " + back.string() +
+                                   "\nmaterial-set 1 image broken.png\nwait\nframe\nstatus\nquit\n");
+    ASSERT_EQ(printed.size(), 4u);
+    // A broken image: the window's status line names it (the surface in its colour).
+    EXPECT_NE(printed[3].find("status=texture image '" + (dir / "broken.png").string() + "': not a PNG, JPEG or SGI image"), std::string::npos)
+        << printed[3];
     EXPECT_NE(printed[1].find(" texture=red.png"), std::string::npos) << printed[1];
     EXPECT_NE(printed[2].find(" texture=blue.png"), std::string::npos) << printed[2];
     auto count = [](const Image& im, bool blue) {

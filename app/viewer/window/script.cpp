@@ -75,6 +75,7 @@
 //                         whose still picture takes a few ms: a GPU, a small plant), then
 //                         "staged_uploads=U mapped_uploads=0|1": how many plants went to the
 //                         GPU a piece per frame, and whether into persistently mapped buffers
+//   status                prints "status=TEXT": the message the window's status line shows
 //   gl-info               prints "gl_renderer=R" and "gl_version=V", a line each: the context's
 //                         GL_RENDERER and GL_VERSION (which GPU, or Mesa's llvmpipe, drew)
 //   wait-thumbnails       until the presets' thumbnails are made (benchmarks)
@@ -318,8 +319,9 @@ std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std:
         app.movingFrames = 0;
         return true;
     }
-    if (cmd == "gl-info") {
-        std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
+    if (cmd == "gl-info" || cmd == "status") {
+        if (cmd == "status") std::printf("status=%s\n", app.status.c_str());
+        else std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
         std::fflush(stdout);
         return true;
     }

@@ -109,6 +109,7 @@ void takePlant(App& app, Frame& frame) {
         }
         app.needsRedraw = true;
     }
+    for (const std::string& problem : app.renderer.takeTextureProblems()) app.say(problem);  // a broken image, once
     // A click that waited for the derivation's origins; the highlight follows the plant.
     if (app.pendingPick && app.state.plant() && app.state.plant()->pick) app.pickAt(app.pendingPick->first, app.pendingPick->second);
     if ((app.highlightDirty || app.highlightOf != app.state.plant()) && !app.renderer.uploading()) app.updateHighlight();
