@@ -441,6 +441,18 @@ ShapeMesh faceSet(PyObject* obj) {
     }
     if (m.triangles.empty()) return {};
     if (!whole) raise();  // a point of fewer than three numbers, refused by the drawing
+    const Ref uv(attributeOr(obj, "texCoordList", none())), uvIndex(attributeOr(obj, "texCoordIndexList", none()));  // (u, v) a point
+    const Py_ssize_t nuv = uv.p != Py_None && uvIndex.p == Py_None ? PyObject_Length(uv.p) : -1;
+    for (Py_ssize_t k = 0; nuv == Py_ssize_t(m.points.size()) && k < nuv; ++k) {  // never a reason not to draw it
+        PyObject* q = PySequence_GetItem(uv.p, k);
+        std::vector<double> c;
+        const bool ok = q && pynum::numbers(q, c) && c.size() >= 2;
+        Py_XDECREF(q);
+        if (!ok) break;
+        m.uvs.push_back({float(c[0]), float(c[1])});
+    }
+    if (m.uvs.size() != m.points.size()) m.uvs.clear();  // (one by index, texCoordIndexList, is not read)
+    PyErr_Clear();
     return result(std::move(m));
 }
 

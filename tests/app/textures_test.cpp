@@ -384,3 +384,14 @@ TEST(Textures, AShapesTextureAppearanceIsItsImage) {
         for (int x = 0; x < im.width; ++x) ++n[classify(im, x, y)];
     for (int q = 0; q < 4; ++q) EXPECT_GT(n[q], 500) << kNames[q];
 }
+
+// A QuadSet's texCoordList places the image on it, as PlantGL's renderer does.
+TEST(Textures, AMeshsTexCoordListPlacesTheImage) {
+    const char* quads = "@g(QuadSet([(0, -1, -1), (0, 1, -1), (0, 1, 1), (0, -1, 1)], [(0, 1, 2, 3)], "
+                        "texCoordList=[(0, 0), (1, 0), (1, 1), (0, 1)]))";
+    const sprout::Image im = render("tex_quadset", "", quads);
+    int n[5] = {0, 0, 0, 0, 0};
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) ++n[classify(im, x, y)];
+    for (int q = 0; q < 4; ++q) EXPECT_GT(n[q], 500) << kNames[q];
+}
