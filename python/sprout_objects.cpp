@@ -175,9 +175,12 @@ void bindModelObjects(py::module_& m) {
         "lpy_curves",
         [](const std::string& text) {
             py::list out;
-            for (const LpyCurve& c : lpyCurves(text)) {
+            const std::vector<LpyCurve> all = lpyCurves(text);
+            for (size_t k = 0; k < all.size(); ++k) {
+                const LpyCurve& c = all[k];
                 py::dict d;
                 d["name"] = c.name;
+                d["key"] = lpyCurveKey(all, k);  // NAME#k: a version before the last, which several panels set
                 d["kind"] = c.kind == LpyCurve::Kind::Bezier ? "Bezier" : c.kind == LpyCurve::Kind::Polyline ? "Polyline" : "NURBS";
                 d["function"] = c.function;
                 d["degree"] = c.degree;
@@ -187,7 +190,9 @@ void bindModelObjects(py::module_& m) {
             }
             return out;
         },
-        py::arg("text"), "The 2D curves of an L-Py model's INITIALISATION part: name, kind, function, degree, line, points (x, y, w)");
+        py::arg("text"),
+        "The 2D curves of an L-Py model's INITIALISATION part: name, key (NAME#k for a version before the last), kind, function, "
+        "degree, line, points (x, y, w)");
     m.def(
         "set_lpy_curve",
         [](const std::string& text, const std::string& name, const std::vector<std::array<double, 3>>& points) {
@@ -196,7 +201,7 @@ void bindModelObjects(py::module_& m) {
                 if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
                     throw py::value_error("a curve's points are finite numbers");
             const std::vector<LpyCurve> curves = lpyCurves(text);
-            if (const LpyCurve* c = lastLpyCurve(curves, name)) return setLpyCurvePoints(text, *c, points);
+            if (const LpyCurve* c = lpyCurveNamed(curves, name)) return setLpyCurvePoints(text, *c, points);  // NAME, or NAME#k
             throw py::key_error("no curve " + name + " in the model's INITIALISATION part");
         },
         py::arg("text"), py::arg("name"), py::arg("points"),

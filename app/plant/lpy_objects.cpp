@@ -157,6 +157,27 @@ const LpyCurve* lastLpyCurve(const std::vector<LpyCurve>& curves, std::string_vi
     return nullptr;
 }
 
+const LpyCurve* lpyCurveNamed(const std::vector<LpyCurve>& curves, std::string_view key) {
+    const size_t hash = key.rfind('#');
+    if (hash == std::string_view::npos || hash + 1 >= key.size() ||
+        key.find_first_not_of("0123456789", hash + 1) != std::string_view::npos)
+        return lastLpyCurve(curves, key);
+    const std::string_view name = key.substr(0, hash);
+    size_t k = 0;
+    for (char ch : key.substr(hash + 1)) k = std::min<size_t>(k * 10 + size_t(ch - '0'), 1u << 20);
+    for (const LpyCurve& c : curves)
+        if (c.name == name && k-- == 0) return &c;
+    return nullptr;
+}
+
+std::string lpyCurveKey(const std::vector<LpyCurve>& curves, size_t i) {
+    if (i >= curves.size()) return "";
+    if (lastLpyCurve(curves, curves[i].name) == &curves[i]) return curves[i].name;
+    size_t k = 0;
+    for (size_t j = 0; j < i; ++j) k += curves[j].name == curves[i].name;
+    return curves[i].name + "#" + std::to_string(k);
+}
+
 std::string setLpyCurvePoints(std::string_view text, const LpyCurve& curve, const std::vector<std::array<double, 3>>& points) {
     std::string list = "[";
     for (size_t i = 0; i < points.size(); ++i) {

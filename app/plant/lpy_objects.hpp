@@ -32,6 +32,12 @@ std::vector<LpyCurve> lpyCurves(std::string_view text);
 // The curve a name means: where several panels set it (L-Py Studio keeps each panel's version),
 // the last, which the model's variable holds; null when none has it.
 const LpyCurve* lastLpyCurve(const std::vector<LpyCurve>& curves, std::string_view name);
+// The curve `key` names: "NAME", the last version (lastLpyCurve's), or "NAME#k", the k-th from
+// 0 of the versions several panels set, in the text's order (an earlier one: what its panel
+// shows in Studio, not what the model uses); null when there is none.
+const LpyCurve* lpyCurveNamed(const std::vector<LpyCurve>& curves, std::string_view key);
+// The key of curves[i]: its name, or NAME#k for a version before the last.
+std::string lpyCurveKey(const std::vector<LpyCurve>& curves, size_t i);
 
 // The text with the curve's point list replaced by `points` (as L-Py Studio writes them: six
 // significant digits, `(x, y, w)` joined by `,`; `(x, y)` for a polyline); nothing else changes.

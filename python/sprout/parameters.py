@@ -34,7 +34,7 @@ class Parameter:
     def _entry(self):
         text = self._plant.text
         if self._key[0] == "curve":
-            return [c for c in _sprout.lpy_curves(text) if c["name"] == self.name][-1]
+            return [c for c in _sprout.lpy_curves(text) if c["key"] == self.name][-1]
         if self._key[0] == "patch":
             return [p for p in _sprout.lpy_patches(text) if p["name"] == self.name][-1]
         if self._key[0] == "material":
@@ -138,8 +138,8 @@ class Parameters(_abc.Mapping):
 
     def _keys(self):
         text, out = self._plant.text, {}
-        for c in _sprout.lpy_curves(text):
-            out[c["name"]] = ("function" if c["function"] else "curve", ("curve",))
+        for c in _sprout.lpy_curves(text):  # an earlier panel's version of a name: "NAME#k"
+            out[c["key"]] = ("function" if c["function"] else "curve", ("curve",))
         for p in _sprout.lpy_patches(text):
             out[p["name"]] = ("patch", ("patch",))
         for s in _sprout.lpy_scalars(text):

@@ -105,3 +105,16 @@ def test_a_texture_materials_image_is_listed_and_set():
         leaf.ambient
     with pytest.raises(ValueError):
         leaf.image = "it's.png"
+
+
+def test_an_earlier_panels_version_of_a_curve_has_its_key():
+    earlier = ("\tpath = pgl.NurbsCurve2D(pgl.Point3Array([(-0.5, 0, 1),(0, 0.3, 1),(0.5, 0, 1)]), degree = 2)\n"
+               "\tpanel_9 = ({'name': 'Old'},[('Curve2D',path)])\n")
+    text = GUIDED.replace("\tpath = pgl.NurbsCurve2D(\t\n", earlier + "\tpath = pgl.NurbsCurve2D(\t\n", 1)
+    plant = sprout.parse(text, kind="lpy")
+    assert "path#0" in plant.parameters and "path" in plant.parameters
+    assert plant.parameters["path#0"].points[1] == (0.0, 0.3, 1.0)
+    plant.parameters["path#0"].points = [(-0.5, 0, 1), (0, 0.9, 1), (0.5, 0, 1)]
+    assert "[(-0.5, 0, 1),(0, 0.9, 1),(0.5, 0, 1)]" in plant.text
+    assert plant.parameters["path"].points[2] == (0.2, -0.05, 1.0), "the last one as it was"
+

@@ -99,6 +99,31 @@ TEST(LpyCurves, APointMovedChangesOnlyItsListAndReadsBack) {
     EXPECT_NE(poly.find("Polyline2D([(0, 0),(0.5, 0.25),(1, 0)])"), std::string::npos);
 }
 
+// A name two panels set (L-Py Studio keeps each panel's version): NAME is the last, which the
+// model's variable holds; NAME#0 the earlier one, each edited where it is written.
+TEST(LpyCurves, EachVersionOfANameSeveralPanelsSetHasItsKey) {
+    const std::string text =
+        "def __initialiseContext__(context):\n\timport openalea.plantgl.all as pgl\n"
+        "\tpath = pgl.NurbsCurve2D(pgl.Point3Array([(0, 0, 1),(1, 0, 1),(2, 0, 1)]), degree = 2)\n"
+        "\tpanel_0 = ({'name': 'Panel 1'},[('Curve2D',path)])\n"
+        "\tpath = pgl.NurbsCurve2D(pgl.Point3Array([(0, 1, 1),(1, 1, 1),(2, 1, 1)]), degree = 2)\n"
+        "\tpanel_1 = ({'name': 'Panel 2'},[('Curve2D',path)])\n";
+    const std::vector<LpyCurve> curves = lpyCurves(text);
+    ASSERT_EQ(curves.size(), 2u);
+    EXPECT_EQ(lpyCurveKey(curves, 0), "path#0");
+    EXPECT_EQ(lpyCurveKey(curves, 1), "path");
+    EXPECT_EQ(lpyCurveNamed(curves, "path"), &curves[1]) << "the last: the model's";
+    EXPECT_EQ(lpyCurveNamed(curves, "path#0"), &curves[0]);
+    EXPECT_EQ(lpyCurveNamed(curves, "path#1"), &curves[1]);
+    EXPECT_EQ(lpyCurveNamed(curves, "path#2"), nullptr);
+    EXPECT_EQ(lpyCurveNamed(curves, "path#x"), nullptr) << "no curve is named so";
+    auto pts = curves[0].points;
+    pts[1][1] = 0.5;
+    const std::string moved = setLpyCurvePoints(text, *lpyCurveNamed(curves, "path#0"), pts);
+    EXPECT_NE(moved.find("[(0, 0, 1),(1, 0.5, 1),(2, 0, 1)]"), std::string::npos) << moved;
+    EXPECT_NE(moved.find("[(0, 1, 1),(1, 1, 1),(2, 1, 1)]"), std::string::npos) << "the last one as it was";
+}
+
 TEST(LpyCurves, TheEditorDrawsTheCurveAsPlantGLEvaluatesIt) {
     const std::vector<std::array<double, 3>> ctrl{{0, 0, 1}, {1, 2, 1}, {2, 0, 1}};
     // A Bezier of three points: its middle at (1, 1).

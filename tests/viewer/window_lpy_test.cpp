@@ -162,6 +162,34 @@ const std::string kGuidedModel =
     "\tparameterset = [panel_0,]\n\tcontext[\"__curves__\"] = [('path',path),]\n"
     "\tcontext[\"__parameterset__\"] = parameterset\n\tcontext[\"path\"] = path\n";
 
+// A name two panels set: the earlier version is listed and edited where it is written (the
+// picture stays: the model uses the last), the last bends the plant.
+TEST(Window, AnEarlierPanelsVersionOfACurveIsEditedInPlace) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    const fs::path dir = testDir("curve_versions");
+    const fs::path model = dir / "two.lpy", saved = dir / "saved.lpy";
+    std::string text = kGuidedModel;
+    const std::string earlier = "\tpath = pgl.NurbsCurve2D(pgl.Point3Array([(-0.5, 0, 1),(0, 0.3, 1),(0.5, 0, 1)]), degree = 2)\n"
+                                "\tpanel_9 = ({'name': 'Old'},[('Curve2D',path)])\n";
+    text.insert(text.find("\tpath = pgl.NurbsCurve2D(\t\n"), earlier);
+    std::ofstream(model, std::ios::binary) << text;
+    const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string(), c = (dir / "c.png").string();
+    const auto printed = runScript(dir, model.string() + " --size 1000x700",
+                                   "trust yes\nwait\ncurves\nscreenshot " + a + " 400x300\ncurve-point path#0 1 0 0.9\nwait\n"
+                                   "screenshot " + b + " 400x300\ncurve-point path 2 0.2 0.6\nwait\nscreenshot " + c +
+                                   " 400x300\nsaveas " + saved.string() + "\nquit\n");
+    ASSERT_EQ(printed.size(), 3u);
+    EXPECT_EQ(printed[1], "curve=path#0 kind=0 points=-0.5,0,1;0,0.3,1;0.5,0,1");
+    EXPECT_EQ(printed[2], "curve=path kind=0 points=-0.5,0,1;-0.1,0.05,1;0.2,-0.05,1;0.5,0,1");
+    const std::string out = fileText(saved);
+    EXPECT_NE(out.find("[(-0.5, 0, 1),(0, 0.9, 1),(0.5, 0, 1)]"), std::string::npos) << "the earlier version, where it is written";
+    EXPECT_NE(out.find("(0.2, 0.6, 1)"), std::string::npos) << "and the last";
+    const Image ia = load(a), ib = load(b), ic = load(c);
+    EXPECT_LE(pixelsThatDiffer(ia, ib), 20u) << "the model uses the last version: the plant as it was";
+    EXPECT_GT(pixelsThatDiffer(ib, ic), 400u * 300u / 200) << "the last one bends it";
+}
+
 TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
     if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
     if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";

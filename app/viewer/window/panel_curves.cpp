@@ -41,23 +41,24 @@ CurveRules rulesOf(const LpyCurve& c) {
     return r;
 }
 
-// Writes points into the curve named `name` in the text the app has now.
+// Writes points into the curve `name` names (lpyCurveNamed: NAME, or NAME#k an earlier
+// version) in the text the app has now.
 bool writeCurve(App& app, const std::string& name, const CurvePoints& pts, std::uint64_t gesture) {
-    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    const LpyCurve* c = lpyCurveNamed(curvesOf(app.state.text()), name);
     if (!c) return false;
     app.state.setText(setLpyCurvePoints(app.state.text(), *c, pts), gesture);
     return true;
 }
 
-EditedCurve edited(App& app, const LpyCurve& c) {
+EditedCurve edited(App& app, const LpyCurve& c, const std::string& key) {
     EditedCurve e;
-    e.key = "lpy:" + c.name;
+    e.key = "lpy:" + key;
     e.points = c.points;
     e.rules = rulesOf(c);
     e.weights = c.kind == LpyCurve::Kind::Nurbs;
     const int kind = int(c.kind), degree = c.degree;
     e.samples = [kind, degree](const CurvePoints& pts) { return lpy::curveSamples(kind, degree, pts, 120); };
-    e.write = [&app, name = c.name](const CurvePoints& pts, std::uint64_t g) { return writeCurve(app, name, pts, g); };
+    e.write = [&app, key](const CurvePoints& pts, std::uint64_t g) { return writeCurve(app, key, pts, g); };
     return e;
 }
 
@@ -258,7 +259,7 @@ std::uint64_t newGesture() {
 }
 
 bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, double y, std::uint64_t gesture) {
-    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    const LpyCurve* c = lpyCurveNamed(curvesOf(app.state.text()), name);
     if (!c) {  // a .lsys grammar's function or contour
         const auto all = lsysCurves(app.state.text());
         const LsysCurve* l = lsysCurveNamed(all, name);
@@ -269,14 +270,14 @@ bool moveCurvePoint(App& app, const std::string& name, size_t k, double x, doubl
 }
 
 bool nudgeCurvePoint(App& app, const std::string& name, size_t k, double dx, double dy, std::uint64_t gesture) {
-    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    const LpyCurve* c = lpyCurveNamed(curvesOf(app.state.text()), name);
     if (!c || k >= c->points.size()) return false;
     const double x = c->points[k][0] + dx, y = c->points[k][1] + dy;  // (c is the cache's: read before it moves)
     return moveCurvePoint(app, name, k, x, y, gesture);
 }
 
 std::string editCurve(App& app, const std::string& name, const std::string& op, double a, double b) {
-    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    const LpyCurve* c = lpyCurveNamed(curvesOf(app.state.text()), name);
     if (!c) return "no curve " + name;
     const CurveRules rules = rulesOf(*c);
     std::optional<CurvePoints> pts;
@@ -290,7 +291,7 @@ std::string editCurve(App& app, const std::string& name, const std::string& op, 
 }
 
 std::string presetCurve(App& app, const std::string& name, const std::string& preset) {
-    const LpyCurve* c = lastLpyCurve(curvesOf(app.state.text()), name);
+    const LpyCurve* c = lpyCurveNamed(curvesOf(app.state.text()), name);
     if (!c) return "no curve " + name;
     const auto p = curvePresetNamed(preset);
     if (!p) return "no preset " + preset + " (line, arc, circle, s)";
@@ -320,28 +321,30 @@ void openCurve(App& app, const std::string& name) {
 
 void curveSection(App& app) {
     std::string& open = openLpyCurve();
-    // A name several panels set: only the version lastLpyCurve names is listed and edited.
-    std::vector<LpyCurve> curves;
-    for (const LpyCurve& c : curvesOf(app.state.text()))
-        if (lastLpyCurve(curvesOf(app.state.text()), c.name) == &c) curves.push_back(c);
-    if (!curves.empty() && std::none_of(curves.begin(), curves.end(), [&](const LpyCurve& c) { return c.name == open; }))
-        open = curves.front().name;  // the first curve open at first (and when the one open is gone)
-    const LpyCurve* shown = nullptr;
+    // Every version of a name several panels set, each by its key (NAME for the last, which
+    // the model uses; NAME#k for an earlier one, which only its panel shows in Studio).
+    const std::vector<LpyCurve> curves = curvesOf(app.state.text());  // a copy: a write reads them again
+    std::vector<std::string> keys;
+    for (size_t i = 0; i < curves.size(); ++i) keys.push_back(lpyCurveKey(curves, i));
+    if (!keys.empty() && std::find(keys.begin(), keys.end(), open) == keys.end())
+        open = keys.front();  // the first curve open at first (and when the one open is gone)
+    size_t shown = curves.size();
     std::string panel = "\x01";
-    for (const LpyCurve& c : curves) {  // grouped by the model's panels, as L-Py Studio shows them
+    for (size_t i = 0; i < curves.size(); ++i) {  // grouped by the model's panels, as L-Py Studio shows them
+        const LpyCurve& c = curves[i];
         if (c.panel != panel) {
             panel = c.panel;
             ImGui::TextColored(kDim, "%s", panel.empty() ? "(in no panel)" : panel.c_str());
         }
-        char label[160];
-        std::snprintf(label, sizeof label, "%s  (%s%s, %zu points)", c.name.c_str(), kindName(c), c.function ? " function" : "",
-                      c.points.size());
-        if (curveRow(label, open == c.name, lpy::curveSamples(int(c.kind), c.degree, c.points, 40))) open = c.name;
-        if (open == c.name) shown = &c;
+        char label[200];
+        std::snprintf(label, sizeof label, "%s  (%s%s, %zu points%s)", c.name.c_str(), kindName(c), c.function ? " function" : "",
+                      c.points.size(), keys[i] == c.name ? "" : "; an earlier version: the model uses the last");
+        if (curveRow(label, open == keys[i], lpy::curveSamples(int(c.kind), c.degree, c.points, 40))) open = keys[i];
+        if (open == keys[i]) shown = i;
     }
-    if (!shown) return;
-    ImGui::PushID(shown->name.c_str());
-    curveCanvas(app, edited(app, *shown));
+    if (shown == curves.size()) return;
+    ImGui::PushID(keys[shown].c_str());
+    curveCanvas(app, edited(app, curves[shown], keys[shown]));
     ImGui::PopID();
 }
 

@@ -152,8 +152,10 @@ std::optional<bool> Script::curveCommand(App& app, const std::string& cmd, std::
         return true;
     }
     if (cmd == "curves") {
-        for (const LpyCurve& c : lpyCurves(app.state.text())) {
-            std::printf("curve=%s kind=%d points=", c.name.c_str(), int(c.kind));
+        const std::vector<LpyCurve> all = lpyCurves(app.state.text());
+        for (size_t k = 0; k < all.size(); ++k) {  // each version by its key (NAME#k: an earlier one)
+            const LpyCurve& c = all[k];
+            std::printf("curve=%s kind=%d points=", lpyCurveKey(all, k).c_str(), int(c.kind));
             for (size_t i = 0; i < c.points.size(); ++i) std::printf("%s%.9g,%.9g,%.9g", i ? ";" : "", c.points[i][0], c.points[i][1], c.points[i][2]);
             std::printf("\n");
         }
