@@ -61,19 +61,22 @@ Quarter quarterAt(double u, double v) {
     return v < 0.5 ? (u < 0.5 ? Blue : Yellow) : (u < 0.5 ? Red : Green);
 }
 
+// An L-Py model: a square patch `quad` (in the x = 0 plane, facing the front view), material 1
+// a texture of `image`, and `axiom`.
+std::string quadModel(const std::string& image, const std::string& axiom) {
+    return "from openalea.plantgl.all import *\n"
+           "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
+           "context().turtle.setMaterial(1, ImageTexture('" + image + "'))\n"
+           "Axiom: " + axiom + "\nderivation length: 0\n";
+}
+
 // A square patch facing the front view, textured with the image by material 1, with
 // `transform` (L-Py's modules) before it.
 sprout::Image render(const std::string& name, const std::string& transform, const std::string& shape = "@g(quad)") {
     const std::string dir = testing::TempDir();
     std::string error;
     EXPECT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
-    const std::string model =
-        "from openalea.plantgl.all import *\n"
-        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
-        "context().turtle.setMaterial(1, ImageTexture('quarters.png'))\n"
-        "Axiom: " + transform + " " + shape + "\n"
-        "derivation length: 0\n";
-    const std::string path = writeTemp(name + ".lpy", model), png = dir + name + ".png";
+    const std::string path = writeTemp(name + ".lpy", quadModel("quarters.png", transform + " " + shape)), png = dir + name + ".png";
     const auto r = runSprout("render " + path + " -o " + png + " --size 240x240 --view front --no-ground --no-shadows");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
@@ -150,12 +153,7 @@ TEST(Textures, AnImageLiesOnAPatchAsLpysTransformsPutIt) {
 
 // A model whose texture image is not there: a warning that names it, the patch in its colour.
 TEST(Textures, AMissingImageIsAWarningAndTheColour) {
-    const std::string model =
-        "from openalea.plantgl.all import *\n"
-        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
-        "context().turtle.setMaterial(1, ImageTexture('no_such_leaf.png'))\n"
-        "Axiom: @g(quad)\nderivation length: 0\n";
-    const std::string path = writeTemp("tex_missing.lpy", model), png = testing::TempDir() + "tex_missing.png";
+    const std::string path = writeTemp("tex_missing.lpy", quadModel("no_such_leaf.png", "@g(quad)")), png = testing::TempDir() + "tex_missing.png";
     const auto r = runSprout("render " + path + " -o " + png + " --size 120x120 --view front --no-ground --no-shadows");
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find("no_such_leaf.png"), std::string::npos) << r.err;
@@ -250,12 +248,7 @@ TEST(Textures, ExportsCarryTheImage) {
     std::filesystem::create_directories(dir);
     std::string error;
     ASSERT_TRUE(sprout::writePng(dir + "quarters.png", quarters(), error)) << error;
-    const std::string model =
-        "from openalea.plantgl.all import *\n"
-        "quad = NurbsPatch([[(0, -1, -1, 1), (0, -1, 1, 1)], [(0, 1, -1, 1), (0, 1, 1, 1)]], udegree=1, vdegree=1)\n"
-        "context().turtle.setMaterial(1, ImageTexture('quarters.png'))\n"
-        "Axiom: @g(quad) ,(2) F\nderivation length: 0\n";
-    std::ofstream(dir + "quad.lpy") << model;
+    std::ofstream(dir + "quad.lpy") << quadModel("quarters.png", "@g(quad) ,(2) F");
     const auto glb = runSprout("export " + dir + "quad.lpy -o " + dir + "quad.glb");
     ASSERT_EQ(glb.code, 0) << glb.err;
     const std::string validator = std::string(SPROUT_TOOLS_DIR) + "/validate_gltf.js";
