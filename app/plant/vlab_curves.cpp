@@ -1,5 +1,6 @@
 #include "app/plant/vlab_curves.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -96,7 +97,7 @@ VlabCurves readVlabCurves(const std::string& lsystemPath, ParseOptions& options)
             float ratio = 1;  // R: ratio
             if (const size_t r = f.options.find("R:"); r != std::string::npos && (r == 0 || f.options[r - 1] == ' ')) {
                 const double v = std::strtod(f.options.c_str() + r + 2, nullptr);
-                if (v > 0 && std::isfinite(v)) ratio = float(v);
+                if (v > 0 && std::isfinite(v)) ratio = float(std::clamp(v, 1e-6, 1e6));
             }
             options.viewTextures.push_back({path.string(), perSurface, imageAspect(path), ratio});
         }

@@ -449,7 +449,7 @@ ShapeMesh faceSet(PyObject* obj) {
         const bool ok = q && pynum::numbers(q, c) && c.size() >= 2;
         Py_XDECREF(q);
         if (!ok) break;
-        m.uvs.push_back({float(c[0]), float(c[1])});
+        m.uvs.push_back({float(std::clamp(c[0], -1e30, 1e30)), float(std::clamp(c[1], -1e30, 1e30))});  // (NaN: kept)
     }
     if (m.uvs.size() != m.points.size()) m.uvs.clear();  // (one by index, texCoordIndexList, is not read)
     PyErr_Clear();
