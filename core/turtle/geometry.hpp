@@ -94,6 +94,8 @@ struct Geometry {
     // The images textured vertices name (TexCoord::texture - 1): paths as the model's folder
     // resolves them. The renderer reads each once; one it cannot read is drawn in its colour.
     std::vector<std::string> textures;
+    // The id (TexCoord::texture, from 1) of image `path` in `textures`, added when it is new.
+    std::uint32_t textureId(const std::string& path);
     // A VLab object's background scene (cpfg's `background scene:`, background_scene.hpp): its
     // triangles are in `polygons`, the vertices from `backdropFirst` (`backdropCount` of them).
     // `bounds` leaves them out, as cpfg frames the plant alone; `backdrop` holds theirs.

@@ -1,8 +1,6 @@
 // The string turtle: interprets a module string one module at a time (see turtle_impl.hpp
 // for the files the turtle is made of), and the entry points: a string, or the derivation
 // tree the derivation hands over (core/derive/draw.cpp chooses).
-#include <algorithm>
-
 #include "core/base/bounded.hpp"
 #include "core/turtle/turtle_impl.hpp"
 
@@ -94,19 +92,10 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     if (m_palette.size() > 32767) m_palette.resize(32767);  // the state keeps the index in 16 bits
     for (const auto& [index, path] : st.textures) {  // each image once in the drawing
         if (index < 0 || size_t(index) >= m_palette.size() || path.empty()) continue;
-        auto& list = out.textures;
-        const auto found = std::find(list.begin(), list.end(), path);
-        const std::uint32_t id = std::uint32_t(found - list.begin()) + 1;
-        if (found == list.end()) list.push_back(path);
         if (m_paletteTexture.size() <= size_t(index)) m_paletteTexture.resize(size_t(index) + 1, 0);
-        m_paletteTexture[size_t(index)] = id;
+        m_paletteTexture[size_t(index)] = out.textureId(path);
     }
-    for (const Settings::ViewTexture& v : st.viewTextures) {  // cpfg's, by @Tx(n)
-        auto& list = out.textures;
-        const auto found = std::find(list.begin(), list.end(), v.file);
-        m_viewTexture.push_back(std::uint32_t(found - list.begin()) + 1);
-        if (found == list.end()) list.push_back(v.file);
-    }
+    for (const Settings::ViewTexture& v : st.viewTextures) m_viewTexture.push_back(out.textureId(v.file));  // cpfg's, by @Tx(n)
     m_colourStep = st.colourIncrement;
     m_widthSteps = st.widthIncrement.has_value();
     m_widthStep = toFloat(st.widthIncrement.value_or(0));

@@ -418,12 +418,7 @@ void Turtle::placeSurfaceFile(const State& t, SymbolId id, const double* p) {
     const TexTransform& tx = m_texTransforms[size_t(t.texture)];
     const auto& uvs = tx.perSurface && f.surfaceUvs.size() == f.positions.size() ? f.surfaceUvs : f.uvs;
     std::uint32_t image = textureOf(t);
-    if (!f.texture.empty() && !m_level) {  // the surface's own image (its Shape's appearance)
-        auto& list = m_out.textures;
-        const auto found = std::find(list.begin(), list.end(), f.texture);
-        image = std::uint32_t(found - list.begin()) + 1;
-        if (found == list.end()) list.push_back(f.texture);
-    }
+    if (!f.texture.empty() && !m_level) image = m_out.textureId(f.texture);  // the surface's own (its Shape's appearance)
     if (image && !m_level && uvs.size() == f.positions.size()) {
         // Its texture coordinates, through the turtle's texture transform.
         m.texcoords.resize(base);
@@ -457,6 +452,12 @@ void Bounds::add(const Bounds& b) {
     if (b.empty) return;
     add(b.min);
     add(b.max);
+}
+
+std::uint32_t Geometry::textureId(const std::string& path) {
+    const auto found = std::find(textures.begin(), textures.end(), path);
+    if (found == textures.end()) return textures.push_back(path), std::uint32_t(textures.size());
+    return std::uint32_t(found - textures.begin()) + 1;
 }
 
 std::uint64_t Geometry::bytes() const {
@@ -512,11 +513,7 @@ void placeGeometry(const Geometry& g, float yaw, const glm::vec3& at, Geometry& 
     out.shines.insert(out.shines.end(), g.shines.begin(), g.shines.end());
     if (!g.polygons.texcoords.empty()) {  // its images among the drawing's, each once
         std::vector<std::uint32_t> id(g.textures.size() + 1, 0);
-        for (size_t k = 0; k < g.textures.size(); ++k) {
-            const auto found = std::find(out.textures.begin(), out.textures.end(), g.textures[k]);
-            id[k + 1] = std::uint32_t(found - out.textures.begin()) + 1;
-            if (found == out.textures.end()) out.textures.push_back(g.textures[k]);
-        }
+        for (size_t k = 0; k < g.textures.size(); ++k) id[k + 1] = out.textureId(g.textures[k]);
         out.polygons.texcoords.resize(base);
         for (TexCoord c : g.polygons.texcoords) {
             c.texture = c.texture < id.size() ? id[c.texture] : 0;
