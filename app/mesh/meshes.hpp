@@ -1,9 +1,12 @@
 #pragma once
-// The unit meshes the renderer instances: a capped cylinder, a leaf, a petal, a sphere.
+// The unit meshes the renderer instances: a capped cylinder, a prism, and (from core) a leaf,
+// a petal, a sphere.
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <vector>
+
+#include "core/turtle/unit_surfaces.hpp"
 
 namespace sprout::mesh {
 
@@ -16,15 +19,11 @@ struct CylinderMesh {
 };
 CylinderMesh makeCylinder(int sides, int capRings);
 
-// Surfaces in the turtle frame: x along L (left), y along H (heading), z along U (up).
-struct SurfaceMesh {
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;
-    std::vector<std::uint32_t> indices;
-};
-SurfaceMesh makeLeaf(int along = 12, int across = 6);
-SurfaceMesh makePetal(int along = 10, int across = 6);
-SurfaceMesh makeSphere(int slices, int stacks);
+// The leaf, petal and sphere: core/turtle/unit_surfaces.hpp (the turtle draws textured ones).
+using sprout::SurfaceMesh;
+using sprout::makeLeaf;
+using sprout::makePetal;
+using sprout::makeSphere;
 
 }  // namespace sprout::mesh
 

@@ -96,6 +96,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
         m_paletteTexture[size_t(index)] = out.textureId(path);
     }
     for (const Settings::ViewTexture& v : st.viewTextures) m_viewTexture.push_back(out.textureId(v.file));  // cpfg's, by @Tx(n)
+    m_texturing = !m_paletteTexture.empty() || !m_viewTexture.empty();
     m_colourStep = st.colourIncrement;
     m_widthSteps = st.widthIncrement.has_value();
     m_widthStep = toFloat(st.widthIncrement.value_or(0));
@@ -120,7 +121,7 @@ Turtle::Turtle(const Grammar& g, const TurtleOptions& o, Geometry& out)
     }
     m_state.stemColour = stemColour(m_state);
     // Runs of F can be batched when nothing changes from one segment to the next.
-    m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !m_moves && !(o.ages && o.growStep >= 0);
+    m_plainRuns = m_stepSigma <= 0 && m_tropismE == 0 && !m_moves && !(o.ages && o.growStep >= 0) && !m_texturing;
 }
 
 // Strings without parameters (most D0L plants) take a loop with no parameter walk.

@@ -38,7 +38,7 @@ public:
     bool treeApplicable() const {
         return m_stepSigma <= 0 && m_angleSigma <= 0 && m_tropismE == 0 && !m_opt.ages && !m_hasCurves && !m_scaled && !m_moves &&
                !m_opt.segmentModules && !m_opt.surfaceModules &&
-               m_surfaceFiles.empty() && m_palette.size() <= 127 && m_colourStep == 1 && !m_widthSteps &&
+               m_surfaceFiles.empty() && m_palette.size() <= 127 && m_colourStep == 1 && !m_widthSteps && !m_texturing &&
                simpleInterpretation(m_g);
     }
     static bool simpleInterpretation(const Grammar& g) {
@@ -207,8 +207,6 @@ private:
 
     void vertex(const State& t);
 
-    void emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into = nullptr);
-
     void surface(const State& t, Act act, const double* p, float grow);
 
     void finish();
@@ -227,6 +225,8 @@ private:
     // surfaces kept by name (L-system Explorer's `}(name)`), in that frame: x along L, y along
     // H, z along U.
     struct Frame { glm::vec3 origin, h, l, u; };
+    // A polygon drawn (or into `into`), textured in the frame `at` (its '{'; none: the turtle's).
+    void emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into = nullptr, const Frame* at = nullptr);
     std::vector<Frame> m_polygonFrames;
     std::unordered_map<double, Mesh> m_saved;
     double m_emptyName = -1;
@@ -308,6 +308,24 @@ private:
         const int n = int(m_paletteTexture.size());
         return t.colour < n ? m_paletteTexture[size_t(t.colour)] : 0;
     }
+    // Stems and surfaces drawn with an image (turtle_textured.cpp): noted as they are drawn,
+    // made triangles with texture coordinates at the finish (the instances have no room for
+    // an image), and taken out of the instances. Only when an image is in the drawing.
+    bool m_texturing = false;
+    struct Textured {
+        std::uint32_t index;      // into m_out.cylinders or m_out.surfaces
+        std::uint32_t image;      // Geometry::textures id
+        std::int16_t transform;   // m_texTransforms entry
+        float v0 = 0, v1 = 0;     // a stem's v at its start and end (PlantGL's axial length)
+        glm::vec3 left{0};        // a stem's turtle L: where u starts round it
+    };
+    std::vector<Textured> m_texturedStems, m_texturedSurfaces;
+    [[gnu::noinline]] void noteTexturedStem(State& t, float len);
+    [[gnu::noinline]] void noteTexturedSurface(const State& t);
+    void drawTextured();
+    // A textured polygon's texture coordinates (cpfg's: s along -L, t along H of the frame at
+    // its '{', over the outline's extent), from vertex `base` of the polygon mesh.
+    void polygonTexcoords(const State& t, const Frame& at, std::uint32_t base);
     struct OpenCurve {
         GeneralizedCylinder curve;
         int subdivisions = -4;  // pieces of each span (-4: up to 4, as it bends), until an @Gc(n) says

@@ -222,7 +222,7 @@ void Turtle::vertex(const State& t) {
     if (poly.empty() || !samePoint(poly.back(), p)) poly.push_back(p);
 }
 
-void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into) {
+void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into, const Frame* at) {
     if (pts.size() > 1 && samePoint(pts.front(), pts.back())) pts.pop_back();
     if (pts.size() < 3) return;
     Mesh& m = into ? *into : m_out.polygons;
@@ -252,6 +252,7 @@ void Turtle::emitPolygon(const State& t, std::vector<glm::vec3>& pts, Mesh* into
         if (!into) addBound(fromGlm(p));
     }
     triangulatePolygon(pts, base, m.indices);
+    if (!into && m_texturing && !m_level) polygonTexcoords(t, at ? *at : Frame{toGlm(t.pos), toGlm(t.H), toGlm(t.L), toGlm(up(t))}, base);
 }
 
 // L-system Explorer's `{ ... }(name)`: the polygon is kept, not drawn, in the frame the
@@ -323,6 +324,7 @@ void Turtle::surface(const State& t, Act act, const double* p, float grow) {
     }
     m_out.surfaces.push_back(s);
     if (m_opt.surfaceModules) m_opt.surfaceModules->push_back(std::uint32_t(m_surfaceModule));
+    if (m_texturing) noteTexturedSurface(t);
     addBound(t.pos);
     addBound(t.pos + t.H * s.size);
 }
@@ -395,6 +397,7 @@ void Turtle::finish() {
     auto view = m_g.settings.view;
     out.planarCurve = flat && view != ViewHint::Solid &&
                       (view == ViewHint::Flat || (!m_usedBrackets && out.surfaces.empty()));
+    if (m_texturing) drawTextured();
 }
 
 // A cpfg surface file at the turtle: its frame (heading, left, up) mapped onto the turtle's,

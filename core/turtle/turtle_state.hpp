@@ -107,7 +107,7 @@ inline v4 fromGlm(const glm::vec3& v) { return v4{v.x, v.y, v.z, 0}; }
 
 // Pushed and popped at every bracket.
 struct State {
-    v4 pos{0, 0, 0, 0};
+    v4 pos{0, 0, 0, 0};  // pos[3]: the length drawn textured since the colour was set (PlantGL's axial length)
     v4 H{0, 1, 0, 0};
     v4 L{-1, 0, 0, 0};  // U is H x L, made when a pitch, roll or surface needs it
     float length = 1;

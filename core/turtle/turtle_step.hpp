@@ -47,9 +47,8 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
     }
 }
 
-// F and its kin: a segment ahead, or inside { } a polygon's edge, or in a generalized
-// cylinder a control point. One if-else chain, no early return: GCC predicts an early return
-// unlikely, and with them the string turtle's loop was laid out otherwise (2% slower).
+// F and its kin: a segment ahead, or inside { } a polygon's edge, or in a generalized cylinder a
+// control point. One if-else chain: GCC predicts an early return unlikely (the loop ran 2% slower).
 [[gnu::always_inline]] inline void Turtle::drawForward(State& t, Act act, const double* p, size_t i) {
     if (m_moves) movementAdjust(t);  // cpfg: the tropisms bend the heading before each step
     float len = p ? float(*p) * scaleOf(t) : m_stepSigma > 0 ? t.length + jitter(m_stepSigma) : t.length;
@@ -125,7 +124,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 }
 [[gnu::always_inline]] inline void Turtle::endPolygon(State& t) {
     if (!m_polygons.empty()) {
-        emitPolygon(t, m_polygons.back());
+        emitPolygon(t, m_polygons.back(), nullptr, &m_polygonFrames.back());
         m_polygons.pop_back();
         m_polygonFrames.pop_back();
     } else if (t.curve >= 0 && m_g.settings.bracePaths) {  // the end of an L-system Explorer path
@@ -135,7 +134,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
 [[gnu::always_inline]] inline void Turtle::endPolygonKept(State& t, const double* p) {
     if (!m_polygons.empty()) {
         if (p && *p != m_emptyName) keepPolygon(t, m_polygons.back(), m_polygonFrames.back(), *p);
-        else emitPolygon(t, m_polygons.back());
+        else emitPolygon(t, m_polygons.back(), nullptr, &m_polygonFrames.back());
         m_polygons.pop_back();
         m_polygonFrames.pop_back();
     } else if (t.curve >= 0) {  // a path's end, kept by that name
@@ -163,6 +162,7 @@ inline void Turtle::cosSinDegrees(double degrees, float& c, float& s) {
     const int n = int(m_palette.size());
     t.colour = std::int16_t(((index % n) + n) % n);
     t.stemColour = stemColour(t);
+    t.pos[3] = 0;  // a new colour: its image starts afresh along the stems (PlantGL's axial length)
 }
 
 // A label at the turtle: text number p[0], in size p[1] (13 unless given).
@@ -326,6 +326,7 @@ inline void Turtle::stem(const State& t, v4 a, v4 b, size_t i) {
     c.order = t.order;
     c.step = m_opt.ages ? m_opt.ages[i] : 0;
     if (m_opt.segmentModules) m_opt.segmentModules->push_back(std::uint32_t(i));
+    if (m_texturing) [[unlikely]] noteTexturedStem(t, len);
     addBound(t.pos);
     if (m_tropismE != 0) bend(t);
 }
