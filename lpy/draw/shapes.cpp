@@ -17,15 +17,19 @@ namespace sprout::lpy::detail {
 namespace {
 
 // A shape's triangles in the drawing's frame: normals from the faces around each point (by
-// area); a curve's stems alone (no triangles) keep no points.
-void finishSurface(SurfaceFile& sf) {
+// area), a copied point's with those of the point it copies (`same`: ShapeMesh::sameNormal);
+// a curve's stems alone (no triangles) keep no points.
+void finishSurface(SurfaceFile& sf, const std::vector<long>& same = {}) {
     if (sf.indices.empty()) sf.positions.clear(), sf.colours.clear(), sf.uvs.clear();
-    sf.normals.assign(sf.positions.size(), glm::vec3(0));
+    const size_t np = sf.positions.size();
+    auto at = [&](std::uint32_t k) { return k < same.size() && same[k] >= 0 && size_t(same[k]) < np ? size_t(same[k]) : size_t(k); };
+    sf.normals.assign(np, glm::vec3(0));
     for (size_t i = 0; i + 2 < sf.indices.size(); i += 3) {
         const glm::vec3 &a = sf.positions[sf.indices[i]], &b = sf.positions[sf.indices[i + 1]], &c = sf.positions[sf.indices[i + 2]];
         const glm::vec3 n = glm::cross(b - a, c - a);
-        for (int j = 0; j < 3; ++j) sf.normals[sf.indices[i + size_t(j)]] += n;
+        for (int j = 0; j < 3; ++j) sf.normals[at(sf.indices[i + size_t(j)])] += n;
     }
+    for (size_t k = 0; k < std::min(same.size(), np); ++k) sf.normals[k] = sf.normals[at(std::uint32_t(k))];
     for (glm::vec3& n : sf.normals) n = glm::length(n) > 0 ? glm::normalize(n) : glm::vec3(0, 0, 1);
 }
 
@@ -60,8 +64,9 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
     auto [it, fresh] = m_shapes.try_emplace(shape);
     if (!fresh || !shape) return it->second;
     auto sf = std::make_shared<SurfaceFile>();
+    std::vector<long> same;  // the mesh's points that share a normal
     auto keep = [&] {
-        finishSurface(*sf);
+        finishSurface(*sf, same);
         it->second = "@g#" + std::to_string(g->surfaceFiles.size());
         g->surfaceFiles[it->second] = std::move(sf);
     };
@@ -87,6 +92,7 @@ const std::string& Drawing::shapeSurface(PyObject* shape) {
     }
     if (ok && mesh.colours.size() == np) sf->colours = mesh.colours;
     if (ok && mesh.uvs.size() == np) sf->uvs = mesh.uvs;
+    if (ok && mesh.sameNormal.size() == np) same = mesh.sameNormal;
     if (ok && !sf->uvs.empty() && !mesh.texture.empty()) {  // its Shape's image, found beside the model
         std::filesystem::path file(mesh.texture);
         if (file.is_relative() && !folder.empty()) file = std::filesystem::path(folder) / file;

@@ -35,10 +35,10 @@ py::list indices(const std::vector<std::uint32_t>& found) {
 }  // namespace
 
 void definePointGrid(py::module_& m) {
-    // A shape given to @g as lpy/plantgl/meshes.cpp makes it: (points, triangles, segments), None
-    // where nothing is drawn.
+    // A shape given to @g as lpy/plantgl/meshes.cpp makes it, without the copies of its points
+    // that carry texture coordinates: (points, triangles, segments), None where nothing is drawn.
     m.def("_shape_mesh", [](py::handle shape) -> py::object {
-        const ShapeMesh mesh = shapeMesh(shape.ptr());
+        const ShapeMesh mesh = welded(shapeMesh(shape.ptr()));
         if (mesh.kind == ShapeMesh::Nothing) return py::none();
         py::list points, triangles, segments;
         for (const auto& p : mesh.points) points.append(py::make_tuple(p[0], p[1], p[2]));

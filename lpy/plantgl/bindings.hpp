@@ -28,13 +28,21 @@ struct ShapeMesh {
     // Each point's colour (0xRRGGBBAA) where a Shape's Material gave it, as PglTurtle::pglShape
     // draws a shape in its own appearance; 0 (or none at all): the turtle's colour.
     std::vector<std::uint32_t> colours;
-    // Each point's texture coordinates where the shape has them (patches); else none.
+    // Each point's texture coordinates where the shape has them (patches, solids, meshes with
+    // a texCoordList); else none.
     std::vector<std::array<float, 2>> uvs;
+    // Where a point is a copy of another (a seam, a cap's ring, a face's corner with texture
+    // coordinates of its own), that point: they share one normal, as if not copied. Empty:
+    // none is.
+    std::vector<long> sameNormal;
     // The image of a Shape with a texture appearance around them (the first such), as the
     // model names it; "": the turtle's material's.
     std::string texture;
 };
 ShapeMesh shapeMesh(PyObject* shape);
+// `mesh` without its copied points (ShapeMesh::sameNormal), the triangles on the points they
+// copy: the shape's geometry alone, as it was meshed before texture coordinates were given.
+ShapeMesh welded(const ShapeMesh& mesh);
 // A Shape's colour as PglTurtle::pglShape draws it: its Material's diffuseColor() and, as
 // alpha, 1 - transparency (0xRRGGBBAA); 0 for another appearance (a texture) or none
 // (appearance.cpp).

@@ -7,11 +7,11 @@
 // shape is not drawn: Raises.
 //
 // Index of this file:
-//   [SECTION] Python's values, read as the Python meshing read them
+//   [SECTION] Python's values, read as the Python meshing read them: meshing.hpp
 //   [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic): vector_math.hpp
 //   [SECTION] Meshes put together
 //   [SECTION] Groups and transformations
-//   [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc)
+//   [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc): solids.cpp
 //   [SECTION] Points, faces, curves and patches
 //   [SECTION] The crown (AsymmetricHull)
 //   [SECTION] The shape's kind, and shapeMesh
@@ -21,139 +21,19 @@
 
 #include "lpy/plantgl/asymmetric_hull.hpp"
 #include "lpy/plantgl/bindings.hpp"
+#include "lpy/plantgl/meshing.hpp"
 #include "lpy/plantgl/py_numbers.hpp"
 #include "lpy/plantgl/vector_math.hpp"
 
 namespace sprout::lpy {
+namespace meshing {
 namespace {
 
-// [SECTION] Python's values, read as the Python meshing read them
-
-struct Raises {};  // thrown: the shape is not drawn (any Python error is cleared)
-
-[[noreturn]] void raise() {
-    PyErr_Clear();
-    throw Raises{};
-}
-
-// A new reference, or Raises.
-PyObject* own(PyObject* o) {
-    if (!o) raise();
-    return o;
-}
-
-struct Ref {  // a new reference, released at the end of the scope
-    PyObject* p;
-    explicit Ref(PyObject* o) : p(own(o)) {}
-    Ref(const Ref&) = delete;
-    Ref& operator=(const Ref&) = delete;
-    ~Ref() { Py_XDECREF(p); }
-};
-
-// getattr(obj, field, default): null for the default (AttributeError only).
-PyObject* attribute(PyObject* obj, const char* field) {
-    PyObject* v = PyObject_GetAttrString(obj, field);
-    if (v) return v;
-    if (!PyErr_ExceptionMatches(PyExc_AttributeError)) raise();
-    PyErr_Clear();
-    return nullptr;
-}
-
-// getattr(obj, field, fallback), `fallback` a new reference (released where not used).
-PyObject* attributeOr(PyObject* obj, const char* field, PyObject* fallback) {
-    PyObject* v = attribute(obj, field);
-    if (!v) return fallback;
-    Py_XDECREF(fallback);
-    return v;
-}
-PyObject* none() { return Py_NewRef(Py_None); }
-
-// num(v, default): float(v), or the default where float() raises TypeError or ValueError.
-double num(PyObject* v, double fallback) {
-    double d;
-    if (!pynum::floatOr(v, fallback, d)) raise();
-    return d;
-}
-
-// float(v), raising where float() does.
-double exact(PyObject* v) {
-    double d;
-    if (!pynum::floatOf(v, d)) raise();
-    return d;
-}
-
-// num(get(name, fallback), fallback)
-double field(PyObject* obj, const char* name, double fallback) {
-    PyObject* v = attribute(obj, name);
-    const double d = num(v, fallback);
-    Py_XDECREF(v);
-    return d;
-}
-
-using pglmath::V3;
-using pglmath::M3;
-using pglmath::normed;
-using pglmath::axisRotation;
-using pglmath::times;
-
-// tuple(v)[:3], each item by `read`, zeros after; how many there were in `n`.
-template <class Read>
-V3 upToThree(PyObject* v, Read read, Py_ssize_t& n) {
-    const Ref t(PySequence_Tuple(v));
-    n = std::min<Py_ssize_t>(3, PyTuple_GET_SIZE(t.p));
-    V3 out{0.0, 0.0, 0.0};
-    for (Py_ssize_t k = 0; k < n; ++k) out[size_t(k)] = read(PyTuple_GET_ITEM(t.p, k));
-    return out;
-}
-double num0(PyObject* x) { return num(x, 0); }
-
-// A point as the Python read it, (tuple(q) + (0.0, 0.0))[:3] each by num(x, 0): false where q
-// is empty (the Python's point was two zeros, which the drawing refuses).
-bool point(PyObject* q, V3& p) {
-    Py_ssize_t n = 0;
-    p = upToThree(q, num0, n);
-    return n > 0;
-}
-
-// A Box's size or a Scaled's scale: (num(v),) * 3 for what has no length, else num of
-// tuple(v)[:3] (`n` of them).
-V3 sizes(PyObject* v, double fallback, Py_ssize_t& n) {
-    if (!PyObject_HasAttrString(v, "__len__")) {
-        const double k = num(v, fallback);
-        n = 3;
-        return {k, k, k};
-    }
-    return upToThree(v, [fallback](PyObject* x) { return num(x, fallback); }, n);
-}
-
-// Vector3(*tuple(v)[:3]) (plantgl_vectors.py): float() of each, zeros after; one item with a
-// length is the vector's numbers itself.
-V3 vector3(PyObject* v) {
-    const Ref t(PySequence_Tuple(v));
-    Py_ssize_t n = 0;
-    if (PyTuple_GET_SIZE(t.p) == 1 && PyObject_HasAttrString(PyTuple_GET_ITEM(t.p, 0), "__len__"))
-        return upToThree(PyTuple_GET_ITEM(t.p, 0), exact, n);
-    return upToThree(t.p, exact, n);
-}
-
-// int(num(get(name, fallback), fallback)) clamped to [low, high]; Raises where int() does.
-long count(PyObject* obj, const char* name, double fallback, long low, long high) {
-    const double v = field(obj, name, fallback);
-    if (!std::isfinite(v)) raise();
-    return long(std::max(double(low), std::min(double(high), std::trunc(v))));
-}
+// [SECTION] Python's values, read as the Python meshing read them: meshing.hpp
 
 // [SECTION] Vectors and matrices (plantgl_vectors.py's arithmetic): vector_math.hpp
 
 // [SECTION] Meshes put together
-
-ShapeMesh mesh() { return ShapeMesh{ShapeMesh::Mesh, {}, {}, {}, {}}; }
-
-// The mesh, or Nothing where it has neither triangles nor segments.
-ShapeMesh result(ShapeMesh m) {
-    m.kind = m.triangles.empty() && m.segments.empty() ? ShapeMesh::Nothing : ShapeMesh::Mesh;
-    return m;
-}
 
 // `mesh`'s points (transformed), triangles and segments after the points so far.
 template <class Transform>
@@ -166,45 +46,25 @@ void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     if (to.texture.empty()) to.texture = mesh.texture;
     if (!mesh.uvs.empty() || !to.uvs.empty())  // and the texture coordinates (none: 0, 0)
         to.uvs.resize(size_t(base)), to.uvs.insert(to.uvs.end(), mesh.uvs.begin(), mesh.uvs.end()), to.uvs.resize(size_t(base) + mesh.points.size());
+    if (!mesh.sameNormal.empty() || !to.sameNormal.empty()) {  // and which share a normal (none: each its own)
+        for (long k = long(to.sameNormal.size()); k < base; ++k) to.sameNormal.push_back(k);
+        for (size_t k = 0; k < mesh.points.size(); ++k) to.sameNormal.push_back(base + (k < mesh.sameNormal.size() ? mesh.sameNormal[k] : long(k)));
+    }
+    // An index below 0 (a face set's, kept) reaches back into the meshes before, over their
+    // points as they were before copies were made (ShapeMesh::sameNormal): the copies skipped.
+    auto at = [&](long v) {
+        if (v >= 0 || to.sameNormal.empty()) return v + base;
+        long k = base, back = -v;
+        while (back > 0 && k > 0)
+            if (--k; to.sameNormal[size_t(k)] == k) --back;
+        return back == 0 ? k : -1;  // before the first point: refused, as it was
+    };
     for (const V3& p : mesh.points) to.points.push_back(f(p));
-    for (const auto& t : mesh.triangles) to.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-    for (const auto& s : mesh.segments) to.segments.push_back({s[0] + base, s[1] + base});
+    for (const auto& t : mesh.triangles) to.triangles.push_back({at(t[0]), at(t[1]), at(t[2])});
+    for (const auto& s : mesh.segments) to.segments.push_back({at(s[0]), at(s[1])});
 }
 void add(ShapeMesh& to, const ShapeMesh& mesh) {
     add(to, mesh, [](const V3& p) { return p; });
-}
-
-// Points (r cos, r sin, z) around the z axis, n of them.
-void ring(ShapeMesh& m, double r, double z, long n) {
-    for (long i = 0; i < n; ++i) {
-        const double a = 2 * M_PI * double(i) / double(n);
-        m.points.push_back({r * std::cos(a), r * std::sin(a), z});
-    }
-}
-
-// Rings of (radius, z) swept about z, and caps at the profile's entries `caps` (-1: the last).
-ShapeMesh tube(const std::vector<std::array<double, 2>>& profile, long n, std::initializer_list<int> caps) {
-    ShapeMesh m = mesh();
-    for (size_t j = 0; j < profile.size(); ++j) {
-        ring(m, profile[j][0], profile[j][1], n);
-        if (j) {
-            const long a = long(j - 1) * n, b = long(j) * n;
-            for (long i = 0; i < n; ++i) {
-                m.triangles.push_back({a + i, a + (i + 1) % n, b + (i + 1) % n});
-                m.triangles.push_back({a + i, b + (i + 1) % n, b + i});
-            }
-        }
-    }
-    for (int j : caps) {
-        const auto& [r, z] = profile[j >= 0 ? size_t(j) : profile.size() - 1];
-        if (r > 0) {
-            const long c = long(m.points.size());
-            m.points.push_back({0.0, 0.0, z});
-            const long first = j >= 0 ? j * n : long(profile.size() - 1) * n;
-            for (long i = 0; i < n; ++i) m.triangles.push_back({c, first + (i + 1) % n, first + i});
-        }
-    }
-    return m;
 }
 
 // The (n + 1)^2 points of a grid, i outer, as two triangles a cell.
@@ -298,72 +158,7 @@ ShapeMesh transformed(PyObject* obj, std::string_view name, int depth) {
     return result(std::move(m));
 }
 
-// [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc)
-
-// Six faces of two triangles, half sizes its size (or its first three arguments).
-ShapeMesh box(PyObject* obj) {
-    const Ref sv(attributeOr(obj, "size", Py_BuildValue("(ddd)", 0.5, 0.5, 0.5)));
-    const Ref args(own(PyObject_GetAttrString(obj, "args")));
-    const Py_ssize_t nargs = PyObject_Length(args.p);
-    if (nargs < 0) raise();
-    const Ref chosen(nargs >= 3 ? PySequence_GetSlice(args.p, 0, 3) : Py_NewRef(sv.p));
-    Py_ssize_t n = 0;
-    const V3 s = sizes(chosen.p, 0.5, n);
-    if (n < 3) raise();  // s[2]
-    ShapeMesh m = mesh();
-    for (int axis = 0; axis < 3; ++axis)
-        for (int sign : {-1, 1}) {
-            const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
-            const long base = long(m.points.size());
-            for (const auto& [du, dv] : {std::array<int, 2>{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-                V3 p{0.0, 0.0, 0.0};
-                p[size_t(axis)] = sign * s[size_t(axis)], p[size_t(u)] = du * s[size_t(u)], p[size_t(v)] = dv * s[size_t(v)];
-                m.points.push_back(p);
-            }
-            m.triangles.push_back({base, base + 1, base + 2});
-            m.triangles.push_back({base, base + 2, base + 3});
-        }
-    return m;
-}
-
-// The shapes of revolution about z, `slices` points a ring; empty (Nothing) for another name.
-ShapeMesh solid(PyObject* obj, std::string_view name, long slices) {
-    if (name == "Sphere") {
-        const double r = field(obj, "radius", 0.5);
-        const long stacks = count(obj, "stacks", 8, 2, 64);
-        std::vector<std::array<double, 2>> prof;
-        for (long i = 0; i <= stacks; ++i) {
-            const double a = M_PI * double(i) / double(stacks);
-            prof.push_back({r * std::sin(a), -r * std::cos(a)});
-        }
-        return tube(prof, slices, {});
-    }
-    if (name == "Cylinder" || name == "Cone" || name == "Frustum") {
-        const double r = field(obj, "radius", 0.5), h = field(obj, "height", 1);
-        const double top = name == "Cylinder" ? r : name == "Cone" ? 0.0 : r * field(obj, "taper", 0.5);
-        return tube({{r, 0.0}, {top, h}}, slices, {0, -1});
-    }
-    if (name == "Paraboloid") {
-        const double r = field(obj, "radius", 0.5), h = field(obj, "height", 1), given = field(obj, "shape", 2);
-        const double shape = given > 1e-3 ? given : 1e-3;  // max(1e-3, shape)
-        const long stacks = count(obj, "stacks", 8, 2, 64);
-        std::vector<std::array<double, 2>> prof;
-        for (long i = 0; i <= stacks; ++i) {
-            const double left = 1 - double(i) / double(stacks);
-            prof.push_back({r * std::pow(left > 0.0 ? left : 0.0, 1 / shape), h * double(i) / double(stacks)});
-        }
-        return tube(prof, slices, {0});
-    }
-    if (name == "Disc") {
-        const double r = field(obj, "radius", 0.5);
-        ShapeMesh m = mesh();
-        m.points.push_back({0.0, 0.0, 0.0});
-        ring(m, r, 0.0, slices);
-        for (long i = 0; i < slices; ++i) m.triangles.push_back({0, 1 + i, 1 + (i + 1) % slices});
-        return m;
-    }
-    return {};
-}
+// [SECTION] Solids (Box, Sphere, Cylinder, Cone, Frustum, Paraboloid, Disc): solids.cpp
 
 // [SECTION] Points, faces, curves and patches
 
@@ -575,10 +370,13 @@ ShapeMesh of(PyObject* obj, int depth) {
 }
 
 }  // namespace
+}  // namespace meshing
+
+using meshing::Raises;
 
 ShapeMesh shapeMesh(PyObject* obj) {
     try {
-        return of(obj, 0);
+        return meshing::of(obj, 0);
     } catch (Raises&) {
     } catch (py::error_already_set&) {
     } catch (std::exception&) {  // a patch's C++ refusing what the Python refused too
@@ -587,9 +385,28 @@ ShapeMesh shapeMesh(PyObject* obj) {
     return {};
 }
 
+ShapeMesh welded(const ShapeMesh& mesh) {
+    if (mesh.sameNormal.size() != mesh.points.size()) return mesh;
+    ShapeMesh out = mesh;
+    out.points.clear(), out.colours.clear(), out.uvs.clear(), out.sameNormal.clear();
+    out.triangles.clear(), out.segments.clear();
+    std::vector<long> index(mesh.points.size(), -1);
+    const long n = long(mesh.points.size());
+    for (long k = 0; k < n; ++k)
+        if (mesh.sameNormal[size_t(k)] == k || mesh.sameNormal[size_t(k)] < 0 || mesh.sameNormal[size_t(k)] >= n) {
+            index[size_t(k)] = long(out.points.size());
+            out.points.push_back(mesh.points[size_t(k)]);
+            if (mesh.colours.size() == mesh.points.size()) out.colours.push_back(mesh.colours[size_t(k)]);
+        }
+    auto at = [&](long k) { return k >= 0 && k < n ? index[size_t(index[size_t(k)] >= 0 ? k : mesh.sameNormal[size_t(k)])] : k; };
+    for (const auto& t : mesh.triangles) out.triangles.push_back({at(t[0]), at(t[1]), at(t[2])});
+    for (const auto& e : mesh.segments) out.segments.push_back({at(e[0]), at(e[1])});
+    return out;
+}
+
 ShapeMesh hullMesh(PyObject* shape) {
     try {
-        return hull(shape, true);
+        return meshing::hull(shape, true);
     } catch (Raises&) {
     } catch (std::exception&) {
     }

@@ -129,3 +129,19 @@ TEST(TexturedShapes, APolygonSpansTheImage) {
     const int all = n[Blue] + n[Yellow] + n[Red] + n[Green];
     for (Quarter q : {Blue, Yellow, Red, Green}) EXPECT_NEAR(double(n[q]) / all, 0.25, 0.05) << kNames[q];
 }
+
+// PlantGL's solids given to @g wear the image with the texture coordinates PlantGL's
+// Discretizer gives them: round a Sphere, a Cylinder and a Frustum, projected on a Cone and a
+// Disc, each face of a Box. Each shows at least three of the image's quarters.
+TEST(TexturedShapes, PlantglSolidsGivenToAtGWearTheImage) {
+    const char* solids[] = {"Sphere(1)", "Cylinder(0.6, 2)", "Frustum(0.6, 2, 0.5)", "Box(0.8, 0.8, 0.8)", "Cone(1, 1.5)", "Disc(1)"};
+    int k = 0;
+    for (const char* solid : solids) {
+        // Tilted towards the camera, so that a cone's and a disc's faces are seen.
+        const sprout::Image im = renderModel("solid" + std::to_string(k++) + ".lpy", lpyModel(",(1) &(60) /(30) @g(" + std::string(solid) + ")"));
+        const auto n = quartersIn(im, 0, im.height);
+        int kinds = 0;
+        for (Quarter q : {Blue, Yellow, Red, Green}) kinds += n[q] > 60;
+        EXPECT_GE(kinds, 3) << solid << ": " << n[Blue] << " blue, " << n[Yellow] << " yellow, " << n[Red] << " red, " << n[Green] << " green";
+    }
+}
