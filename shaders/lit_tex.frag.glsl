@@ -9,8 +9,9 @@ in vec4 vColour;
 in vec2 vUV;
 out vec4 fragColour;
 uniform sampler2D uImage;
+uniform float uTranslucent;  // 1: translucent triangles, blended by their alpha times the image's
 void main() {
     vec4 texel = texture(uImage, vec2(vUV.x, 1.0 - vUV.y));
     if (texel.a < 0.5) discard;
-    fragColour = vec4(shadeMaterial(vColour.rgb * texel.rgb, vWorld, vNormal, true), 1.0);
+    fragColour = vec4(shadeMaterial(vColour.rgb * texel.rgb, vWorld, vNormal, true), mix(1.0, vColour.a * texel.a, uTranslucent));
 }

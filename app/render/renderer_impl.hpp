@@ -167,6 +167,12 @@ struct Renderer::Impl {
     std::size_t translucentTris = 0;
     std::vector<std::uint32_t> translucentIndices;
     std::vector<glm::vec3> translucentCentres;
+    // Each translucent triangle's image (its first vertex's TexCoord::texture; 0: none), and
+    // the GL texture of each image id (imageTextures[id - 1]): a textured one is drawn with its
+    // image, in runs of the sorted order that share one.
+    std::vector<std::uint32_t> translucentImages;
+    std::vector<GLuint> imageTextures;
+    bool translucentTextured = false;
     GLuint translucentVao = 0, translucentEbo = 0, bakedDepthAlpha = 0;
     glm::vec3 eye{0.0f};  // the camera's, for the order of the translucent triangles
     void adoptTranslucent(const mesh::BakedMesh& baked, std::size_t count);
@@ -175,6 +181,8 @@ struct Renderer::Impl {
     void plainLight(GLuint program);
     void shineLight(GLuint program, const Shine& shine);
     void drawTranslucent(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
+    std::vector<std::uint32_t> sortedImages;  // translucentImages in the order drawn
+    void drawTranslucentTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     // The scene's textured triangles (PreparedScene::textured), before the translucent ones in
     // `baked`: each group with its image (a 1-pixel white one for an image that cannot be
     // read: the triangles in their colour), through a vertex array that adds their u, v from a

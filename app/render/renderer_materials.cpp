@@ -40,10 +40,14 @@ void Renderer::Impl::adoptTranslucent(const mesh::BakedMesh& b, std::size_t coun
     translucentTris = std::min(count, b.indices.size() / 3);
     translucentIndices.assign(b.indices.end() - std::ptrdiff_t(3 * translucentTris), b.indices.end());
     translucentCentres.resize(translucentTris);
+    translucentImages.assign(translucentTris, 0);
+    translucentTextured = false;
     for (std::size_t t = 0; t < translucentTris; ++t) {
         glm::vec3 c(0.0f);
         for (int k = 0; k < 3; ++k) c += b.vertices[translucentIndices[3 * t + std::size_t(k)]].position;
         translucentCentres[t] = c / 3.0f;
+        const std::uint32_t first = translucentIndices[3 * t];
+        if (first < b.texcoords.size() && b.texcoords[first].texture) translucentImages[t] = b.texcoords[first].texture, translucentTextured = true;
     }
     glBindVertexArray(translucentVao);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
@@ -65,7 +69,12 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
             for (std::size_t k = 0; k < 3; ++k) sorted[3 * t + k] = translucentIndices[3 * std::size_t(order[t]) + k];
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
         glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(sorted.size() * 4), sorted.data());
+        if (translucentTextured) {
+            sortedImages.resize(translucentTris);
+            for (std::size_t t = 0; t < order.size(); ++t) sortedImages[t] = translucentImages[order[t]];
+        }
     }
+    if (translucentTextured && !depth) return drawTranslucentTextured(viewProj, p, from, to);
     bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
     const GLuint program = depth ? bakedDepthAlpha : p;
     glUseProgram(program);
@@ -86,10 +95,49 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
     glBindVertexArray(0);
 }
 
+// The sorted translucent triangles [from, to) in runs of one image: the plain ones by
+// `program`, the textured ones by the textured program with their image, blended by their
+// alpha times the image's.
+void Renderer::Impl::drawTranslucentTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to) {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glActiveTexture(GL_TEXTURE0 + detail::kImageUnit);
+    for (std::size_t a = from; a < to && a < sortedImages.size();) {
+        std::size_t b = a + 1;
+        while (b < to && sortedImages[b] == sortedImages[a]) ++b;
+        const std::uint32_t image = sortedImages[a];
+        const GLuint prog = image ? texturedProgram : program;
+        glUseProgram(prog);
+        setUniform(prog, "uViewProj", viewProj);
+        plainLight(prog);
+        setUniform(prog, "uTranslucent", 1.0f);
+        glBindVertexArray(image ? texturedVao : translucentVao);
+        bakedAttributes(baked.vbo);
+        if (image) {
+            glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
+            glEnableVertexAttribArray(3);
+            glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 8, nullptr);
+            glBindTexture(GL_TEXTURE_2D, image <= imageTextures.size() && imageTextures[image - 1] ? imageTextures[image - 1] : whiteTexture);
+        }
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
+        glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - a)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * a * sizeof(std::uint32_t)));
+        setUniform(prog, "uTranslucent", 0.0f);
+        a = b;
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(0);
+}
+
 void Renderer::Impl::adoptTextured(const PreparedScene& p) {
     textured.clear();
+    imageTextures.clear();
     texturedTris = 0;
-    if (p.textured.empty()) return;
+    if (p.textured.empty() && !translucentTextured) return;
+    for (const std::string& path : p.textures) imageTextures.push_back(textureFor(path));
     std::vector<float> uv(2 * p.baked.vertices.size(), 0.0f);
     for (std::size_t k = 0; k < p.baked.texcoords.size() && k < p.baked.vertices.size(); ++k)
         uv[2 * k] = p.baked.texcoords[k].u, uv[2 * k + 1] = p.baked.texcoords[k].v;
@@ -97,7 +145,7 @@ void Renderer::Impl::adoptTextured(const PreparedScene& p) {
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(uv.size() * 4), uv.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     for (const mesh::TextureRange& r : p.textured) {
-        const GLuint t = r.texture >= 1 && r.texture <= p.textures.size() ? textureFor(p.textures[r.texture - 1]) : 0;
+        const GLuint t = r.texture >= 1 && r.texture <= imageTextures.size() ? imageTextures[r.texture - 1] : 0;
         textured.push_back({r.first, r.count, t ? t : whiteTexture});
         texturedTris += r.count;
     }

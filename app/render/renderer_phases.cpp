@@ -219,7 +219,7 @@ const std::size_t curveCount = p.curve && !p.sketch ? s.curveCount : 0;  // a cu
         const std::size_t a = std::max(from, curveCount) - curveCount, b = to - curveCount;
         const GLuint lit = p.plantShadows ? s.bakedProgram : p.vertexLit ? s.bakedVertexLitProgram : s.bakedPlainProgram;
         for (GLuint prog : {lit, s.lineProgram}) s.setLighting(prog, p.o, p.eye, p.lightViewProj, p.plantShadows, p.texel);
-        if (s.texturedTris) s.setLighting(s.texturedProgram, p.o, p.eye, p.lightViewProj, p.plantShadows, p.texel);
+        if (s.texturedTris || s.translucentTextured) s.setLighting(s.texturedProgram, p.o, p.eye, p.lightViewProj, p.plantShadows, p.texel);
         s.eye = p.eye;
         s.drawRange(p.viewProj, lit, a, b, p.stats, p.sketch, p.o.quickLines,
                     p.curve ? &p.o.curveInk : nullptr);

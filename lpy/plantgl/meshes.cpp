@@ -209,6 +209,64 @@ ShapeMesh pointSet(PyObject* obj) {
     return result(std::move(m));
 }
 
+// A texCoordList's (u, v) pairs; where one is not two numbers, none.
+std::vector<std::array<float, 2>> uvList(PyObject* list) {
+    std::vector<std::array<float, 2>> out;
+    const Py_ssize_t n = PyObject_Length(list);
+    for (Py_ssize_t k = 0; k < n; ++k) {
+        PyObject* q = PySequence_GetItem(list, k);
+        std::vector<double> c;
+        const bool ok = q && pynum::numbers(q, c) && c.size() >= 2;
+        Py_XDECREF(q);
+        if (!ok) return {};
+        out.push_back({float(std::clamp(c[0], -1e30, 1e30)), float(std::clamp(c[1], -1e30, 1e30))});  // (NaN: kept)
+    }
+    PyErr_Clear();
+    return out;
+}
+
+// A face set's texture coordinates by face (texCoordIndexList: each face's corners' entries in
+// `uvs`): each face's corners become copies of their points (sharing their normals) with their
+// own (u, v), the triangles on the copies. Where the lists do not match the faces, none.
+void cornerUvs(ShapeMesh& m, const std::vector<std::vector<long>>& faces, const std::vector<std::array<float, 2>>& uvs, PyObject* index) {
+    const Py_ssize_t nf = PyObject_Length(index);
+    if (nf != Py_ssize_t(faces.size())) return PyErr_Clear();
+    std::vector<std::vector<long>> corners;
+    for (Py_ssize_t k = 0; k < nf; ++k) {
+        PyObject* face = PySequence_GetItem(index, k);
+        std::vector<double> c;
+        const bool ok = face && pynum::numbers(face, c) && c.size() == faces[size_t(k)].size();
+        Py_XDECREF(face);
+        if (!ok) return PyErr_Clear();
+        corners.emplace_back();
+        for (double x : c) {
+            if (!(x >= 0 && x < double(uvs.size()))) return;
+            corners.back().push_back(long(x));
+        }
+    }
+    const long np = long(m.points.size());
+    m.uvs.assign(size_t(np), {0.0f, 0.0f});
+    m.sameNormal.resize(size_t(np));
+    for (long k = 0; k < np; ++k) m.sameNormal[size_t(k)] = k;
+    m.triangles.clear();
+    for (size_t k = 0; k < faces.size(); ++k) {
+        const std::vector<long>& f = faces[k];
+        std::vector<long> made(f.size(), -1);
+        auto copy = [&](size_t j) {  // corner j of face k, as a point of its own (once)
+            if (made[j] >= 0) return made[j];
+            m.points.push_back(m.points[size_t(f[j])]);
+            m.uvs.push_back(uvs[size_t(corners[k][j])]);
+            m.sameNormal.push_back(f[j]);
+            return made[j] = long(m.points.size()) - 1;
+        };
+        for (size_t j = 1; j + 1 < f.size(); ++j) {
+            if (std::max({f[0], f[j], f[j + 1]}) >= np) continue;
+            if (std::min({f[0], f[j], f[j + 1]}) < 0) m.triangles.push_back({f[0], f[j], f[j + 1]});  // refused, as it was
+            else m.triangles.push_back({copy(0), copy(j), copy(j + 1)});
+        }
+    }
+}
+
 // TriangleSet, QuadSet, FaceSet: each face a fan from its first point, the triangles whose
 // points are there (an index below 0 is kept: the drawing refuses it, as it did).
 ShapeMesh faceSet(PyObject* obj) {
@@ -223,6 +281,7 @@ ShapeMesh faceSet(PyObject* obj) {
     }
     const Ref faces(attributeOr(obj, "indexList", PyTuple_New(0)));
     const Ref fseq(PySequence_Fast(faces.p, "faces"));
+    std::vector<std::vector<long>> kept;
     for (Py_ssize_t k = 0; k < PySequence_Fast_GET_SIZE(fseq.p); ++k) {
         const Ref face(PySequence_Fast(PySequence_Fast_GET_ITEM(fseq.p, k), "face"));
         std::vector<long> f;
@@ -233,20 +292,14 @@ ShapeMesh faceSet(PyObject* obj) {
         }
         for (size_t j = 1; j + 1 < f.size(); ++j)
             if (std::max({f[0], f[j], f[j + 1]}) < long(m.points.size())) m.triangles.push_back({f[0], f[j], f[j + 1]});
+        kept.push_back(std::move(f));
     }
     if (m.triangles.empty()) return {};
     if (!whole) raise();  // a point of fewer than three numbers, refused by the drawing
     const Ref uv(attributeOr(obj, "texCoordList", none())), uvIndex(attributeOr(obj, "texCoordIndexList", none()));  // (u, v) a point
-    const Py_ssize_t nuv = uv.p != Py_None && uvIndex.p == Py_None ? PyObject_Length(uv.p) : -1;
-    for (Py_ssize_t k = 0; nuv == Py_ssize_t(m.points.size()) && k < nuv; ++k) {  // never a reason not to draw it
-        PyObject* q = PySequence_GetItem(uv.p, k);
-        std::vector<double> c;
-        const bool ok = q && pynum::numbers(q, c) && c.size() >= 2;
-        Py_XDECREF(q);
-        if (!ok) break;
-        m.uvs.push_back({float(std::clamp(c[0], -1e30, 1e30)), float(std::clamp(c[1], -1e30, 1e30))});  // (NaN: kept)
-    }
-    if (m.uvs.size() != m.points.size()) m.uvs.clear();  // (one by index, texCoordIndexList, is not read)
+    const std::vector<std::array<float, 2>> uvs = uv.p != Py_None ? uvList(uv.p) : std::vector<std::array<float, 2>>{};
+    if (uvIndex.p == Py_None && uvs.size() == m.points.size()) m.uvs = uvs;  // never a reason not to draw it
+    else if (uvIndex.p != Py_None && !uvs.empty()) cornerUvs(m, kept, uvs, uvIndex.p);
     PyErr_Clear();
     return result(std::move(m));
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -144,4 +145,66 @@ TEST(TexturedShapes, PlantglSolidsGivenToAtGWearTheImage) {
         for (Quarter q : {Blue, Yellow, Red, Green}) kinds += n[q] > 60;
         EXPECT_GE(kinds, 3) << solid << ": " << n[Blue] << " blue, " << n[Yellow] << " yellow, " << n[Red] << " red, " << n[Green] << " green";
     }
+}
+
+// A mesh's texture coordinates by face (texCoordIndexList): each face's corners take the
+// entries it names, whatever the points' order. The square's image turned half round by its
+// index list puts blue where green was, and red where yellow was.
+TEST(TexturedShapes, AMeshsTexCoordIndexListPlacesTheImageByFace) {
+    auto quadSet = [](const std::string& extra) {
+        return lpyModel(",(1) @g(QuadSet([(0, -1, -1), (0, 1, -1), (0, 1, 1), (0, -1, 1)], [(0, 1, 2, 3)], "
+                        "texCoordList=[(0, 0), (1, 0), (1, 1), (0, 1)]" + extra + "))");
+    };
+    const sprout::Image plain = renderModel("quadset.lpy", quadSet(""));
+    const sprout::Image turned = renderModel("quadset_indexed.lpy", quadSet(", texCoordIndexList=[(2, 3, 0, 1)]"));
+    auto near = [](std::array<double, 2> a, std::array<double, 2> b) { return std::hypot(a[0] - b[0], a[1] - b[1]) < 15; };
+    EXPECT_TRUE(near(centreOf(turned, Blue), centreOf(plain, Green)));
+    EXPECT_TRUE(near(centreOf(turned, Green), centreOf(plain, Blue)));
+    EXPECT_TRUE(near(centreOf(turned, Red), centreOf(plain, Yellow)));
+    EXPECT_FALSE(near(centreOf(plain, Blue), centreOf(plain, Green))) << "the quarters stand apart";
+}
+
+// A translucent textured polygon: its image blended by the material's transparency (its
+// quarters washed towards the sky's colour, in their places), and the stem behind it seen
+// through it (a darker band across the blue quarter).
+TEST(TexturedShapes, ATranslucentTexturedPolygonShowsItsImageAndWhatIsBehind) {
+    const sprout::Image im = renderModel("glass.lsys",
+                                         "material: 1 #ffffff transparency 0.5 texture quarters.png\nmaterial: 2 #804020\nwidth: 0.3\nn: 0\n"
+                                         "axiom: ;(2) [ +(90) f(0.75) -(90) f(-1) F(4) ] "
+                                         "[ &(90) f(-2) ^(90) +(90) f(1.5) -(90) ;(1) {. f(3) . -(90) f(3) . -(90) f(3) . -(90) f(3) .} ]\n");
+    auto rgb = [&](int x, int y) {
+        const std::size_t k = (std::size_t(y) * std::size_t(im.width) + std::size_t(x)) * 4;
+        return std::array<int, 3>{im.rgba[k], im.rgba[k + 1], im.rgba[k + 2]};
+    };
+    auto washed = [&](int x, int y) {  // the quarter a pale pixel leans to
+        const auto [r, g, b] = rgb(x, y);
+        if (b > r + 40 && b > g + 40) return Blue;
+        if (r > g + 40 && r > b + 30) return Red;
+        if (g > r + 40 && g > b + 40) return Green;
+        if (r > b + 40 && g > b + 40) return Yellow;
+        return None;
+    };
+    std::array<double, 2> centre[4]{};
+    double n[4] = {0, 0, 0, 0};
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x)
+            if (const Quarter q = washed(x, y); q != None) centre[q][0] += x, centre[q][1] += y, ++n[q];
+    for (int q = 0; q < 4; ++q) {
+        ASSERT_GT(n[q], 300) << kNames[q] << " is seen through the glass's transparency";
+        centre[q][0] /= n[q], centre[q][1] /= n[q];
+    }
+    EXPECT_LT(centre[Blue][0] + 40, centre[Yellow][0]);
+    EXPECT_LT(centre[Red][0] + 40, centre[Green][0]);
+    EXPECT_GT(centre[Blue][1], centre[Red][1] + 40);
+    // Across the blue quarter's rows: the stem behind shows as a darker band.
+    auto brightness = [&](int x, int y) {
+        const auto [r, g, b] = rgb(x, y);
+        return r + g + b;
+    };
+    const int y = int(centre[Blue][1]);
+    int darkest = 1000, x0 = 0;
+    for (int x = int(centre[Blue][0]) - 30; x <= int(centre[Blue][0]) + 30; ++x)
+        if (brightness(x, y) < darkest) darkest = brightness(x, y), x0 = x;
+    EXPECT_LT(darkest + 60, brightness(x0 - 20, y)) << "the stem seen through the glass";
+    EXPECT_EQ(washed(x0 - 20, y), Blue) << "beside it the glass's blue";
 }
