@@ -309,3 +309,36 @@ TEST(VlabPicture, ATubesTextureKeepsCpfgsProportions) {
     EXPECT_GE(one, 4) << "8 units long, 0.5 wide: the image about 5 times along, two bands each";
     EXPECT_GT(half, one * 3 / 2) << one << " bands at R: 1, " << half << " at R: 0.5";
 }
+
+// After @Tx(n) cpfg textures the stems (as its tubes, the image's proportions kept) and the
+// polygons (spread over the outline: the left half of the image left, the right half right).
+TEST(VlabPicture, StemsAndPolygonsAfterTxWearTheTexture) {
+    Object o("vlab_stem_texture");
+    // SGI, 4 x 4, three channels: the top half red, the bottom half blue.
+    std::string sgi(512, char(0));
+    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
+    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
+    sgi[3] = 1;
+    for (int channel = 0; channel < 3; ++channel)
+        for (int y = 0; y < 4; ++y)  // the file's rows bottom first
+            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && y >= 2) || (channel == 2 && y < 2) ? 255 : 0);
+    o.write("halves.rgb", sgi);
+    o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
+    o.write("plant.v", kView + "texture: F: halves.rgb E: m R: 1\n");
+    o.cpfg("cpfg -m plant.map plant.l plant.v");
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: #(0.5) ;(5) @Tx(1) F(2) F(2) F(2) F(2)\nendlsystem\n");
+    const sprout::Image stem = o.render("--size 240x320");
+    int changes = 0, last = 0;
+    for (int y = 0; y < stem.height; ++y) {
+        const std::uint8_t* p = &stem.rgba[(size_t(y) * size_t(stem.width) + size_t(stem.width / 2)) * 4];
+        const int now = red(p) ? 1 : blue(p) ? 2 : 0;
+        if (now && now != last) ++changes, last = now;
+    }
+    EXPECT_GE(changes, 4) << "the image's bands along the stems, as along a tube of their width";
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: ;(5) @Tx(1) {. f(2) . +(90) f(2) . +(90) f(2) . +(90) f(2) .}\nendlsystem\n");
+    const sprout::Image square = o.render();
+    EXPECT_GT(count(square, red), 1000) << "the image's top half on the polygon";
+    EXPECT_GT(count(square, blue), 1000) << "and its bottom half";
+    o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: ;(5) {. f(2) . +(90) f(2) . +(90) f(2) . +(90) f(2) .}\nendlsystem\n");
+    EXPECT_EQ(count(o.render(), red), 0) << "no @Tx: the polygon in its colour";
+}
