@@ -9,6 +9,11 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
+// sin(a) for a in [0, pi], never below 0: a float pi's sine is -8.7e-8, and its fractional
+// power was NaN, which made every leaf's and petal's tip NaN (their last row of cells not
+// drawn, NaN in the exports).
+float sinAbove0(float a) { return std::max(0.0f, std::sin(a)); }
+
 // A blade along +y (0..1) whose half-width follows `width(t)`, lifted by `lift(t, u)` with u
 // the distance from the midrib (0..1); normals from the surface's partial derivatives.
 template <class Width, class Lift>
@@ -45,14 +50,14 @@ SurfaceMesh makeLeaf(int along, int across) {
     // An ovate leaf, widest below the middle, with a V-fold along the midrib and a tip that
     // curls slightly down.
     return blade(
-        along, across, [](float t) { return 0.32f * std::pow(std::sin(kPi * std::pow(t, 0.8f)), 0.9f); },
+        along, across, [](float t) { return 0.32f * std::pow(sinAbove0(kPi * std::pow(t, 0.8f)), 0.9f); },
         [](float t, float u) { return 0.06f * u - 0.08f * t * t; });
 }
 
 SurfaceMesh makePetal(int along, int across) {
     // A rounded petal, narrow at the base, cupped upwards.
     return blade(
-        along, across, [](float t) { return 0.42f * std::pow(std::sin(kPi * (0.15f + 0.85f * t)), 0.6f) * std::min(1.0f, t * 4 + 0.2f); },
+        along, across, [](float t) { return 0.42f * std::pow(sinAbove0(kPi * (0.15f + 0.85f * t)), 0.6f) * std::min(1.0f, t * 4 + 0.2f); },
         [](float t, float u) { return 0.18f * t * t + 0.08f * u * u; });
 }
 

@@ -1,10 +1,12 @@
 // The 3D turtle: exact geometry for small strings, stacks, polygons, tropism, jitter.
 #include <gtest/gtest.h>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/turtle/turtle.hpp"
+#include "core/turtle/unit_surfaces.hpp"
 #include "same_drawing.hpp"
 #include "test_util.hpp"
 
@@ -473,3 +475,22 @@ TEST(TreeTurtle, OnlyExactStepsOfD0LGrammarsAreDrawnFromTheTree) {
 
 }  // namespace
 }  // namespace sprout::test
+
+// The predefined surfaces' unit meshes are finite everywhere, their tips too (a float pi's
+// sine below 0 raised to a fraction made every leaf's and petal's tip NaN), and their texture
+// coordinates one a point.
+TEST(Turtle, TheUnitLeafPetalAndSphereAreFinite) {
+    const sprout::SurfaceMesh meshes[] = {sprout::makeLeaf(), sprout::makeLeaf(3, 1), sprout::makePetal(), sprout::makePetal(3, 2),
+                                          sprout::makeSphere(16, 10), sprout::makeSphere(6, 2)};
+    for (const sprout::SurfaceMesh& m : meshes) {
+        ASSERT_EQ(m.uvs.size(), m.positions.size());
+        for (size_t k = 0; k < m.positions.size(); ++k) {
+            const glm::vec3& p = m.positions[k];
+            EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) << "point " << k;
+            EXPECT_NEAR(glm::length(m.normals[k]), 1.0f, 1e-4f) << "normal " << k;
+        }
+    }
+    const sprout::SurfaceMesh leaf = sprout::makeLeaf();
+    EXPECT_FLOAT_EQ(leaf.positions.back().y, 1.0f) << "the tip at the leaf's length";
+    EXPECT_FLOAT_EQ(leaf.uvs.back()[1], 1.0f);
+}
