@@ -31,7 +31,7 @@ cmake --build build-fuzz -j"$jobs"
 shared=../shared/corpus
 seeds() {  # the seed corpus of one target: directories libFuzzer reads (recursively)
   case "$1" in
-    parser|derive|turtle) echo presets tests/bad-input tests/extreme tests/notation fuzz/seeds/environment fuzz/regressions/"$1" ;;
+    parser|derive|turtle) echo presets tests/bad-input tests/extreme tests/notation fuzz/seeds/environment fuzz/seeds/drawing fuzz/regressions/"$1" ;;
     expr) echo fuzz/seeds/expr fuzz/regressions/expr ;;
     lparser) echo tests/data/seed001 fuzz/regressions/lparser; [ -d "$shared/lparser" ] && echo "$shared/lparser" ;;
     fractint) echo fuzz/seeds/fractint fuzz/regressions/fractint; [ -d "$shared" ] && echo "$shared" ;;
