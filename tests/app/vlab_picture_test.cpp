@@ -238,6 +238,22 @@ TEST(VlabPicture, EveryManualObjectDraws) {
     EXPECT_EQ(drawn, int(objects.size())) << failures;
 }
 
+// An SGI image (VLab's .rgb), 4 x 4, three channels, verbatim: red on one half, blue on the
+// other; `topBottom`: the top half red, else the left half.
+std::string halvesSgi(bool topBottom) {
+    std::string sgi(512, char(0));
+    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
+    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
+    sgi[3] = 1;
+    for (int channel = 0; channel < 3; ++channel)
+        for (int y = 0; y < 4; ++y)  // the file's rows bottom first
+            for (int x = 0; x < 4; ++x) {
+                const bool red = topBottom ? y >= 2 : x < 2;
+                sgi += char((channel == 0 && red) || (channel == 2 && !red) ? 255 : 0);
+            }
+    return sgi;
+}
+
 }  // namespace
 
 // A VLab object's texture (issue 53): its view file's `texture: F: FILE` lines, chosen by
@@ -253,15 +269,7 @@ TEST(VlabPicture, ATextureLiesOnTheSurfacesAfterTx) {
         patch += "\n";
     }
     o.write("square.s", patch);
-    // SGI, 4 x 4, three channels, verbatim: the left half red, the right half blue.
-    std::string sgi(512, char(0));
-    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
-    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
-    sgi[3] = 1;
-    for (int channel = 0; channel < 3; ++channel)
-        for (int y = 0; y < 4; ++y)
-            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && x < 2) || (channel == 2 && x >= 2) ? 255 : 0);
-    o.write("halves.rgb", sgi);
+    o.write("halves.rgb", halvesSgi(false));  // the left half red, the right half blue
     o.write("plant.v", kView + "surface: l square.s 1\ntexture: F: halves.rgb E: m S:\n");
     o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
     o.cpfg("cpfg -m plant.map plant.l plant.v");
@@ -281,15 +289,7 @@ TEST(VlabPicture, ATextureLiesOnTheSurfacesAfterTx) {
 // as often along the same tube.
 TEST(VlabPicture, ATubesTextureKeepsCpfgsProportions) {
     Object o("vlab_tube_texture");
-    // SGI, 4 x 4, three channels: the top half red, the bottom half blue.
-    std::string sgi(512, char(0));
-    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
-    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
-    sgi[3] = 1;
-    for (int channel = 0; channel < 3; ++channel)
-        for (int y = 0; y < 4; ++y)  // the file's rows bottom first
-            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && y >= 2) || (channel == 2 && y < 2) ? 255 : 0);
-    o.write("halves.rgb", sgi);
+    o.write("halves.rgb", halvesSgi(true));  // the top half red, the bottom half blue
     o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
     o.cpfg("cpfg -m plant.map plant.l plant.v");
     o.write("plant.l", "Lsystem: 1\nderivation length: 0\nAxiom: #(0.5) ;(5) @Tx(1) @Gs F(2) F(2) F(2) F(2) @Ge\nendlsystem\n");
@@ -314,15 +314,7 @@ TEST(VlabPicture, ATubesTextureKeepsCpfgsProportions) {
 // polygons (spread over the outline: the left half of the image left, the right half right).
 TEST(VlabPicture, StemsAndPolygonsAfterTxWearTheTexture) {
     Object o("vlab_stem_texture");
-    // SGI, 4 x 4, three channels: the top half red, the bottom half blue.
-    std::string sgi(512, char(0));
-    const int header[][2] = {{0, 474}, {4, 3}, {6, 4}, {8, 4}, {10, 3}};
-    for (auto [at, v] : header) sgi[size_t(at)] = char(v >> 8), sgi[size_t(at) + 1] = char(v & 0xFF);
-    sgi[3] = 1;
-    for (int channel = 0; channel < 3; ++channel)
-        for (int y = 0; y < 4; ++y)  // the file's rows bottom first
-            for (int x = 0; x < 4; ++x) sgi += char((channel == 0 && y >= 2) || (channel == 2 && y < 2) ? 255 : 0);
-    o.write("halves.rgb", sgi);
+    o.write("halves.rgb", halvesSgi(true));  // the top half red, the bottom half blue
     o.write("plant.map", colourMap(0x000000, 0xFFFFFF));
     o.write("plant.v", kView + "texture: F: halves.rgb E: m R: 1\n");
     o.cpfg("cpfg -m plant.map plant.l plant.v");
