@@ -74,6 +74,7 @@ void Turtle::polygonTexcoords(const State& t, const Frame& at, std::uint32_t bas
 }
 
 void Turtle::drawTextured() {
+    if (m_out.planarCurve) m_texturedStems.clear();  // a flat curve's stems stay its ink
     if (m_texturedStems.empty() && m_texturedSurfaces.empty()) return;
     Mesh& m = m_out.polygons;
     // Stems: open tubes as PlantGL's cylinders are, u round from U towards -L, v along.
