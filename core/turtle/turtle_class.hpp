@@ -320,6 +320,7 @@ private:
         glm::vec3 left{0};        // a stem's turtle L: where u starts round it
     };
     std::vector<Textured> m_texturedStems, m_texturedSurfaces;
+    std::size_t textured() const { return m_texturedStems.size() + m_texturedSurfaces.size(); }
     [[gnu::noinline]] void noteTexturedStem(State& t, float len);
     [[gnu::noinline]] void noteTexturedSurface(const State& t);
     void drawTextured();

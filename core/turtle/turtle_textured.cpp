@@ -15,6 +15,10 @@ namespace turtle_impl {
 namespace {
 
 constexpr int kStemSides = 16;
+// At most this many stems and surfaces are made textured triangles (a stem's are 3.5 KB, a
+// leaf's 5.4 KB, against an instance's 40 or 48 bytes): the rest keep their colour, so that a
+// textured plant of millions of stems costs no more memory than the instances predicted.
+constexpr std::size_t kMaxTextured = 40'000;
 
 // The instances not noted in `noted` (by index, increasing), kept in order; their modules too.
 template <class Buffer, class Noted>
@@ -40,7 +44,7 @@ void dropNoted(Buffer& items, const std::vector<Noted>& noted, std::vector<std::
 // it in the same colour (PlantGL's axial length, kept in pos[3]).
 void Turtle::noteTexturedStem(State& t, float len) {
     const std::uint32_t image = textureOf(t);
-    if (!image || m_level || !m_opt.meshes || m_opt.ages || !(len > 0)) return;
+    if (!image || m_level || !m_opt.meshes || m_opt.ages || !(len > 0) || textured() >= kMaxTextured) return;
     const float v0 = t.pos[3];
     t.pos[3] = v0 + len;
     m_texturedStems.push_back({std::uint32_t(m_seg->count() - 1), image, t.texture, v0, v0 + len, toGlm(t.L)});
@@ -48,7 +52,7 @@ void Turtle::noteTexturedStem(State& t, float len) {
 
 void Turtle::noteTexturedSurface(const State& t) {
     const std::uint32_t image = textureOf(t);
-    if (!image || m_level || !m_opt.meshes || m_opt.ages) return;
+    if (!image || m_level || !m_opt.meshes || m_opt.ages || textured() >= kMaxTextured) return;
     m_texturedSurfaces.push_back({std::uint32_t(m_out.surfaces.size() - 1), image, t.texture});
 }
 

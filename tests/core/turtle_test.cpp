@@ -494,3 +494,21 @@ TEST(Turtle, TheUnitLeafPetalAndSphereAreFinite) {
     EXPECT_FLOAT_EQ(leaf.positions.back().y, 1.0f) << "the tip at the leaf's length";
     EXPECT_FLOAT_EQ(leaf.uvs.back()[1], 1.0f);
 }
+
+namespace sprout::test {
+// A textured stem, leaf or sphere is drawn as triangles with texture coordinates, taken out
+// of the instances; the first 40,000 of a drawing only (a stem's triangles take a hundred
+// times its instance's memory): the rest stay instances in their colour.
+TEST(Turtle, TexturedStemsAreTrianglesUpToTheirLimit) {
+    const std::string head = "material: 1 #ffffff texture bark.png\nwidth: 0.1\naxiom: ;(1) F ~l(1) @O(0.5)\nF -> FF\n";
+    const Geometry few = draw(head + "n: 3\n");
+    EXPECT_EQ(few.cylinders.size(), 0u) << "every stem textured";
+    EXPECT_EQ(few.surfaces.size(), 0u) << "the leaf and the sphere too";
+    ASSERT_EQ(few.textures.size(), 1u);
+    EXPECT_EQ(few.polygons.texcoords.size(), few.polygons.positions.size());
+    for (const TexCoord& c : few.polygons.texcoords) EXPECT_EQ(c.texture, 1u);
+    const Geometry many = draw(head + "n: 16\n");  // 65,536 stems
+    EXPECT_EQ(many.cylinders.size(), 65536u - 40000u) << "those after the first 40,000 stay instances";
+    EXPECT_EQ(many.surfaces.size(), 2u);
+}
+}  // namespace sprout::test
