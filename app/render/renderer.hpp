@@ -69,6 +69,10 @@ struct PreparedScene {
     // The translucent triangles (a vertex's alpha below 255: a material's transparency), last
     // in baked.indices in the order they came: drawn after the rest, back to front, blended.
     std::size_t translucent = 0;
+    // The first triangles that are closed stems (tubes with their caps, wound outwards): drawn
+    // with back faces culled, which no view of a closed tube shows (half of a stem's triangles
+    // on a software rasteriser, the picture the same). 0: none culled.
+    std::size_t closedStems = 0;
     // The opaque triangles of shining materials (Geometry::shines), grouped after the others.
     std::vector<mesh::ShineRange> shines;
     // The opaque triangles with an image (Geometry::textures, baked.texcoords), grouped by image

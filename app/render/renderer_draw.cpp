@@ -189,6 +189,13 @@ void Renderer::Impl::drawRange(const glm::mat4& viewProj, GLuint p, std::size_t 
                 plainLight(p);
                 at = r1;
             }
+            if (!moving && at < std::min(end, closedStems)) {  // closed stems: their back faces are never seen
+                const std::size_t cut = std::min(end, closedStems);
+                glEnable(GL_CULL_FACE);
+                glDrawElements(GL_TRIANGLES, GLsizei(3 * (cut - at)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * at * sizeof(std::uint32_t)));
+                glDisable(GL_CULL_FACE);
+                at = cut;
+            }
             if (end > at)
                 glDrawElements(GL_TRIANGLES, GLsizei(3 * (end - at)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * at * sizeof(std::uint32_t)));
         }

@@ -165,6 +165,7 @@ struct Renderer::Impl {
     // opaque cast shadows (bakedDepthAlpha), in any order.
     std::vector<mesh::ShineRange> shines;  // PreparedScene::shines, drawn with their light's uniforms
     std::size_t translucentTris = 0;
+    std::size_t closedStems = 0;  // PreparedScene::closedStems: the first triangles, drawn culled
     std::vector<std::uint32_t> translucentIndices;
     std::vector<glm::vec3> translucentCentres;
     // Each translucent triangle's image (its first vertex's TexCoord::texture; 0: none), and

@@ -115,10 +115,11 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
         };
         CylinderInstance run{};
         int runLevel = -1;
+        mesh::BakedMesh open;  // the prisms (open tubes), after the closed stems
         auto emit = [&] {
             if (runLevel < 0) return;
             if (runLevel < 3) {
-                mesh::bakeCylinder(run, meshes.stems[runLevel], b);
+                mesh::bakeCylinder(run, meshes.stems[runLevel], runLevel == 2 ? open : b);
             } else {
                 appendLine(out.lines, run.start, run.end, run.colour);
             }
@@ -136,6 +137,10 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
             runLevel = l;
         }
         emit();
+        out.closedStems = b.indices.size() / 3;
+        const std::uint32_t base = std::uint32_t(b.vertices.size());
+        b.vertices.insert(b.vertices.end(), open.vertices.begin(), open.vertices.end());
+        for (std::uint32_t i : open.indices) b.indices.push_back(base + i);
     }
     // Small spheres (seeds, buds) get a coarse mesh; they cover a few pixels.
     const int c = std::clamp(coarseness, 0, 2) - 1;  // the coarse meshes' index; -1: full
@@ -154,6 +159,9 @@ void Renderer::prepare(const Geometry& g, Quality detail, PreparedScene& out, st
     for (const mesh::TextureRange& r : out.textured) plain -= r.count;
     out.textures = g.textures;
     out.shines = mesh::groupShines(b, plain, g.shines);
+    // The closed stems stay the first triangles unless translucent or shining ones were moved
+    // (stems among them): else none are culled.
+    if (out.translucent || !out.shines.empty()) out.closedStems = 0;
 }
 
 namespace {

@@ -72,6 +72,7 @@ void Renderer::adopt(const PreparedScene& p) {
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
     s.bakedIndices = p.baked.indices.size();
     s.adoptTranslucent(p.baked, p.translucent);
+    s.closedStems = p.closedStems;
     s.adoptTextured(p);
     s.shines = p.shines;
     s.lineCount = p.lines.size() / 8;
