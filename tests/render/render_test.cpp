@@ -8,6 +8,7 @@
 #include <fstream>
 #include <set>
 #include <thread>
+#include <glm/geometric.hpp>
 
 #include "app/cli/load.hpp"
 #include "app/headless.hpp"
@@ -1005,4 +1006,50 @@ TEST(Render, PngRoundTripKeepsPixelsAndText) {
 }
 
 }  // namespace
+}  // namespace sprout
+
+namespace sprout {
+// The closed stems (tubes with their caps) come first in the bake, wound outwards, and are drawn
+// with their back faces culled: every one of their triangles faces the way its corners' normals
+// do (a stem wound inwards would vanish), and the picture is the one drawn without culling but
+// for pixels where two stems meet at the same depth. A translucent scene, regrouped, culls none.
+TEST(Render, ClosedStemsAreWoundOutwardsAndDrawnCulledAsTheyLook) {
+    Geometry geometry;
+    render::PreparedScene scene;
+    ASSERT_TRUE(preparePlant(grammarOf("angle: 25\nwidth: 0.3\naxiom: F\nF -> F[+F]F[-F]F\n"), 3, render::Quality::Still, geometry, scene));
+    ASSERT_GT(scene.closedStems, 100u);
+    ASSERT_LE(3 * scene.closedStems, scene.baked.indices.size());
+    int inwards = 0;
+    for (std::size_t t = 0; t < scene.closedStems; ++t) {
+        const mesh::BakedVertex* v[3];
+        for (int k = 0; k < 3; ++k) v[k] = &scene.baked.vertices[scene.baked.indices[3 * t + std::size_t(k)]];
+        const glm::vec3 face = glm::cross(v[1]->position - v[0]->position, v[2]->position - v[0]->position);
+        if (glm::length(face) > 1e-12f && glm::dot(face, v[0]->normal + v[1]->normal + v[2]->normal) < 0) ++inwards;
+    }
+    EXPECT_EQ(inwards, 0) << "of " << scene.closedStems << " closed stems' triangles";
+    auto headless = headlessRenderer();
+    ASSERT_TRUE(headless);
+    SnapshotOptions o = plain();
+    o.width = kW, o.height = kH;
+    const render::Camera camera = snapshotCamera(geometry, o);
+    headless->renderer.upload(scene);
+    const std::vector<std::uint8_t> culled = headless->renderer.renderImage(camera, kW, kH, o.render);
+    render::PreparedScene uncut = scene;
+    uncut.closedStems = 0;
+    headless->renderer.upload(uncut);
+    const std::vector<std::uint8_t> whole = headless->renderer.renderImage(camera, kW, kH, o.render);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i + 3 < whole.size(); i += 4)
+        differ += std::abs(int(culled[i]) - int(whole[i])) + std::abs(int(culled[i + 1]) - int(whole[i + 1])) +
+                      std::abs(int(culled[i + 2]) - int(whole[i + 2])) > 24;
+    EXPECT_LT(differ, std::size_t(kW * kH / 1000)) << "pixels differ with the back faces culled";
+    const PlantPixels p = plantPixels(culled, whole, emptyScene(o));
+    EXPECT_GT(p.inWhole, kW * kH / 50) << "the plant is drawn";
+
+    Geometry glassy;
+    render::PreparedScene translucent;
+    ASSERT_TRUE(preparePlant(grammarOf("palette: #6b4a2e80\naxiom: ;(0) F[+F]F\n"), 0, render::Quality::Still, glassy, translucent));
+    EXPECT_GT(translucent.translucent, 0u);
+    EXPECT_EQ(translucent.closedStems, 0u) << "regrouped: none culled";
+}
 }  // namespace sprout
