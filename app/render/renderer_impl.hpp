@@ -183,7 +183,7 @@ struct Renderer::Impl {
     void shineLight(GLuint program, const Shine& shine);
     void drawTranslucent(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     std::vector<std::uint32_t> sortedImages;  // translucentImages in the order drawn
-    void drawTranslucentTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
+    void drawTranslucentRuns(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
     // The scene's textured triangles (PreparedScene::textured), before the translucent ones in
     // `baked`: each group with its image (a 1-pixel white one for an image that cannot be
     // read: the triangles in their colour), through a vertex array that adds their u, v from a
@@ -205,6 +205,7 @@ struct Renderer::Impl {
     void adoptTextured(const PreparedScene& p);
     GLuint textureFor(const std::string& path);
     void drawTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to);
+    void texturedAttributes();
     // A big curve's raster made on a thread for a progressive draw, and its time.
     struct Raster {
         std::vector<std::uint8_t> coverage;

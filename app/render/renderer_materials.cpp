@@ -49,6 +49,7 @@ void Renderer::Impl::adoptTranslucent(const mesh::BakedMesh& b, std::size_t coun
         const std::uint32_t first = translucentIndices[3 * t];
         if (first < b.texcoords.size() && b.texcoords[first].texture) translucentImages[t] = b.texcoords[first].texture, translucentTextured = true;
     }
+    sortedImages = translucentImages;  // the index buffer's order until a picture sorts them
     glBindVertexArray(translucentVao);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(translucentIndices.size() * 4), translucentIndices.data(), GL_DYNAMIC_DRAW);
@@ -69,36 +70,20 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
             for (std::size_t k = 0; k < 3; ++k) sorted[3 * t + k] = translucentIndices[3 * std::size_t(order[t]) + k];
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
         glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(sorted.size() * 4), sorted.data());
-        if (translucentTextured) {
-            sortedImages.resize(translucentTris);
-            for (std::size_t t = 0; t < order.size(); ++t) sortedImages[t] = translucentImages[order[t]];
-        }
+        for (std::size_t t = 0; t < order.size(); ++t) sortedImages[t] = translucentImages[order[t]];
     }
-    if (translucentTextured && !depth) return drawTranslucentTextured(viewProj, p, from, to);
+    if (!depth) return drawTranslucentRuns(viewProj, p, from, to);
     bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
-    const GLuint program = depth ? bakedDepthAlpha : p;
-    glUseProgram(program);
-    setUniform(program, "uViewProj", viewProj);
-    if (!depth) {
-        plainLight(program);
-        setUniform(program, "uTranslucent", 1.0f);
-        glEnable(GL_BLEND);
-        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        glDepthMask(GL_FALSE);
-    }
+    glUseProgram(bakedDepthAlpha);
+    setUniform(bakedDepthAlpha, "uViewProj", viewProj);
     glDrawElements(GL_TRIANGLES, GLsizei(3 * (to - from)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * from * sizeof(std::uint32_t)));
-    if (!depth) {
-        setUniform(program, "uTranslucent", 0.0f);
-        glDisable(GL_BLEND);
-        glDepthMask(GL_TRUE);
-    }
     glBindVertexArray(0);
 }
 
-// The sorted translucent triangles [from, to) in runs of one image: the plain ones by
-// `program`, the textured ones by the textured program with their image, blended by their
-// alpha times the image's.
-void Renderer::Impl::drawTranslucentTextured(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to) {
+// The sorted translucent triangles [from, to) in runs of one image (one run when none has
+// an image): the plain ones by `program`, the textured ones by the textured program with
+// their image; blended by their alpha (times the image's), without writing depth.
+void Renderer::Impl::drawTranslucentRuns(const glm::mat4& viewProj, GLuint program, std::size_t from, std::size_t to) {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);
@@ -112,13 +97,12 @@ void Renderer::Impl::drawTranslucentTextured(const glm::mat4& viewProj, GLuint p
         setUniform(prog, "uViewProj", viewProj);
         plainLight(prog);
         setUniform(prog, "uTranslucent", 1.0f);
-        glBindVertexArray(image ? texturedVao : translucentVao);
-        bakedAttributes(baked.vbo);
         if (image) {
-            glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
-            glEnableVertexAttribArray(3);
-            glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 8, nullptr);
+            texturedAttributes();
             glBindTexture(GL_TEXTURE_2D, image <= imageTextures.size() && imageTextures[image - 1] ? imageTextures[image - 1] : whiteTexture);
+        } else {
+            glBindVertexArray(translucentVao);
+            bakedAttributes(baked.vbo);
         }
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
         glDrawElements(GL_TRIANGLES, GLsizei(3 * (b - a)), GL_UNSIGNED_INT, reinterpret_cast<const void*>(3 * a * sizeof(std::uint32_t)));
@@ -176,6 +160,16 @@ GLuint Renderer::Impl::textureFor(const std::string& path) {
     return o.texture;
 }
 
+// The textured vertex array bound: the scene's vertices (its buffers swap with a staged
+// upload) and their u, v.
+void Renderer::Impl::texturedAttributes() {
+    glBindVertexArray(texturedVao);
+    bakedAttributes(baked.vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 8, nullptr);
+}
+
 std::vector<std::string> Renderer::takeTextureProblems() { return std::exchange(m->textureProblems, {}); }
 
 void Renderer::Impl::drawTextured(const glm::mat4& viewProj, GLuint p, std::size_t from, std::size_t to) {
@@ -183,11 +177,7 @@ void Renderer::Impl::drawTextured(const glm::mat4& viewProj, GLuint p, std::size
     const GLuint program = depth ? texturedDepth : texturedProgram;
     glUseProgram(program);
     setUniform(program, "uViewProj", viewProj);
-    glBindVertexArray(texturedVao);
-    bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
-    glBindBuffer(GL_ARRAY_BUFFER, texturedUvs);
-    glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 8, nullptr);
+    texturedAttributes();
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, baked.ebo);
     glActiveTexture(GL_TEXTURE0 + detail::kImageUnit);
     for (const TexturedDraw& r : textured) {

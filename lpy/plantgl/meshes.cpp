@@ -52,12 +52,14 @@ void add(ShapeMesh& to, const ShapeMesh& mesh, Transform f) {
     }
     // An index below 0 (a face set's, kept) reaches back into the meshes before, over their
     // points as they were before copies were made (ShapeMesh::sameNormal): the copies skipped.
+    std::vector<long> uncopied;  // the points before, copies left out: made once, when an index needs it
     auto at = [&](long v) {
         if (v >= 0 || to.sameNormal.empty()) return v + base;
-        long k = base, back = -v;
-        while (back > 0 && k > 0)
-            if (--k; to.sameNormal[size_t(k)] == k) --back;
-        return back == 0 ? k : -1;  // before the first point: refused, as it was
+        if (uncopied.empty())
+            for (long k = 0; k < base; ++k)
+                if (to.sameNormal[size_t(k)] == k) uncopied.push_back(k);
+        const long n = long(uncopied.size());
+        return -v <= n ? uncopied[size_t(n + v)] : -1;  // before the first point: refused, as it was
     };
     for (const V3& p : mesh.points) to.points.push_back(f(p));
     for (const auto& t : mesh.triangles) to.triangles.push_back({at(t[0]), at(t[1]), at(t[2])});

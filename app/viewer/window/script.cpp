@@ -319,9 +319,13 @@ std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std:
         app.movingFrames = 0;
         return true;
     }
-    if (cmd == "gl-info" || cmd == "status") {
-        if (cmd == "status") std::printf("status=%s\n", app.status.c_str());
-        else std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
+    if (cmd == "gl-info") {
+        std::printf("gl_renderer=%s\ngl_version=%s\n", app.renderer.glRenderer().c_str(), app.renderer.glVersion().c_str());
+        std::fflush(stdout);
+        return true;
+    }
+    if (cmd == "status") {
+        std::printf("status=%s\n", app.status.c_str());
         std::fflush(stdout);
         return true;
     }
