@@ -97,6 +97,7 @@ void Worker::run() {
             if (!m_pending || !result->cancelled) m_result = result;
         }
         m_done.notify_all();
+        if (finished) finished();
     }
 }
 

@@ -111,6 +111,9 @@ public:
     // Given the geometry's owner: what it prepares may share it (a big planar curve is drawn
     // from the geometry's own segments).
     std::function<std::shared_ptr<const void>(const std::shared_ptr<const Geometry>&)> prepare;
+    // Called on the worker's thread as each result is ready (the window wakes its event loop,
+    // which waits while only the worker works); set before posting.
+    std::function<void()> finished;
     // Where a forest scene's species come from (presets, files); set before posting.
     std::function<std::optional<std::string>(const std::string&)> speciesSource;
 

@@ -238,6 +238,9 @@ public:
     // Runs the actions that can run now; false once `quit` ran or the script ended.
     bool step(App& app);
     bool empty() const { return m_lines.empty() && m_dragFrames == 0 && m_curve.frames == 0 && m_mouse.frames < 0; }
+    // Its next action waits for the worker's result, and nothing moves meanwhile: the window
+    // need not draw frames until the worker is done (as when the user waits for a plant).
+    bool waitsForWorker(const App& app) const;
 
 private:
     std::deque<std::string> m_lines;

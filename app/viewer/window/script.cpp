@@ -136,6 +136,11 @@ bool Script::load(const std::string& path, std::string& error) {
     return true;
 }
 
+bool Script::waitsForWorker(const App& app) const {
+    if (m_curve.frames > 0 || m_mouse.frames >= 0 || m_dragFrames > 0 || m_lines.empty()) return false;
+    return app.state.worker().busy() && (!app.state.latest() || app.state.latest()->generation < m_waitFor);
+}
+
 bool Script::step(App& app) {
     if (m_curve.frames > 0) {  // a curve's point dragged: a step a frame, no result waited for
         const double now = glfwGetTime();

@@ -158,6 +158,7 @@ void startPanel(GLFWwindow* window) {
 // What the worker does for the window: a plant prepared for the renderer on its thread, and
 // a forest scene's species found among the presets and beside the scene's file.
 void connectWorker(App& app) {
+    app.state.worker().finished = [] { glfwPostEmptyEvent(); };  // the loop waits for it (runViewer)
     app.state.worker().prepare = [](const std::shared_ptr<const Geometry>& owner) -> std::shared_ptr<const void> {
         const Geometry& g = *owner;
         auto p = std::make_shared<render::PreparedScene>();
@@ -337,10 +338,16 @@ int runViewer(int argc, char** argv) {
             glfwSetWindowTitle(window, title.c_str());
             windowTitle = std::move(title);
         }
-        const bool animating = app.state.playing() || app.view.turntable || app.state.worker().busy() || !script.empty() || screenshot ||
-                               app.refining || app.environmentJob.valid();
+        // Frames are drawn as fast as they come only while something moves. While the worker
+        // alone works, the loop waits for its result (Worker::finished wakes it) or an event,
+        // and for a progress bar's next frame: frames spun meanwhile took the cores from the
+        // worker (below the window's priority), which took 12-57 ms for lsystem9's curve
+        // drag's last plant instead of 5-9 ms.
+        const bool scriptMoves = !script.empty() && !script.waitsForWorker(app);
+        const bool animating = app.state.playing() || app.view.turntable || scriptMoves || screenshot || app.refining ||
+                               app.environmentJob.valid();
         if (animating || app.needsRedraw) glfwPollEvents();
-        else glfwWaitEventsTimeout(0.25);  // idle: no frames, no CPU
+        else glfwWaitEventsTimeout(app.state.worker().busy() ? 1.0 / 30 : 0.25);  // idle: no frames, no CPU
         const double now = glfwGetTime(), dt = now - last;
         last = now;
         auto frameStart = std::chrono::steady_clock::now();
