@@ -124,7 +124,9 @@ bool Renderer::backdropPhase(Piece& piece, bool groundShadowTexture) {
     glEnable(GL_DEPTH_TEST);
     if (p.ground) {
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        // The colour blended, the alpha made "over" (1 over the sky): the pictures' alpha was
+        // below 1 where the ground fades into the sky (0.75 at its rim in a PNG of `render`).
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
         const GLuint ground = groundShadowTexture ? s.groundMaskedProgram : p.shadows ? s.groundProgram : s.groundPlainProgram;
         s.setLighting(ground, p.o, p.eye, p.lightViewProj, p.shadows, p.texel);
@@ -171,7 +173,7 @@ bool Renderer::backdropPhase(Piece& piece, bool groundShadowTexture) {
         setUniform(program, "uInk", p.o.curveInk);
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // as the ground's
         glBindVertexArray(s.emptyVao);
         glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         glDisable(GL_BLEND);
@@ -252,7 +254,7 @@ bool Renderer::overlayPhase(Piece& piece) {
         const std::size_t first = s.overlayTriangle(p.done), count = std::min(n, s.overlayPassEnd(pass) - p.done);
         if (pass >= 1) {
             glEnable(GL_BLEND);
-            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // as the ground's
             glDepthMask(GL_FALSE);
         }
         setUniform(program, "uPass", pass);

@@ -862,6 +862,22 @@ TEST(Render, EnvironmentIsDrawnWhenAsked) {
     EXPECT_GT(shade, 200) << "the shade under the leaves is drawn";
 }
 
+// A picture is opaque in every pixel: where the ground fades into the sky and through the
+// environment's glass as well (their blending made alpha a*a + (1 - a): 0.75 at the ground's
+// rim in a PNG of `sprout render`, shown paler than it is wherever a PNG is laid over white).
+TEST(Render, PicturesAreOpaqueWhereTheGroundFadesAndThroughGlass) {
+    auto g = grammarOf("n: 0\nenvironment: sphere 0 2 0 1.5\naxiom: F(4) ?E(0,0)\n");
+    SnapshotOptions o;
+    o.showEnvironment = true;
+    for (render::Quality q : {render::Quality::Still, render::Quality::Interactive}) {
+        o.render.quality = q;
+        const Image img = render(g, o);
+        int translucent = 0;
+        for (std::size_t i = 3; i < img.rgba.size(); i += 4) translucent += img.rgba[i] != 255;
+        EXPECT_EQ(translucent, 0) << "pixels not opaque, quality " << int(q);
+    }
+}
+
 // The environment's passes draw their own triangles: the opaque ones once, the glass twice
 // (its far side, then its near side), where each pass had drawn them all; the picture is the
 // same, whole or in pieces (PictureDrawnInPiecesIsThePictureDrawnWhole).
