@@ -21,6 +21,7 @@ Thumbnails::Thumbnails(std::string executable, std::string cacheDir) : m_exe(std
 Thumbnails::~Thumbnails() {
     if (m_child > 0) {
         ::kill(m_child, SIGTERM);
+        if (m_paused) ::kill(m_child, SIGCONT);  // a stopped process ends once it goes on
         ::waitpid(m_child, nullptr, 0);
     }
 }
@@ -39,10 +40,15 @@ const Image* Thumbnails::get(const std::string& name) const {
 
 void Thumbnails::poll(const std::vector<std::string>& names, bool start) {
     if (m_child > 0) {
+        if (start == m_paused) {  // held back: paused; allowed again: it goes on
+            m_paused = !start;
+            ::kill(m_child, start ? SIGCONT : SIGSTOP);
+        }
         int status = 0;
         pid_t r = ::waitpid(m_child, &status, WNOHANG);
-        if (r == 0) return;  // still rendering
+        if (r == 0) return;  // still rendering, or paused
         m_child = -1;
+        m_paused = false;
         Image img;
         std::string error;
         if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && readPng(pathFor(m_childName), img, error))
