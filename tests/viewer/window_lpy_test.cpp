@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "app/image.hpp"
 #include "tests/viewer/window_support.hpp"
@@ -216,6 +218,57 @@ TEST(Window, ACurvePointDraggedBendsThePlantAndOneUndoRestoresIt) {
     expected.replace(expected.find(was), was.size(), now);
     EXPECT_EQ(fileText(moved), expected) << "only the point's numbers change";
     EXPECT_EQ(fileText(back), text) << "one undo: the file is the same byte for byte";
+}
+
+// What the X server shows after a curve's point is dragged, a step a frame: on software GL a
+// frame whose view is as it was (no plant came) sends only the panel's strip to the server and
+// leaves the view in the back buffer as it is; one whose panel is as it was sends only the
+// view. Copied so, or swapped whole (SPROUT_SWAP=1), the screen shows the same window, and its
+// view is the window's picture.
+TEST(Window, TheScreenShowsTheWindowAfterACurveDrag) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+    if (!lpy::pythonAvailable()) GTEST_SKIP() << "built without Python";
+    constexpr int kW = 1000, kH = 700, kPanel = 430;
+    const fs::path dir = testDir("curve_screen"), model = dir / "guided.lpy";
+    std::ofstream(model, std::ios::binary) << kGuidedModel;
+    std::vector<std::uint8_t> screens[2];
+    for (int way = 0; way < 2; ++way) {
+        SCOPED_TRACE(way ? "swapped" : "copied");
+        const fs::path fb = dir / (way ? "fb_swap" : "fb_copy"), view = dir / (way ? "view_swap.png" : "view_copy.png");
+        fs::remove_all(fb);
+        fs::create_directories(fb);
+        fs::remove(view);
+        std::ofstream(dir / "script.txt") << "trust yes\nwait\nsleep 0.3\nwait\ncurve-drag path 2 0.1 0.6 40\nwait\nsleep 0.5\nwait\n"
+                                          << "screenshot " << view.string() << "\nsleep 3\nquit\n";
+        int code = -1;
+        std::thread app([&] {
+            code = runUnderXvfb(model.string() + " --size " + std::to_string(kW) + "x" + std::to_string(kH) + " --script " +
+                                    (dir / "script.txt").string(),
+                                way ? "SPROUT_SWAP=1" : "", "/dev/null", "-screen 0 1600x1000x24 -fbdir " + fb.string());
+        });
+        for (int k = 0; k < 1200 && !fs::exists(view); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::this_thread::sleep_for(std::chrono::milliseconds(800));
+        std::ifstream in(fb / "Xvfb_screen0", std::ios::binary);
+        const bool read = screenCorner(std::string(std::istreambuf_iterator<char>(in), {}), kW, kH, screens[way]);
+        app.join();
+        EXPECT_EQ(code, 0);
+        ASSERT_TRUE(read) << "no screen read";
+        const Image v = load(view.string());
+        ASSERT_EQ(v.width, kW - kPanel);
+        int differ = 0;
+        for (int y = 0; y < kH; ++y)
+            for (int x = 0; x < v.width; ++x) {
+                const auto* a = &screens[way][(std::size_t(y) * kW + std::size_t(x + kPanel)) * 3];
+                const auto* b = &v.rgba[(std::size_t(y) * std::size_t(v.width) + std::size_t(x)) * 4];
+                differ += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 30;
+            }
+        EXPECT_LT(differ, v.width * kH / 100) << "the screen's view is the window's picture";
+    }
+    int differ = 0;
+    for (std::size_t i = 0; i + 2 < screens[0].size() && i + 2 < screens[1].size(); i += 3)
+        differ += std::abs(screens[0][i] - screens[1][i]) + std::abs(screens[0][i + 1] - screens[1][i + 1]) +
+                      std::abs(screens[0][i + 2] - screens[1][i + 2]) > 30;
+    EXPECT_LT(differ, kW * kH / 200) << "copied and swapped frames show the same window, panel and view";
 }
 
 // The editor as a user works it: the mouse (as ImGui sees it) presses a point in the panel's

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -81,6 +82,28 @@ inline std::vector<std::string> runScript(const fs::path& dir, const std::string
     std::vector<std::string> lines;
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
+}
+
+// The w x h rectangle at the top left of an Xvfb screen kept in a file (-fbdir: an XWD image,
+// 32 bits a pixel) as RGB, a row after another; false when the file is not such an image yet.
+inline bool screenCorner(const std::string& xwd, int w, int h, std::vector<std::uint8_t>& out) {
+    out.clear();
+    if (xwd.size() < 100) return false;
+    auto field = [&](int k) {  // XWD's header: big-endian 32-bit fields
+        const auto* b = reinterpret_cast<const unsigned char*>(xwd.data()) + 4 * k;
+        return std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 | b[3];
+    };
+    const std::uint32_t header = field(0), width = field(4), height = field(5), bitsPerPixel = field(11), bytesPerLine = field(12),
+                        colours = field(19);
+    const std::size_t pixels = header + std::size_t(colours) * 12;
+    if (bitsPerPixel != 32 || width < std::uint32_t(w) || height < std::uint32_t(h) || xwd.size() < pixels + std::size_t(bytesPerLine) * height)
+        return false;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto* p = reinterpret_cast<const unsigned char*>(xwd.data()) + pixels + std::size_t(y) * bytesPerLine + 4 * x;
+            out.insert(out.end(), {p[2], p[1], p[0]});  // B G R X
+        }
+    return true;
 }
 
 // The count of a "view_draws=N" line, -1 when it is not one.

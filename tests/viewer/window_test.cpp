@@ -227,26 +227,7 @@ TEST(Window, TheScreenShowsWhatTheWindowDrew) {
     // below the panel's fold: a drag's frames then all have the panel as it was.
     constexpr int kW = 1200, kH = 560, kPanel = 430;
     // The window's rectangle of the screen, RGB (the window is at the screen's corner).
-    auto window = [&](const std::string& screen, std::vector<std::uint8_t>& out) {
-        out.clear();
-        if (screen.size() < 100) return false;
-        auto field = [&](int k) {  // XWD's header: big-endian 32-bit fields
-            const auto* b = reinterpret_cast<const unsigned char*>(screen.data()) + 4 * k;
-            return std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 | b[3];
-        };
-        const std::uint32_t header = field(0), width = field(4), height = field(5), bitsPerPixel = field(11),
-                            bytesPerLine = field(12), colours = field(19);
-        const std::size_t pixels = header + std::size_t(colours) * 12;
-        if (bitsPerPixel != 32 || width < std::uint32_t(kW) || height < std::uint32_t(kH) ||
-            screen.size() < pixels + std::size_t(bytesPerLine) * height)
-            return false;
-        for (int y = 0; y < kH; ++y)
-            for (int x = 0; x < kW; ++x) {
-                const auto* p = reinterpret_cast<const unsigned char*>(screen.data()) + pixels + std::size_t(y) * bytesPerLine + 4 * x;
-                out.insert(out.end(), {p[2], p[1], p[0]});  // B G R X
-            }
-        return true;
-    };
+    auto window = [&](const std::string& screen, std::vector<std::uint8_t>& out) { return screenCorner(screen, kW, kH, out); };
     // Pixels that differ by more than 30 of 765 in columns [x0, x1) of rows [0, y1).
     auto differing = [&](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int x0, int x1, int y1) {
         int n = 0;

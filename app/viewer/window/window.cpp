@@ -260,7 +260,7 @@ void clearWithoutView(App& app, detail::Presenter& presenter, int fw, int fh) {
     glViewport(0, 0, fw, fh);
     glClearColor(0.957f, 0.949f, 0.918f, 1);  // the density image's background
     glClear(GL_COLOR_BUFFER_BIT);
-    presenter.kept = false;  // the panel's strip too
+    presenter.forget();  // the panel's strip too
 }
 
 // --screenshot: the whole window as the user sees it, panel and plant.
@@ -388,16 +388,18 @@ int runViewer(int argc, char** argv) {
         recoveryPopup(app, offerRecovery);
         viewer::detail::drawLabels(app, fw, fh);
         ImGui::Render();
+        if (std::exchange(g_exposed, false)) presenter.forget();  // its next shown frame sends it whole
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
+            frame.mayKeepView = presenter.mayKeepView(viewer::detail::drawnInStrip(app, fw), app.panelWidth, fw, fh);
             viewer::detail::drawView(app, frame, vw, vh, fw, fh);  // window_view.cpp
             ++framesWithPlant;
         } else {
             clearWithoutView(app, presenter, fw, fh);
+            frame.viewShown = true;  // cleared: sent whole
             if (app.state.plant()) ++framesWithPlant;
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
-        if (std::exchange(g_exposed, false)) presenter.kept = false;  // its next shown frame sends it whole
         viewer::detail::PanelDrawn panelDrawn = viewer::detail::PanelDrawn::Whole;
         if (frame.present) panelDrawn = viewer::detail::drawPanelCached(app, panelCache, fw, fh, frame.uiHash, presenter.kept);
 
@@ -410,7 +412,7 @@ int runViewer(int argc, char** argv) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
-        if (frame.present) presenter.present(window, panelDrawn, app.panelWidth, fw, fh);
+        if (frame.present) presenter.present(window, panelDrawn, app.panelWidth, fw, fh, frame.viewShown);
         else glFlush();  // the piece goes on drawing meanwhile
         if (!script.empty() && framesWithPlant > 0 && !script.step(app)) {
             app.quitConfirmed = true;

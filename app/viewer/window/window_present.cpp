@@ -161,11 +161,11 @@ void drawPanelIn(ImDrawData* d, const std::vector<PanelRect>& bands) {
 }
 }  // namespace
 
-PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept) {
-    ImDrawData* d = ImGui::GetDrawData();
-    // Whether everything ImGui draws lies in the strip: each command's clip rectangle, or
-    // where its triangles are when it is clipped to more (a window's background is clipped
-    // to the whole display; its text may run past its edge, clipped to the window).
+// Each command's clip rectangle, or where its triangles are when it is clipped to more (a
+// window's background is clipped to the whole display; its text may run past its edge,
+// clipped to the window).
+bool drawnInStrip(const App& app, int fw) {
+    const ImDrawData* d = ImGui::GetDrawData();
     bool inStrip = d && d->Valid && app.panelWidth > 0 && app.panelWidth <= fw;
     const float right = float(app.panelWidth) + 0.5f;
     for (int k = 0; inStrip && k < d->CmdListsCount; ++k) {
@@ -184,9 +184,14 @@ PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uin
             }
         }
     }
+    return inStrip;
+}
+
+PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept) {
+    ImDrawData* d = ImGui::GetDrawData();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fw, fh);
-    if (!inStrip) {
+    if (!drawnInStrip(app, fw)) {
         cache.hash = 0;
         ImGui_ImplOpenGL3_RenderDrawData(d);
         return PanelDrawn::Whole;
@@ -238,14 +243,19 @@ void Presenter::init(GLFWwindow* window, bool software) {
         copy = reinterpret_cast<CopySubBuffer>(glfwGetProcAddress("glXCopySubBufferMESA"));
 }
 
-void Presenter::present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh) {
+void Presenter::present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh, bool viewShown) {
     if (!copy) {
         glfwSwapBuffers(window);
         return;
     }
-    if (panel == PanelDrawn::Kept) copy(display, drawable, panelWidth, 0, fw - panelWidth, fh);
-    else copy(display, drawable, 0, 0, fw, fh);
+    if (panel == PanelDrawn::Kept) {
+        if (viewShown) copy(display, drawable, panelWidth, 0, fw - panelWidth, fh);
+    } else {
+        copy(display, drawable, 0, 0, viewShown ? fw : panelWidth, fh);
+    }
     kept = panel != PanelDrawn::Whole;
+    viewKept = panel != PanelDrawn::Whole;  // ImGui drawn over the whole window: over the view too
+    width = fw, height = fh, this->panelWidth = panelWidth;
 }
 
 }  // namespace sprout::viewer::detail

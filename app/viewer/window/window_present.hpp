@@ -54,6 +54,10 @@ std::vector<std::uint64_t> panelTiles(const ImDrawData* d, float width, float he
 std::vector<PanelRect> panelBands(const std::vector<std::uint64_t>& before, const std::vector<std::uint64_t>& now, int columns,
                                   size_t most = 4);
 
+// Whether everything ImGui draws this frame lies in the panel's strip (drawPanelCached then
+// leaves the view's part of the window alone).
+bool drawnInStrip(const App& app, int fw);
+
 // What drawPanelCached put in the window's back buffer: ImGui drawn over the whole window, the
 // panel's strip copied from the cache, or nothing (the strip there is this frame's panel).
 enum class PanelDrawn { Whole, Strip, Kept };
@@ -67,8 +71,10 @@ PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uin
 // How a frame goes to the screen. Software GL under X (Mesa's drisw, GLX_MESA_copy_sub_buffer):
 // the window's back buffer is copied to the X server by glXCopySubBufferMESA instead of
 // swapped, so it keeps what it holds; a frame whose panel is as it was copies neither the
-// panel's strip into it nor that strip to the server, only the view. Elsewhere (a GPU, whose
-// swap is synchronised to the display, or no such extension) a swap.
+// panel's strip into it nor that strip to the server, only the view; a frame whose view is
+// as it was (a curve's point dragged between two plants) neither stretches the view's
+// picture into it nor copies the view to the server, only the panel's strip. Elsewhere (a
+// GPU, whose swap is synchronised to the display, or no such extension) a swap.
 struct Presenter {
     using CopySubBuffer = void (*)(void* display, unsigned long drawable, int x, int y, int width, int height);
     using QueryExtensions = const char* (*)(void* display, int screen);
@@ -76,10 +82,22 @@ struct Presenter {
     void* display = nullptr;
     unsigned long drawable = 0;
     bool kept = false;  // the back buffer's panel strip is the cached panel
+    // The back buffer's view (the window right of the panel) is the view's picture as last
+    // shown, and the X server has it: nothing drawn over it since.
+    bool viewKept = false;
+    int width = 0, height = 0, panelWidth = 0;  // the window's and the panel's at the last frame shown
 
     void init(GLFWwindow* window, bool software);
-    // `panel`: what drawPanelCached did; the view is the rest of the window right of the panel.
-    void present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh);
+    // Whether this frame may leave the back buffer's view as it is (when its picture has not
+    // changed): `inStrip`, drawnInStrip of this frame.
+    bool mayKeepView(bool inStrip, int panel, int fw, int fh) const {
+        return copy && viewKept && inStrip && fw == width && fh == height && panel == panelWidth;
+    }
+    // `panel`: what drawPanelCached did; the view is the rest of the window right of the panel,
+    // `viewShown` when the frame drew it into the back buffer.
+    void present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh, bool viewShown = true);
+    // The window was exposed or drawn without the view: its next frame is drawn and sent whole.
+    void forget() { kept = viewKept = false; }
 };
 
 }  // namespace sprout::viewer::detail

@@ -281,8 +281,9 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     if (frame.present) {
         app.presentedUi = ui;  // 0 after a frame that was not hashed: the next one is shown
         app.presentedWidth = fw, app.presentedHeight = fh;
-        // The panel covers the left part; the view goes beside it (stretched when drawn small).
-        showView(app, 0, app.panelWidth, vw, vh);
+        // The panel covers the left part; the view goes beside it (stretched when drawn small),
+        // unless the window's back buffer shows its picture already.
+        if (frame.viewUpdated || !frame.mayKeepView) showView(app, 0, app.panelWidth, vw, vh), frame.viewShown = true;
     }
 }
 

@@ -20,6 +20,8 @@ struct Frame {
     std::uint64_t uiHash = 0;   // drawDataHash of this frame's panel, when made
     bool present = true;        // the frame is shown (see drawView)
     double measuringMs = 0;     // spent measuring for a script (not the frame's own time)
+    bool mayKeepView = false;   // the back buffer's view may stay as it is (Presenter::mayKeepView)
+    bool viewShown = false;     // the view's picture was put in the back buffer in this frame
 };
 
 // The plant the worker hands over, if any (App::state.update): a density image to its texture,
