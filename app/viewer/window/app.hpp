@@ -116,6 +116,7 @@ struct App {
     // the share of pixels that differ by more than 30 of 765).
     bool measureMoving = false;
     bool viewMoving = false;  // the view's picture is a moving one
+    bool viewPending = false;  // drawn in this frame, shown in the next (drawView)
     std::vector<std::uint8_t> movingPicture;
     double movingDifferPct = -1;
     std::string movingWorstWhat;  // what the longest moving frame did (frame-stats)
@@ -157,7 +158,7 @@ struct App {
     // The view shows the plant on screen whole: uploaded, its environment drawn, its still
     // picture finished (scripts and --screenshot wait for this).
     bool viewSettled() const {
-        return !refining && !renderer.uploading() && !environmentJob.valid() && !environmentDirty && environmentOf == state.plant();
+        return !refining && !viewPending && !renderer.uploading() && !environmentJob.valid() && !environmentDirty && environmentOf == state.plant();
     }
     bool environmentDirty = true;
     std::shared_ptr<const Result> environmentOf;  // the plant whose environment is drawn or being drawn

@@ -345,7 +345,7 @@ int runViewer(int argc, char** argv) {
         // drag's last plant instead of 5-9 ms.
         const bool scriptMoves = !script.empty() && !script.waitsForWorker(app);
         const bool animating = app.state.playing() || app.view.turntable || scriptMoves || screenshot || app.refining ||
-                               app.environmentJob.valid();
+                               app.viewPending || app.environmentJob.valid();
         if (animating || app.needsRedraw) glfwPollEvents();
         else glfwWaitEventsTimeout(app.state.worker().busy() ? 1.0 / 30 : 0.25);  // idle: no frames, no CPU
         const double now = glfwGetTime(), dt = now - last;

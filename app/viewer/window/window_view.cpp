@@ -173,11 +173,13 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     o.quality = render::Quality::Still;
     o.quickLines = app.renderer.software();
     const bool interactive = app.interacting || app.shaping || app.state.playing() || app.view.turntable;
+    const bool onlyShaping = app.shaping && !app.interacting && !app.state.playing() && !app.view.turntable;
     if (!app.viewFbo) {
         glGenFramebuffers(1, &app.viewFbo);
         glGenTextures(1, &app.viewColour);
     }
-    if (vw != app.viewWidth || vh != app.viewHeight) {
+    const bool resized = vw != app.viewWidth || vh != app.viewHeight;  // a picture waiting to be shown is lost
+    if (resized) {
         makeViewPicture(app.viewColour, vw, vh);
         glBindFramebuffer(GL_FRAMEBUFFER, app.viewFbo);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, app.viewColour, 0);
@@ -189,7 +191,6 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     // letting go of anything refines the picture if it was drawn moving.
     if (interactive != app.viewInteractive) {
         app.viewInteractive = interactive;
-        const bool onlyShaping = app.shaping && !app.interacting && !app.state.playing() && !app.view.turntable;
         if (interactive ? !onlyShaping : app.viewMoving) app.needsRedraw = true;
     }
     // A picture in pieces abandoned (a screenshot drew in between): begin it again.
@@ -230,12 +231,21 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     // a thread (made here, it held the window 130 ms when the Gosper curve n=5 arrived).
     const bool preview = app.needsRedraw && !interactive && !app.renderer.rasterCurve() &&
                          ((arrived && (app.bigPlant || slow || !app.movingWarm)) || (cameraMoved && slow));
-    app.sceneArrived = false;
-    if (app.needsRedraw) app.drawnCamera = cameraKey;
-    if (app.needsRedraw && interactive) {
+    // A plant that comes while a panel's control is held is drawn in one frame and shown in
+    // the next, on software GL where the window keeps the view shown meanwhile: its drawing
+    // (5-7 ms for lsystem9's sketch on llvmpipe) and the stretch of it over the view with its
+    // copy to the X server (4-5 ms) made one frame of 10-16 ms. The frame that shows it draws
+    // nothing new: a plant that came meanwhile is drawn in the frame after.
+    const bool showLate = app.viewPending && !resized;
+    app.viewPending = false;
+    if (!showLate) app.sceneArrived = false;
+    if (app.needsRedraw && !showLate) app.drawnCamera = cameraKey;
+    if (showLate) {
+    } else if (app.needsRedraw && interactive) {
         drawMoving();
         frame.moved = true;
         app.viewMoving = true;
+        app.viewPending = onlyShaping && frame.mayKeepView;
     } else if (app.needsRedraw) {  // still: the full picture, a piece per frame
         if (app.measureMoving && app.viewMoving) {
             const auto t0 = std::chrono::steady_clock::now();
@@ -249,7 +259,7 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
         app.refineWorstMs = 0;
         app.refineFrames = 0;
     }
-    app.needsRedraw = false;
+    if (!showLate) app.needsRedraw = false;
     if (app.refining) {
         frame.refinedPiece = true;
         // A frame that drew the moving picture first has that much less for its piece.
@@ -275,7 +285,7 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     // drawn in pieces the window shows its last picture, so unless the panel changed
     // (hover, typing, the caret), its pieces follow each other without the copy of
     // the view and the panel's drawing (~7 ms a frame on software GL).
-    const bool refiningOn = app.refining && !frame.viewUpdated;  // only then can a frame be left out
+    const bool refiningOn = app.refining && !frame.viewUpdated && !showLate;  // only then can a frame be left out
     const std::uint64_t ui = frame.uiHash = refiningOn ? drawDataHash(ImGui::GetDrawData()) : 0;
     frame.present = !refiningOn || ui != app.presentedUi || fw != app.presentedWidth || fh != app.presentedHeight;
     if (frame.present) {
@@ -283,7 +293,8 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
         app.presentedWidth = fw, app.presentedHeight = fh;
         // The panel covers the left part; the view goes beside it (stretched when drawn small),
         // unless the window's back buffer shows its picture already.
-        if (frame.viewUpdated || !frame.mayKeepView) showView(app, 0, app.panelWidth, vw, vh), frame.viewShown = true;
+        if (showLate || (frame.viewUpdated && !app.viewPending) || !frame.mayKeepView)
+            showView(app, 0, app.panelWidth, vw, vh), frame.viewShown = true;
     }
 }
 
