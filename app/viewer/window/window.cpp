@@ -274,6 +274,19 @@ void writeWindowPicture(App& app, int fw, int fh, const std::string& path) {
     if (!writePng(path, img, e)) std::cerr << path << ": " << e << "\n";
 }
 
+// Frames are drawn as fast as they come only while something moves. While the worker alone
+// works, the loop waits for its result (Worker::finished wakes it) or an event, and for a
+// progress bar's next frame: frames spun meanwhile took the cores from the worker (below the
+// window's priority), which took 12-57 ms for lsystem9's curve drag's last plant instead of
+// 5-9 ms. Idle: no frames, no CPU.
+void awaitFrame(App& app, const Script& script, bool screenshot) {
+    const bool scriptMoves = !script.empty() && !script.waitsForWorker(app);
+    const bool animating = app.state.playing() || app.view.turntable || scriptMoves || screenshot || app.refining ||
+                           app.viewPending || app.environmentJob.valid();
+    if (animating || app.needsRedraw) glfwPollEvents();
+    else glfwWaitEventsTimeout(app.state.worker().busy() ? 1.0 / 30 : 0.25);
+}
+
 }  // namespace
 
 // [SECTION] The main loop
@@ -338,16 +351,7 @@ int runViewer(int argc, char** argv) {
             glfwSetWindowTitle(window, title.c_str());
             windowTitle = std::move(title);
         }
-        // Frames are drawn as fast as they come only while something moves. While the worker
-        // alone works, the loop waits for its result (Worker::finished wakes it) or an event,
-        // and for a progress bar's next frame: frames spun meanwhile took the cores from the
-        // worker (below the window's priority), which took 12-57 ms for lsystem9's curve
-        // drag's last plant instead of 5-9 ms.
-        const bool scriptMoves = !script.empty() && !script.waitsForWorker(app);
-        const bool animating = app.state.playing() || app.view.turntable || scriptMoves || screenshot || app.refining ||
-                               app.viewPending || app.environmentJob.valid();
-        if (animating || app.needsRedraw) glfwPollEvents();
-        else glfwWaitEventsTimeout(app.state.worker().busy() ? 1.0 / 30 : 0.25);  // idle: no frames, no CPU
+        awaitFrame(app, script, screenshot.has_value());
         const double now = glfwGetTime(), dt = now - last;
         last = now;
         auto frameStart = std::chrono::steady_clock::now();
