@@ -241,6 +241,7 @@ void drawView(App& app, Frame& frame, int vw, int vh, int fw, int fh) {
     if (!showLate) app.sceneArrived = false;
     if (app.needsRedraw && !showLate) app.drawnCamera = cameraKey;
     if (showLate) {
+        // Nothing drawn: the picture drawn in the last frame is shown below.
     } else if (app.needsRedraw && interactive) {
         drawMoving();
         frame.moved = true;
