@@ -106,6 +106,21 @@ inline bool screenCorner(const std::string& xwd, int w, int h, std::vector<std::
     return true;
 }
 
+// How many pixels of `view` differ by more than 30 of 765 from the screen's (screenCorner's RGB,
+// `width` pixels a row) where the view is shown: from column x0 of the screen's first rows.
+inline int viewDiffersOnScreen(const std::vector<std::uint8_t>& screen, int width, int x0, const Image& view) {
+    int differ = 0;
+    for (int y = 0; y < view.height; ++y)
+        for (int x = 0; x < view.width; ++x) {
+            const std::size_t i = (std::size_t(y) * std::size_t(width) + std::size_t(x + x0)) * 3;
+            if (i + 2 >= screen.size()) return view.width * view.height;
+            const auto* a = &screen[i];
+            const auto* b = &view.rgba[(std::size_t(y) * std::size_t(view.width) + std::size_t(x)) * 4];
+            differ += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 30;
+        }
+    return differ;
+}
+
 // The count of a "view_draws=N" line, -1 when it is not one.
 inline long viewDraws(const std::vector<std::string>& lines, size_t k) {
     return k < lines.size() && lines[k].rfind("view_draws=", 0) == 0 ? std::stol(lines[k].substr(11)) : -1;
