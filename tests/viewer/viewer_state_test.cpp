@@ -2,6 +2,8 @@
 // worker, stale work is cancelled, sliders write into the text, files and autosave.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -131,6 +133,35 @@ TEST(ViewerState, EditBecomesAPlant) {
     s.waitForPlant();
     EXPECT_FALSE(s.latest()->diagnostics.empty());
     EXPECT_TRUE(s.dirty());
+}
+
+// The worker says when each result is ready (the window's loop waits for it), and once
+// stopped (before the window's GLFW ends) it says nothing more, whatever is posted after.
+TEST(Worker, FinishedIsCalledForEachResultAndNeverAfterStop) {
+    Worker w;
+    std::atomic<int> calls{0};
+    w.finished = [&] { ++calls; };
+    Request r;
+    r.text = kPlant;
+    r.generation = 1;
+    w.post(r);
+    auto result = w.waitForResult(1);
+    ASSERT_TRUE(result && result->ok());
+    for (int i = 0; i < 500 && calls.load() < 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    EXPECT_EQ(calls.load(), 1);
+    // A long derivation, stopped as it runs: stop() returns once the thread has ended.
+    r.text = "n: 40\naxiom: A\nA -> AB\nB -> A\n";
+    r.generation = 2;
+    w.post(r);
+    w.stop();
+    const int atStop = calls.load();
+    EXPECT_LE(atStop, 2);
+    r.generation = 3;
+    w.post(r);  // nothing takes it up
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(calls.load(), atStop);
+    EXPECT_FALSE(w.busy());
+    w.stop();  // again: nothing to do
 }
 
 TEST(ViewerState, TheTitleNamesTheFileOrThePreset) {

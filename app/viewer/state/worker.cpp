@@ -22,11 +22,13 @@ double millisSince(std::chrono::steady_clock::time_point t0) {
 
 Worker::Worker() { m_thread = std::thread([this] { run(); }); }
 
-Worker::~Worker() {
+Worker::~Worker() { stop(); }
+
+void Worker::stop() {
     m_quit = true;
     m_cancel = true;
     m_wake.notify_all();
-    m_thread.join();
+    if (m_thread.joinable()) m_thread.join();
 }
 
 void Worker::post(Request request) {

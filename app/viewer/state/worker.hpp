@@ -102,6 +102,9 @@ public:
     float progress() const { return m_progress.load(); }
     int progressStep() const { return m_progressStep.load(); }
     void cancel();
+    // Cancels what runs and ends the worker's thread (its `finished` is not called after);
+    // nothing posted after is taken up. The destructor does it too.
+    void stop();
     // Blocks until the worker is idle and the result is available (tests, screenshots).
     std::shared_ptr<const Result> waitForResult(std::uint64_t generation);
 

@@ -429,6 +429,7 @@ int runViewer(int argc, char** argv) {
     }
     app.state.autosave(true);
     app.state.markCleanExit();
+    app.state.worker().stop();  // its last result wakes the loop through GLFW, which ends below
     panelCache.image.reset();  // while the context is current
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
