@@ -65,15 +65,6 @@ Times timePictures(const Geometry& g, int pictures, std::string& error) {
     return t;
 }
 
-bool geometryOf(std::shared_ptr<const Grammar> grammar, Geometry& out) {
-    if (!grammar) return false;
-    Growth growth(grammar, DeriveOptions{});
-    const int n = grammar->settings.iterations;
-    if (!growth.grow(n, DeriveLimits{}).ok()) return false;
-    growth.draw(n, {n, growth.seed(), nullptr}, out);
-    return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,11 +76,14 @@ int main(int argc, char** argv) {
     }
     Geometry plant, empty;
     const auto loaded = cli::loadGrammar(source);
-    if (!loaded || !geometryOf(loaded->grammar, plant) || !geometryOf(parse("axiom: X\n").grammar, empty)) {
-        std::fprintf(stderr, "picture_bench: %s makes no plant\n", source.c_str());
+    std::string error;
+    auto grown = [&](std::shared_ptr<const Grammar> g, Geometry& out) {
+        return g && growAndDraw(g, g->settings.iterations, DeriveOptions{}, out, error);
+    };
+    if (!loaded || !grown(loaded->grammar, plant) || !grown(parse("axiom: X\n").grammar, empty)) {
+        std::fprintf(stderr, "picture_bench: %s makes no plant %s\n", source.c_str(), error.c_str());
         return 1;
     }
-    std::string error;
     const Times base = timePictures(empty, pictures, error), it = timePictures(plant, pictures, error);
     if (!error.empty()) {
         std::fprintf(stderr, "picture_bench: %s\n", error.c_str());

@@ -246,6 +246,7 @@ public:
 private:
     std::deque<std::string> m_lines;
     std::uint64_t m_waitFor = 0;  // the generation the last action posted
+    bool resultIn(const App& app) const;  // the worker's result for m_waitFor has come
     double m_sleepUntil = 0;
     int m_dragFrames = 0;           // `drag`: frames still to move
     bool m_thumbnailsSeen = false;  // `wait-thumbnails`: a frame has polled them since

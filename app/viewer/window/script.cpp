@@ -136,9 +136,11 @@ bool Script::load(const std::string& path, std::string& error) {
     return true;
 }
 
+bool Script::resultIn(const App& app) const { return app.state.latest() && app.state.latest()->generation >= m_waitFor; }
+
 bool Script::waitsForWorker(const App& app) const {
     if (m_curve.frames > 0 || m_mouse.frames >= 0 || m_dragFrames > 0 || m_lines.empty()) return false;
-    return app.state.worker().busy() && (!app.state.latest() || app.state.latest()->generation < m_waitFor);
+    return app.state.worker().busy() && !resultIn(app);
 }
 
 bool Script::step(App& app) {
@@ -171,9 +173,9 @@ bool Script::step(App& app) {
         in >> cmd;
         // Every action waits until the result of the script's last edit is on screen (an
         // animation may post newer requests meanwhile; those are not waited for).
-        if (m_curve.endedAt > 0 && m_curve.resultAt == 0 && app.state.latest() && app.state.latest()->generation >= m_waitFor)
+        if (m_curve.endedAt > 0 && m_curve.resultAt == 0 && resultIn(app))
             m_curve.resultAt = glfwGetTime();  // the drag's last result, from the worker
-        if (!app.state.latest() || app.state.latest()->generation < m_waitFor) return true;
+        if (!resultIn(app)) return true;
         if (glfwGetTime() < m_sleepUntil) return true;
         if (!app.viewSettled()) return true;  // and until the view shows it whole, with its environment
         if (app.exportJob.running()) return true;

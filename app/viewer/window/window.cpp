@@ -393,8 +393,9 @@ int runViewer(int argc, char** argv) {
         viewer::detail::drawLabels(app, fw, fh);
         ImGui::Render();
         if (std::exchange(g_exposed, false)) presenter.forget();  // its next shown frame sends it whole
+        const bool inStrip = viewer::detail::drawnInStrip(app, fw);
         if (app.state.plant() && app.state.plant()->geometry && fw > 0 && fh > 0) {
-            frame.mayKeepView = presenter.mayKeepView(viewer::detail::drawnInStrip(app, fw), app.panelWidth, fw, fh);
+            frame.mayKeepView = presenter.mayKeepView(inStrip, app.panelWidth, fw, fh);
             viewer::detail::drawView(app, frame, vw, vh, fw, fh);  // window_view.cpp
             ++framesWithPlant;
         } else {
@@ -405,7 +406,7 @@ int runViewer(int argc, char** argv) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glViewport(0, 0, fw, fh);
         viewer::detail::PanelDrawn panelDrawn = viewer::detail::PanelDrawn::Whole;
-        if (frame.present) panelDrawn = viewer::detail::drawPanelCached(app, panelCache, fw, fh, frame.uiHash, presenter.kept);
+        if (frame.present) panelDrawn = viewer::detail::drawPanelCached(app, panelCache, fw, fh, frame.uiHash, presenter.kept, inStrip);
 
         // A text that makes no plant (errors, an L-Py model not trusted) is on screen as it
         // is: screenshots and scripts go on once its result is in.

@@ -187,11 +187,11 @@ bool drawnInStrip(const App& app, int fw) {
     return inStrip;
 }
 
-PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept) {
+PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept, bool inStrip) {
     ImDrawData* d = ImGui::GetDrawData();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, fw, fh);
-    if (!drawnInStrip(app, fw)) {
+    if (!inStrip) {
         cache.hash = 0;
         ImGui_ImplOpenGL3_RenderDrawData(d);
         return PanelDrawn::Whole;
@@ -253,8 +253,7 @@ void Presenter::present(GLFWwindow* window, PanelDrawn panel, int panelWidth, in
     } else {
         copy(display, drawable, 0, 0, viewShown ? fw : panelWidth, fh);
     }
-    kept = panel != PanelDrawn::Whole;
-    viewKept = panel != PanelDrawn::Whole;  // ImGui drawn over the whole window: over the view too
+    kept = panel != PanelDrawn::Whole;  // ImGui drawn over the whole window: over the view too
     width = fw, height = fh, this->panelWidth = panelWidth;
 }
 

@@ -55,7 +55,7 @@ std::vector<PanelRect> panelBands(const std::vector<std::uint64_t>& before, cons
                                   size_t most = 4);
 
 // Whether everything ImGui draws this frame lies in the panel's strip (drawPanelCached then
-// leaves the view's part of the window alone).
+// leaves the view's part of the window alone); made once a frame, after ImGui::Render.
 bool drawnInStrip(const App& app, int fw);
 
 // What drawPanelCached put in the window's back buffer: ImGui drawn over the whole window, the
@@ -66,7 +66,8 @@ enum class PanelDrawn { Whole, Strip, Kept };
 // strip from the cache.
 // `hash`: drawDataHash of this frame's draw data when the frame already made it, else 0.
 // `kept`: the back buffer's strip holds the cached panel (the window was not swapped since).
-PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept = false);
+// `inStrip`: drawnInStrip of this frame.
+PanelDrawn drawPanelCached(App& app, PanelCache& cache, int fw, int fh, std::uint64_t hash, bool kept, bool inStrip);
 
 // How a frame goes to the screen. Software GL under X (Mesa's drisw, GLX_MESA_copy_sub_buffer):
 // the window's back buffer is copied to the X server by glXCopySubBufferMESA instead of
@@ -81,23 +82,23 @@ struct Presenter {
     CopySubBuffer copy = nullptr;
     void* display = nullptr;
     unsigned long drawable = 0;
-    bool kept = false;  // the back buffer's panel strip is the cached panel
-    // The back buffer's view (the window right of the panel) is the view's picture as last
-    // shown, and the X server has it: nothing drawn over it since.
-    bool viewKept = false;
+    // The back buffer holds what the X server was last sent: its panel strip is the cached
+    // panel and its view (the window right of the panel) the view's picture as last shown.
+    // False after a frame whose ImGui drew over the whole window, or one swapped.
+    bool kept = false;
     int width = 0, height = 0, panelWidth = 0;  // the window's and the panel's at the last frame shown
 
     void init(GLFWwindow* window, bool software);
     // Whether this frame may leave the back buffer's view as it is (when its picture has not
     // changed): `inStrip`, drawnInStrip of this frame.
     bool mayKeepView(bool inStrip, int panel, int fw, int fh) const {
-        return copy && viewKept && inStrip && fw == width && fh == height && panel == panelWidth;
+        return copy && kept && inStrip && fw == width && fh == height && panel == panelWidth;
     }
     // `panel`: what drawPanelCached did; the view is the rest of the window right of the panel,
     // `viewShown` when the frame drew it into the back buffer.
     void present(GLFWwindow* window, PanelDrawn panel, int panelWidth, int fw, int fh, bool viewShown = true);
     // The window was exposed or drawn without the view: its next frame is drawn and sent whole.
-    void forget() { kept = viewKept = false; }
+    void forget() { kept = false; }
 };
 
 }  // namespace sprout::viewer::detail
