@@ -85,6 +85,9 @@ TEST(CpfgPrograms, EcosystemAnswersWhetherADiscIsDominated) {
     EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/e.spec:2:1: warning: ecosystem has no setting '3D case' (it passes "
                                                       "over this line); did you mean '3d case'? Its settings: 'verbose', "
                                                       "'grid size', '3d case', 'vigor'"});
+    f["e.spec"] = "grid size: 3000000000 3000000000 3000000000\n3d case: on\n";  // each taken as 2e9; their product must not overflow
+    EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/e.spec:1:1: 'grid size': 2000000000 x 2000000000 x 2000000000 cells "
+                                                      "is over Sprout's 16000000 for ecosystem's grid"});
 }
 
 // A 4 x 4 SGI image (RLE, three channels): red 10x + 40y, green 255 - 16(x + 4y).
@@ -141,6 +144,9 @@ TEST(CpfgPrograms, ChibaAnswersTheLightReachingEachSphere) {
     EXPECT_EQ(expandWith(f, lsystem), "[R(0.482463,0.316482,0.948598,0)][f(1.5)R(0.99959)][f(3)R(1)]"
                                       "[+(80)f(1.1)R(0.525629,0.21863,0.975808,0)][&(90)f(2)R(0.6)]");
     f["c.spec"] = "grid size: 0 4 4\n";
+    EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/c.spec:1:1: 'grid size': expected three whole numbers of voxels, at "
+                                                      "least 1 each and 16000000 in all at most"});
+    f["c.spec"] = "grid size: 3 4444444444 4444444444\n";  // as fuzz_enviro found it: the product overflowed
     EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/c.spec:1:1: 'grid size': expected three whole numbers of voxels, at "
                                                       "least 1 each and 16000000 in all at most"});
 }

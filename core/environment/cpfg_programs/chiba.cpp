@@ -39,11 +39,6 @@ void normalize(float* v) {
         for (int i = 0; i < 3; ++i) v[i] /= len;
 }
 
-int toInt(double v) {
-    if (!(v > -2e9 && v < 2e9)) return v > 0 ? 2'000'000'000 : -2'000'000'000;
-    return int(v);
-}
-
 struct Leaf {
     float pos[3], radius, area;
     int params;
@@ -361,8 +356,8 @@ std::shared_ptr<EnvironmentProgram> makeChiba(const std::string&, const std::str
             unknownKeyword(line, keywords, "chiba", sink);
         }
     }
-    const std::int64_t cells = std::int64_t(p->size[0]) * p->size[1] * p->size[2];
-    if (p->size[0] < 1 || p->size[1] < 1 || p->size[2] < 1 || cells > kMaxCells) {
+    const std::int64_t cells = gridCells({p->size[0], p->size[1], p->size[2]}, kMaxCells);
+    if (cells < 1 || cells > kMaxCells) {
         sink.error(sizeLine, "'grid size': expected three whole numbers of voxels, at least 1 each and " +
                                  std::to_string(kMaxCells) + " in all at most");
         return nullptr;

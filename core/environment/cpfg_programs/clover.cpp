@@ -29,11 +29,6 @@ struct Clover : EnvironmentProgram {
     std::unique_ptr<ProgramRun> start() const override;
 };
 
-int toInt(double v) {
-    if (!(v > -2e9 && v < 2e9)) return v > 0 ? 2'000'000'000 : -2'000'000'000;
-    return int(v);
-}
-
 class CloverRun : public ProgramRun {
 public:
     explicit CloverRun(const Clover& p) : m_p(p), m_grid(p.initial) {}

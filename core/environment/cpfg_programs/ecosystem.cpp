@@ -21,11 +21,6 @@ struct Ecosystem : EnvironmentProgram {
     std::unique_ptr<ProgramRun> start() const override;
 };
 
-int toInt(double v) {
-    if (!(v > -2e9 && v < 2e9)) return v > 0 ? 2'000'000'000 : -2'000'000'000;
-    return int(v);
-}
-
 class EcosystemRun : public ProgramRun {
 public:
     explicit EcosystemRun(const Ecosystem& p) : m_p(p) {
@@ -157,10 +152,10 @@ std::shared_ptr<EnvironmentProgram> makeEcosystem(const std::string&, const std:
             unknownKeyword(line, keywords, "ecosystem", sink);
         }
     }
-    const std::int64_t cells = std::int64_t(p->size[0]) * p->size[1] * (p->is3d ? p->size[2] : 1);
-    if (cells > kMaxCells) {
-        sink.error(gridLine, "'grid size': " + std::to_string(cells) + " cells is over Sprout's " + std::to_string(kMaxCells) +
-                                 " for ecosystem's grid");
+    if (gridCells({p->size[0], p->size[1], p->is3d ? p->size[2] : 1}, kMaxCells) > kMaxCells) {
+        sink.error(gridLine, "'grid size': " + std::to_string(p->size[0]) + " x " + std::to_string(p->size[1]) +
+                                 (p->is3d ? " x " + std::to_string(p->size[2]) : std::string()) + " cells is over Sprout's " +
+                                 std::to_string(kMaxCells) + " for ecosystem's grid");
         return nullptr;
     }
     return p;

@@ -63,6 +63,21 @@ double numberOf(const Token& t, const SpecLine& line, const Sink& sink, const ch
     return end == s ? 0.0 : v;
 }
 
+int toInt(double v) {
+    if (!(v > -2e9 && v < 2e9)) return v > 0 ? 2'000'000'000 : -2'000'000'000;
+    return int(v);
+}
+
+std::int64_t gridCells(std::initializer_list<int> sizes, std::int64_t cap) {
+    std::int64_t cells = 1;
+    for (int n : sizes) {
+        if (n < 1) return 0;
+        if (cells > cap / n) return cap + 1;
+        cells *= n;
+    }
+    return cells > cap ? cap + 1 : cells;
+}
+
 void unknownKeyword(const SpecLine& line, const std::vector<std::string>& keywords, const std::string& program,
                     const Sink& sink) {
     std::string list;

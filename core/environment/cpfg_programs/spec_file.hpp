@@ -2,7 +2,9 @@
 // What the environment programs share to read their specification files as their C does
 // (fgets a line, strtok the keyword up to ':' or a tab, strtok the values, atof them), with a
 // message at the file's line for what the C passes over in silence. Internal to cpfg_programs/.
+#include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +47,13 @@ double numberOf(const Token& t, const SpecLine& line, const Sink& sink, const ch
 // An unknown keyword: a warning that lists the program's keywords (the program passes over it).
 void unknownKeyword(const SpecLine& line, const std::vector<std::string>& keywords, const std::string& program,
                     const Sink& sink);
+
+// A number taken as C's (int) cast does, within +-2e9 (a NaN or a bigger number gives the bound).
+int toInt(double v);
+
+// The number of cells of a grid of these sizes, or `cap + 1` as soon as it is over `cap` (whatever
+// the sizes, nothing overflows); a size under 1 gives 0.
+std::int64_t gridCells(std::initializer_list<int> sizes, std::int64_t cap);
 
 // The programs, each made from its specification file's text (specName: its name, for messages;
 // text: nullopt when it could not be read, with the message already given).
