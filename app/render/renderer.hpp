@@ -128,6 +128,8 @@ public:
     bool software() const { return m_software; }
     // Times the ground's shadow texture for moving frames on software GL was made (tests).
     int groundShadowTextures() const;
+    // Whether it is made from the shadow map made last (tests).
+    bool groundShadowCurrent() const;
     // The context's GL_RENDERER and GL_VERSION strings ("llvmpipe (LLVM 15.0.6, 256 bits)").
     const std::string& glRenderer() const { return m_glRenderer; }
     const std::string& glVersion() const { return m_glVersion; }
@@ -205,6 +207,11 @@ public:
     // What the last picture drawn by continueDrawFor took to draw, all pieces together (a big
     // curve's raster included); huge until one of this scene is done.
     double lastPictureMs() const { return m_lastPictureMs; }
+    // After a picture in pieces is shown: makes what the moving frames to come take from it
+    // (on software GL, the ground's shadow texture from its shadow map), unless a moving
+    // frame made it already. True when something was made. Keeps the framebuffer bound and
+    // the viewport.
+    bool prepareMoving();
     // The scene is a big planar curve, drawn from a raster made at the picture's size.
     bool rasterCurve() const;
     // Draws a small scene once in every way the window draws (still and moving, stems,

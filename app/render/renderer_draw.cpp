@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <future>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -46,6 +48,7 @@ void Renderer::Impl::setLighting(GLuint p, const RenderOptions& o, const glm::ve
 
 void Renderer::Impl::ensureGroundShadow(const RenderOptions& o, const glm::vec3& eye, const glm::vec3& centre, float radius) {
     const glm::vec4 at(centre, radius);
+    groundShadowWanted.reset();  // a moving frame's comes first
     if (groundShadowOf == shadowGeneration && groundShadowAt == at) return;
     groundShadowOf = shadowGeneration;
     groundShadowAt = at;
@@ -243,6 +246,7 @@ std::size_t Renderer::partEnd(const Pass& p) const {
 }
 
 int Renderer::groundShadowTextures() const { return m->groundShadowMade; }
+bool Renderer::groundShadowCurrent() const { return m->groundShadowOf == m->shadowGeneration; }
 
 glm::vec3 Renderer::groundCentre(const Pass& p) const { return glm::vec3(p.centre.x, m->bounds.min.y, p.centre.z); }
 
@@ -331,5 +335,19 @@ bool Renderer::continueDrawFor(double milliseconds) {
 }
 
 bool Renderer::drawing() const { return m_progress != nullptr; }
+
+bool Renderer::prepareMoving() {
+    Impl& s = *m;
+    const std::optional<Impl::GroundShadowWanted> w = std::exchange(s.groundShadowWanted, std::nullopt);
+    if (!w || w->generation != s.shadowGeneration || m_progress) return false;
+    const int made = s.groundShadowMade;
+    GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    s.ensureGroundShadow(w->o, w->eye, w->centre, w->radius);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    return s.groundShadowMade != made;
+}
 
 }  // namespace sprout::render

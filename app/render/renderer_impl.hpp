@@ -9,6 +9,7 @@
 #include <future>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 #include <glm/mat4x4.hpp>
@@ -113,6 +114,15 @@ struct Renderer::Impl {
     glm::vec4 groundShadowAt{0.0f};             // the ground's centre and radius then
     int groundShadowMade = 0;                   // times made (for tests)
     void ensureGroundShadow(const RenderOptions& o, const glm::vec3& eye, const glm::vec3& centre, float radius);
+    // The one the window's still view asks for when its shadow map is made, made after the
+    // picture is shown (Renderer::prepareMoving) or by the first moving frame.
+    struct GroundShadowWanted {
+        RenderOptions o;
+        glm::vec3 eye{0.0f}, centre{0.0f};
+        float radius = 0;
+        std::uint64_t generation = 0;  // of the shadow map
+    };
+    std::optional<GroundShadowWanted> groundShadowWanted;
     // Multisampled images: one for moving frames of big plants (2 samples) and for big curves
     // (1 sample, still and moving), one for other
     // moving frames (4 samples, half size in the window), one for still pictures, so that

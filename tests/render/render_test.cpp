@@ -785,9 +785,12 @@ TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
         }
     };
     stillInPieces();
+    EXPECT_EQ(renderer.groundShadowTextures(), 0) << "not in the picture's pieces";
+    EXPECT_TRUE(renderer.prepareMoving()) << "made from its shadow map once it is shown";
+    EXPECT_FALSE(renderer.prepareMoving());
     const std::vector<bool> still = shadowedPixels(renderer, camera, o, render::Quality::Still, true);
     const std::vector<bool> onPlant = shadowedPixels(renderer, camera, o, render::Quality::Still, false);
-    EXPECT_EQ(renderer.groundShadowTextures(), 1) << "made with the shadow map";
+    EXPECT_EQ(renderer.groundShadowTextures(), 1);
     const std::vector<bool> moving = shadowedPixels(renderer, camera, o, render::Quality::Interactive, true);
     shadowedPixels(renderer, camera, o, render::Quality::Interactive, true);
     EXPECT_EQ(renderer.groundShadowTextures(), 1) << "not made again for each moving frame";
@@ -802,15 +805,20 @@ TEST(Render, MovingGroundReadsThePlantsShadowFromATextureMadeWithTheMap) {
     ASSERT_GT(ground, kW * kH / 200) << "the still picture's shadow on the ground";
     EXPECT_GT(both, ground * 6 / 10) << "moving, the ground's shadow is where the still one is";
     EXPECT_LT(movingOnly, ground * 4 / 10) << "and not elsewhere";
-    // Another plant: its shadow map, and the texture with it.
+    // Another plant: its shadow map, and the texture with it, made by a moving frame that
+    // comes before the picture is shown, and then not again.
     Geometry taller = geometry;
     for (auto& c : taller.cylinders) c.start.y *= 1.5f, c.end.y *= 1.5f;
     renderer.upload(taller);
     stillInPieces();
+    shadowedPixels(renderer, camera, o, render::Quality::Interactive, true);
+    EXPECT_EQ(renderer.groundShadowTextures(), 2);
+    EXPECT_FALSE(renderer.prepareMoving());
     EXPECT_EQ(renderer.groundShadowTextures(), 2);
     // A picture drawn at once (`sprout render`) makes none: no moving frames follow it.
     renderer.upload(geometry);
     shadowedPixels(renderer, camera, o, render::Quality::Still, true);
+    EXPECT_FALSE(renderer.prepareMoving());
     EXPECT_EQ(renderer.groundShadowTextures(), 2);
 }
 

@@ -89,7 +89,9 @@
 //                         the last moving picture as shown and the still view after it (-1:
 //                         none measured), and what the longest moving frame drew (its view's
 //                         size and time, and whether it drew the shadow map, the sketch, or
-//                         took a new plant)
+//                         took a new plant), the frames that copied and drew the panel, and
+//                         whether the ground's shadow texture for moving frames is made from
+//                         the last shadow map
 //   drag <dx> <dy> <frames>   orbits as a left-button drag of dx, dy pixels over that many
 //                         frames, the button still held after it; release   lets it go
 //   step <k> | play | pause | frame | yaw <deg> | pitch <deg> | zoom <factor> | sleep <seconds>
@@ -315,11 +317,12 @@ std::optional<bool> Script::reportCommand(App& app, const std::string& cmd, std:
                 if (std::sscanf(line, "VmHWM: %ld kB", &peakKb) == 1) break;
             std::fclose(f);
         }
-        std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s panel_copied_frames=%llu panel_drawn_frames=%llu\n",
+        std::printf("moving_worst_ms=%.1f moving_mean_ms=%.1f refine_ms=%.1f refine_worst_frame_ms=%.1f peak_mb=%.0f refine_frames=%d refine_drawing_ms=%.1f moving_differ_pct=%.2f moving_worst_was=%s panel_copied_frames=%llu panel_drawn_frames=%llu ground_shadow_current=%d\n",
                     app.movingWorstMs, app.movingFrames ? app.movingTotalMs / double(app.movingFrames) : 0.0, app.drawMs,
                     app.refineWorstMs, double(peakKb) / 1024, app.refineFrames, app.renderer.lastPictureMs(), app.movingDifferPct,
                     app.movingWorstWhat.empty() ? "none" : app.movingWorstWhat.c_str(),
-                    static_cast<unsigned long long>(app.panelCopies), static_cast<unsigned long long>(app.panelDraws));
+                    static_cast<unsigned long long>(app.panelCopies), static_cast<unsigned long long>(app.panelDraws),
+                    int(app.renderer.groundShadowCurrent()));
         std::fflush(stdout);
         app.movingWorstMs = app.movingTotalMs = 0;
         app.movingWorstWhat.clear();

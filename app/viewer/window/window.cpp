@@ -423,6 +423,8 @@ int runViewer(int argc, char** argv) {
             app.quitConfirmed = true;
             glfwSetWindowShouldClose(window, GLFW_TRUE);
         }
+        // The still picture is on screen: what moving frames take from it is made now.
+        if (!app.refining) app.renderer.prepareMoving();
         app.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count() - frame.measuringMs;
         app.worstFrameMs = std::max(app.worstFrameMs * 0.995, app.frameMs);
         if (frame.refinedPiece) app.refineWorstMs = std::max(app.refineWorstMs, app.frameMs), ++app.refineFrames;
