@@ -287,6 +287,14 @@ void awaitFrame(App& app, const Script& script, bool screenshot) {
     else glfwWaitEventsTimeout(app.state.worker().busy() ? 1.0 / 30 : 0.25);
 }
 
+// The window's title names what is being edited, as the panel does.
+void nameWindow(App& app, std::string& shown) {
+    if (std::string title = "Sprout - " + app.state.title() + (app.state.dirty() ? " *" : ""); title != shown) {
+        glfwSetWindowTitle(app.window, title.c_str());
+        shown = std::move(title);
+    }
+}
+
 }  // namespace
 
 // [SECTION] The main loop
@@ -346,11 +354,7 @@ int runViewer(int argc, char** argv) {
             glfwSetWindowShouldClose(window, GLFW_FALSE);
             app.quitPopup = true;
         }
-        // The window's title names what is being edited, as the panel does.
-        if (std::string title = "Sprout - " + app.state.title() + (app.state.dirty() ? " *" : ""); title != windowTitle) {
-            glfwSetWindowTitle(window, title.c_str());
-            windowTitle = std::move(title);
-        }
+        nameWindow(app, windowTitle);
         awaitFrame(app, script, screenshot.has_value());
         const double now = glfwGetTime(), dt = now - last;
         last = now;
