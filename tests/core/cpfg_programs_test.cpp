@@ -118,6 +118,12 @@ TEST(CpfgPrograms, CloverAnswersTheLightUnderTheLeaves) {
                             "?E(x) --> R(x)?E(x)\nT(n) : n==1 --> [f(0.5)?E(2,3)]T(2)\nT(n) --> T(n+1)\nendlsystem\n"),
               "[f(0.5)?E(1,3)][+(90)f(1.5)?E(0.498039,0.625)]R(0.186275)R(0.0931373)R(0.0931373)R(0.0931373)?E(0.0931373)"
               "[f(0.5)?E(2,3)]T(4)");
+    // A leaf 100,000 cells across: the cells near its rim are under it, as at its centre
+    // (clover.c's int squares of the cells' offsets overflowed past 46,340: none were).
+    f["c.spec"] = "grid position: -2 -2\ngrid range: 4x4\ngrid size: 2x100000\ninput image: l.rgb\ntransmittance: 0.5\n";
+    EXPECT_EQ(expandWith(f, "Lsystem: 1\nderivation length: 1\nAxiom: ?E(1,12.566)[f(1.9)?E(0)][+(180)f(1.9)?E(0)]"
+                            "[f(1)?E(0)]\nendlsystem\n"),
+              "?E(1,12.566)[f(1.9)?E(0.154902)][+(180)f(1.9)?E(0.405882)][f(1)?E(0.154902)]");
     // A truncated image, or one of another kind: said, and full light taken.
     f["l.rgb"] = sgiImage().substr(0, 620);
     EXPECT_EQ(messagesOf(f), std::vector<std::string>{"obj/c.spec:4:1: warning: 'input image': l.rgb: row 3 of channel 1 of the SGI image lies "

@@ -54,9 +54,12 @@ public:
             // The disc's cells, only those on the grid visited (a huge leaf stays quick).
             const int y0 = std::max(-range[1], -node[1]), y1 = std::min(range[1], m_p.size[1] - node[1]);
             const int x0 = std::max(-range[0], -node[0]), x1 = std::min(range[0], m_p.size[0] - node[0]);
+            // clover.c's int products, in 64 bits: the same numbers where they fit (a disc or a
+            // grid over 46,340 cells across overflowed them).
+            const auto square = [](int v) { return float(std::int64_t(v) * v); };
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) {
-                    if (!(float(x * x) / float(range[0] * range[0]) + float(y * y) / float(range[1] * range[1]) <= 1)) continue;
+                    if (!(square(x) / square(range[0]) + square(y) / square(range[1]) <= 1)) continue;
                     Cell* cell = at(node[0] + x, node[1] + y);
                     if (cell && ((add == 1 && cell->objects < 255) || (add == -1 && cell->objects > 0)))
                         cell->objects = (unsigned char)(cell->objects + add);
