@@ -38,7 +38,7 @@ public:
                 it.pos[1] = q.position.v[2];
             }
             it.vigor = q.params[0];
-            it.index = q.params.size() > 1 ? int(q.params[1]) : 0;
+            it.index = q.params.size() > 1 ? toInt(q.params[1]) : 0;  // huge or NaN: a bound, not UB
             it.q = &q;
             items.push_back(it);
         }
