@@ -70,7 +70,8 @@ void Renderer::Impl::drawTranslucent(const glm::mat4& viewProj, GLuint p, std::s
             for (std::size_t k = 0; k < 3; ++k) sorted[3 * t + k] = translucentIndices[3 * std::size_t(order[t]) + k];
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, translucentEbo);
         glBufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, GLsizeiptr(sorted.size() * 4), sorted.data());
-        for (std::size_t t = 0; t < order.size(); ++t) sortedImages[t] = translucentImages[order[t]];
+        if (translucentTextured)  // else all 0 as they are
+            for (std::size_t t = 0; t < order.size(); ++t) sortedImages[t] = translucentImages[order[t]];
     }
     if (!depth) return drawTranslucentRuns(viewProj, p, from, to);
     bakedAttributes(baked.vbo);  // the scene's vertices (its buffers swap with a staged upload)
