@@ -4,7 +4,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <fstream>
 #include <thread>
 #include <unistd.h>
@@ -162,6 +165,30 @@ TEST(Worker, FinishedIsCalledForEachResultAndNeverAfterStop) {
     EXPECT_EQ(calls.load(), atStop);
     EXPECT_FALSE(w.busy());
     w.stop();  // again: nothing to do
+}
+
+// A worker stopped as it starts, or as it goes back to waiting, stops. stop() set its quit
+// flag without the lock: a worker between its wait's check and its sleep missed the wake, and
+// stop() waited for it for ever (a viewer test hung so under TSan).
+TEST(Worker, StopsWhenStoppedAsItGoesToWait) {
+    // Two at a time, 20,000 in all (a second or two): with the old stop() about one run in
+    // ten hung here.
+    auto stopMany = [] {
+        Request r;
+        r.text = "axiom: F\n";
+        for (int i = 0; i < 10000; ++i) {
+            Worker w;
+            if (i % 2) r.generation = 1, w.post(r);
+            w.stop();
+        }
+    };
+    auto one = std::async(std::launch::async, stopMany), other = std::async(std::launch::async, stopMany);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(90);
+    if (one.wait_until(until) != std::future_status::ready || other.wait_until(until) != std::future_status::ready) {
+        ADD_FAILURE() << "stop() waits for ever: the worker missed its wake";
+        std::fflush(stdout);
+        std::_Exit(1);  // the stuck thread cannot be joined
+    }
 }
 
 TEST(ViewerState, TheTitleNamesTheFileOrThePreset) {

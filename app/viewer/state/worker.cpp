@@ -25,8 +25,13 @@ Worker::Worker() { m_thread = std::thread([this] { run(); }); }
 Worker::~Worker() { stop(); }
 
 void Worker::stop() {
-    m_quit = true;
-    m_cancel = true;
+    {
+        // Under the lock: set between the worker's check of it and its sleep, the flag's
+        // wake was lost, and the join below waited for ever.
+        std::lock_guard lock(m_mutex);
+        m_quit = true;
+        m_cancel = true;
+    }
     m_wake.notify_all();
     if (m_thread.joinable()) m_thread.join();
 }
