@@ -106,6 +106,19 @@ inline bool screenCorner(const std::string& xwd, int w, int h, std::vector<std::
     return true;
 }
 
+// How many pixels differ by more than 30 of 765 between two screens (screenCorner's RGB, `width`
+// pixels a row) in columns [x0, x1) of rows [0, y1).
+inline int screensDiffer(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int width, int x0, int x1, int y1) {
+    int n = 0;
+    for (int y = 0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const std::size_t i = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3;
+            if (i + 2 >= a.size() || i + 2 >= b.size()) return n + 1;
+            n += std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]) > 30;
+        }
+    return n;
+}
+
 // How many pixels of `view` differ by more than 30 of 765 from the screen's (screenCorner's RGB,
 // `width` pixels a row) where the view is shown: from column x0 of the screen's first rows.
 inline int viewDiffersOnScreen(const std::vector<std::uint8_t>& screen, int width, int x0, const Image& view) {

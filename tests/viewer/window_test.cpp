@@ -228,15 +228,8 @@ TEST(Window, TheScreenShowsWhatTheWindowDrew) {
     constexpr int kW = 1200, kH = 560, kPanel = 430;
     // The window's rectangle of the screen, RGB (the window is at the screen's corner).
     auto window = [&](const std::string& screen, std::vector<std::uint8_t>& out) { return screenCorner(screen, kW, kH, out); };
-    // Pixels that differ by more than 30 of 765 in columns [x0, x1) of rows [0, y1).
     auto differing = [&](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int x0, int x1, int y1) {
-        int n = 0;
-        for (int y = 0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                const std::size_t i = (std::size_t(y) * kW + std::size_t(x)) * 3;
-                n += std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]) > 30;
-            }
-        return n;
+        return screensDiffer(a, b, kW, x0, x1, y1);
     };
     std::vector<std::uint8_t> last[2];  // the screen after letting go, each way
     for (int way = 0; way < 2; ++way) {
